@@ -1,0 +1,566 @@
+// The execution loop: blocks in FANUC order, macro statements, control flow and calls.
+#include "machine/interpreter.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace ncurve::machine {
+
+using nc::Block;
+using nc::Statement;
+using nc::Value;
+
+namespace {
+struct VarReader {
+  Interpreter* in;
+  Value read(int n, std::uint16_t column) { return in->read_var(n, column); }
+};
+
+int round_int(double v) { return static_cast<int>(v < 0 ? -std::floor(-v + 0.5) : std::floor(v + 0.5)); }
+
+// Argument specification I: address -> local variable number.
+int argument_variable(char letter) {
+  switch (letter) {
+    case 'A': return 1;  case 'B': return 2;  case 'C': return 3;  case 'I': return 4;
+    case 'J': return 5;  case 'K': return 6;  case 'D': return 7;  case 'E': return 8;
+    case 'F': return 9;  case 'H': return 11; case 'M': return 13; case 'Q': return 17;
+    case 'R': return 18; case 'S': return 19; case 'T': return 20; case 'U': return 21;
+    case 'V': return 22; case 'W': return 23; case 'X': return 24; case 'Y': return 25;
+    case 'Z': return 26; default: return 0;
+  }
+}
+
+bool scaled_address(char c) {  // dimension words read in least input increments without a decimal point
+  switch (c) {
+    case 'X': case 'Y': case 'Z': case 'U': case 'V': case 'W': case 'A': case 'B': case 'C':
+    case 'I': case 'J': case 'K': case 'R': case 'Q': return true;
+    default: return false;
+  }
+}
+}  // namespace
+
+Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options)
+    : profile_(profile), library_(library), options_(std::move(options)) {
+  eval_options_.atan_signed = profile_.atan_signed;
+  eval_options_.atan_comma = profile_.control == Control::fanuc_30i;
+  eval_options_.adp_scale = 1.0 / profile_.increment;
+  common_high_ = profile_.control == Control::fanuc_30i ? 499 : 199;
+  common_.assign(1000, Value{});
+  work_offsets_ = profile_.work_offsets;
+  tool_offsets_ = profile_.tool_offsets;
+  for (const auto& p : library_.programs()) {
+    std::vector<std::int32_t> loop(p->blocks.size(), -1);
+    std::vector<std::int32_t> open;
+    for (std::size_t i = 0; i < p->blocks.size(); ++i) {
+      const Block& b = p->blocks[i];
+      loop[i] = open.empty() ? -1 : open.back();
+      if ((b.kind == Statement::while_do || b.kind == Statement::do_loop) && b.match > static_cast<std::int32_t>(i))
+        open.push_back(static_cast<std::int32_t>(i));
+      else if (b.kind == Statement::end_loop && !open.empty() && b.match == open.back())
+        open.pop_back();
+    }
+    loop_of_.emplace(p.get(), std::move(loop));
+  }
+}
+
+nc::Span Interpreter::span(std::uint16_t column, std::uint32_t length) const {
+  if (!prog_ || !block_) return {};
+  return prog_->span_of(*block_, column, length);
+}
+
+void Interpreter::alarm(std::string code, std::string message, std::uint16_t column, std::uint32_t length) const {
+  throw nc::Alarm(nc::Diagnostic{nc::Severity::error, std::move(code), std::move(message), span(column, length)});
+}
+
+void Interpreter::warn(std::string code, std::string message, std::uint16_t column) {
+  if (result_.warnings.size() < 1000)
+    result_.warnings.push_back(nc::Diagnostic{nc::Severity::warning, std::move(code), std::move(message), span(column)});
+}
+
+Value Interpreter::eval(const nc::Expr& e) {
+  VarReader reader{this};
+  const nc::Instr* code = prog_->code.data();
+  nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
+  switch (r.fault) {
+    case nc::EvalFault::none: return r.value;
+    case nc::EvalFault::divide_by_zero: alarm("PS0112", "division by zero", r.column);
+    case nc::EvalFault::domain: alarm("PS0119", "argument out of the function's range", r.column);
+    case nc::EvalFault::overflow: alarm("PS0111", "calculated value out of range", r.column);
+    case nc::EvalFault::not_on_this_control:
+      alarm("PS0114", "ATAN[a,b] needs a 30i control; write ATAN[a]/[b]", r.column);
+  }
+  return r.value;
+}
+
+bool Interpreter::condition(const nc::Expr& e) { return eval(e).number() != 0.0; }
+
+RunResult Interpreter::run(MoveSink& sink) {
+  sink_ = &sink;
+  result_ = RunResult{};
+  const nc::Program* main = library_.main();
+  if (!main) {
+    result_.alarm = nc::Diagnostic{nc::Severity::error, "", "no main program to run", {}};
+    return result_;
+  }
+  frames_.clear();
+  locals_.assign(1, {});
+  Frame f;
+  f.prog = main;
+  frames_.push_back(f);
+  motion_ = profile_.power_on_g01 ? 1 : 0;
+  plane_ = profile_.power_on_plane;
+  incremental_ = profile_.power_on_g91;
+  feed_per_rev_ = profile_.power_on_feed_per_rev;
+  set_origin();
+
+  // Programs that mix axis words with and without a decimal point are a classic source of scrapped parts.
+  for (const auto& p : library_.programs()) {
+    const nc::Word* with = nullptr;
+    const nc::Word* without = nullptr;
+    std::uint32_t without_line = 0;
+    for (const auto& b : p->blocks)
+      for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+        const nc::Word& word = p->words[w];
+        if (!word.literal || axis_index(word.letter) < 0 && word.letter != 'U' && word.letter != 'W' &&
+                                 word.letter != 'V' && word.letter != 'I' && word.letter != 'J' &&
+                                 word.letter != 'K' && word.letter != 'R')
+          continue;
+        if (word.decimal_point) with = with ? with : &word;
+        else if (word.value != 0 && !without) {
+          without = &word;
+          without_line = b.line;
+        }
+      }
+    if (with && without) {
+      result_.warnings.push_back(nc::Diagnostic{
+          nc::Severity::warning, "NC2001",
+          profile_.decimal_calculator
+              ? fmt::format("axis words with and without a decimal point in one program; {}{} is read as {} mm "
+                            "(calculator-type input, No.3401#0 = 1)",
+                            without->letter, without->value, without->value)
+              : fmt::format("axis words with and without a decimal point in one program; {}{} is read as {} mm "
+                            "({} least input increments, No.3401#0 = 0)",
+                            without->letter, without->value, without->value * profile_.increment, without->value),
+          nc::Span{p->file.get(), without_line, without->column, 1}});
+    }
+  }
+
+  try {
+    for (const auto& [n, v] : options_.presets) {
+      prog_ = nullptr;
+      write_var(n, Value::of(v), 0);
+    }
+    while (!finished_) {
+      if (result_.stats.blocks >= options_.max_steps) {
+        std::string where;
+        if (last_back_jump_) {
+          const Block& b = *last_back_jump_;
+          where = fmt::format("; it keeps looping through {}:{}", last_back_jump_prog_->file->name(), b.line);
+          if (b.kind == Statement::end_loop && b.match >= 0)
+            where += fmt::format(" (END {} of the loop at line {})", b.loop_id,
+                                 last_back_jump_prog_->blocks[b.match].line);
+          prog_ = last_back_jump_prog_;
+          block_ = last_back_jump_;
+        }
+        alarm("NC9000", fmt::format("program stopped after {} blocks (--max-steps){}", options_.max_steps, where));
+      }
+      step();
+    }
+  } catch (const nc::Alarm& a) {
+    result_.alarm = a.diagnostic;
+  }
+  sink_ = nullptr;
+  return result_;
+}
+
+void Interpreter::step() {
+  Frame& f = frames_.back();
+  prog_ = f.prog;
+  if (f.pc >= static_cast<std::int32_t>(prog_->blocks.size())) {
+    block_ = prog_->blocks.empty() ? nullptr : &prog_->blocks.back();
+    if (frames_.size() == 1) {
+      warn("NC2002", "the program ends without M30 or M02");
+      finished_ = true;
+    } else {
+      warn("NC2003", "the subprogram ends without M99");
+      return_from_program(std::nullopt, 0);
+    }
+    return;
+  }
+  const Block& b = prog_->blocks[f.pc];
+  block_ = &b;
+  ++result_.stats.blocks;
+  if (b.block_skip && profile_.block_skip) {
+    ++f.pc;
+    return;
+  }
+  if (b.error >= 0) throw nc::Alarm(prog_->errors[b.error]);
+  if (b.sequence >= 0) last_sequence_ = b.sequence;
+  switch (b.kind) {
+    case Statement::empty: ++f.pc; break;
+    case Statement::assign: exec_assignment(b); ++frames_.back().pc; break;
+    case Statement::nc: ++f.pc; exec_nc(b); break;
+    case Statement::go_to: jump(b, eval(b.value).number()); break;
+    case Statement::if_goto:
+      if (condition(b.cond)) jump(b, eval(b.value).number());
+      else ++f.pc;
+      break;
+    case Statement::if_then:
+      if (condition(b.cond)) exec_assignment(b);
+      ++frames_.back().pc;
+      break;
+    case Statement::while_do:
+      if (condition(b.cond)) ++f.pc;
+      else f.pc = b.match + 1;
+      break;
+    case Statement::do_loop: ++f.pc; break;
+    case Statement::end_loop:
+      f.pc = b.match;
+      last_back_jump_ = &b;
+      last_back_jump_prog_ = prog_;
+      break;
+  }
+}
+
+void Interpreter::exec_assignment(const Block& b) {
+  int target = b.target_var;
+  if (target < 0) {
+    Value t = eval(b.target);
+    if (t.vacant) alarm("PS0115", "the variable number is vacant", b.column);
+    target = round_int(t.v);
+  }
+  Value v = eval(b.value);
+  write_var(target, v, b.column);
+}
+
+void Interpreter::jump(const Block& b, double sequence) {
+  Frame& f = frames_.back();
+  if (!(sequence >= 1 && sequence <= 99999999))
+    alarm("PS0128", fmt::format("GOTO {}: sequence numbers are 1 to 99999999", sequence), b.column);
+  int n = round_int(sequence);
+  auto it = prog_->sequence_index.find(n);
+  if (it == prog_->sequence_index.end()) alarm("PS0128", fmt::format("GOTO {}: no block N{} in this program", n, n), b.column);
+  std::int32_t target = it->second;
+  const auto& loops = loop_of_.at(prog_);
+  std::int32_t inner = loops[target];
+  if (inner >= 0) {
+    std::int32_t end = prog_->blocks[inner].match;
+    if (f.pc < inner || f.pc > end)
+      alarm("PS0124", fmt::format("GOTO {} jumps into the DO {} loop of line {}: entering a loop from outside is not allowed",
+                                  n, prog_->blocks[inner].loop_id, prog_->blocks[inner].line),
+            b.column);
+  }
+  if (target <= f.pc) {
+    last_back_jump_ = &b;
+    last_back_jump_prog_ = prog_;
+  }
+  f.pc = target;
+}
+
+// ---- calls ----
+
+void Interpreter::call_program(int number, Frame frame, std::uint16_t column) {
+  const nc::Program* p = library_.find(number);
+  if (!p)
+    alarm("PS0078", fmt::format("program O{:04} not found (in this file or the --lib folders)", number), column);
+  frame.prog = p;
+  frame.pc = 0;
+  if (frame.kind == Frame::subprogram) {
+    if (sub_depth_ >= profile_.subprogram_nesting)
+      alarm("PS0077", fmt::format("subprogram calls nested more than {} deep", profile_.subprogram_nesting), column);
+    ++sub_depth_;
+    frame.level = frames_.back().level;
+  } else {
+    if (macro_depth_ >= profile_.macro_nesting)
+      alarm("PS0077", fmt::format("macro calls (G65/G66/custom codes) nested more than {} deep", profile_.macro_nesting),
+            column);
+    ++macro_depth_;
+    frame.level = static_cast<std::int32_t>(locals_.size());
+    locals_.push_back(frame.initial);
+  }
+  frames_.push_back(frame);
+}
+
+void Interpreter::call_macro(int number, const std::vector<Arg>& args, int repeat, bool custom, bool modal,
+                             std::uint16_t column) {
+  Frame f;
+  f.kind = Frame::macro;
+  f.custom = custom || (frames_.back().custom);
+  f.modal = modal || frames_.back().modal;
+  f.repeat = repeat - 1;
+  // Argument specification I and II, mixed as FANUC does: I, J, K repeat in groups (#4..#33).
+  int group = 0;
+  bool seen_i = false, seen_j = false, seen_k = false;
+  for (const Arg& a : args) {
+    int var = 0;
+    if (a.letter == 'I' || a.letter == 'J' || a.letter == 'K') {
+      int slot = a.letter - 'I';
+      bool restart = (slot == 0 && (seen_i || seen_j || seen_k)) || (slot == 1 && (seen_j || seen_k)) ||
+                     (slot == 2 && seen_k);
+      if (restart) {
+        ++group;
+        seen_i = seen_j = seen_k = false;
+      }
+      if (group > 9) alarm("PS0009", "more than 10 groups of I, J, K arguments", column);
+      (slot == 0 ? seen_i : slot == 1 ? seen_j : seen_k) = true;
+      var = 4 + 3 * group + slot;
+    } else {
+      var = argument_variable(a.letter);
+    }
+    if (var == 0) alarm("PS0009", fmt::format("address {} cannot be a macro argument", a.letter), column);
+    double v = a.value;
+    if (a.literal && !a.decimal_point && scaled_address(a.letter) && !profile_.decimal_calculator)
+      v *= inch_ ? profile_.increment / 10 : profile_.increment;
+    f.initial[var - 1] = Value::of(v);
+  }
+  call_program(number, f, column);
+}
+
+void Interpreter::return_from_program(std::optional<int> sequence, std::uint16_t column) {
+  Frame& f = frames_.back();
+  if (f.repeat > 0) {
+    --f.repeat;
+    f.pc = 0;
+    if (f.kind == Frame::macro) locals_[f.level] = f.initial;
+    return;
+  }
+  if (f.kind == Frame::subprogram) --sub_depth_;
+  else {
+    --macro_depth_;
+    locals_.pop_back();
+  }
+  frames_.pop_back();
+  prog_ = frames_.back().prog;
+  if (sequence) {
+    auto it = prog_->sequence_index.find(*sequence);
+    if (it == prog_->sequence_index.end())
+      alarm("PS0078", fmt::format("M99 P{}: no block N{} in the calling program", *sequence, *sequence), column);
+    frames_.back().pc = it->second;
+  }
+}
+
+void Interpreter::end_program(int m_code) {
+  emit_event(MoveKind::program_end, m_code);
+  parts_done_ += 1;
+  finished_ = true;
+}
+
+// ---- NC blocks ----
+
+double Interpreter::dimension_raw(const Cmd& c) const {
+  double unit = inch_ ? profile_.increment / 10 : profile_.increment;
+  double v = c.value;
+  if (c.literal && !c.decimal_point && !profile_.decimal_calculator) v *= unit;
+  double steps = v / unit;
+  return (steps < 0 ? -std::floor(-steps + 0.5) : std::floor(steps + 0.5)) * unit;
+}
+
+double Interpreter::dimension(const Cmd& c) const { return inch_ ? dimension_raw(c) * 25.4 : dimension_raw(c); }
+
+int Interpreter::integer(const Cmd& c, const char* what) const {
+  if (c.literal && c.decimal_point)
+    alarm("PS0007", fmt::format("{} does not take a decimal point ({}{})", what, c.letter, c.value), c.column);
+  if (!(std::fabs(c.value) < 1e9)) alarm("PS0003", fmt::format("{} value out of range", what), c.column);
+  return round_int(c.value);
+}
+
+std::vector<Interpreter::Arg> Interpreter::arguments(bool skip_p_l, int skip_g, int skip_m) const {
+  std::vector<Arg> args;
+  for (const Cmd& c : cmds_) {
+    if (c.letter == 'G') {
+      if (round_int(c.value * 10) == skip_g) continue;
+      alarm("PS0129", "G cannot be a macro argument", c.column);
+    }
+    if (skip_p_l && (c.letter == 'P' || c.letter == 'L')) continue;
+    if (c.letter == 'M' && round_int(c.value) == skip_m) continue;
+    if (c.letter == 'N' || c.letter == 'O') continue;
+    args.push_back(Arg{c.letter, c.value, c.decimal_point, c.literal});
+  }
+  return args;
+}
+
+void Interpreter::exec_nc(const Block& b) {
+  cmds_.clear();
+  have_.fill(false);
+  g_codes_.clear();
+  m_codes_.clear();
+  for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
+    const nc::Word& w = prog_->words[i];
+    Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value};
+    if (!w.literal) {
+      Value v = eval(w.expr);
+      if (v.vacant) continue;  // a word whose value is vacant is not there at all
+      c.value = v.v;
+      if (!std::isfinite(c.value) || std::fabs(c.value) > 1e15)
+        alarm("PS0003", fmt::format("value of address {} out of range", w.letter), w.column);
+    }
+    if (c.letter == 'G') {
+      if (c.literal && c.decimal_point && c.value * 10 != std::floor(c.value * 10))
+        alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
+      g_codes_.push_back(round_int(c.value * 10));
+    } else if (c.letter == 'M') {
+      m_codes_.push_back(integer(c, "M"));
+    }
+    int k = c.letter - 'A';
+    have_[k] = true;
+    slot_[k] = static_cast<std::uint8_t>(cmds_.size());
+    cmds_.push_back(c);
+  }
+  if (cmds_.empty()) return;
+
+  const Frame& here = frames_.back();
+  // Macro calls take the whole block.
+  for (int g : g_codes_) {
+    if (g == 650 || g == 660) {
+      if (!has('P')) alarm("PS0076", fmt::format("G{} needs P (the program number)", g / 10), b.column);
+      int number = integer(word('P'), "P");
+      int repeat = has('L') ? integer(word('L'), "L") : 1;
+      if (repeat < 1) return;  // L0: no call
+      std::vector<Arg> args = arguments(true, g, -1);
+      if (g == 650) {
+        call_macro(number, args, repeat, false, false, b.column);
+      } else {
+        modal_call_ = true;
+        modal_program_ = number;
+        modal_repeat_ = repeat;
+        modal_args_ = std::move(args);
+      }
+      return;
+    }
+    if (g == 670) {
+      modal_call_ = false;
+      if (cmds_.size() == 1) return;
+    }
+  }
+  if (!here.custom) {
+    for (int g : g_codes_)
+      for (int i = 0; i < 10; ++i)
+        if (profile_.g_code_macros[i] != 0 && g == profile_.g_code_macros[i] * 10) {
+          std::vector<Arg> args = arguments(false, g, -1);
+          call_macro(9010 + i, args, 1, true, false, b.column);
+          return;
+        }
+    for (int m : m_codes_) {
+      for (int i = 0; i < 10; ++i)
+        if (profile_.m_code_macros[i] != 0 && m == profile_.m_code_macros[i]) {
+          std::vector<Arg> args = arguments(false, -1, m);
+          call_macro(9020 + i, args, 1, true, false, b.column);
+          return;
+        }
+      for (int i = 0; i < 9; ++i)
+        if (profile_.m_code_subprograms[i] != 0 && m == profile_.m_code_subprograms[i]) {
+          Frame f;
+          f.kind = Frame::subprogram;
+          f.custom = true;
+          call_program(9001 + i, f, b.column);
+          return;
+        }
+    }
+  }
+
+  std::vector<int> one_shot;
+  handle_g_codes(one_shot);
+
+  if (has('F')) {
+    double f = word('F').value;
+    if (f < 0) alarm("PS0011", "negative feed rate", word('F').column);
+    feed_ = inch_ ? f * 25.4 : f;
+  }
+  if (has('S')) speed_ = word('S').value;
+  if (has('H')) h_ = integer(word('H'), "H");
+  if (has('D')) d_ = integer(word('D'), "D");
+  if (has('T')) {
+    int t = integer(word('T'), "T");
+    if (profile_.t_code_calls_o9000 && !here.custom) {
+      common_[149] = Value::of(t);
+      Frame f;
+      f.kind = Frame::subprogram;
+      f.custom = true;
+      call_program(9000, f, word('T').column);
+      return;
+    }
+    tool_ = t;
+    if (profile_.lathe()) emit_event(MoveKind::tool_change, t);  // a turret indexes on T; a mill changes on M06
+  }
+
+  bool moved = false;
+  if (!one_shot.empty()) {
+    for (int g : one_shot) {
+      switch (g) {
+        case 40: dwell(); break;
+        case 280: case 300: reference_return(g); moved = true; break;
+        case 530: machine_coordinate_move(); moved = true; break;
+        case 100: data_setting(); break;
+        case 520: case 920: case 500: set_coordinate_system(g); break;
+        default: break;
+      }
+    }
+  } else {
+    AxisVector target = pos_;
+    bool axes = axis_target(target);
+    bool full_circle_ijk = (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K'));
+    if (axes || full_circle_ijk) {
+      motion(target);
+      moved = true;
+    }
+  }
+
+  // M codes act after the motion of their block.
+  for (int m : m_codes_) {
+    last_m_ = m;
+    switch (m) {
+      case 98: {
+        if (!has('P')) alarm("PS0076", "M98 needs P (the subprogram number)", b.column);
+        const Cmd& p = word('P');
+        int pv = integer(p, "P");
+        int repeat = has('L') ? integer(word('L'), "L") : 1;
+        int number = pv;
+        if (!has('L') && p.literal && pv > 9999) {  // M98 P LLLL NNNN: repeat count in the upper digits
+          number = pv % 10000;
+          repeat = pv / 10000;
+        }
+        if (repeat < 1) break;
+        Frame f;
+        f.kind = Frame::subprogram;
+        f.repeat = repeat - 1;
+        call_program(number, f, p.column);
+        return;
+      }
+      case 99: {
+        std::optional<int> seq;
+        if (has('P')) seq = integer(word('P'), "P");
+        if (frames_.size() == 1) {  // M99 in the main program: run it again from the top (or from N)
+          Frame& f = frames_.back();
+          if (seq) {
+            auto it = prog_->sequence_index.find(*seq);
+            if (it == prog_->sequence_index.end()) alarm("PS0078", fmt::format("M99 P{}: no block N{}", *seq, *seq));
+            f.pc = it->second;
+          } else {
+            f.pc = 0;
+          }
+          last_back_jump_ = &b;
+          last_back_jump_prog_ = prog_;
+          return;
+        }
+        return_from_program(seq, b.column);
+        return;
+      }
+      case 2: case 30: end_program(m); return;
+      case 0: case 1:
+        emit_event(MoveKind::program_stop, m);
+        if (m == 0) warn("NC2004", "M00 program stop: the control waits for cycle start here");
+        break;
+      case 3: case 4: case 5: case 19: emit_event(MoveKind::spindle, m); break;
+      case 6: emit_event(MoveKind::tool_change, tool_); break;
+      case 7: case 8: case 9: emit_event(MoveKind::coolant, m); break;
+      default: emit_event(MoveKind::m_code, m); break;
+    }
+  }
+
+  if (moved && modal_call_ && !here.modal) {
+    call_macro(modal_program_, modal_args_, modal_repeat_, false, true, b.column);
+  }
+}
+
+}  // namespace ncurve::machine

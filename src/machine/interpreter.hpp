@@ -1,0 +1,187 @@
+// Executes a Program as a FANUC 0i/30i control would, streaming Moves to a sink.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "machine/library.hpp"
+#include "machine/move.hpp"
+#include "machine/profile.hpp"
+#include "nc/program.hpp"
+
+namespace ncurve::machine {
+
+struct RunOptions {
+  std::uint64_t max_steps = 200'000'000;          // executed blocks before a runaway program is stopped
+  std::vector<std::pair<int, double>> presets;  // --set "#100=5"
+};
+
+struct RunStats {
+  std::uint64_t blocks = 0;  // blocks executed, macro statements included
+  std::uint64_t motions = 0;
+  std::array<std::uint64_t, 10> by_kind{};  // indexed by MoveKind
+  double feed_length = 0;
+  double rapid_length = 0;
+  double seconds = 0;  // feed-rate estimate: length / F, rapids at the profile's rates, dwells
+  bool has_extent = false;
+  AxisVector min{}, max{};  // of the motion end points and arc extremes, work coordinates
+};
+
+struct RunResult {
+  bool ok() const { return !alarm.has_value(); }
+  std::optional<nc::Diagnostic> alarm;
+  std::vector<nc::Diagnostic> warnings;  // includes #3006 messages and M00/M01 stops
+  RunStats stats;
+};
+
+class Interpreter {
+public:
+  Interpreter(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options = {});
+  RunResult run(MoveSink& sink);
+
+  // Variable value after (or during) a run, as a program would read it.
+  nc::Value variable(int number);
+
+private:
+  struct Frame;
+  struct Arg {
+    char letter;
+    double value;
+    bool decimal_point;
+    bool literal;
+  };
+  struct Cmd {
+    char letter;
+    bool decimal_point;
+    bool literal;
+    std::uint16_t column;
+    double value;
+  };
+
+  // execution
+  void step();
+  void exec_nc(const nc::Block& b);
+  void exec_assignment(const nc::Block& b);
+  void jump(const nc::Block& b, double sequence);
+  bool condition(const nc::Expr& e);
+  nc::Value eval(const nc::Expr& e);
+  void call_program(int number, Frame frame, std::uint16_t column);
+  void call_macro(int number, const std::vector<Arg>& args, int repeat, bool custom, bool modal, std::uint16_t column);
+  void return_from_program(std::optional<int> sequence, std::uint16_t column);
+  void end_program(int m_code);
+
+  // words and units
+  bool has(char letter) const { return have_[letter - 'A']; }
+  const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
+  double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
+  double dimension_raw(const Cmd& c) const;  // program units, decimal point rule and rounding, no inch
+  int integer(const Cmd& c, const char* what) const;
+  std::vector<Arg> arguments(bool skip_p_l, int skip_g, int skip_m) const;
+  void assign_arguments(const std::vector<Arg>& args);
+
+  // motion (motion.cpp)
+  void handle_g_codes(std::vector<int>& one_shot);
+  bool axis_target(AxisVector& target, bool force_absolute = false);
+  void motion(const AxisVector& target);
+  void linear(MoveKind kind, const AxisVector& target);
+  void arc(const AxisVector& target, bool clockwise);
+  void emit(Move& m);
+  void emit_event(MoveKind kind, int code);
+  void dwell();
+  void reference_return(int g);
+  void machine_coordinate_move();
+  void set_coordinate_system(int g);
+  void data_setting();
+  void set_origin();
+  void note_extent(const AxisVector& p);
+
+  // variables (variables.cpp)
+ public:
+  nc::Value read_var(int n, std::uint16_t column);
+ private:
+  void write_var(int n, nc::Value v, std::uint16_t column);
+  nc::Value read_system(int n, std::uint16_t column);
+  void write_system(int n, nc::Value v, std::uint16_t column);
+  double program_units(int axis, double mm_value) const;  // for position variables
+
+  [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
+                          std::uint32_t length = 1) const;
+  void warn(std::string code, std::string message, std::uint16_t column = 0);
+  nc::Span span(std::uint16_t column = 0, std::uint32_t length = 1) const;
+
+  struct Frame {
+    const nc::Program* prog = nullptr;
+    std::int32_t pc = 0;
+    std::int32_t level = 0;  // local variable level
+    enum Kind : std::uint8_t { main, subprogram, macro } kind = main;
+    bool custom = false;     // called by a custom G/M code (such codes are ordinary inside)
+    bool modal = false;      // called by G66
+    int repeat = 0;          // calls still to come (L)
+    std::array<nc::Value, 33> initial{};  // locals on entry, for repeated macro calls
+  };
+
+  const MachineProfile profile_;
+  const ProgramLibrary& library_;
+  RunOptions options_;
+  nc::EvalOptions eval_options_;
+  MoveSink* sink_ = nullptr;
+  RunResult result_;
+
+  std::vector<Frame> frames_;
+  std::vector<std::array<nc::Value, 33>> locals_;
+  std::vector<nc::Value> common_;  // #100..#999
+  int common_high_ = 199;          // last of the first common range
+  const nc::Program* prog_ = nullptr;
+  const nc::Block* block_ = nullptr;
+  bool finished_ = false;
+  int macro_depth_ = 0;
+  int sub_depth_ = 0;
+  std::unordered_map<const nc::Program*, std::vector<std::int32_t>> loop_of_;  // innermost DO per block
+  const nc::Block* last_back_jump_ = nullptr;
+  const nc::Program* last_back_jump_prog_ = nullptr;
+
+  // current block words
+  std::vector<Cmd> cmds_;
+  std::array<bool, 26> have_{};
+  std::array<std::uint8_t, 26> slot_{};
+  std::vector<int> g_codes_;  // x10: 541 for G54.1
+  std::vector<int> m_codes_;
+
+  // modal state
+  int motion_ = 0;           // 0..3
+  int plane_ = 17;
+  bool incremental_ = false;
+  bool inch_ = false;
+  bool feed_per_rev_ = false;
+  bool css_ = false;
+  bool exact_stop_ = false;
+  int exact_stop_code_ = 64;
+  int length_comp_ = 49;
+  int work_index_ = 1;       // 1..6 = G54..G59, 7+ = G54.1 P(n-6)
+  double feed_ = 0, speed_ = 0;
+  int tool_ = 0, h_ = 0, d_ = 0, last_m_ = -1;
+  std::int32_t last_sequence_ = -1;
+  bool modal_call_ = false;
+  int modal_program_ = 0;
+  int modal_repeat_ = 1;
+  std::vector<Arg> modal_args_;
+  double tool_length_ = 0;
+
+  // positions (work coordinates, mm; lathe X as a radius)
+  AxisVector pos_{};
+  AxisVector origin_{};  // machine = work + origin
+  AxisVector local_{};   // G52
+  AxisVector shift_{};   // G92 / G50
+  std::array<AxisVector, 7> work_offsets_{};
+  std::map<int, AxisVector> extended_offsets_;  // G54.1 P1..P300
+  std::map<int, double> tool_offsets_;
+  std::map<int, nc::Value> system_store_;  // writable system variables without other meaning
+  double clock_base_ms_ = 0;
+  double parts_done_ = 0, parts_required_ = 0;
+};
+
+}  // namespace ncurve::machine

@@ -1,0 +1,75 @@
+#include "machine/library.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace ncurve::machine {
+
+namespace {
+int number_from_file_name(const std::string& path) {
+  std::string stem = std::filesystem::path(path).stem().string();
+  if (stem.size() < 2 || (stem[0] != 'O' && stem[0] != 'o')) return -1;
+  for (std::size_t i = 1; i < stem.size(); ++i)
+    if (!std::isdigit(static_cast<unsigned char>(stem[i]))) return -1;
+  if (stem.size() > 9) return -1;
+  return std::stoi(stem.substr(1));
+}
+}  // namespace
+
+std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, std::string text, bool is_main) {
+  auto file = std::make_shared<const nc::SourceFile>(name, std::move(text));
+  files_.push_back(file);
+  nc::ParseResult r = nc::parse(file);
+  int from_name = number_from_file_name(name);
+  for (auto& p : r.programs) {
+    if (p->number < 0 && from_name >= 0) p->number = from_name;
+    const nc::Program* raw = p.get();
+    if (is_main && !main_) main_ = raw;
+    if (p->number >= 0) by_number_.try_emplace(p->number, raw);
+    programs_.push_back(std::move(p));
+  }
+  if (is_main && !main_) throw std::runtime_error(fmt::format("{}: error: the file holds no program", name));
+  return std::move(r.diagnostics);
+}
+
+std::vector<nc::Diagnostic> ProgramLibrary::add_file(const std::string& path, bool is_main) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("{}: error: cannot open the file", path));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return add_text(path, ss.str(), is_main);
+}
+
+std::vector<nc::Diagnostic> ProgramLibrary::add_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw std::runtime_error(fmt::format("{}: error: not a folder", dir));
+  std::vector<std::string> paths;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (!e.is_regular_file()) continue;
+    std::string ext = e.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".nc" || ext == ".txt" || ext == ".tap" || number_from_file_name(e.path().string()) >= 0)
+      paths.push_back(e.path().string());
+  }
+  std::sort(paths.begin(), paths.end());
+  std::vector<nc::Diagnostic> all;
+  for (const auto& p : paths) {
+    auto d = add_file(p);
+    all.insert(all.end(), d.begin(), d.end());
+  }
+  return all;
+}
+
+const nc::Program* ProgramLibrary::find(int number) const {
+  auto it = by_number_.find(number);
+  return it == by_number_.end() ? nullptr : it->second;
+}
+
+}  // namespace ncurve::machine

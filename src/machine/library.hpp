@@ -1,0 +1,33 @@
+// The programs a run can reach: the main file and macro library folders, by O number.
+#pragma once
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "nc/program.hpp"
+
+namespace ncurve::machine {
+
+class ProgramLibrary {
+public:
+  // Parses a file and registers its programs; a program without an O line takes its number from a
+  // file name like O9010.nc. Returns the syntax problems found (they also stay attached to their blocks).
+  std::vector<nc::Diagnostic> add_text(const std::string& name, std::string text, bool is_main = false);
+  std::vector<nc::Diagnostic> add_file(const std::string& path, bool is_main = false);
+  // Every *.nc, *.NC, O*, *.txt and *.tap file in the folder.
+  std::vector<nc::Diagnostic> add_folder(const std::string& dir);
+
+  const nc::Program* find(int number) const;
+  const nc::Program* main() const { return main_; }
+  const std::vector<std::unique_ptr<nc::Program>>& programs() const { return programs_; }
+  const std::vector<std::shared_ptr<const nc::SourceFile>>& files() const { return files_; }
+
+private:
+  std::vector<std::shared_ptr<const nc::SourceFile>> files_;
+  std::vector<std::unique_ptr<nc::Program>> programs_;
+  std::map<int, const nc::Program*> by_number_;
+  const nc::Program* main_ = nullptr;
+};
+
+}  // namespace ncurve::machine

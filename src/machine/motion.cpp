@@ -1,0 +1,459 @@
+// NC words that move the machine: modal G codes, coordinates, lines, arcs, reference returns.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "machine/interpreter.hpp"
+
+namespace ncurve::machine {
+
+namespace {
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// The two in-plane axes and the normal axis of G17/G18/G19, and the centre offset letters.
+struct PlaneAxes {
+  int p, q, n;
+  char ip, iq;
+};
+PlaneAxes plane_axes(int plane) {
+  switch (plane) {
+    case 18: return {2, 0, 1, 'K', 'I'};
+    case 19: return {1, 2, 0, 'J', 'K'};
+    default: return {0, 1, 2, 'I', 'J'};
+  }
+}
+
+const char* kindless_unsupported(int g) {
+  switch (g) {
+    case 410: case 420: return "cutter radius compensation (G41/G42)";
+    case 150: case 160: return "polar coordinates (G15/G16)";
+    case 680: return "coordinate rotation (G68)";
+    case 510: return "scaling (G51)";
+    case 511: return "programmable mirror image (G51.1)";
+    case 310: return "skip function (G31)";
+    case 330: case 320: return "threading (G32/G33)";
+    case 120: case 130: return "circle cutting (G12/G13)";
+    case 50: return "AI contour control (G05)";
+    case 51: return "high-speed cutting (G05.1)";
+    case 70: case 71: return "cylindrical interpolation (G07.1)";
+    case 121: case 131: return "polar coordinate interpolation (G12.1/G13.1)";
+    default: return nullptr;
+  }
+}
+}  // namespace
+
+const char* to_string(MoveKind k) {
+  switch (k) {
+    case MoveKind::rapid: return "rapid";
+    case MoveKind::line: return "line";
+    case MoveKind::arc: return "arc";
+    case MoveKind::dwell: return "dwell";
+    case MoveKind::tool_change: return "tool_change";
+    case MoveKind::spindle: return "spindle";
+    case MoveKind::coolant: return "coolant";
+    case MoveKind::program_stop: return "program_stop";
+    case MoveKind::program_end: return "program_end";
+    case MoveKind::m_code: return "m_code";
+  }
+  return "?";
+}
+
+void Interpreter::set_origin() {
+  AxisVector old = origin_;
+  const AxisVector& work = work_index_ <= 6 ? work_offsets_[work_index_] : extended_offsets_[work_index_ - 6];
+  for (int a = 0; a < kAxes; ++a) {
+    origin_[a] = work_offsets_[0][a] + work[a] + local_[a] + shift_[a];
+    pos_[a] += old[a] - origin_[a];
+  }
+}
+
+void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
+  const bool lathe = profile_.lathe();
+  const bool system_a = lathe && profile_.gcode_system == 'A';
+  for (std::size_t i = 0; i < g_codes_.size(); ++i) {
+    int g = g_codes_[i];
+    std::uint16_t column = 0;
+    for (const Cmd& c : cmds_)
+      if (c.letter == 'G' && std::lround(c.value * 10) == g) column = c.column;
+    switch (g) {
+      case 0: case 10: case 20: case 30: motion_ = g / 10; break;
+      case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
+      case 90: break;  // G09: one-shot exact stop, for the time planner
+      case 170: case 180: case 190: plane_ = g / 10; break;
+      case 200: inch_ = true; break;
+      case 210: inch_ = false; break;
+      case 400: case 800: case 670: case 690: break;  // cancels: nothing active to cancel
+      case 430: case 440:
+        if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
+        length_comp_ = g / 10;
+        h_ = has('H') ? static_cast<int>(std::lround(word('H').value)) : h_;
+        tool_length_ = (g == 430 ? 1 : -1) * (tool_offsets_.count(h_) ? tool_offsets_[h_] : 0.0);
+        break;
+      case 490: length_comp_ = 49; tool_length_ = 0; break;
+      case 540: case 550: case 560: case 570: case 580: case 590:
+        work_index_ = g / 10 - 53;
+        set_origin();
+        break;
+      case 541: {
+        int p = has('P') ? static_cast<int>(std::lround(word('P').value)) : 1;
+        if (p < 1 || p > 300) alarm("PS0030", "G54.1 P must be 1 to 300", column);
+        work_index_ = 6 + p;
+        set_origin();
+        break;
+      }
+      case 610: case 620: case 630: exact_stop_ = g == 610; exact_stop_code_ = g / 10; break;
+      case 640: exact_stop_ = false; exact_stop_code_ = 64; break;
+      case 960: css_ = true; break;
+      case 970: css_ = false; break;
+      case 500:
+        if (lathe && profile_.gcode_system == 'A') one_shot.push_back(g);  // coordinate system setting / max spindle
+        break;
+      default: {
+        if (system_a) {
+          if (g == 980) { feed_per_rev_ = false; break; }
+          if (g == 990) { feed_per_rev_ = true; break; }
+          if (g == 900 || g == 920 || g == 940)
+            alarm("NC9001", fmt::format("G{} (turning canned cycle) is not supported yet", g / 10), column);
+        } else {
+          if (g == 900) { incremental_ = false; break; }
+          if (g == 910) { incremental_ = true; break; }
+          if (g == 940) { feed_per_rev_ = false; break; }
+          if (g == 950) { feed_per_rev_ = true; break; }
+          if (g == 920) { one_shot.push_back(g); break; }
+          if (g == 980 || g == 990) break;  // canned cycle return level
+        }
+        if (lathe && g >= 700 && g <= 760)
+          alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
+        if (!lathe && ((g >= 730 && g <= 890 && g != 800) || g == 740))
+          alarm("NC9001", fmt::format("G{} (canned cycle) is not supported yet", g / 10), column);
+        if (const char* what = kindless_unsupported(g))
+          alarm("NC9001", fmt::format("{} is not supported yet", what), column);
+        alarm("PS0010", fmt::format("G{}{} is not a G code of this control", g / 10, g % 10 ? fmt::format(".{}", g % 10) : ""),
+              column);
+      }
+    }
+  }
+}
+
+// Reads axis words into target (work coordinates, mm). Returns whether any axis word was given.
+bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
+  const bool lathe = profile_.lathe();
+  const bool system_a = lathe && profile_.gcode_system == 'A';
+  bool any = false;
+  for (const Cmd& c : cmds_) {
+    int a = axis_index(c.letter);
+    bool incremental = incremental_ && !force_absolute;
+    if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W')) {
+      a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : 2;
+      incremental = true;
+      if (profile_.axes.find(a == 0 ? 'X' : a == 1 ? 'Y' : 'Z') == std::string::npos) a = -1;
+    } else if (a >= 0 && profile_.axes.find(c.letter) == std::string::npos) {
+      if (c.letter == 'A' || c.letter == 'B' || c.letter == 'C') continue;  // not an axis here: argument or unused
+      alarm("PS0009", fmt::format("address {}: this machine has no {} axis", c.letter, c.letter), c.column);
+    } else if (a < 0) {
+      if (c.letter == 'U' || c.letter == 'V' || c.letter == 'W' || c.letter == 'E')
+        alarm("PS0009", fmt::format("address {} has no meaning on this machine", c.letter), c.column);
+      continue;
+    }
+    if (a < 0) continue;
+    double v = dimension(c);
+    if (a == 0 && lathe && profile_.diameter_x) v /= 2;
+    target[a] = incremental ? target[a] + v : v;
+    any = true;
+  }
+  return any;
+}
+
+void Interpreter::motion(const AxisVector& target) {
+  switch (motion_) {
+    case 0: linear(MoveKind::rapid, target); break;
+    case 1: linear(MoveKind::line, target); break;
+    case 2: arc(target, true); break;
+    case 3: arc(target, false); break;
+  }
+}
+
+void Interpreter::note_extent(const AxisVector& p) {
+  RunStats& s = result_.stats;
+  if (!s.has_extent) {
+    s.min = s.max = p;
+    s.has_extent = true;
+    return;
+  }
+  for (int a = 0; a < kAxes; ++a) {
+    s.min[a] = std::min(s.min[a], p[a]);
+    s.max[a] = std::max(s.max[a], p[a]);
+  }
+}
+
+void Interpreter::emit(Move& m) {
+  m.program = prog_ ? prog_->number : -1;
+  m.file = prog_ ? prog_->file.get() : nullptr;
+  m.line = block_ ? block_->line : 0;
+  m.feed_per_rev = feed_per_rev_;
+  m.spindle = speed_;
+  RunStats& s = result_.stats;
+  ++s.by_kind[static_cast<int>(m.kind)];
+  if (m.is_motion()) {
+    ++s.motions;
+    if (m.kind == MoveKind::rapid) s.rapid_length += m.length;
+    else s.feed_length += m.length;
+    if (s.motions == 1) note_extent(m.start);
+    note_extent(m.end);
+  }
+  s.seconds += m.seconds;
+  sink_->on_move(m);
+}
+
+void Interpreter::emit_event(MoveKind kind, int code) {
+  Move m;
+  m.kind = kind;
+  m.code = code;
+  m.start = m.end = pos_;
+  m.plane = static_cast<std::uint8_t>(plane_);
+  emit(m);
+}
+
+static double feed_seconds(double length, double feed, bool per_rev, double speed, double fallback_speed) {
+  double mm_per_min = per_rev ? feed * (speed > 0 ? speed : fallback_speed) : feed;
+  return mm_per_min > 0 ? length / mm_per_min * 60.0 : 0.0;
+}
+
+void Interpreter::linear(MoveKind kind, const AxisVector& target) {
+  Move m;
+  m.kind = kind;
+  m.start = pos_;
+  m.end = target;
+  m.plane = static_cast<std::uint8_t>(plane_);
+  double sq = 0, slowest = 0;
+  for (int a = 0; a < kAxes; ++a) {
+    double d = target[a] - pos_[a];
+    if (a < 3) sq += d * d;
+    if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(d) / profile_.rapid_rate[a]);
+  }
+  m.length = std::sqrt(sq);
+  if (kind == MoveKind::line) {
+    if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
+    m.feed = feed_;
+    m.seconds = feed_seconds(m.length, feed_, feed_per_rev_, speed_, profile_.spindle_speed_for_time);
+  } else {
+    m.feed = 0;
+    m.seconds = slowest * 60.0;
+  }
+  pos_ = target;
+  emit(m);
+}
+
+void Interpreter::arc(const AxisVector& target, bool clockwise) {
+  if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
+  const PlaneAxes pa = plane_axes(plane_);
+  if (profile_.lathe() && plane_ != 18) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
+  const double sp = pos_[pa.p], sq = pos_[pa.q];
+  const double ep = target[pa.p], eq = target[pa.q];
+  const double tol = profile_.increment * 0.5 + 1e-9;
+  double cp, cq;
+  bool full = false;
+  if (has('R')) {
+    double r = dimension(word('R'));
+    double dx = ep - sp, dy = eq - sq;
+    double d = std::hypot(dx, dy);
+    if (d < tol) {
+      // R with the end point at the start point: FANUC makes no move
+      pos_ = target;
+      return;
+    }
+    if (r == 0) alarm("PS0023", "arc radius R is zero", word('R').column);
+    double half = d / 2;
+    if (half > std::fabs(r) + profile_.arc_radius_tolerance)
+      alarm("PS0023", fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} mm)",
+                                  word('R').value, half),
+            word('R').column);
+    double h = std::sqrt(std::max(0.0, r * r - half * half));
+    // centre left of the chord for G03 with R > 0, right for G02
+    double sign = (clockwise ? -1.0 : 1.0) * (r > 0 ? 1.0 : -1.0);
+    cp = sp + dx / 2 - sign * h * dy / d;
+    cq = sq + dy / 2 + sign * h * dx / d;
+  } else {
+    double off_p = 0, off_q = 0;
+    if (!has(pa.ip) && !has(pa.iq)) alarm("PS0022", "G02/G03 needs R or the centre offsets (I, J, K) of the plane");
+    auto offset = [&](char letter, int axis) {
+      if (!has(letter)) return 0.0;
+      double v = dimension(word(letter));  // I on a lathe is a radius value
+      (void)axis;
+      return v;
+    };
+    off_p = offset(pa.ip, pa.p);
+    off_q = offset(pa.iq, pa.q);
+    cp = sp + off_p;
+    cq = sq + off_q;
+    full = std::hypot(ep - sp, eq - sq) < tol;
+  }
+  double rs = std::hypot(sp - cp, sq - cq);
+  double re = std::hypot(ep - cp, eq - cq);
+  if (rs < tol) alarm("PS0023", "arc radius is zero");
+  if (std::fabs(re - rs) > profile_.arc_radius_tolerance)
+    alarm("PS0020", fmt::format("arc end point is off the circle: start radius {:.4f} mm, end radius {:.4f} mm "
+                                "(more than the No.3410 limit {:.4f} mm)",
+                                rs, re, profile_.arc_radius_tolerance));
+  double a0 = std::atan2(sq - cq, sp - cp);
+  double a1 = std::atan2(eq - cq, ep - cp);
+  double sweep = a1 - a0;
+  if (full) sweep = clockwise ? -kTwoPi : kTwoPi;
+  else if (clockwise) {
+    while (sweep >= 0) sweep -= kTwoPi;
+  } else {
+    while (sweep <= 0) sweep += kTwoPi;
+  }
+  Move m;
+  m.kind = MoveKind::arc;
+  m.clockwise = clockwise;
+  m.plane = static_cast<std::uint8_t>(plane_);
+  m.start = pos_;
+  m.end = target;
+  m.center = {pos_[0], pos_[1], pos_[2]};
+  m.center[pa.p] = cp;
+  m.center[pa.q] = cq;
+  m.center[pa.n] = pos_[pa.n];
+  m.sweep = sweep;
+  double planar = std::fabs(sweep) * (rs + re) / 2;
+  double dn = target[pa.n] - pos_[pa.n];
+  m.length = std::hypot(planar, dn);
+  m.feed = feed_;
+  m.seconds = feed_seconds(m.length, feed_, feed_per_rev_, speed_, profile_.spindle_speed_for_time);
+  // extents: the quadrant points the arc passes
+  for (int k = 0; k < 4; ++k) {
+    double ang = k * std::numbers::pi / 2;
+    double rel = std::remainder(ang - a0, kTwoPi);
+    double along = sweep > 0 ? (rel < 0 ? rel + kTwoPi : rel) : (rel > 0 ? kTwoPi - rel : -rel);
+    if (along < std::fabs(sweep)) {
+      AxisVector p = pos_;
+      p[pa.p] = cp + rs * std::cos(ang);
+      p[pa.q] = cq + rs * std::sin(ang);
+      note_extent(p);
+    }
+  }
+  pos_ = target;
+  emit(m);
+}
+
+void Interpreter::dwell() {
+  double seconds = 0;
+  if (has('P')) {
+    seconds = integer(word('P'), "P of G04 (milliseconds)") / 1000.0;
+  } else if (has('X') || has('U')) {
+    const Cmd& c = has('X') ? word('X') : word('U');
+    double v = c.value;
+    if (c.literal && !c.decimal_point && !profile_.decimal_calculator) v *= 0.001;  // X1000 = 1 s
+    seconds = v;
+  }
+  if (seconds < 0) alarm("PS0011", "negative dwell time");
+  Move m;
+  m.kind = MoveKind::dwell;
+  m.start = m.end = pos_;
+  m.seconds = seconds;
+  emit(m);
+}
+
+void Interpreter::reference_return(int g) {
+  int point = 0;
+  if (g == 300) {
+    point = has('P') ? integer(word('P'), "P of G30") - 1 : 1;
+    if (point < 1 || point > 3) alarm("PS0046", "G30 P must be 2, 3 or 4", word('P').column);
+  }
+  AxisVector mid = pos_;
+  bool any = axis_target(mid);
+  if (!any) return;
+  linear(MoveKind::rapid, mid);
+  AxisVector ref = pos_;
+  for (const Cmd& c : cmds_) {
+    int a = axis_index(c.letter);
+    if (profile_.lathe() && profile_.gcode_system == 'A') {
+      if (c.letter == 'U') a = 0;
+      if (c.letter == 'W') a = 2;
+    }
+    if (a < 0 || profile_.axes.find("XYZABC"[a]) == std::string::npos) continue;
+    ref[a] = profile_.reference_points[point][a] - origin_[a] - (a == 2 ? tool_length_ : 0.0);
+  }
+  linear(MoveKind::rapid, ref);
+}
+
+void Interpreter::machine_coordinate_move() {
+  if (incremental_) return;  // G53 is ignored under G91, as on FANUC
+  AxisVector target = pos_;
+  AxisVector machine{};
+  for (int a = 0; a < kAxes; ++a) machine[a] = pos_[a] + origin_[a];
+  AxisVector given = machine;
+  if (!axis_target(given, true)) return;
+  for (int a = 0; a < kAxes; ++a) target[a] = given[a] - origin_[a] - (a == 2 ? tool_length_ : 0.0);
+  for (int a = 0; a < kAxes; ++a)
+    if (given[a] == machine[a]) target[a] = pos_[a];
+  linear(MoveKind::rapid, target);
+}
+
+void Interpreter::set_coordinate_system(int g) {
+  AxisVector given = pos_;
+  if (g == 520) {  // G52: local coordinate system, absolute offsets from the work zero
+    AxisVector zero{};
+    AxisVector offs = zero;
+    bool any = false;
+    for (const Cmd& c : cmds_) {
+      int a = axis_index(c.letter);
+      if (a < 0 || profile_.axes.find(c.letter) == std::string::npos) continue;
+      double v = dimension(c);
+      if (a == 0 && profile_.lathe() && profile_.diameter_x) v /= 2;
+      offs[a] = v;
+      any = true;
+    }
+    if (!any) return;
+    for (const Cmd& c : cmds_) {
+      int a = axis_index(c.letter);
+      if (a >= 0 && profile_.axes.find(c.letter) != std::string::npos) local_[a] = offs[a];
+    }
+    set_origin();
+    return;
+  }
+  if (g == 500 && !has('X') && !has('Z') && !has('U') && !has('W')) return;  // G50 S: maximum spindle speed
+  // G92 (G50 on a system A lathe): the current point gets the given coordinates
+  if (!axis_target(given)) return;
+  for (int a = 0; a < kAxes; ++a) {
+    shift_[a] += pos_[a] - given[a];
+    origin_[a] += pos_[a] - given[a];
+  }
+  pos_ = given;
+}
+
+void Interpreter::data_setting() {
+  int l = has('L') ? integer(word('L'), "L of G10") : 0;
+  if (l == 2 || l == 20) {
+    int p = has('P') ? integer(word('P'), "P of G10") : 0;
+    AxisVector* set = nullptr;
+    if (l == 2) {
+      if (p < 0 || p > 6) alarm("PS0114", "G10 L2 P must be 0 (external) or 1..6 (G54..G59)", word('P').column);
+      set = &work_offsets_[p];
+    } else {
+      if (p < 1 || p > 300) alarm("PS0114", "G10 L20 P must be 1..300", word('P').column);
+      set = &extended_offsets_[p];
+    }
+    for (const Cmd& c : cmds_) {
+      int a = axis_index(c.letter);
+      if (a < 0 || profile_.axes.find(c.letter) == std::string::npos) continue;
+      double v = dimension(c);
+      (*set)[a] = incremental_ ? (*set)[a] + v : v;
+    }
+    set_origin();
+    return;
+  }
+  if (l == 1 || l == 10 || l == 11 || l == 12 || l == 13) {
+    if (!has('P') || !has('R')) alarm("PS0114", "G10 L10..L13 needs P (offset number) and R (value)");
+    int p = integer(word('P'), "P of G10");
+    if (p < 1 || p > 999) alarm("PS0030", "offset number out of range", word('P').column);
+    double v = dimension(word('R'));
+    tool_offsets_[p] = incremental_ ? tool_offsets_[p] + v : v;
+    return;
+  }
+  alarm("NC9001", fmt::format("G10 L{} is not supported yet (L2, L20 and L1/L10..L13 are)", l));
+}
+
+}  // namespace ncurve::machine

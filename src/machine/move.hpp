@@ -1,0 +1,49 @@
+// What the interpreter emits: moves and machine events, each tied to its source block.
+#pragma once
+#include <cstdint>
+
+#include "machine/profile.hpp"
+#include "nc/diagnostic.hpp"
+
+namespace ncurve::machine {
+
+enum class MoveKind : std::uint8_t {
+  rapid, line, arc, dwell,
+  tool_change, spindle, coolant, program_stop, program_end, m_code,
+};
+
+const char* to_string(MoveKind k);
+
+struct Move {
+  MoveKind kind = MoveKind::line;
+  std::uint8_t plane = 17;     // 17 XY, 18 ZX, 19 YZ
+  bool clockwise = false;      // arcs: G02
+  bool feed_per_rev = false;   // F in mm/rev
+  AxisVector start{};          // work coordinates, mm (lathe X as a radius), degrees for rotary axes
+  AxisVector end{};
+  std::array<double, 3> center{};  // arcs: centre, work coordinates X Y Z
+  double sweep = 0;            // arcs: signed angle in radians, counter-clockwise positive about the plane normal
+  double feed = 0;             // mm/min, or mm/rev when feed_per_rev
+  double spindle = 0;          // S in force, rev/min (or m/min under G96)
+  double seconds = 0;          // dwell time; estimated time for other moves
+  double length = 0;           // path length, mm
+  int code = 0;                // T number, M code, spindle or coolant M code
+  int program = -1;            // O number of the program holding the block
+  const nc::SourceFile* file = nullptr;
+  std::uint32_t line = 0;      // 1-based line in file
+
+  bool is_motion() const { return kind == MoveKind::rapid || kind == MoveKind::line || kind == MoveKind::arc; }
+};
+
+class MoveSink {
+public:
+  virtual ~MoveSink() = default;
+  virtual void on_move(const Move& m) = 0;
+};
+
+class NullSink final : public MoveSink {
+public:
+  void on_move(const Move&) override {}
+};
+
+}  // namespace ncurve::machine

@@ -1,0 +1,226 @@
+#include "machine/profile.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <toml++/toml.h>
+
+namespace ncurve::machine {
+
+int axis_index(char letter) {
+  switch (letter) {
+    case 'X': return 0;
+    case 'Y': return 1;
+    case 'Z': return 2;
+    case 'A': return 3;
+    case 'B': return 4;
+    case 'C': return 5;
+    default: return -1;
+  }
+}
+
+MachineProfile default_mill() { return MachineProfile{}; }
+
+MachineProfile default_lathe() {
+  MachineProfile p;
+  p.name = "FANUC 0i-TF 2-axis lathe, factory parameters";
+  p.type = MachineType::lathe;
+  p.axes = "XZ";
+  p.power_on_feed_per_rev = true;
+  p.power_on_plane = 18;
+  return p;
+}
+
+namespace {
+
+[[noreturn]] void fail(const std::string& origin, const toml::node& node, const std::string& what) {
+  const auto& src = node.source();
+  throw std::runtime_error(fmt::format("{}:{}:{}: error: {}", origin, src.begin.line, src.begin.column, what));
+}
+
+double number(const std::string& origin, const toml::node& node, const std::string& key) {
+  if (auto v = node.value<double>()) return *v;
+  fail(origin, node, fmt::format("'{}' must be a number", key));
+}
+
+bool flag(const std::string& origin, const toml::node& node, const std::string& key) {
+  if (auto v = node.value<bool>()) return *v;
+  if (auto v = node.value<int64_t>(); v && (*v == 0 || *v == 1)) return *v == 1;
+  fail(origin, node, fmt::format("'{}' must be true/false or 0/1", key));
+}
+
+std::string text(const std::string& origin, const toml::node& node, const std::string& key) {
+  if (auto v = node.value<std::string>()) return *v;
+  fail(origin, node, fmt::format("'{}' must be a string", key));
+}
+
+AxisVector axis_vector(const std::string& origin, const toml::node& node, const std::string& key,
+                       const std::string& axes) {
+  const toml::array* arr = node.as_array();
+  if (!arr || arr->size() != axes.size())
+    fail(origin, node, fmt::format("'{}' must be an array of {} numbers, one per axis {}", key, axes.size(), axes));
+  AxisVector v{};
+  for (std::size_t i = 0; i < axes.size(); ++i) v[axis_index(axes[i])] = number(origin, *arr->get(i), key);
+  return v;
+}
+
+void machine_table(MachineProfile& p, const toml::table& t, const std::string& origin) {
+  for (const auto& [k, node] : t) {
+    std::string key(k.str());
+    if (key == "name") p.name = text(origin, node, key);
+    else if (key == "type") {
+      std::string v = text(origin, node, key);
+      if (v == "mill") p.type = MachineType::mill;
+      else if (v == "lathe") {
+        MachineProfile l = default_lathe();
+        p.type = l.type;
+        p.axes = l.axes;
+        p.power_on_feed_per_rev = l.power_on_feed_per_rev;
+        p.power_on_plane = l.power_on_plane;
+      } else fail(origin, node, "type must be \"mill\" or \"lathe\"");
+    } else if (key == "control") {
+      std::string v = text(origin, node, key);
+      if (v == "0i" || v == "16i" || v == "18i" || v == "21i") p.control = Control::fanuc_0i;
+      else if (v == "30i" || v == "31i" || v == "32i") {
+        p.control = Control::fanuc_30i;
+        p.macro_nesting = 5;
+        p.subprogram_nesting = 15;
+      } else fail(origin, node, "control must be \"0i\" or \"30i\" (or 16i/18i/21i/31i/32i)");
+    } else if (key == "axes") {
+      const toml::array* arr = node.as_array();
+      if (!arr || arr->empty()) fail(origin, node, "axes must be an array of axis letters");
+      std::string axes;
+      for (const auto& a : *arr) {
+        std::string s = text(origin, a, "axes");
+        if (s.size() != 1 || axis_index(s[0]) < 0 || axes.find(s[0]) != std::string::npos)
+          fail(origin, a, "each axis is one of X, Y, Z, A, B, C, named once");
+        axes += s[0];
+      }
+      p.axes = axes;
+    } else if (key == "increment_system") {
+      std::string v = text(origin, node, key);
+      if (v == "IS-B") p.increment = 0.001;
+      else if (v == "IS-C") p.increment = 0.0001;
+      else fail(origin, node, "increment_system must be \"IS-B\" (0.001 mm) or \"IS-C\" (0.0001 mm)");
+    } else if (key == "gcode_system") {
+      std::string v = text(origin, node, key);
+      if (v != "A" && v != "B" && v != "C") fail(origin, node, "gcode_system must be \"A\", \"B\" or \"C\"");
+      p.gcode_system = v[0];
+    } else if (key == "diameter_programming") p.diameter_x = flag(origin, node, key);
+    else if (key == "block_skip") p.block_skip = flag(origin, node, key);
+    else if (key == "macro_call_nesting") p.macro_nesting = static_cast<int>(number(origin, node, key));
+    else if (key == "subprogram_nesting") p.subprogram_nesting = static_cast<int>(number(origin, node, key));
+    else fail(origin, node, fmt::format("unknown key '{}' in [machine]", key));
+  }
+}
+
+void parameters_table(MachineProfile& p, const toml::table& t, const std::string& origin) {
+  for (const auto& [k, node] : t) {
+    std::string key(k.str());
+    auto int_value = [&] {
+      double v = number(origin, node, key);
+      return static_cast<int>(v);
+    };
+    if (key == "3401#0") p.decimal_calculator = flag(origin, node, key);
+    else if (key == "6004#0") p.atan_signed = flag(origin, node, key);
+    else if (key == "3402#0") p.power_on_g01 = flag(origin, node, key);
+    else if (key == "3402#3") p.power_on_g91 = flag(origin, node, key);
+    else if (key == "6001#5") p.t_code_calls_o9000 = flag(origin, node, key);
+    else if (key == "3410") p.arc_radius_tolerance = number(origin, node, key) * p.increment;
+    else {
+      int n = 0;
+      try {
+        std::size_t used = 0;
+        n = std::stoi(key, &used);
+        if (used != key.size()) n = 0;
+      } catch (...) {
+        n = 0;
+      }
+      if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = int_value();
+      else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = int_value();
+      else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = int_value();
+      else
+        fail(origin, node,
+             fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 6001#5, "
+                         "6004#0, 6050..6059, 6071..6079, 6080..6089)",
+                         key));
+    }
+  }
+}
+
+}  // namespace
+
+MachineProfile parse_profile(const std::string& toml_text, const std::string& origin) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, origin);
+  } catch (const toml::parse_error& e) {
+    throw std::runtime_error(fmt::format("{}:{}:{}: error: {}", origin, e.source().begin.line,
+                                         e.source().begin.column, e.description()));
+  }
+  MachineProfile p;
+  // [machine] first: type and axes decide how the other tables read.
+  if (auto* m = root["machine"].as_table()) machine_table(p, *m, origin);
+  if (auto* m = root["parameters"].as_table()) parameters_table(p, *m, origin);
+  for (const auto& [k, node] : root) {
+    std::string key(k.str());
+    if (key == "machine" || key == "parameters") {
+      if (!node.is_table()) fail(origin, node, fmt::format("[{}] must be a table", key));
+      continue;
+    }
+    const toml::table* t = node.as_table();
+    if (!t) fail(origin, node, fmt::format("unknown top-level key '{}'", key));
+    if (key == "feeds") {
+      for (const auto& [fk, fn] : *t) {
+        std::string f(fk.str());
+        if (f == "rapid") p.rapid_rate = axis_vector(origin, fn, f, p.axes);
+        else if (f == "max_cutting") p.max_cutting_feed = number(origin, fn, f);
+        else if (f == "spindle_speed_for_time") p.spindle_speed_for_time = number(origin, fn, f);
+        else fail(origin, fn, fmt::format("unknown key '{}' in [feeds]", f));
+      }
+    } else if (key == "work_offsets") {
+      static const char* names[] = {"EXT", "G54", "G55", "G56", "G57", "G58", "G59"};
+      for (const auto& [wk, wn] : *t) {
+        std::string w(wk.str());
+        int idx = -1;
+        for (int i = 0; i < 7; ++i)
+          if (w == names[i]) idx = i;
+        if (idx < 0) fail(origin, wn, "work offsets are named EXT, G54 .. G59");
+        p.work_offsets[idx] = axis_vector(origin, wn, w, p.axes);
+      }
+    } else if (key == "reference_points") {
+      for (const auto& [rk, rn] : *t) {
+        std::string r(rk.str());
+        int idx = r == "1" ? 0 : r == "2" ? 1 : r == "3" ? 2 : r == "4" ? 3 : -1;
+        if (idx < 0) fail(origin, rn, "reference points are named \"1\" .. \"4\" (G28 uses 1, G30 P2..P4)");
+        p.reference_points[idx] = axis_vector(origin, rn, r, p.axes);
+      }
+    } else if (key == "tool_offsets") {
+      for (const auto& [tk, tn] : *t) {
+        std::string s(tk.str());
+        int n = 0;
+        try {
+          n = std::stoi(s);
+        } catch (...) {
+        }
+        if (n < 1 || n > 999) fail(origin, tn, "tool offset numbers are 1 .. 999");
+        p.tool_offsets[n] = number(origin, tn, s);
+      }
+    } else {
+      fail(origin, node, fmt::format("unknown table [{}]", key));
+    }
+  }
+  return p;
+}
+
+MachineProfile load_profile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("{}: error: cannot open the machine profile", path));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_profile(ss.str(), path);
+}
+
+}  // namespace ncurve::machine

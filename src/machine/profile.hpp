@@ -1,0 +1,56 @@
+// What differs between machines: FANUC parameters, axes, units, limits, offsets.
+#pragma once
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ncurve::machine {
+
+enum class MachineType { mill, lathe };
+enum class Control { fanuc_0i, fanuc_30i };
+
+constexpr int kAxes = 6;  // X Y Z A B C
+using AxisVector = std::array<double, kAxes>;
+int axis_index(char letter);  // X0 Y1 Z2 A3 B4 C5, -1 otherwise
+
+struct MachineProfile {
+  std::string name = "FANUC 0i-MF 3-axis mill, factory parameters";
+  MachineType type = MachineType::mill;
+  Control control = Control::fanuc_0i;
+  std::string axes = "XYZ";         // axis letters in FANUC axis order (#5001 is the first)
+  double increment = 0.001;         // least input increment in mm: IS-B 0.001, IS-C 0.0001
+  char gcode_system = 'A';          // lathe G-code system A, B or C
+  bool diameter_x = true;           // lathe: X programmed as a diameter (No.1006#3)
+  bool decimal_calculator = false;  // No.3401#0 DPI: X10 means 10 mm, not 10 increments
+  bool atan_signed = false;         // No.6004#0 NAT: ATAN -180..180, ASIN -90..90
+  bool power_on_g01 = false;        // No.3402#0: G01 rather than G00 at power-on
+  bool power_on_g91 = false;        // No.3402#3: G91 at power-on
+  bool power_on_feed_per_rev = false;  // lathes start in feed per revolution
+  int power_on_plane = 17;
+  bool t_code_calls_o9000 = false;  // No.6001#5 TCS
+  bool block_skip = false;          // block skip switch on: blocks starting with '/' are skipped
+  int macro_nesting = 4;            // G65/G66/custom calls: 4 on 0i/16i, 5 on 30i
+  int subprogram_nesting = 10;      // M98 calls: 10 on 0i, 15 on 30i
+  double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
+  std::array<int, 10> g_code_macros{};  // No.6050..6059: G code that calls O9010..O9019
+  std::array<int, 10> m_code_macros{};  // No.6080..6089: M code that calls O9020..O9029
+  std::array<int, 9> m_code_subprograms{};  // No.6071..6079: M code that calls O9001..O9009
+  AxisVector rapid_rate{15000, 15000, 15000, 3600, 3600, 3600};  // mm/min (deg/min) per axis
+  double max_cutting_feed = 10000;  // mm/min
+  double spindle_speed_for_time = 1000;  // rev/min assumed for feed per revolution when no S is active
+  std::array<AxisVector, 7> work_offsets{};  // [0] external (#5201..), [1..6] G54..G59
+  std::array<AxisVector, 4> reference_points{};  // machine coordinates of reference points 1..4
+  std::map<int, double> tool_offsets;  // offset number -> value (#2001.., #10001..)
+
+  bool lathe() const { return type == MachineType::lathe; }
+};
+
+MachineProfile default_mill();
+MachineProfile default_lathe();
+
+// Reads a TOML profile; throws std::runtime_error naming file:line:column on a bad or unknown key.
+MachineProfile load_profile(const std::string& path);
+MachineProfile parse_profile(const std::string& toml_text, const std::string& origin);
+
+}  // namespace ncurve::machine

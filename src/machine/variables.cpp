@@ -1,0 +1,197 @@
+// Macro variables: locals, commons and the system variables a FANUC control exposes.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "machine/interpreter.hpp"
+
+namespace ncurve::machine {
+
+using nc::Value;
+
+namespace {
+int gcode_for_group(int group, int motion, int plane, bool incremental, bool feed_per_rev, bool inch, bool css,
+                    int length_comp, bool modal_call, int work_index, int exact_stop, bool lathe_a) {
+  switch (group) {
+    case 1: return motion;
+    case 2: return plane;
+    case 3: return incremental ? 91 : 90;
+    case 4: return 22;
+    case 5: return lathe_a ? (feed_per_rev ? 99 : 98) : (feed_per_rev ? 95 : 94);
+    case 6: return inch ? 20 : 21;
+    case 7: return 40;
+    case 8: return length_comp;
+    case 9: return 80;
+    case 10: return 98;
+    case 11: return 50;
+    case 12: return modal_call ? 66 : 67;
+    case 13: return css ? 96 : 97;
+    case 14: return work_index <= 6 ? 53 + work_index : 54;
+    case 15: return exact_stop;
+    case 16: return 69;
+    case 17: return 15;
+    default: return 0;
+  }
+}
+}  // namespace
+
+double Interpreter::program_units(int axis, double mm) const {
+  double v = mm;
+  if (axis == 0 && profile_.lathe() && profile_.diameter_x) v *= 2;
+  if (inch_ && axis < 3) v /= 25.4;
+  return v;
+}
+
+nc::Value Interpreter::variable(int number) { return read_var(number, 0); }
+
+Value Interpreter::read_var(int n, std::uint16_t column) {
+  if (n >= 1 && n <= 33) return locals_[frames_.empty() ? 0 : frames_.back().level][n - 1];
+  if ((n >= 100 && n <= common_high_) || (n >= 500 && n <= 999)) return common_[n];
+  if (n == 0) return Value{};
+  return read_system(n, column);
+}
+
+void Interpreter::write_var(int n, Value v, std::uint16_t column) {
+  if (!v.vacant && (!std::isfinite(v.v) || std::fabs(v.v) > 1e47))
+    alarm("PS0111", "value out of the range of a macro variable (about 1e47)", column);
+  if (n >= 1 && n <= 33) {
+    locals_[frames_.empty() ? 0 : frames_.back().level][n - 1] = v;
+    return;
+  }
+  if ((n >= 100 && n <= common_high_) || (n >= 500 && n <= 999)) {
+    common_[n] = v;
+    return;
+  }
+  if (n == 0) alarm("PS0116", "#0 is always vacant and cannot be assigned", column);
+  write_system(n, v, column);
+}
+
+Value Interpreter::read_system(int n, std::uint16_t column) {
+  auto axis_order = [&](int k) -> int {  // k-th axis of the profile (0-based) -> internal index
+    if (k < 0 || k >= static_cast<int>(profile_.axes.size())) return -1;
+    return axis_index(profile_.axes[k]);
+  };
+  if ((n >= 1000 && n <= 1035) || (n >= 1100 && n <= 1135)) {  // interface signals: no PMC attached
+    auto it = system_store_.find(n);
+    return it == system_store_.end() ? Value::of(0) : it->second;
+  }
+  if ((n >= 2001 && n <= 2200) || (n >= 10001 && n <= 10999)) {
+    int k = n >= 10001 ? n - 10000 : n - 2000;
+    auto it = tool_offsets_.find(k);
+    return Value::of(it == tool_offsets_.end() ? 0.0 : it->second);
+  }
+  switch (n) {
+    case 3000: case 3006: return Value{};
+    case 3001: return Value::of(result_.stats.seconds * 1000.0 - clock_base_ms_);
+    case 3002: return Value::of(result_.stats.seconds / 3600.0);
+    case 3003: case 3004: case 3005: {
+      auto it = system_store_.find(n);
+      return it == system_store_.end() ? Value::of(0) : it->second;
+    }
+    case 3011: case 3012: return Value::of(0);  // date and time: a simulation has none
+    case 3901: return Value::of(parts_done_);
+    case 3902: return Value::of(parts_required_);
+    default: break;
+  }
+  if (n >= 4001 && n <= 4022) {
+    bool lathe_a = profile_.lathe() && profile_.gcode_system == 'A';
+    if (n == 4014 && work_index_ > 6) return Value::of(54.1);
+    return Value::of(gcode_for_group(n - 4000, motion_, plane_, incremental_, feed_per_rev_, inch_, css_,
+                                     length_comp_, modal_call_, work_index_, exact_stop_code_, lathe_a));
+  }
+  if (n >= 4101 && n <= 4130) {
+    switch (n - 4100) {
+      case 7: return Value::of(d_);
+      case 9: return Value::of(inch_ ? feed_ / 25.4 : feed_);
+      case 11: return Value::of(h_);
+      case 13: return last_m_ < 0 ? Value{} : Value::of(last_m_);
+      case 14: return last_sequence_ < 0 ? Value{} : Value::of(last_sequence_);
+      case 15: return Value::of(prog_ && prog_->number >= 0 ? prog_->number : 0);
+      case 19: return Value::of(speed_);
+      case 20: return Value::of(tool_);
+      case 30: return work_index_ > 6 ? Value::of(work_index_ - 6) : Value{};
+      default: return Value{};
+    }
+  }
+  if (n >= 5001 && n <= 5106) {
+    int block = (n - 5001) / 20;  // 0: end point, 1: machine, 2: current, 3: skip, 4: tool length, 5: servo
+    int a = axis_order((n - 5001) % 20);
+    if (a < 0) alarm("PS0115", fmt::format("#{}: the machine has no such axis", n), column);
+    switch (block) {
+      case 0: case 2: return Value::of(program_units(a, pos_[a]));
+      case 1: {
+        double m = pos_[a] + origin_[a] + (a == 2 ? tool_length_ : 0.0);
+        return Value::of(program_units(a, m));
+      }
+      case 3: return Value::of(program_units(a, pos_[a]));
+      case 4: return Value::of(a == 2 ? tool_length_ : 0.0);
+      default: return Value::of(0);
+    }
+  }
+  if (n >= 5201 && n <= 5326) {
+    int set = (n - 5201) / 20;
+    int a = axis_order((n - 5201) % 20);
+    if (a < 0 || set > 6) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
+    return Value::of(work_offsets_[set][a]);
+  }
+  if (n >= 7001 && n <= 7960) {
+    int p = (n - 7001) / 20 + 1;
+    int a = axis_order((n - 7001) % 20);
+    if (a < 0) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
+    auto it = extended_offsets_.find(p);
+    return Value::of(it == extended_offsets_.end() ? 0.0 : it->second[a]);
+  }
+  alarm("PS0115", fmt::format("#{} is not a variable of this control", n), column);
+}
+
+void Interpreter::write_system(int n, Value v, std::uint16_t column) {
+  auto axis_order = [&](int k) -> int {
+    if (k < 0 || k >= static_cast<int>(profile_.axes.size())) return -1;
+    return axis_index(profile_.axes[k]);
+  };
+  if (n == 3000) {
+    int code = static_cast<int>(std::lround(v.number()));
+    std::string text = block_ && block_->comment >= 0 ? prog_->comments[block_->comment] : "";
+    alarm(fmt::format("MC{}", 3000 + code), text.empty() ? "alarm raised by #3000" : text, column);
+  }
+  if (n == 3006) {
+    std::string text = block_ && block_->comment >= 0 ? prog_->comments[block_->comment] : "";
+    emit_event(MoveKind::program_stop, 0);
+    warn("MC3006", text.empty() ? "stop with message (#3006)" : "stop: " + text, column);
+    return;
+  }
+  if (n >= 1100 && n <= 1135) { system_store_[n] = v; return; }
+  if ((n >= 2001 && n <= 2200) || (n >= 10001 && n <= 10999)) {
+    tool_offsets_[n >= 10001 ? n - 10000 : n - 2000] = v.number();
+    return;
+  }
+  switch (n) {
+    case 3001: clock_base_ms_ = result_.stats.seconds * 1000.0 - v.number(); return;
+    case 3003: case 3004: case 3005: system_store_[n] = v; return;
+    case 3901: parts_done_ = v.number(); return;
+    case 3902: parts_required_ = v.number(); return;
+    default: break;
+  }
+  if (n >= 5201 && n <= 5326) {
+    int set = (n - 5201) / 20;
+    int a = axis_order((n - 5201) % 20);
+    if (a < 0 || set > 6) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
+    work_offsets_[set][a] = v.number();
+    set_origin();
+    return;
+  }
+  if (n >= 7001 && n <= 7960) {
+    int p = (n - 7001) / 20 + 1;
+    int a = axis_order((n - 7001) % 20);
+    if (a < 0) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
+    extended_offsets_[p][a] = v.number();
+    set_origin();
+    return;
+  }
+  if ((n >= 1000 && n <= 1035) || (n >= 3001 && n <= 3012) || (n >= 4001 && n <= 4130) ||
+      (n >= 5001 && n <= 5106))
+    alarm("PS0116", fmt::format("#{} is read-only", n), column);
+  alarm("PS0115", fmt::format("#{} is not a variable of this control", n), column);
+}
+
+}  // namespace ncurve::machine

@@ -1,0 +1,53 @@
+#include "nc/diagnostic.hpp"
+
+#include <fmt/format.h>
+
+namespace ncurve::nc {
+
+SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
+  line_starts_.push_back(0);
+  for (std::size_t i = 0; i < text_.size(); ++i)
+    if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  if (line_starts_.size() > 1 && line_starts_.back() == text_.size()) line_starts_.pop_back();
+}
+
+std::string_view SourceFile::line(std::uint32_t number) const {
+  if (number == 0 || number > line_starts_.size()) return {};
+  std::size_t begin = line_starts_[number - 1];
+  std::size_t end = number < line_starts_.size() ? line_starts_[number] : text_.size();
+  while (end > begin && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;
+  return std::string_view(text_).substr(begin, end - begin);
+}
+
+static const char* severity_name(Severity s) {
+  switch (s) {
+    case Severity::error: return "error";
+    case Severity::warning: return "warning";
+    case Severity::note: return "note";
+  }
+  return "error";
+}
+
+std::string format(const Diagnostic& d) {
+  std::string where = d.span.file ? fmt::format("{}:{}:{}: ", d.span.file->name(), d.span.line, d.span.column) : "";
+  std::string head = fmt::format("{}{}: {}{}{}", where, severity_name(d.severity), d.code, d.code.empty() ? "" : " ",
+                                 d.message);
+  if (!d.span.file || d.span.line == 0) return head;
+  std::string_view text = d.span.file->line(d.span.line);
+  constexpr std::size_t kMaxQuote = 160;  // long lines are quoted around the column
+  std::size_t col = d.span.column ? d.span.column - 1 : 0;
+  std::size_t from = col > kMaxQuote / 2 ? col - kMaxQuote / 2 : 0;
+  if (from > text.size()) from = text.size();
+  std::string quoted(text.substr(from, kMaxQuote));
+  for (char& c : quoted)
+    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+  std::size_t caret = col - from;
+  if (caret > quoted.size()) caret = quoted.size();
+  std::size_t len = d.span.length ? d.span.length : 1;
+  if (caret + len > quoted.size() + 1) len = quoted.size() + 1 - caret;
+  if (len == 0) len = 1;
+  return fmt::format("{}\n {:>5} | {}{}\n       | {}{}", head, d.span.line, from ? "..." : "", quoted,
+                     std::string(caret + (from ? 3 : 0), ' '), std::string(len, '^'));
+}
+
+}  // namespace ncurve::nc

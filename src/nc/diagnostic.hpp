@@ -1,0 +1,52 @@
+// Source text, positions in it, and diagnostics that quote the block they refer to.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ncurve::nc {
+
+class SourceFile {
+public:
+  SourceFile(std::string name, std::string text);
+  const std::string& name() const { return name_; }
+  const std::string& text() const { return text_; }
+  std::size_t line_count() const { return line_starts_.size(); }
+  // 1-based line number; returns the line without its end-of-line characters.
+  std::string_view line(std::uint32_t number) const;
+
+private:
+  std::string name_;
+  std::string text_;
+  std::vector<std::size_t> line_starts_;
+};
+
+struct Span {
+  const SourceFile* file = nullptr;
+  std::uint32_t line = 0;    // 1-based
+  std::uint32_t column = 0;  // 1-based, in bytes
+  std::uint32_t length = 1;
+};
+
+enum class Severity { error, warning, note };
+
+struct Diagnostic {
+  Severity severity = Severity::error;
+  std::string code;  // FANUC alarm ("PS0011", "MC3001") or an ncurve code ("NC1001"); may be empty
+  std::string message;
+  Span span;
+};
+
+// "file:line:col: error: PS0011 feed rate is zero" followed by the block and a caret.
+std::string format(const Diagnostic& d);
+
+// Raised by the interpreter at the block that causes an alarm; caught by run().
+struct Alarm : std::runtime_error {
+  explicit Alarm(Diagnostic d) : std::runtime_error(d.message), diagnostic(std::move(d)) {}
+  Diagnostic diagnostic;
+};
+
+}  // namespace ncurve::nc

@@ -1,0 +1,755 @@
+// Splits program text into blocks and compiles each block's words and expressions.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+
+#include "nc/program.hpp"
+
+namespace ncurve::nc {
+namespace {
+
+constexpr std::size_t kMaxBlockChars = 4096;  // significant characters of one block
+constexpr int kMaxBracketNesting = 5;         // FANUC: brackets nest five deep at most
+constexpr int kMaxDigits = 15;
+
+struct Ch {
+  char c;
+  std::uint16_t col;
+};
+
+enum class Kw {
+  none, IF, WHILE, GOTO, DO, END, THEN,
+  EQ, NE, GT, GE, LT, LE, AND, OR, XOR, MOD,
+  SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, ABS, ROUND, FIX, FUP, LN, EXP, POW, ADP, BIN, BCD,
+};
+
+struct KwEntry {
+  const char* text;
+  Kw kw;
+};
+
+// Macro words and FANUC's two-letter abbreviations of them.
+constexpr KwEntry kKeywords[] = {
+    {"IF", Kw::IF},       {"WHILE", Kw::WHILE}, {"WH", Kw::WHILE}, {"GOTO", Kw::GOTO}, {"GO", Kw::GOTO},
+    {"DO", Kw::DO},       {"END", Kw::END},     {"EN", Kw::END},   {"THEN", Kw::THEN}, {"TH", Kw::THEN},
+    {"EQ", Kw::EQ},       {"NE", Kw::NE},       {"GT", Kw::GT},    {"GE", Kw::GE},     {"LT", Kw::LT},
+    {"LE", Kw::LE},       {"AND", Kw::AND},     {"AN", Kw::AND},   {"OR", Kw::OR},     {"XOR", Kw::XOR},
+    {"XO", Kw::XOR},      {"MOD", Kw::MOD},     {"MO", Kw::MOD},   {"SIN", Kw::SIN},   {"SI", Kw::SIN},
+    {"COS", Kw::COS},     {"CO", Kw::COS},      {"TAN", Kw::TAN},  {"TA", Kw::TAN},    {"ASIN", Kw::ASIN},
+    {"AS", Kw::ASIN},     {"ACOS", Kw::ACOS},   {"AC", Kw::ACOS},  {"ATAN", Kw::ATAN}, {"AT", Kw::ATAN},
+    {"SQRT", Kw::SQRT},   {"SQ", Kw::SQRT},     {"ABS", Kw::ABS},  {"AB", Kw::ABS},    {"ROUND", Kw::ROUND},
+    {"RO", Kw::ROUND},    {"FIX", Kw::FIX},     {"FI", Kw::FIX},   {"FUP", Kw::FUP},   {"FU", Kw::FUP},
+    {"LN", Kw::LN},       {"EXP", Kw::EXP},     {"EX", Kw::EXP},   {"POW", Kw::POW},   {"PO", Kw::POW},
+    {"ADP", Kw::ADP},     {"AD", Kw::ADP},      {"BIN", Kw::BIN},  {"BI", Kw::BIN},    {"BCD", Kw::BCD},
+    {"BC", Kw::BCD},
+};
+
+bool is_macro_statement_word(Kw k) {
+  return k == Kw::IF || k == Kw::WHILE || k == Kw::GOTO || k == Kw::DO || k == Kw::END || k == Kw::THEN;
+}
+
+Op function_op(Kw k) {
+  switch (k) {
+    case Kw::SIN: return Op::sin;
+    case Kw::COS: return Op::cos;
+    case Kw::TAN: return Op::tan;
+    case Kw::ASIN: return Op::asin;
+    case Kw::ACOS: return Op::acos;
+    case Kw::SQRT: return Op::sqrt;
+    case Kw::ABS: return Op::abs;
+    case Kw::ROUND: return Op::round;
+    case Kw::FIX: return Op::fix;
+    case Kw::FUP: return Op::fup;
+    case Kw::LN: return Op::ln;
+    case Kw::EXP: return Op::exp;
+    case Kw::ADP: return Op::adp;
+    case Kw::BIN: return Op::bin;
+    case Kw::BCD: return Op::bcd;
+    default: return Op::konst;
+  }
+}
+
+struct SyntaxError {
+  std::string code;
+  std::string message;
+  std::uint16_t column;
+  std::uint32_t length = 1;
+};
+
+// Parses one block (already stripped of spaces and comments, upper case) into a Block.
+class BlockParser {
+public:
+  BlockParser(const std::vector<Ch>& s, Program& prog) : s_(s), prog_(prog) {}
+
+  void statement(Block& b) {
+    if (i_ == s_.size()) return;
+    b.column = s_[i_].col;
+    if (peek() == '#') return assignment(b, Statement::assign);
+    std::size_t len = 0;
+    Kw k = keyword_at(i_, len);
+    if (is_macro_statement_word(k)) return macro_statement(b, k, len);
+    nc_words(b);
+  }
+
+  Expr standalone_expression() {
+    Expr e = begin_expr();
+    expression();
+    if (i_ != s_.size()) fail("PS0114", "unexpected text after the expression");
+    return finish_expr(e);
+  }
+
+private:
+  const std::vector<Ch>& s_;
+  Program& prog_;
+  std::size_t i_ = 0;
+  int depth_ = 0;      // bracket nesting
+  int stack_ = 0;      // evaluation stack depth while emitting
+  int max_stack_ = 0;
+  bool condition_ = false;
+
+  char peek(std::size_t ahead = 0) const { return i_ + ahead < s_.size() ? s_[i_ + ahead].c : '\0'; }
+  std::uint16_t col() const { return i_ < s_.size() ? s_[i_].col : (s_.empty() ? 1 : s_.back().col + 1); }
+
+  [[noreturn]] void fail(std::string code, std::string message, std::uint32_t length = 1) const {
+    throw SyntaxError{std::move(code), std::move(message), col(), length};
+  }
+
+  Kw keyword_at(std::size_t at, std::size_t& len) const {
+    std::size_t run = 0;
+    while (at + run < s_.size() && std::isupper(static_cast<unsigned char>(s_[at + run].c))) ++run;
+    len = 0;
+    if (run < 2) return Kw::none;
+    Kw best = Kw::none;
+    for (const auto& e : kKeywords) {
+      std::size_t n = std::strlen(e.text);
+      if (n > run || n <= len) continue;
+      bool same = true;
+      for (std::size_t j = 0; j < n && same; ++j) same = s_[at + j].c == e.text[j];
+      if (same) { best = e.kw; len = n; }
+    }
+    return best;
+  }
+
+  Kw take_keyword() {
+    std::size_t len = 0;
+    Kw k = keyword_at(i_, len);
+    if (k != Kw::none) i_ += len;
+    return k;
+  }
+
+  void expect(char c, const char* what) {
+    if (peek() != c) fail("PS0114", fmt::format("expected '{}' {}", c, what));
+    ++i_;
+  }
+
+  // ---- code emission ----
+  Expr begin_expr() const { return Expr{static_cast<std::uint32_t>(prog_.code.size()), 0}; }
+  Expr finish_expr(Expr e) const {
+    e.end = static_cast<std::uint32_t>(prog_.code.size());
+    return e;
+  }
+  void emit(Op op, std::uint16_t column, std::int32_t var = 0, double k = 0) {
+    if (op == Op::konst || op == Op::var) ++stack_;
+    if (op >= Op::add && op <= Op::le) --stack_;
+    if (op == Op::atan2_slash || op == Op::atan2_comma || op == Op::pow) --stack_;
+    max_stack_ = std::max(max_stack_, stack_);
+    if (max_stack_ >= kMaxEvalStack) fail("PS0114", "expression is too complex");
+    prog_.code.push_back(Instr{op, column, var, k});
+  }
+
+  // ---- numbers ----
+  double number(bool& decimal_point) {
+    std::size_t start = i_;
+    std::string digits;
+    decimal_point = false;
+    while (std::isdigit(static_cast<unsigned char>(peek())) || peek() == '.') {
+      if (peek() == '.') {
+        if (decimal_point) fail("PS0007", "a number has two decimal points");
+        decimal_point = true;
+      }
+      digits += peek();
+      ++i_;
+    }
+    if (digits == ".") {
+      i_ = start;
+      fail("PS0007", "a decimal point without digits");
+    }
+    std::size_t count = std::count_if(digits.begin(), digits.end(), [](char c) { return c != '.'; });
+    if (count > kMaxDigits) {
+      i_ = start;
+      fail("PS0003", fmt::format("too many digits ({}); at most {}", count, kMaxDigits),
+           static_cast<std::uint32_t>(digits.size()));
+    }
+    return std::strtod(digits.c_str(), nullptr);
+  }
+
+  // ---- expressions ----
+  void expression() {
+    sum();
+    std::size_t len = 0;
+    Kw k = keyword_at(i_, len);
+    if (k >= Kw::EQ && k <= Kw::LE) {
+      if (!condition_) fail("PS0114", "EQ, NE, GT, GE, LT and LE may only be used in IF and WHILE conditions", len);
+      std::uint16_t c = col();
+      i_ += len;
+      sum();
+      static constexpr Op kRel[] = {Op::eq, Op::ne, Op::gt, Op::ge, Op::lt, Op::le};
+      emit(kRel[static_cast<int>(k) - static_cast<int>(Kw::EQ)], c);
+      Kw again = keyword_at(i_, len);
+      if (again >= Kw::EQ && again <= Kw::LE)
+        fail("PS0114", "two comparisons in one bracket; bracket each one: [[a GT b] AND [c LT d]]", len);
+    }
+  }
+
+  void sum() {
+    term();
+    for (;;) {
+      std::uint16_t c = col();
+      std::size_t len = 0;
+      if (peek() == '+' || peek() == '-') {
+        Op op = peek() == '+' ? Op::add : Op::sub;
+        ++i_;
+        term();
+        emit(op, c);
+      } else if (Kw k = keyword_at(i_, len); k == Kw::OR || k == Kw::XOR) {
+        i_ += len;
+        term();
+        emit(k == Kw::OR ? Op::bor : Op::bxor, c);
+      } else {
+        return;
+      }
+    }
+  }
+
+  void term() {
+    unary();
+    for (;;) {
+      std::uint16_t c = col();
+      std::size_t len = 0;
+      if (peek() == '*' || peek() == '/') {
+        Op op = peek() == '*' ? Op::mul : Op::div;
+        ++i_;
+        unary();
+        emit(op, c);
+      } else if (Kw k = keyword_at(i_, len); k == Kw::AND || k == Kw::MOD) {
+        i_ += len;
+        unary();
+        emit(k == Kw::AND ? Op::band : Op::mod, c);
+      } else {
+        return;
+      }
+    }
+  }
+
+  void unary() {
+    if (peek() == '-' || peek() == '+') {
+      std::uint16_t c = col();
+      bool negative = peek() == '-';
+      ++i_;
+      if (peek() == '-' || peek() == '+') fail("PS0006", "two signs in a row");
+      primary();
+      if (negative) emit(Op::neg, c);
+      return;
+    }
+    primary();
+  }
+
+  void bracketed(bool allow_condition) {
+    std::uint16_t c = col();
+    expect('[', "");
+    if (++depth_ > kMaxBracketNesting) {
+      i_--;
+      fail("PS0118", fmt::format("brackets nested more than {} deep", kMaxBracketNesting));
+    }
+    bool saved = condition_;
+    condition_ = condition_ && allow_condition;
+    if (peek() == ']') fail("PS0114", "empty brackets");
+    expression();
+    condition_ = saved;
+    if (peek() != ']') {
+      if (i_ == s_.size()) fail("PS0114", fmt::format("missing ']' for the '[' at column {}", c));
+      fail("PS0114", "expected ']' or an operator");
+    }
+    ++i_;
+    --depth_;
+  }
+
+  void variable() {
+    std::uint16_t c = col();
+    expect('#', "");
+    if (peek() == '[') {
+      bracketed(false);
+      emit(Op::var_indirect, c);
+      return;
+    }
+    if (!std::isdigit(static_cast<unsigned char>(peek())))
+      fail("PS0114", "'#' must be followed by a variable number or [expression]");
+    bool dp = false;
+    double n = number(dp);
+    if (dp) fail("PS0114", "a variable number has no decimal point");
+    if (n > 99999999) fail("PS0115", "variable number out of range");
+    emit(Op::var, c, static_cast<std::int32_t>(n));
+  }
+
+  void primary() {
+    char c = peek();
+    std::uint16_t column = col();
+    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+      bool dp = false;
+      double v = number(dp);
+      emit(Op::konst, column, 0, v);
+      return;
+    }
+    if (c == '#') return variable();
+    if (c == '[') return bracketed(true);
+    if (std::isupper(static_cast<unsigned char>(c))) {
+      std::size_t len = 0;
+      Kw k = keyword_at(i_, len);
+      if (k == Kw::ATAN) {
+        i_ += len;
+        bracketed(false);
+        if (peek() == '/' && peek(1) == '[') {
+          ++i_;
+          bracketed(false);
+          emit(Op::atan2_slash, column);
+        } else if (peek() == ',') {
+          fail("PS0114", "ATAN[a,b] is written with the comma inside the brackets");
+        } else {
+          emit(Op::atan1, column);
+        }
+        return;
+      }
+      if (k == Kw::POW || k == Kw::ATAN) {
+        i_ += len;
+        two_arguments(k == Kw::POW ? Op::pow : Op::atan2_comma, column);
+        return;
+      }
+      Op f = function_op(k);
+      if (f != Op::konst) {
+        i_ += len;
+        if (peek() != '[') fail("PS0114", "a function's argument must be in brackets");
+        bracketed(false);
+        emit(f, column);
+        return;
+      }
+      fail("PS0114", fmt::format("'{}' is not a function or value", c));
+    }
+    if (c == '\0') fail("PS0114", "expression ends too early");
+    fail("PS0114", fmt::format("unexpected '{}' in an expression", c));
+  }
+
+  void two_arguments(Op op, std::uint16_t column) {
+    std::uint16_t c = col();
+    expect('[', "after the function name");
+    if (++depth_ > kMaxBracketNesting) fail("PS0118", "brackets nested more than 5 deep");
+    bool saved = condition_;
+    condition_ = false;
+    expression();
+    if (peek() != ',') fail("PS0114", fmt::format("expected ',' between the two arguments of the '[' at column {}", c));
+    ++i_;
+    expression();
+    condition_ = saved;
+    expect(']', "after the second argument");
+    --depth_;
+    emit(op, column);
+  }
+
+  // A value for an address: number, #i, -#i, [expr], -[expr].
+  void word_value(Word& w) {
+    bool negative = false;
+    std::uint16_t sign_col = col();
+    if (peek() == '-' || peek() == '+') {
+      negative = peek() == '-';
+      ++i_;
+    }
+    char c = peek();
+    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+      w.value = number(w.decimal_point);
+      if (negative) w.value = -w.value;
+      return;
+    }
+    if (c == '#' || c == '[') {
+      w.literal = false;
+      Expr e = begin_expr();
+      stack_ = max_stack_ = 0;
+      if (c == '#') variable(); else bracketed(false);
+      if (negative) emit(Op::neg, sign_col);
+      w.expr = finish_expr(e);
+      return;
+    }
+    fail("PS0005", fmt::format("no value after address {}", w.letter));
+  }
+
+  void nc_words(Block& b) {
+    b.kind = Statement::nc;
+    b.words_begin = static_cast<std::uint32_t>(prog_.words.size());
+    while (i_ < s_.size()) {
+      char c = peek();
+      if (!std::isupper(static_cast<unsigned char>(c))) {
+        if (c == '+' || c == '-' || std::isdigit(static_cast<unsigned char>(c)) || c == '.')
+          fail("PS0004", "a number or sign without an address (arithmetic in a word needs brackets: X[#1+5.])");
+        if (c == '=') fail("PS0009", "'=' in an NC block: only a variable (#i) can be assigned");
+        fail("PS0009", fmt::format("'{}' is not an address", c));
+      }
+      std::size_t len = 0;
+      Kw k = keyword_at(i_, len);
+      if (is_macro_statement_word(k))
+        fail("PS0127", "an NC statement and a macro statement in one block", static_cast<std::uint32_t>(len));
+      if (len > 0 || (i_ + 1 < s_.size() && std::isupper(static_cast<unsigned char>(peek(1))))) {
+        std::string run;
+        for (std::size_t j = i_; j < s_.size() && std::isupper(static_cast<unsigned char>(s_[j].c)); ++j) run += s_[j].c;
+        fail("PS0009", fmt::format("'{}' is not an address: an address is one letter followed by a value", run),
+             static_cast<std::uint32_t>(run.size()));
+      }
+      if (c == 'O' || c == 'N') fail("PS0009", fmt::format("address {} is only allowed at the start of a block", c));
+      Word w;
+      w.letter = c;
+      w.column = col();
+      ++i_;
+      word_value(w);
+      prog_.words.push_back(w);
+    }
+    b.words_end = static_cast<std::uint32_t>(prog_.words.size());
+  }
+
+  void assignment(Block& b, Statement kind) {
+    b.kind = kind;
+    std::uint16_t c = col();
+    expect('#', "");
+    if (peek() == '[') {
+      Expr e = begin_expr();
+      stack_ = max_stack_ = 0;
+      bracketed(false);
+      b.target = finish_expr(e);
+    } else {
+      if (!std::isdigit(static_cast<unsigned char>(peek())))
+        fail("PS0114", "'#' must be followed by a variable number or [expression]");
+      bool dp = false;
+      double n = number(dp);
+      if (dp || n > 99999999) fail("PS0115", "bad variable number");
+      b.target_var = static_cast<std::int32_t>(n);
+      if (b.target_var == 0) {
+        i_ = 0;
+        throw SyntaxError{"PS0116", "#0 is always vacant and cannot be assigned", c, 2};
+      }
+    }
+    if (peek() != '=') {
+      if (i_ == s_.size()) fail("PS0114", "a variable alone is not a statement: expected '='");
+      fail("PS0127", "expected '=' after the variable (NC words cannot follow a variable)");
+    }
+    ++i_;
+    if (i_ == s_.size()) fail("PS0114", "nothing after '='");
+    Expr e = begin_expr();
+    stack_ = max_stack_ = 0;
+    expression();
+    b.value = finish_expr(e);
+    if (i_ != s_.size()) {
+      if (std::isupper(static_cast<unsigned char>(peek())))
+        fail("PS0127", "an NC word after an assignment: a macro statement and NC words in one block");
+      fail("PS0114", "expected an operator or the end of the block");
+    }
+  }
+
+  Expr condition() {
+    if (peek() != '[') fail("PS0114", "the condition must be in brackets: IF [#1 GT 0] ...");
+    Expr e = begin_expr();
+    stack_ = max_stack_ = 0;
+    condition_ = true;
+    bracketed(true);
+    condition_ = false;
+    return finish_expr(e);
+  }
+
+  Expr jump_target() {
+    if (i_ == s_.size()) fail("PS0128", "GOTO needs a sequence number");
+    Expr e = begin_expr();
+    stack_ = max_stack_ = 0;
+    expression();
+    return finish_expr(e);
+  }
+
+  std::uint8_t loop_number() {
+    if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("PS0126", "DO and END need a loop number 1, 2 or 3");
+    bool dp = false;
+    std::uint16_t c = col();
+    double n = number(dp);
+    if (dp || n < 1 || n > 3) throw SyntaxError{"PS0126", "the loop number of DO/END must be 1, 2 or 3", c, 1};
+    return static_cast<std::uint8_t>(n);
+  }
+
+  void macro_statement(Block& b, Kw k, std::size_t len) {
+    i_ += len;
+    switch (k) {
+      case Kw::GOTO:
+        b.kind = Statement::go_to;
+        b.value = jump_target();
+        break;
+      case Kw::IF: {
+        b.cond = condition();
+        Kw then = take_keyword();
+        if (then == Kw::GOTO) {
+          b.kind = Statement::if_goto;
+          b.value = jump_target();
+        } else if (then == Kw::THEN) {
+          if (peek() != '#') fail("PS0114", "THEN must be followed by an assignment #i = ...");
+          assignment(b, Statement::if_then);
+        } else {
+          fail("PS0114", "IF [condition] must be followed by GOTO n or THEN #i = ...");
+        }
+        break;
+      }
+      case Kw::WHILE: {
+        b.cond = condition();
+        if (take_keyword() != Kw::DO) fail("PS0114", "WHILE [condition] must be followed by DO m");
+        b.kind = Statement::while_do;
+        b.loop_id = loop_number();
+        break;
+      }
+      case Kw::DO:
+        b.kind = Statement::do_loop;
+        b.loop_id = loop_number();
+        break;
+      case Kw::END:
+        b.kind = Statement::end_loop;
+        b.loop_id = loop_number();
+        break;
+      default:
+        i_ -= len;
+        fail("PS0114", "THEN without IF");
+    }
+    if (i_ != s_.size()) fail("PS0114", "unexpected text after the statement");
+  }
+};
+
+void add_error(Program& p, Block& b, std::string code, std::string message, std::uint16_t column,
+               std::uint32_t length, std::vector<Diagnostic>& all) {
+  Diagnostic d{Severity::error, std::move(code), std::move(message), Span{p.file.get(), b.line, column, length}};
+  all.push_back(d);
+  if (b.error < 0) {
+    b.error = static_cast<std::int32_t>(p.errors.size());
+    p.errors.push_back(std::move(d));
+  }
+}
+
+// Pairs DO/WHILE with END in each program; FANUC allows three levels of nesting.
+void match_loops(Program& p, std::vector<Diagnostic>& all) {
+  std::vector<std::int32_t> open;
+  for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+    Block& b = p.blocks[i];
+    if (b.kind == Statement::while_do || b.kind == Statement::do_loop) {
+      if (open.size() >= 3) {
+        add_error(p, b, "PS0126", "DO loops nested more than 3 deep", b.column, 1, all);
+        continue;
+      }
+      open.push_back(static_cast<std::int32_t>(i));
+    } else if (b.kind == Statement::end_loop) {
+      if (!open.empty() && p.blocks[open.back()].loop_id == b.loop_id) {
+        b.match = open.back();
+        p.blocks[open.back()].match = static_cast<std::int32_t>(i);
+        open.pop_back();
+      } else if (open.empty()) {
+        add_error(p, b, "PS0124", fmt::format("END {} without a DO {} before it", b.loop_id, b.loop_id), b.column, 3,
+                  all);
+      } else {
+        add_error(p, b, "PS0124",
+                  fmt::format("END {} closes DO {} (line {}) out of order: loops may nest but not overlap", b.loop_id,
+                              p.blocks[open.back()].loop_id, p.blocks[open.back()].line),
+                  b.column, 3, all);
+      }
+    }
+  }
+  for (std::int32_t i : open) {
+    Block& b = p.blocks[i];
+    add_error(p, b, "PS0124", fmt::format("DO {} has no END {}", b.loop_id, b.loop_id), b.column, 2, all);
+  }
+}
+
+struct LineScanner {
+  std::vector<Ch> chars;
+  std::string comment;
+  bool has_comment = false;
+  std::string error;
+  std::uint16_t error_col = 0;
+};
+
+std::uint16_t clamp_col(std::size_t c) { return static_cast<std::uint16_t>(std::min<std::size_t>(c, 65535)); }
+
+}  // namespace
+
+ParseResult parse(std::shared_ptr<const SourceFile> file) {
+  ParseResult result;
+  Program* current = nullptr;
+  auto new_program = [&](int number) {
+    result.programs.push_back(std::make_unique<Program>());
+    current = result.programs.back().get();
+    current->number = number;
+    current->file = file;
+  };
+  bool started = false;  // a block has been read (a later '%' ends the file)
+
+  auto handle_block = [&](LineScanner& ls, std::uint32_t line) {
+    std::vector<Ch>& s = ls.chars;
+    std::size_t i = 0;
+    // Program number line: O1234 (NAME)
+    if (!s.empty() && s[0].c == 'O' && s.size() > 1 && std::isdigit(static_cast<unsigned char>(s[1].c))) {
+      std::size_t j = 1;
+      std::string digits;
+      while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j].c))) digits += s[j++].c;
+      if (digits.size() > 8) digits.resize(8);
+      new_program(std::stoi(digits));
+      if (ls.has_comment) current->name = ls.comment;
+      started = true;
+      if (j == s.size()) return;
+      s.erase(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(j));
+    }
+    if (!current) new_program(-1);
+    Block b;
+    b.line = line;
+    b.column = s.empty() ? 1 : s[0].col;
+    if (ls.has_comment) {
+      b.comment = static_cast<std::int32_t>(current->comments.size());
+      current->comments.push_back(ls.comment);
+    }
+    if (!ls.error.empty()) {
+      add_error(*current, b, "PS0009", ls.error, ls.error_col, 1, result.diagnostics);
+      current->blocks.push_back(b);
+      started = true;
+      return;
+    }
+    if (i < s.size() && s[i].c == '/') {
+      b.block_skip = true;
+      ++i;
+      if (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i].c))) ++i;
+    }
+    if (i < s.size() && s[i].c == 'N') {
+      std::size_t j = i + 1;
+      std::string digits;
+      while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j].c))) digits += s[j++].c;
+      if (digits.empty()) {
+        add_error(*current, b, "PS0005", "no number after address N", s[i].col, 1, result.diagnostics);
+      } else if (digits.size() > 8) {
+        add_error(*current, b, "PS0003", "sequence number has more than 8 digits", s[i].col,
+                  static_cast<std::uint32_t>(digits.size() + 1), result.diagnostics);
+      } else {
+        b.sequence = std::stoi(digits);
+        current->sequence_index.emplace(b.sequence, static_cast<std::int32_t>(current->blocks.size()));
+      }
+      i = j;
+    }
+    if (b.kind == Statement::empty && b.error < 0 && i < s.size()) {
+      std::vector<Ch> rest(s.begin() + static_cast<std::ptrdiff_t>(i), s.end());
+      BlockParser bp(rest, *current);
+      std::size_t words_mark = current->words.size(), code_mark = current->code.size();
+      try {
+        bp.statement(b);
+      } catch (const SyntaxError& e) {
+        current->words.resize(words_mark);
+        current->code.resize(code_mark);
+        b.kind = Statement::empty;
+        b.words_begin = b.words_end = static_cast<std::uint32_t>(words_mark);
+        b.target = b.value = b.cond = Expr{};
+        add_error(*current, b, e.code, e.message, e.column, e.length, result.diagnostics);
+      }
+    }
+    started = true;
+    current->blocks.push_back(b);
+  };
+
+  const std::string& text = file->text();
+  std::size_t pos = 0;
+  std::uint32_t line = 0;
+  bool done = false;
+  while (pos < text.size() && !done) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string::npos) eol = text.size();
+    ++line;
+    std::string_view raw(text.data() + pos, eol - pos);
+    pos = eol + 1;
+
+    std::size_t first = raw.find_first_not_of(" \t\r");
+    if (first != std::string_view::npos && raw[first] == '%') {
+      if (started) done = true;
+      continue;
+    }
+    LineScanner ls;
+    bool in_comment = false;
+    std::size_t comment_start = 0;
+    bool block_open = false;
+    for (std::size_t k = 0; k < raw.size(); ++k) {
+      char c = raw[k];
+      std::uint16_t column = clamp_col(k + 1);
+      if (in_comment) {
+        if (c == ')') in_comment = false;
+        else if (!ls.has_comment || ls.comment.size() < 256) {
+          if (ls.chars.size() <= kMaxBlockChars) ls.comment += c;
+        }
+        if (!in_comment) ls.has_comment = true;
+        continue;
+      }
+      if (c == '(') {
+        in_comment = true;
+        comment_start = k;
+        if (ls.has_comment) ls.comment += ' ';
+        continue;
+      }
+      if (c == ' ' || c == '\t' || c == '\r') continue;
+      if (c == ';') {
+        handle_block(ls, line);
+        ls = LineScanner{};
+        block_open = false;
+        continue;
+      }
+      block_open = true;
+      if (!ls.error.empty()) continue;
+      unsigned char u = static_cast<unsigned char>(c);
+      if (u < 32 || u > 126) {
+        ls.error = fmt::format("invalid character (byte 0x{:02X})", u);
+        ls.error_col = column;
+        continue;
+      }
+      if (ls.chars.size() >= kMaxBlockChars) {
+        ls.error = fmt::format("block longer than {} characters", kMaxBlockChars);
+        ls.error_col = column;
+        continue;
+      }
+      ls.chars.push_back(Ch{static_cast<char>(std::toupper(u)), column});
+    }
+    if (in_comment && ls.error.empty()) {
+      ls.error = "comment '(' is not closed on this line";
+      ls.error_col = clamp_col(comment_start + 1);
+    }
+    if (block_open || !ls.chars.empty() || !ls.error.empty() || ls.has_comment) handle_block(ls, line);
+    else if (first != std::string_view::npos) handle_block(ls, line);
+  }
+  for (auto& p : result.programs) match_loops(*p, result.diagnostics);
+  std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                   [](const Diagnostic& a, const Diagnostic& b) { return a.span.line < b.span.line; });
+  return result;
+}
+
+CompiledExpr compile_expression(const std::string& text, const std::string& origin) {
+  std::vector<Ch> chars;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    unsigned char u = static_cast<unsigned char>(text[k]);
+    if (u == ' ' || u == '\t') continue;
+    if (u < 32 || u > 126 || chars.size() >= kMaxBlockChars)
+      throw Alarm(Diagnostic{Severity::error, "PS0114",
+                             fmt::format("{}: column {}: invalid character or expression too long", origin, k + 1),
+                             Span{}});
+    chars.push_back(Ch{static_cast<char>(std::toupper(u)), clamp_col(k + 1)});
+  }
+  Program p;
+  BlockParser bp(chars, p);
+  try {
+    bp.standalone_expression();
+  } catch (const SyntaxError& e) {
+    throw Alarm(Diagnostic{Severity::error, e.code, fmt::format("{}: column {}: {}", origin, e.column, e.message),
+                           Span{}});
+  }
+  return CompiledExpr{std::move(p.code)};
+}
+
+}  // namespace ncurve::nc

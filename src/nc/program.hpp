@@ -1,0 +1,81 @@
+// The compiled form of a part program: blocks, address words and expression code.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "nc/diagnostic.hpp"
+#include "nc/expr.hpp"
+
+namespace ncurve::nc {
+
+struct Word {
+  char letter = 0;
+  bool literal = true;         // value known at parse time
+  bool decimal_point = false;  // a literal written with '.'
+  std::uint16_t column = 0;
+  double value = 0;  // literal value
+  Expr expr;         // otherwise
+};
+
+enum class Statement : std::uint8_t {
+  empty,     // nothing but N, comments or '/'
+  nc,        // address words
+  assign,    // #i = expr
+  go_to,     // GOTO n
+  if_goto,   // IF [cond] GOTO n
+  if_then,   // IF [cond] THEN #i = expr
+  while_do,  // WHILE [cond] DO m
+  do_loop,   // DO m (no WHILE: endless)
+  end_loop,  // END m
+};
+
+struct Block {
+  Statement kind = Statement::empty;
+  bool block_skip = false;
+  std::uint8_t loop_id = 0;      // m of DO m / END m
+  std::uint16_t column = 1;      // first column of the statement
+  std::uint32_t line = 0;
+  std::int32_t sequence = -1;    // N number
+  std::int32_t match = -1;       // WHILE/DO: index of its END; END: index of its DO
+  std::int32_t error = -1;       // index into Program::errors: the alarm raised when this block runs
+  std::int32_t comment = -1;     // index into Program::comments: first comment of the block
+  std::uint32_t words_begin = 0, words_end = 0;
+  std::int32_t target_var = -1;  // assignment to a fixed variable number, else target expr
+  Expr target, value, cond;
+};
+
+struct Program {
+  int number = -1;  // O number; -1 when the file has none
+  std::string name;  // comment on the O line
+  std::shared_ptr<const SourceFile> file;
+  std::vector<Block> blocks;
+  std::vector<Word> words;
+  std::vector<Instr> code;
+  std::vector<Diagnostic> errors;
+  std::vector<std::string> comments;
+  std::unordered_map<std::int32_t, std::int32_t> sequence_index;  // N -> first block with it
+
+  Span span_of(const Block& b, std::uint16_t column = 0, std::uint32_t length = 1) const {
+    return Span{file.get(), b.line, column ? column : b.column, length};
+  }
+};
+
+struct ParseResult {
+  std::vector<std::unique_ptr<Program>> programs;
+  std::vector<Diagnostic> diagnostics;  // every problem found in the text, in order
+};
+
+// Splits a file into programs (one per O number) and compiles each block.
+// Problems are reported and also attached to their block, to be raised when it runs, as FANUC does.
+ParseResult parse(std::shared_ptr<const SourceFile> file);
+
+// Compiles one stand-alone expression (for curves given as text); throws Alarm on error.
+struct CompiledExpr {
+  std::vector<Instr> code;
+};
+CompiledExpr compile_expression(const std::string& text, const std::string& origin = "<expression>");
+
+}  // namespace ncurve::nc

@@ -1,0 +1,119 @@
+#include "report/summary.hpp"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+namespace ncurve::report {
+
+using machine::MoveKind;
+
+SourceStats source_stats(const machine::ProgramLibrary& lib, const nc::SourceFile* file) {
+  SourceStats s;
+  if (file) s.bytes = file->text().size();
+  for (const auto& p : lib.programs()) {
+    if (p->file.get() != file) continue;
+    ++s.programs;
+    if (p->number >= 0) ++s.words;  // the O word
+    for (const auto& b : p->blocks) {
+      bool content = b.kind != nc::Statement::empty || b.sequence >= 0;
+      if (content) ++s.blocks;
+      if (b.sequence >= 0) ++s.words;
+      if (b.kind == nc::Statement::nc) s.words += b.words_end - b.words_begin;
+      else if (b.kind != nc::Statement::empty) ++s.words;
+    }
+  }
+  return s;
+}
+
+static std::string kind_counts(const machine::RunStats& s) {
+  std::string out;
+  for (int k = 0; k < 10; ++k) {
+    if (!s.by_kind[k]) continue;
+    if (!out.empty()) out += ", ";
+    out += fmt::format("{} {}", s.by_kind[k], machine::to_string(static_cast<MoveKind>(k)));
+  }
+  return out.empty() ? "none" : out;
+}
+
+std::string summary_text(const RunReport& r) {
+  const auto& res = *r.result;
+  const auto& st = res.stats;
+  const auto& prof = *r.profile;
+  std::string out;
+  out += fmt::format("ncurve run: {}\n", r.source);
+  out += fmt::format("  machine        {}\n", prof.name);
+  out += fmt::format("  source         {} bytes, {} words, {} blocks, {} program(s)\n", r.stats.bytes, r.stats.words,
+                     r.stats.blocks, r.stats.programs);
+  out += fmt::format("  executed       {} blocks\n", st.blocks);
+  out += fmt::format("  moves          {}\n", kind_counts(st));
+  out += fmt::format("  path length    {:.3f} mm at feed, {:.3f} mm at rapid\n", st.feed_length, st.rapid_length);
+  out += fmt::format("  time (F only)  {:.2f} s (programmed feed and rapid rates; no acceleration)\n", st.seconds);
+  if (st.has_extent) {
+    double xs = prof.lathe() && prof.diameter_x ? 2 : 1;
+    for (char a : prof.axes) {
+      int k = machine::axis_index(a);
+      out += fmt::format("  extent {}{}      {:.4f} .. {:.4f}\n", a, k == 0 && xs == 2 ? "(dia)" : "     ",
+                         st.min[k] * (k == 0 ? xs : 1), st.max[k] * (k == 0 ? xs : 1));
+    }
+  }
+  if (!r.text_problems.empty())
+    out += fmt::format("  text problems  {} (each alarms when the control reaches its block)\n", r.text_problems.size());
+  for (const auto& d : r.text_problems) out += nc::format(d) + "\n";
+  for (const auto& w : res.warnings) out += nc::format(w) + "\n";
+  if (res.alarm) out += nc::format(*res.alarm) + "\n";
+  out += res.ok() ? "  result         completed\n" : "  result         ALARM: execution stopped at the block above\n";
+  return out;
+}
+
+static nlohmann::json diagnostic_json(const nc::Diagnostic& d) {
+  nlohmann::json j;
+  j["severity"] = d.severity == nc::Severity::error ? "error" : d.severity == nc::Severity::warning ? "warning" : "note";
+  j["code"] = d.code;
+  j["message"] = d.message;
+  if (d.span.file) {
+    j["file"] = d.span.file->name();
+    j["line"] = d.span.line;
+    j["column"] = d.span.column;
+    j["block"] = std::string(d.span.file->line(d.span.line));
+  }
+  return j;
+}
+
+std::string summary_json(const RunReport& r) {
+  const auto& res = *r.result;
+  const auto& st = res.stats;
+  const auto& prof = *r.profile;
+  nlohmann::json j;
+  j["source"] = r.source;
+  j["machine"] = prof.name;
+  j["source_bytes"] = r.stats.bytes;
+  j["source_words"] = r.stats.words;
+  j["source_blocks"] = r.stats.blocks;
+  j["blocks_executed"] = st.blocks;
+  nlohmann::json moves = nlohmann::json::object();
+  for (int k = 0; k < 10; ++k) moves[machine::to_string(static_cast<MoveKind>(k))] = st.by_kind[k];
+  j["moves"] = moves;
+  j["motions"] = st.motions;
+  j["feed_length_mm"] = st.feed_length;
+  j["rapid_length_mm"] = st.rapid_length;
+  j["time_at_programmed_feed_s"] = st.seconds;
+  if (st.has_extent) {
+    nlohmann::json ext = nlohmann::json::object();
+    double xs = prof.lathe() && prof.diameter_x ? 2 : 1;
+    for (char a : prof.axes) {
+      int k = machine::axis_index(a);
+      ext[std::string(1, a)] = {st.min[k] * (k == 0 ? xs : 1), st.max[k] * (k == 0 ? xs : 1)};
+    }
+    j["extent"] = ext;
+  }
+  j["warnings"] = nlohmann::json::array();
+  for (const auto& w : res.warnings) j["warnings"].push_back(diagnostic_json(w));
+  j["text_problems"] = nlohmann::json::array();
+  for (const auto& d : r.text_problems) j["text_problems"].push_back(diagnostic_json(d));
+  j["alarm"] = res.alarm ? diagnostic_json(*res.alarm) : nlohmann::json(nullptr);
+  j["ok"] = res.ok();
+  return j.dump(2) + "\n";
+}
+
+}  // namespace ncurve::report

@@ -1,0 +1,157 @@
+#include "report/writers.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+namespace ncurve::report {
+
+using machine::Move;
+using machine::MoveKind;
+
+static double clean(double v) { return v == 0 ? 0.0 : v; }  // no "-0"
+
+void JsonlWriter::on_move(const Move& m) {
+  if (m.file != last_file_) {
+    last_file_ = m.file;
+    file_json_ = nlohmann::json(m.file ? m.file->name() : std::string()).dump();
+  }
+  fmt::memory_buffer b;
+  auto it = std::back_inserter(b);
+  fmt::format_to(it, R"({{"kind":"{}","file":{},"line":{},"program":{})", machine::to_string(m.kind), file_json_,
+                 m.line, m.program);
+  if (m.is_motion() || m.kind == MoveKind::dwell) {
+    fmt::format_to(it, R"(,"start":[{},{},{}],"end":[{},{},{}])", clean(frame_.x(m.start[0])), clean(m.start[1]),
+                   clean(m.start[2]), clean(frame_.x(m.end[0])), clean(m.end[1]), clean(m.end[2]));
+    bool rotary = m.start[3] != 0 || m.end[3] != 0 || m.start[4] != 0 || m.end[4] != 0 || m.start[5] != 0 ||
+                  m.end[5] != 0;
+    if (rotary)
+      fmt::format_to(it, R"(,"start_abc":[{},{},{}],"end_abc":[{},{},{}])", clean(m.start[3]), clean(m.start[4]),
+                     clean(m.start[5]), clean(m.end[3]), clean(m.end[4]), clean(m.end[5]));
+  }
+  if (m.kind == MoveKind::arc)
+    fmt::format_to(it, R"(,"center":[{},{},{}],"plane":"G{}","direction":"{}","sweep_deg":{})",
+                   clean(frame_.x(m.center[0])), clean(m.center[1]), clean(m.center[2]), m.plane,
+                   m.clockwise ? "G02" : "G03", m.sweep * 180 / std::numbers::pi);
+  if (m.kind == MoveKind::line || m.kind == MoveKind::arc)
+    fmt::format_to(it, R"(,"f":{},"feed_unit":"{}")", m.feed, m.feed_per_rev ? "mm/rev" : "mm/min");
+  if (m.is_motion()) fmt::format_to(it, R"(,"length":{})", m.length);
+  if (m.kind == MoveKind::dwell || m.is_motion()) fmt::format_to(it, R"(,"seconds":{})", m.seconds);
+  if (!m.is_motion() && m.kind != MoveKind::dwell) fmt::format_to(it, R"(,"code":{})", m.code);
+  b.push_back('}');
+  b.push_back('\n');
+  out_.write(b.data(), static_cast<std::streamsize>(b.size()));
+}
+
+CsvWriter::CsvWriter(std::ostream& out, const machine::MachineProfile& profile, double arc_tolerance)
+    : out_(out), frame_(profile), arc_tolerance_(arc_tolerance) {
+  out_ << "line,kind,x,y,z,f\n";
+}
+
+void CsvWriter::row(std::uint32_t line, const char* kind, double x, double y, double z, double f) {
+  fmt::memory_buffer b;
+  fmt::format_to(std::back_inserter(b), "{},{},{:.6f},{:.6f},{:.6f},{}\n", line, kind, clean(frame_.x(x)), clean(y),
+                 clean(z), f);
+  out_.write(b.data(), static_cast<std::streamsize>(b.size()));
+}
+
+void CsvWriter::on_move(const Move& m) {
+  if (!m.is_motion() && m.kind != MoveKind::dwell) return;
+  const char* kind = machine::to_string(m.kind);
+  if (!started_) {
+    row(m.line, kind, m.start[0], m.start[1], m.start[2], m.feed);
+    started_ = true;
+  }
+  if (m.kind == MoveKind::arc) {
+    arc_points(m, arc_tolerance_, [&](const machine::AxisVector& p) { row(m.line, kind, p[0], p[1], p[2], m.feed); });
+    return;
+  }
+  row(m.line, kind, m.end[0], m.end[1], m.end[2], m.feed);
+}
+
+GcodeWriter::GcodeWriter(std::ostream& out, const machine::MachineProfile& profile, const std::string& source_name)
+    : out_(out), profile_(profile), frame_(profile) {
+  decimals_ = profile.increment < 0.001 ? 4 : 3;
+  out_ << "%\nO0001 (EXPANDED BY NCURVE FROM " << source_name << ")\n";
+  out_ << (profile.lathe() ? "G18 G21" : "G17 G21 G90") << "\n";
+}
+
+std::string GcodeWriter::num(double v) const {
+  std::string s = fmt::format("{:.{}f}", clean(v), decimals_);
+  while (!s.empty() && s.back() == '0') s.pop_back();  // keep the decimal point: "10." reads the same on any setting
+  if (s == "-0.") s = "0.";
+  return s;
+}
+
+void GcodeWriter::on_move(const Move& m) {
+  std::string line;
+  const bool lathe = profile_.lathe();
+  auto axes = [&](const machine::AxisVector& p) {
+    std::string s;
+    for (char a : profile_.axes) {
+      int k = machine::axis_index(a);
+      s += fmt::format(" {}{}", a, num(k == 0 ? frame_.x(p[k]) : p[k]));
+    }
+    return s;
+  };
+  auto feed_word = [&]() {
+    std::string s;
+    if (!per_rev_known_ || per_rev_ != m.feed_per_rev) {
+      s += lathe && profile_.gcode_system == 'A' ? (m.feed_per_rev ? " G99" : " G98")
+                                                  : (m.feed_per_rev ? " G95" : " G94");
+      per_rev_ = m.feed_per_rev;
+      per_rev_known_ = true;
+    }
+    if (m.feed != feed_) {
+      s += fmt::format(" F{}", num(m.feed));
+      feed_ = m.feed;
+    }
+    return s;
+  };
+  switch (m.kind) {
+    case MoveKind::rapid:
+      line = "G00" + axes(m.end);
+      motion_ = 0;
+      break;
+    case MoveKind::line: {
+      std::string f = feed_word();
+      line = "G01" + axes(m.end) + f;
+      break;
+    }
+    case MoveKind::arc: {
+      std::string f = feed_word();
+      std::string plane = fmt::format("G{} ", m.plane);
+      line = plane + (m.clockwise ? "G02" : "G03") + axes(m.end);
+      static const char* letters = "IJK";
+      int in_plane[2] = {0, 1};
+      if (m.plane == 18) { in_plane[0] = 0; in_plane[1] = 2; }
+      if (m.plane == 19) { in_plane[0] = 1; in_plane[1] = 2; }
+      for (int k : in_plane) line += fmt::format(" {}{}", letters[k], num(m.center[k] - m.start[k]));
+      line += f;
+      break;
+    }
+    case MoveKind::dwell: line = fmt::format("G04 P{}", static_cast<long>(std::lround(m.seconds * 1000))); break;
+    case MoveKind::tool_change: line = lathe ? fmt::format("T{:04}", m.code) : fmt::format("T{} M06", m.code); break;
+    case MoveKind::spindle:
+      line = m.code == 5 ? "M05" : fmt::format("S{} M{:02}", std::lround(m.spindle), m.code);
+      break;
+    case MoveKind::coolant: case MoveKind::program_stop: case MoveKind::m_code:
+      line = fmt::format("M{:02}", m.code);
+      break;
+    case MoveKind::program_end:
+      line = fmt::format("M{:02}", m.code);
+      ended_ = true;
+      break;
+  }
+  out_ << line << '\n';
+}
+
+void GcodeWriter::finish() {
+  if (!ended_) out_ << "M30\n";
+  out_ << "%\n";
+}
+
+}  // namespace ncurve::report

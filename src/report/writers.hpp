@@ -1,0 +1,70 @@
+// Move sinks that write the tool path: JSON Lines, CSV points, expanded G-code.
+#pragma once
+#include <ostream>
+#include <string>
+
+#include "machine/move.hpp"
+#include "machine/profile.hpp"
+
+namespace ncurve::report {
+
+// Work coordinates as the user reads them: X as a diameter on a lathe in diameter mode.
+struct OutputFrame {
+  bool x_diameter = false;
+  explicit OutputFrame(const machine::MachineProfile& p) : x_diameter(p.lathe() && p.diameter_x) {}
+  double x(double radius_or_x) const { return x_diameter ? 2 * radius_or_x : radius_or_x; }
+};
+
+class JsonlWriter final : public machine::MoveSink {
+public:
+  JsonlWriter(std::ostream& out, const machine::MachineProfile& profile) : out_(out), frame_(profile) {}
+  void on_move(const machine::Move& m) override;
+
+private:
+  std::ostream& out_;
+  OutputFrame frame_;
+  const nc::SourceFile* last_file_ = nullptr;
+  std::string file_json_;
+};
+
+// One row per point; arcs become points whose chord error stays within arc_tolerance.
+class CsvWriter final : public machine::MoveSink {
+public:
+  CsvWriter(std::ostream& out, const machine::MachineProfile& profile, double arc_tolerance);
+  void on_move(const machine::Move& m) override;
+
+private:
+  void row(std::uint32_t line, const char* kind, double x, double y, double z, double f);
+  std::ostream& out_;
+  OutputFrame frame_;
+  double arc_tolerance_;
+  bool started_ = false;
+};
+
+// The program the macro stands for: every move as a plain G00/G01/G02/G03 block, absolute, in mm.
+class GcodeWriter final : public machine::MoveSink {
+public:
+  GcodeWriter(std::ostream& out, const machine::MachineProfile& profile, const std::string& source_name);
+  void on_move(const machine::Move& m) override;
+  void finish();
+
+private:
+  std::string num(double v) const;
+  std::ostream& out_;
+  const machine::MachineProfile& profile_;
+  OutputFrame frame_;
+  int decimals_;
+  int motion_ = -1;
+  double feed_ = -1;
+  bool per_rev_ = false;
+  bool per_rev_known_ = false;
+  bool ended_ = false;
+};
+
+// Points of an arc move (excluding its start), spaced so the chord error is within tolerance.
+template <class F>
+void arc_points(const machine::Move& m, double tolerance, F&& point);
+
+}  // namespace ncurve::report
+
+#include "report/arc_points.inl"
