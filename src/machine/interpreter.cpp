@@ -400,7 +400,7 @@ void Interpreter::exec_nc(const Block& b) {
         alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
       g_codes_.push_back(round_int(c.value * 10));
     } else if (c.letter == 'M') {
-      m_codes_.push_back(integer(c, "M"));
+      m_codes_.push_back(static_cast<int>(std::lround(c.value)));  // checked when acted on: G65 M1.5 is an argument
     }
     int k = c.letter - 'A';
     have_[k] = true;
@@ -507,7 +507,9 @@ void Interpreter::exec_nc(const Block& b) {
   }
 
   // M codes act after the motion of their block.
-  for (int m : m_codes_) {
+  for (const Cmd& c : cmds_) {
+    if (c.letter != 'M') continue;
+    int m = integer(c, "M");
     last_m_ = m;
     switch (m) {
       case 98: {

@@ -308,23 +308,37 @@ private:
     if (std::isupper(static_cast<unsigned char>(c))) {
       std::size_t len = 0;
       Kw k = keyword_at(i_, len);
-      if (k == Kw::ATAN) {
+      if (k == Kw::ATAN) {  // ATAN[a]/[b], ATAN[a,b] (30i) or ATAN[a]
         i_ += len;
-        bracketed(false);
-        if (peek() == '/' && peek(1) == '[') {
+        std::uint16_t open = col();
+        expect('[', "after ATAN");
+        if (++depth_ > kMaxBracketNesting) fail("PS0118", "brackets nested more than 5 deep");
+        bool saved = condition_;
+        condition_ = false;
+        expression();
+        bool comma = peek() == ',';
+        if (comma) {
+          ++i_;
+          expression();
+        }
+        condition_ = saved;
+        if (peek() != ']') fail("PS0114", fmt::format("missing ']' for the '[' at column {}", open));
+        ++i_;
+        --depth_;
+        if (comma) {
+          emit(Op::atan2_comma, column);
+        } else if (peek() == '/' && peek(1) == '[') {
           ++i_;
           bracketed(false);
           emit(Op::atan2_slash, column);
-        } else if (peek() == ',') {
-          fail("PS0114", "ATAN[a,b] is written with the comma inside the brackets");
         } else {
           emit(Op::atan1, column);
         }
         return;
       }
-      if (k == Kw::POW || k == Kw::ATAN) {
+      if (k == Kw::POW) {
         i_ += len;
-        two_arguments(k == Kw::POW ? Op::pow : Op::atan2_comma, column);
+        two_arguments(Op::pow, column);
         return;
       }
       Op f = function_op(k);
@@ -721,8 +735,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       ls.error = "comment '(' is not closed on this line";
       ls.error_col = clamp_col(comment_start + 1);
     }
-    if (block_open || !ls.chars.empty() || !ls.error.empty() || ls.has_comment) handle_block(ls, line);
-    else if (first != std::string_view::npos) handle_block(ls, line);
+    if (block_open || !ls.error.empty() || ls.has_comment) handle_block(ls, line);
   }
   for (auto& p : result.programs) match_loops(*p, result.diagnostics);
   std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),

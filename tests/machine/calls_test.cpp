@@ -1,0 +1,140 @@
+// Subprograms, macro calls, argument specification, modal and custom-code calls, nesting limits.
+#include <gtest/gtest.h>
+
+#include "support/run_program.hpp"
+
+using namespace ncurve;
+using ncurve::test::run;
+
+namespace {
+// A macro that echoes its locals #1..#33 into #501..#533.
+const std::string kEcho =
+    "O9100\n#30=1\nWHILE [#30 LE 29] DO1\n#[500+#30]=#[#30]\n#30=#30+1\nEND1\n#531=#31\n#532=#32\n#533=#33\nM99\n";
+}  // namespace
+
+TEST(Calls, ArgumentSpecificationI) {
+  auto r = run("G65 P9100 A1. B2. C3. I4. J5. K6. D7. E8. F9. H11. M13. Q17. R18. S19. T20. U21. V22. W23. X24. "
+               "Y25. Z26.\nM30\n" + kEcho);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  for (int n : {1, 2, 3, 4, 5, 6, 7, 8, 9, 11, 13, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26})
+    EXPECT_EQ(r.var(500 + n), n) << "#" << n;
+  for (int n : {10, 12, 14, 15, 16}) EXPECT_TRUE(r.vacant(500 + n)) << "#" << n;
+}
+
+TEST(Calls, ArgumentSpecificationII) {
+  auto r = run("G65 P9100 A1. B2. C3. I4. J5. K6. I7. J8. K9. I10. K12. J14.\nM30\n" + kEcho);
+  ASSERT_TRUE(r.result.ok());
+  for (int n = 1; n <= 10; ++n) EXPECT_EQ(r.var(500 + n), n) << "#" << n;
+  EXPECT_TRUE(r.vacant(511));  // the J of the third group was skipped
+  EXPECT_EQ(r.var(512), 12.0);
+  EXPECT_EQ(r.var(514), 14.0);  // J after K starts the fourth group: #14
+}
+
+TEST(Calls, MixedSpecificationsLaterWordWins) {
+  // I J K I: the second I is group 2's I, i.e. #7, which D also names; the later one wins
+  auto r = run("G65 P9100 D1. I4. J5. K6. I7.\nM30\n" + kEcho);
+  EXPECT_EQ(r.var(507), 7.0);
+  auto r2 = run("G65 P9100 I4. J5. K6. I7. D1.\nM30\n" + kEcho);
+  EXPECT_EQ(r2.var(507), 1.0);
+}
+
+TEST(Calls, ArgumentsWithoutDecimalPointAreIncrements) {
+  auto r = run("G65 P9100 X10 Y10. S10 A1\nM30\n" + kEcho);
+  EXPECT_DOUBLE_EQ(r.var(524), 0.010);
+  EXPECT_DOUBLE_EQ(r.var(525), 10.0);
+  EXPECT_DOUBLE_EQ(r.var(519), 10.0);  // S is not a dimension
+  EXPECT_DOUBLE_EQ(r.var(501), 0.001);
+}
+
+TEST(Calls, LocalsAreFreshPerLevelAndRestoredOnReturn) {
+  auto r = run("#1=5\nG65 P9200 A7.\n#100=#1\nM30\nO9200\n#101=#1\n#2=3\nG65 P9201\nM99\nO9201\n#102=#1\n#103=#2\nM99\n");
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_EQ(r.var(100), 5.0);
+  EXPECT_EQ(r.var(101), 7.0);
+  EXPECT_TRUE(r.vacant(102));
+  EXPECT_TRUE(r.vacant(103));
+}
+
+TEST(Calls, SubprogramSharesLocalsAndRepeats) {
+  auto r = run("#1=0\nM98 P2000 L3\n#100=#1\nM98 P42000\n#101=#1\nM30\nO2000\n#1=#1+1\nM99\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.var(100), 3.0);
+  EXPECT_EQ(r.var(101), 7.0);  // P42000: four times O2000
+}
+
+TEST(Calls, M99WithSequenceNumber) {
+  auto r = run("M98 P2000\n#100=1\nN50 #101=1\nM30\nO2000\nM99 P50\n");
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_TRUE(r.vacant(100));
+  EXPECT_EQ(r.var(101), 1.0);
+}
+
+TEST(Calls, MissingProgramIsPS0078) {
+  auto r = run("G65 P1234\n");
+  EXPECT_EQ(r.alarm_code(), "PS0078");
+}
+
+TEST(Calls, MacroNestingLimitByProfile) {
+  std::string recursive = "#100=#100+1\nG65 P3000\nM30\nO3000\n#100=#100+1\nG65 P3000\nM99\n";
+  auto r = run(recursive);
+  EXPECT_EQ(r.alarm_code(), "PS0077");
+  EXPECT_EQ(r.var(100), 5.0);  // main + 4 levels on a 0i
+  auto p = machine::default_mill();
+  p.control = machine::Control::fanuc_30i;
+  p.macro_nesting = 5;
+  EXPECT_EQ(run(recursive, p).var(100), 6.0);
+  auto sub = run("M98 P4000\nO4000\n#100=#100+1\nM98 P4000\nM99\n");
+  EXPECT_EQ(sub.alarm_code(), "PS0077");
+  EXPECT_EQ(sub.var(100), 10.0);
+}
+
+TEST(Calls, ModalCallAfterEachMove) {
+  auto r = run("G91 G00 X1.\nG66 P5000 A2.\nG00 X1.\nX1.\n#100=#100\nG67\nX1.\nM30\nO5000\n#100=#100+#1\n#[110+#100]=#5001\nM99\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.var(100), 4.0);  // two calls
+  EXPECT_EQ(r.var(112), 2.0);  // called after the move to X2
+  EXPECT_EQ(r.var(114), 3.0);
+}
+
+TEST(Calls, CustomGCodeCallsO9010ByParameter) {
+  auto p = machine::default_mill();
+  p.g_code_macros[0] = 102;
+  p.g_code_macros[3] = 120;
+  auto r = run("G102 A1. X5.\nG120 B3.\nM30\nO9010\n#100=#1+#24\nM99\nO9013\n#101=#2\nM99\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.var(100), 6.0);
+  EXPECT_EQ(r.var(101), 3.0);
+  // without the parameter G102 is just an unknown G code
+  EXPECT_EQ(run("G102 A1.\nM30\nO9010\nM99\n").alarm_code(), "PS0010");
+}
+
+TEST(Calls, CustomCodeInsideItsOwnMacroIsOrdinary) {
+  auto p = machine::default_mill();
+  p.m_code_macros[0] = 50;  // M50 calls O9020
+  auto r = run("M50 A1.\nM30\nO9020\n#100=#100+#1\nM50\nM99\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.var(100), 1.0);  // the inner M50 is an ordinary M code, not a second call
+}
+
+TEST(Calls, MCodeSubprogramAndTCode) {
+  auto p = machine::default_mill();
+  p.m_code_subprograms[0] = 60;  // M60 calls O9001
+  p.t_code_calls_o9000 = true;
+  auto r = run("#1=4\nM60\nT12\nM30\nO9001\n#100=#1\nM99\nO9000\n#101=#149\nM99\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.var(100), 4.0);  // a subprogram call: same locals
+  EXPECT_EQ(r.var(101), 12.0);
+}
+
+TEST(Calls, GIsNotAnArgument) {
+  EXPECT_EQ(run("G65 P9100 G01 X1.\nM30\n" + kEcho).alarm_code(), "PS0129");
+}
+
+TEST(Calls, LibraryFolder) {
+  auto p = machine::default_mill();
+  p.g_code_macros[0] = 102;
+  auto r = ncurve::test::run("G00 X10. Y0.\nG102 X20. Y0. I-10. J0. Q10. A10. F100.\nM30\n", p, {}, {},
+                             {NCURVE_SOURCE_DIR "/macros"});
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.motions().size(), 1u + 36u);
+}

@@ -1,0 +1,232 @@
+// Motion and modes: decimal point rule, units, coordinates, arcs against closed-form geometry, lathe.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "support/run_program.hpp"
+
+using namespace ncurve;
+using ncurve::test::run;
+using machine::MoveKind;
+
+TEST(Motion, DecimalPointRule) {
+  auto r = run("G00 X10 Y10. Z.5\nM30\n");
+  ASSERT_TRUE(r.result.ok());
+  auto m = r.motions().at(0);
+  EXPECT_DOUBLE_EQ(m.end[0], 0.010);  // ten least input increments
+  EXPECT_DOUBLE_EQ(m.end[1], 10.0);
+  EXPECT_DOUBLE_EQ(m.end[2], 0.5);
+  bool warned = false;
+  for (const auto& w : r.result.warnings) warned |= w.code == "NC2001";
+  EXPECT_TRUE(warned);
+  auto calc = run("G00 X10 Y10.\nM30\n", ncurve::test::calculator_mill());
+  EXPECT_DOUBLE_EQ(calc.motions().at(0).end[0], 10.0);
+  auto isc = machine::default_mill();
+  isc.increment = 0.0001;
+  EXPECT_DOUBLE_EQ(run("G00 X10\nM30\n", isc).motions().at(0).end[0], 0.001);
+}
+
+TEST(Motion, VariableValuesAreMillimetresAndRoundToTheIncrement) {
+  auto r = run("#1=10\n#2=1.23456\nG00 X#1 Y#2\nM30\n");
+  auto m = r.motions().at(0);
+  EXPECT_DOUBLE_EQ(m.end[0], 10.0);
+  EXPECT_NEAR(m.end[1], 1.235, 1e-12);
+}
+
+TEST(Motion, VacantWordIsOmittedButBracketedArithmeticIsNot) {
+  auto r = run("G00 X5. Y5.\nG00 X#1 Y[#1+10.]\nM30\n");
+  auto m = r.motions().at(1);
+  EXPECT_DOUBLE_EQ(m.end[0], 5.0);
+  EXPECT_DOUBLE_EQ(m.end[1], 10.0);
+}
+
+TEST(Motion, IntegerAddressesRound) {
+  auto r = run("#1=3.5\nM#1\nM30\n");
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_EQ(r.moves.at(0).kind, MoveKind::spindle);
+  EXPECT_EQ(r.moves.at(0).code, 4);
+  EXPECT_EQ(run("M3.\nM30\n").alarm_code(), "PS0007");
+}
+
+TEST(Motion, IncrementalAndFeed) {
+  auto r = run("G91 G01 X10. Y5. F200.\nX-10.\nM30\n");
+  ASSERT_TRUE(r.result.ok());
+  auto ms = r.motions();
+  EXPECT_DOUBLE_EQ(ms[1].end[0], 0.0);
+  EXPECT_DOUBLE_EQ(ms[1].end[1], 5.0);
+  EXPECT_DOUBLE_EQ(ms[0].feed, 200.0);
+  EXPECT_NEAR(ms[0].seconds, std::hypot(10, 5) / 200 * 60, 1e-12);
+}
+
+TEST(Motion, FeedZeroIsPS0011AtTheBlock) {
+  auto r = run("G00 X1.\nG01 X2.\nM30\n");
+  EXPECT_EQ(r.alarm_code(), "PS0011");
+  EXPECT_EQ(r.alarm_line(), 2u);
+  EXPECT_EQ(r.motions().size(), 1u);
+}
+
+TEST(Motion, ArcWithRadiusMatchesClosedForm) {
+  // quarter circle from (10,0) to (0,10) about the origin, CCW, R10
+  auto r = run("G00 X10. Y0.\nG03 X0. Y10. R10. F100.\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  auto a = r.motions().at(1);
+  EXPECT_EQ(a.kind, MoveKind::arc);
+  EXPECT_NEAR(a.center[0], 0, 1e-12);
+  EXPECT_NEAR(a.center[1], 0, 1e-12);
+  EXPECT_NEAR(a.sweep, std::numbers::pi / 2, 1e-12);
+  EXPECT_NEAR(a.length, 10 * std::numbers::pi / 2, 1e-9);
+  // negative R: the long way round, centre on the other side
+  auto big = run("G00 X10. Y0.\nG03 X0. Y10. R-10. F100.\nM30\n").motions().at(1);
+  EXPECT_NEAR(big.center[0], 10, 1e-12);
+  EXPECT_NEAR(big.center[1], 10, 1e-12);
+  EXPECT_NEAR(big.sweep, 1.5 * std::numbers::pi, 1e-12);
+  auto cw = run("G00 X10. Y0.\nG02 X0. Y10. R10. F100.\nM30\n").motions().at(1);
+  EXPECT_NEAR(cw.center[0], 10, 1e-12);
+  EXPECT_NEAR(cw.center[1], 10, 1e-12);
+  EXPECT_NEAR(cw.sweep, -std::numbers::pi / 2, 1e-12);
+}
+
+TEST(Motion, FullCircleAndHelix) {
+  auto r = run("G00 X10. Y0. Z0.\nG17 G02 I-10. F100.\nG03 X10. Y0. Z-3. I-10. J0.\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  auto full = r.motions().at(1);
+  EXPECT_NEAR(full.sweep, -2 * std::numbers::pi, 1e-12);
+  EXPECT_NEAR(full.length, 20 * std::numbers::pi, 1e-9);
+  auto helix = r.motions().at(2);
+  EXPECT_NEAR(helix.length, std::hypot(20 * std::numbers::pi, 3.0), 1e-9);
+  EXPECT_DOUBLE_EQ(helix.end[2], -3.0);
+  // extents include the arc's quadrant points
+  EXPECT_NEAR(r.result.stats.min[0], -10, 1e-9);
+  EXPECT_NEAR(r.result.stats.max[1], 10, 1e-9);
+}
+
+TEST(Motion, ArcPlanesG18G19) {
+  auto zx = run("G18 G00 X0. Z10.\nG03 X10. Z0. R10. F100.\nM30\n").motions().at(1);
+  // G18: CCW seen from +Y in the (Z, X) plane: from Z10 to X10 about the origin is +90 degrees
+  EXPECT_NEAR(zx.center[0], 0, 1e-12);
+  EXPECT_NEAR(zx.center[2], 0, 1e-12);
+  EXPECT_NEAR(zx.sweep, std::numbers::pi / 2, 1e-12);
+  auto yz = run("G19 G00 Y10. Z0.\nG02 Y0. Z-10. J-10. K0. F100.\nM30\n");
+  ASSERT_TRUE(yz.result.ok()) << nc::format(*yz.result.alarm);
+  EXPECT_NEAR(yz.motions().at(1).sweep, -std::numbers::pi / 2, 1e-12);
+}
+
+TEST(Motion, ArcErrors) {
+  EXPECT_EQ(run("G00 X10. Y0.\nG03 X0. Y10.5 I-10. F100.\nM30\n").alarm_code(), "PS0020");
+  EXPECT_EQ(run("G00 X10. Y0.\nG03 X-30. Y0. R10. F100.\nM30\n").alarm_code(), "PS0023");
+  EXPECT_EQ(run("G00 X10. Y0.\nG03 X0. Y10. F100.\nM30\n").alarm_code(), "PS0022");
+  // within No.3410 the arc is accepted
+  EXPECT_TRUE(run("G00 X10. Y0.\nG03 X0. Y10.015 I-10. F100.\nM30\n").result.ok());
+}
+
+TEST(Motion, InchProgramsConvertAtTheEdge) {
+  auto r = run("G20 G00 X1. Y1\nG01 X2. F10.\nM30\n");
+  auto ms = r.motions();
+  EXPECT_DOUBLE_EQ(ms[0].end[0], 25.4);
+  EXPECT_NEAR(ms[0].end[1], 0.0001 * 25.4, 1e-12);  // IS-B inch increment
+  EXPECT_DOUBLE_EQ(ms[1].feed, 254.0);
+  auto v = run("G20 G00 X1.\n#100=#5001\nM30\n");
+  EXPECT_DOUBLE_EQ(v.var(100), 1.0);  // position variables in program units
+}
+
+TEST(Motion, WorkOffsetsAndPositionVariables) {
+  auto p = machine::default_mill();
+  p.work_offsets[2] = {-100, -50, 0, 0, 0, 0};  // G55
+  auto r = run("G55 G00 X10. Y5.\n#100=#5001\n#101=#5021\n#102=#5222\n#103=#5241\nG54\n#104=#5001\n#5221=1.\n#105=#5001\nM30\n",
+               p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_DOUBLE_EQ(r.var(100), 10.0);
+  EXPECT_DOUBLE_EQ(r.var(101), -90.0);  // machine position
+  EXPECT_DOUBLE_EQ(r.var(102), 0.0);    // G54 Y
+  EXPECT_DOUBLE_EQ(r.var(103), -100.0);  // G55 X
+  EXPECT_DOUBLE_EQ(r.var(104), -90.0);  // same machine point in G54
+  EXPECT_DOUBLE_EQ(r.var(105), -91.0);  // after shifting G54 X by 1 mm
+}
+
+TEST(Motion, G92G52AndG10) {
+  auto r = run("G00 X10.\nG92 X0.\n#100=#5001\nG00 X5.\n#101=#5021\nG52 X100.\n#102=#5001\nG52 X0.\n"
+               "G10 L2 P1 X7.\n#103=#5221\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_DOUBLE_EQ(r.var(100), 0.0);
+  EXPECT_DOUBLE_EQ(r.var(101), 15.0);
+  EXPECT_DOUBLE_EQ(r.var(102), -95.0);
+  EXPECT_DOUBLE_EQ(r.var(103), 7.0);
+}
+
+TEST(Motion, ReferenceReturnThroughIntermediatePoint) {
+  auto p = machine::default_mill();
+  p.reference_points[0] = {0, 0, 0, 0, 0, 0};
+  p.work_offsets[1] = {-200, -100, -50, 0, 0, 0};
+  auto r = run("G54 G00 X10. Y10. Z10.\nG91 G28 Z5.\nM30\n", p);
+  ASSERT_TRUE(r.result.ok());
+  auto ms = r.motions();
+  ASSERT_EQ(ms.size(), 3u);
+  EXPECT_DOUBLE_EQ(ms[1].end[2], 15.0);  // intermediate point
+  EXPECT_DOUBLE_EQ(ms[2].end[2], 50.0);  // machine zero in G54
+  EXPECT_DOUBLE_EQ(ms[2].end[0], 10.0);  // X untouched
+}
+
+TEST(Motion, ToolLengthAndOffsetsVariables) {
+  auto p = machine::default_mill();
+  p.tool_offsets[3] = 120.5;
+  auto r = run("#100=#2003\n#2004=7.\n#101=#10004\nG43 H3 G00 Z10.\n#102=#5023\nM30\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_DOUBLE_EQ(r.var(100), 120.5);
+  EXPECT_DOUBLE_EQ(r.var(101), 7.0);
+  EXPECT_DOUBLE_EQ(r.var(102), 130.5);
+}
+
+TEST(Motion, ModalInformationVariables) {
+  auto r = run("G91 G02 X0 I1. F100.\n#100=#4001\n#101=#4003\n#102=#4109\n#103=#4014\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.var(100), 2.0);
+  EXPECT_EQ(r.var(101), 91.0);
+  EXPECT_EQ(r.var(102), 100.0);
+  EXPECT_EQ(r.var(103), 54.0);
+}
+
+TEST(Motion, DwellAndEvents) {
+  auto r = run("G04 P1500\nG04 X2.\nT5 M06\nS1000 M03\nM08\nM30\n");
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_EQ(r.moves[0].kind, MoveKind::dwell);
+  EXPECT_DOUBLE_EQ(r.moves[0].seconds, 1.5);
+  EXPECT_DOUBLE_EQ(r.moves[1].seconds, 2.0);
+  EXPECT_EQ(r.moves[2].kind, MoveKind::tool_change);
+  EXPECT_EQ(r.moves[2].code, 5);
+  EXPECT_EQ(r.moves[3].kind, MoveKind::spindle);
+  EXPECT_EQ(r.moves[4].kind, MoveKind::coolant);
+  EXPECT_EQ(r.moves[5].kind, MoveKind::program_end);
+}
+
+TEST(Motion, UnsupportedFeaturesStopWithADiagnostic) {
+  EXPECT_EQ(run("G41 D1 G01 X1. F100.\n").alarm_code(), "NC9001");
+  EXPECT_EQ(run("G81 X1. Y1. Z-1. R1. F100.\n").alarm_code(), "NC9001");
+  EXPECT_EQ(run("G07.5 X1.\n").alarm_code(), "PS0010");
+}
+
+TEST(Motion, LatheDiameterAndIncrementalAddresses) {
+  auto p = machine::default_lathe();
+  auto r = run("G00 X100. Z5.\nG01 U-20. W-10. F0.2\n#100=#5001\n#101=#5002\nM30\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  auto ms = r.motions();
+  EXPECT_DOUBLE_EQ(ms[0].end[0], 50.0);  // radius inside
+  EXPECT_DOUBLE_EQ(ms[1].end[0], 40.0);
+  EXPECT_DOUBLE_EQ(ms[1].end[2], -5.0);
+  EXPECT_TRUE(ms[1].feed_per_rev);  // lathes start in feed per revolution
+  EXPECT_DOUBLE_EQ(r.var(100), 80.0);  // diameter in the variable
+  EXPECT_DOUBLE_EQ(r.var(101), -5.0);
+  EXPECT_EQ(run("G00 Y1.\n", p).alarm_code(), "PS0009");
+  EXPECT_EQ(run("G90 X1. Z1.\n", p).alarm_code(), "NC9001");  // system A: G90 is a turning cycle
+}
+
+TEST(Motion, LatheArcInZX) {
+  auto p = machine::default_lathe();
+  // from X0 Z0 (diameter) a G03 quarter arc to X20 (radius 10) Z-10 about Z-10 X0 (I is a radius)
+  auto r = run("G00 X0 Z0\nG03 X20. Z-10. K-10. F0.1\nM30\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  auto a = r.motions().at(1);
+  EXPECT_NEAR(a.center[2], -10, 1e-12);
+  EXPECT_NEAR(a.center[0], 0, 1e-12);
+  EXPECT_NEAR(std::fabs(a.sweep), std::numbers::pi / 2, 1e-12);
+}

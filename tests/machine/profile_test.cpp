@@ -1,0 +1,41 @@
+#include <gtest/gtest.h>
+
+#include "machine/profile.hpp"
+
+using namespace ncurve::machine;
+
+TEST(Profile, ShippedProfilesLoad) {
+  auto mill = load_profile(NCURVE_SOURCE_DIR "/profiles/fanuc-mill.toml");
+  EXPECT_EQ(mill.type, MachineType::mill);
+  EXPECT_EQ(mill.axes, "XYZ");
+  EXPECT_EQ(mill.g_code_macros[0], 102);
+  EXPECT_DOUBLE_EQ(mill.arc_radius_tolerance, 0.020);
+  EXPECT_DOUBLE_EQ(mill.work_offsets[2][0], -200.0);
+  auto lathe = load_profile(NCURVE_SOURCE_DIR "/profiles/fanuc-lathe.toml");
+  EXPECT_TRUE(lathe.lathe());
+  EXPECT_EQ(lathe.axes, "XZ");
+  EXPECT_TRUE(lathe.power_on_feed_per_rev);
+  EXPECT_DOUBLE_EQ(lathe.work_offsets[2][2], -500.0);
+}
+
+TEST(Profile, ThirtyIRaisesNestingAndIncrementSystem) {
+  auto p = parse_profile("[machine]\ncontrol = \"30i\"\nincrement_system = \"IS-C\"\n[parameters]\n\"3410\" = 20\n", "p.toml");
+  EXPECT_EQ(p.control, Control::fanuc_30i);
+  EXPECT_EQ(p.macro_nesting, 5);
+  EXPECT_DOUBLE_EQ(p.increment, 0.0001);
+  EXPECT_DOUBLE_EQ(p.arc_radius_tolerance, 0.002);
+}
+
+TEST(Profile, UnknownKeysAreErrorsWithPosition) {
+  try {
+    parse_profile("[machine]\ntype = \"mill\"\nspeed = 3\n", "p.toml");
+    FAIL() << "accepted an unknown key";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("p.toml:3:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("speed"), std::string::npos);
+  }
+  EXPECT_THROW(parse_profile("[parameters]\n\"1234\" = 1\n", "p.toml"), std::runtime_error);
+  EXPECT_THROW(parse_profile("[machine]\naxes = [\"X\", \"X\"]\n", "p.toml"), std::runtime_error);
+  EXPECT_THROW(parse_profile("[machine\n", "p.toml"), std::runtime_error);
+  EXPECT_THROW(parse_profile("[work_offsets]\nG54 = [1, 2]\n", "p.toml"), std::runtime_error);
+}

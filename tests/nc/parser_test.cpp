@@ -1,0 +1,129 @@
+#include <gtest/gtest.h>
+
+#include "nc/program.hpp"
+
+using namespace ncurve::nc;
+
+namespace {
+ParseResult parse_text(const std::string& text) { return parse(std::make_shared<SourceFile>("t.nc", text)); }
+
+const Diagnostic* first_error(const ParseResult& r) { return r.diagnostics.empty() ? nullptr : &r.diagnostics[0]; }
+}  // namespace
+
+TEST(Parser, ProgramsCommentsSequenceNumbersAndSkip) {
+  auto r = parse_text("%\nO1234 (MAIN PART)\nN10 g01 x1. (comment) y 2 . 5;\n/N20 G00 X0\nM30\nO2000\nM99\n%\nG00 X99\n");
+  ASSERT_EQ(r.diagnostics.size(), 0u) << format(r.diagnostics[0]);
+  ASSERT_EQ(r.programs.size(), 2u);
+  const Program& p = *r.programs[0];
+  EXPECT_EQ(p.number, 1234);
+  EXPECT_EQ(p.name, "MAIN PART");
+  ASSERT_EQ(p.blocks.size(), 3u);
+  const Block& b = p.blocks[0];
+  EXPECT_EQ(b.sequence, 10);
+  EXPECT_EQ(b.kind, Statement::nc);
+  ASSERT_EQ(b.words_end - b.words_begin, 3u);
+  EXPECT_EQ(p.words[b.words_begin].letter, 'G');
+  const Word& y = p.words[b.words_begin + 2];
+  EXPECT_EQ(y.letter, 'Y');
+  EXPECT_DOUBLE_EQ(y.value, 2.5);  // spaces are ignored anywhere, even inside numbers
+  EXPECT_TRUE(y.decimal_point);
+  EXPECT_TRUE(p.blocks[1].block_skip);
+  EXPECT_EQ(p.sequence_index.at(20), 1);
+  EXPECT_EQ(r.programs[1]->number, 2000);
+  EXPECT_EQ(r.programs[1]->blocks.size(), 1u);  // text after the closing % is not read
+}
+
+TEST(Parser, DecimalPointIsRecorded) {
+  auto r = parse_text("X10 Y10. Z.5\n");
+  const Program& p = *r.programs[0];
+  EXPECT_FALSE(p.words[0].decimal_point);
+  EXPECT_TRUE(p.words[1].decimal_point);
+  EXPECT_TRUE(p.words[2].decimal_point);
+  EXPECT_DOUBLE_EQ(p.words[2].value, 0.5);
+}
+
+TEST(Parser, ArithmeticOutsideBracketsIsPS0004WithColumn) {
+  auto r = parse_text("G55 X#106+50. Z#109+50.\n");
+  const Diagnostic* d = first_error(r);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->code, "PS0004");
+  EXPECT_EQ(d->span.line, 1u);
+  EXPECT_EQ(d->span.column, 10u);
+  std::string text = format(*d);
+  EXPECT_NE(text.find("t.nc:1:10"), std::string::npos);
+  EXPECT_NE(text.find("G55 X#106+50."), std::string::npos);  // the block is quoted
+  EXPECT_NE(text.find('^'), std::string::npos);
+}
+
+TEST(Parser, BracketNestingLimitIsFive) {
+  EXPECT_TRUE(parse_text("#1=[[[[[1]]]]]\n").diagnostics.empty());
+  auto r = parse_text("#1=[[[[[[1]]]]]]\n");
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_EQ(r.diagnostics[0].code, "PS0118");
+  std::string deep = "#1=" + std::string(1000, '[') + "1" + std::string(1000, ']') + "\n";
+  auto d = parse_text(deep);
+  ASSERT_FALSE(d.diagnostics.empty());
+  EXPECT_EQ(d.diagnostics[0].code, "PS0118");
+  // ten thousand brackets and a megabyte line: an alarm, not a stack overflow or a huge allocation
+  std::string huge = "#1=" + std::string(10000, '[') + "1" + std::string(10000, ']') + std::string(1 << 20, '1') + "\n";
+  EXPECT_FALSE(parse_text(huge).diagnostics.empty());
+}
+
+TEST(Parser, AbbreviationsCompileLikeFullWords) {
+  auto full = parse_text("WHILE [#1 LT ROUND[2.5]] DO1\nEND1\n");
+  auto abbr = parse_text("WH [#1 LT RO[2.5]] DO1\nEN1\n");
+  ASSERT_TRUE(full.diagnostics.empty());
+  ASSERT_TRUE(abbr.diagnostics.empty());
+  ASSERT_EQ(full.programs[0]->code.size(), abbr.programs[0]->code.size());
+  for (std::size_t i = 0; i < full.programs[0]->code.size(); ++i)
+    EXPECT_EQ(full.programs[0]->code[i].op, abbr.programs[0]->code[i].op);
+  EXPECT_EQ(abbr.programs[0]->blocks[0].kind, Statement::while_do);
+  EXPECT_EQ(abbr.programs[0]->blocks[1].kind, Statement::end_loop);
+}
+
+TEST(Parser, LoopPairingErrors) {
+  auto missing_end = parse_text("WHILE [1 EQ 1] DO1\nG00 X1\n");
+  ASSERT_FALSE(missing_end.diagnostics.empty());
+  EXPECT_EQ(missing_end.diagnostics[0].code, "PS0124");
+  EXPECT_EQ(missing_end.diagnostics[0].span.line, 1u);
+  auto overlap = parse_text("DO1\nDO2\nEND1\nEND2\n");
+  ASSERT_FALSE(overlap.diagnostics.empty());
+  EXPECT_EQ(overlap.diagnostics[0].code, "PS0124");
+  auto bad_id = parse_text("DO4\nEND4\n");
+  ASSERT_FALSE(bad_id.diagnostics.empty());
+  EXPECT_EQ(bad_id.diagnostics[0].code, "PS0126");
+  auto four_deep = parse_text("DO1\nDO2\nDO3\nDO1\nEND1\nEND3\nEND2\nEND1\n");
+  ASSERT_FALSE(four_deep.diagnostics.empty());
+  EXPECT_EQ(four_deep.diagnostics[0].code, "PS0126");
+}
+
+TEST(Parser, MacroAndNcStatementInOneBlockIsPS0127) {
+  auto r = parse_text("G01 X1. GOTO 10\n");
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_EQ(r.diagnostics[0].code, "PS0127");
+  auto r2 = parse_text("#1=5 X1.\n");
+  ASSERT_FALSE(r2.diagnostics.empty());
+  EXPECT_EQ(r2.diagnostics[0].code, "PS0127");
+}
+
+TEST(Parser, ComparisonsOnlyInConditions) {
+  auto r = parse_text("#1=#2 GT 3\n");
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_EQ(r.diagnostics[0].code, "PS0114");
+  EXPECT_TRUE(parse_text("IF [[#1 GT 3] AND [#2 LT 1]] THEN #3=1\n").diagnostics.empty());
+}
+
+TEST(Parser, JunkNeverCrashes) {
+  std::string junk;
+  for (int i = 0; i < 4096; ++i) junk += static_cast<char>((i * 7919) % 256);
+  auto r = parse_text(junk);
+  EXPECT_FALSE(r.diagnostics.empty());
+  auto unterminated = parse_text("G01 X1. (no end\n");
+  ASSERT_FALSE(unterminated.diagnostics.empty());
+  EXPECT_EQ(unterminated.diagnostics[0].span.column, 9u);
+}
+
+TEST(Parser, StandaloneExpression) {
+  EXPECT_NO_THROW(compile_expression("SIN[#1]*2+ATAN[1]/[2]"));
+  EXPECT_THROW(compile_expression("SIN[#1"), Alarm);
+}

@@ -1,0 +1,121 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "report/summary.hpp"
+#include "report/writers.hpp"
+#include "support/run_program.hpp"
+
+using namespace ncurve;
+
+namespace {
+std::string write(const std::string& program, const std::string& format, machine::MachineProfile p,
+                  double arc_tol = 0.001) {
+  machine::ProgramLibrary lib;
+  lib.add_text("w.nc", program, true);
+  std::ostringstream out;
+  std::unique_ptr<machine::MoveSink> sink;
+  report::GcodeWriter* g = nullptr;
+  if (format == "csv") sink = std::make_unique<report::CsvWriter>(out, p, arc_tol);
+  else if (format == "jsonl") sink = std::make_unique<report::JsonlWriter>(out, p);
+  else {
+    auto w = std::make_unique<report::GcodeWriter>(out, p, "w.nc");
+    g = w.get();
+    sink = std::move(w);
+  }
+  machine::Interpreter in(p, lib);
+  auto r = in.run(*sink);
+  EXPECT_TRUE(r.ok());
+  if (g) g->finish();
+  return out.str();
+}
+}  // namespace
+
+TEST(Writers, CsvArcPointsStayWithinTheChordTolerance) {
+  std::string csv = write("G00 X10. Y0.\nG03 X-10. Y0. R10. F100.\nM30\n", "csv", machine::default_mill(), 0.001);
+  std::istringstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "line,kind,x,y,z,f");
+  std::vector<std::pair<double, double>> pts;
+  std::string row;
+  while (std::getline(in, row)) {
+    std::istringstream rs(row);
+    std::string line, kind, x, y, z, f;
+    std::getline(rs, line, ',');
+    std::getline(rs, kind, ',');
+    std::getline(rs, x, ',');
+    std::getline(rs, y, ',');
+    if (kind == "arc") {
+      EXPECT_EQ(line, "2");
+      pts.emplace_back(std::stod(x), std::stod(y));
+    }
+  }
+  // a half circle of R10 at 1 um chord error needs ceil(pi / (2 acos(1 - 0.001/10))) = 112 chords
+  ASSERT_EQ(pts.size(), 112u);
+  double prev_x = 10, prev_y = 0;
+  for (auto [x, y] : pts) {
+    EXPECT_NEAR(std::hypot(x, y), 10.0, 1e-6);
+    double chord = std::hypot(x - prev_x, y - prev_y);
+    double sagitta = 10 - std::sqrt(100 - chord * chord / 4);
+    EXPECT_LE(sagitta, 0.001 + 1e-9);
+    prev_x = x;
+    prev_y = y;
+  }
+}
+
+TEST(Writers, CsvLatheXIsADiameter) {
+  std::string csv = write("G00 X50. Z2.\nM30\n", "csv", machine::default_lathe());
+  EXPECT_NE(csv.find("1,rapid,50.000000,0.000000,2.000000"), std::string::npos) << csv;
+}
+
+TEST(Writers, JsonlOneObjectPerMove) {
+  std::string j = write("G00 X1. Y2.\nG02 X3. Y2. R1. F100.\nM30\n", "jsonl", machine::default_mill());
+  std::istringstream in(j);
+  std::string l1, l2, l3;
+  std::getline(in, l1);
+  std::getline(in, l2);
+  std::getline(in, l3);
+  EXPECT_NE(l1.find(R"("kind":"rapid")"), std::string::npos);
+  EXPECT_NE(l1.find(R"("end":[1,2,0])"), std::string::npos) << l1;
+  EXPECT_NE(l2.find(R"("kind":"arc")"), std::string::npos);
+  EXPECT_NE(l2.find(R"("center":[2,2,0])"), std::string::npos) << l2;
+  EXPECT_NE(l2.find(R"("direction":"G02")"), std::string::npos);
+  EXPECT_NE(l2.find(R"("line":2)"), std::string::npos);
+  EXPECT_NE(l3.find(R"("kind":"program_end")"), std::string::npos);
+}
+
+TEST(Writers, ExpandedGcodeRunsToTheSamePath) {
+  std::string macro = "G00 X10. Y0.\n#1=0\nWHILE [#1 LT 90] DO1\n#1=#1+15.\nG01 X[10*COS[#1]] Y[10*SIN[#1]] F300.\nEND1\n"
+                      "G02 X0 Y0 R5. \nG91 G03 X0 I-2. J0.\nM30\n";
+  auto p = machine::default_mill();
+  std::string expanded = write(macro, "gcode", p);
+  EXPECT_EQ(expanded.find('#'), std::string::npos);
+  EXPECT_EQ(expanded.find("WHILE"), std::string::npos);
+  auto original = test::run(macro, p).motions();
+  auto again = test::run(expanded, p);
+  ASSERT_TRUE(again.result.ok()) << nc::format(*again.result.alarm) << "\n" << expanded;
+  auto replay = again.motions();
+  ASSERT_EQ(original.size(), replay.size());
+  for (std::size_t i = 0; i < original.size(); ++i) {
+    EXPECT_EQ(original[i].kind, replay[i].kind);
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(original[i].end[a], replay[i].end[a], 1e-9) << i;
+    EXPECT_NEAR(original[i].sweep, replay[i].sweep, 1e-9);
+  }
+}
+
+TEST(Writers, SummaryJsonHasTheCounts) {
+  machine::ProgramLibrary lib;
+  lib.add_text("s.nc", "O1\nG00 X10.\nG01 X20. F100.\nM30\n", true);
+  auto p = machine::default_mill();
+  machine::Interpreter in(p, lib);
+  machine::NullSink sink;
+  auto r = in.run(sink);
+  report::RunReport rep{"s.nc", &p, &r, report::source_stats(lib, lib.main()->file.get()), {}};
+  std::string j = report::summary_json(rep);
+  EXPECT_NE(j.find(R"("blocks_executed": 3)"), std::string::npos) << j;
+  EXPECT_NE(j.find(R"("feed_length_mm": 10.0)"), std::string::npos) << j;
+  EXPECT_NE(j.find(R"("source_words": 7)"), std::string::npos) << j;  // O1 G00 X G01 X F M30
+  EXPECT_NE(j.find(R"("ok": true)"), std::string::npos);
+}
