@@ -17,7 +17,12 @@ struct VarReader {
   Value read(int n, std::uint16_t column) { return in->read_var(n, column); }
 };
 
-int round_int(double v) { return static_cast<int>(v < 0 ? -std::floor(-v + 0.5) : std::floor(v + 0.5)); }
+int round_int(double v) {  // half away from zero, saturated to the int range
+  double r = v < 0 ? -std::floor(-v + 0.5) : std::floor(v + 0.5);
+  if (!(r > -2147483647.0)) return -2147483647;
+  if (!(r < 2147483647.0)) return 2147483647;
+  return static_cast<int>(r);
+}
 
 // Argument specification I: address -> local variable number.
 int argument_variable(char letter) {

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <charconv>
 #include <cstring>
+#include <span>
 
 #include "nc/program.hpp"
 
@@ -19,6 +21,10 @@ struct Ch {
   char c;
   std::uint16_t col;
 };
+
+constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
+constexpr bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
+constexpr char to_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c; }
 
 enum class Kw {
   none, IF, WHILE, GOTO, DO, END, THEN,
@@ -82,7 +88,7 @@ struct SyntaxError {
 // Parses one block (already stripped of spaces and comments, upper case) into a Block.
 class BlockParser {
 public:
-  BlockParser(const std::vector<Ch>& s, Program& prog) : s_(s), prog_(prog) {}
+  BlockParser(std::span<const Ch> s, Program& prog) : s_(s), prog_(prog) {}
 
   void statement(Block& b) {
     if (i_ == s_.size()) return;
@@ -102,7 +108,7 @@ public:
   }
 
 private:
-  const std::vector<Ch>& s_;
+  std::span<const Ch> s_;
   Program& prog_;
   std::size_t i_ = 0;
   int depth_ = 0;      // bracket nesting
@@ -119,7 +125,7 @@ private:
 
   Kw keyword_at(std::size_t at, std::size_t& len) const {
     std::size_t run = 0;
-    while (at + run < s_.size() && std::isupper(static_cast<unsigned char>(s_[at + run].c))) ++run;
+    while (at + run < s_.size() && is_upper(s_[at + run].c)) ++run;
     len = 0;
     if (run < 2) return Kw::none;
     Kw best = Kw::none;
@@ -161,29 +167,39 @@ private:
   }
 
   // ---- numbers ----
+  // Up to 15 significant digits: the integer mantissa and the power of ten are exact doubles, so one
+  // division gives the correctly rounded value, as strtod would.
   double number(bool& decimal_point) {
+    static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8,
+                                        1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16};
     std::size_t start = i_;
-    std::string digits;
+    std::int64_t mantissa = 0;
+    int digits = 0, fraction = 0;
     decimal_point = false;
-    while (std::isdigit(static_cast<unsigned char>(peek())) || peek() == '.') {
-      if (peek() == '.') {
+    for (char c = peek(); is_digit(c) || c == '.'; c = peek()) {
+      if (c == '.') {
         if (decimal_point) fail("PS0007", "a number has two decimal points");
         decimal_point = true;
+      } else {
+        if (mantissa != 0 || c != '0') ++digits;
+        if (digits > kMaxDigits) {
+          std::size_t end = i_;
+          while (end < s_.size() && (is_digit(s_[end].c) || s_[end].c == '.')) ++end;
+          i_ = start;
+          fail("PS0003", fmt::format("too many digits; at most {}", kMaxDigits),
+               static_cast<std::uint32_t>(end - start));
+        }
+        mantissa = mantissa * 10 + (c - '0');
+        if (decimal_point) ++fraction;
       }
-      digits += peek();
       ++i_;
     }
-    if (digits == ".") {
+    if (i_ - start == 1 && decimal_point) {
       i_ = start;
       fail("PS0007", "a decimal point without digits");
     }
-    std::size_t count = std::count_if(digits.begin(), digits.end(), [](char c) { return c != '.'; });
-    if (count > kMaxDigits) {
-      i_ = start;
-      fail("PS0003", fmt::format("too many digits ({}); at most {}", count, kMaxDigits),
-           static_cast<std::uint32_t>(digits.size()));
-    }
-    return std::strtod(digits.c_str(), nullptr);
+    if (fraction > 16) fraction = 16;  // only leading zeros can make it longer
+    return static_cast<double>(mantissa) / kPow10[fraction];
   }
 
   // ---- expressions ----
@@ -285,7 +301,7 @@ private:
       emit(Op::var_indirect, c);
       return;
     }
-    if (!std::isdigit(static_cast<unsigned char>(peek())))
+    if (!is_digit(peek()))
       fail("PS0114", "'#' must be followed by a variable number or [expression]");
     bool dp = false;
     double n = number(dp);
@@ -297,7 +313,7 @@ private:
   void primary() {
     char c = peek();
     std::uint16_t column = col();
-    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+    if (is_digit(c) || c == '.') {
       bool dp = false;
       double v = number(dp);
       emit(Op::konst, column, 0, v);
@@ -305,7 +321,7 @@ private:
     }
     if (c == '#') return variable();
     if (c == '[') return bracketed(true);
-    if (std::isupper(static_cast<unsigned char>(c))) {
+    if (is_upper(c)) {
       std::size_t len = 0;
       Kw k = keyword_at(i_, len);
       if (k == Kw::ATAN) {  // ATAN[a]/[b], ATAN[a,b] (30i) or ATAN[a]
@@ -380,7 +396,7 @@ private:
       ++i_;
     }
     char c = peek();
-    if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+    if (is_digit(c) || c == '.') {
       w.value = number(w.decimal_point);
       if (negative) w.value = -w.value;
       return;
@@ -402,8 +418,8 @@ private:
     b.words_begin = static_cast<std::uint32_t>(prog_.words.size());
     while (i_ < s_.size()) {
       char c = peek();
-      if (!std::isupper(static_cast<unsigned char>(c))) {
-        if (c == '+' || c == '-' || std::isdigit(static_cast<unsigned char>(c)) || c == '.')
+      if (!is_upper(c)) {
+        if (c == '+' || c == '-' || is_digit(c) || c == '.')
           fail("PS0004", "a number or sign without an address (arithmetic in a word needs brackets: X[#1+5.])");
         if (c == '=') fail("PS0009", "'=' in an NC block: only a variable (#i) can be assigned");
         fail("PS0009", fmt::format("'{}' is not an address", c));
@@ -412,9 +428,9 @@ private:
       Kw k = keyword_at(i_, len);
       if (is_macro_statement_word(k))
         fail("PS0127", "an NC statement and a macro statement in one block", static_cast<std::uint32_t>(len));
-      if (len > 0 || (i_ + 1 < s_.size() && std::isupper(static_cast<unsigned char>(peek(1))))) {
+      if (len > 0 || (i_ + 1 < s_.size() && is_upper(peek(1)))) {
         std::string run;
-        for (std::size_t j = i_; j < s_.size() && std::isupper(static_cast<unsigned char>(s_[j].c)); ++j) run += s_[j].c;
+        for (std::size_t j = i_; j < s_.size() && is_upper(s_[j].c); ++j) run += s_[j].c;
         fail("PS0009", fmt::format("'{}' is not an address: an address is one letter followed by a value", run),
              static_cast<std::uint32_t>(run.size()));
       }
@@ -439,7 +455,7 @@ private:
       bracketed(false);
       b.target = finish_expr(e);
     } else {
-      if (!std::isdigit(static_cast<unsigned char>(peek())))
+      if (!is_digit(peek()))
         fail("PS0114", "'#' must be followed by a variable number or [expression]");
       bool dp = false;
       double n = number(dp);
@@ -461,7 +477,7 @@ private:
     expression();
     b.value = finish_expr(e);
     if (i_ != s_.size()) {
-      if (std::isupper(static_cast<unsigned char>(peek())))
+      if (is_upper(peek()))
         fail("PS0127", "an NC word after an assignment: a macro statement and NC words in one block");
       fail("PS0114", "expected an operator or the end of the block");
     }
@@ -486,7 +502,7 @@ private:
   }
 
   std::uint8_t loop_number() {
-    if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("PS0126", "DO and END need a loop number 1, 2 or 3");
+    if (!is_digit(peek())) fail("PS0126", "DO and END need a loop number 1, 2 or 3");
     bool dp = false;
     std::uint16_t c = col();
     double n = number(dp);
@@ -608,10 +624,10 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
     std::vector<Ch>& s = ls.chars;
     std::size_t i = 0;
     // Program number line: O1234 (NAME)
-    if (!s.empty() && s[0].c == 'O' && s.size() > 1 && std::isdigit(static_cast<unsigned char>(s[1].c))) {
+    if (!s.empty() && s[0].c == 'O' && s.size() > 1 && is_digit(s[1].c)) {
       std::size_t j = 1;
       std::string digits;
-      while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j].c))) digits += s[j++].c;
+      while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
       if (digits.size() > 8) digits.resize(8);
       new_program(std::stoi(digits));
       if (ls.has_comment) current->name = ls.comment;
@@ -636,12 +652,12 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
     if (i < s.size() && s[i].c == '/') {
       b.block_skip = true;
       ++i;
-      if (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i].c))) ++i;
+      if (i < s.size() && is_digit(s[i].c)) ++i;
     }
     if (i < s.size() && s[i].c == 'N') {
       std::size_t j = i + 1;
       std::string digits;
-      while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j].c))) digits += s[j++].c;
+      while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
       if (digits.empty()) {
         add_error(*current, b, "PS0005", "no number after address N", s[i].col, 1, result.diagnostics);
       } else if (digits.size() > 8) {
@@ -654,8 +670,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       i = j;
     }
     if (b.kind == Statement::empty && b.error < 0 && i < s.size()) {
-      std::vector<Ch> rest(s.begin() + static_cast<std::ptrdiff_t>(i), s.end());
-      BlockParser bp(rest, *current);
+      BlockParser bp(std::span<const Ch>(s).subspan(i), *current);
       std::size_t words_mark = current->words.size(), code_mark = current->code.size();
       try {
         bp.statement(b);
@@ -676,6 +691,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
   std::size_t pos = 0;
   std::uint32_t line = 0;
   bool done = false;
+  LineScanner ls;
   while (pos < text.size() && !done) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string::npos) eol = text.size();
@@ -688,7 +704,10 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (started) done = true;
       continue;
     }
-    LineScanner ls;
+    ls.chars.clear();
+    ls.comment.clear();
+    ls.has_comment = false;
+    ls.error.clear();
     bool in_comment = false;
     std::size_t comment_start = 0;
     bool block_open = false;
@@ -712,7 +731,10 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (c == ' ' || c == '\t' || c == '\r') continue;
       if (c == ';') {
         handle_block(ls, line);
-        ls = LineScanner{};
+        ls.chars.clear();
+        ls.comment.clear();
+        ls.has_comment = false;
+        ls.error.clear();
         block_open = false;
         continue;
       }
@@ -729,7 +751,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
         ls.error_col = column;
         continue;
       }
-      ls.chars.push_back(Ch{static_cast<char>(std::toupper(u)), column});
+      ls.chars.push_back(Ch{to_upper(c), column});
     }
     if (in_comment && ls.error.empty()) {
       ls.error = "comment '(' is not closed on this line";
@@ -752,7 +774,7 @@ CompiledExpr compile_expression(const std::string& text, const std::string& orig
       throw Alarm(Diagnostic{Severity::error, "PS0114",
                              fmt::format("{}: column {}: invalid character or expression too long", origin, k + 1),
                              Span{}});
-    chars.push_back(Ch{static_cast<char>(std::toupper(u)), clamp_col(k + 1)});
+    chars.push_back(Ch{to_upper(static_cast<char>(u)), clamp_col(k + 1)});
   }
   Program p;
   BlockParser bp(chars, p);

@@ -1,0 +1,86 @@
+// Interpreter throughput: a macro loop, a long expanded program, G65-heavy code, and memory while streaming.
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+#include <string>
+
+#include "machine/interpreter.hpp"
+#include "machine/library.hpp"
+
+using namespace ncurve::machine;
+
+namespace {
+
+std::string spiral_loop(long points) {
+  return fmt::format(
+      "O1000\n#101=1.\n#102=2.\n#103=0.\n#110=360./{}\nG01 F1000.\nWHILE [#103 LT 360.] DO1\n#103=#103+#110\n"
+      "#104=#101+#102*#103*3.14159265358979/180.\nG01 X[#104*COS[#103]] Y[#104*SIN[#103]]\nEND1\nM30\n",
+      points);
+}
+
+std::string expanded(long points) {
+  std::string s = "O1001\nG90 G01 F1000.\n";
+  s.reserve(static_cast<std::size_t>(points) * 28);
+  for (long i = 1; i <= points; ++i) {
+    double t = 360.0 * i / points;
+    double r = 1 + 2 * t * 3.14159265358979 / 180;
+    fmt::format_to(std::back_inserter(s), "X{:.3f} Y{:.3f}\n", r * std::cos(t * 3.14159265358979 / 180),
+                   r * std::sin(t * 3.14159265358979 / 180));
+  }
+  s += "M30\n";
+  return s;
+}
+
+RunStats run_text(const std::string& text, std::uint64_t max_steps = 1'000'000'000) {
+  ProgramLibrary lib;
+  lib.add_text("bench.nc", text, true);
+  RunOptions o;
+  o.max_steps = max_steps;
+  Interpreter in(default_mill(), lib, o);
+  NullSink sink;
+  RunResult r = in.run(sink);
+  if (!r.ok()) throw std::runtime_error(r.alarm->message);
+  return r.stats;
+}
+
+void BM_WhileLoop1M(benchmark::State& state) {
+  std::string text = spiral_loop(1'000'000);
+  std::uint64_t blocks = 0;
+  for (auto _ : state) blocks += run_text(text).blocks;
+  state.counters["blocks/s"] = benchmark::Counter(static_cast<double>(blocks), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_WhileLoop1M)->Unit(benchmark::kMillisecond);
+
+void BM_Expanded1M(benchmark::State& state) {
+  std::string text = expanded(1'000'000);
+  std::uint64_t blocks = 0;
+  for (auto _ : state) blocks += run_text(text).blocks;
+  state.SetBytesProcessed(static_cast<std::int64_t>(text.size()) * state.iterations());
+  state.counters["blocks/s"] = benchmark::Counter(static_cast<double>(blocks), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Expanded1M)->Unit(benchmark::kMillisecond);
+
+void BM_G65Calls(benchmark::State& state) {
+  std::string text =
+      "O1002\n#1=0\nWHILE [#1 LT 100000] DO1\nG65 P9100 A#1 B2. X[#1*0.001]\n#1=#1+1\nEND1\nM30\n"
+      "O9100\n#3=#1*#2\nG01 X#24 Y#3 F500.\nM99\n";
+  std::uint64_t blocks = 0;
+  for (auto _ : state) blocks += run_text(text).blocks;
+  state.counters["blocks/s"] = benchmark::Counter(static_cast<double>(blocks), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_G65Calls)->Unit(benchmark::kMillisecond);
+
+// 10 million moves streamed to a null sink: peak resident memory must not grow with the program.
+void BM_Stream10MMovesPeakRss(benchmark::State& state) {
+  std::string text = spiral_loop(10'000'000);
+  for (auto _ : state) run_text(text);
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  state.counters["peak_rss_MB"] = static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+BENCHMARK(BM_Stream10MMovesPeakRss)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();
