@@ -118,6 +118,7 @@ RunResult Interpreter::run(MoveSink& sink) {
   incremental_ = profile_.power_on_g91;
   feed_per_rev_ = profile_.power_on_feed_per_rev;
   set_origin();
+  for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
 
   // Programs that mix axis words with and without a decimal point are a classic source of scrapped parts.
   for (const auto& p : library_.programs()) {

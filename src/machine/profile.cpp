@@ -119,10 +119,6 @@ void machine_table(MachineProfile& p, const toml::table& t, const std::string& o
 void parameters_table(MachineProfile& p, const toml::table& t, const std::string& origin) {
   for (const auto& [k, node] : t) {
     std::string key(k.str());
-    auto int_value = [&] {
-      double v = number(origin, node, key);
-      return static_cast<int>(v);
-    };
     if (key == "3401#0") p.decimal_calculator = flag(origin, node, key);
     else if (key == "6004#0") p.atan_signed = flag(origin, node, key);
     else if (key == "3402#0") p.power_on_g01 = flag(origin, node, key);
@@ -138,9 +134,10 @@ void parameters_table(MachineProfile& p, const toml::table& t, const std::string
       } catch (...) {
         n = 0;
       }
-      if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = int_value();
-      else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = int_value();
-      else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = int_value();
+      int value = n >= 6050 ? static_cast<int>(number(origin, node, key)) : 0;
+      if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = value;
+      else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = value;
+      else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = value;
       else
         fail(origin, node,
              fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 6001#5, "

@@ -57,9 +57,14 @@ std::string summary_text(const RunReport& r) {
                          st.min[k] * (k == 0 ? xs : 1), st.max[k] * (k == 0 ? xs : 1));
     }
   }
-  if (!r.text_problems.empty())
-    out += fmt::format("  text problems  {} (each alarms when the control reaches its block)\n", r.text_problems.size());
-  for (const auto& d : r.text_problems) out += nc::format(d) + "\n";
+  std::vector<const nc::Diagnostic*> problems;
+  for (const auto& d : r.text_problems)
+    if (!res.alarm || res.alarm->span.line != d.span.line || res.alarm->span.file != d.span.file ||
+        res.alarm->code != d.code)
+      problems.push_back(&d);
+  if (!problems.empty())
+    out += fmt::format("  text problems  {} more (each alarms when the control reaches its block)\n", problems.size());
+  for (const auto* d : problems) out += nc::format(*d) + "\n";
   for (const auto& w : res.warnings) out += nc::format(w) + "\n";
   if (res.alarm) out += nc::format(*res.alarm) + "\n";
   out += res.ok() ? "  result         completed\n" : "  result         ALARM: execution stopped at the block above\n";

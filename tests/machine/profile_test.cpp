@@ -15,7 +15,7 @@ TEST(Profile, ShippedProfilesLoad) {
   EXPECT_TRUE(lathe.lathe());
   EXPECT_EQ(lathe.axes, "XZ");
   EXPECT_TRUE(lathe.power_on_feed_per_rev);
-  EXPECT_DOUBLE_EQ(lathe.work_offsets[2][2], -500.0);
+  EXPECT_DOUBLE_EQ(lathe.reference_points[0][0], 150.0);
 }
 
 TEST(Profile, ThirtyIRaisesNestingAndIncrementSystem) {

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer target with clang and fuzzes the parser and interpreter for SECONDS (default 60).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNCURVE_FUZZ=ON \
+  -DNCURVE_TESTS=OFF -DNCURVE_BENCH=OFF >/dev/null
+cmake --build build-fuzz --target fuzz_run
+corpus=build-fuzz/corpus
+mkdir -p "$corpus"
+cp tests/programs/*.nc examples/*.nc macros/*.nc "$corpus"/
+./build-fuzz/fuzz/fuzz_run "$corpus" -max_total_time="$seconds" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
+  -print_final_stats=1
