@@ -128,10 +128,7 @@ RunResult Interpreter::run(MoveSink& sink) {
     for (const auto& b : p->blocks)
       for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
         const nc::Word& word = p->words[w];
-        if (!word.literal || axis_index(word.letter) < 0 && word.letter != 'U' && word.letter != 'W' &&
-                                 word.letter != 'V' && word.letter != 'I' && word.letter != 'J' &&
-                                 word.letter != 'K' && word.letter != 'R')
-          continue;
+        if (!word.literal || !scaled_address(word.letter)) continue;
         if (word.decimal_point) with = with ? with : &word;
         else if (word.value != 0 && !without) {
           without = &word;

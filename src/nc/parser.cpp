@@ -16,6 +16,7 @@ namespace {
 constexpr std::size_t kMaxBlockChars = 4096;  // significant characters of one block
 constexpr int kMaxBracketNesting = 5;         // FANUC: brackets nest five deep at most
 constexpr int kMaxDigits = 15;
+constexpr std::size_t kMaxComment = 256;             // characters of a comment kept (for #3000 messages)
 
 struct Ch {
   char c;
@@ -711,21 +712,34 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
     bool in_comment = false;
     std::size_t comment_start = 0;
     bool block_open = false;
+    bool failed = false;
     for (std::size_t k = 0; k < raw.size(); ++k) {
       char c = raw[k];
-      std::uint16_t column = clamp_col(k + 1);
-      if (in_comment) {
-        if (c == ')') in_comment = false;
-        else if (!ls.has_comment || ls.comment.size() < 256) {
-          if (ls.chars.size() <= kMaxBlockChars) ls.comment += c;
+      if (!in_comment && c > ' ' && c <= '~' && c != '(' && c != ';') {  // the common case first
+        block_open = true;
+        if (failed) continue;
+        if (ls.chars.size() < kMaxBlockChars) {
+          ls.chars.push_back(Ch{to_upper(c), clamp_col(k + 1)});
+          continue;
         }
-        if (!in_comment) ls.has_comment = true;
+        ls.error = fmt::format("block longer than {} characters", kMaxBlockChars);
+        ls.error_col = clamp_col(k + 1);
+        failed = true;
+        continue;
+      }
+      if (in_comment) {
+        if (c == ')') {
+          in_comment = false;
+          ls.has_comment = true;
+        } else if (ls.comment.size() < kMaxComment) {
+          ls.comment += c;
+        }
         continue;
       }
       if (c == '(') {
         in_comment = true;
         comment_start = k;
-        if (ls.has_comment) ls.comment += ' ';
+        if (ls.has_comment && ls.comment.size() < kMaxComment) ls.comment += ' ';
         continue;
       }
       if (c == ' ' || c == '\t' || c == '\r') continue;
@@ -735,23 +749,15 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
         ls.comment.clear();
         ls.has_comment = false;
         ls.error.clear();
+        failed = false;
         block_open = false;
         continue;
       }
-      block_open = true;
-      if (!ls.error.empty()) continue;
-      unsigned char u = static_cast<unsigned char>(c);
-      if (u < 32 || u > 126) {
-        ls.error = fmt::format("invalid character (byte 0x{:02X})", u);
-        ls.error_col = column;
-        continue;
-      }
-      if (ls.chars.size() >= kMaxBlockChars) {
-        ls.error = fmt::format("block longer than {} characters", kMaxBlockChars);
-        ls.error_col = column;
-        continue;
-      }
-      ls.chars.push_back(Ch{to_upper(c), column});
+      block_open = true;  // a control character or a byte outside ASCII
+      if (failed) continue;
+      ls.error = fmt::format("invalid character (byte 0x{:02X})", static_cast<unsigned char>(c));
+      ls.error_col = clamp_col(k + 1);
+      failed = true;
     }
     if (in_comment && ls.error.empty()) {
       ls.error = "comment '(' is not closed on this line";
