@@ -9,5 +9,12 @@ cmake --build build-fuzz --target fuzz_run
 corpus=build-fuzz/corpus
 mkdir -p "$corpus"
 cp tests/programs/*.nc examples/*.nc macros/*.nc "$corpus"/
-./build-fuzz/fuzz/fuzz_run "$corpus" -max_total_time="$seconds" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
-  -print_final_stats=1
+log=build-fuzz/fuzz.log
+if ./build-fuzz/fuzz/fuzz_run "$corpus" -max_total_time="$seconds" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
+    -print_final_stats=1 >"$log" 2>&1; then
+  grep -E "^Done|^stat::(number_of_executed_units|peak_rss_mb)" "$log" || true
+else
+  tail -n 60 "$log"
+  echo "fuzz: failure; the input that caused it is named above (crash-*, timeout-* or leak-*)"
+  exit 1
+fi

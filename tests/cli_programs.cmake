@@ -1,5 +1,6 @@
 # Runs the ncurve command on each tests/programs/*.nc that has an expected output beside it
 # (NAME.expected.csv, NAME.expected.txt for the exit code and alarm) and compares.
+# NAME.toml is its machine profile and NAME.args holds extra options, one per line.
 file(GLOB programs "${SRC}/tests/programs/*.nc")
 set(failures 0)
 foreach(prog ${programs})
@@ -9,8 +10,12 @@ foreach(prog ${programs})
   if(EXISTS "${dir}/${name}.toml")
     set(machine --machine "${dir}/${name}.toml")
   endif()
+  set(extra "")
+  if(EXISTS "${dir}/${name}.args")
+    file(STRINGS "${dir}/${name}.args" extra)
+  endif()
   if(EXISTS "${dir}/${name}.expected.csv")
-    execute_process(COMMAND ${NCURVE} run ${prog} ${machine} --lib ${SRC}/macros --format csv
+    execute_process(COMMAND ${NCURVE} run ${prog} ${machine} --lib ${SRC}/macros --format csv ${extra}
                     OUTPUT_VARIABLE out RESULT_VARIABLE rc ERROR_VARIABLE err)
     file(READ "${dir}/${name}.expected.csv" expected)
     if(NOT out STREQUAL expected)
