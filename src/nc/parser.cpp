@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <charconv>
@@ -599,7 +600,8 @@ void match_loops(Program& p, std::vector<Diagnostic>& all) {
 }
 
 struct LineScanner {
-  std::vector<Ch> chars;
+  std::array<Ch, kMaxBlockChars> buf;
+  std::size_t n = 0;
   std::string comment;
   bool has_comment = false;
   std::string error;
@@ -612,17 +614,25 @@ std::uint16_t clamp_col(std::size_t c) { return static_cast<std::uint16_t>(std::
 
 ParseResult parse(std::shared_ptr<const SourceFile> file) {
   ParseResult result;
+  std::uint32_t line = 0;
   Program* current = nullptr;
   auto new_program = [&](int number) {
     result.programs.push_back(std::make_unique<Program>());
     current = result.programs.back().get();
     current->number = number;
     current->file = file;
+    // The first program of a file usually is all of it: reserving for its lines saves regrowth copies and
+    // page faults on long expanded programs. Later programs grow as needed.
+    if (result.programs.size() == 1) {
+      std::size_t lines_left = file->line_count() > line ? file->line_count() - line : 1;
+      current->blocks.reserve(lines_left + 1);
+      current->words.reserve(2 * lines_left + 4);
+    }
   };
   bool started = false;  // a block has been read (a later '%' ends the file)
 
   auto handle_block = [&](LineScanner& ls, std::uint32_t line) {
-    std::vector<Ch>& s = ls.chars;
+    std::span<const Ch> s(ls.buf.data(), ls.n);
     std::size_t i = 0;
     // Program number line: O1234 (NAME)
     if (!s.empty() && s[0].c == 'O' && s.size() > 1 && is_digit(s[1].c)) {
@@ -634,7 +644,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (ls.has_comment) current->name = ls.comment;
       started = true;
       if (j == s.size()) return;
-      s.erase(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(j));
+      s = s.subspan(j);
     }
     if (!current) new_program(-1);
     Block b;
@@ -671,7 +681,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       i = j;
     }
     if (b.kind == Statement::empty && b.error < 0 && i < s.size()) {
-      BlockParser bp(std::span<const Ch>(s).subspan(i), *current);
+      BlockParser bp(s.subspan(i), *current);
       std::size_t words_mark = current->words.size(), code_mark = current->code.size();
       try {
         bp.statement(b);
@@ -690,9 +700,9 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
 
   const std::string& text = file->text();
   std::size_t pos = 0;
-  std::uint32_t line = 0;
   bool done = false;
-  LineScanner ls;
+  auto scanner = std::make_unique<LineScanner>();
+  LineScanner& ls = *scanner;
   while (pos < text.size() && !done) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string::npos) eol = text.size();
@@ -705,7 +715,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (started) done = true;
       continue;
     }
-    ls.chars.clear();
+    ls.n = 0;
     ls.comment.clear();
     ls.has_comment = false;
     ls.error.clear();
@@ -718,8 +728,8 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (!in_comment && c > ' ' && c <= '~' && c != '(' && c != ';') {  // the common case first
         block_open = true;
         if (failed) continue;
-        if (ls.chars.size() < kMaxBlockChars) {
-          ls.chars.push_back(Ch{to_upper(c), clamp_col(k + 1)});
+        if (ls.n < kMaxBlockChars) {
+          ls.buf[ls.n++] = Ch{to_upper(c), clamp_col(k + 1)};
           continue;
         }
         ls.error = fmt::format("block longer than {} characters", kMaxBlockChars);
@@ -745,7 +755,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (c == ' ' || c == '\t' || c == '\r') continue;
       if (c == ';') {
         handle_block(ls, line);
-        ls.chars.clear();
+        ls.n = 0;
         ls.comment.clear();
         ls.has_comment = false;
         ls.error.clear();
