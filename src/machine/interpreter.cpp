@@ -54,19 +54,23 @@ Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& li
   common_.assign(1000, Value{});
   work_offsets_ = profile_.work_offsets;
   tool_offsets_ = profile_.tool_offsets;
-  for (const auto& p : library_.programs()) {
-    std::vector<std::int32_t> loop(p->blocks.size(), -1);
-    std::vector<std::int32_t> open;
-    for (std::size_t i = 0; i < p->blocks.size(); ++i) {
-      const Block& b = p->blocks[i];
-      loop[i] = open.empty() ? -1 : open.back();
-      if ((b.kind == Statement::while_do || b.kind == Statement::do_loop) && b.match > static_cast<std::int32_t>(i))
-        open.push_back(static_cast<std::int32_t>(i));
-      else if (b.kind == Statement::end_loop && !open.empty() && b.match == open.back())
-        open.pop_back();
-    }
-    loop_of_.emplace(p.get(), std::move(loop));
+}
+
+// Innermost DO/WHILE around each block of a program, computed on its first GOTO.
+const std::vector<std::int32_t>& Interpreter::loops_of(const nc::Program* p) {
+  auto it = loop_of_.find(p);
+  if (it != loop_of_.end()) return it->second;
+  std::vector<std::int32_t> loop(p->blocks.size(), -1);
+  std::vector<std::int32_t> open;
+  for (std::size_t i = 0; i < p->blocks.size(); ++i) {
+    const Block& b = p->blocks[i];
+    loop[i] = open.empty() ? -1 : open.back();
+    if ((b.kind == Statement::while_do || b.kind == Statement::do_loop) && b.match > static_cast<std::int32_t>(i))
+      open.push_back(static_cast<std::int32_t>(i));
+    else if (b.kind == Statement::end_loop && !open.empty() && b.match == open.back())
+      open.pop_back();
   }
+  return loop_of_.emplace(p, std::move(loop)).first->second;
 }
 
 nc::Span Interpreter::span(std::uint16_t column, std::uint32_t length) const {
@@ -245,7 +249,7 @@ void Interpreter::jump(const Block& b, double sequence) {
   auto it = prog_->sequence_index.find(n);
   if (it == prog_->sequence_index.end()) alarm("PS0128", fmt::format("GOTO {}: no block N{} in this program", n, n), b.column);
   std::int32_t target = it->second;
-  const auto& loops = loop_of_.at(prog_);
+  const auto& loops = loops_of(prog_);
   std::int32_t inner = loops[target];
   if (inner >= 0) {
     std::int32_t end = prog_->blocks[inner].match;

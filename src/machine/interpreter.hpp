@@ -67,6 +67,7 @@ private:
   void exec_nc(const nc::Block& b);
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
+  const std::vector<std::int32_t>& loops_of(const nc::Program* p);
   bool condition(const nc::Expr& e);
   nc::Value eval(const nc::Expr& e);
   void call_program(int number, Frame frame, std::uint16_t column);
