@@ -328,22 +328,7 @@ private:
       Kw k = keyword_at(i_, len);
       if (k == Kw::ATAN) {  // ATAN[a]/[b], ATAN[a,b] (30i) or ATAN[a]
         i_ += len;
-        std::uint16_t open = col();
-        expect('[', "after ATAN");
-        if (++depth_ > kMaxBracketNesting) fail("PS0118", "brackets nested more than 5 deep");
-        bool saved = condition_;
-        condition_ = false;
-        expression();
-        bool comma = peek() == ',';
-        if (comma) {
-          ++i_;
-          expression();
-        }
-        condition_ = saved;
-        if (peek() != ']') fail("PS0114", fmt::format("missing ']' for the '[' at column {}", open));
-        ++i_;
-        --depth_;
-        if (comma) {
+        if (function_arguments("ATAN") == 2) {
           emit(Op::atan2_comma, column);
         } else if (peek() == '/' && peek(1) == '[') {
           ++i_;
@@ -356,7 +341,12 @@ private:
       }
       if (k == Kw::POW) {
         i_ += len;
-        two_arguments(Op::pow, column);
+        std::size_t open = i_;
+        if (function_arguments("POW") != 2) {
+          i_ = open;
+          fail("PS0114", "POW takes two arguments: POW[base,exponent]");
+        }
+        emit(Op::pow, column);
         return;
       }
       Op f = function_op(k);
@@ -373,20 +363,26 @@ private:
     fail("PS0114", fmt::format("unexpected '{}' in an expression", c));
   }
 
-  void two_arguments(Op op, std::uint16_t column) {
-    std::uint16_t c = col();
-    expect('[', "after the function name");
+  // [a] or [a,b] after a function name; returns how many arguments were given.
+  int function_arguments(const char* name) {
+    std::uint16_t open = col();
+    if (peek() != '[') fail("PS0114", fmt::format("{} needs its argument in brackets", name));
+    ++i_;
     if (++depth_ > kMaxBracketNesting) fail("PS0118", "brackets nested more than 5 deep");
     bool saved = condition_;
     condition_ = false;
     expression();
-    if (peek() != ',') fail("PS0114", fmt::format("expected ',' between the two arguments of the '[' at column {}", c));
-    ++i_;
-    expression();
+    int count = 1;
+    if (peek() == ',') {
+      ++i_;
+      expression();
+      count = 2;
+    }
     condition_ = saved;
-    expect(']', "after the second argument");
+    if (peek() != ']') fail("PS0114", fmt::format("missing ']' for the '[' at column {}", open));
+    ++i_;
     --depth_;
-    emit(op, column);
+    return count;
   }
 
   // A value for an address: number, #i, -#i, [expr], -[expr].

@@ -127,3 +127,11 @@ TEST(Parser, StandaloneExpression) {
   EXPECT_NO_THROW(compile_expression("SIN[#1]*2+ATAN[1]/[2]"));
   EXPECT_THROW(compile_expression("SIN[#1"), Alarm);
 }
+
+TEST(Parser, TwoArgumentFunctions) {
+  EXPECT_NO_THROW(compile_expression("POW[2,3]"));
+  EXPECT_NO_THROW(compile_expression("ATAN[1,2]+ATAN[1]/[2]+ATAN[1]"));
+  EXPECT_THROW(compile_expression("POW[2]"), Alarm);
+  EXPECT_THROW(compile_expression("POW[2,3"), Alarm);
+  EXPECT_THROW(compile_expression("POW 2"), Alarm);
+}
