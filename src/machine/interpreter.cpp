@@ -318,7 +318,7 @@ void Interpreter::call_macro(int number, const std::vector<Arg>& args, int repea
     if (var == 0) alarm("PS0009", fmt::format("address {} cannot be a macro argument", a.letter), column);
     double v = a.value;
     if (a.literal && !a.decimal_point && scaled_address(a.letter) && !profile_.decimal_calculator)
-      v *= inch_ ? profile_.increment / 10 : profile_.increment;
+      v /= std::round((inch_ ? 10 : 1) / profile_.increment);
     f.initial[var - 1] = Value::of(v);
   }
   call_program(number, f, column);
@@ -356,11 +356,13 @@ void Interpreter::end_program(int m_code) {
 // ---- NC blocks ----
 
 double Interpreter::dimension_raw(const Cmd& c) const {
-  double unit = inch_ ? profile_.increment / 10 : profile_.increment;
+  // Increments per program unit (1000 for IS-B mm) is an exact integer: dividing by it gives the
+  // nearest double to the decimal value (4552 / 1000 = 4.552), where multiplying by 0.001 would not.
+  double per_unit = std::round((inch_ ? 10 : 1) / profile_.increment);
   double v = c.value;
-  if (c.literal && !c.decimal_point && !profile_.decimal_calculator) v *= unit;
-  double steps = v / unit;
-  return (steps < 0 ? -std::floor(-steps + 0.5) : std::floor(steps + 0.5)) * unit;
+  if (c.literal && !c.decimal_point && !profile_.decimal_calculator) v /= per_unit;
+  double steps = v * per_unit;
+  return (steps < 0 ? -std::floor(-steps + 0.5) : std::floor(steps + 0.5)) / per_unit;
 }
 
 double Interpreter::dimension(const Cmd& c) const { return inch_ ? dimension_raw(c) * 25.4 : dimension_raw(c); }

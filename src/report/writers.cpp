@@ -97,19 +97,17 @@ void GcodeWriter::on_move(const Move& m) {
     }
     return s;
   };
-  auto feed_word = [&]() {
-    std::string s;
-    if (!per_rev_known_ || per_rev_ != m.feed_per_rev) {
-      s += lathe && profile_.gcode_system == 'A' ? (m.feed_per_rev ? " G99" : " G98")
-                                                  : (m.feed_per_rev ? " G95" : " G94");
-      per_rev_ = m.feed_per_rev;
-      per_rev_known_ = true;
-    }
-    if (m.feed != feed_) {
-      s += fmt::format(" F{}", num(m.feed));
-      feed_ = m.feed;
-    }
-    return s;
+  auto feed_mode = [&]() -> std::string {  // G94/G95 (G98/G99 on a system A lathe) before the motion code
+    if (per_rev_known_ && per_rev_ == m.feed_per_rev) return "";
+    per_rev_ = m.feed_per_rev;
+    per_rev_known_ = true;
+    if (lathe && profile_.gcode_system == 'A') return m.feed_per_rev ? "G99 " : "G98 ";
+    return m.feed_per_rev ? "G95 " : "G94 ";
+  };
+  auto feed_word = [&]() -> std::string {
+    if (m.feed == feed_) return "";
+    feed_ = m.feed;
+    return fmt::format(" F{}", num(m.feed));
   };
   switch (m.kind) {
     case MoveKind::rapid:
@@ -117,14 +115,12 @@ void GcodeWriter::on_move(const Move& m) {
       motion_ = 0;
       break;
     case MoveKind::line: {
-      std::string f = feed_word();
-      line = "G01" + axes(m.end) + f;
+      line = feed_mode() + "G01" + axes(m.end) + feed_word();
       break;
     }
     case MoveKind::arc: {
       std::string f = feed_word();
-      std::string plane = fmt::format("G{} ", m.plane);
-      line = plane + (m.clockwise ? "G02" : "G03") + axes(m.end);
+      line = feed_mode() + fmt::format("G{} ", m.plane) + (m.clockwise ? "G02" : "G03") + axes(m.end);
       static const char* letters = "IJK";
       int in_plane[2] = {0, 1};
       if (m.plane == 18) { in_plane[0] = 0; in_plane[1] = 2; }
