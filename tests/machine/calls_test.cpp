@@ -138,3 +138,16 @@ TEST(Calls, LibraryFolder) {
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   EXPECT_EQ(r.motions().size(), 1u + 36u);
 }
+
+TEST(Calls, SubprogramInsideAMacroUsesTheMacrosLocals) {
+  auto r = run("#1=1.\nG65 P9300 A5.\n#100=#1\nM30\nO9300\nM98 P9301\n#101=#1\nM99\nO9301\n#1=#1*2\nM99\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.var(100), 1.0);   // main level untouched
+  EXPECT_EQ(r.var(101), 10.0);  // the subprogram doubled the macro's #1
+}
+
+TEST(Calls, MovesInsideTheModalMacroDoNotCallItAgain) {
+  auto r = run("G66 P5100\nG91 G00 X1.\nG67\nM30\nO5100\n#100=#100+1\nG00 Y1.\nM99\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(r.var(100), 1.0);
+}

@@ -230,3 +230,34 @@ TEST(Motion, LatheArcInZX) {
   EXPECT_NEAR(a.center[0], 0, 1e-12);
   EXPECT_NEAR(std::fabs(a.sweep), std::numbers::pi / 2, 1e-12);
 }
+
+TEST(Motion, LatheCoordinateSettingAndFeedModes) {
+  auto p = machine::default_lathe();
+  auto r = run("G00 X100. Z50.\nG50 X200. Z0.\n#100=#5001\n#101=#4005\nG98 G01 W-1. F100.\n#102=#4005\nM30\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_DOUBLE_EQ(r.var(100), 200.0);
+  EXPECT_EQ(r.var(101), 99.0);
+  EXPECT_EQ(r.var(102), 98.0);
+  auto ms = r.motions();
+  EXPECT_FALSE(ms.back().feed_per_rev);
+  EXPECT_DOUBLE_EQ(ms.back().end[2], -1.0);
+}
+
+TEST(Motion, SecondReferencePoint) {
+  auto p = machine::default_mill();
+  p.reference_points[1] = {-10, -20, -30, 0, 0, 0};
+  auto r = run("G00 X5. Y5. Z5.\nG30 P2 X0 Y0 Z0\nM30\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  auto ms = r.motions();
+  ASSERT_EQ(ms.size(), 3u);
+  EXPECT_DOUBLE_EQ(ms[1].end[0], 0.0);
+  EXPECT_DOUBLE_EQ(ms[2].end[0], -10.0);
+  EXPECT_DOUBLE_EQ(ms[2].end[2], -30.0);
+}
+
+TEST(Motion, TimerFollowsSimulatedTime) {
+  auto r = run("#3001=0\nG01 X100. F6000.\n#100=#3001\nG04 P500\n#101=#3001\nM30\n");
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_NEAR(r.var(100), 1000.0, 1e-9);  // 100 mm at 6000 mm/min
+  EXPECT_NEAR(r.var(101), 1500.0, 1e-9);
+}
