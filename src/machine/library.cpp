@@ -39,11 +39,13 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, st
 }
 
 std::vector<nc::Diagnostic> ProgramLibrary::add_file(const std::string& path, bool is_main) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw std::runtime_error(fmt::format("{}: error: cannot open the file", path));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return add_text(path, ss.str(), is_main);
+  std::string text(static_cast<std::size_t>(in.tellg()), '\0');  // one copy of the file, however large
+  in.seekg(0);
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!in) throw std::runtime_error(fmt::format("{}: error: cannot read the file", path));
+  return add_text(path, std::move(text), is_main);
 }
 
 std::vector<nc::Diagnostic> ProgramLibrary::add_folder(const std::string& dir) {

@@ -227,18 +227,17 @@ void Interpreter::linear(MoveKind kind, const AxisVector& target) {
   m.start = pos_;
   m.end = target;
   m.plane = static_cast<std::uint8_t>(plane_);
-  double sq = 0, slowest = 0;
-  for (int a = 0; a < kAxes; ++a) {
-    double d = target[a] - pos_[a];
-    if (a < 3) sq += d * d;
-    if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(d) / profile_.rapid_rate[a]);
-  }
+  double sq = 0;
+  for (int a = 0; a < 3; ++a) sq += (target[a] - pos_[a]) * (target[a] - pos_[a]);
   m.length = std::sqrt(sq);
   if (kind == MoveKind::line) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
     m.feed = feed_;
     m.seconds = feed_seconds(m.length, feed_, feed_per_rev_, speed_, profile_.spindle_speed_for_time);
-  } else {
+  } else {  // rapid axes move independently: the slowest axis sets the time
+    double slowest = 0;
+    for (int a = 0; a < kAxes; ++a)
+      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(target[a] - pos_[a]) / profile_.rapid_rate[a]);
     m.feed = 0;
     m.seconds = slowest * 60.0;
   }

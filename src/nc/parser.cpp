@@ -643,7 +643,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       s = s.subspan(j);
     }
     if (!current) new_program(-1);
-    Block b;
+    Block& b = current->blocks.emplace_back();
     b.line = line;
     b.column = s.empty() ? 1 : s[0].col;
     if (ls.has_comment) {
@@ -652,7 +652,6 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
     }
     if (!ls.error.empty()) {
       add_error(*current, b, "PS0009", ls.error, ls.error_col, 1, result.diagnostics);
-      current->blocks.push_back(b);
       started = true;
       return;
     }
@@ -672,7 +671,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
                   static_cast<std::uint32_t>(digits.size() + 1), result.diagnostics);
       } else {
         b.sequence = std::stoi(digits);
-        current->sequence_index.emplace(b.sequence, static_cast<std::int32_t>(current->blocks.size()));
+        current->sequence_index.emplace(b.sequence, static_cast<std::int32_t>(current->blocks.size() - 1));
       }
       i = j;
     }
@@ -691,7 +690,6 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       }
     }
     started = true;
-    current->blocks.push_back(b);
   };
 
   const std::string& text = file->text();
