@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ncurve::machine {
@@ -476,7 +477,10 @@ void Interpreter::exec_nc(const Block& b) {
     if (f < 0) alarm("PS0011", "negative feed rate", word('F').column);
     feed_ = inch_ ? f * 25.4 : f;
   }
-  if (has('S')) speed_ = word('S').value;
+  bool spindle_limit = profile_.lathe() && std::find_if(one_shot.begin(), one_shot.end(), [](int g) {
+                                            return g == 500 || g == 920;
+                                          }) != one_shot.end();
+  if (has('S') && !spindle_limit) speed_ = word('S').value;
   if (has('H')) h_ = integer(word('H'), "H");
   if (has('D')) d_ = integer(word('D'), "D");
   if (has('T')) {

@@ -99,6 +99,7 @@ private:
   void data_setting();
   void set_origin();
   void note_extent(const AxisVector& p);
+  double feed_seconds(double length, double mean_radius) const;
 
   // variables (variables.cpp)
  public:
@@ -164,6 +165,7 @@ private:
   int length_comp_ = 49;
   int work_index_ = 1;       // 1..6 = G54..G59, 7+ = G54.1 P(n-6)
   double feed_ = 0, speed_ = 0;
+  double max_spindle_ = 0;  // G50 S on a lathe
   int tool_ = 0, h_ = 0, d_ = 0, last_m_ = -1;
   std::int32_t last_sequence_ = -1;
   bool modal_call_ = false;

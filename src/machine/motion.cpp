@@ -216,8 +216,15 @@ void Interpreter::emit_event(MoveKind kind, int code) {
   emit(m);
 }
 
-static double feed_seconds(double length, double feed, bool per_rev, double speed, double fallback_speed) {
-  double mm_per_min = per_rev ? feed * (speed > 0 ? speed : fallback_speed) : feed;
+// Time at the programmed feed. Feed per revolution needs the spindle speed: S, or under G96 the speed
+// that gives S m/min at the mean X radius of the move, clamped by G50 S (G92 S on systems B/C).
+double Interpreter::feed_seconds(double length, double mean_radius) const {
+  double rpm = speed_ > 0 ? speed_ : profile_.spindle_speed_for_time;
+  if (css_ && speed_ > 0) {
+    rpm = 1000.0 * speed_ / (2 * std::numbers::pi * std::max(std::fabs(mean_radius), 0.5));
+    if (max_spindle_ > 0) rpm = std::min(rpm, max_spindle_);
+  }
+  double mm_per_min = feed_per_rev_ ? feed_ * rpm : feed_;
   return mm_per_min > 0 ? length / mm_per_min * 60.0 : 0.0;
 }
 
@@ -233,7 +240,7 @@ void Interpreter::linear(MoveKind kind, const AxisVector& target) {
   if (kind == MoveKind::line) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
     m.feed = feed_;
-    m.seconds = feed_seconds(m.length, feed_, feed_per_rev_, speed_, profile_.spindle_speed_for_time);
+    m.seconds = feed_seconds(m.length, (pos_[0] + target[0]) / 2);
   } else {  // rapid axes move independently: the slowest axis sets the time
     double slowest = 0;
     for (int a = 0; a < kAxes; ++a)
@@ -320,7 +327,7 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
   double dn = target[pa.n] - pos_[pa.n];
   m.length = std::hypot(planar, dn);
   m.feed = feed_;
-  m.seconds = feed_seconds(m.length, feed_, feed_per_rev_, speed_, profile_.spindle_speed_for_time);
+  m.seconds = feed_seconds(m.length, m.center[0]);
   // extents: the quadrant points the arc passes
   for (int k = 0; k < 4; ++k) {
     double ang = k * std::numbers::pi / 2;
@@ -413,7 +420,8 @@ void Interpreter::set_coordinate_system(int g) {
     set_origin();
     return;
   }
-  if (g == 500 && !has('X') && !has('Z') && !has('U') && !has('W')) return;  // G50 S: maximum spindle speed
+  if (has('S') && (g == 500 || profile_.lathe())) max_spindle_ = word('S').value;  // G50 S / G92 S: spindle limit
+  if (g == 500 && !has('X') && !has('Z') && !has('U') && !has('W')) return;
   // G92 (G50 on a system A lathe): the current point gets the given coordinates
   if (!axis_target(given)) return;
   for (int a = 0; a < kAxes; ++a) {

@@ -261,3 +261,16 @@ TEST(Motion, TimerFollowsSimulatedTime) {
   EXPECT_NEAR(r.var(100), 1000.0, 1e-9);  // 100 mm at 6000 mm/min
   EXPECT_NEAR(r.var(101), 1500.0, 1e-9);
 }
+
+TEST(Motion, ConstantSurfaceSpeedTime) {
+  auto p = machine::default_lathe();
+  // S100 m/min at diameter 100 mm is 1000*100/(pi*100) = 318.3 rev/min; 10 mm at 0.1 mm/rev
+  auto r = run("G00 X100. Z0.\nG96 S100 M03\nG99 G01 W-10. F0.1\nM30\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  double rpm = 1000.0 * 100 / (std::numbers::pi * 100);
+  EXPECT_NEAR(r.motions().back().seconds, 10 / (0.1 * rpm) * 60, 1e-9);
+  // G50 S200 caps the spindle at 200 rev/min and is not itself a spindle speed
+  auto capped = run("G50 S200\nG00 X100. Z0.\nG96 S100 M03\nG99 G01 W-10. F0.1\nM30\n", p);
+  ASSERT_TRUE(capped.result.ok()) << nc::format(*capped.result.alarm);
+  EXPECT_NEAR(capped.motions().back().seconds, 10 / (0.1 * 200) * 60, 1e-9);
+}
