@@ -48,6 +48,9 @@ bool scaled_address(char c) {  // dimension words read in least input increments
 
 Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options)
     : profile_(profile), library_(library), options_(std::move(options)) {
+  for (char a : profile_.axes) has_axis_[axis_index(a)] = true;
+  per_unit_mm_ = std::round(1 / profile_.increment);
+  per_unit_inch_ = std::round(10 / profile_.increment);
   eval_options_.atan_signed = profile_.atan_signed;
   eval_options_.atan_comma = profile_.control == Control::fanuc_30i;
   eval_options_.adp_scale = 1.0 / profile_.increment;
@@ -319,7 +322,7 @@ void Interpreter::call_macro(int number, const std::vector<Arg>& args, int repea
     if (var == 0) alarm("PS0009", fmt::format("address {} cannot be a macro argument", a.letter), column);
     double v = a.value;
     if (a.literal && !a.decimal_point && scaled_address(a.letter) && !profile_.decimal_calculator)
-      v /= std::round((inch_ ? 10 : 1) / profile_.increment);
+      v /= inch_ ? per_unit_inch_ : per_unit_mm_;
     f.initial[var - 1] = Value::of(v);
   }
   call_program(number, f, column);
@@ -359,7 +362,7 @@ void Interpreter::end_program(int m_code) {
 double Interpreter::dimension_raw(const Cmd& c) const {
   // Increments per program unit (1000 for IS-B mm) is an exact integer: dividing by it gives the
   // nearest double to the decimal value (4552 / 1000 = 4.552), where multiplying by 0.001 would not.
-  double per_unit = std::round((inch_ ? 10 : 1) / profile_.increment);
+  double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
   double v = c.value;
   if (c.literal && !c.decimal_point && !profile_.decimal_calculator) v /= per_unit;
   double steps = v * per_unit;

@@ -127,6 +127,8 @@ private:
   };
 
   const MachineProfile profile_;
+  std::array<bool, kAxes> has_axis_{};  // the profile's axes, by axis_index
+  double per_unit_mm_ = 1000, per_unit_inch_ = 10000;  // least input increments per mm and per inch
   const ProgramLibrary& library_;
   RunOptions options_;
   nc::EvalOptions eval_options_;

@@ -148,8 +148,8 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
     if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W')) {
       a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : 2;
       incremental = true;
-      if (profile_.axes.find(a == 0 ? 'X' : a == 1 ? 'Y' : 'Z') == std::string::npos) a = -1;
-    } else if (a >= 0 && profile_.axes.find(c.letter) == std::string::npos) {
+      if (!has_axis_[a]) a = -1;
+    } else if (a >= 0 && !has_axis_[a]) {
       if (c.letter == 'A' || c.letter == 'B' || c.letter == 'C') continue;  // not an axis here: argument or unused
       alarm("PS0009", fmt::format("address {}: this machine has no {} axis", c.letter, c.letter), c.column);
     } else if (a < 0) {
@@ -379,7 +379,7 @@ void Interpreter::reference_return(int g) {
       if (c.letter == 'U') a = 0;
       if (c.letter == 'W') a = 2;
     }
-    if (a < 0 || profile_.axes.find("XYZABC"[a]) == std::string::npos) continue;
+    if (a < 0 || !has_axis_[a]) continue;
     ref[a] = profile_.reference_points[point][a] - origin_[a] - (a == 2 ? tool_length_ : 0.0);
   }
   linear(MoveKind::rapid, ref);
@@ -406,7 +406,7 @@ void Interpreter::set_coordinate_system(int g) {
     bool any = false;
     for (const Cmd& c : cmds_) {
       int a = axis_index(c.letter);
-      if (a < 0 || profile_.axes.find(c.letter) == std::string::npos) continue;
+      if (a < 0 || !has_axis_[a]) continue;
       double v = dimension(c);
       if (a == 0 && profile_.lathe() && profile_.diameter_x) v /= 2;
       offs[a] = v;
@@ -415,7 +415,7 @@ void Interpreter::set_coordinate_system(int g) {
     if (!any) return;
     for (const Cmd& c : cmds_) {
       int a = axis_index(c.letter);
-      if (a >= 0 && profile_.axes.find(c.letter) != std::string::npos) local_[a] = offs[a];
+      if (a >= 0 && has_axis_[a]) local_[a] = offs[a];
     }
     set_origin();
     return;
@@ -445,7 +445,7 @@ void Interpreter::data_setting() {
     }
     for (const Cmd& c : cmds_) {
       int a = axis_index(c.letter);
-      if (a < 0 || profile_.axes.find(c.letter) == std::string::npos) continue;
+      if (a < 0 || !has_axis_[a]) continue;
       double v = dimension(c);
       (*set)[a] = incremental_ ? (*set)[a] + v : v;
     }
