@@ -320,9 +320,7 @@ void Interpreter::call_macro(int number, const std::vector<Arg>& args, int repea
       var = argument_variable(a.letter);
     }
     if (var == 0) alarm("PS0009", fmt::format("address {} cannot be a macro argument", a.letter), column);
-    double v = a.value;
-    if (a.literal && !a.decimal_point && scaled_address(a.letter) && !profile_.decimal_calculator)
-      v /= inch_ ? per_unit_inch_ : per_unit_mm_;
+    double v = scaled_address(a.letter) ? as_written(a.value, a.literal, a.decimal_point) : a.value;
     f.initial[var - 1] = Value::of(v);
   }
   call_program(number, f, column);
@@ -359,13 +357,16 @@ void Interpreter::end_program(int m_code) {
 
 // ---- NC blocks ----
 
+// Increments per program unit (1000 for IS-B mm) is an exact integer: dividing by it gives the
+// nearest double to the decimal value (4552 / 1000 = 4.552), where multiplying by 0.001 would not.
+double Interpreter::as_written(double value, bool literal, bool decimal_point) const {
+  if (!literal || decimal_point || profile_.decimal_calculator) return value;
+  return value / (inch_ ? per_unit_inch_ : per_unit_mm_);  // No.3401#0 = 0: X10 is ten increments
+}
+
 double Interpreter::dimension_raw(const Cmd& c) const {
-  // Increments per program unit (1000 for IS-B mm) is an exact integer: dividing by it gives the
-  // nearest double to the decimal value (4552 / 1000 = 4.552), where multiplying by 0.001 would not.
   double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
-  double v = c.value;
-  if (c.literal && !c.decimal_point && !profile_.decimal_calculator) v /= per_unit;
-  double steps = v * per_unit;
+  double steps = as_written(c.value, c.literal, c.decimal_point) * per_unit;
   return (steps < 0 ? -std::floor(-steps + 0.5) : std::floor(steps + 0.5)) / per_unit;
 }
 
@@ -413,7 +414,7 @@ void Interpreter::exec_nc(const Block& b) {
         alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
       g_codes_.push_back(round_int(c.value * 10));
     } else if (c.letter == 'M') {
-      m_codes_.push_back(static_cast<int>(std::lround(c.value)));  // checked when acted on: G65 M1.5 is an argument
+      m_codes_.push_back(round_int(c.value));  // checked when acted on: G65 M1.5 is an argument
     }
     int k = c.letter - 'A';
     have_[k] = true;
@@ -480,10 +481,10 @@ void Interpreter::exec_nc(const Block& b) {
     if (f < 0) alarm("PS0011", "negative feed rate", word('F').column);
     feed_ = inch_ ? f * 25.4 : f;
   }
-  bool spindle_limit = profile_.lathe() && std::find_if(one_shot.begin(), one_shot.end(), [](int g) {
-                                            return g == 500 || g == 920;
-                                          }) != one_shot.end();
-  if (has('S') && !spindle_limit) speed_ = word('S').value;
+  if (has('S')) {  // on a lathe, S with G50 (G92 on systems B/C) is the spindle speed limit
+    bool limit = profile_.lathe() && std::ranges::any_of(one_shot, [](int g) { return g == 500 || g == 920; });
+    (limit ? max_spindle_ : speed_) = word('S').value;
+  }
   if (has('H')) h_ = integer(word('H'), "H");
   if (has('D')) d_ = integer(word('D'), "D");
   if (has('T')) {

@@ -79,6 +79,7 @@ private:
   bool has(char letter) const { return have_[letter - 'A']; }
   const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
   double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
+  double as_written(double value, bool literal, bool decimal_point) const;  // decimal point rule, program units
   double dimension_raw(const Cmd& c) const;  // program units, decimal point rule and rounding, no inch
   int integer(const Cmd& c, const char* what) const;
   std::vector<Arg> arguments(bool skip_p_l, int skip_g, int skip_m) const;

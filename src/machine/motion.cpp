@@ -420,7 +420,6 @@ void Interpreter::set_coordinate_system(int g) {
     set_origin();
     return;
   }
-  if (has('S') && (g == 500 || profile_.lathe())) max_spindle_ = word('S').value;  // G50 S / G92 S: spindle limit
   if (g == 500 && !has('X') && !has('Z') && !has('U') && !has('W')) return;
   // G92 (G50 on a system A lathe): the current point gets the given coordinates
   if (!axis_target(given)) return;

@@ -3,9 +3,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
-#include <charconv>
 #include <cstring>
 #include <span>
 
@@ -602,6 +600,14 @@ struct LineScanner {
   bool has_comment = false;
   std::string error;
   std::uint16_t error_col = 0;
+
+  void clear() {
+    n = 0;
+    comment.clear();
+    has_comment = false;
+    error.clear();
+  }
+  bool failed() const { return !error.empty(); }
 };
 
 std::uint16_t clamp_col(std::size_t c) { return static_cast<std::uint16_t>(std::min<std::size_t>(c, 65535)); }
@@ -709,26 +715,21 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (started) done = true;
       continue;
     }
-    ls.n = 0;
-    ls.comment.clear();
-    ls.has_comment = false;
-    ls.error.clear();
+    ls.clear();
     bool in_comment = false;
     std::size_t comment_start = 0;
     bool block_open = false;
-    bool failed = false;
     for (std::size_t k = 0; k < raw.size(); ++k) {
       char c = raw[k];
       if (!in_comment && c > ' ' && c <= '~' && c != '(' && c != ';') {  // the common case first
         block_open = true;
-        if (failed) continue;
+        if (ls.failed()) continue;
         if (ls.n < kMaxBlockChars) {
           ls.buf[ls.n++] = Ch{to_upper(c), clamp_col(k + 1)};
           continue;
         }
         ls.error = fmt::format("block longer than {} characters", kMaxBlockChars);
         ls.error_col = clamp_col(k + 1);
-        failed = true;
         continue;
       }
       if (in_comment) {
@@ -749,21 +750,16 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (c == ' ' || c == '\t' || c == '\r') continue;
       if (c == ';') {
         handle_block(ls, line);
-        ls.n = 0;
-        ls.comment.clear();
-        ls.has_comment = false;
-        ls.error.clear();
-        failed = false;
+        ls.clear();
         block_open = false;
         continue;
       }
       block_open = true;  // a control character or a byte outside ASCII
-      if (failed) continue;
+      if (ls.failed()) continue;
       ls.error = fmt::format("invalid character (byte 0x{:02X})", static_cast<unsigned char>(c));
       ls.error_col = clamp_col(k + 1);
-      failed = true;
     }
-    if (in_comment && ls.error.empty()) {
+    if (in_comment && !ls.failed()) {
       ls.error = "comment '(' is not closed on this line";
       ls.error_col = clamp_col(comment_start + 1);
     }
