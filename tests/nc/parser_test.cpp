@@ -8,6 +8,12 @@ namespace {
 ParseResult parse_text(const std::string& text) { return parse(std::make_shared<SourceFile>("t.nc", text)); }
 
 const Diagnostic* first_error(const ParseResult& r) { return r.diagnostics.empty() ? nullptr : &r.diagnostics[0]; }
+
+// The alarm code of the first problem in the text, or "" when there is none.
+std::string first_code(const std::string& text) {
+  auto r = parse_text(text);
+  return r.diagnostics.empty() ? "" : r.diagnostics[0].code;
+}
 }  // namespace
 
 TEST(Parser, ProgramsCommentsSequenceNumbersAndSkip) {
@@ -86,30 +92,18 @@ TEST(Parser, LoopPairingErrors) {
   ASSERT_FALSE(missing_end.diagnostics.empty());
   EXPECT_EQ(missing_end.diagnostics[0].code, "PS0124");
   EXPECT_EQ(missing_end.diagnostics[0].span.line, 1u);
-  auto overlap = parse_text("DO1\nDO2\nEND1\nEND2\n");
-  ASSERT_FALSE(overlap.diagnostics.empty());
-  EXPECT_EQ(overlap.diagnostics[0].code, "PS0124");
-  auto bad_id = parse_text("DO4\nEND4\n");
-  ASSERT_FALSE(bad_id.diagnostics.empty());
-  EXPECT_EQ(bad_id.diagnostics[0].code, "PS0126");
-  auto four_deep = parse_text("DO1\nDO2\nDO3\nDO1\nEND1\nEND3\nEND2\nEND1\n");
-  ASSERT_FALSE(four_deep.diagnostics.empty());
-  EXPECT_EQ(four_deep.diagnostics[0].code, "PS0126");
+  EXPECT_EQ(first_code("DO1\nDO2\nEND1\nEND2\n"), "PS0124");  // overlapping loops
+  EXPECT_EQ(first_code("DO4\nEND4\n"), "PS0126");
+  EXPECT_EQ(first_code("DO1\nDO2\nDO3\nDO1\nEND1\nEND3\nEND2\nEND1\n"), "PS0126");  // four deep
 }
 
 TEST(Parser, MacroAndNcStatementInOneBlockIsPS0127) {
-  auto r = parse_text("G01 X1. GOTO 10\n");
-  ASSERT_FALSE(r.diagnostics.empty());
-  EXPECT_EQ(r.diagnostics[0].code, "PS0127");
-  auto r2 = parse_text("#1=5 X1.\n");
-  ASSERT_FALSE(r2.diagnostics.empty());
-  EXPECT_EQ(r2.diagnostics[0].code, "PS0127");
+  EXPECT_EQ(first_code("G01 X1. GOTO 10\n"), "PS0127");
+  EXPECT_EQ(first_code("#1=5 X1.\n"), "PS0127");
 }
 
 TEST(Parser, ComparisonsOnlyInConditions) {
-  auto r = parse_text("#1=#2 GT 3\n");
-  ASSERT_FALSE(r.diagnostics.empty());
-  EXPECT_EQ(r.diagnostics[0].code, "PS0114");
+  EXPECT_EQ(first_code("#1=#2 GT 3\n"), "PS0114");
   EXPECT_TRUE(parse_text("IF [[#1 GT 3] AND [#2 LT 1]] THEN #3=1\n").diagnostics.empty());
 }
 
