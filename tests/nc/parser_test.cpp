@@ -129,3 +129,40 @@ TEST(Parser, TwoArgumentFunctions) {
   EXPECT_THROW(compile_expression("POW[2,3"), Alarm);
   EXPECT_THROW(compile_expression("POW 2"), Alarm);
 }
+
+// Plain NC lines take a fast path; a comment at the end of the line forces the general scanner.
+// Both must compile every line to the same words and report the same problems at the same columns.
+TEST(Parser, PlainLinesCompileAsTheGeneralScannerDoes) {
+  const char* lines[] = {
+      "G01 X1.234 Y-5. F100.",  "x 1 . 5 y-2 z+3",       "G90G01X10Y20",       "X.5 Y-.25",
+      "X123456789012345.",      "X1234567890123456.",    "X1.2.3",             "X.",
+      "X",                      "X1-2",                  "XY1",                "G01 X1 N10",
+      "M30 O12",                "\tG00\tX0\r",           "X0.000000000000000001", "G4X-0",
+  };
+  for (const char* line : lines) {
+    auto plain = parse_text(std::string("O1\n") + line + "\n");
+    auto general = parse_text(std::string("O1\n") + line + " (C)\n");
+    SCOPED_TRACE(line);
+    ASSERT_EQ(plain.diagnostics.size(), general.diagnostics.size());
+    for (std::size_t i = 0; i < plain.diagnostics.size(); ++i) {
+      EXPECT_EQ(plain.diagnostics[i].code, general.diagnostics[i].code);
+      EXPECT_EQ(plain.diagnostics[i].span.column, general.diagnostics[i].span.column);
+    }
+    const Program& a = *plain.programs[0];
+    const Program& b = *general.programs[0];
+    ASSERT_EQ(a.blocks.size(), b.blocks.size());
+    ASSERT_EQ(a.words.size(), b.words.size());
+    for (std::size_t i = 0; i < a.words.size(); ++i) {
+      EXPECT_EQ(a.words[i].letter, b.words[i].letter);
+      EXPECT_EQ(a.words[i].column, b.words[i].column);
+      EXPECT_EQ(a.words[i].decimal_point, b.words[i].decimal_point);
+      EXPECT_EQ(a.words[i].literal, b.words[i].literal);
+      EXPECT_EQ(a.words[i].value, b.words[i].value);
+    }
+    for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+      EXPECT_EQ(a.blocks[i].kind, b.blocks[i].kind);
+      EXPECT_EQ(a.blocks[i].column, b.blocks[i].column);
+      EXPECT_EQ(a.blocks[i].error >= 0, b.blocks[i].error >= 0);
+    }
+  }
+}
