@@ -58,6 +58,7 @@ Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& li
   common_.assign(1000, Value{});
   work_offsets_ = profile_.work_offsets;
   tool_offsets_ = profile_.tool_offsets;
+  lathe_offsets_ = profile_.lathe_offsets;
 }
 
 // Innermost DO/WHILE around each block of a program, computed on its first GOTO.
@@ -498,7 +499,10 @@ void Interpreter::exec_nc(const Block& b) {
       return;
     }
     tool_ = t;
-    if (profile_.lathe()) emit_event(MoveKind::tool_change, t);  // a turret indexes on T; a mill changes on M06
+    if (profile_.lathe()) {  // a turret indexes on T; a mill changes on M06
+      select_lathe_offset(t % 100, word('T').column);
+      emit_event(MoveKind::tool_change, t);
+    }
   }
 
   bool moved = false;

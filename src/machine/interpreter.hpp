@@ -175,7 +175,11 @@ private:
   int modal_program_ = 0;
   int modal_repeat_ = 1;
   std::vector<Arg> modal_args_;
-  double tool_length_ = 0;
+  void select_lathe_offset(int number, std::uint16_t column);
+  double* lathe_offset_field(int n);
+  void lathe_offset_setting();
+  AxisVector tool_shift_{};  // machine = work + origin + tool shift (G43/G44 on Z; lathe T offset on X, Z)
+  int lathe_offset_ = 0;     // active lathe offset number (T code's last two digits)
 
   // positions (work coordinates, mm; lathe X as a radius)
   AxisVector pos_{};
@@ -185,6 +189,7 @@ private:
   std::array<AxisVector, 7> work_offsets_{};
   std::map<int, AxisVector> extended_offsets_;  // G54.1 P1..P300
   std::map<int, double> tool_offsets_;
+  std::map<int, LatheOffset> lathe_offsets_;
   std::map<int, nc::Value> system_store_;  // writable system variables without other meaning
   double clock_base_ms_ = 0;
   double parts_done_ = 0, parts_required_ = 0;

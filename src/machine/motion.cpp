@@ -89,9 +89,9 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
         length_comp_ = g / 10;
         h_ = has('H') ? static_cast<int>(std::lround(word('H').value)) : h_;
-        tool_length_ = (g == 430 ? 1 : -1) * (tool_offsets_.count(h_) ? tool_offsets_[h_] : 0.0);
+        tool_shift_[2] = (g == 430 ? 1 : -1) * (tool_offsets_.count(h_) ? tool_offsets_[h_] : 0.0);
         break;
-      case 490: length_comp_ = 49; tool_length_ = 0; break;
+      case 490: length_comp_ = 49; tool_shift_[2] = 0; break;
       case 540: case 550: case 560: case 570: case 580: case 590:
         work_index_ = g / 10 - 53;
         set_origin();
@@ -380,7 +380,7 @@ void Interpreter::reference_return(int g) {
       if (c.letter == 'W') a = 2;
     }
     if (a < 0 || !has_axis_[a]) continue;
-    ref[a] = profile_.reference_points[point][a] - origin_[a] - (a == 2 ? tool_length_ : 0.0);
+    ref[a] = profile_.reference_points[point][a] - origin_[a] - tool_shift_[a];
   }
   linear(MoveKind::rapid, ref);
 }
@@ -389,10 +389,10 @@ void Interpreter::machine_coordinate_move() {
   if (incremental_) return;  // G53 is ignored under G91, as on FANUC
   AxisVector target = pos_;
   AxisVector machine{};
-  for (int a = 0; a < kAxes; ++a) machine[a] = pos_[a] + origin_[a];
+  for (int a = 0; a < kAxes; ++a) machine[a] = pos_[a] + origin_[a] + tool_shift_[a];
   AxisVector given = machine;
   if (!axis_target(given, true)) return;
-  for (int a = 0; a < kAxes; ++a) target[a] = given[a] - origin_[a] - (a == 2 ? tool_length_ : 0.0);
+  for (int a = 0; a < kAxes; ++a) target[a] = given[a] - origin_[a] - tool_shift_[a];
   for (int a = 0; a < kAxes; ++a)
     if (given[a] == machine[a]) target[a] = pos_[a];
   linear(MoveKind::rapid, target);
@@ -430,8 +430,42 @@ void Interpreter::set_coordinate_system(int g) {
   pos_ = given;
 }
 
+// Lathe offsets shift the tool tip: the path in work coordinates stays as programmed, the machine
+// position (#5021.., G28, G53) carries the offset (geometry + wear).
+void Interpreter::select_lathe_offset(int number, std::uint16_t column) {
+  if (number < 0 || number > 64) alarm("PS0030", fmt::format("offset number {} out of range (0..64)", number), column);
+  lathe_offset_ = number;
+  if (number == 0) {
+    tool_shift_[0] = tool_shift_[2] = 0;
+    return;
+  }
+  const LatheOffset& o = lathe_offsets_[number];
+  tool_shift_[0] = (o.x + o.x_wear) / (profile_.diameter_x ? 2.0 : 1.0);
+  tool_shift_[2] = o.z + o.z_wear;
+}
+
+// G10 P_ X_ Z_ R_ Q_ on a lathe: P 1..64 wear, P 10001..10064 geometry; U, W, C add to X, Z, R.
+void Interpreter::lathe_offset_setting() {
+  if (!has('P')) alarm("PS0114", "G10 on a lathe needs P (offset number: 1..64 wear, 10001..10064 geometry)");
+  int p = integer(word('P'), "P of G10");
+  bool geometry = p > 10000;
+  int n = geometry ? p - 10000 : p;
+  if (n < 1 || n > 64) alarm("PS0030", fmt::format("offset number {} out of range", p), word('P').column);
+  LatheOffset& o = lathe_offsets_[n];
+  auto set = [&](char absolute, char increment, double& geo, double& wear) {
+    double& field = geometry ? geo : wear;
+    if (has(absolute)) field = dimension(word(absolute));
+    if (has(increment)) field += dimension(word(increment));
+  };
+  set('X', 'U', o.x, o.x_wear);
+  set('Z', 'W', o.z, o.z_wear);
+  set('R', 'C', o.r, o.r_wear);
+  if (has('Q')) o.tip = word('Q').value;  // takes effect at the next T code, as on FANUC
+}
+
 void Interpreter::data_setting() {
   int l = has('L') ? integer(word('L'), "L of G10") : 0;
+  if (profile_.lathe() && l == 0) return lathe_offset_setting();
   if (l == 2 || l == 20) {
     int p = has('P') ? integer(word('P'), "P of G10") : 0;
     AxisVector* set = nullptr;

@@ -202,6 +202,25 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
           n = std::stoi(s);
         } catch (...) {
         }
+        if (const toml::table* set = tn.as_table()) {  // lathe: { x = .., z = .., r = .., tip = .., x_wear = .. }
+          if (!p.lathe()) fail(origin, tn, "a table of geometry and wear is a lathe offset: set type = \"lathe\" first");
+          if (n < 1 || n > 64) fail(origin, tn, "lathe offset numbers are 1 .. 64");
+          LatheOffset& o = p.lathe_offsets[n];
+          for (const auto& [fk, fn] : *set) {
+            std::string f(fk.str());
+            double v = number(origin, fn, f);
+            if (f == "x") o.x = v;
+            else if (f == "z") o.z = v;
+            else if (f == "r") o.r = v;
+            else if (f == "tip") o.tip = v;
+            else if (f == "x_wear") o.x_wear = v;
+            else if (f == "z_wear") o.z_wear = v;
+            else if (f == "r_wear") o.r_wear = v;
+            else fail(origin, fn, fmt::format("unknown lathe offset field '{}' (x, z, r, tip, x_wear, z_wear, r_wear)", f));
+          }
+          continue;
+        }
+        if (p.lathe()) fail(origin, tn, "a lathe offset is a table: { x = .., z = .., r = .., tip = .., x_wear = .. }");
         if (n < 1 || n > 999) fail(origin, tn, "tool offset numbers are 1 .. 999");
         p.tool_offsets[n] = number(origin, tn, s);
       }

@@ -14,6 +14,12 @@ constexpr int kAxes = 6;  // X Y Z A B C
 using AxisVector = std::array<double, kAxes>;
 int axis_index(char letter);  // X0 Y1 Z2 A3 B4 C5, -1 otherwise
 
+// One lathe offset set (FANUC T series with geometry and wear memory). X values are diameters
+// when X is programmed as a diameter (No.5004#1 = 0). tip is the imaginary tool nose number 0..9.
+struct LatheOffset {
+  double x_wear = 0, z_wear = 0, r_wear = 0, tip = 0, x = 0, z = 0, r = 0;
+};
+
 struct MachineProfile {
   std::string name = "FANUC 0i-MF 3-axis mill, factory parameters";
   MachineType type = MachineType::mill;
@@ -41,7 +47,8 @@ struct MachineProfile {
   double spindle_speed_for_time = 1000;  // rev/min assumed for feed per revolution when no S is active
   std::array<AxisVector, 7> work_offsets{};  // [0] external (#5201..), [1..6] G54..G59
   std::array<AxisVector, 4> reference_points{};  // machine coordinates of reference points 1..4
-  std::map<int, double> tool_offsets;  // offset number -> value (#2001.., #10001..)
+  std::map<int, double> tool_offsets;  // mill, memory A: offset number -> value (#2001.., #10001..)
+  std::map<int, LatheOffset> lathe_offsets;  // lathe: offset number 1..64 -> geometry and wear
 
   bool lathe() const { return type == MachineType::lathe; }
 };

@@ -66,6 +66,23 @@ void Interpreter::write_var(int n, Value v, std::uint16_t column) {
   write_system(n, v, column);
 }
 
+// FANUC T series, 64 offset sets: #2001 X wear, #2101 Z wear, #2201 R wear, #2301 tip,
+// #2701 X geometry, #2801 Z geometry, #2901 R geometry (+ offset number - 1).
+double* Interpreter::lathe_offset_field(int n) {
+  if (n < 2001 || n > 2964 || (n - 2000) % 100 == 0 || (n - 2000) % 100 > 64) return nullptr;
+  LatheOffset& o = lathe_offsets_[(n - 2000) % 100];
+  switch ((n - 2001) / 100) {
+    case 0: return &o.x_wear;
+    case 1: return &o.z_wear;
+    case 2: return &o.r_wear;
+    case 3: return &o.tip;
+    case 7: return &o.x;
+    case 8: return &o.z;
+    case 9: return &o.r;
+    default: return nullptr;
+  }
+}
+
 Value Interpreter::read_system(int n, std::uint16_t column) {
   auto axis_order = [&](int k) -> int {  // k-th axis of the profile (0-based) -> internal index
     if (k < 0 || k >= static_cast<int>(profile_.axes.size())) return -1;
@@ -75,7 +92,9 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     auto it = system_store_.find(n);
     return it == system_store_.end() ? Value::of(0) : it->second;
   }
-  if ((n >= 2001 && n <= 2200) || (n >= 10001 && n <= 10999)) {
+  if (profile_.lathe()) {
+    if (const double* field = lathe_offset_field(n)) return Value::of(*field);
+  } else if ((n >= 2001 && n <= 2200) || (n >= 10001 && n <= 10999)) {
     int k = n >= 10001 ? n - 10000 : n - 2000;
     auto it = tool_offsets_.find(k);
     return Value::of(it == tool_offsets_.end() ? 0.0 : it->second);
@@ -120,11 +139,11 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     switch (block) {
       case 0: case 2: return Value::of(program_units(a, pos_[a]));
       case 1: {
-        double m = pos_[a] + origin_[a] + (a == 2 ? tool_length_ : 0.0);
+        double m = pos_[a] + origin_[a] + tool_shift_[a];
         return Value::of(program_units(a, m));
       }
       case 3: return Value::of(program_units(a, pos_[a]));
-      case 4: return Value::of(a == 2 ? tool_length_ : 0.0);
+      case 4: return Value::of(program_units(a, tool_shift_[a]));
       default: return Value::of(0);
     }
   }
@@ -161,7 +180,12 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
     return;
   }
   if (n >= 1100 && n <= 1135) { system_store_[n] = v; return; }
-  if ((n >= 2001 && n <= 2200) || (n >= 10001 && n <= 10999)) {
+  if (profile_.lathe()) {
+    if (double* field = lathe_offset_field(n)) {
+      *field = v.number();
+      return;
+    }
+  } else if ((n >= 2001 && n <= 2200) || (n >= 10001 && n <= 10999)) {
     tool_offsets_[n >= 10001 ? n - 10000 : n - 2000] = v.number();
     return;
   }

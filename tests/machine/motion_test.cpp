@@ -274,3 +274,46 @@ TEST(Motion, ConstantSurfaceSpeedTime) {
   ASSERT_TRUE(capped.result.ok()) << nc::format(*capped.result.alarm);
   EXPECT_NEAR(capped.motions().back().seconds, 10 / (0.1 * 200) * 60, 1e-9);
 }
+
+// Lathe geometry and wear offsets (FANUC T series layout): the tool tip path in work coordinates is
+// as programmed; machine positions (#5021.., G28) carry geometry + wear, X as a diameter.
+TEST(Motion, LatheToolOffsetsShiftTheMachinePosition) {
+  auto p = machine::parse_profile(
+      "[machine]\ntype = \"lathe\"\n[reference_points]\n\"1\" = [150, 250]\n"
+      "[tool_offsets]\n\"1\" = { x = 2.0, z = -1.5, x_wear = 0.04, z_wear = 0.01, r = 0.4, tip = 3 }\n",
+      "lathe.toml");
+  auto r = run(
+      "#100=#2701\n#101=#2001\n#102=#2801\n#103=#2101\n#104=#2901\n#105=#2301\n"
+      "T0101\nG00 X50. Z10.\n#110=#5021\n#111=#5022\n#112=#5041\n"
+      "G10 P1 U0.02\n#113=#2001\nT0101\n#114=#5021\n"
+      "T0100\n#115=#5021\n#2801=-3.\nT0101\n#116=#5022\n"
+      "G28 U0\n#117=#5021\n#118=#5041\n#119=#5022\n"
+      "G10 P10002 X-1. Z2.\n#120=#2702\n#121=#2802\n#122=#2002\nM30\n",
+      p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_DOUBLE_EQ(r.var(100), 2.0);
+  EXPECT_DOUBLE_EQ(r.var(101), 0.04);
+  EXPECT_DOUBLE_EQ(r.var(102), -1.5);
+  EXPECT_DOUBLE_EQ(r.var(103), 0.01);
+  EXPECT_DOUBLE_EQ(r.var(104), 0.4);
+  EXPECT_DOUBLE_EQ(r.var(105), 3.0);
+  EXPECT_NEAR(r.var(110), 50 + 2.04, 1e-12);  // machine X (diameter) = work + geometry + wear
+  EXPECT_NEAR(r.var(111), 10 - 1.5 + 0.01, 1e-12);
+  EXPECT_DOUBLE_EQ(r.var(112), 50.0);  // the tool tip is where the program says
+  EXPECT_NEAR(r.var(113), 0.06, 1e-12);  // G10 U adds to the wear
+  EXPECT_NEAR(r.var(114), 50 + 2.06, 1e-12);
+  EXPECT_DOUBLE_EQ(r.var(115), 50.0);  // T0100 cancels the offset
+  EXPECT_NEAR(r.var(116), 10 - 3 + 0.01, 1e-12);
+  EXPECT_NEAR(r.var(117), 300.0, 1e-12);  // G28: machine X at the reference point (radius 150)
+  EXPECT_NEAR(r.var(118), 300.0 - 2.06, 1e-12);
+  EXPECT_NEAR(r.var(119), 10 - 3 + 0.01, 1e-12);  // Z not named in G28: unchanged
+  EXPECT_DOUBLE_EQ(r.var(120), -1.0);
+  EXPECT_DOUBLE_EQ(r.var(121), 2.0);
+  EXPECT_DOUBLE_EQ(r.var(122), 0.0);
+  EXPECT_EQ(run("T0165\n", p).alarm_code(), "PS0030");
+  EXPECT_EQ(run("G10 P65 X1.\n", p).alarm_code(), "PS0030");
+  EXPECT_THROW(machine::parse_profile("[machine]\ntype = \"lathe\"\n[tool_offsets]\n\"1\" = 2.0\n", "l.toml"),
+               std::runtime_error);
+  EXPECT_THROW(machine::parse_profile("[machine]\ntype = \"lathe\"\n[tool_offsets]\n\"1\" = { y = 2.0 }\n", "l.toml"),
+               std::runtime_error);
+}
