@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <ctime>
 
 #include "machine/interpreter.hpp"
 
@@ -107,7 +108,13 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
       auto it = system_store_.find(n);
       return it == system_store_.end() ? Value::of(0) : it->second;
     }
-    case 3011: case 3012: return Value::of(0);  // date and time: a simulation has none
+    case 3011: case 3012: {  // date YYYYMMDD and time HHMMSS (local clock when read)
+      std::time_t now = std::time(nullptr);
+      std::tm t{};
+      localtime_r(&now, &t);
+      if (n == 3011) return Value::of((t.tm_year + 1900) * 10000.0 + (t.tm_mon + 1) * 100 + t.tm_mday);
+      return Value::of(t.tm_hour * 10000.0 + t.tm_min * 100 + t.tm_sec);
+    }
     case 3901: return Value::of(parts_done_);
     case 3902: return Value::of(parts_required_);
     default: break;

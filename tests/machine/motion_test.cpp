@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ctime>
 #include <numbers>
 
 #include "support/run_program.hpp"
@@ -260,6 +261,21 @@ TEST(Motion, TimerFollowsSimulatedTime) {
   ASSERT_TRUE(r.result.ok());
   EXPECT_NEAR(r.var(100), 1000.0, 1e-9);  // 100 mm at 6000 mm/min
   EXPECT_NEAR(r.var(101), 1500.0, 1e-9);
+}
+
+TEST(Motion, DateAndTimeFromTheClock) {
+  std::time_t before = std::time(nullptr);
+  auto r = run("#100=#3011\n#101=#3012\nM30\n");
+  ASSERT_TRUE(r.result.ok());
+  std::tm t{};
+  localtime_r(&before, &t);
+  double date = (t.tm_year + 1900) * 10000.0 + (t.tm_mon + 1) * 100 + t.tm_mday;
+  EXPECT_GE(r.var(100), date);  // the same day, or the next one if midnight passed
+  EXPECT_LE(r.var(100) - date, 8900);  // at most a new year
+  int hhmmss = static_cast<int>(r.var(101));
+  EXPECT_LT(hhmmss / 10000, 24);
+  EXPECT_LT(hhmmss / 100 % 100, 60);
+  EXPECT_LT(hhmmss % 100, 61);
 }
 
 TEST(Motion, ConstantSurfaceSpeedTime) {
