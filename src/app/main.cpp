@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/gen_command.hpp"
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
@@ -125,6 +126,8 @@ int main(int argc, char** argv) {
   run->add_option("--max-steps", a.max_steps, "stop a program that has not ended after this many blocks")
       ->check(CLI::PositiveNumber);
   run->add_flag("--json", a.json, "summary as JSON");
+  app::GenArgs g;
+  app::add_gen_command(app, g);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -132,5 +135,6 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   if (run->parsed()) return run_command(a);
+  if (g.command->parsed()) return app::gen_command(g);
   return 2;
 }

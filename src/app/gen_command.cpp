@@ -1,0 +1,185 @@
+// ncurve gen: a program for a curve, proven by running it back through the interpreter.
+#include "app/gen_command.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iostream>
+
+#include "gen/generate.hpp"
+#include "machine/profile.hpp"
+
+namespace ncurve::app {
+namespace {
+
+std::string list_curves() {
+  std::string s = "Curves (ncurve gen NAME --PARAM VALUE ... --from T0 --to T1):\n";
+  for (const auto& c : geom::catalogue()) {
+    s += fmt::format("\n  {:<10} {}\n", c.name, c.doc);
+    s += fmt::format("  {:<10} x = {}\n  {:<10} y = {}\n  {:<10} z = {}\n", "", c.x, "", c.y, "", c.z);
+    s += fmt::format("  {:<10} --from {} --to {}  ({})\n", "", c.from, c.to, c.t_doc);
+    for (const auto& p : c.params) s += fmt::format("  {:<10} --{} {:.10g}  ({})\n", "", p.name, p.value, p.doc);
+  }
+  s += "\n  expr       any curve: ncurve gen expr --x \"..\" --y \"..\" [--z \"..\"] --t 0:360 [--NAME VALUE ...]\n"
+       "             (macro expression language: SIN COS TAN ATAN ... in degrees, [ ] or ( ), names for parameters)\n";
+  return s;
+}
+
+// --name value pairs left over by the option parser are curve parameters.
+std::map<std::string, double> curve_parameters(const std::vector<std::string>& extras) {
+  std::map<std::string, double> out;
+  for (std::size_t i = 0; i < extras.size(); ++i) {
+    const std::string& key = extras[i];
+    if (key.rfind("--", 0) != 0 || key.size() < 3)
+      throw std::runtime_error(fmt::format("unexpected argument '{}'", key));
+    std::string name = key.substr(2), value;
+    if (auto eq = name.find('='); eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+    } else {
+      if (i + 1 >= extras.size()) throw std::runtime_error(fmt::format("{} needs a value", key));
+      value = extras[++i];
+    }
+    try {
+      std::size_t used = 0;
+      double v = std::stod(value, &used);
+      if (used != value.size()) throw std::invalid_argument(value);
+      out[name] = v;
+    } catch (const std::exception&) {
+      throw std::runtime_error(fmt::format("{}: '{}' is not a number", key, value));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+void add_gen_command(CLI::App& app, GenArgs& a) {
+  CLI::App* gen = app.add_subcommand("gen", "write a program for a curve within a guaranteed shape tolerance");
+  gen->allow_extras();
+  gen->add_option("curve", a.curve, "curve name (see --list) or expr");
+  gen->add_flag("--list", a.list, "list the curves and their parameters");
+  gen->add_option("--tol", a.tol, "shape tolerance, mm (default 0.005)")->check(CLI::PositiveNumber);
+  gen->add_option("--form", a.form, "expanded, arcs, macro or adaptive-macro")
+      ->check(CLI::IsMember({"expanded", "arcs", "macro", "adaptive-macro"}));
+  gen->add_option("--lines", a.lines,
+                  "expanded: equal-error (default: fewest lines, tolerance band), equal-error-chord, equal-step or "
+                  "equal-chord")
+      ->check(CLI::IsMember({"equal-error", "equal-error-chord", "equal-step", "equal-chord"}));
+  gen->add_option("--machine", a.machine, "machine profile (TOML); default: FANUC 3-axis mill")
+      ->check(CLI::ExistingFile);
+  gen->add_option("--from", a.from, "start of the curve parameter t");
+  gen->add_option("--to", a.to, "end of the curve parameter t");
+  gen->add_option("--x", a.x, "expr: x(t)");
+  gen->add_option("--y", a.y, "expr: y(t)");
+  gen->add_option("--z", a.z, "expr: z(t)");
+  gen->add_option("--t", a.t_range, "expr: range of t as FROM:TO");
+  gen->add_option("--feed", a.feed, "feed, mm/min (mill) or mm/rev (lathe)")->check(CLI::PositiveNumber);
+  gen->add_option("--depth", a.depth, "mill: depth of a plane contour below Z0, mm");
+  gen->add_option("--clearance", a.clearance, "mill: rapid plane above Z0; lathe: retract, mm");
+  gen->add_option("--program-number", a.program_number, "O number of the program")->check(CLI::Range(1, 9999));
+  gen->add_option("-o,--output", a.output, "write the program here (statistics go to the terminal)");
+  gen->add_flag("--json", a.json, "statistics as JSON");
+  a.command = gen;
+}
+
+int gen_command(const GenArgs& a) {
+  if (a.list) {
+    std::cout << list_curves();
+    return 0;
+  }
+  gen::Options o;
+  std::optional<geom::Curve> curve;
+  try {
+    if (a.curve.empty()) throw std::runtime_error("name a curve (ncurve gen --list shows them) or expr");
+    if (!a.machine.empty()) o.profile = machine::load_profile(a.machine);
+    gen::parse_form(a.form, o.form);
+    if (a.lines == "equal-step") o.lines = geom::LineMethod::equal_step;
+    else if (a.lines == "equal-chord") o.lines = geom::LineMethod::equal_chord;
+    else if (a.lines == "equal-error-chord") o.lines = geom::LineMethod::equal_error_on_curve;
+    o.tol = a.tol;
+    o.feed = a.feed;
+    o.depth = a.depth;
+    o.clearance = a.clearance;
+    o.program_number = a.program_number;
+    auto values = curve_parameters(a.command->remaining());
+    nc::EvalOptions eval;
+    eval.atan_signed = o.profile.atan_signed;
+    geom::CurveSpec spec;
+    if (a.curve == "expr") {
+      if (a.x.empty() && a.y.empty()) throw std::runtime_error("expr needs --x and --y (and optionally --z)");
+      spec.name = "expr";
+      spec.x = a.x.empty() ? "0" : a.x;
+      spec.y = a.y.empty() ? "0" : a.y;
+      spec.z = a.z.empty() ? "0" : a.z;
+      for (const auto& [name, value] : values) spec.params.push_back({name, value, "user parameter"});
+      auto colon = a.t_range.find(':');
+      if (a.t_range.empty() || colon == std::string::npos) throw std::runtime_error("expr needs --t FROM:TO");
+      spec.from = std::stod(a.t_range.substr(0, colon));
+      spec.to = std::stod(a.t_range.substr(colon + 1));
+    } else {
+      const geom::CurveSpec* found = geom::find_curve(a.curve);
+      if (!found) throw std::runtime_error(fmt::format("no curve named '{}' (ncurve gen --list shows them)", a.curve));
+      spec = *found;
+    }
+    curve.emplace(spec, values, eval);
+    if (a.from) curve->set_range(*a.from, curve->t1());
+    if (a.to) curve->set_range(curve->t0(), *a.to);
+  } catch (const std::exception& e) {
+    std::cerr << "ncurve gen: " << e.what() << "\n";
+    return 2;
+  }
+
+  gen::Result r;
+  try {
+    r = gen::generate(*curve, o);
+  } catch (const std::exception& e) {
+    std::cerr << "ncurve gen: " << e.what() << "\n";
+    return 1;
+  }
+  if (!a.output.empty()) {
+    std::ofstream f(a.output, std::ios::binary);
+    if (!f || !(f << r.text)) {
+      std::cerr << fmt::format("{}: error: cannot write the program\n", a.output);
+      return 2;
+    }
+  }
+  const auto& s = r.stats;
+  if (a.json) {
+    nlohmann::json j;
+    j["curve"] = curve->name();
+    j["form"] = gen::to_string(o.form);
+    j["tolerance"] = o.tol;
+    j["words"] = s.words;
+    j["bytes"] = s.bytes;
+    j["blocks"] = s.blocks;
+    j["points"] = s.points;
+    j["path_length"] = s.path_length;
+    j["max_deviation"] = s.max_deviation;
+    j["worst_t"] = s.worst_t;
+    j["worst_point"] = s.worst_point;
+    j["within_tolerance"] = r.within_tolerance;
+    if (a.output.empty()) j["program"] = r.text;
+    std::cout << j.dump(2) << "\n";
+  } else {
+    if (a.output.empty()) std::cout << r.text;
+    std::ostream& out = a.output.empty() ? std::cerr : std::cout;
+    out << fmt::format(
+        "curve {} (t {:.6g}..{:.6g}), form {}, tolerance {} mm\n"
+        "  words {}, bytes {}, blocks {}, cutter-location points {}\n"
+        "  path length {:.4f} mm, max deviation {:.6f} mm at t = {:.6g} (round trip through the interpreter)\n",
+        curve->name(), curve->t0(), curve->t1(), gen::to_string(o.form), o.tol, s.words, s.bytes, s.blocks, s.points,
+        s.path_length, s.max_deviation, s.worst_t);
+  }
+  if (!r.within_tolerance) {
+    std::cerr << fmt::format(
+        "ncurve gen: error: the program deviates {:.6f} mm from the curve at t = {:.6g} (X {:.4f} Y {:.4f} Z {:.4f}), "
+        "more than the tolerance {} mm\n",
+        s.max_deviation, s.worst_t, s.worst_point[0], s.worst_point[1], s.worst_point[2], o.tol);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace ncurve::app

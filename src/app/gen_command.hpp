@@ -1,0 +1,31 @@
+// The `ncurve gen` subcommand.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+namespace ncurve::app {
+
+struct GenArgs {
+  std::string curve;
+  bool list = false;
+  double tol = 0.005;
+  std::string form = "expanded";
+  std::string lines = "equal-error";
+  std::string machine;
+  std::optional<double> from, to;
+  std::string x, y, z, t_range;
+  double feed = 0;
+  double depth = 1;
+  double clearance = 5;
+  int program_number = 1000;
+  std::string output;
+  bool json = false;
+  CLI::App* command = nullptr;
+};
+
+void add_gen_command(CLI::App& app, GenArgs& args);
+int gen_command(const GenArgs& args);
+
+}  // namespace ncurve::app

@@ -1,0 +1,60 @@
+// Part programs for a curve in the forms a programmer chooses, each run back through the
+// interpreter and measured against the exact curve.
+#pragma once
+#include <string>
+
+#include "geom/approx.hpp"
+#include "geom/curve.hpp"
+#include "machine/profile.hpp"
+
+namespace ncurve::gen {
+
+enum class Form { expanded, arcs, macro, adaptive_macro };
+const char* to_string(Form f);
+bool parse_form(const std::string& text, Form& out);
+
+struct Options {
+  Form form = Form::expanded;
+  double tol = 0.005;  // mm
+  geom::LineMethod lines = geom::LineMethod::equal_error;
+  machine::MachineProfile profile = machine::default_mill();
+  double feed = 0;          // mm/min (mill) or mm/rev (lathe); 0: 200 mm/min or 0.1 mm/rev
+  double depth = 1;         // mill: cutting depth below Z0 for a plane curve, mm
+  double clearance = 5;     // mill: rapid plane above Z0; lathe: retract distance, mm
+  int program_number = 1000;
+};
+
+// How the curve sits on the machine: machine axis a = scale[a] * curve[from[a]] + offset[a]
+// (internal units: lathe X as a radius). from[a] < 0 means the constant offset alone.
+struct AxisMap {
+  std::array<int, 3> from{0, 1, 2};
+  std::array<double, 3> offset{0, 0, 0};
+  geom::Vec3 operator()(const geom::Vec3& c) const;
+};
+AxisMap axis_map(const geom::Curve& curve, const Options& o);
+geom::Plane plane_of(const machine::MachineProfile& p);
+
+struct Stats {
+  std::size_t words = 0, bytes = 0, blocks = 0;
+  std::size_t points = 0;    // cutter-location points of the contour as the control runs it
+  double path_length = 0;    // contour length, mm
+  double max_deviation = 0;  // round trip: largest distance from the curve to the path, mm
+  double worst_t = 0;        // where it is
+  geom::Vec3 worst_point{};  // machine coordinates of the curve point there
+};
+
+struct Result {
+  std::string text;
+  Stats stats;
+  bool within_tolerance = false;
+};
+
+// Throws std::runtime_error for curves or options that cannot be generated.
+Result generate(const geom::Curve& curve, const Options& o);
+
+// Runs the program and measures the contour (blocks in [first_line, last_line] of the main
+// program) against the curve; throws with the interpreter's alarm if the program fails.
+Stats round_trip(const std::string& text, const geom::Curve& curve, const Options& o, std::uint32_t first_line,
+                 std::uint32_t last_line);
+
+}  // namespace ncurve::gen

@@ -1,0 +1,483 @@
+#include "geom/approx.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace ncurve::geom {
+namespace {
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vec3 scale(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+// Placed point, tangent and second derivative (placements are affine).
+struct Local {
+  Vec3 p, d1, d2;
+};
+Local local(const Fit& f, double t) {
+  Vec3 c = f.curve.point(t);
+  Vec3 p = f.place(c);
+  return {p, sub(f.place(add(c, f.curve.d1(t))), p), sub(f.place(add(c, f.curve.d2(t))), p)};
+}
+
+// Outward unit normal (away from the centre of curvature) and curvature of the placed curve.
+double outward(const Local& l, Vec3& n) {
+  double s2 = dot(l.d1, l.d1);
+  Vec3 perp = sub(l.d2, scale(l.d1, dot(l.d2, l.d1) / s2));
+  double len = norm(perp);
+  n = len > 0 ? scale(perp, -1.0 / len) : Vec3{0, 0, 0};
+  return len / s2;
+}
+
+constexpr double kGolden = 0.6180339887498949;
+
+// Bisection on t in (lo, hi]: the largest t found with ok(t), given ok(lo) and !ok(hi).
+template <class Ok>
+double largest_ok(double lo, double hi, Ok ok, double span) {
+  for (int i = 0; i < 60 && hi - lo > 1e-7 * span; ++i) {
+    double mid = 0.5 * (lo + hi);
+    if (ok(mid)) lo = mid; else hi = mid;
+  }
+  return lo;
+}
+
+struct Arc2 {
+  bool line = false;
+  double cu = 0, cv = 0, r = 0;
+  bool ccw = false;
+};
+
+// The arc from p (tangent dir) to q, in plane coordinates.
+Arc2 arc_from_tangent(double pu, double pv, double tu, double tv, double qu, double qv) {
+  double du = qu - pu, dv = qv - pv;
+  double nu = -tv, nv = tu;  // left normal
+  double side = du * nu + dv * nv;
+  double chord2 = du * du + dv * dv;
+  Arc2 a;
+  if (std::fabs(side) <= 1e-12 * std::sqrt(chord2) || std::fabs(chord2 / (2 * side)) > 1e6) {
+    a.line = true;
+    return a;
+  }
+  double r = chord2 / (2 * side);  // signed: positive turns left
+  a.cu = pu + nu * r;
+  a.cv = pv + nv * r;
+  a.r = std::fabs(r);
+  a.ccw = r > 0;
+  return a;
+}
+
+}  // namespace
+
+Vec3 Grid::snap(const Vec3& p) const {
+  Vec3 out;
+  for (int a = 0; a < 3; ++a) out[a] = step[a] > 0 ? std::round(p[a] / step[a]) * step[a] : p[a];
+  return out;
+}
+
+double Grid::worst_error() const { return 0.5 * norm(step); }
+
+double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+  Vec3 ab = sub(b, a);
+  double len2 = dot(ab, ab);
+  double s = len2 > 0 ? std::clamp(dot(sub(p, a), ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(sub(p, add(a, scale(ab, s))));
+}
+
+double point_arc_distance(const Vec3& p, const Piece& arc, const Plane& plane) {
+  const int u = plane.u_axis, v = plane.v_axis, w = 3 - u - v;
+  double a0 = std::atan2(arc.start[v] - arc.centre[v], arc.start[u] - arc.centre[u]);
+  double a1 = std::atan2(arc.end[v] - arc.centre[v], arc.end[u] - arc.centre[u]);
+  double sweep = arc.ccw ? a1 - a0 : a0 - a1;
+  while (sweep <= 1e-12) sweep += 2 * std::numbers::pi;
+  double r0 = std::hypot(arc.start[u] - arc.centre[u], arc.start[v] - arc.centre[v]);
+  double r1 = std::hypot(arc.end[u] - arc.centre[u], arc.end[v] - arc.centre[v]);
+  double ap = std::atan2(p[v] - arc.centre[v], p[u] - arc.centre[u]);
+  double along = arc.ccw ? ap - a0 : a0 - ap;
+  while (along < 0) along += 2 * std::numbers::pi;
+  while (along >= 2 * std::numbers::pi) along -= 2 * std::numbers::pi;
+  if (along <= sweep) {
+    double f = along / sweep;
+    double r = r0 + (r1 - r0) * f;
+    double pw = arc.start[w] + (arc.end[w] - arc.start[w]) * f;
+    double radial = std::hypot(p[u] - arc.centre[u], p[v] - arc.centre[v]) - r;
+    return std::hypot(radial, p[w] - pw);
+  }
+  return std::min(norm(sub(p, arc.start)), norm(sub(p, arc.end)));
+}
+
+Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb,
+                   const std::function<double(const Vec3&)>& dist) {
+  constexpr int kSamples = 8;
+  auto f = [&](double t) { return dist(place(curve.point(t))); };
+  double best_t = ta, best = f(ta);
+  int best_i = 0;
+  for (int i = 1; i <= kSamples; ++i) {
+    double t = ta + (tb - ta) * i / kSamples;
+    double d = f(t);
+    if (d > best) { best = d; best_t = t; best_i = i; }
+  }
+  // golden-section search for the maximum next to the best sample
+  double lo = ta + (tb - ta) * std::max(0, best_i - 1) / kSamples;
+  double hi = ta + (tb - ta) * std::min(kSamples, best_i + 1) / kSamples;
+  double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+  double f1 = f(x1), f2 = f(x2);
+  for (int i = 0; i < 40 && hi - lo > 1e-12 * (1 + std::fabs(hi)); ++i) {
+    if (f1 > f2) {
+      hi = x2; x2 = x1; f2 = f1;
+      x1 = hi - kGolden * (hi - lo); f1 = f(x1);
+    } else {
+      lo = x1; x1 = x2; f1 = f2;
+      x2 = lo + kGolden * (hi - lo); f2 = f(x2);
+    }
+  }
+  if (f1 > best) { best = f1; best_t = x1; }
+  if (f2 > best) { best = f2; best_t = x2; }
+  return {best, best_t};
+}
+
+namespace {
+
+// Vertices: exact curve points at both ends of the range, elsewhere the curve point moved outward
+// by `offset` (a band of +-tol holds segments about 1.4 times longer than chords), then snapped.
+Vec3 vertex(const Fit& f, double t, double offset) {
+  Local l = local(f, t);
+  if (offset > 0 && t > f.curve.t0() && t < f.curve.t1()) {
+    Vec3 n;
+    outward(l, n);
+    return f.grid.snap(add(l.p, scale(n, offset)));
+  }
+  return f.grid.snap(l.p);
+}
+
+double segment_error(const Fit& f, double ta, double tb, const Vec3& a, const Vec3& b) {
+  return max_distance(f.curve, f.place, ta, tb, [&](const Vec3& p) { return point_segment_distance(p, a, b); })
+      .distance;
+}
+
+// A first guess of the parameter step for a sag h at t (from the local curvature).
+double step_guess(const Fit& f, double t, double h) {
+  Local l = local(f, t);
+  Vec3 n;
+  double k = outward(l, n);
+  double speed = norm(l.d1);
+  double range = f.curve.t1() - f.curve.t0();
+  if (!(k > 1e-12) || !(speed > 0)) return range;
+  return std::min(range, std::sqrt(8 * h / k) / speed);
+}
+
+Path lines_greedy(const Fit& f, bool band) {
+  Path path;
+  const double t_end = f.curve.t1();
+  const double span = t_end - f.curve.t0();
+  const double offset = band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0;
+  double ta = f.curve.t0();
+  Vec3 a = vertex(f, ta, offset);
+  while (ta < t_end) {
+    auto ok = [&](double tb) { return segment_error(f, ta, tb, a, vertex(f, tb, offset)) <= f.tol; };
+    double lo, hi;
+    double guess = std::min(t_end, ta + step_guess(f, ta, f.tol + offset));
+    if (ok(guess)) {
+      lo = guess;
+      hi = guess;
+      while (hi < t_end) {
+        hi = std::min(t_end, ta + (hi - ta) * 1.5);
+        if (!ok(hi)) break;
+        lo = hi;
+      }
+      if (lo == t_end) hi = t_end;
+    } else {
+      hi = guess;
+      lo = ta + (guess - ta) * 0.6;
+      while (!ok(lo)) {
+        hi = lo;
+        lo = ta + (lo - ta) * 0.6;
+        if (lo - ta < 1e-12 * span)
+          throw std::runtime_error(fmt::format(
+              "{}: no segment from t = {:.6g} stays within {} mm (tolerance below the machine increment?)",
+              f.curve.name(), ta, f.tol));
+      }
+    }
+    double tb = lo == t_end ? t_end : largest_ok(lo, hi, ok, span);
+    Vec3 b = vertex(f, tb, offset);
+    double err = segment_error(f, ta, tb, a, b);
+    path.max_deviation = std::max(path.max_deviation, err);
+    path.pieces.push_back(Piece{false, a, b, {}, false, ta, tb});
+    ta = tb;
+    a = b;
+  }
+  return path;
+}
+
+// All chords for the given parameters (vertices on the curve); the largest error.
+double chords_error(const Fit& f, const std::vector<double>& ts, Path* out) {
+  double worst = 0;
+  Vec3 a = vertex(f, ts[0], 0);
+  for (std::size_t i = 1; i < ts.size(); ++i) {
+    Vec3 b = vertex(f, ts[i], 0);
+    double e = segment_error(f, ts[i - 1], ts[i], a, b);
+    worst = std::max(worst, e);
+    if (out) out->pieces.push_back(Piece{false, a, b, {}, false, ts[i - 1], ts[i]});
+    a = b;
+  }
+  return worst;
+}
+
+std::vector<double> equal_steps(const Fit& f, long n) {
+  std::vector<double> ts;
+  for (long i = 0; i <= n; ++i) ts.push_back(f.curve.t0() + (f.curve.t1() - f.curve.t0()) * i / n);
+  return ts;
+}
+
+std::vector<double> equal_chords(const Fit& f, double length) {
+  std::vector<double> ts{f.curve.t0()};
+  const double t_end = f.curve.t1(), span = t_end - f.curve.t0();
+  while (ts.back() < t_end) {
+    double ta = ts.back();
+    Vec3 pa = f.place(f.curve.point(ta));
+    auto shorter = [&](double t) { return norm(sub(f.place(f.curve.point(t)), pa)) <= length; };
+    if (shorter(t_end)) {
+      ts.push_back(t_end);
+      break;
+    }
+    double speed = norm(local(f, ta).d1);
+    double hi = std::min(t_end, ta + 1.5 * length / std::max(speed, 1e-12));
+    while (shorter(hi) && hi < t_end) hi = std::min(t_end, ta + 2 * (hi - ta));
+    ts.push_back(largest_ok(ta, hi, shorter, span));
+    if (ts.size() > 50'000'000) throw std::runtime_error("too many segments");
+  }
+  return ts;
+}
+
+template <class Make>
+long smallest_passing(long lo_fail, long hi, Make passes) {  // passes(hi) is true, passes(lo_fail) false
+  while (hi - lo_fail > 1) {
+    long mid = lo_fail + (hi - lo_fail) / 2;
+    if (passes(mid)) hi = mid; else lo_fail = mid;
+  }
+  return hi;
+}
+
+}  // namespace
+
+Path fit_lines(const Fit& f, LineMethod method) {
+  if (f.tol <= f.grid.worst_error())
+    throw std::runtime_error(fmt::format("tolerance {} mm is not above the coordinate rounding ({:.6f} mm)", f.tol,
+                                         f.grid.worst_error()));
+  switch (method) {
+    case LineMethod::equal_error: return lines_greedy(f, true);
+    case LineMethod::equal_error_on_curve: return lines_greedy(f, false);
+    case LineMethod::equal_step: {
+      auto passes = [&](long n) { return chords_error(f, equal_steps(f, n), nullptr) <= f.tol; };
+      long n = 1;
+      while (!passes(n)) {
+        n *= 2;
+        if (n > (1L << 24)) throw std::runtime_error("no equal step meets the tolerance");
+      }
+      n = smallest_passing(n / 2, n, passes);
+      Path p;
+      p.max_deviation = chords_error(f, equal_steps(f, n), &p);
+      return p;
+    }
+    case LineMethod::equal_chord: {
+      // the longest chord length for which every chord is within the tolerance (bisection on length)
+      Vec3 a = f.place(f.curve.point(f.curve.t0())), b = f.place(f.curve.point(f.curve.t1()));
+      double total = 0;
+      constexpr int kRough = 256;
+      for (int i = 1; i <= kRough; ++i) {
+        double t = f.curve.t0() + (f.curve.t1() - f.curve.t0()) * i / kRough;
+        Vec3 q = f.place(f.curve.point(t));
+        total += norm(sub(q, a));
+        a = q;
+      }
+      (void)b;
+      auto passes = [&](double len) { return chords_error(f, equal_chords(f, len), nullptr) <= f.tol; };
+      double lo = 0, hi = total;
+      double len = total;
+      while (!passes(len)) {
+        hi = len;
+        len /= 2;
+        if (len < 1e-9) throw std::runtime_error("no chord length meets the tolerance");
+      }
+      lo = len;
+      for (int i = 0; i < 30 && hi - lo > 1e-6 * lo; ++i) {
+        double mid = 0.5 * (lo + hi);
+        if (passes(mid)) lo = mid; else hi = mid;
+      }
+      Path p;
+      p.max_deviation = chords_error(f, equal_chords(f, lo), &p);
+      return p;
+    }
+  }
+  return {};
+}
+
+std::vector<double> inflections(const Curve& curve, const Placement& place, const Plane& plane) {
+  auto turn = [&](double t) {
+    Vec3 c = curve.point(t), p = place(c);
+    Vec3 d1 = sub(place(add(c, curve.d1(t))), p), d2 = sub(place(add(c, curve.d2(t))), p);
+    return d1[plane.u_axis] * d2[plane.v_axis] - d1[plane.v_axis] * d2[plane.u_axis];
+  };
+  std::vector<double> out;
+  constexpr int kSamples = 2048;
+  double t0 = curve.t0(), t1 = curve.t1();
+  double prev_t = t0, prev = turn(t0);
+  for (int i = 1; i <= kSamples; ++i) {
+    double t = t0 + (t1 - t0) * i / kSamples;
+    double v = turn(t);
+    if ((prev < 0 && v > 0) || (prev > 0 && v < 0)) {
+      double lo = prev_t, hi = t;
+      for (int k = 0; k < 60; ++k) {
+        double mid = 0.5 * (lo + hi);
+        if ((turn(mid) > 0) == (prev > 0)) lo = mid; else hi = mid;
+      }
+      out.push_back(0.5 * (lo + hi));
+    }
+    if (v != 0) { prev = v; prev_t = t; }
+  }
+  return out;
+}
+
+namespace {
+
+// Biarc from (P0, T0) to (P1, T1) with equal control lengths; the two arcs (or lines) as pieces.
+bool biarc(const Fit& f, double ta, double tb, std::vector<Piece>& out) {
+  const int u = f.plane.u_axis, v = f.plane.v_axis;
+  Local la = local(f, ta), lb = local(f, tb);
+  Vec3 p0 = la.p, p1 = lb.p;
+  double t0u = la.d1[u], t0v = la.d1[v], t1u = lb.d1[u], t1v = lb.d1[v];
+  double n0 = std::hypot(t0u, t0v), n1 = std::hypot(t1u, t1v);
+  if (!(n0 > 0) || !(n1 > 0)) return false;
+  t0u /= n0; t0v /= n0; t1u /= n1; t1v /= n1;
+  double vu = p1[u] - p0[u], vv = p1[v] - p0[v];
+  double su = t0u + t1u, sv = t0v + t1v;
+  double vt = vu * su + vv * sv, vvv = vu * vu + vv * vv;
+  double qa = 2 * (t0u * t1u + t0v * t1v - 1);  // |T0+T1|^2 - 4
+  double d;
+  if (std::fabs(qa) < 1e-12) {
+    if (std::fabs(vt) < 1e-15) return false;
+    d = vvv / (2 * vt);
+  } else {
+    double disc = vt * vt - qa * vvv;
+    if (disc < 0) return false;
+    d = (-vt + std::sqrt(disc)) / qa;  // qa < 0: the positive root
+    if (!(d > 0)) d = (-vt - std::sqrt(disc)) / qa;
+  }
+  if (!(d > 0)) return false;
+  // joint: midpoint of the control points
+  double ju = 0.5 * (p0[u] + d * t0u + p1[u] - d * t1u);
+  double jv = 0.5 * (p0[v] + d * t0v + p1[v] - d * t1v);
+  // parameter of the curve point nearest the joint
+  auto gap = [&](double t) {
+    Vec3 q = f.place(f.curve.point(t));
+    return std::hypot(q[u] - ju, q[v] - jv);
+  };
+  double lo = ta, hi = tb;
+  for (int i = 0; i < 80; ++i) {
+    double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+    if (gap(m1) < gap(m2)) hi = m2; else lo = m1;
+  }
+  double tj = 0.5 * (lo + hi);
+  Vec3 joint = p0;
+  joint[u] = ju;
+  joint[v] = jv;
+  const int w = 3 - u - v;
+  joint[w] = f.place(f.curve.point(tj))[w];
+  Arc2 a1 = arc_from_tangent(p0[u], p0[v], t0u, t0v, ju, jv);
+  // second arc: from p1 backwards along -T1 to the joint, then reversed
+  Arc2 a2 = arc_from_tangent(p1[u], p1[v], -t1u, -t1v, ju, jv);
+  a2.ccw = !a2.ccw;
+  auto piece = [&](const Arc2& a, const Vec3& s, const Vec3& e, double t_s, double t_e) {
+    Piece p;
+    p.start = s;
+    p.end = e;
+    p.t0 = t_s;
+    p.t1 = t_e;
+    if (!a.line) {
+      p.arc = true;
+      p.ccw = a.ccw;
+      p.centre = s;
+      p.centre[u] = a.cu;
+      p.centre[v] = a.cv;
+    }
+    return p;
+  };
+  out.push_back(piece(a1, p0, joint, ta, tj));
+  out.push_back(piece(a2, joint, p1, tj, tb));
+  return true;
+}
+
+double piece_error(const Fit& f, const Piece& p) {
+  auto dist = [&](const Vec3& q) {
+    return p.arc ? point_arc_distance(q, p, f.plane) : point_segment_distance(q, p.start, p.end);
+  };
+  return max_distance(f.curve, f.place, p.t0, p.t1, dist).distance;
+}
+
+// Snaps end points and centre as the program will carry them: the centre is written relative to
+// the snapped start point, so it snaps on the same grid.
+Piece snapped(const Fit& f, Piece p) {
+  p.start = f.grid.snap(p.start);
+  p.end = f.grid.snap(p.end);
+  if (p.arc) p.centre = f.grid.snap(p.centre);
+  return p;
+}
+
+}  // namespace
+
+Path fit_arcs(const Fit& f) {
+  if (f.tol <= 2 * f.grid.worst_error())
+    throw std::runtime_error(fmt::format("tolerance {} mm is too close to the coordinate rounding", f.tol));
+  std::vector<double> breaks = inflections(f.curve, f.place, f.plane);
+  breaks.push_back(f.curve.t1());
+  Path path;
+  double ta = f.curve.t0();
+  const double span = f.curve.t1() - f.curve.t0();
+  for (double stop : breaks) {
+    while (ta < stop) {
+      std::vector<Piece> trial;
+      auto ok = [&](double tb) {
+        trial.clear();
+        if (!biarc(f, ta, tb, trial)) return false;
+        for (auto& p : trial)
+          if (piece_error(f, snapped(f, p)) > f.tol) return false;
+        return true;
+      };
+      double lo = ta, hi = stop;
+      if (!ok(stop)) {
+        double guess = std::min(stop, ta + 4 * step_guess(f, ta, f.tol));
+        if (ok(guess)) {
+          lo = guess;
+        } else {
+          hi = guess;
+          lo = ta + (guess - ta) * 0.5;
+          while (!ok(lo)) {
+            hi = lo;
+            lo = ta + (lo - ta) * 0.5;
+            if (lo - ta < 1e-12 * span)
+              throw std::runtime_error(
+                  fmt::format("{}: no arc from t = {:.6g} stays within {} mm", f.curve.name(), ta, f.tol));
+          }
+        }
+        lo = largest_ok(lo, hi, ok, span);
+      } else {
+        lo = stop;
+      }
+      ok(lo);
+      for (auto& p : trial) {
+        Piece s = snapped(f, p);
+        path.max_deviation = std::max(path.max_deviation, piece_error(f, s));
+        path.pieces.push_back(s);
+      }
+      ta = lo;
+    }
+  }
+  return path;
+}
+
+}  // namespace ncurve::geom

@@ -1,0 +1,69 @@
+// Tool paths of lines and arcs within a shape tolerance of a curve, and the deviation measure
+// that proves it (maximum distance, found by optimisation on each piece).
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "geom/curve.hpp"
+
+namespace ncurve::geom {
+
+// Machine coordinates of a curve point (e.g. a lathe profile drawn in x, y goes to Z, X).
+using Placement = std::function<Vec3(const Vec3&)>;
+
+// Where emitted coordinates land: each axis rounds to its least increment (in internal units:
+// a lathe's diameter X rounds to half the increment as a radius).
+struct Grid {
+  Vec3 step{0.001, 0.001, 0.001};
+  Vec3 snap(const Vec3& p) const;
+  double worst_error() const;  // largest distance snap() moves a point
+};
+
+// The plane of arcs: u = p[u_axis], v = p[v_axis], counter-clockwise in (u, v) is G03.
+struct Plane {
+  int u_axis = 0, v_axis = 1;
+};
+
+struct Piece {
+  bool arc = false;
+  Vec3 start{}, end{}, centre{};  // machine coordinates as emitted (snapped)
+  bool ccw = false;
+  double t0 = 0, t1 = 0;  // curve parameters the piece stands for
+};
+
+struct Path {
+  std::vector<Piece> pieces;
+  double max_deviation = 0;  // as measured while building (exact, before the round trip)
+};
+
+enum class LineMethod { equal_step, equal_chord, equal_error, equal_error_on_curve };
+
+struct Fit {
+  const Curve& curve;
+  Placement place;
+  Grid grid;
+  Plane plane;
+  double tol;
+};
+
+Path fit_lines(const Fit& fit, LineMethod method);
+Path fit_arcs(const Fit& fit);  // biarcs, tangent-continuous, split at inflections
+
+// Largest distance from the curve over [ta, tb] to the geometry dist() measures, and where.
+struct Worst {
+  double distance = 0;
+  double t = 0;
+};
+Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb,
+                   const std::function<double(const Vec3&)>& dist);
+
+double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b);
+// Distance to an arc in the plane from start to end about centre (radius varying linearly from
+// the start radius to the end radius, as a control interpolates a slightly unequal arc), with
+// the out-of-plane coordinate interpolated linearly (helix).
+double point_arc_distance(const Vec3& p, const Piece& arc, const Plane& plane);
+
+// Parameters where the curve's turning direction in the plane changes sign.
+std::vector<double> inflections(const Curve& curve, const Placement& place, const Plane& plane);
+
+}  // namespace ncurve::geom

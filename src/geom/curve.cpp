@@ -1,0 +1,199 @@
+#include "geom/curve.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "nc/program.hpp"
+
+namespace ncurve::geom {
+namespace {
+
+const char* const kFunctionWords[] = {"SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX",
+                                      "FUP", "LN",  "EXP", "POW",  "ADP",  "BIN",  "BCD",  "MOD", "AND",   "OR",
+                                      "XOR"};
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+}  // namespace
+
+const std::vector<CurveSpec>& catalogue() {
+  static const std::vector<CurveSpec> curves = {
+      {"spiral", "Archimedean spiral r = r0 + pitch*t/360 about (cx, cy), counter-clockwise for t rising",
+       {{"r0", 1.0, "radius at t = 0, mm"},
+        {"pitch", 4 * 3.14159265358979, "radius increase per turn, mm"},
+        {"cx", 0, "centre X, mm"},
+        {"cy", 0, "centre Y, mm"}},
+       "CX+[R0+PITCH*t/360]*COS[t]", "CY+[R0+PITCH*t/360]*SIN[t]", "0", 0, 360, "t = polar angle, degrees"},
+      {"hyperbola", "lathe hyperbola X = a/cos t (radius), Z = b*tan t (seed 003)",
+       {{"a", 100, "radius at t = 0, mm"}, {"b", 202.4, "Z scale, mm"}},
+       "A/COS[t]", "0", "B*TAN[t]", -20, 20, "t = alpha, degrees, inside (-90, 90)"},
+      {"ellipse", "ellipse x = a cos t, y = b sin t",
+       {{"a", 40, "semi-axis along X, mm"}, {"b", 20, "semi-axis along Y, mm"}},
+       "A*COS[t]", "B*SIN[t]", "0", 0, 360, "t = eccentric angle, degrees"},
+      {"parabola", "parabola y = x^2 / (4 f)", {{"f", 10, "focal length, mm"}},
+       "t", "t*t/[4*F]", "0", -20, 20, "t = x, mm"},
+      {"involute", "involute of a circle", {{"rb", 20, "base circle radius, mm"}},
+       "RB*[COS[t]+t*PI/180*SIN[t]]", "RB*[SIN[t]-t*PI/180*COS[t]]", "0", 5, 120,
+       "t = roll angle, degrees (t = 0 is a cusp)"},
+      {"sine", "sine wave y = amp sin(360 x / wavelength)", {{"amp", 5, "amplitude, mm"}, {"wavelength", 40, "mm"}},
+       "t", "AMP*SIN[360*t/WAVELENGTH]", "0", 0, 80, "t = x, mm"},
+      {"cycloid", "cycloid of a circle rolling on X", {{"r", 10, "rolling circle radius, mm"}},
+       "R*[t*PI/180-SIN[t]]", "R*[1-COS[t]]", "0", 10, 350, "t = rolling angle, degrees (cusps at 0, 360 ...)"},
+      {"trochoid", "trochoid: point at distance d from the centre of a circle of radius r rolling on X",
+       {{"r", 10, "rolling circle radius, mm"}, {"d", 5, "point distance from the centre, mm"}},
+       "R*t*PI/180-D*SIN[t]", "R-D*COS[t]", "0", 0, 720, "t = rolling angle, degrees"},
+      {"helix", "helix about Z", {{"r", 20, "radius, mm"}, {"lead", 5, "Z rise per turn, mm"}},
+       "R*COS[t]", "R*SIN[t]", "LEAD*t/360", 0, 720, "t = angle, degrees"},
+      {"rotor", "screw-rotor end profile of seed 004 (s = atan(sin 5u / (1.4 - cos 5u)) - u)", {},
+       "63*SIN[t]-7.5*SIN[6*t]+20*SIN[ATAN[SIN[5*t]]/[1.4-COS[5*t]]-t]",
+       "63*COS[t]-7.5*COS[6*t]-20*COS[ATAN[SIN[5*t]]/[1.4-COS[5*t]]-t]", "0", 0, 72, "t = u, degrees"},
+  };
+  return curves;
+}
+
+const CurveSpec* find_curve(const std::string& name) {
+  for (const auto& c : catalogue())
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+std::string substitute_names(const std::string& text, const std::vector<std::string>& params) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    char c = text[i];
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      std::size_t j = i;
+      while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+      std::string word = upper(text.substr(i, j - i));
+      bool function = false;
+      for (const char* f : kFunctionWords) function = function || word == f;
+      if (function) {
+        out += word;
+      } else if (word == "T") {
+        out += fmt::format("#{}", kTVar);
+      } else if (word == "PI") {
+        out += "3.14159265358979";
+      } else {
+        std::size_t k = 0;
+        while (k < params.size() && upper(params[k]) != word) ++k;
+        if (k == params.size()) {
+          std::string known = "t, PI";
+          for (const auto& p : params) known += ", " + p;
+          throw std::runtime_error(fmt::format("'{}' at column {} is not a function or a name ({})",
+                                               text.substr(i, j - i), i + 1, known));
+        }
+        out += fmt::format("#{}", kFirstParamVar + static_cast<int>(k));
+      }
+      i = j;
+      continue;
+    }
+    out += c == '(' ? '[' : c == ')' ? ']' : c;
+    ++i;
+  }
+  return out;
+}
+
+Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values, nc::EvalOptions options)
+    : name_(spec.name), t0_(spec.from), t1_(spec.to) {
+  std::vector<std::string> names;
+  for (const auto& p : spec.params) {
+    names.push_back(p.name);
+    params_.push_back(Param{p.name, kFirstParamVar + static_cast<int>(params_.size()), p.value, p.doc});
+  }
+  for (const auto& [name, value] : values) {
+    auto it = std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.name == name; });
+    if (it == params_.end()) {
+      std::string known;
+      for (const auto& p : params_) known += (known.empty() ? "" : ", ") + p.name;
+      throw std::runtime_error(
+          fmt::format("{} has no parameter '{}' (it has: {})", spec.name, name, known.empty() ? "none" : known));
+    }
+    it->value = value;
+  }
+  for (const auto& p : params_) base_[static_cast<std::size_t>(p.var)] = p.value;
+  const std::string* texts[3] = {&spec.x, &spec.y, &spec.z};
+  const char* axis = "xyz";
+  for (int a = 0; a < 3; ++a) {
+    std::string origin = fmt::format("{} {}(t)", spec.name, axis[a]);
+    std::string macro;
+    try {
+      macro = substitute_names(texts[a]->empty() ? "0" : *texts[a], names);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(fmt::format("{}: {}", origin, e.what()));
+    }
+    nc::CompiledExpr code = nc::compile_expression(macro, origin);
+    sym_pos_[a] = from_code(code.code, origin);
+    sym_d1_[a] = derivative(sym_pos_[a], kTVar);
+    sym_d2_[a] = derivative(sym_d1_[a], kTVar);
+    pos_[a] = Tape(sym_pos_[a], options);
+    d1_[a] = Tape(sym_d1_[a], options);
+    d2_[a] = Tape(sym_d2_[a], options);
+  }
+}
+
+Vec3 Curve::eval(const Tapes& tapes, double t) const {
+  std::array<double, kVarCount> vars = base_;
+  vars[kTVar] = t;
+  return {tapes[0](vars.data()), tapes[1](vars.data()), tapes[2](vars.data())};
+}
+
+double Curve::curvature(double t, Vec3* normal) const {
+  Vec3 v = d1(t), acc = d2(t);
+  double speed2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  double along = (acc[0] * v[0] + acc[1] * v[1] + acc[2] * v[2]) / speed2;
+  Vec3 perp{acc[0] - along * v[0], acc[1] - along * v[1], acc[2] - along * v[2]};
+  double k = norm(perp) / speed2;
+  if (normal) {
+    double n = norm(perp);
+    *normal = n > 0 ? Vec3{perp[0] / n, perp[1] / n, perp[2] / n} : Vec3{0, 0, 0};
+  }
+  return k;
+}
+
+void Curve::validate() const {
+  if (!(t1_ > t0_)) throw std::runtime_error(fmt::format("{}: the range {}..{} is empty", name_, t0_, t1_));
+  constexpr int kSamples = 4096;
+  double typical_speed = 0;
+  std::vector<double> speeds(kSamples + 1);
+  Vec3 previous{};
+  for (int i = 0; i <= kSamples; ++i) {
+    double t = t0_ + (t1_ - t0_) * i / kSamples;
+    Vec3 p = point(t), v = d1(t), a = d2(t);
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(p[k]) || !std::isfinite(v[k]) || !std::isfinite(a[k]) || std::fabs(p[k]) > 1e6)
+        throw std::runtime_error(fmt::format(
+            "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that avoids it",
+            name_, t, p[0], p[1], p[2]));
+    }
+    if (i > 0) {
+      double jump = norm(Vec3{p[0] - previous[0], p[1] - previous[1], p[2] - previous[2]});
+      double expected = std::max(norm(v), speeds[i - 1]) * (t1_ - t0_) / kSamples;
+      if (jump > 10 * expected + 1e-9)
+        throw std::runtime_error(fmt::format("{}: jumps between t = {:.6g} and t = {:.6g} (singular or discontinuous)",
+                                             name_, t - (t1_ - t0_) / kSamples, t));
+    }
+    previous = p;
+    speeds[static_cast<std::size_t>(i)] = norm(v);
+    typical_speed = std::max(typical_speed, speeds[static_cast<std::size_t>(i)]);
+  }
+  for (int i = 0; i <= kSamples; ++i) {
+    if (speeds[static_cast<std::size_t>(i)] <= 1e-6 * typical_speed) {
+      double t = t0_ + (t1_ - t0_) * i / kSamples;
+      throw std::runtime_error(fmt::format(
+          "{}: the curve stops at t = {:.6g} (zero speed: a cusp or a point where the tangent is undefined); "
+          "split the range there",
+          name_, t));
+    }
+  }
+}
+
+}  // namespace ncurve::geom

@@ -1,0 +1,88 @@
+// Parametric curves x(t), y(t), z(t) written in the macro expression language, with exact first
+// and second derivatives; the built-in catalogue is defined the same way.
+#pragma once
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geom/sym.hpp"
+
+namespace ncurve::geom {
+
+using Vec3 = std::array<double, 3>;
+
+// Macro variables a curve's expressions use: t is #100, parameters #101.. in order.
+constexpr int kTVar = 100;
+constexpr int kFirstParamVar = 101;
+constexpr int kVarCount = 1000;
+
+struct ParamSpec {
+  std::string name;
+  double value;
+  std::string doc;
+};
+
+struct CurveSpec {
+  std::string name;
+  std::string doc;
+  std::vector<ParamSpec> params;  // values are defaults
+  std::string x, y, z;            // expressions in t and the parameter names
+  double from = 0, to = 360;      // default parameter range
+  std::string t_doc = "t in degrees";
+};
+
+// The built-in curves, in the order `ncurve gen --list` shows them.
+const std::vector<CurveSpec>& catalogue();
+const CurveSpec* find_curve(const std::string& name);
+
+class Curve {
+public:
+  // Compiles the spec with the given parameter values (names not in the spec are an error).
+  Curve(const CurveSpec& spec, const std::map<std::string, double>& values, nc::EvalOptions options = {});
+
+  const std::string& name() const { return name_; }
+  double t0() const { return t0_; }
+  double t1() const { return t1_; }
+  void set_range(double t0, double t1) { t0_ = t0; t1_ = t1; }
+
+  Vec3 point(double t) const { return eval(pos_, t); }
+  Vec3 d1(double t) const { return eval(d1_, t); }
+  Vec3 d2(double t) const { return eval(d2_, t); }
+  // Curvature and the unit principal normal (zero where the curve is straight).
+  double curvature(double t, Vec3* normal = nullptr) const;
+
+  // Expressions in #100 (t) and #101.. (parameters), for macro programs.
+  const std::array<Sym, 3>& position() const { return sym_pos_; }
+  const std::array<Sym, 3>& first() const { return sym_d1_; }
+  const std::array<Sym, 3>& second() const { return sym_d2_; }
+  struct Param {
+    std::string name;
+    int var;
+    double value;
+    std::string doc;
+  };
+  const std::vector<Param>& params() const { return params_; }
+  bool planar_z() const { return !depends_on(sym_pos_[2], kTVar); }  // z constant
+  bool uses_y() const { return depends_on(sym_pos_[1], kTVar) || bracket_free_nonzero(sym_pos_[1]); }
+
+  // Throws std::runtime_error naming t where the curve is undefined, singular or has a cusp.
+  void validate() const;
+
+private:
+  using Tapes = std::array<Tape, 3>;
+  Vec3 eval(const Tapes& tapes, double t) const;
+  static bool bracket_free_nonzero(const Sym& e) { return !(e->op == SymOp::konst && e->k == 0); }
+
+  std::string name_;
+  double t0_, t1_;
+  std::vector<Param> params_;
+  std::array<Sym, 3> sym_pos_, sym_d1_, sym_d2_;
+  Tapes pos_, d1_, d2_;
+  std::array<double, kVarCount> base_{};  // parameter values at their variable numbers
+};
+
+// Text with names (t, parameters, PI) to macro text with #100, #101..; throws on unknown names.
+std::string substitute_names(const std::string& text, const std::vector<std::string>& params);
+
+}  // namespace ncurve::geom

@@ -1,0 +1,383 @@
+#include "geom/sym.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "nc/diagnostic.hpp"
+
+namespace ncurve::geom {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+Sym node(SymOp op, Sym a, Sym b = nullptr) {
+  auto n = std::make_shared<SymNode>();
+  n->op = op;
+  n->a = std::move(a);
+  n->b = std::move(b);
+  return n;
+}
+
+bool is_k(const Sym& e, double k) { return e->op == SymOp::konst && e->k == k; }
+bool is_const(const Sym& e) { return e->op == SymOp::konst; }
+
+nc::Op to_nc(SymOp op) {
+  switch (op) {
+    case SymOp::sin: return nc::Op::sin;
+    case SymOp::cos: return nc::Op::cos;
+    case SymOp::tan: return nc::Op::tan;
+    case SymOp::asin: return nc::Op::asin;
+    case SymOp::acos: return nc::Op::acos;
+    case SymOp::atan: return nc::Op::atan1;
+    case SymOp::atan2: return nc::Op::atan2_slash;
+    case SymOp::sqrt: return nc::Op::sqrt;
+    case SymOp::abs: return nc::Op::abs;
+    case SymOp::ln: return nc::Op::ln;
+    case SymOp::exp: return nc::Op::exp;
+    case SymOp::pow: return nc::Op::pow;
+    default: return nc::Op::konst;
+  }
+}
+
+const char* function_name(SymOp op) {
+  switch (op) {
+    case SymOp::sin: return "SIN";
+    case SymOp::cos: return "COS";
+    case SymOp::tan: return "TAN";
+    case SymOp::asin: return "ASIN";
+    case SymOp::acos: return "ACOS";
+    case SymOp::atan: case SymOp::atan2: return "ATAN";
+    case SymOp::sqrt: return "SQRT";
+    case SymOp::abs: return "ABS";
+    case SymOp::ln: return "LN";
+    case SymOp::exp: return "EXP";
+    case SymOp::pow: return "POW";
+    default: return "";
+  }
+}
+
+// A constant as FANUC reads it: no exponent, at most 15 significant digits, always a decimal point.
+std::string number_text(double k) {
+  std::string s = fmt::format("{:.15g}", k);
+  if (s.find_first_of("eE") != std::string::npos) {
+    int exponent = static_cast<int>(std::floor(std::log10(std::fabs(k))));
+    int decimals = std::clamp(14 - exponent, 0, 40);
+    s = fmt::format("{:.{}f}", k, decimals);
+  }
+  if (s.find('.') == std::string::npos) s += '.';
+  else {
+    while (s.back() == '0') s.pop_back();
+  }
+  return s;
+}
+
+struct Printed {
+  std::string text;
+  int depth;
+};
+
+// Precedence: 1 sums and signs, 2 products, 3 primaries.
+int precedence(const Sym& e) {
+  switch (e->op) {
+    case SymOp::add: case SymOp::sub: case SymOp::neg: return 1;
+    case SymOp::mul: case SymOp::div: return 2;
+    default: return 3;
+  }
+}
+
+Printed print(const Sym& e);
+
+Printed operand(const Sym& e, int needed) {
+  Printed p = print(e);
+  if (precedence(e) >= needed) return p;
+  return {"[" + p.text + "]", p.depth + 1};
+}
+
+Printed print(const Sym& e) {
+  switch (e->op) {
+    case SymOp::konst: {
+      if (e->k < 0) return {"-" + number_text(-e->k), 0};
+      return {number_text(e->k), 0};
+    }
+    case SymOp::var: return {fmt::format("#{}", e->var), 0};
+    case SymOp::neg: {
+      Printed a = operand(e->a, 2);
+      return {"-" + a.text, a.depth};
+    }
+    case SymOp::add: case SymOp::sub: {
+      Printed a = operand(e->a, 1), b = operand(e->b, 2);
+      return {a.text + (e->op == SymOp::add ? "+" : "-") + b.text, std::max(a.depth, b.depth)};
+    }
+    case SymOp::mul: case SymOp::div: {
+      Printed a = operand(e->a, 2), b = operand(e->b, 3);
+      return {a.text + (e->op == SymOp::mul ? "*" : "/") + b.text, std::max(a.depth, b.depth)};
+    }
+    case SymOp::atan2: {
+      Printed a = print(e->a), b = print(e->b);
+      return {fmt::format("ATAN[{}]/[{}]", a.text, b.text), 1 + std::max(a.depth, b.depth)};
+    }
+    case SymOp::pow: {
+      Printed a = print(e->a), b = print(e->b);
+      return {fmt::format("POW[{},{}]", a.text, b.text), 1 + std::max(a.depth, b.depth)};
+    }
+    default: {
+      Printed a = print(e->a);
+      return {fmt::format("{}[{}]", function_name(e->op), a.text), 1 + a.depth};
+    }
+  }
+}
+
+}  // namespace
+
+Sym konst(double k) {
+  auto n = std::make_shared<SymNode>();
+  n->op = SymOp::konst;
+  n->k = k;
+  return n;
+}
+
+Sym variable(int number) {
+  auto n = std::make_shared<SymNode>();
+  n->op = SymOp::var;
+  n->var = number;
+  return n;
+}
+
+Sym make(SymOp op, Sym a, Sym b) {
+  switch (op) {
+    case SymOp::neg:
+      if (is_const(a)) return konst(-a->k);
+      if (a->op == SymOp::neg) return a->a;
+      return node(op, a);
+    case SymOp::add:
+      if (is_const(a) && is_const(b)) return konst(a->k + b->k);
+      if (is_k(a, 0)) return b;
+      if (is_k(b, 0)) return a;
+      if (b->op == SymOp::neg) return make(SymOp::sub, a, b->a);
+      if (is_const(b) && b->k < 0) return make(SymOp::sub, a, konst(-b->k));
+      if (a->op == SymOp::neg) return make(SymOp::sub, b, a->a);
+      return node(op, a, b);
+    case SymOp::sub:
+      if (is_const(a) && is_const(b)) return konst(a->k - b->k);
+      if (is_k(b, 0)) return a;
+      if (is_k(a, 0)) return make(SymOp::neg, b);
+      if (b->op == SymOp::neg) return make(SymOp::add, a, b->a);
+      if (is_const(b) && b->k < 0) return make(SymOp::add, a, konst(-b->k));
+      return node(op, a, b);
+    case SymOp::mul:
+      if (is_const(a) && is_const(b)) return konst(a->k * b->k);
+      if (is_k(a, 0) || is_k(b, 0)) return konst(0);
+      if (is_k(a, 1)) return b;
+      if (is_k(b, 1)) return a;
+      if (is_k(a, -1)) return make(SymOp::neg, b);
+      if (is_k(b, -1)) return make(SymOp::neg, a);
+      if (a->op == SymOp::neg) return make(SymOp::neg, make(SymOp::mul, a->a, b));
+      if (b->op == SymOp::neg) return make(SymOp::neg, make(SymOp::mul, a, b->a));
+      if (is_const(a) && a->k < 0) return make(SymOp::neg, make(SymOp::mul, konst(-a->k), b));
+      if (is_const(b) && b->k < 0) return make(SymOp::neg, make(SymOp::mul, a, konst(-b->k)));
+      if (is_const(b)) return make(SymOp::mul, b, a);  // constants first: 2.*#1
+      if (is_const(a) && b->op == SymOp::mul && is_const(b->a)) return make(SymOp::mul, konst(a->k * b->a->k), b->b);
+      return node(op, a, b);
+    case SymOp::div:
+      if (is_const(a) && is_const(b) && b->k != 0) return konst(a->k / b->k);
+      if (is_k(a, 0)) return konst(0);
+      if (is_k(b, 1)) return a;
+      if (a->op == SymOp::neg) return make(SymOp::neg, make(SymOp::div, a->a, b));
+      if (b->op == SymOp::neg) return make(SymOp::neg, make(SymOp::div, a, b->a));
+      if (is_const(b) && b->k < 0) return make(SymOp::neg, make(SymOp::div, a, konst(-b->k)));
+      return node(op, a, b);
+    case SymOp::pow:
+      if (is_k(b, 1)) return a;
+      if (is_k(b, 0)) return konst(1);
+      if (is_k(b, 2)) return make(SymOp::mul, a, a);
+      return node(op, a, b);
+    default:
+      if (is_const(a) && (!b || is_const(b))) {  // fold with FANUC's own functions
+        double out = 0;
+        nc::EvalFault f = b ? nc::apply_binary(to_nc(op), a->k, b->k, out, {})
+                            : nc::apply_unary(to_nc(op), a->k, out, {});
+        if (f == nc::EvalFault::none && std::isfinite(out)) return konst(out);
+      }
+      return node(op, a, b);
+  }
+}
+
+Sym from_code(const std::vector<nc::Instr>& code, const std::string& origin) {
+  std::vector<Sym> stack;
+  auto pop = [&] {
+    Sym s = stack.back();
+    stack.pop_back();
+    return s;
+  };
+  for (const nc::Instr& in : code) {
+    auto refuse = [&](const char* what) {
+      throw nc::Alarm(nc::Diagnostic{nc::Severity::error, "NC9101",
+                                     fmt::format("{}: column {}: {} cannot be differentiated in a curve", origin,
+                                                 in.column, what),
+                                     nc::Span{}});
+    };
+    switch (in.op) {
+      case nc::Op::konst: stack.push_back(konst(in.k)); break;
+      case nc::Op::var: stack.push_back(variable(in.var)); break;
+      case nc::Op::pos: break;
+      case nc::Op::neg: stack.push_back(make(SymOp::neg, pop())); break;
+      case nc::Op::add: case nc::Op::sub: case nc::Op::mul: case nc::Op::div:
+      case nc::Op::atan2_slash: case nc::Op::atan2_comma: case nc::Op::pow: {
+        Sym b = pop();
+        Sym a = pop();
+        SymOp op = in.op == nc::Op::add   ? SymOp::add
+                   : in.op == nc::Op::sub ? SymOp::sub
+                   : in.op == nc::Op::mul ? SymOp::mul
+                   : in.op == nc::Op::div ? SymOp::div
+                   : in.op == nc::Op::pow ? SymOp::pow
+                                          : SymOp::atan2;
+        stack.push_back(make(op, a, b));
+        break;
+      }
+      case nc::Op::sin: stack.push_back(make(SymOp::sin, pop())); break;
+      case nc::Op::cos: stack.push_back(make(SymOp::cos, pop())); break;
+      case nc::Op::tan: stack.push_back(make(SymOp::tan, pop())); break;
+      case nc::Op::asin: stack.push_back(make(SymOp::asin, pop())); break;
+      case nc::Op::acos: stack.push_back(make(SymOp::acos, pop())); break;
+      case nc::Op::atan1: stack.push_back(make(SymOp::atan, pop())); break;
+      case nc::Op::sqrt: stack.push_back(make(SymOp::sqrt, pop())); break;
+      case nc::Op::abs: stack.push_back(make(SymOp::abs, pop())); break;
+      case nc::Op::ln: stack.push_back(make(SymOp::ln, pop())); break;
+      case nc::Op::exp: stack.push_back(make(SymOp::exp, pop())); break;
+      case nc::Op::var_indirect: refuse("an indirect variable #[...]"); break;
+      case nc::Op::round: case nc::Op::fix: case nc::Op::fup: refuse("ROUND/FIX/FUP (a step function)"); break;
+      case nc::Op::mod: case nc::Op::band: case nc::Op::bor: case nc::Op::bxor: refuse("MOD/AND/OR/XOR"); break;
+      case nc::Op::bin: case nc::Op::bcd: case nc::Op::adp: refuse("BIN/BCD/ADP"); break;
+      default: refuse("a comparison"); break;
+    }
+  }
+  if (stack.size() != 1)
+    throw nc::Alarm(nc::Diagnostic{nc::Severity::error, "PS0114", origin + ": not one expression", nc::Span{}});
+  return stack.back();
+}
+
+bool depends_on(const Sym& e, int var) {
+  if (!e) return false;
+  if (e->op == SymOp::var) return e->var == var;
+  return depends_on(e->a, var) || depends_on(e->b, var);
+}
+
+Sym derivative(const Sym& e, int var) {
+  if (!depends_on(e, var)) return konst(0);
+  const Sym& a = e->a;
+  const Sym& b = e->b;
+  auto d = [&](const Sym& s) { return derivative(s, var); };
+  auto mul = [](Sym x, Sym y) { return make(SymOp::mul, std::move(x), std::move(y)); };
+  auto div = [](Sym x, Sym y) { return make(SymOp::div, std::move(x), std::move(y)); };
+  auto add = [](Sym x, Sym y) { return make(SymOp::add, std::move(x), std::move(y)); };
+  auto sub = [](Sym x, Sym y) { return make(SymOp::sub, std::move(x), std::move(y)); };
+  auto fn = [](SymOp op, Sym x) { return make(op, std::move(x)); };
+  const Sym rad = konst(kDeg);       // d(sin u)/du for u in degrees carries pi/180
+  const Sym deg = konst(1.0 / kDeg);  // inverse functions return degrees
+  switch (e->op) {
+    case SymOp::var: return konst(1);
+    case SymOp::neg: return fn(SymOp::neg, d(a));
+    case SymOp::add: return add(d(a), d(b));
+    case SymOp::sub: return sub(d(a), d(b));
+    case SymOp::mul: return add(mul(d(a), b), mul(a, d(b)));
+    case SymOp::div:
+      if (!depends_on(b, var)) return div(d(a), b);
+      return div(sub(mul(d(a), b), mul(a, d(b))), mul(b, b));
+    case SymOp::sin: return mul(mul(rad, fn(SymOp::cos, a)), d(a));
+    case SymOp::cos: return fn(SymOp::neg, mul(mul(rad, fn(SymOp::sin, a)), d(a)));
+    case SymOp::tan: {
+      Sym c = fn(SymOp::cos, a);
+      return div(mul(rad, d(a)), mul(c, c));
+    }
+    case SymOp::asin: return div(mul(deg, d(a)), fn(SymOp::sqrt, sub(konst(1), mul(a, a))));
+    case SymOp::acos: return fn(SymOp::neg, div(mul(deg, d(a)), fn(SymOp::sqrt, sub(konst(1), mul(a, a)))));
+    case SymOp::atan: return div(mul(deg, d(a)), add(konst(1), mul(a, a)));
+    case SymOp::atan2:  // ATAN[a]/[b] is the angle of (b, a)
+      return div(mul(deg, sub(mul(b, d(a)), mul(a, d(b)))), add(mul(a, a), mul(b, b)));
+    case SymOp::sqrt: return div(d(a), mul(konst(2), e));
+    case SymOp::abs: return div(mul(a, d(a)), e);
+    case SymOp::ln: return div(d(a), a);
+    case SymOp::exp: return mul(e, d(a));
+    case SymOp::pow:
+      if (!depends_on(b, var)) return mul(mul(b, make(SymOp::pow, a, sub(b, konst(1)))), d(a));
+      return mul(e, add(mul(d(b), fn(SymOp::ln, a)), div(mul(b, d(a)), a)));
+    default: return konst(0);
+  }
+}
+
+std::string to_macro(const Sym& e) { return print(e).text; }
+int bracket_depth(const Sym& e) { return print(e).depth; }
+
+Sym limit_depth(const Sym& e, int max_depth, int& next_temp, std::vector<std::pair<int, Sym>>& temps) {
+  if (!e->a) return e;
+  Sym a = limit_depth(e->a, max_depth, next_temp, temps);
+  Sym b = e->b ? limit_depth(e->b, max_depth, next_temp, temps) : nullptr;
+  Sym n = node(e->op, a, b);
+  while (bracket_depth(n) > max_depth) {
+    bool take_a = !b || bracket_depth(a) >= bracket_depth(b);
+    Sym& child = take_a ? a : b;
+    temps.emplace_back(next_temp, child);
+    child = variable(next_temp++);
+    n = node(e->op, a, b);
+  }
+  return n;
+}
+
+Tape::Tape(const Sym& e, nc::EvalOptions options) : options_(options) {
+  emit(e);
+  int depth = 0, deepest = 0;
+  for (const Step& s : steps_) {
+    if (s.op == SymOp::konst || s.op == SymOp::var) ++depth;
+    else if (s.op == SymOp::add || s.op == SymOp::sub || s.op == SymOp::mul || s.op == SymOp::div ||
+             s.op == SymOp::atan2 || s.op == SymOp::pow) --depth;
+    deepest = std::max(deepest, depth);
+  }
+  if (deepest > kStack) throw std::runtime_error("expression too deeply nested to evaluate");
+}
+
+void Tape::emit(const Sym& e) {
+  if (e->a) emit(e->a);
+  if (e->b) emit(e->b);
+  steps_.push_back(Step{e->op, e->var, e->k});
+}
+
+double Tape::operator()(const double* vars) const {
+  double stack[kStack];
+  int top = -1;
+  for (const Step& s : steps_) {
+    switch (s.op) {
+      case SymOp::konst: stack[++top] = s.k; break;
+      case SymOp::var: stack[++top] = vars[s.var]; break;
+      case SymOp::neg: stack[top] = -stack[top]; break;
+      case SymOp::add: --top; stack[top] += stack[top + 1]; break;
+      case SymOp::sub: --top; stack[top] -= stack[top + 1]; break;
+      case SymOp::mul: --top; stack[top] *= stack[top + 1]; break;
+      case SymOp::div:
+        --top;
+        if (stack[top + 1] == 0) return std::nan("");
+        stack[top] /= stack[top + 1];
+        break;
+      case SymOp::atan2: case SymOp::pow: {
+        --top;
+        double out = 0;
+        if (nc::apply_binary(to_nc(s.op), stack[top], stack[top + 1], out, options_) != nc::EvalFault::none)
+          return std::nan("");
+        stack[top] = out;
+        break;
+      }
+      default: {
+        double out = 0;
+        if (nc::apply_unary(to_nc(s.op), stack[top], out, options_) != nc::EvalFault::none) return std::nan("");
+        stack[top] = out;
+        break;
+      }
+    }
+  }
+  return stack[top];
+}
+
+}  // namespace ncurve::geom

@@ -1,0 +1,69 @@
+// Symbolic expressions over macro variables: built from the macro language (the same parser as
+// `ncurve run`), differentiated exactly, simplified, evaluated natively and printed back as
+// FANUC macro text (trigonometry in degrees, as on the control).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "nc/expr.hpp"
+
+namespace ncurve::geom {
+
+enum class SymOp : std::uint8_t {
+  konst, var, neg, add, sub, mul, div,
+  sin, cos, tan, asin, acos, atan, atan2, sqrt, abs, ln, exp, pow,
+};
+
+struct SymNode;
+using Sym = std::shared_ptr<const SymNode>;
+
+struct SymNode {
+  SymOp op;
+  double k = 0;  // konst
+  int var = 0;   // var: macro variable number
+  Sym a, b;
+};
+
+Sym konst(double k);
+Sym variable(int number);
+// Builds op(a, b) with local simplification (constant folding, 0 and 1 rules, sign lifting).
+Sym make(SymOp op, Sym a, Sym b = nullptr);
+
+// From compiled macro code; throws nc::Alarm for what cannot be differentiated (ROUND, MOD,
+// comparisons, indirect variables ...), naming the function.
+Sym from_code(const std::vector<nc::Instr>& code, const std::string& origin);
+
+Sym derivative(const Sym& e, int var);
+bool depends_on(const Sym& e, int var);
+
+// Macro text with the fewest brackets FANUC precedence allows.
+std::string to_macro(const Sym& e);
+// Bracket nesting of to_macro(e) (a function's argument brackets count, as on the control).
+int bracket_depth(const Sym& e);
+
+// Replaces subexpressions by temporaries so that to_macro of the result nests at most max_depth
+// brackets; each (variable, expression) in temps must be assigned first, in order.
+Sym limit_depth(const Sym& e, int max_depth, int& next_temp, std::vector<std::pair<int, Sym>>& temps);
+
+// Flat postfix code for fast evaluation with FANUC's functions (nc::apply_unary / apply_binary).
+class Tape {
+public:
+  Tape() = default;
+  explicit Tape(const Sym& e, nc::EvalOptions options = {});
+  // vars[n] is the value of #n; returns NaN on a domain error or division by zero.
+  double operator()(const double* vars) const;
+
+private:
+  static constexpr int kStack = 64;
+  struct Step {
+    SymOp op;
+    int var;
+    double k;
+  };
+  void emit(const Sym& e);
+  std::vector<Step> steps_;
+  nc::EvalOptions options_;
+};
+
+}  // namespace ncurve::geom
