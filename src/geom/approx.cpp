@@ -365,8 +365,7 @@ bool biarc(const Fit& f, double ta, double tb, std::vector<Piece>& out) {
   } else {
     double disc = vt * vt - qa * vvv;
     if (disc < 0) return false;
-    d = (-vt + std::sqrt(disc)) / qa;  // qa < 0: the positive root
-    if (!(d > 0)) d = (-vt - std::sqrt(disc)) / qa;
+    d = (vt - std::sqrt(disc)) / qa;  // qa < 0: this root is the positive one
   }
   if (!(d > 0)) return false;
   // joint: midpoint of the control points

@@ -164,7 +164,7 @@ void Curve::validate() const {
   constexpr int kSamples = 4096;
   double typical_speed = 0;
   std::vector<double> speeds(kSamples + 1);
-  Vec3 previous{};
+  Vec3 previous{}, previous_v{};
   for (int i = 0; i <= kSamples; ++i) {
     double t = t0_ + (t1_ - t0_) * i / kSamples;
     Vec3 p = point(t), v = d1(t), a = d2(t);
@@ -175,16 +175,23 @@ void Curve::validate() const {
             name_, t, p[0], p[1], p[2]));
     }
     if (i > 0) {
-      double jump = norm(Vec3{p[0] - previous[0], p[1] - previous[1], p[2] - previous[2]});
+      Vec3 step{p[0] - previous[0], p[1] - previous[1], p[2] - previous[2]};
+      double jump = norm(step);
       double expected = std::max(norm(v), speeds[i - 1]) * (t1_ - t0_) / kSamples;
-      if (jump > 10 * expected + 1e-9)
+      // a smooth curve moves along its tangent; through a pole (1/cos at 90 degrees) it jumps back
+      bool backwards = step[0] * v[0] + step[1] * v[1] + step[2] * v[2] < 0 &&
+                       step[0] * previous_v[0] + step[1] * previous_v[1] + step[2] * previous_v[2] < 0;
+      if (jump > 10 * expected + 1e-9 || backwards)
         throw std::runtime_error(fmt::format("{}: jumps between t = {:.6g} and t = {:.6g} (singular or discontinuous)",
                                              name_, t - (t1_ - t0_) / kSamples, t));
     }
     previous = p;
+    previous_v = v;
     speeds[static_cast<std::size_t>(i)] = norm(v);
-    typical_speed = std::max(typical_speed, speeds[static_cast<std::size_t>(i)]);
   }
+  std::vector<double> sorted = speeds;
+  std::nth_element(sorted.begin(), sorted.begin() + kSamples / 2, sorted.end());
+  typical_speed = sorted[kSamples / 2];
   for (int i = 0; i <= kSamples; ++i) {
     if (speeds[static_cast<std::size_t>(i)] <= 1e-6 * typical_speed) {
       double t = t0_ + (t1_ - t0_) * i / kSamples;

@@ -82,6 +82,19 @@ Op function_op(Kw k) {
   }
 }
 
+// mantissa / 10^fraction, correctly rounded while 10^fraction is exact (fraction <= 22); leading
+// zeros after the point can make fraction larger than the 15 significant digits.
+double scaled_decimal(std::int64_t mantissa, int fraction) {
+  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  double v = static_cast<double>(mantissa);
+  while (fraction > 22) {
+    v /= 1e22;
+    fraction -= 22;
+  }
+  return v / kPow10[fraction];
+}
+
 struct SyntaxError {
   std::string code;
   std::string message;
@@ -174,8 +187,6 @@ private:
   // Up to 15 significant digits: the integer mantissa and the power of ten are exact doubles, so one
   // division gives the correctly rounded value, as strtod would.
   double number(bool& decimal_point) {
-    static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8,
-                                        1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16};
     std::size_t start = i_;
     std::int64_t mantissa = 0;
     int digits = 0, fraction = 0;
@@ -202,8 +213,7 @@ private:
       i_ = start;
       fail("PS0007", "a decimal point without digits");
     }
-    if (fraction > 16) fraction = 16;  // only leading zeros can make it longer
-    return static_cast<double>(mantissa) / kPow10[fraction];
+    return scaled_decimal(mantissa, fraction);
   }
 
   // ---- expressions ----
@@ -635,8 +645,6 @@ void advise_huge_pages(void* data, std::size_t bytes) {
 // straight from the raw text; anything else (macros, comments, N, '/', errors) returns false and
 // goes through the general scanner and BlockParser, which give the same result for plain lines.
 bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog) {
-  static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8,
-                                      1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16};
   const std::size_t words_mark = prog.words.size();
   auto bail = [&] {
     prog.words.resize(words_mark);
@@ -681,7 +689,7 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog) {
     }
     if (digits == 0) return bail();
     if (k < raw.size() && !is_upper(to_upper(raw[k]))) return bail();
-    w.value = static_cast<double>(mantissa) / kPow10[std::min(fraction, 16)];
+    w.value = scaled_decimal(mantissa, fraction);
     if (negative) w.value = -w.value;
     prog.words.push_back(w);
   }

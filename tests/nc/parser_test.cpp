@@ -137,7 +137,8 @@ TEST(Parser, PlainLinesCompileAsTheGeneralScannerDoes) {
       "G01 X1.234 Y-5. F100.",  "x 1 . 5 y-2 z+3",       "G90G01X10Y20",       "X.5 Y-.25",
       "X123456789012345.",      "X1234567890123456.",    "X1.2.3",             "X.",
       "X",                      "X1-2",                  "XY1",                "G01 X1 N10",
-      "M30 O12",                "\tG00\tX0\r",           "X0.000000000000000001", "G4X-0",
+      "M30 O12",                "\tG00\tX0\r",           "X0.000000000000000001", "G4X-0", "X0.00555555555555556",
+      "X-.0000000000000000000000001234",
   };
   for (const char* line : lines) {
     auto plain = parse_text(std::string("O1\n") + line + "\n");
@@ -165,4 +166,14 @@ TEST(Parser, PlainLinesCompileAsTheGeneralScannerDoes) {
       EXPECT_EQ(a.blocks[i].error >= 0, b.blocks[i].error >= 0);
     }
   }
+}
+
+// Leading zeros after the point do not count as digits, and the value keeps its scale.
+TEST(Parser, LongDecimalFractionsKeepTheirValue) {
+  auto r = parse_text("O1\nX0.00555555555555556 Y0.000000000000000000000000123\n#1=0.0174532925199433*2\n");
+  ASSERT_TRUE(r.diagnostics.empty());
+  const Program& p = *r.programs[0];
+  EXPECT_DOUBLE_EQ(p.words[0].value, 0.00555555555555556);
+  EXPECT_DOUBLE_EQ(p.words[1].value, 1.23e-25);
+  EXPECT_DOUBLE_EQ(p.code[p.blocks[1].value.begin].k, 0.0174532925199433);
 }

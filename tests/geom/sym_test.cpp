@@ -1,0 +1,101 @@
+// Symbolic derivatives against closed forms and finite differences; macro text that the
+// interpreter reads back to the same values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geom/curve.hpp"
+#include "geom/sym.hpp"
+#include "nc/program.hpp"
+#include "support/run_program.hpp"
+
+using namespace ncurve;
+using namespace ncurve::geom;
+
+namespace {
+constexpr double kRad = std::numbers::pi / 180;
+
+Sym parse_sym(const std::string& text) { return from_code(nc::compile_expression(text).code, "test"); }
+
+double at(const Sym& e, double t) {
+  std::vector<double> vars(kVarCount, 0.0);
+  vars[kTVar] = t;
+  return Tape(e)(vars.data());
+}
+}  // namespace
+
+TEST(Sym, SpiralDerivativesMatchTheClosedForm) {
+  const CurveSpec* spec = find_curve("spiral");
+  ASSERT_NE(spec, nullptr);
+  Curve c(*spec, {{"r0", 1.0}, {"pitch", 4 * std::numbers::pi}});
+  for (double t : {0.0, 17.0, 123.4, 359.0}) {
+    double r = 1 + 4 * std::numbers::pi * t / 360, dr = 4 * std::numbers::pi / 360;  // per degree
+    double x1 = dr * std::cos(t * kRad) - r * std::sin(t * kRad) * kRad;
+    double y1 = dr * std::sin(t * kRad) + r * std::cos(t * kRad) * kRad;
+    double x2 = -2 * dr * std::sin(t * kRad) * kRad - r * std::cos(t * kRad) * kRad * kRad;
+    EXPECT_NEAR(c.d1(t)[0], x1, 1e-12);
+    EXPECT_NEAR(c.d1(t)[1], y1, 1e-12);
+    EXPECT_NEAR(c.d2(t)[0], x2, 1e-12);
+    // curvature of r = a + b*phi: (r^2 + 2b^2) / (r^2 + b^2)^1.5 with b per radian
+    double b = 2;
+    EXPECT_NEAR(c.curvature(t), (r * r + 2 * b * b) / std::pow(r * r + b * b, 1.5), 1e-9);
+  }
+}
+
+TEST(Sym, EveryFunctionAgainstFiniteDifferences) {
+  const char* texts[] = {"SIN[#100*2]*COS[#100]", "TAN[#100/3]",        "ASIN[#100/100]",   "ACOS[#100/90]",
+                         "ATAN[#100/50]",         "ATAN[#100]/[20-#100]", "SQRT[1+#100*#100]", "ABS[#100-40]",
+                         "LN[2+#100]",            "EXP[#100/30]",       "POW[1+#100,1.5]",  "POW[2,#100/20]",
+                         "#100*#100/[3+#100]",    "-[#100-2]*5"};
+  for (const char* text : texts) {
+    Sym e = parse_sym(text);
+    Sym d = derivative(e, kTVar);
+    for (double t : {3.0, 11.5, 27.0}) {
+      double h = 1e-5;
+      double fd = (at(e, t + h) - at(e, t - h)) / (2 * h);
+      EXPECT_NEAR(at(d, t), fd, 1e-6 * (1 + std::fabs(fd))) << text << " at " << t;
+    }
+  }
+}
+
+TEST(Sym, MacroTextReadsBackToTheSameValues) {
+  Sym e = parse_sym("[1+2*#100/360]*COS[#100]-7.5*SIN[6*#100]+ATAN[SIN[5*#100]]/[1.4-COS[5*#100]]");
+  Sym d2 = derivative(derivative(e, kTVar), kTVar);
+  for (const Sym& s : {e, d2}) {
+    Sym back = parse_sym(to_macro(s));
+    for (double t : {0.5, 33.0, 71.0}) EXPECT_NEAR(at(back, t), at(s, t), 1e-9 * (1 + std::fabs(at(s, t))));
+  }
+  EXPECT_EQ(to_macro(parse_sym("#1-[#2-#3]")), "#1-[#2-#3]");
+  EXPECT_EQ(to_macro(parse_sym("#1/[#2*#3]")), "#1/[#2*#3]");
+  EXPECT_EQ(to_macro(parse_sym("[#1+0]*1")), "#1");
+  EXPECT_EQ(to_macro(konst(1e-9)), "0.000000001");
+}
+
+// A second derivative nests deeper than FANUC's five brackets; split into temporaries, the
+// interpreter accepts every block and computes the same value.
+TEST(Sym, DepthLimitedTextRunsOnTheControl) {
+  Sym e = derivative(derivative(parse_sym("SIN[COS[TAN[#100/7]*3]*2]*SQRT[1+#100]"), kTVar), kTVar);
+  ASSERT_GT(bracket_depth(e), 5);
+  int next = 150;
+  std::vector<std::pair<int, Sym>> temps;
+  Sym limited = limit_depth(e, 5, next, temps);
+  EXPECT_LE(bracket_depth(limited), 5);
+  std::string prog = "#100=12.5\n";
+  for (const auto& [var, s] : temps) {
+    EXPECT_LE(bracket_depth(s), 5);
+    prog += "#" + std::to_string(var) + "=" + to_macro(s) + "\n";
+  }
+  prog += "#149=" + to_macro(limited) + "\nM30\n";
+  auto r = test::run(prog);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_NEAR(r.var(149), at(e, 12.5), 1e-9 * (1 + std::fabs(at(e, 12.5))));
+}
+
+TEST(Sym, WhatCannotBeDifferentiatedIsRefused) {
+  EXPECT_THROW(parse_sym("ROUND[#100]"), nc::Alarm);
+  EXPECT_THROW(parse_sym("#[#100]"), nc::Alarm);
+  EXPECT_THROW(parse_sym("#100 MOD 3"), nc::Alarm);
+  EXPECT_EQ(substitute_names("a*cos(t)+PI", {"a"}), "#101*COS[#100]+3.14159265358979");
+  EXPECT_THROW(substitute_names("q*t", {"a"}), std::runtime_error);
+}
