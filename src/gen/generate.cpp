@@ -312,7 +312,8 @@ Result generate(const geom::Curve& curve, const Options& o) {
   if (is_lathe(o) && o.profile.diameter_x) grid.step[0] = o.profile.increment / 2;
   if (is_lathe(o)) grid.step[1] = 0;
   geom::Placement place = [map](const Vec3& c) { return map(c); };
-  geom::Fit fit{curve, place, grid, plane_of(o.profile), o.tol};
+  // the fit aims a little inside the tolerance: the round trip measures the control's own path
+  geom::Fit fit{curve, place, grid, plane_of(o.profile), o.tol * 0.999};
   const double feed = feed_of(o);
   Vec3 start = grid.snap(map(curve.point(curve.t0())));
   Vec3 end = grid.snap(map(curve.point(curve.t1())));
