@@ -286,7 +286,7 @@ Path fit_lines(const Fit& f, LineMethod method) {
     }
     case LineMethod::equal_chord: {
       // the longest chord length for which every chord is within the tolerance (bisection on length)
-      Vec3 a = f.place(f.curve.point(f.curve.t0())), b = f.place(f.curve.point(f.curve.t1()));
+      Vec3 a = f.place(f.curve.point(f.curve.t0()));
       double total = 0;
       constexpr int kRough = 256;
       for (int i = 1; i <= kRough; ++i) {
@@ -295,7 +295,6 @@ Path fit_lines(const Fit& f, LineMethod method) {
         total += norm(sub(q, a));
         a = q;
       }
-      (void)b;
       auto passes = [&](double len) { return chords_error(f, equal_chords(f, len), nullptr) <= f.tol; };
       double lo = 0, hi = total;
       double len = total;

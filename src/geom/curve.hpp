@@ -64,7 +64,7 @@ public:
   };
   const std::vector<Param>& params() const { return params_; }
   bool planar_z() const { return !depends_on(sym_pos_[2], kTVar); }  // z constant
-  bool uses_y() const { return depends_on(sym_pos_[1], kTVar) || bracket_free_nonzero(sym_pos_[1]); }
+  bool uses_y() const { return !(sym_pos_[1]->op == SymOp::konst && sym_pos_[1]->k == 0); }
 
   // Throws std::runtime_error naming t where the curve is undefined, singular or has a cusp.
   void validate() const;
@@ -72,7 +72,6 @@ public:
 private:
   using Tapes = std::array<Tape, 3>;
   Vec3 eval(const Tapes& tapes, double t) const;
-  static bool bracket_free_nonzero(const Sym& e) { return !(e->op == SymOp::konst && e->k == 0); }
 
   std::string name_;
   double t0_, t1_;

@@ -94,19 +94,19 @@ Printed print(const Sym& e);
 Printed operand(const Sym& e, int needed) {
   Printed p = print(e);
   if (precedence(e) >= needed) return p;
-  return {"[" + p.text + "]", p.depth + 1};
+  return {fmt::format("[{}]", p.text), p.depth + 1};
 }
 
 Printed print(const Sym& e) {
   switch (e->op) {
     case SymOp::konst: {
-      if (e->k < 0) return {"-" + number_text(-e->k), 0};
+      if (e->k < 0) return {fmt::format("-{}", number_text(-e->k)), 0};
       return {number_text(e->k), 0};
     }
     case SymOp::var: return {fmt::format("#{}", e->var), 0};
     case SymOp::neg: {
       Printed a = operand(e->a, 2);
-      return {"-" + a.text, a.depth};
+      return {fmt::format("-{}", a.text), a.depth};
     }
     case SymOp::add: case SymOp::sub: {
       Printed a = operand(e->a, 1), b = operand(e->b, 2);
