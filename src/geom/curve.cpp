@@ -109,7 +109,9 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
     names.push_back(p.name);
     params_.push_back(Param{p.name, kFirstParamVar + static_cast<int>(params_.size()), p.value, p.doc});
   }
-  for (const auto& [name, value] : values) {
+  for (const auto& given : values) {
+    const std::string& name = given.first;
+    const double value = given.second;
     auto it = std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.name == name; });
     if (it == params_.end()) {
       std::string known;
