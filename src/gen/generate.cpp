@@ -302,6 +302,8 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
 }
 
 Result generate(const geom::Curve& curve, const Options& o) {
+  if (o.form == Form::adaptive_macro)
+    throw std::runtime_error("the adaptive-macro form is not available yet (use expanded, arcs or macro)");
   curve.validate();
   AxisMap map = axis_map(curve, o);
   const bool with_z = !is_lathe(o) && !curve.planar_z();
@@ -372,7 +374,7 @@ Result generate(const geom::Curve& curve, const Options& o) {
   } else {
     geom::Path steps = geom::fit_lines(fit, geom::LineMethod::equal_step);
     const std::size_t n = steps.pieces.size();
-    emit_lines(header(curve, o, o.form == Form::macro ? "equal parameter step" : "adaptive step"));
+    emit_lines(header(curve, o, "equal parameter step"));
     w.block("(VARIABLES)");
     w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(fmt::format("{}", curve.name()))));
     for (const auto& p : curve.params())

@@ -168,4 +168,5 @@ TEST(Gen, BadCurvesAreNamed) {
   }
   EXPECT_THROW(geom::Curve(*geom::find_curve("spiral"), {{"radius", 3}}), std::runtime_error);
   EXPECT_THROW(gen::generate(curve("spiral"), options(gen::Form::expanded, 0.0004)), std::runtime_error);
+  EXPECT_THROW(gen::generate(curve("spiral"), options(gen::Form::adaptive_macro, 0.005)), std::runtime_error);
 }
