@@ -9,7 +9,7 @@
 
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
-#include "nc/program.hpp"
+#include "report/summary.hpp"
 
 namespace ncurve::gen {
 namespace {
@@ -105,21 +105,6 @@ Frame frame(const Options& o, const AxisWords& words, const Vec3& start, const V
   f.to_depth = fmt::format("G01 Z{} F{}", number(start[2], dec), number(feed, 4));
   f.retract = fmt::format("G00 Z{}", number(o.clearance, dec));
   return f;
-}
-
-// Counts blocks and words the way seed 000 does: each address word and each macro statement.
-void count_text(const std::string& text, Stats& s) {
-  s.bytes = text.size();
-  auto file = std::make_shared<nc::SourceFile>("<generated>", text);
-  nc::ParseResult r = nc::parse(file);
-  for (const auto& p : r.programs) {
-    for (const auto& b : p->blocks) {
-      if (b.kind == nc::Statement::empty) continue;
-      ++s.blocks;
-      s.words += b.kind == nc::Statement::nc ? b.words_end - b.words_begin : 1;
-      if (b.sequence >= 0) ++s.words;
-    }
-  }
 }
 
 Sym axis_sym(const geom::Curve& curve, const AxisMap& map, int axis, bool lathe) {
@@ -223,7 +208,10 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
   if (!r.ok()) throw std::runtime_error("the generated program does not run: " + nc::format(*r.alarm));
 
   Stats s;
-  count_text(text, s);
+  report::SourceStats source = report::source_stats(lib, lib.main()->file.get());  // as `ncurve run` counts
+  s.words = source.words;
+  s.bytes = source.bytes;
+  s.blocks = source.blocks;
   AxisMap map = axis_map(curve, o);
   geom::Placement place = [map](const Vec3& c) { return map(c); };
   geom::Plane plane = plane_of(o.profile);

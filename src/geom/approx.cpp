@@ -47,6 +47,31 @@ double largest_ok(double lo, double hi, Ok ok, double span) {
   return lo;
 }
 
+// The largest t in (ta, stop] with ok(t): from a guess, grow or shrink until the answer is
+// bracketed, then bisect. fail() names the place when not even a tiny step is ok.
+template <class Ok, class Fail>
+double longest_step(double ta, double stop, double guess, Ok ok, double span, Fail fail) {
+  double lo, hi;
+  if (ok(guess)) {
+    lo = hi = guess;
+    while (hi < stop) {
+      hi = std::min(stop, ta + (hi - ta) * 1.5);
+      if (!ok(hi)) break;
+      lo = hi;
+    }
+    if (lo == stop) return stop;
+  } else {
+    hi = guess;
+    lo = ta + (guess - ta) * 0.6;
+    while (!ok(lo)) {
+      hi = lo;
+      lo = ta + (lo - ta) * 0.6;
+      if (lo - ta < 1e-12 * span) throw std::runtime_error(fail());
+    }
+  }
+  return largest_ok(lo, hi, ok, span);
+}
+
 struct Arc2 {
   bool line = false;
   double cu = 0, cv = 0, r = 0;
@@ -180,30 +205,11 @@ Path lines_greedy(const Fit& f, bool band) {
   Vec3 a = vertex(f, ta, offset);
   while (ta < t_end) {
     auto ok = [&](double tb) { return segment_error(f, ta, tb, a, vertex(f, tb, offset)) <= f.tol; };
-    double lo, hi;
     double guess = std::min(t_end, ta + step_guess(f, ta, f.tol + offset));
-    if (ok(guess)) {
-      lo = guess;
-      hi = guess;
-      while (hi < t_end) {
-        hi = std::min(t_end, ta + (hi - ta) * 1.5);
-        if (!ok(hi)) break;
-        lo = hi;
-      }
-      if (lo == t_end) hi = t_end;
-    } else {
-      hi = guess;
-      lo = ta + (guess - ta) * 0.6;
-      while (!ok(lo)) {
-        hi = lo;
-        lo = ta + (lo - ta) * 0.6;
-        if (lo - ta < 1e-12 * span)
-          throw std::runtime_error(fmt::format(
-              "{}: no segment from t = {:.6g} stays within {} mm (tolerance below the machine increment?)",
-              f.curve.name(), ta, f.tol));
-      }
-    }
-    double tb = lo == t_end ? t_end : largest_ok(lo, hi, ok, span);
+    double tb = longest_step(ta, t_end, guess, ok, span, [&] {
+      return fmt::format("{}: no segment from t = {:.6g} stays within {} mm (tolerance below the machine increment?)",
+                         f.curve.name(), ta, f.tol);
+    });
     Vec3 b = vertex(f, tb, offset);
     double err = segment_error(f, ta, tb, a, b);
     path.max_deviation = std::max(path.max_deviation, err);
@@ -446,26 +452,10 @@ Path fit_arcs(const Fit& f) {
           if (piece_error(f, snapped(f, p)) > f.tol) return false;
         return true;
       };
-      double lo = ta, hi = stop;
-      if (!ok(stop)) {
-        double guess = std::min(stop, ta + 4 * step_guess(f, ta, f.tol));
-        if (ok(guess)) {
-          lo = guess;
-        } else {
-          hi = guess;
-          lo = ta + (guess - ta) * 0.5;
-          while (!ok(lo)) {
-            hi = lo;
-            lo = ta + (lo - ta) * 0.5;
-            if (lo - ta < 1e-12 * span)
-              throw std::runtime_error(
-                  fmt::format("{}: no arc from t = {:.6g} stays within {} mm", f.curve.name(), ta, f.tol));
-          }
-        }
-        lo = largest_ok(lo, hi, ok, span);
-      } else {
-        lo = stop;
-      }
+      double guess = std::min(stop, ta + 4 * step_guess(f, ta, f.tol));
+      double lo = longest_step(ta, stop, guess, ok, span, [&] {
+        return fmt::format("{}: no arc from t = {:.6g} stays within {} mm", f.curve.name(), ta, f.tol);
+      });
       ok(lo);
       for (auto& p : trial) {
         Piece s = snapped(f, p);
