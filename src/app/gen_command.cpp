@@ -61,12 +61,12 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
   gen->add_option("curve", a.curve, "curve name (see --list) or expr");
   gen->add_flag("--list", a.list, "list the curves and their parameters");
   gen->add_option("--tol", a.tol, "shape tolerance, mm (default 0.005)")->check(CLI::PositiveNumber);
-  gen->add_option("--form", a.form, "expanded, arcs, macro or adaptive-macro")
-      ->check(CLI::IsMember({"expanded", "arcs", "macro", "adaptive-macro"}));
+  gen->add_option("--form", a.form, "expanded, arcs, macro, adaptive-macro or cycle")
+      ->check(CLI::IsMember({"expanded", "arcs", "macro", "adaptive-macro", "cycle"}));
   gen->add_option("--lines", a.lines,
-                  "expanded: equal-error (default: fewest lines, tolerance band), equal-error-chord, equal-step or "
-                  "equal-chord")
-      ->check(CLI::IsMember({"equal-error", "equal-error-chord", "equal-step", "equal-chord"}));
+                  "expanded: equal-error (default: fewest lines, tolerance band), equal-error-chord, equal-step, "
+                  "equal-chord or radial-error (seed 000's shape error along the ray from the centre)")
+      ->check(CLI::IsMember({"equal-error", "equal-error-chord", "equal-step", "equal-chord", "radial-error"}));
   gen->add_option("--machine", a.machine, "machine profile (TOML); default: FANUC 3-axis mill")
       ->check(CLI::ExistingFile);
   gen->add_option("--from", a.from, "start of the curve parameter t");
@@ -79,6 +79,12 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
   gen->add_option("--depth", a.depth, "mill: depth of a plane contour below Z0, mm");
   gen->add_option("--clearance", a.clearance, "mill: rapid plane above Z0; lathe: retract, mm");
   gen->add_option("--program-number", a.program_number, "O number of the program")->check(CLI::Range(1, 9999));
+  gen->add_option("--tool-radius", a.tool_radius,
+                  "program the cutter centre (mill) or tool-nose centre (lathe) for this radius, mm")
+      ->check(CLI::NonNegativeNumber);
+  gen->add_option("--side", a.side, "left or right of the curve looking along it (G41 / G42 side); default left")
+      ->check(CLI::IsMember({"left", "right"}));
+  gen->add_option("--plot", a.plot, "SVG plot of the curve, the path and the deviation along it");
   gen->add_option("-o,--output", a.output, "write the program here (statistics go to the terminal)");
   gen->add_flag("--json", a.json, "statistics as JSON");
   a.command = gen;
@@ -98,11 +104,14 @@ int gen_command(const GenArgs& a) {
     if (a.lines == "equal-step") o.lines = geom::LineMethod::equal_step;
     else if (a.lines == "equal-chord") o.lines = geom::LineMethod::equal_chord;
     else if (a.lines == "equal-error-chord") o.lines = geom::LineMethod::equal_error_on_curve;
+    else if (a.lines == "radial-error") o.lines = geom::LineMethod::radial_error;
     o.tol = a.tol;
     o.feed = a.feed;
     o.depth = a.depth;
     o.clearance = a.clearance;
     o.program_number = a.program_number;
+    o.tool_radius = a.tool_radius;
+    o.side = a.side == "right" ? gen::Side::right : gen::Side::left;
     auto values = curve_parameters(a.command->remaining());
     nc::EvalOptions eval;
     eval.atan_signed = o.profile.atan_signed;
@@ -160,6 +169,10 @@ int gen_command(const GenArgs& a) {
     j["worst_t"] = s.worst_t;
     j["worst_point"] = s.worst_point;
     j["within_tolerance"] = r.within_tolerance;
+    j["tool_radius"] = o.tool_radius;
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& [key, value] : r.parameters) params[key] = value;
+    j["parameters"] = params;
     if (a.output.empty()) j["program"] = r.text;
     std::cout << j.dump(2) << "\n";
   } else {
@@ -171,6 +184,9 @@ int gen_command(const GenArgs& a) {
         "  path length {:.4f} mm, max deviation {:.6f} mm at t = {:.6g} (round trip through the interpreter)\n",
         curve->name(), curve->t0(), curve->t1(), gen::to_string(o.form), o.tol, s.words, s.bytes, s.blocks, s.points,
         s.path_length, s.max_deviation, s.worst_t);
+    for (const auto& [key, value] : r.parameters)
+      out << fmt::format("  set parameter No.{} = {} on the control (ncurve run ... --param {}={})\n", key, value, key,
+                         value);
   }
   if (!r.within_tolerance) {
     std::cerr << fmt::format(

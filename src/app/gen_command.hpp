@@ -20,6 +20,9 @@ struct GenArgs {
   double depth = 1;
   double clearance = 5;
   int program_number = 1000;
+  double tool_radius = 0;
+  std::string side = "left";
+  std::string plot;
   std::string output;
   bool json = false;
   CLI::App* command = nullptr;

@@ -22,6 +22,7 @@ struct RunArgs {
   std::string machine;
   std::vector<std::string> libs;
   std::vector<std::string> sets;
+  std::vector<std::string> params;
   std::string format = "summary";
   double arc_tol = 0.001;
   std::string output;
@@ -55,6 +56,23 @@ int run_command(const RunArgs& a) {
   try {
     for (const auto& s : a.sets) options.presets.push_back(parse_set(s));
     if (!a.machine.empty()) profile = machine::load_profile(a.machine);
+    for (const auto& p : a.params) {
+      auto eq = p.find('=');
+      std::size_t used = 0;
+      double v = 0;
+      try {
+        if (eq == std::string::npos) throw std::invalid_argument(p);
+        v = std::stod(p.substr(eq + 1), &used);
+        if (used != p.size() - eq - 1) throw std::invalid_argument(p);
+      } catch (const std::exception&) {
+        throw CLI::ValidationError("--param", fmt::format("'{}' is not of the form 6050=102", p));
+      }
+      try {
+        machine::set_parameter(profile, p.substr(0, eq), v);
+      } catch (const std::runtime_error& e) {
+        throw CLI::ValidationError("--param", e.what());
+      }
+    }
     problems = lib.add_file(a.program, true);
     for (const auto& dir : a.libs) {
       auto more = lib.add_folder(dir);
@@ -117,6 +135,9 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   run->add_option("--lib", a.libs, "folder of macro programs (O9010.nc, ...); may be repeated")
       ->check(CLI::ExistingDirectory);
+  run->add_option("--param", a.params,
+                  "set a control parameter over the profile's, e.g. --param 6050=102 (G102 calls O9010); may be "
+                  "repeated");
   run->add_option("--set", a.sets, "preset a variable before the run, e.g. --set \"#100=5\"; may be repeated");
   run->add_option("--format", a.format, "output: summary (default), jsonl, csv or gcode")
       ->check(CLI::IsMember({"summary", "jsonl", "csv", "gcode"}));

@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "report/summary.hpp"
+#include "gen/forms.hpp"
 
 namespace ncurve::gen {
 namespace {
@@ -17,127 +19,7 @@ namespace {
 using geom::Sym;
 using geom::SymOp;
 using geom::Vec3;
-
-constexpr int kFirstTemp = 150;  // macro temporaries #150..
-
-// Builds the text and remembers the contour's first and last line.
-struct Writer {
-  std::string text;
-  std::uint32_t line = 0;
-  void block(const std::string& b) {
-    text += b;
-    text += '\n';
-    ++line;
-  }
-};
-
-std::string comment_text(std::string s) {
-  for (char& c : s) {
-    if (c == '(' || c == ')') c = ' ';
-    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  }
-  if (s.size() > 200) s.resize(200);
-  return s;
-}
-
-int decimals_of(double increment) { return std::max(0, static_cast<int>(std::lround(-std::log10(increment)))); }
-
-std::string number(double v, int decimals) {
-  std::string s = fmt::format("{:.{}f}", v, decimals);
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-  }
-  if (s == "-0." || s == "-0") s = "0.";
-  if (s.find('.') == std::string::npos) s += '.';
-  return s;
-}
-
-bool is_lathe(const Options& o) { return o.profile.lathe(); }
-
-double feed_of(const Options& o) { return o.feed > 0 ? o.feed : (is_lathe(o) ? 0.1 : 200.0); }
-
-// Letters and values for the machine axes of a point (lathe X as a diameter).
-struct AxisWords {
-  const Options& o;
-  const AxisMap& map;
-  int decimals;
-  bool with_z;  // mill: Z follows the curve
-  std::string operator()(const Vec3& p) const {
-    if (is_lathe(o)) return fmt::format("X{} Z{}", number(2 * p[0], decimals), number(p[2], decimals));
-    std::string s = fmt::format("X{} Y{}", number(p[0], decimals), number(p[1], decimals));
-    if (with_z) s += fmt::format(" Z{}", number(p[2], decimals));
-    return s;
-  }
-};
-
-std::string header(const geom::Curve& curve, const Options& o, const std::string& method) {
-  std::string params;
-  for (const auto& p : curve.params()) params += fmt::format(" {}={:.10g}", p.name, p.value);
-  return fmt::format("O{:04d} (NCURVE {} {})\n(CURVE {}{} T={:.10g}..{:.10g})\n(TOLERANCE {} MM, FORM {}{})\n",
-                     o.program_number, comment_text(curve.name()), comment_text(to_string(o.form)),
-                     comment_text(curve.name()), comment_text(params), curve.t0(), curve.t1(), o.tol,
-                     comment_text(to_string(o.form)), method.empty() ? "" : ", " + comment_text(method));
-}
-
-std::string modes(const Options& o) {
-  if (is_lathe(o)) return o.profile.gcode_system == 'A' ? "G21 G18 G99" : "G21 G18 G90 G95";
-  return "G21 G17 G90 G94 G54";
-}
-
-// Approach before the contour and retract after it.
-struct Frame {
-  std::string before_start;  // rapid moves to above the start point
-  std::string to_depth;      // feed to the start of the contour
-  std::string retract;
-};
-
-Frame frame(const Options& o, const AxisWords& words, const Vec3& start, const Vec3& end, int dec, double feed) {
-  Frame f;
-  if (is_lathe(o)) {
-    f.before_start = fmt::format("G00 X{} Z{}", number(2 * (start[0] + o.clearance), dec),
-                                 number(start[2] + o.clearance, dec));
-    f.to_depth = fmt::format("G01 {} F{}", words(start), number(feed, 4));
-    f.retract = fmt::format("G00 X{}", number(2 * (end[0] + o.clearance), dec));
-    return f;
-  }
-  f.before_start = fmt::format("G00 Z{}\nX{} Y{}", number(o.clearance, dec), number(start[0], dec),
-                               number(start[1], dec));
-  f.to_depth = fmt::format("G01 Z{} F{}", number(start[2], dec), number(feed, 4));
-  f.retract = fmt::format("G00 Z{}", number(o.clearance, dec));
-  return f;
-}
-
-Sym axis_sym(const geom::Curve& curve, const AxisMap& map, int axis, bool lathe) {
-  Sym s = map.from[axis] >= 0 ? curve.position()[map.from[axis]] : geom::konst(0);
-  s = geom::make(SymOp::add, s, geom::konst(map.offset[axis]));
-  if (lathe && axis == 0) s = geom::make(SymOp::mul, geom::konst(2), s);
-  return s;
-}
-
-// Assignments of temporaries and the axis words X[..] Y[..] for the curve point at #100.
-struct MacroPoint {
-  std::vector<std::string> assignments;
-  std::string words;
-};
-
-MacroPoint macro_point(const geom::Curve& curve, const AxisMap& map, const Options& o, bool with_z) {
-  MacroPoint mp;
-  int next = kFirstTemp;
-  std::vector<std::pair<int, Sym>> temps;
-  std::vector<std::pair<char, Sym>> axes;
-  if (is_lathe(o)) {
-    axes = {{'X', axis_sym(curve, map, 0, true)}, {'Z', axis_sym(curve, map, 2, true)}};
-  } else {
-    axes = {{'X', axis_sym(curve, map, 0, false)}, {'Y', axis_sym(curve, map, 1, false)}};
-    if (with_z) axes.emplace_back('Z', axis_sym(curve, map, 2, false));
-  }
-  for (auto& [letter, s] : axes) {
-    Sym limited = geom::limit_depth(s, 4, next, temps);  // X[...] adds the fifth bracket
-    mp.words += fmt::format("{}{}[{}]", mp.words.empty() ? "" : " ", letter, geom::to_macro(limited));
-  }
-  for (const auto& [var, s] : temps) mp.assignments.push_back(fmt::format("#{}={}", var, geom::to_macro(s)));
-  return mp;
-}
+using namespace detail;
 
 }  // namespace
 
@@ -147,12 +29,13 @@ const char* to_string(Form f) {
     case Form::arcs: return "arcs";
     case Form::macro: return "macro";
     case Form::adaptive_macro: return "adaptive-macro";
+    case Form::cycle: return "cycle";
   }
   return "";
 }
 
 bool parse_form(const std::string& text, Form& out) {
-  for (Form f : {Form::expanded, Form::arcs, Form::macro, Form::adaptive_macro}) {
+  for (Form f : {Form::expanded, Form::arcs, Form::macro, Form::adaptive_macro, Form::cycle}) {
     if (text == to_string(f)) {
       out = f;
       return true;
@@ -289,119 +172,172 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
   return s;
 }
 
-Result generate(const geom::Curve& curve, const Options& o) {
-  if (o.form == Form::adaptive_macro)
-    throw std::runtime_error("the adaptive-macro form is not available yet (use expanded, arcs or macro)");
-  curve.validate();
-  AxisMap map = axis_map(curve, o);
+namespace {
+
+Emitted expanded_or_arcs(const Context& c) {
+  const Options& o = c.o;
+  geom::Path path;
+  std::string method;
+  if (o.form == Form::arcs) {
+    if (c.with_z) throw std::runtime_error("arcs need a plane curve; this one rises in Z (use expanded or macro)");
+    path = geom::fit_arcs(c.fit);
+    method = "biarcs";
+  } else {
+    path = geom::fit_lines(c.fit, o.lines);
+    method = o.lines == geom::LineMethod::equal_step    ? "equal parameter step"
+             : o.lines == geom::LineMethod::equal_chord ? "equal chord"
+             : o.lines == geom::LineMethod::equal_error ? "equal error, tolerance band"
+             : o.lines == geom::LineMethod::radial_error ? "equal radial shape error"
+                                                         : "equal error, points on the curve";
+  }
+  Writer w;
+  w.block("%");
+  w.lines(header(c.curve, o, method));
+  w.block(modes(o));
+  Frame fr = frame(o, c.words, c.start, c.end, c.dec, c.feed);
+  w.lines(fr.before_start);
+  w.lines(fr.to_depth);
+  Emitted e;
+  e.first = w.line + 1;
+  int motion = 1;
+  for (const auto& p : path.pieces) {
+    if (!p.arc) {
+      w.block(fmt::format("{}{}", motion == 1 ? "" : "G01 ", c.words(p.end)));
+      motion = 1;
+      continue;
+    }
+    int g = p.ccw ? 3 : 2;
+    w.block(fmt::format("{}{} {}", motion == g ? "" : fmt::format("G0{} ", g), c.words(p.end), arc_words(c, p)));
+    motion = g;
+  }
+  e.last = w.line;
+  w.lines(fr.retract);
+  w.block("M30");
+  w.block("%");
+  e.text = std::move(w.text);
+  return e;
+}
+
+Emitted equal_step_macro(const Context& c) {
+  const Options& o = c.o;
+  geom::Path steps = geom::fit_lines(c.fit, geom::LineMethod::equal_step);
+  const std::size_t n = steps.pieces.size();
+  Writer w;
+  w.block("%");
+  w.lines(header(c.curve, o, "equal parameter step"));
+  w.block("(VARIABLES)");
+  w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(c.curve.name())));
+  parameter_blocks(w, c.curve);
+  w.block(fmt::format("#110={} (T START)", number(c.curve.t0(), 12)));
+  w.block(fmt::format("#111={} (T END)", number(c.curve.t1(), 12)));
+  w.block(fmt::format("#112={} (SEGMENTS)", n));
+  w.block("#113=[#111-#110]/#112 (T STEP)");
+  w.block("#114=0 (SEGMENT COUNTER)");
+  w.block(modes(o));
+  w.block("#100=#110");
+  int next = kFirstTemp;
+  MacroWords mp = macro_words(point_axes(c.curve, c.map, o, c.with_z), next);
+  approach(w, c, mp);
+  w.block("WHILE [#114 LT #112] DO1");
+  w.block("#114=#114+1");
+  w.block("#100=#110+#114*#113");
+  for (const auto& a : mp.assignments) w.block(a);
+  Emitted e;
+  e.first = w.line + 1;
+  w.block(fmt::format("G01 {}", mp.words));
+  e.last = w.line;
+  w.block("END1");
+  w.lines(frame(o, c.words, c.start, c.end, c.dec, c.feed).retract);
+  w.block("M30");
+  w.block("%");
+  e.text = std::move(w.text);
+  return e;
+}
+
+}  // namespace
+
+namespace detail {
+
+std::string arc_words(const Context& c, const geom::Piece& p) {
+  if (is_lathe(c.o))
+    return fmt::format("I{} K{}", number(p.centre[0] - p.start[0], c.dec), number(p.centre[2] - p.start[2], c.dec));
+  return fmt::format("I{} J{}", number(p.centre[0] - p.start[0], c.dec), number(p.centre[1] - p.start[1], c.dec));
+}
+
+void parameter_blocks(Writer& w, const geom::Curve& curve) {
+  for (const auto& p : curve.params())
+    w.block(fmt::format("#{}={} ({}: {})", p.var, number(p.value, 12), comment_text(p.name), comment_text(p.doc)));
+}
+
+void approach(Writer& w, const Context& c, const MacroWords& start) {
+  const Options& o = c.o;
+  if (is_lathe(o)) {
+    w.block(fmt::format("G00 X{} Z{}", number(2 * (c.start[0] + o.clearance), c.dec),
+                        number(c.start[2] + o.clearance, c.dec)));
+    for (const auto& a : start.assignments) w.block(a);
+    w.block(fmt::format("G01 {} F{}", start.words, number(c.feed, 4)));
+    return;
+  }
+  w.block(fmt::format("G00 Z{}", number(o.clearance, c.dec)));
+  for (const auto& a : start.assignments) w.block(a);
+  w.block(fmt::format("G00 {}", start.words));
+  if (!c.with_z) w.block(fmt::format("G01 Z{} F{}", number(-o.depth, c.dec), number(c.feed, 4)));
+  else w.block(fmt::format("G01 F{}", number(c.feed, 4)));
+}
+
+}  // namespace detail
+
+Result generate(const geom::Curve& contour, const Options& o) {
+  contour.validate();
+  AxisMap map = axis_map(contour, o);
+  std::optional<geom::Curve> cutter_centre;
+  if (o.tool_radius > 0) {
+    geom::Plane plane = plane_of(o.profile);
+    cutter_centre.emplace(contour.offset(o.tool_radius, o.side == Side::left, map.from[plane.u_axis],
+                                         map.from[plane.v_axis]));
+    cutter_centre->validate();
+  } else if (o.tool_radius < 0) {
+    throw std::runtime_error("the tool radius must not be negative");
+  }
+  const geom::Curve& curve = cutter_centre ? *cutter_centre : contour;
   const bool with_z = !is_lathe(o) && !curve.planar_z();
   const int dec = decimals_of(o.profile.increment);
-  AxisWords words{o, map, dec, with_z};
   geom::Grid grid;
   grid.step = {o.profile.increment, o.profile.increment, o.profile.increment};
   if (is_lathe(o) && o.profile.diameter_x) grid.step[0] = o.profile.increment / 2;
   if (is_lathe(o)) grid.step[1] = 0;
-  geom::Placement place = [map](const Vec3& c) { return map(c); };
+  if (!is_lathe(o) && !with_z) grid.step[2] = 0;  // a plane contour's Z is a constant
+  geom::Placement place = [map](const Vec3& p) { return map(p); };
   // the fit aims a little inside the tolerance: the round trip measures the control's own path
-  geom::Fit fit{curve, place, grid, plane_of(o.profile), o.tol * 0.999};
-  const double feed = feed_of(o);
-  Vec3 start = grid.snap(map(curve.point(curve.t0())));
-  Vec3 end = grid.snap(map(curve.point(curve.t1())));
-
-  Writer w;
-  std::uint32_t first = 0, last = 0;
-  auto emit_lines = [&](const std::string& text) {
-    std::size_t pos = 0;
-    while (pos <= text.size()) {
-      std::size_t eol = text.find('\n', pos);
-      if (eol == std::string::npos) eol = text.size();
-      if (eol > pos) w.block(text.substr(pos, eol - pos));
-      pos = eol + 1;
-    }
-  };
-  w.block("%");
-  Frame fr = frame(o, words, start, end, dec, feed);
-
-  if (o.form == Form::expanded || o.form == Form::arcs) {
-    geom::Path path;
-    std::string method;
-    if (o.form == Form::arcs) {
-      if (with_z) throw std::runtime_error("arcs need a plane curve; this one rises in Z (use expanded or macro)");
-      path = geom::fit_arcs(fit);
-      method = "biarcs";
-    } else {
-      path = geom::fit_lines(fit, o.lines);
-      method = o.lines == geom::LineMethod::equal_step    ? "equal parameter step"
-               : o.lines == geom::LineMethod::equal_chord ? "equal chord"
-               : o.lines == geom::LineMethod::equal_error ? "equal error, tolerance band"
-                                                          : "equal error, points on the curve";
-    }
-    emit_lines(header(curve, o, method));
-    w.block(modes(o));
-    emit_lines(fr.before_start);
-    emit_lines(fr.to_depth);
-    first = w.line + 1;
-    int motion = 1;
-    for (const auto& p : path.pieces) {
-      if (!p.arc) {
-        w.block(fmt::format("{}{}", motion == 1 ? "" : "G01 ", words(p.end)));
-        motion = 1;
-        continue;
-      }
-      int g = p.ccw ? 3 : 2;
-      std::string centre;
-      if (is_lathe(o)) {
-        centre = fmt::format("I{} K{}", number(p.centre[0] - p.start[0], dec), number(p.centre[2] - p.start[2], dec));
-      } else {
-        centre = fmt::format("I{} J{}", number(p.centre[0] - p.start[0], dec), number(p.centre[1] - p.start[1], dec));
-      }
-      w.block(fmt::format("{}{} {}", motion == g ? "" : fmt::format("G0{} ", g), words(p.end), centre));
-      motion = g;
-    }
-    last = w.line;
-  } else {
-    geom::Path steps = geom::fit_lines(fit, geom::LineMethod::equal_step);
-    const std::size_t n = steps.pieces.size();
-    emit_lines(header(curve, o, "equal parameter step"));
-    w.block("(VARIABLES)");
-    w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(fmt::format("{}", curve.name()))));
-    for (const auto& p : curve.params())
-      w.block(fmt::format("#{}={} ({}: {})", p.var, number(p.value, 12), comment_text(p.name), comment_text(p.doc)));
-    w.block(fmt::format("#110={} (T START)", number(curve.t0(), 12)));
-    w.block(fmt::format("#111={} (T END)", number(curve.t1(), 12)));
-    w.block(fmt::format("#112={} (SEGMENTS)", n));
-    w.block("#113=[#111-#110]/#112 (T STEP)");
-    w.block("#114=0 (SEGMENT COUNTER)");
-    w.block(modes(o));
-    w.block("#100=#110");
-    MacroPoint mp = macro_point(curve, map, o, with_z);
-    if (is_lathe(o)) {
-      w.block(fmt::format("G00 X{} Z{}", number(2 * (start[0] + o.clearance), dec), number(start[2] + o.clearance, dec)));
-      for (const auto& a : mp.assignments) w.block(a);
-      w.block(fmt::format("G01 {} F{}", mp.words, number(feed, 4)));
-    } else {
-      w.block(fmt::format("G00 Z{}", number(o.clearance, dec)));
-      for (const auto& a : mp.assignments) w.block(a);
-      w.block(fmt::format("G00 {}", mp.words));
-      if (!with_z) w.block(fmt::format("G01 Z{} F{}", number(-o.depth, dec), number(feed, 4)));
-      else w.block(fmt::format("G01 F{}", number(feed, 4)));
-    }
-    w.block("WHILE [#114 LT #112] DO1");
-    w.block("#114=#114+1");
-    w.block("#100=#110+#114*#113");
-    for (const auto& a : mp.assignments) w.block(a);
-    first = w.line + 1;
-    w.block(fmt::format("G01 {}", mp.words));
-    last = w.line;
-    w.block("END1");
+  Context c{curve,
+            o,
+            map,
+            with_z,
+            dec,
+            feed_of(o),
+            AxisWords{o, dec, with_z},
+            geom::Fit{curve, place, grid, plane_of(o.profile), o.tol * 0.999},
+            grid.snap(map(curve.point(curve.t0()))),
+            grid.snap(map(curve.point(curve.t1())))};
+  for (const auto& p : curve.params()) {  // the spiral's centre; other curves: their origin
+    if (p.name == "cx") c.fit.centre[0] = p.value;
+    if (p.name == "cy") c.fit.centre[1] = p.value;
   }
-  emit_lines(fr.retract);
-  w.block("M30");
-  w.block("%");
-
+  c.fit.centre = map(c.fit.centre);
+  Emitted e;
+  switch (o.form) {
+    case Form::expanded:
+    case Form::arcs: e = expanded_or_arcs(c); break;
+    case Form::macro: e = equal_step_macro(c); break;
+    case Form::adaptive_macro: e = adaptive_macro(c); break;
+    case Form::cycle: e = cycle(c); break;
+  }
   Result r;
-  r.text = std::move(w.text);
-  r.stats = round_trip(r.text, curve, o, first, last);
+  r.text = std::move(e.text);
+  r.parameters = e.parameters;
+  Options on_control = o;
+  for (const auto& [key, value] : r.parameters) machine::set_parameter(on_control.profile, key, value);
+  r.stats = round_trip(r.text, curve, on_control, e.first, e.last);
   r.within_tolerance = r.stats.max_deviation <= o.tol;
   return r;
 }

@@ -2,6 +2,8 @@
 // interpreter and measured against the exact curve.
 #pragma once
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "geom/approx.hpp"
 #include "geom/curve.hpp"
@@ -9,7 +11,8 @@
 
 namespace ncurve::gen {
 
-enum class Form { expanded, arcs, macro, adaptive_macro };
+enum class Form { expanded, arcs, macro, adaptive_macro, cycle };
+enum class Side { left, right };  // of the curve, looking along it (G41 / G42)
 const char* to_string(Form f);
 bool parse_form(const std::string& text, Form& out);
 
@@ -22,6 +25,8 @@ struct Options {
   double depth = 1;         // mill: cutting depth below Z0 for a plane curve, mm
   double clearance = 5;     // mill: rapid plane above Z0; lathe: retract distance, mm
   int program_number = 1000;
+  double tool_radius = 0;   // > 0: the program is the cutter-centre path, offset to `side`
+  Side side = Side::left;
 };
 
 // How the curve sits on the machine: machine axis a = scale[a] * curve[from[a]] + offset[a]
@@ -45,6 +50,7 @@ struct Stats {
 
 struct Result {
   std::string text;
+  std::vector<std::pair<std::string, double>> parameters;  // to set on the control, e.g. {"6050", 102}
   Stats stats;
   bool within_tolerance = false;
 };

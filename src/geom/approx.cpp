@@ -114,6 +114,17 @@ double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
   return norm(sub(p, add(a, scale(ab, s))));
 }
 
+double radial_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& centre, const Plane& plane) {
+  const int u = plane.u_axis, v = plane.v_axis;
+  // centre + s (p - centre) on the line a + r (b - a): solve the 2x2 system for s
+  double du = p[u] - centre[u], dv = p[v] - centre[v];
+  double eu = b[u] - a[u], ev = b[v] - a[v];
+  double det = du * ev - dv * eu;
+  if (std::fabs(det) < 1e-300) return point_segment_distance(p, a, b);  // ray along the chord
+  double s = ((a[u] - centre[u]) * ev - (a[v] - centre[v]) * eu) / det;
+  return std::fabs(1 - s) * std::hypot(du, dv);
+}
+
 double point_arc_distance(const Vec3& p, const Piece& arc, const Plane& plane) {
   const int u = plane.u_axis, v = plane.v_axis, w = 3 - u - v;
   double a0 = std::atan2(arc.start[v] - arc.centre[v], arc.start[u] - arc.centre[u]);
@@ -180,7 +191,11 @@ Vec3 vertex(const Fit& f, double t, double offset) {
   return f.grid.snap(l.p);
 }
 
-double segment_error(const Fit& f, double ta, double tb, const Vec3& a, const Vec3& b) {
+double segment_error(const Fit& f, double ta, double tb, const Vec3& a, const Vec3& b, bool radial = false) {
+  if (radial)
+    return max_distance(f.curve, f.place, ta, tb,
+                        [&](const Vec3& p) { return radial_distance(p, a, b, f.centre, f.plane); })
+        .distance;
   return max_distance(f.curve, f.place, ta, tb, [&](const Vec3& p) { return point_segment_distance(p, a, b); })
       .distance;
 }
@@ -196,7 +211,7 @@ double step_guess(const Fit& f, double t, double h) {
   return std::min(range, std::sqrt(8 * h / k) / speed);
 }
 
-Path lines_greedy(const Fit& f, bool band) {
+Path lines_greedy(const Fit& f, bool band, bool radial = false) {
   Path path;
   const double t_end = f.curve.t1();
   const double span = t_end - f.curve.t0();
@@ -204,14 +219,14 @@ Path lines_greedy(const Fit& f, bool band) {
   double ta = f.curve.t0();
   Vec3 a = vertex(f, ta, offset);
   while (ta < t_end) {
-    auto ok = [&](double tb) { return segment_error(f, ta, tb, a, vertex(f, tb, offset)) <= f.tol; };
+    auto ok = [&](double tb) { return segment_error(f, ta, tb, a, vertex(f, tb, offset), radial) <= f.tol; };
     double guess = std::min(t_end, ta + step_guess(f, ta, f.tol + offset));
     double tb = longest_step(ta, t_end, guess, ok, span, [&] {
       return fmt::format("{}: no segment from t = {:.6g} stays within {} mm (tolerance below the machine increment?)",
                          f.curve.name(), ta, f.tol);
     });
     Vec3 b = vertex(f, tb, offset);
-    double err = segment_error(f, ta, tb, a, b);
+    double err = segment_error(f, ta, tb, a, b, radial);
     path.max_deviation = std::max(path.max_deviation, err);
     path.pieces.push_back(Piece{false, a, b, {}, false, ta, tb});
     ta = tb;
@@ -278,6 +293,7 @@ Path fit_lines(const Fit& f, LineMethod method) {
   switch (method) {
     case LineMethod::equal_error: return lines_greedy(f, true);
     case LineMethod::equal_error_on_curve: return lines_greedy(f, false);
+    case LineMethod::radial_error: return lines_greedy(f, false, true);
     case LineMethod::equal_step: {
       auto passes = [&](long n) { return chords_error(f, equal_steps(f, n), nullptr) <= f.tol; };
       long n = 1;

@@ -36,7 +36,9 @@ struct Path {
   double max_deviation = 0;  // as measured while building (exact, before the round trip)
 };
 
-enum class LineMethod { equal_step, equal_chord, equal_error, equal_error_on_curve };
+// radial_error: seed 000's placement, vertices on the curve, the error measured along the ray from
+// Fit::centre (the spiral's centre) to the curve point, to where it meets the chord.
+enum class LineMethod { equal_step, equal_chord, equal_error, equal_error_on_curve, radial_error };
 
 struct Fit {
   const Curve& curve;
@@ -44,6 +46,7 @@ struct Fit {
   Grid grid;
   Plane plane;
   double tol;
+  Vec3 centre{0, 0, 0};  // radial_error: machine coordinates of the centre
 };
 
 Path fit_lines(const Fit& fit, LineMethod method);
@@ -58,6 +61,8 @@ Worst max_distance(const Curve& curve, const Placement& place, double ta, double
                    const std::function<double(const Vec3&)>& dist);
 
 double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b);
+// Distance from p to where the ray from centre through p meets the line ab, in the plane (u, v).
+double radial_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& centre, const Plane& plane);
 // Distance to an arc in the plane from start to end about centre (radius varying linearly from
 // the start radius to the end radius, as a control interpolates a slightly unequal arc), with
 // the out-of-plane coordinate interpolated linearly (helix).

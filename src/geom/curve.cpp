@@ -103,7 +103,7 @@ std::string substitute_names(const std::string& text, const std::vector<std::str
 }
 
 Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values, nc::EvalOptions options)
-    : name_(spec.name), t0_(spec.from), t1_(spec.to) {
+    : name_(spec.name), t0_(spec.from), t1_(spec.to), options_(options) {
   std::vector<std::string> names;
   for (const auto& p : spec.params) {
     names.push_back(p.name);
@@ -121,7 +121,7 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
     }
     it->value = value;
   }
-  for (const auto& p : params_) base_[static_cast<std::size_t>(p.var)] = p.value;
+  for (const auto& p : params_) vars_[static_cast<std::size_t>(p.var)] = p.value;
   const std::string* texts[3] = {&spec.x, &spec.y, &spec.z};
   const char* axis = "xyz";
   for (int a = 0; a < 3; ++a) {
@@ -134,6 +134,12 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
     }
     nc::CompiledExpr code = nc::compile_expression(macro, origin);
     sym_pos_[a] = from_code(code.code, origin);
+  }
+  compile(options);
+}
+
+void Curve::compile(nc::EvalOptions options) {
+  for (int a = 0; a < 3; ++a) {
     sym_d1_[a] = derivative(sym_pos_[a], kTVar);
     sym_d2_[a] = derivative(sym_d1_[a], kTVar);
     pos_[a] = Tape(sym_pos_[a], options);
@@ -143,9 +149,40 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
 }
 
 Vec3 Curve::eval(const Tapes& tapes, double t) const {
-  std::array<double, kVarCount> vars = base_;
-  vars[kTVar] = t;
-  return {tapes[0](vars.data()), tapes[1](vars.data()), tapes[2](vars.data())};
+  vars_[kTVar] = t;
+  return {tapes[0](vars_.data()), tapes[1](vars_.data()), tapes[2](vars_.data())};
+}
+
+Curve Curve::offset(double radius, bool left, int u, int v) const {
+  const int w = 3 - u - v;
+  if (depends_on(sym_pos_[w], kTVar))
+    throw std::runtime_error(fmt::format("{}: a tool radius offset needs a plane curve; this one leaves the plane", name_));
+  // concave side closer than the radius: the offset curve would turn back (gouge)
+  constexpr int kSamples = 8192;
+  const double side = left ? 1 : -1;
+  double worst = 0, worst_t = t0_;
+  for (int i = 0; i <= kSamples; ++i) {
+    double t = t0_ + (t1_ - t0_) * i / kSamples;
+    Vec3 a = d1(t), b = d2(t);
+    double speed = std::hypot(a[u], a[v]);
+    double k = side * (a[u] * b[v] - a[v] * b[u]) / (speed * speed * speed);  // > 0: turning towards the tool
+    if (k > worst) { worst = k; worst_t = t; }
+  }
+  if (worst * radius >= 1) {
+    Vec3 p = point(worst_t);
+    throw std::runtime_error(fmt::format(
+        "{}: the tool radius {} mm is larger than the concave radius of curvature {:.4f} mm at t = {:.6g} "
+        "({:.4f}, {:.4f}, {:.4f}): the cutter would gouge there",
+        name_, radius, 1 / worst, worst_t, p[0], p[1], p[2]));
+  }
+  Curve out = *this;
+  Sym speed = make(SymOp::sqrt, make(SymOp::add, make(SymOp::mul, sym_d1_[u], sym_d1_[u]),
+                                     make(SymOp::mul, sym_d1_[v], sym_d1_[v])));
+  Sym r = konst(side * radius);
+  out.sym_pos_[u] = make(SymOp::sub, sym_pos_[u], make(SymOp::div, make(SymOp::mul, r, sym_d1_[v]), speed));
+  out.sym_pos_[v] = make(SymOp::add, sym_pos_[v], make(SymOp::div, make(SymOp::mul, r, sym_d1_[u]), speed));
+  out.compile(options_);
+  return out;
 }
 
 double Curve::curvature(double t, Vec3* normal) const {

@@ -69,16 +69,24 @@ public:
   // Throws std::runtime_error naming t where the curve is undefined, singular or has a cusp.
   void validate() const;
 
+  // The curve moved by `radius` along its normal in the plane of coordinates (u, v), to the left
+  // (counter-clockwise from the tangent) or right: the exact path of a cutter's centre. Throws,
+  // naming where, if the radius is larger than a concave radius of curvature (the cutter would
+  // gouge) or the curve leaves the plane.
+  Curve offset(double radius, bool left, int u, int v) const;
+
 private:
   using Tapes = std::array<Tape, 3>;
   Vec3 eval(const Tapes& tapes, double t) const;
+  void compile(nc::EvalOptions options);  // derivatives and tapes from sym_pos_
 
   std::string name_;
   double t0_, t1_;
   std::vector<Param> params_;
   std::array<Sym, 3> sym_pos_, sym_d1_, sym_d2_;
   Tapes pos_, d1_, d2_;
-  std::array<double, kVarCount> base_{};  // parameter values at their variable numbers
+  nc::EvalOptions options_;
+  mutable std::array<double, kVarCount> vars_{};  // parameter values at their numbers; t set per call
 };
 
 // Text with names (t, parameters, PI) to macro text with #100, #101..; throws on unknown names.

@@ -119,35 +119,49 @@ void machine_table(MachineProfile& p, const toml::table& t, const std::string& o
 void parameters_table(MachineProfile& p, const toml::table& t, const std::string& origin) {
   for (const auto& [k, node] : t) {
     std::string key(k.str());
-    if (key == "3401#0") p.decimal_calculator = flag(origin, node, key);
-    else if (key == "6004#0") p.atan_signed = flag(origin, node, key);
-    else if (key == "3402#0") p.power_on_g01 = flag(origin, node, key);
-    else if (key == "3402#3") p.power_on_g91 = flag(origin, node, key);
-    else if (key == "6001#5") p.t_code_calls_o9000 = flag(origin, node, key);
-    else if (key == "3410") p.arc_radius_tolerance = number(origin, node, key) * p.increment;
-    else {
-      int n = 0;
-      try {
-        std::size_t used = 0;
-        n = std::stoi(key, &used);
-        if (used != key.size()) n = 0;
-      } catch (...) {
-        n = 0;
-      }
-      int value = n >= 6050 ? static_cast<int>(number(origin, node, key)) : 0;
-      if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = value;
-      else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = value;
-      else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = value;
-      else
-        fail(origin, node,
-             fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 6001#5, "
-                         "6004#0, 6050..6059, 6071..6079, 6080..6089)",
-                         key));
+    double value = key.find('#') != std::string::npos ? (flag(origin, node, key) ? 1.0 : 0.0)
+                                                       : number(origin, node, key);
+    try {
+      set_parameter(p, key, value);
+    } catch (const std::runtime_error& e) {
+      fail(origin, node, e.what());
     }
   }
 }
 
 }  // namespace
+
+void set_parameter(MachineProfile& p, const std::string& key, double value) {
+  auto bit = [&] {
+    if (value != 0 && value != 1) throw std::runtime_error(fmt::format("parameter {} is a bit: 0 or 1", key));
+    return value != 0;
+  };
+  if (key == "3401#0") p.decimal_calculator = bit();
+  else if (key == "6004#0") p.atan_signed = bit();
+  else if (key == "3402#0") p.power_on_g01 = bit();
+  else if (key == "3402#3") p.power_on_g91 = bit();
+  else if (key == "6001#5") p.t_code_calls_o9000 = bit();
+  else if (key == "3410") p.arc_radius_tolerance = value * p.increment;
+  else {
+    int n = 0;
+    try {
+      std::size_t used = 0;
+      n = std::stoi(key, &used);
+      if (used != key.size()) n = 0;
+    } catch (...) {
+      n = 0;
+    }
+    const int code = static_cast<int>(value);
+    if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = code;
+    else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = code;
+    else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
+    else
+      throw std::runtime_error(
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 6001#5, "
+                      "6004#0, 6050..6059, 6071..6079, 6080..6089)",
+                      key));
+  }
+}
 
 MachineProfile parse_profile(const std::string& toml_text, const std::string& origin) {
   toml::table root;

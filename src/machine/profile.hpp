@@ -58,6 +58,8 @@ MachineProfile default_lathe();
 
 // Reads a TOML profile; throws std::runtime_error naming file:line:column on a bad or unknown key.
 MachineProfile load_profile(const std::string& path);
+// Sets a FANUC parameter by its number ("6050", "3401#0"); throws for ones ncurve does not use.
+void set_parameter(MachineProfile& p, const std::string& key, double value);
 MachineProfile parse_profile(const std::string& toml_text, const std::string& origin);
 
 }  // namespace ncurve::machine

@@ -68,7 +68,7 @@ TEST(Gen, SpiralSegmentCountsMeetTheSeedReference) {
 TEST(Gen, EveryCurveAndFormRunsWithinTolerance) {
   for (const auto& spec : geom::catalogue()) {
     geom::Curve c(spec, {});
-    for (gen::Form form : {gen::Form::expanded, gen::Form::arcs, gen::Form::macro}) {
+    for (gen::Form form : {gen::Form::expanded, gen::Form::arcs, gen::Form::macro, gen::Form::adaptive_macro}) {
       if (form == gen::Form::arcs && !c.planar_z()) continue;  // helix: arcs need a plane
       gen::Options o = options(form, 0.005);
       if (spec.name == "hyperbola") o.profile = machine::default_lathe();
@@ -168,5 +168,154 @@ TEST(Gen, BadCurvesAreNamed) {
   }
   EXPECT_THROW(geom::Curve(*geom::find_curve("spiral"), {{"radius", 3}}), std::runtime_error);
   EXPECT_THROW(gen::generate(curve("spiral"), options(gen::Form::expanded, 0.0004)), std::runtime_error);
-  EXPECT_THROW(gen::generate(curve("spiral"), options(gen::Form::adaptive_macro, 0.005)), std::runtime_error);
+  // the G102 cycle is the spiral's
+  EXPECT_THROW(gen::generate(curve("ellipse"), options(gen::Form::cycle, 0.005)), std::runtime_error);
+}
+
+namespace {
+
+// Line moves of a program's contour (feed moves at the contour depth).
+std::vector<std::pair<geom::Vec3, geom::Vec3>> contour_lines(const std::string& text, const machine::MachineProfile& p,
+                                                             double depth = -1) {
+  auto ran = test::run(text, p, {}, {});
+  EXPECT_TRUE(ran.result.ok());
+  std::vector<std::pair<geom::Vec3, geom::Vec3>> out;
+  for (const auto& m : ran.motions()) {
+    if (m.kind != machine::MoveKind::line || std::fabs(m.start[2] - depth) > 1e-9 || std::fabs(m.end[2] - depth) > 1e-9)
+      continue;
+    out.push_back({{m.start[0], m.start[1], m.start[2]}, {m.end[0], m.end[1], m.end[2]}});
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(Gen, AdaptiveMacroIsCompactAndNearlyAsShortAsEqualError) {
+  auto spiral = curve("spiral");
+  auto adaptive = gen::generate(spiral, options(gen::Form::adaptive_macro, 0.005));
+  auto expanded = gen::generate(spiral, options(gen::Form::expanded, 0.005));
+  ASSERT_TRUE(adaptive.within_tolerance);
+  EXPECT_LT(adaptive.stats.bytes, 2048u);
+  EXPECT_NE(adaptive.text.find("WHILE"), std::string::npos);
+  // the control computes the steps: many moves from one G01 block
+  EXPECT_GT(adaptive.stats.points, adaptive.stats.blocks);
+  const double moves = adaptive.stats.points - 1.0, fewest = expanded.stats.points - 1.0;
+  EXPECT_LE(moves, 1.07 * fewest) << moves << " moves against " << fewest;
+  // steps follow the curvature: the first move (radius 1 mm) is shorter than the last (13.6 mm)
+  auto lines = contour_lines(adaptive.text, machine::default_mill());
+  ASSERT_GT(lines.size(), 10u);
+  auto length = [](const std::pair<geom::Vec3, geom::Vec3>& l) {
+    return std::hypot(l.second[0] - l.first[0], l.second[1] - l.first[1]);
+  };
+  EXPECT_LT(length(lines[1]) * 2, length(lines[lines.size() - 2]));
+}
+
+TEST(Gen, SpiralCycleIsSeed001G102WithAToleranceArgument) {
+  auto spiral = curve("spiral");
+  auto r = gen::generate(spiral, options(gen::Form::cycle, 0.005));
+  ASSERT_TRUE(r.within_tolerance) << r.stats.max_deviation;
+  ASSERT_EQ(r.parameters.size(), 1u);
+  EXPECT_EQ(r.parameters[0].first, "6050");
+  EXPECT_EQ(r.parameters[0].second, 102);
+  // r = 1 + 2 theta: from (1, 0) about the origin to radius 1 + 4 pi at 360 degrees
+  EXPECT_NE(r.text.find("G102 X13.566 Y0. I-1. J0. Q12.566371 T0."), std::string::npos) << r.text;
+  EXPECT_NE(r.text.find("O9010"), std::string::npos);
+  // without the parameter the control does not know G102
+  auto plain = test::run(r.text, machine::default_mill());
+  EXPECT_EQ(plain.alarm_code(), "PS0010");
+  machine::MachineProfile p = machine::default_mill();
+  machine::set_parameter(p, "6050", 102);
+  auto lines = contour_lines(r.text, p);
+  ASSERT_GT(lines.size(), 50u);
+  // every vertex on the spiral (closed form), within the rounding
+  for (const auto& l : lines) {
+    double rho = std::hypot(l.second[0], l.second[1]);
+    double theta = std::atan2(l.second[1], l.second[0]);
+    if (theta < 0) theta += 2 * std::numbers::pi;
+    double off = std::fabs(rho - (1 + 2 * theta));
+    off = std::min(off, std::fabs(rho - (1 + 2 * (theta + 2 * std::numbers::pi))));
+    EXPECT_LE(off, 0.0015) << l.second[0] << " " << l.second[1];
+  }
+}
+
+TEST(Gen, ToolRadiusProgramsTheCutterCentreAtTheRadiusFromTheCurve) {
+  const double a = 40, b = 20, radius = 5, tol = 0.005;
+  auto ellipse = curve("ellipse", {{"a", a}, {"b", b}});
+  // distance from p to the ellipse: densest sample, then golden-section refinement
+  auto distance = [&](double x, double y) {
+    auto d = [&](double t) { return std::hypot(x - a * std::cos(t), y - b * std::sin(t)); };
+    const int n = 4096;
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if (d(2 * std::numbers::pi * i / n) < d(2 * std::numbers::pi * best / n)) best = i;
+    double lo = 2 * std::numbers::pi * (best - 1) / n, hi = 2 * std::numbers::pi * (best + 1) / n;
+    for (int k = 0; k < 60; ++k) {
+      double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+      if (d(m1) < d(m2)) hi = m2; else lo = m1;
+    }
+    return d(0.5 * (lo + hi));
+  };
+  for (gen::Side side : {gen::Side::right, gen::Side::left}) {
+    gen::Options o = options(gen::Form::expanded, tol);
+    o.tool_radius = radius;
+    o.side = side;
+    auto r = gen::generate(ellipse, o);
+    ASSERT_TRUE(r.within_tolerance);
+    auto lines = contour_lines(r.text, o.profile);
+    ASSERT_GT(lines.size(), 20u);
+    for (const auto& l : lines) {
+      for (double s : {0.0, 0.5}) {  // vertices and the middles of the moves
+        double x = l.first[0] + s * (l.second[0] - l.first[0]), y = l.first[1] + s * (l.second[1] - l.first[1]);
+        EXPECT_NEAR(distance(x, y), radius, tol + 1e-6) << x << " " << y;
+        // counter-clockwise ellipse: right of it is outside
+        bool outside = (x * x) / (a * a) + (y * y) / (b * b) > 1;
+        EXPECT_EQ(outside, side == gen::Side::right);
+      }
+    }
+  }
+  // inside, a radius above the smallest radius of curvature b^2/a = 10 mm would gouge at t = 0
+  gen::Options o = options(gen::Form::expanded, tol);
+  o.tool_radius = 12;
+  try {
+    gen::generate(ellipse, o);
+    FAIL() << "no gouge reported";
+  } catch (const std::runtime_error& e) {
+    std::string what = e.what();
+    EXPECT_NE(what.find("gouge"), std::string::npos) << what;
+    EXPECT_NE(what.find("10.0000 mm at t = 0"), std::string::npos) << what;
+  }
+}
+
+TEST(Gen, RadialShapeErrorPlacementOfSeed000) {
+  auto spiral = curve("spiral");
+  gen::Options o = options(gen::Form::expanded, 0.005);
+  o.lines = geom::LineMethod::radial_error;
+  auto radial = gen::generate(spiral, o);
+  o.lines = geom::LineMethod::equal_error_on_curve;
+  auto chord = gen::generate(spiral, o);
+  ASSERT_TRUE(radial.within_tolerance);
+  // measured along the ray the error is never below the perpendicular one: more points
+  EXPECT_GE(radial.stats.points, chord.stats.points);
+  // independently, seed 000's shape error: along the ray from the centre to the curve, where it meets the chord
+  auto lines = contour_lines(radial.text, machine::default_mill());
+  double worst = 0;
+  double unwrap = 0, last_angle = 0;
+  auto angle_of = [&](const geom::Vec3& p) {
+    double a = std::atan2(p[1], p[0]);
+    while (a + unwrap < last_angle - 1e-9) unwrap += 2 * std::numbers::pi;
+    last_angle = a + unwrap;
+    return last_angle;
+  };
+  for (const auto& l : lines) {
+    double a0 = angle_of(l.first), a1 = angle_of(l.second);
+    for (int k = 1; k < 40; ++k) {
+      double th = a0 + (a1 - a0) * k / 40, r = 1 + 2 * th;
+      double ux = std::cos(th), uy = std::sin(th);
+      double ex = l.second[0] - l.first[0], ey = l.second[1] - l.first[1];
+      double rho = (l.first[0] * ey - l.first[1] * ex) / (ux * ey - uy * ex);  // ray meets the chord
+      worst = std::max(worst, std::fabs(r - rho));
+    }
+  }
+  EXPECT_LE(worst, 0.005 + 1e-6);
+  EXPECT_GT(worst, 0.004);
 }

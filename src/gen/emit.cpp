@@ -1,0 +1,123 @@
+#include "gen/emit.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace ncurve::gen::detail {
+
+using geom::Sym;
+using geom::SymOp;
+using geom::Vec3;
+
+void Writer::block(const std::string& b) {
+  text += b;
+  text += '\n';
+  ++line;
+}
+
+void Writer::lines(const std::string& t) {
+  std::size_t pos = 0;
+  while (pos <= t.size()) {
+    std::size_t eol = t.find('\n', pos);
+    if (eol == std::string::npos) eol = t.size();
+    if (eol > pos) block(t.substr(pos, eol - pos));
+    pos = eol + 1;
+  }
+}
+
+std::string comment_text(std::string s) {
+  for (char& c : s) {
+    if (c == '(' || c == ')') c = ' ';
+    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  if (s.size() > 200) s.resize(200);
+  return s;
+}
+
+int decimals_of(double increment) { return std::max(0, static_cast<int>(std::lround(-std::log10(increment)))); }
+
+std::string number(double v, int decimals) {
+  std::string s = fmt::format("{:.{}f}", v, decimals);
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+  }
+  if (s == "-0." || s == "-0") s = "0.";
+  if (s.find('.') == std::string::npos) s += '.';
+  return s;
+}
+
+bool is_lathe(const Options& o) { return o.profile.lathe(); }
+
+double feed_of(const Options& o) { return o.feed > 0 ? o.feed : (is_lathe(o) ? 0.1 : 200.0); }
+
+std::string AxisWords::operator()(const Vec3& p) const {
+  if (is_lathe(o)) return fmt::format("X{} Z{}", number(2 * p[0], decimals), number(p[2], decimals));
+  std::string s = fmt::format("X{} Y{}", number(p[0], decimals), number(p[1], decimals));
+  if (with_z) s += fmt::format(" Z{}", number(p[2], decimals));
+  return s;
+}
+
+std::string header(const geom::Curve& curve, const Options& o, const std::string& method) {
+  std::string params;
+  for (const auto& p : curve.params()) params += fmt::format(" {}={:.10g}", p.name, p.value);
+  std::string text =
+      fmt::format("O{:04d} (NCURVE {} {})\n(CURVE {}{} T={:.10g}..{:.10g})\n(TOLERANCE {} MM, FORM {}{})\n",
+                  o.program_number, comment_text(curve.name()), comment_text(to_string(o.form)),
+                  comment_text(curve.name()), comment_text(params), curve.t0(), curve.t1(), o.tol,
+                  comment_text(to_string(o.form)), method.empty() ? "" : ", " + comment_text(method));
+  if (o.tool_radius > 0)
+    text += fmt::format("(CUTTER CENTRE PATH: TOOL RADIUS {} MM, {} OF THE CURVE)\n", o.tool_radius,
+                        o.side == Side::left ? "LEFT" : "RIGHT");
+  return text;
+}
+
+std::string modes(const Options& o) {
+  if (is_lathe(o)) return o.profile.gcode_system == 'A' ? "G21 G18 G99" : "G21 G18 G90 G95";
+  return "G21 G17 G90 G94 G54";
+}
+
+Frame frame(const Options& o, const AxisWords& words, const Vec3& start, const Vec3& end, int dec, double feed) {
+  Frame f;
+  if (is_lathe(o)) {
+    f.before_start = fmt::format("G00 X{} Z{}", number(2 * (start[0] + o.clearance), dec),
+                                 number(start[2] + o.clearance, dec));
+    f.to_depth = fmt::format("G01 {} F{}", words(start), number(feed, 4));
+    f.retract = fmt::format("G00 X{}", number(2 * (end[0] + o.clearance), dec));
+    return f;
+  }
+  f.before_start = fmt::format("G00 Z{}\nX{} Y{}", number(o.clearance, dec), number(start[0], dec),
+                               number(start[1], dec));
+  f.to_depth = fmt::format("G01 Z{} F{}", number(start[2], dec), number(feed, 4));
+  f.retract = fmt::format("G00 Z{}", number(o.clearance, dec));
+  return f;
+}
+
+Sym axis_sym(const geom::Curve& curve, const AxisMap& map, int axis) {
+  Sym s = map.from[axis] >= 0 ? curve.position()[map.from[axis]] : geom::konst(0);
+  return geom::make(SymOp::add, s, geom::konst(map.offset[axis]));
+}
+
+MacroWords macro_words(const std::vector<std::pair<char, Sym>>& axes, int& next_temp) {
+  MacroWords mw;
+  std::vector<std::pair<int, Sym>> temps;
+  for (const auto& [letter, s] : axes) {
+    Sym limited = geom::limit_depth(s, 4, next_temp, temps);  // X[...] adds the fifth bracket
+    mw.words += fmt::format("{}{}[{}]", mw.words.empty() ? "" : " ", letter, geom::to_macro(limited));
+  }
+  for (const auto& [var, s] : temps) mw.assignments.push_back(fmt::format("#{}={}", var, geom::to_macro(s)));
+  return mw;
+}
+
+std::vector<std::pair<char, Sym>> point_axes(const geom::Curve& curve, const AxisMap& map, const Options& o,
+                                             bool with_z) {
+  if (is_lathe(o))
+    return {{'X', geom::make(SymOp::mul, geom::konst(2), axis_sym(curve, map, 0))}, {'Z', axis_sym(curve, map, 2)}};
+  std::vector<std::pair<char, Sym>> axes{{'X', axis_sym(curve, map, 0)}, {'Y', axis_sym(curve, map, 1)}};
+  if (with_z) axes.emplace_back('Z', axis_sym(curve, map, 2));
+  return axes;
+}
+
+}  // namespace ncurve::gen::detail

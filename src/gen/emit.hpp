@@ -1,0 +1,63 @@
+// Pieces of program text shared by the program forms: numbers as the control reads them,
+// axis words, the header, the approach and retract, curve expressions in macro variables.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gen/generate.hpp"
+
+namespace ncurve::gen::detail {
+
+constexpr int kFirstTemp = 150;  // macro temporaries #150..
+
+// Builds the text and counts its lines (to find the contour's blocks in the round trip).
+struct Writer {
+  std::string text;
+  std::uint32_t line = 0;
+  void block(const std::string& b);
+  void lines(const std::string& text);  // each non-empty line a block
+};
+
+std::string comment_text(std::string s);
+int decimals_of(double increment);
+std::string number(double v, int decimals);
+bool is_lathe(const Options& o);
+double feed_of(const Options& o);
+
+// Letters and values for the machine axes of a point (lathe X as a diameter).
+struct AxisWords {
+  const Options& o;
+  int decimals;
+  bool with_z;  // mill: Z follows the curve
+  std::string operator()(const geom::Vec3& p) const;
+};
+
+std::string header(const geom::Curve& curve, const Options& o, const std::string& method);
+std::string modes(const Options& o);
+
+// Approach before the contour and retract after it.
+struct Frame {
+  std::string before_start;  // rapid moves to above the start point
+  std::string to_depth;      // feed to the start of the contour
+  std::string retract;
+};
+Frame frame(const Options& o, const AxisWords& words, const geom::Vec3& start, const geom::Vec3& end, int dec,
+            double feed);
+
+// Machine axis `axis` of the curve point at #100 (lathe X as a radius; the caller doubles it).
+geom::Sym axis_sym(const geom::Curve& curve, const AxisMap& map, int axis);
+
+// Assignments of temporaries (from next_temp on) and the words X[..] Y[..] for the machine
+// axes given as expressions (letter, expression).
+struct MacroWords {
+  std::vector<std::string> assignments;
+  std::string words;
+};
+MacroWords macro_words(const std::vector<std::pair<char, geom::Sym>>& axes, int& next_temp);
+
+// The axes of the curve point at #100 as the control's words.
+std::vector<std::pair<char, geom::Sym>> point_axes(const geom::Curve& curve, const AxisMap& map, const Options& o,
+                                                   bool with_z);
+
+}  // namespace ncurve::gen::detail

@@ -1,0 +1,46 @@
+// The program forms, each writing the text and the lines of its contour for the round trip.
+#pragma once
+#include <string>
+
+#include "gen/emit.hpp"
+
+namespace ncurve::gen::detail {
+
+// What every form needs to know about the curve on this machine.
+struct Context {
+  const geom::Curve& curve;
+  const Options& o;
+  AxisMap map;
+  bool with_z;  // mill: Z follows the curve
+  int dec;      // decimals of the machine increment
+  double feed;
+  AxisWords words;
+  geom::Fit fit;
+  geom::Vec3 start, end;  // snapped machine coordinates of the curve's ends
+};
+
+struct Emitted {
+  std::string text;
+  std::uint32_t first = 0, last = 0;  // the contour's lines in the text
+  std::vector<std::pair<std::string, double>> parameters;  // control parameters the program needs
+};
+
+std::string arc_words(const Context& c, const geom::Piece& p);  // I J (K) of an arc
+void parameter_blocks(Writer& w, const geom::Curve& curve);      // #101=.. (NAME: DOC)
+// Rapid to above the start point given as macro words, then feed to it.
+void approach(Writer& w, const Context& c, const MacroWords& start);
+
+Emitted adaptive_macro(const Context& c);
+Emitted cycle(const Context& c);
+
+// The adaptive macro's step rule run natively (what the control will compute): the parameters
+// of the vertices for a step factor; exposed for tests and benchmarks.
+struct AdaptiveRule {
+  double offset = 0;     // vertices moved outward from the curve by this much (tolerance band), mm
+  double factor = 0;     // parameter step = factor / sqrt(curvature ahead) / speed
+  double min_curvature = 0;
+  double first_step = 0;  // parameter step of the first move
+};
+AdaptiveRule adaptive_rule(const Context& c);
+
+}  // namespace ncurve::gen::detail
