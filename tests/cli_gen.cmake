@@ -45,3 +45,45 @@ string(FIND "${err}" "90" at)
 if(at EQUAL -1)
   message(SEND_ERROR "the pole error does not say where: ${err}")
 endif()
+
+# runs a command, checks its exit code, and leaves its output in `out` and `err`
+function(run_expect want what)
+  execute_process(COMMAND ${ARGN} OUTPUT_VARIABLE o ERROR_VARIABLE e RESULT_VARIABLE rc)
+  expect_rc("${rc}" ${want} "${what}")
+  set(out "${o}" PARENT_SCOPE)
+  set(err "${e}" PARENT_SCOPE)
+endfunction()
+
+function(expect_text text needle what)
+  string(FIND "${text}" "${needle}" at)
+  if(at EQUAL -1)
+    message(SEND_ERROR "${what}: no '${needle}' in:\n${text}")
+  endif()
+endfunction()
+
+# adaptive macro: runs on its own
+run_expect(0 "gen adaptive-macro" ${NCURVE} gen spiral --form adaptive-macro -o ${OUT}/gen_adaptive.nc)
+run_expect(0 "run the adaptive macro" ${NCURVE} run ${OUT}/gen_adaptive.nc)
+
+# the G102 cycle: the parameter it needs is printed, and with it the program runs
+run_expect(0 "gen cycle" ${NCURVE} gen spiral --form cycle -o ${OUT}/gen_cycle.nc --json)
+expect_text("${out}" "\"6050\": 102" "gen cycle --json parameters")
+run_expect(0 "gen cycle text" ${NCURVE} gen spiral --form cycle -o ${OUT}/gen_cycle.nc)
+expect_text("${out}" "No.6050 = 102" "gen cycle names its parameter")
+run_expect(0 "run the cycle with its parameter" ${NCURVE} run ${OUT}/gen_cycle.nc --param 6050=102)
+run_expect(1 "run the cycle without its parameter" ${NCURVE} run ${OUT}/gen_cycle.nc)
+run_expect(2 "an unknown parameter" ${NCURVE} run ${OUT}/gen_cycle.nc --param 9999=1)
+expect_text("${err}" "9999" "the unknown parameter is named")
+
+# tool radius: the cutter centre, and the gouge named
+run_expect(0 "gen with a tool radius" ${NCURVE} gen ellipse --tool-radius 5 --side right --json)
+expect_text("${out}" "\"tool_radius\": 5.0" "gen --json tool_radius")
+run_expect(1 "gen with a gouging tool radius" ${NCURVE} gen ellipse --tool-radius 12 --side left)
+expect_text("${err}" "gouge" "the gouge is reported")
+
+# the plot: curve, path and deviation
+run_expect(0 "gen --plot" ${NCURVE} gen sine --form arcs --plot ${OUT}/gen_plot.svg -o ${OUT}/gen_plot.nc)
+file(READ ${OUT}/gen_plot.svg svg)
+expect_text("${svg}" "<svg" "plot")
+expect_text("${svg}" "stroke:#d22" "plot path")
+expect_text("${svg}" "deviation per move" "plot deviation")

@@ -155,6 +155,13 @@ int gen_command(const GenArgs& a) {
     }
   }
   const auto& s = r.stats;
+  if (!a.plot.empty()) {
+    std::ofstream f(a.plot, std::ios::binary);
+    if (!f || !(f << gen::plot_svg(r.cutter_centre ? *r.cutter_centre : *curve, o, s))) {
+      std::cerr << fmt::format("{}: error: cannot write the plot\n", a.plot);
+      return 2;
+    }
+  }
   if (a.json) {
     nlohmann::json j;
     j["curve"] = curve->name();

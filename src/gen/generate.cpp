@@ -142,6 +142,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
     }
   };
   Vec3 first{keep.moves[0].start[0], keep.moves[0].start[1], keep.moves[0].start[2]};
+  s.path.push_back(first);
   double t_prev = project(first, 1e-3 + 10 * o.tol);
   note(dist(first, map(curve.point(t_prev))), t_prev);
   const Vec3 curve_end = map(curve.point(curve.t1()));
@@ -167,6 +168,20 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
     };
     geom::Worst w = geom::max_distance(curve, place, t_prev, t_end, d);
     note(w.distance, w.t);
+    s.deviation.emplace_back(t_end, w.distance);
+    if (piece.arc) {
+      const int samples = 16;
+      for (int k = 1; k < samples; ++k) {
+        double a = m.sweep * k / samples;
+        double u0 = piece.start[plane.u_axis] - piece.centre[plane.u_axis];
+        double v0 = piece.start[plane.v_axis] - piece.centre[plane.v_axis];
+        Vec3 q = piece.start;
+        q[plane.u_axis] = piece.centre[plane.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
+        q[plane.v_axis] = piece.centre[plane.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
+        s.path.push_back(q);
+      }
+    }
+    s.path.push_back(piece.end);
     t_prev = t_end;
   }
   return s;
@@ -338,6 +353,7 @@ Result generate(const geom::Curve& contour, const Options& o) {
   Options on_control = o;
   for (const auto& [key, value] : r.parameters) machine::set_parameter(on_control.profile, key, value);
   r.stats = round_trip(r.text, curve, on_control, e.first, e.last);
+  r.cutter_centre = std::move(cutter_centre);
   r.within_tolerance = r.stats.max_deviation <= o.tol;
   return r;
 }

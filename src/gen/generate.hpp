@@ -2,6 +2,7 @@
 // interpreter and measured against the exact curve.
 #pragma once
 #include <string>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -46,10 +47,15 @@ struct Stats {
   double max_deviation = 0;  // round trip: largest distance from the curve to the path, mm
   double worst_t = 0;        // where it is
   geom::Vec3 worst_point{};  // machine coordinates of the curve point there
+  // for plots: the contour as points (arcs sampled), and each move's largest deviation at the
+  // curve parameter where it ends
+  std::vector<geom::Vec3> path;
+  std::vector<std::pair<double, double>> deviation;  // (t, mm)
 };
 
 struct Result {
   std::string text;
+  std::optional<geom::Curve> cutter_centre;  // with a tool radius: the offset curve the path follows
   std::vector<std::pair<std::string, double>> parameters;  // to set on the control, e.g. {"6050", 102}
   Stats stats;
   bool within_tolerance = false;
@@ -62,5 +68,9 @@ Result generate(const geom::Curve& curve, const Options& o);
 // program) against the curve; throws with the interpreter's alarm if the program fails.
 Stats round_trip(const std::string& text, const geom::Curve& curve, const Options& o, std::uint32_t first_line,
                  std::uint32_t last_line);
+
+// An SVG picture: the curve, the path (with its vertices) in the machine plane, and the deviation
+// along the curve against the tolerance.
+std::string plot_svg(const geom::Curve& curve, const Options& o, const Stats& s);
 
 }  // namespace ncurve::gen

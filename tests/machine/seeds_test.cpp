@@ -139,3 +139,56 @@ TEST(Seed001, G102TurnsCAndItsRules) {
   auto missing = g102("G102 X50. Y0. I-30. J0. A1.");
   EXPECT_EQ(missing.alarm_code(), "MC3002");
 }
+
+TEST(Seed001, G102BeyondTheSeedClockwiseToleranceAndRamp) {
+  // clockwise (D2): from radius 30 at 0 degrees one turn inward... here outward by Q10 to radius 40
+  auto cw = g102("G102 X40. Y0. I-30. J0. Q10. A1. D2. F500.");
+  ASSERT_TRUE(cw.result.ok()) << nc::format(*cw.result.alarm);
+  auto ms = cw.motions();
+  ASSERT_EQ(ms.size(), 1u + 360u);
+  for (std::size_t i = 1; i < ms.size(); ++i) {
+    double theta = -static_cast<double>(i) * std::numbers::pi / 180;  // clockwise
+    double rr = 30 + 10 * i / 360.0;
+    EXPECT_NEAR(ms[i].end[0], rr * std::cos(theta), 0.0005 + 1e-9) << i;
+    EXPECT_NEAR(ms[i].end[1], rr * std::sin(theta), 0.0005 + 1e-9) << i;
+  }
+  // chord error T instead of an angle step: every chord's largest distance from the spiral within T
+  // (plus the rounding of its end points), and fewer points where the radius is small
+  const double t = 0.002;
+  auto tol = g102("G102 X50. Y0. I-30. J0. Q10. T0.002 F500.");
+  ASSERT_TRUE(tol.result.ok()) << nc::format(*tol.result.alarm);
+  auto pts = tol.motions();
+  ASSERT_GT(pts.size(), 20u);
+  double unwrap = 0, last = 0, worst = 0;
+  auto angle = [&](const auto& p) {
+    double a = std::atan2(p[1], p[0]);
+    while (a + unwrap < last - 1e-9) unwrap += 2 * std::numbers::pi;
+    return last = a + unwrap;
+  };
+  angle(pts[0].end);
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const auto &p0 = pts[i - 1].end, &p1 = pts[i].end;
+    double a0 = last, a1 = angle(p1);
+    for (int k = 1; k < 32; ++k) {  // distance of spiral points to the chord
+      double th = a0 + (a1 - a0) * k / 32, rr = 30 + 10 * th / (2 * std::numbers::pi);
+      double x = rr * std::cos(th), y = rr * std::sin(th);
+      double ex = p1[0] - p0[0], ey = p1[1] - p0[1];
+      worst = std::max(worst, std::fabs((x - p0[0]) * ey - (y - p0[1]) * ex) / std::hypot(ex, ey));
+    }
+  }
+  EXPECT_LE(worst, t + 0.0008);
+  EXPECT_GT(worst, 0.5 * t);  // the step uses the tolerance
+  // a spiral ramp: K is the Z lead per turn, Z an end Z that wins over K
+  auto ramp = test::run("G90 G00 X30. Y0. Z0.\nG102 X40. Y0. I-30. J0. Q10. A1. K-2. F500.\nM30\n", g102_mill(), {},
+                        {}, {kDir + "/macros"});
+  ASSERT_TRUE(ramp.result.ok());
+  auto rm = ramp.motions();
+  EXPECT_NEAR(rm[180].end[2], -1.0, 1e-3);
+  EXPECT_NEAR(rm.back().end[2], -2.0, 1e-9);
+  auto to_z = test::run("G90 G00 X30. Y0. Z0.\nG102 X40. Y0. Z-5. I-30. J0. Q10. A1. K-2. F500.\nM30\n", g102_mill(),
+                        {}, {}, {kDir + "/macros"});
+  ASSERT_TRUE(to_z.result.ok());
+  EXPECT_NEAR(to_z.motions()[180].end[2], -2.5, 1e-3);
+  // a direction other than 2 or 3
+  EXPECT_EQ(g102("G102 X40. Y0. I-30. J0. Q10. A1. D5. F500.").alarm_code(), "MC3003");
+}
