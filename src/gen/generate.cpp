@@ -99,37 +99,32 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
   geom::Placement place = [map](const Vec3& c) { return map(c); };
   geom::Plane plane = plane_of(o.profile);
 
-  // a table of the curve to find where each move starts and ends
-  constexpr int kTable = 8192;
-  std::vector<double> ts(kTable + 1), along(kTable + 1, 0.0);
-  std::vector<Vec3> pts(kTable + 1);
-  for (int i = 0; i <= kTable; ++i) {
-    ts[i] = curve.t0() + (curve.t1() - curve.t0()) * i / kTable;
-    pts[i] = map(curve.point(ts[i]));
-    if (i > 0) along[i] = along[i - 1] + std::sqrt(std::pow(pts[i][0] - pts[i - 1][0], 2) +
-                                                   std::pow(pts[i][1] - pts[i - 1][1], 2) +
-                                                   std::pow(pts[i][2] - pts[i - 1][2], 2));
-  }
   auto dist = [](const Vec3& a, const Vec3& b) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
   };
-  // nearest curve parameter to p, searching forward from index `from` over about `reach` mm
-  std::size_t cursor = 0;
-  auto project = [&](const Vec3& p, double reach) {
-    std::size_t best = cursor;
-    double best_d = dist(p, pts[cursor]);
-    for (std::size_t i = cursor + 1; i < pts.size() && along[i] - along[cursor] <= reach; ++i) {
-      double d = dist(p, pts[i]);
-      if (d < best_d) { best_d = d; best = i; }
+  // nearest curve parameter to p, searching forward from t_from over about `reach` mm of curve
+  // (a window scaled by the local speed: the contour follows the curve in order, so a nearby turn
+  // of a spiral is never taken for this one)
+  const double t_first = curve.t0(), t_last = curve.t1();
+  auto speed_at = [&](double t) {
+    Vec3 d = curve.d1(t);
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  };
+  auto project = [&](const Vec3& p, double t_from, double reach) {
+    constexpr int kSamples = 24;
+    double hi = std::min(t_last, t_from + reach / std::max(speed_at(t_from), 1e-12));
+    double step = (hi - t_from) / kSamples, best_t = t_from, best_d = dist(p, map(curve.point(t_from)));
+    for (int i = 1; i <= kSamples; ++i) {
+      double t = t_from + step * i;
+      double d = dist(p, map(curve.point(t)));
+      if (d < best_d) { best_d = d; best_t = t; }
     }
-    double lo = ts[best > 0 ? best - 1 : 0], hi = ts[std::min(best + 1, pts.size() - 1)];
-    if (best > cursor || cursor == 0) lo = std::max(lo, ts[cursor]);
-    for (int k = 0; k < 100 && hi - lo > 1e-13; ++k) {
-      double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-      if (dist(p, map(curve.point(m1))) < dist(p, map(curve.point(m2)))) hi = m2; else lo = m1;
+    double lo = std::max(t_from, best_t - step), up = std::min(hi, best_t + step);
+    for (int k = 0; k < 100 && up - lo > 1e-13 * std::max(1.0, std::fabs(up)); ++k) {
+      double m1 = lo + (up - lo) / 3, m2 = up - (up - lo) / 3;
+      if (dist(p, map(curve.point(m1))) < dist(p, map(curve.point(m2)))) up = m2; else lo = m1;
     }
-    cursor = best;
-    return 0.5 * (lo + hi);
+    return 0.5 * (lo + up);
   };
 
   if (keep.moves.empty()) throw std::runtime_error("the generated program cuts no contour");
@@ -143,7 +138,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
   };
   Vec3 first{keep.moves[0].start[0], keep.moves[0].start[1], keep.moves[0].start[2]};
   s.path.push_back(first);
-  double t_prev = project(first, 1e-3 + 10 * o.tol);
+  double t_prev = project(first, t_first, 1e-3 + 10 * o.tol);
   note(dist(first, map(curve.point(t_prev))), t_prev);
   const Vec3 curve_end = map(curve.point(curve.t1()));
   for (const auto& m : keep.moves) {
@@ -155,7 +150,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
     piece.centre = m.center;
     piece.ccw = m.sweep > 0;
     s.path_length += m.length;
-    double t_end = project(piece.end, 3 * m.length + 10 * o.tol + 1e-3);
+    double t_end = project(piece.end, t_prev, 3 * m.length + 10 * o.tol + 1e-3);
     if (last_move) {  // the contour must reach the end of the curve
       if (dist(piece.end, curve_end) > o.tol)
         throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",

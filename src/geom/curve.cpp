@@ -23,6 +23,12 @@ std::string upper(std::string s) {
 
 double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
+void variables_of(const Sym& e, std::vector<int>& out) {
+  if (e->op == SymOp::var) out.push_back(e->var);
+  if (e->a) variables_of(e->a, out);
+  if (e->b) variables_of(e->b, out);
+}
+
 }  // namespace
 
 const std::vector<CurveSpec>& catalogue() {
@@ -134,6 +140,17 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
     }
     nc::CompiledExpr code = nc::compile_expression(macro, origin);
     sym_pos_[a] = from_code(code.code, origin);
+    std::vector<int> used;
+    variables_of(sym_pos_[a], used);
+    for (int var : used) {
+      bool known = var == kTVar;
+      for (const auto& p : params_) known = known || p.var == var;
+      if (!known)
+        throw std::runtime_error(fmt::format(
+            "{}: the expression reads #{}, which is neither t (#{}) nor a parameter (a name next to digits? "
+            "spaces do not separate words in the macro language)",
+            origin, var, kTVar));
+    }
   }
   compile(options);
 }

@@ -168,6 +168,14 @@ TEST(Gen, BadCurvesAreNamed) {
   }
   EXPECT_THROW(geom::Curve(*geom::find_curve("spiral"), {{"radius", 3}}), std::runtime_error);
   EXPECT_THROW(gen::generate(curve("spiral"), options(gen::Form::expanded, 0.0004)), std::runtime_error);
+  // spaces do not separate words: "A 6" reads #1016, which the curve must not touch (found by fuzzing)
+  geom::CurveSpec glued{"expr", "", {{"A", 1, ""}}, "A 6", "t", "0", 0, 10, ""};
+  try {
+    geom::Curve c(glued, {});
+    FAIL() << "no error for a stray variable";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("#1016"), std::string::npos) << e.what();
+  }
   // the G102 cycle is the spiral's
   EXPECT_THROW(gen::generate(curve("ellipse"), options(gen::Form::cycle, 0.005)), std::runtime_error);
 }
