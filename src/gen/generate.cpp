@@ -269,6 +269,7 @@ Emitted equal_step_macro(const Context& c) {
 namespace detail {
 
 std::string arc_words(const Context& c, const geom::Piece& p) {
+  if (c.o.profile.arcs_with_r) return fmt::format("R{}", number(p.r, c.dec));
   if (is_lathe(c.o))
     return fmt::format("I{} K{}", number(p.centre[0] - p.start[0], c.dec), number(p.centre[2] - p.start[2], c.dec));
   return fmt::format("I{} J{}", number(p.centre[0] - p.start[0], c.dec), number(p.centre[1] - p.start[1], c.dec));
@@ -329,6 +330,9 @@ Result generate(const geom::Curve& contour, const Options& o) {
             geom::Fit{curve, place, grid, plane_of(o.profile), o.tol * 0.999},
             grid.snap(map(curve.point(curve.t0()))),
             grid.snap(map(curve.point(curve.t1())))};
+  c.fit.arcs_with_r = o.profile.arcs_with_r;
+  c.fit.r_step = o.profile.increment;
+  c.fit.arc_radius_limit = o.profile.arc_radius_tolerance * 0.999;
   for (const auto& p : curve.params()) {  // the spiral's centre; other curves: their origin
     if (p.name == "cx") c.fit.centre[0] = p.value;
     if (p.name == "cy") c.fit.centre[1] = p.value;

@@ -442,10 +442,37 @@ double piece_error(const Fit& f, const Piece& p) {
 // Snaps end points and centre as the program will carry them: the centre is written relative to
 // the snapped start point, so it snaps on the same grid.
 Piece snapped(const Fit& f, Piece p) {
+  const Vec3 exact_centre = p.centre;
   p.start = f.grid.snap(p.start);
   p.end = f.grid.snap(p.end);
-  if (p.arc) p.centre = f.grid.snap(p.centre);
+  if (!p.arc) return p;
+  p.centre = f.grid.snap(p.centre);
+  if (!f.arcs_with_r) return p;
+  // R rounded to its increment; the centre where the control puts it (left of the chord for
+  // G03 with R > 0, negative R beyond 180 degrees)
+  const int u = f.plane.u_axis, v = f.plane.v_axis;
+  double su = p.start[u], sv = p.start[v], du = p.end[u] - su, dv = p.end[v] - sv;
+  double d = std::hypot(du, dv);
+  double r = std::round(std::hypot(su - exact_centre[u], sv - exact_centre[v]) / f.r_step) * f.r_step;
+  double side = du * (exact_centre[v] - sv) - dv * (exact_centre[u] - su);  // > 0: centre left of the chord
+  bool major = (side > 0) != p.ccw;
+  p.r = major ? -r : r;
+  double half = d / 2, h = std::sqrt(std::max(0.0, r * r - half * half));
+  double sign = (p.ccw ? 1.0 : -1.0) * (p.r > 0 ? 1.0 : -1.0);
+  if (d > 0) {
+    p.centre[u] = su + du / 2 - sign * h * dv / d;
+    p.centre[v] = sv + dv / 2 + sign * h * du / d;
+  }
   return p;
+}
+
+// The control's end-point radius check (No.3410) on the arc as written.
+bool radius_check_passes(const Fit& f, const Piece& p) {
+  if (!p.arc || f.arcs_with_r) return true;
+  const int u = f.plane.u_axis, v = f.plane.v_axis;
+  double rs = std::hypot(p.start[u] - p.centre[u], p.start[v] - p.centre[v]);
+  double re = std::hypot(p.end[u] - p.centre[u], p.end[v] - p.centre[v]);
+  return std::fabs(re - rs) <= f.arc_radius_limit;
 }
 
 }  // namespace
@@ -464,8 +491,10 @@ Path fit_arcs(const Fit& f) {
       auto ok = [&](double tb) {
         trial.clear();
         if (!biarc(f, ta, tb, trial)) return false;
-        for (auto& p : trial)
-          if (piece_error(f, snapped(f, p)) > f.tol) return false;
+        for (auto& p : trial) {
+          Piece s = snapped(f, p);
+          if (!radius_check_passes(f, s) || piece_error(f, s) > f.tol) return false;
+        }
         return true;
       };
       double guess = std::min(stop, ta + 4 * step_guess(f, ta, f.tol));

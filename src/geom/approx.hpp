@@ -29,6 +29,7 @@ struct Piece {
   Vec3 start{}, end{}, centre{};  // machine coordinates as emitted (snapped)
   bool ccw = false;
   double t0 = 0, t1 = 0;  // curve parameters the piece stands for
+  double r = 0;           // arcs with R words: the R written (negative beyond 180 degrees)
 };
 
 struct Path {
@@ -47,6 +48,10 @@ struct Fit {
   Plane plane;
   double tol;
   Vec3 centre{0, 0, 0};  // radial_error: machine coordinates of the centre
+  // arcs as the control will check and draw them
+  bool arcs_with_r = false;        // R words: the control finds the centre from R and the ends
+  double r_step = 0.001;           // increment of an R word
+  double arc_radius_limit = 1e300;  // No.3410: start and end radius may differ by this much
 };
 
 Path fit_lines(const Fit& fit, LineMethod method);

@@ -108,6 +108,10 @@ void machine_table(MachineProfile& p, const toml::table& t, const std::string& o
       std::string v = text(origin, node, key);
       if (v != "A" && v != "B" && v != "C") fail(origin, node, "gcode_system must be \"A\", \"B\" or \"C\"");
       p.gcode_system = v[0];
+    } else if (key == "arc_words") {
+      std::string v = text(origin, node, key);
+      if (v != "IJK" && v != "R") fail(origin, node, "arc_words must be \"IJK\" (centre offsets) or \"R\" (radius)");
+      p.arcs_with_r = v == "R";
     } else if (key == "diameter_programming") p.diameter_x = flag(origin, node, key);
     else if (key == "block_skip") p.block_skip = flag(origin, node, key);
     else if (key == "macro_call_nesting") p.macro_nesting = static_cast<int>(number(origin, node, key));

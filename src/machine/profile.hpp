@@ -39,6 +39,7 @@ struct MachineProfile {
   int macro_nesting = 4;            // G65/G66/custom calls: 4 on 0i/16i, 5 on 30i
   int subprogram_nesting = 10;      // M98 calls: 10 on 0i, 15 on 30i
   double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
+  bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   std::array<int, 10> g_code_macros{};  // No.6050..6059: G code that calls O9010..O9019
   std::array<int, 10> m_code_macros{};  // No.6080..6089: M code that calls O9020..O9029
   std::array<int, 9> m_code_subprograms{};  // No.6071..6079: M code that calls O9001..O9009

@@ -327,3 +327,37 @@ TEST(Gen, RadialShapeErrorPlacementOfSeed000) {
   EXPECT_LE(worst, 0.005 + 1e-6);
   EXPECT_GT(worst, 0.004);
 }
+
+TEST(Gen, ArcsByRadiusAndWithinTheControlsRadiusCheck) {
+  const double a = 40, b = 20;
+  auto ellipse = curve("ellipse", {{"a", a}, {"b", b}});
+  gen::Options o = options(gen::Form::arcs, 0.005);
+  o.profile.arcs_with_r = true;
+  auto r = gen::generate(ellipse, o);
+  ASSERT_TRUE(r.within_tolerance);
+  EXPECT_NE(r.text.find(" R"), std::string::npos);
+  EXPECT_EQ(r.text.find(" I"), std::string::npos);
+  // the control's arcs (centres from R) stay on the closed-form ellipse
+  auto ran = test::run(r.text, o.profile);
+  ASSERT_TRUE(ran.result.ok());
+  int arcs = 0;
+  for (const auto& m : ran.motions()) {
+    if (m.kind != machine::MoveKind::arc) continue;
+    ++arcs;
+    double rr = std::hypot(m.start[0] - m.center[0], m.start[1] - m.center[1]);
+    double mid = std::atan2(m.start[1] - m.center[1], m.start[0] - m.center[0]) + m.sweep / 2;
+    double x = m.center[0] + rr * std::cos(mid), y = m.center[1] + rr * std::sin(mid);
+    EXPECT_NEAR(std::sqrt(x * x / (a * a) + y * y / (b * b)), 1.0, 0.005 / b);
+  }
+  EXPECT_GT(arcs, 10);
+  // a strict end-point radius check (No.3410 = 0.4 um): every I J arc passes it on the control
+  gen::Options strict = options(gen::Form::arcs, 0.005);
+  strict.profile.arc_radius_tolerance = 0.0004;
+  auto checked = gen::generate(ellipse, strict);
+  ASSERT_TRUE(checked.within_tolerance);
+  auto ran_strict = test::run(checked.text, strict.profile);
+  EXPECT_TRUE(ran_strict.result.ok()) << (ran_strict.result.alarm ? nc::format(*ran_strict.result.alarm) : "");
+  // the default fit's arcs would not all pass it
+  auto loose = gen::generate(ellipse, options(gen::Form::arcs, 0.005));
+  EXPECT_FALSE(test::run(loose.text, strict.profile).result.ok());
+}
