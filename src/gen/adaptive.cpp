@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "gen/forms.hpp"
+#include "geom/search.hpp"
 
 namespace ncurve::gen::detail {
 namespace {
@@ -171,21 +172,10 @@ AdaptiveRule adaptive_rule(const Context& c) {
       return w.distance <= tol;
     };
     Turning tn = turning(c, local(c, t0));
-    double lo = std::min(span, 0.8 * nominal / std::sqrt(std::max(tn.k, r.min_curvature)) / tn.speed), hi = lo;
-    while (!ok(lo)) {
-      hi = lo;
-      lo *= 0.5;
-      if (lo < 1e-12 * span) throw std::runtime_error("adaptive macro: no first move within the tolerance");
-    }
-    while (hi == lo || ok(hi)) {
-      lo = hi;
-      if (hi >= span) break;
-      hi = std::min(span, hi * 1.5);
-    }
-    for (int i = 0; i < 40 && hi > lo; ++i) {
-      double mid = 0.5 * (lo + hi);
-      if (ok(mid)) lo = mid; else hi = mid;
-    }
+    double guess = t0 + std::min(span, 0.8 * nominal / std::sqrt(std::max(tn.k, r.min_curvature)) / tn.speed);
+    double lo = geom::longest_step(t0, t0 + span, guess, [&](double t) { return ok(t - t0); }, span, [] {
+                  return std::string("adaptive macro: no first move within the tolerance");
+                }) - t0;
     // not on the edge of a rounding cell: small changes of the control's arithmetic must not
     // move a vertex to the next increment
     auto robust = [&](double dt) { return ok(dt) && ok(dt * (1 - 1e-7)) && ok(dt * (1 + 1e-7)); };
@@ -225,7 +215,6 @@ AdaptiveRule adaptive_rule(const Context& c) {
 Emitted adaptive_macro(const Context& c) {
   const Options& o = c.o;
   const AdaptiveRule rule = adaptive_rule(c);
-  const Turning tn0 = turning(c, local(c, c.curve.t0()));
   const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
 
   Writer w;
