@@ -6,46 +6,6 @@ function(expect_rc rc want what)
   endif()
 endfunction()
 
-set(prog "${OUT}/gen_spiral.nc")
-execute_process(COMMAND ${NCURVE} gen spiral --tol 0.005 --form arcs -o ${prog} --json
-                OUTPUT_VARIABLE out RESULT_VARIABLE rc)
-expect_rc("${rc}" 0 "gen spiral arcs")
-foreach(key curve form tolerance words bytes blocks points path_length max_deviation worst_t within_tolerance)
-  string(FIND "${out}" "\"${key}\"" at)
-  if(at EQUAL -1)
-    message(SEND_ERROR "gen --json lacks '${key}':\n${out}")
-  endif()
-endforeach()
-execute_process(COMMAND ${NCURVE} run ${prog} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
-expect_rc("${rc}" 0 "run the generated program")
-
-execute_process(COMMAND ${NCURVE} gen hyperbola --from -20 --to 20 --machine ${SRC}/profiles/fanuc-lathe.toml
-                        --form macro -o ${OUT}/gen_hyperbola.nc OUTPUT_VARIABLE out RESULT_VARIABLE rc)
-expect_rc("${rc}" 0 "gen lathe hyperbola macro")
-execute_process(COMMAND ${NCURVE} run ${OUT}/gen_hyperbola.nc --machine ${SRC}/profiles/fanuc-lathe.toml
-                RESULT_VARIABLE rc OUTPUT_QUIET)
-expect_rc("${rc}" 0 "run the generated lathe program")
-
-execute_process(COMMAND ${NCURVE} gen --list OUTPUT_VARIABLE out RESULT_VARIABLE rc)
-expect_rc("${rc}" 0 "gen --list")
-foreach(name spiral hyperbola ellipse parabola involute sine cycloid trochoid helix rotor expr)
-  string(FIND "${out}" "${name}" at)
-  if(at EQUAL -1)
-    message(SEND_ERROR "gen --list lacks ${name}")
-  endif()
-endforeach()
-
-execute_process(COMMAND ${NCURVE} gen nosuchcurve RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
-expect_rc("${rc}" 2 "unknown curve")
-execute_process(COMMAND ${NCURVE} gen spiral --radius 3 RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
-expect_rc("${rc}" 2 "unknown parameter")
-execute_process(COMMAND ${NCURVE} gen hyperbola --from -80 --to 100 RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
-expect_rc("${rc}" 1 "curve through a pole")
-string(FIND "${err}" "90" at)
-if(at EQUAL -1)
-  message(SEND_ERROR "the pole error does not say where: ${err}")
-endif()
-
 # runs a command, checks its exit code, and leaves its output in `out` and `err`
 function(run_expect want what)
   execute_process(COMMAND ${ARGN} OUTPUT_VARIABLE o ERROR_VARIABLE e RESULT_VARIABLE rc)
@@ -60,6 +20,28 @@ function(expect_text text needle what)
     message(SEND_ERROR "${what}: no '${needle}' in:\n${text}")
   endif()
 endfunction()
+
+set(prog "${OUT}/gen_spiral.nc")
+run_expect(0 "gen spiral arcs" ${NCURVE} gen spiral --tol 0.005 --form arcs -o ${prog} --json)
+foreach(key curve form tolerance words bytes blocks points path_length max_deviation worst_t within_tolerance)
+  expect_text("${out}" "\"${key}\"" "gen --json")
+endforeach()
+run_expect(0 "run the generated program" ${NCURVE} run ${prog})
+
+run_expect(0 "gen lathe hyperbola macro" ${NCURVE} gen hyperbola --from -20 --to 20
+           --machine ${SRC}/profiles/fanuc-lathe.toml --form macro -o ${OUT}/gen_hyperbola.nc)
+run_expect(0 "run the generated lathe program" ${NCURVE} run ${OUT}/gen_hyperbola.nc
+           --machine ${SRC}/profiles/fanuc-lathe.toml)
+
+run_expect(0 "gen --list" ${NCURVE} gen --list)
+foreach(name spiral hyperbola ellipse parabola involute sine cycloid trochoid helix rotor expr)
+  expect_text("${out}" "${name}" "gen --list")
+endforeach()
+
+run_expect(2 "unknown curve" ${NCURVE} gen nosuchcurve)
+run_expect(2 "unknown parameter" ${NCURVE} gen spiral --radius 3)
+run_expect(1 "curve through a pole" ${NCURVE} gen hyperbola --from -80 --to 100)
+expect_text("${err}" "90" "the pole error says where")
 
 # adaptive macro: runs on its own
 run_expect(0 "gen adaptive-macro" ${NCURVE} gen spiral --form adaptive-macro -o ${OUT}/gen_adaptive.nc)

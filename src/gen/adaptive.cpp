@@ -290,18 +290,7 @@ Emitted adaptive_macro(const Context& c) {
       e = is_lathe(o) && axis == 0 ? geom::make(SymOp::mul, geom::konst(2), moved) : moved;
     }
   }
-  MacroWords vertex = macro_words(axes, next);
-  for (const auto& a : vertex.assignments) w.block(a);
-  Emitted e;
-  e.first = w.line + 1;
-  w.block(fmt::format("G01 {}", vertex.words));
-  e.last = w.line;
-  w.block("END1");
-  w.lines(frame(o, c.words, c.start, c.end, c.dec, c.feed).retract);
-  w.block("M30");
-  w.block("%");
-  e.text = std::move(w.text);
-  return e;
+  return close_loop(w, c, macro_words(axes, next));
 }
 
 }  // namespace ncurve::gen::detail

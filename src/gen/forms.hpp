@@ -30,6 +30,12 @@ void parameter_blocks(Writer& w, const geom::Curve& curve);      // #101=.. (NAM
 // Rapid to above the start point given as macro words, then feed to it.
 void approach(Writer& w, const Context& c, const MacroWords& start);
 
+// The loop's move (its temporaries, then G01 to `move`, the contour's only line), END1, the
+// retract and the end of the program.
+Emitted close_loop(Writer& w, const Context& c, const MacroWords& move);
+// The retract, M30 and the closing %.
+void end_program(Writer& w, const Context& c);
+
 Emitted adaptive_macro(const Context& c);
 Emitted cycle(const Context& c);
 

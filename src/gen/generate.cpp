@@ -221,9 +221,7 @@ Emitted expanded_or_arcs(const Context& c) {
     motion = g;
   }
   e.last = w.line;
-  w.lines(fr.retract);
-  w.block("M30");
-  w.block("%");
+  end_program(w, c);
   e.text = std::move(w.text);
   return e;
 }
@@ -251,22 +249,30 @@ Emitted equal_step_macro(const Context& c) {
   w.block("WHILE [#114 LT #112] DO1");
   w.block("#114=#114+1");
   w.block("#100=#110+#114*#113");
-  for (const auto& a : mp.assignments) w.block(a);
-  Emitted e;
-  e.first = w.line + 1;
-  w.block(fmt::format("G01 {}", mp.words));
-  e.last = w.line;
-  w.block("END1");
-  w.lines(frame(o, c.words, c.start, c.end, c.dec, c.feed).retract);
-  w.block("M30");
-  w.block("%");
-  e.text = std::move(w.text);
-  return e;
+  return close_loop(w, c, mp);
 }
 
 }  // namespace
 
 namespace detail {
+
+void end_program(Writer& w, const Context& c) {
+  w.lines(frame(c.o, c.words, c.start, c.end, c.dec, c.feed).retract);
+  w.block("M30");
+  w.block("%");
+}
+
+Emitted close_loop(Writer& w, const Context& c, const MacroWords& move) {
+  for (const auto& a : move.assignments) w.block(a);
+  Emitted e;
+  e.first = w.line + 1;
+  w.block(fmt::format("G01 {}", move.words));
+  e.last = w.line;
+  w.block("END1");
+  end_program(w, c);
+  e.text = std::move(w.text);
+  return e;
+}
 
 std::string arc_words(const Context& c, const geom::Piece& p) {
   if (c.o.profile.arcs_with_r) return fmt::format("R{}", number(p.r, c.dec));
