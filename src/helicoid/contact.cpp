@@ -1,0 +1,438 @@
+#include "helicoid/contact.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace ncurve::helicoid {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+EndProfile offset_profile(const EndProfile& base, double distance) {
+  auto eval = [base, distance](double u, Vec2& p, Vec2& d) {
+    auto at = [&](double v) {
+      Vec2 q = base.point(v), n = base.outward_normal(v);
+      return Vec2{q.x + distance * n.x, q.y + distance * n.y};
+    };
+    p = at(u);
+    constexpr double h = 1e-5;
+    Vec2 a = at(u - h), b = at(u + h);
+    d = {(b.x - a.x) / (2 * h), (b.y - a.y) / (2 * h)};
+  };
+  return EndProfile(base.name() + " offset", eval, base.u0(), base.period(), false);
+}
+
+}  // namespace
+
+double helix_angle(double lead, double radius) {
+  return lead == 0 ? 0 : std::atan(2 * std::numbers::pi * radius / std::abs(lead)) / kDeg;
+}
+
+std::int64_t Lattice::size(double profile_length) const {
+  auto na = static_cast<std::int64_t>(std::floor(alpha_max / alpha_step + 1e-9));
+  auto ns = static_cast<std::int64_t>(std::floor(profile_length / s_step + 1e-9));
+  return (2 * na + 1) * (ns + 1);
+}
+
+Method method_from_name(const std::string& name) {
+  if (name == "brute") return Method::brute;
+  if (name == "nine-point") return Method::nine_point;
+  if (name == "robust") return Method::robust;
+  throw std::runtime_error(fmt::format("unknown method '{}' (brute, nine-point or robust)", name));
+}
+
+const char* method_name(Method m) {
+  switch (m) {
+    case Method::brute: return "brute";
+    case Method::nine_point: return "nine-point";
+    case Method::robust: return "robust";
+  }
+  return "?";
+}
+
+ContactSearch::ContactSearch(Workpiece work, DiscCutter cutter, Setting setting, Lattice lattice)
+    : work_(std::move(work)), cutter_(std::move(cutter)), setting_(setting), lattice_(lattice),
+      plane_profile_(work_.profile) {
+  if (!(lattice_.alpha_step > 0) || !(lattice_.s_step > 0) || !(lattice_.alpha_max > 0) || lattice_.alpha_max >= 90)
+    throw std::runtime_error("lattice: steps > 0 and 0 < alpha range < 90 degrees");
+  double b = setting_.swing * kDeg, h = work_.hand;
+  axis_ = {0, -h * std::cos(b), std::sin(b)};
+  e2_ = {0, std::sin(b), h * std::cos(b)};
+  na_ = static_cast<int>(std::floor(lattice_.alpha_max / lattice_.alpha_step + 1e-9));
+  ns_ = static_cast<int>(std::floor(cutter_.length() / lattice_.s_step + 1e-9));
+  if (setting_.start_distance <= 0) setting_.start_distance = work_.profile.r_max() + cutter_.outer_radius() + 1;
+  for (const auto& e : cutter_.elements())
+    if (e.kind == ProfileElement::Kind::arc && e.region == "corner") corner_radius_ = e.radius;
+  plane_profile_ = corner_radius_ > 0 ? offset_profile(work_.profile, corner_radius_) : work_.profile;
+}
+
+ContactSearch::Distance ContactSearch::distance(double psi, double alpha, double s) const {
+  Distance out;
+  auto cp = cutter_.at(s);
+  double rho = cp.p.x, w = cp.p.y;
+  double ca = std::cos(alpha * kDeg), sa = std::sin(alpha * kDeg);
+  double A0 = setting_.start_distance;
+  Vec3 radial{-ca, sa * e2_[1], sa * e2_[2]};  // unit, from the cutter axis towards the point
+  out.q = {A0 + rho * radial[0] + w * axis_[0], rho * radial[1] + w * axis_[1], rho * radial[2] + w * axis_[2]};
+  out.n_cutter = {cp.normal.x * radial[0] + cp.normal.y * axis_[0], cp.normal.x * radial[1] + cp.normal.y * axis_[1],
+                  cp.normal.x * radial[2] + cp.normal.y * axis_[2]};
+  double twist = work_.twist();
+  double phi = psi + twist * out.q[2];
+  auto hit = work_.profile.first_hit(phi, out.q[1]);
+  if (!hit.found) {
+    out.d = kInf;
+    return out;
+  }
+  out.hit = true;
+  out.x_hit = hit.x;
+  out.u = hit.u;
+  out.d = out.q[0] - hit.x;
+  // Workpiece normal: dS/du x dS/dz of S(u, z) = (R(phi(z)) p(u), z).
+  Vec2 t = work_.profile.d1(hit.u);
+  double c = std::cos(phi * kDeg), sn = std::sin(phi * kDeg);
+  Vec2 tw{c * t.x - sn * t.y, sn * t.x + c * t.y};
+  double k = twist * kDeg;
+  Vec3 n{tw.y, -tw.x, k * (tw.x * hit.x + tw.y * out.q[1])};
+  if (n[0] * hit.x + n[1] * out.q[1] < 0) n = {-n[0], -n[1], -n[2]};
+  double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  out.n_work = {n[0] / len, n[1] / len, n[2] / len};
+  // Gradient: x_hit moves by -(n_y dQy + n_z dQz) / n_x when the line moves.
+  Vec3 dq_alpha{rho * sa * kDeg, rho * ca * e2_[1] * kDeg, rho * ca * e2_[2] * kDeg};
+  Vec3 dradial_rho{radial[0] * cp.tangent.x, radial[1] * cp.tangent.x, radial[2] * cp.tangent.x};
+  Vec3 dq_s{dradial_rho[0] + cp.tangent.y * axis_[0], dradial_rho[1] + cp.tangent.y * axis_[1],
+            dradial_rho[2] + cp.tangent.y * axis_[2]};
+  auto dx_hit = [&](const Vec3& dq) { return -(n[1] * dq[1] + n[2] * dq[2]) / n[0]; };
+  out.d_alpha = dq_alpha[0] - dx_hit(dq_alpha);
+  out.d_s = dq_s[0] - dx_hit(dq_s);
+  return out;
+}
+
+double ContactSearch::plane_distance(double psi) const {
+  auto hit = plane_profile_.first_hit(psi, 0);
+  if (!hit.found) return std::numeric_limits<double>::quiet_NaN();
+  return hit.x + cutter_.outer_radius() - corner_radius_;
+}
+
+// One phase's search on the lattice: cached evaluations, the nine-point walk, refinement.
+class StepSearch {
+public:
+  StepSearch(const ContactSearch& cs, double psi) : cs_(cs), psi_(psi) {}
+
+  struct Node {
+    int i = 0, j = 0;
+  };
+  // The walk stays within rows j_lo..j_hi (one element of the cutter profile, or all of it).
+  void restrict_rows(int j_lo, int j_hi) { j_lo_ = j_lo, j_hi_ = j_hi; }
+  bool inside(Node n) const { return n.i >= -cs_.na_ && n.i <= cs_.na_ && n.j >= j_lo_ && n.j <= j_hi_; }
+  Node clamp(Node n) const { return {std::clamp(n.i, -cs_.na_, cs_.na_), std::clamp(n.j, j_lo_, j_hi_)}; }
+  double alpha(Node n) const { return n.i * cs_.lattice_.alpha_step; }
+  double s(Node n) const { return n.j * cs_.lattice_.s_step; }
+
+  double value(Node n) {
+    std::int64_t key = (static_cast<std::int64_t>(n.i) << 32) ^ static_cast<std::uint32_t>(n.j);
+    auto [it, fresh] = cache_.try_emplace(key, 0.0);
+    if (fresh) {
+      ++evaluations_;
+      it->second = cs_.distance(psi_, alpha(n), s(n)).d;
+    }
+    return it->second;
+  }
+
+  // Seed 004's nine-point search from `start` with lattice stride `stride`: move the 3x3 stencil
+  // to its smallest value until the centre is smallest. Equal values (within `tie`) move to the
+  // mean of their rows and columns. With `protect`, a centre seen before ends the walk.
+  Node walk(Node start, int stride, double tie, bool protect, int max_moves = 100000) {
+    Node c = clamp(start);
+    std::vector<std::int64_t> seen;
+    for (int move = 0; move < max_moves; ++move) {
+      double best = kInf;
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          Node n{c.i + di * stride, c.j + dj * stride};
+          if (inside(n)) best = std::min(best, value(n));
+        }
+      if (!std::isfinite(best)) return c;
+      double centre = value(c);
+      if (centre <= best + tie) return c;
+      int rows = 0, cols = 0, count = 0;
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          Node n{c.i + di * stride, c.j + dj * stride};
+          if (inside(n) && value(n) <= best + tie) rows += di + 1, cols += dj + 1, ++count;
+        }
+      auto pick = [count](int sum) { return sum > count ? 1 : (sum == count ? 0 : -1); };  // mean >1, =1, <1
+      Node next{c.i + pick(rows) * stride, c.j + pick(cols) * stride};
+      if (next.i == c.i && next.j == c.j) return c;
+      if (protect) {
+        std::int64_t key = (static_cast<std::int64_t>(next.i) << 32) ^ static_cast<std::uint32_t>(next.j);
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) return c;
+        seen.push_back(key);
+      }
+      c = next;
+    }
+    return c;
+  }
+
+  // Coarse to fine: the walk at strides 2^k .. 1.
+  Node descend(Node start, int top_stride, double tie) {
+    Node c = start;
+    for (int stride = top_stride; stride >= 1; stride /= 2) c = walk(c, stride, tie, true);
+    return c;
+  }
+
+  // The smallest value of the quadratic through the stencil of stride `stride` centred on c
+  // (each axis separately): what the lattice minimum underestimates by coarseness.
+  double fitted_minimum(Node c, int stride) {
+    double f0 = value(c), drop = 0;
+    for (int axis = 0; axis < 2; ++axis) {
+      Node a = axis ? Node{c.i, c.j - stride} : Node{c.i - stride, c.j};
+      Node b = axis ? Node{c.i, c.j + stride} : Node{c.i + stride, c.j};
+      if (!inside(a) || !inside(b)) continue;
+      double fa = value(a), fb = value(b), curv = fa - 2 * f0 + fb;
+      if (curv > 0 && std::isfinite(curv)) drop += (fb - fa) * (fb - fa) / (8 * curv);
+    }
+    return f0 - drop;
+  }
+
+  // The lattice minimum refined off the lattice: Newton on the exact gradient with the Hessian
+  // of the 3x3 stencil, each step kept only if the distance falls.
+  struct Refined {
+    double alpha, s, d;
+    ContactSearch::Distance at;
+  };
+  Refined refine(Node c) {
+    restrict_rows(0, cs_.ns_);
+    const double ha = cs_.lattice_.alpha_step, hs = cs_.lattice_.s_step;
+    auto v = [&](int di, int dj) {
+      Node n = clamp({c.i + di, c.j + dj});
+      return value(n);
+    };
+    double f0 = v(0, 0);
+    double haa = (v(1, 0) - 2 * f0 + v(-1, 0)) / (ha * ha);
+    double hss = (v(0, 1) - 2 * f0 + v(0, -1)) / (hs * hs);
+    double has = (v(1, 1) - v(1, -1) - v(-1, 1) + v(-1, -1)) / (4 * ha * hs);
+    double a = alpha(c), s = this->s(c);
+    auto at = eval(a, s);
+    double det = haa * hss - has * has;
+    bool newton = std::isfinite(det) && det > 0 && haa > 0;
+    for (int it = 0; it < 12 && at.hit; ++it) {
+      double da, ds;
+      if (newton) {
+        da = -(hss * at.d_alpha - has * at.d_s) / det;
+        ds = -(-has * at.d_alpha + haa * at.d_s) / det;
+      } else {  // steepest descent scaled to a cell
+        double g = std::hypot(at.d_alpha * ha, at.d_s * hs);
+        if (g == 0) break;
+        da = -at.d_alpha * ha * ha / g;
+        ds = -at.d_s * hs * hs / g;
+      }
+      da = std::clamp(da, -2 * ha, 2 * ha);
+      ds = std::clamp(ds, -2 * hs, 2 * hs);
+      bool improved = false;
+      for (int half = 0; half < 6; ++half) {
+        double na = std::clamp(a + da, -cs_.na_ * ha, cs_.na_ * ha);
+        double ns = std::clamp(s + ds, 0.0, cs_.cutter_.length());
+        auto trial = eval(na, ns);
+        if (trial.d <= at.d) {
+          improved = std::abs(na - a) > 1e-11 || std::abs(ns - s) > 1e-11;
+          a = na, s = ns, at = trial;
+          break;
+        }
+        da /= 2, ds /= 2;
+      }
+      if (!improved || (std::abs(da) < 1e-9 * ha && std::abs(ds) < 1e-9 * hs)) break;
+    }
+    return {a, s, at.d, at};
+  }
+
+  ContactSearch::Distance eval(double a, double s) {
+    ++evaluations_;
+    return cs_.distance(psi_, a, s);
+  }
+
+  // Every lattice point, skipping those whose distance cannot be below the best so far: the hit
+  // lies within the profile's largest radius, so x_hit <= sqrt(r_max^2 - y^2).
+  Node brute() {
+    const double rmax = cs_.work_.profile.r_max();
+    Node best{0, 0};
+    double best_d = kInf;
+    auto consider = [&](Node n) {
+      const double a = alpha(n) * kDeg;
+      auto cp = cs_.cutter_.at(s(n));
+      double rho = cp.p.x, w = cp.p.y;
+      double qx = cs_.setting_.start_distance - rho * std::cos(a);
+      double qy = rho * std::sin(a) * cs_.e2_[1] + w * cs_.axis_[1];
+      if (std::abs(qy) >= rmax) return;
+      if (qx - std::sqrt(rmax * rmax - qy * qy) >= best_d) return;
+      ++evaluations_;
+      double d = cs_.distance(psi_, alpha(n), s(n)).d;
+      if (d < best_d) best_d = d, best = n;
+    };
+    for (int j = 0; j <= cs_.ns_; ++j) consider({0, j});
+    for (int i = -cs_.na_; i <= cs_.na_; ++i)
+      for (int j = 0; j <= cs_.ns_; ++j) consider({i, j});
+    return best;
+  }
+
+  std::int64_t evaluations() const { return evaluations_; }
+  void clear_count() { evaluations_ = 0; }
+
+private:
+  const ContactSearch& cs_;
+  double psi_;
+  int j_lo_ = 0, j_hi_ = cs_.ns_;
+  std::unordered_map<std::int64_t, double> cache_;
+  std::int64_t evaluations_ = 0;
+};
+
+std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method method) const {
+  std::vector<Contact> out;
+  using Node = StepSearch::Node;
+  // Tracing prediction: the line through the two previous contacts.
+  auto predicted = [](const std::vector<Node>& path, Node first) -> Node {
+    if (path.empty()) return first;
+    if (path.size() == 1) return path.back();
+    const auto& a = path[path.size() - 2];
+    const auto& b = path.back();
+    return {2 * b.i - a.i, 2 * b.j - a.j};
+  };
+  std::vector<Node> path;  // lattice contacts so far
+  const Node corner{0, static_cast<int>(std::lround(cutter_.corner_middle() / lattice_.s_step))};
+  // Robust: per element of the cutter profile (corner, each flank) a fine trace of the smallest
+  // distance within its rows, and a coarse trace of its interior (away from the shoulders it
+  // shares with its neighbours), where a separate contact can rise while the fine trace sits on a
+  // shoulder. A coarse trace close to the best is descended to the fine lattice.
+  constexpr int kCoarse = 16;  // lattice cells per coarse step
+  // A trace well above the best is left alone for as many steps as its gap could not close at
+  // twice the fastest rate the gap has changed so far.
+  struct Trace {
+    int j_lo, j_hi;
+    Node first;
+    std::vector<Node> path;
+    bool guarded = false;  // has a coarse trace of its interior
+    double gap = kInf, gap_rate = 0;
+    int idle = 0;     // steps left before the next update
+    int updated = -1; // step of the last update
+    bool due() {
+      if (idle > 0) {
+        --idle;
+        if (!path.empty()) path = {path.back()};  // a stale line no longer predicts
+        return false;
+      }
+      return true;
+    }
+    void schedule(double value, double best, int step_index) {
+      double g = value - best;
+      if (updated >= 0 && std::isfinite(gap) && std::isfinite(g))
+        gap_rate = std::max(gap_rate, std::abs(g - gap) / (step_index - updated));
+      gap = g;
+      updated = step_index;
+      double rate = std::max(gap_rate, 0.01);
+      idle = std::isfinite(g) ? std::max(0, static_cast<int>(g / (2 * rate)) - 1) : 0;
+    }
+  };
+  std::vector<Trace> fine, coarse;
+  {
+    double start = 0;
+    for (const auto& e : cutter_.elements()) {
+      double end = start + e.length();
+      int j_lo = static_cast<int>(std::ceil(start / lattice_.s_step - 1e-9));
+      int j_hi = std::min(ns_, static_cast<int>(std::floor(end / lattice_.s_step + 1e-9)));
+      if (j_hi >= j_lo) fine.push_back({j_lo, j_hi, Node{0, (j_lo + j_hi) / 2}, {}});
+      if (j_hi - j_lo > 4 * kCoarse) {
+        coarse.push_back({j_lo + kCoarse, j_hi - kCoarse, Node{0, (j_lo + j_hi) / 2}, {}});
+        fine.back().guarded = true;
+      }
+      start = end;
+    }
+  }
+  constexpr double kTie = 1e-9;  // mm: well above the evaluation noise (~1e-12), far below any real step
+  for (std::size_t step_index = 0; step_index < psis.size(); ++step_index) {
+    const double psi = psis[step_index];
+    StepSearch step(*this, psi);
+    Node node;
+    switch (method) {
+      case Method::brute: node = step.brute(); break;
+      case Method::nine_point: node = step.walk(predicted(path, corner), 1, 0.0, false); break;
+      case Method::robust: {
+        // The trace that held the contact last time first, then the others that are due.
+        std::size_t lead = 0;
+        for (std::size_t k = 0; k < fine.size(); ++k)
+          if (fine[k].gap < fine[lead].gap) lead = k;
+        double best = kInf;
+        std::vector<double> value(fine.size(), kInf);
+        auto advance = [&](Trace& t, int stride) {
+          step.restrict_rows(t.j_lo, t.j_hi);
+          Node n = t.path.empty() ? step.descend(t.first, 64, kTie) : step.walk(predicted(t.path, t.first), stride, kTie, true);
+          t.path.push_back(n);
+          return n;
+        };
+        // A fine trace resting on a row it shares with a neighbour element is that neighbour's
+        // shoulder, not a contact of its own: it sleeps until its coarse trace wakes it.
+        auto on_shoulder = [&](const Trace& t, Node n) {
+          return (n.j == t.j_lo && t.j_lo > 0) || (n.j == t.j_hi && t.j_hi < ns_);
+        };
+        for (std::size_t k = 0; k < fine.size(); ++k) {
+          std::size_t at = (lead + k) % fine.size();
+          if (at != lead && !fine[at].due()) continue;
+          Node n = advance(fine[at], 1);
+          value[at] = step.value(n);
+          if (value[at] < best) best = value[at], node = n;
+          if (on_shoulder(fine[at], n)) {
+            if (at == lead)
+              for (auto& f : fine) f.idle = 0;
+            else if (fine[at].guarded)
+              fine[at].idle = std::numeric_limits<int>::max();
+          }
+        }
+        for (auto& t : coarse) {  // every step: a new contact can rise faster than any rate seen so far
+          Node n = advance(t, kCoarse);
+          double v = step.fitted_minimum(n, kCoarse);
+          double coarseness = step.value(n) - v;
+          if (v <= best + 2 * t.gap_rate + coarseness + 0.02) {
+            for (std::size_t k = 0; k < fine.size(); ++k) {  // the element holding this coarse trace
+              auto& f = fine[k];
+              if (f.j_lo > t.j_lo || f.j_hi < t.j_hi) continue;
+              step.restrict_rows(f.j_lo, f.j_hi);
+              Node m = step.descend(n, kCoarse / 2, kTie);
+              double vm = step.value(m);
+              if (vm < value[k]) value[k] = vm, f.path = {m}, f.idle = 0;
+              if (vm < best) best = vm, node = m;
+            }
+          }
+          t.schedule(v, best, step_index);
+        }
+        for (std::size_t k = 0; k < fine.size(); ++k)
+          if (std::isfinite(value[k]) && fine[k].idle != std::numeric_limits<int>::max()) fine[k].schedule(value[k], best, step_index);
+        break;
+      }
+    }
+    path.push_back(node);
+    auto refined = step.refine(node);
+    const auto& at = refined.at;
+    Contact c;
+    c.psi = psi;
+    c.A = setting_.start_distance - refined.d;
+    c.alpha = refined.alpha;
+    c.s = refined.s;
+    c.region = cutter_.region(refined.s);
+    c.cutter_point = {at.q[0] - refined.d, at.q[1], at.q[2]};
+    c.work_point = {at.x_hit, at.q[1], at.q[2]};
+    c.u = at.u;
+    c.r = std::hypot(at.x_hit, at.q[1]);
+    double dot = -(at.n_cutter[0] * at.n_work[0] + at.n_cutter[1] * at.n_work[1] + at.n_cutter[2] * at.n_work[2]);
+    c.normal_angle = std::acos(std::clamp(dot, -1.0, 1.0)) / kDeg;
+    c.evaluations = step.evaluations();
+    c.plane_A = plane_distance(psi);
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace ncurve::helicoid

@@ -1,0 +1,99 @@
+#include "helicoid/cutter.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace ncurve::helicoid {
+
+double ProfileElement::length() const {
+  if (kind == Kind::line) return std::hypot(end.x - start.x, end.y - start.y);
+  return radius * std::abs(a1 - a0);
+}
+
+DiscCutter::DiscCutter(std::vector<ProfileElement> elements) : elements_(std::move(elements)) {
+  if (elements_.empty()) throw std::runtime_error("cutter profile: no elements");
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const auto& e = elements_[i];
+    if (!(e.length() > 0)) throw std::runtime_error(fmt::format("cutter profile: element {} has no length", i + 1));
+    if (i > 0) {
+      const auto& prev = elements_[i - 1].end;
+      if (std::hypot(prev.x - e.start.x, prev.y - e.start.y) > 1e-9)
+        throw std::runtime_error(fmt::format("cutter profile: element {} does not start where element {} ends", i + 1, i));
+    }
+    starts_.push_back(total_);
+    total_ += e.length();
+    outer_ = std::max({outer_, e.start.x, e.end.x});
+    if (e.kind == ProfileElement::Kind::arc) {
+      double lo = std::min(e.a0, e.a1), hi = std::max(e.a0, e.a1);
+      if (lo <= 0 && hi >= 0) outer_ = std::max(outer_, e.centre.x + e.radius);
+    }
+  }
+}
+
+DiscCutter DiscCutter::v_insert(double diameter, double corner_radius, double included_angle, double flank_depth) {
+  if (!(diameter > 0) || !(corner_radius >= 0) || !(included_angle > 0 && included_angle < 180) || !(flank_depth > 0))
+    throw std::runtime_error("cutter: diameter, flank depth > 0, corner radius >= 0 and 0 < included angle < 180 degrees");
+  double half = included_angle / 2 * std::numbers::pi / 180;
+  double R = diameter / 2;
+  if (corner_radius * (1 - std::sin(half)) >= flank_depth || corner_radius >= R)
+    throw std::runtime_error("cutter: the corner radius does not fit the insert");
+  // Corner arc centre on the mid plane; tangent points where the flank normal is (sin half, +-cos half).
+  Vec2 c{R - corner_radius, 0};
+  double a = std::numbers::pi / 2 - half;
+  Vec2 t_minus{c.x + corner_radius * std::cos(a), -corner_radius * std::sin(a)};
+  Vec2 t_plus{t_minus.x, -t_minus.y};
+  // Flanks run inwards at `half` from the radial direction down to rho = R - flank_depth.
+  double run = (t_minus.x - (R - flank_depth)) / std::cos(half);
+  Vec2 f_minus{R - flank_depth, t_minus.y - run * std::sin(half)};
+  Vec2 f_plus{f_minus.x, -f_minus.y};
+  std::vector<ProfileElement> e;
+  e.push_back({ProfileElement::Kind::line, f_minus, t_minus, {}, 0, 0, 0, "flank-"});
+  if (corner_radius > 0) e.push_back({ProfileElement::Kind::arc, t_minus, t_plus, c, corner_radius, -a, a, "corner"});
+  e.push_back({ProfileElement::Kind::line, t_plus, f_plus, {}, 0, 0, 0, "flank+"});
+  return DiscCutter(std::move(e));
+}
+
+DiscCutter::Point DiscCutter::at(double s) const {
+  s = std::clamp(s, 0.0, total_);
+  std::size_t i = 0;
+  while (i + 1 < elements_.size() && s > starts_[i + 1]) ++i;
+  const auto& e = elements_[i];
+  double local = s - starts_[i];
+  Point out;
+  out.element = static_cast<int>(i);
+  if (e.kind == ProfileElement::Kind::line) {
+    double len = e.length();
+    Vec2 t{(e.end.x - e.start.x) / len, (e.end.y - e.start.y) / len};
+    out.p = {e.start.x + t.x * local, e.start.y + t.y * local};
+    out.tangent = t;
+    out.normal = {t.y, -t.x};  // material on the left of the direction of travel
+  } else {
+    double dir = e.a1 > e.a0 ? 1 : -1;
+    double ang = e.a0 + dir * local / e.radius;
+    Vec2 radial{std::cos(ang), std::sin(ang)};
+    out.p = {e.centre.x + e.radius * radial.x, e.centre.y + e.radius * radial.y};
+    out.tangent = {-dir * radial.y, dir * radial.x};
+    out.normal = dir > 0 ? radial : Vec2{-radial.x, -radial.y};
+  }
+  return out;
+}
+
+double DiscCutter::corner_middle() const {
+  // Outermost point: the largest rho along the profile (sampled, then the exact arc top).
+  double best = 0, best_rho = -1;
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const auto& e = elements_[i];
+    if (e.kind == ProfileElement::Kind::arc && std::min(e.a0, e.a1) <= 0 && std::max(e.a0, e.a1) >= 0) {
+      double s = starts_[i] + e.radius * std::abs(0 - e.a0);
+      if (e.centre.x + e.radius > best_rho) best_rho = e.centre.x + e.radius, best = s;
+    }
+    if (e.start.x > best_rho) best_rho = e.start.x, best = starts_[i];
+    if (e.end.x > best_rho) best_rho = e.end.x, best = starts_[i] + e.length();
+  }
+  return best;
+}
+
+}  // namespace ncurve::helicoid

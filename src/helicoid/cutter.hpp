@@ -1,0 +1,50 @@
+// A disc cutter as a surface of revolution: its axial profile (lines and arcs in the plane of
+// radius rho from the cutter axis and position w along it), parametrised by arc length.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "helicoid/profile.hpp"
+
+namespace ncurve::helicoid {
+
+struct ProfileElement {
+  enum class Kind { line, arc } kind = Kind::line;
+  Vec2 start, end;  // (rho, w)
+  Vec2 centre;      // arc only
+  double radius = 0;
+  double a0 = 0, a1 = 0;  // arc only: polar angles of start and end about the centre, radians
+  std::string region;     // "flank-", "corner", "flank+" ...
+  double length() const;
+};
+
+class DiscCutter {
+public:
+  // Elements joined end to end, travelled so that the cutter's material is on the left; the
+  // outward normal is on the right.
+  explicit DiscCutter(std::vector<ProfileElement> elements);
+  // Symmetric V insert with a round corner: outside diameter, corner radius, included angle
+  // (degrees) and the radial depth of its flanks below the outside diameter.
+  static DiscCutter v_insert(double diameter, double corner_radius, double included_angle, double flank_depth);
+
+  double length() const { return total_; }
+  double outer_radius() const { return outer_; }
+  const std::vector<ProfileElement>& elements() const { return elements_; }
+
+  struct Point {
+    Vec2 p;       // (rho, w)
+    Vec2 normal;  // outward unit normal in (rho, w)
+    Vec2 tangent; // unit, direction of growing arc length
+    int element;
+  };
+  Point at(double s) const;  // s in [0, length()]
+  const std::string& region(double s) const { return elements_[at(s).element].region; }
+  double corner_middle() const;  // arc length of the outermost point
+
+private:
+  std::vector<ProfileElement> elements_;
+  std::vector<double> starts_;
+  double total_ = 0, outer_ = 0;
+};
+
+}  // namespace ncurve::helicoid
