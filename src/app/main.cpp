@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "app/gen_command.hpp"
+#include "app/helicoid_command.hpp"
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
@@ -149,6 +150,8 @@ int main(int argc, char** argv) {
   run->add_flag("--json", a.json, "summary as JSON");
   app::GenArgs g;
   app::add_gen_command(app, g);
+  app::HelicoidArgs h;
+  app::add_helicoid_command(app, h);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -157,5 +160,6 @@ int main(int argc, char** argv) {
   }
   if (run->parsed()) return run_command(a);
   if (g.command->parsed()) return app::gen_command(g);
+  if (h.command->parsed()) return app::helicoid_command(h);
   return 2;
 }

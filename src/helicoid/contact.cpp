@@ -436,3 +436,47 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
 }
 
 }  // namespace ncurve::helicoid
+
+namespace ncurve::helicoid {
+
+double ContactSearch::deepest_penetration(double psi, double A, std::int64_t* evaluations) const {
+  // Scan every 8th lattice point (skipping those the largest-radius bound clears), then descend
+  // from the lowest few, apart from each other, to the continuous minimum.
+  constexpr int kStride = 8;
+  const double contact = setting_.start_distance - A;
+  const double rmax = work_.profile.r_max();
+  StepSearch step(*this, psi);
+  struct Low {
+    StepSearch::Node n;
+    double d;
+  };
+  std::vector<Low> low;
+  for (int i = -(na_ / kStride) * kStride; i <= na_; i += kStride)
+    for (int j = 0; j <= ns_; j += kStride) {
+      StepSearch::Node n{i, j};
+      auto cp = cutter_.at(step.s(n));
+      double a = step.alpha(n) * kDeg;
+      double qx = setting_.start_distance - cp.p.x * std::cos(a);
+      double qy = cp.p.x * std::sin(a) * e2_[1] + cp.p.y * axis_[1];
+      if (std::abs(qy) >= rmax || qx - std::sqrt(rmax * rmax - qy * qy) >= contact + 0.05) continue;
+      double d = step.value(n);
+      if (d < contact + 0.05) low.push_back({n, d});
+    }
+  std::sort(low.begin(), low.end(), [](const Low& a, const Low& b) { return a.d < b.d; });
+  std::vector<StepSearch::Node> starts;
+  for (const auto& l : low) {
+    bool near = false;
+    for (const auto& s : starts) near = near || (std::abs(s.i - l.n.i) <= 2 * kStride && std::abs(s.j - l.n.j) <= 2 * kStride);
+    if (!near) starts.push_back(l.n);
+    if (starts.size() == 8) break;
+  }
+  double deepest = -kInf;
+  for (const auto& s : starts) {
+    auto r = step.refine(step.descend(s, kStride / 2, 1e-9));
+    deepest = std::max(deepest, contact - r.d);
+  }
+  if (evaluations) *evaluations = step.evaluations();
+  return deepest;
+}
+
+}  // namespace ncurve::helicoid

@@ -1,0 +1,182 @@
+// ncurve helicoid: disc-cutter locations for a helical surface by minimum directed distance.
+#include "app/helicoid_command.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "geom/curve.hpp"
+#include "helicoid/report.hpp"
+
+namespace ncurve::app {
+
+void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
+  CLI::App* h = app.add_subcommand("helicoid", "disc-cutter locations for a helical surface (seed 004)");
+  h->add_option("--example", a.example, "seed004: the screw-drill rotor of seed 004 with its cutter")
+      ->check(CLI::IsMember({"seed004"}));
+  h->add_option("--profile", a.profile, "end profile: rotor (seed 004) or a closed curve of `ncurve gen --list`");
+  h->add_option("--profile-x", a.profile_x, "end profile x(u), macro expression in u (degrees)");
+  h->add_option("--profile-y", a.profile_y, "end profile y(u)");
+  h->add_option("--u", a.u_range, "range of u closing the profile once, FROM:TO (default 0:360)");
+  h->add_option("--lead", a.lead, "lead, mm per turn (0: straight, no twist)");
+  h->add_option("--hand", a.hand, "right or left")->check(CLI::IsMember({"right", "left"}));
+  h->add_option("--lobes", a.lobes, "number of lobes (A repeats every 360/lobes degrees)")->check(CLI::PositiveNumber);
+  h->add_option("--cutter-diameter", a.cutter_diameter, "disc cutter outside diameter, mm")->check(CLI::PositiveNumber);
+  h->add_option("--corner-radius", a.corner_radius, "insert corner radius, mm")->check(CLI::NonNegativeNumber);
+  h->add_option("--included-angle", a.included_angle, "insert included angle, degrees (symmetric V)");
+  h->add_option("--flank-depth", a.flank_depth, "radial depth of the insert's flanks, mm (default: profile depth + 3)");
+  h->add_option("--ref-radius", a.ref_radius, "radius at which the cutter follows the helix, mm (default: mean radius)");
+  h->add_option("--crossing-angle", a.crossing_angle, "angle between cutter and workpiece axes, degrees (overrides --ref-radius)");
+  h->add_option("--start-distance", a.start_distance, "centre distance the search starts from, mm (must be clear)");
+  h->add_option("--step", a.step, "psi step, degrees")->check(CLI::PositiveNumber);
+  h->add_option("--from", a.from, "first psi, degrees (default 0)");
+  h->add_option("--to", a.to, "last psi, degrees (default 360/lobes)");
+  h->add_option("--method", a.method, "robust (default), nine-point or brute")
+      ->check(CLI::IsMember({"robust", "nine-point", "brute"}));
+  h->add_option("--alpha-step", a.alpha_step, "lattice step around the cutter axis, degrees")->check(CLI::PositiveNumber);
+  h->add_option("--s-step", a.s_step, "lattice step along the cutter profile, mm")->check(CLI::PositiveNumber);
+  h->add_option("--alpha-range", a.alpha_range, "lattice half range around the cutter axis, degrees");
+  h->add_flag("--csv", a.csv, "contacts as CSV");
+  h->add_flag("--json", a.json, "contacts as JSON");
+  h->add_flag("--no-check", a.no_check, "skip the interference check over the whole cutter");
+  h->add_option("-o,--output", a.output, "write the table to this file");
+  h->add_option("--program", a.program, "write a 4-axis FANUC program (X, Z, A): one helical pass per step");
+  h->add_option("--length", a.length, "program: pass length along Z, mm")->check(CLI::PositiveNumber);
+  h->add_option("--feed", a.feed, "program: feed along the pass, mm/min")->check(CLI::PositiveNumber);
+  h->add_option("--plot", a.plot, "SVG: end profile with contacts, A(psi), plane-method error");
+  a.command = h;
+}
+
+namespace {
+
+bool write_file(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  if (f && (f << text)) return true;
+  std::cerr << fmt::format("{}: error: cannot write\n", path);
+  return false;
+}
+
+}  // namespace
+
+int helicoid_command(const HelicoidArgs& a) {
+  using namespace helicoid;
+  std::optional<ContactSearch> search;
+  Job job;
+  std::vector<double> psis;
+  try {
+    const bool seed = a.example == "seed004";
+    std::optional<EndProfile> profile;
+    std::string profile_name;
+    if (!a.profile_x.empty() || !a.profile_y.empty()) {
+      if (a.profile_x.empty() || a.profile_y.empty()) throw std::runtime_error("--profile-x needs --profile-y and back");
+      geom::CurveSpec spec;
+      spec.name = "profile";
+      spec.x = a.profile_x;
+      spec.y = a.profile_y;
+      spec.z = "0";
+      spec.from = 0, spec.to = 360;
+      if (!a.u_range.empty()) {
+        auto colon = a.u_range.find(':');
+        if (colon == std::string::npos) throw std::runtime_error("--u needs FROM:TO");
+        spec.from = std::stod(a.u_range.substr(0, colon));
+        spec.to = std::stod(a.u_range.substr(colon + 1));
+      }
+      // The expression language names the parameter t; accept u for the profile.
+      auto rename = [](std::string e) {
+        std::string out;
+        for (std::size_t i = 0; i < e.size(); ++i) {
+          bool word = (i == 0 || !std::isalnum(static_cast<unsigned char>(e[i - 1]))) &&
+                      (i + 1 == e.size() || !std::isalnum(static_cast<unsigned char>(e[i + 1])));
+          out += (word && (e[i] == 'u' || e[i] == 'U')) ? 't' : e[i];
+        }
+        return out;
+      };
+      spec.x = rename(spec.x);
+      spec.y = rename(spec.y);
+      profile = EndProfile::from_curve(std::make_shared<geom::Curve>(spec, std::map<std::string, double>{}));
+      profile_name = "profile x = " + a.profile_x + ", y = " + a.profile_y;
+    } else if (seed || a.profile == "rotor") {
+      profile = EndProfile::seed004_rotor();
+      profile_name = "seed004 rotor";
+    } else if (!a.profile.empty()) {
+      const geom::CurveSpec* spec = geom::find_curve(a.profile);
+      if (!spec) throw std::runtime_error(fmt::format("no curve named '{}' (ncurve gen --list)", a.profile));
+      profile = EndProfile::from_curve(std::make_shared<geom::Curve>(*spec, std::map<std::string, double>{}));
+      profile_name = a.profile;
+    } else {
+      throw std::runtime_error("give --example seed004, --profile NAME or --profile-x/--profile-y");
+    }
+    auto need = [&](const std::optional<double>& v, double seed_value, const char* name) {
+      if (v) return *v;
+      if (seed) return seed_value;
+      throw std::runtime_error(fmt::format("{} is needed (or --example seed004)", name));
+    };
+    Workpiece work{*profile, need(a.lead, 860, "--lead"), a.hand == "left" ? -1 : 1, a.lobes.value_or(seed ? 5 : 1)};
+    if (work.lead < 0) throw std::runtime_error("--lead must be >= 0 (give the hand with --hand)");
+    double diameter = need(a.cutter_diameter, 252, "--cutter-diameter");
+    double corner = need(a.corner_radius, 1.2, "--corner-radius");
+    double angle = need(a.included_angle, 35, "--included-angle");
+    double depth = work.profile.r_max() - work.profile.r_min();
+    double flank = a.flank_depth.value_or(depth + 3);
+    DiscCutter cutter = DiscCutter::v_insert(diameter, corner, angle, flank);
+    double ref = a.ref_radius.value_or((work.profile.r_min() + work.profile.r_max()) / 2);
+    Setting setting;
+    setting.swing = a.crossing_angle ? 90 - *a.crossing_angle : helix_angle(work.lead, ref);
+    setting.start_distance = a.start_distance.value_or(seed ? 177.7 : 0);
+    Lattice lattice;
+    lattice.alpha_step = a.alpha_step;
+    lattice.s_step = a.s_step;
+    double reach = std::acos(std::max(-1.0, (diameter / 2 - depth - flank) / (diameter / 2))) * 180 / M_PI;
+    lattice.alpha_max = a.alpha_range.value_or(std::min(89.0, reach + 2));
+    search.emplace(work, cutter, setting, lattice);
+    if (search->setting().start_distance < work.profile.r_max() + cutter.outer_radius() - 1e-9 &&
+        search->deepest_penetration(0, search->setting().start_distance) > 1e-6)
+      throw std::runtime_error(fmt::format("the start centre distance {} mm cuts into the workpiece",
+                                           search->setting().start_distance));
+    double from = a.from.value_or(0), to = a.to.value_or(360.0 / work.lobes);
+    int n = static_cast<int>(std::floor((to - from) / a.step + 1e-9));
+    for (int i = 0; i <= n; ++i) psis.push_back(from + i * a.step);
+    job.method = method_from_name(a.method);
+    job.step = a.step;
+    job.title = fmt::format("{}, lead {:g} mm {} hand, cutter D{:g} r{:g} {:g} deg, crossing {:.4f} deg", profile_name,
+                            work.lead, a.hand, diameter, corner, angle, 90 - setting.swing);
+  } catch (const std::exception& e) {
+    std::cerr << "ncurve helicoid: " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    job.contacts = search->run(psis, job.method);
+    for (const auto& c : job.contacts) {
+      if (c.normal_angle > 1e-3)
+        throw std::runtime_error(fmt::format(
+            "psi = {:g} deg: the surfaces' normals differ by {:.4f} deg at the contact (cutter {} at alpha {:.3f} deg, "
+            "s {:.3f} mm): the contact is at an edge of the searched cutter region, widen --alpha-range or "
+            "--flank-depth", c.psi, c.normal_angle, c.region, c.alpha, c.s));
+      if (!a.no_check) {
+        double p = search->deepest_penetration(c.psi, c.A);
+        if (p > 1e-6)
+          throw std::runtime_error(fmt::format("psi = {:g} deg: at A = {:.6f} mm the cutter cuts {:.6f} mm into the "
+                                               "workpiece elsewhere (interference)", c.psi, c.A, p));
+      }
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "ncurve helicoid: " << e.what() << "\n";
+    return 1;
+  }
+  std::string table = a.json ? contacts_json(job, *search) : a.csv ? contacts_csv(job) : contacts_text(job, *search);
+  if (a.output.empty()) std::cout << table;
+  else if (!write_file(a.output, table)) return 2;
+  if (!a.program.empty()) {
+    PassOptions o;
+    o.z_end = -a.length;
+    o.feed = a.feed;
+    if (!write_file(a.program, pass_program(job, *search, o))) return 2;
+  }
+  if (!a.plot.empty() && !write_file(a.plot, contacts_svg(job, *search))) return 2;
+  return 0;
+}
+
+}  // namespace ncurve::app

@@ -1,0 +1,33 @@
+// The `ncurve helicoid` subcommand.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+namespace ncurve::app {
+
+struct HelicoidArgs {
+  std::string example;
+  std::string profile;     // rotor or a curve of `ncurve gen --list`
+  std::string profile_x, profile_y, u_range;
+  std::optional<double> lead;
+  std::string hand = "right";
+  std::optional<int> lobes;
+  std::optional<double> cutter_diameter, corner_radius, included_angle, flank_depth;
+  std::optional<double> ref_radius, crossing_angle, start_distance;
+  double step = 1;
+  std::optional<double> from, to;
+  std::string method = "robust";
+  double alpha_step = 0.05, s_step = 0.05;
+  std::optional<double> alpha_range;
+  bool csv = false, json = false, no_check = false;
+  std::string output, program, plot;
+  double length = 100, feed = 200;
+  CLI::App* command = nullptr;
+};
+
+void add_helicoid_command(CLI::App& app, HelicoidArgs& args);
+int helicoid_command(const HelicoidArgs& args);
+
+}  // namespace ncurve::app

@@ -1,0 +1,195 @@
+#include "helicoid/report.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ncurve::helicoid {
+
+namespace {
+
+const char* kColumns =
+    "psi_deg,A_mm,u_deg,r_mm,x_mm,y_mm,z_mm,cutter_x_mm,cutter_y_mm,cutter_z_mm,cutter_alpha_deg,cutter_s_mm,"
+    "cutter_region,normal_angle_deg,evaluations,plane_A_mm,plane_error_mm";
+
+double plane_error(const Contact& c) { return c.plane_A - c.A; }
+
+}  // namespace
+
+std::string contacts_csv(const Job& job) {
+  std::string s = std::string(kColumns) + "\n";
+  for (const auto& c : job.contacts)
+    s += fmt::format("{:.6f},{:.7f},{:.6f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.6f},{:.6f},{},{:.3e},{},{:.7f},{:.7f}\n",
+                     c.psi, c.A, c.u, c.r, c.work_point[0], c.work_point[1], c.work_point[2], c.cutter_point[0],
+                     c.cutter_point[1], c.cutter_point[2], c.alpha, c.s, c.region, c.normal_angle, c.evaluations,
+                     c.plane_A, plane_error(c));
+  return s;
+}
+
+namespace {
+
+struct Summary {
+  double a_min = 1e300, a_max = -1e300, plane_worst = 0, plane_worst_psi = 0, normal_worst = 0, mean_evaluations = 0;
+  std::int64_t evaluations = 0;
+};
+
+Summary summarize(const Job& job) {
+  Summary s;
+  for (const auto& c : job.contacts) {
+    s.a_min = std::min(s.a_min, c.A);
+    s.a_max = std::max(s.a_max, c.A);
+    if (std::abs(plane_error(c)) > std::abs(s.plane_worst)) s.plane_worst = plane_error(c), s.plane_worst_psi = c.psi;
+    s.normal_worst = std::max(s.normal_worst, c.normal_angle);
+    s.evaluations += c.evaluations;
+  }
+  if (!job.contacts.empty()) s.mean_evaluations = static_cast<double>(s.evaluations) / job.contacts.size();
+  return s;
+}
+
+}  // namespace
+
+std::string contacts_json(const Job& job, const ContactSearch& search) {
+  nlohmann::ordered_json j;
+  Summary sum = summarize(job);
+  j["title"] = job.title;
+  j["method"] = method_name(job.method);
+  j["step_deg"] = job.step;
+  j["swing_deg"] = search.setting().swing;
+  j["crossing_angle_deg"] = 90 - search.setting().swing;
+  j["start_distance_mm"] = search.setting().start_distance;
+  j["lattice"] = {{"alpha_step_deg", search.lattice().alpha_step},
+                  {"s_step_mm", search.lattice().s_step},
+                  {"alpha_max_deg", search.lattice().alpha_max},
+                  {"points", search.lattice().size(search.cutter().length())}};
+  j["summary"] = {{"A_min_mm", sum.a_min},         {"A_max_mm", sum.a_max},
+                  {"evaluations", sum.evaluations}, {"mean_evaluations", sum.mean_evaluations},
+                  {"normal_angle_max_deg", sum.normal_worst}, {"plane_error_max_mm", sum.plane_worst},
+                  {"plane_error_max_psi_deg", sum.plane_worst_psi}};
+  auto& steps = j["steps"] = nlohmann::ordered_json::array();
+  for (const auto& c : job.contacts) {
+    steps.push_back({{"psi_deg", c.psi},
+                     {"A_mm", c.A},
+                     {"u_deg", c.u},
+                     {"r_mm", c.r},
+                     {"x_mm", c.work_point[0]},
+                     {"y_mm", c.work_point[1]},
+                     {"z_mm", c.work_point[2]},
+                     {"cutter_x_mm", c.cutter_point[0]},
+                     {"cutter_y_mm", c.cutter_point[1]},
+                     {"cutter_z_mm", c.cutter_point[2]},
+                     {"cutter_alpha_deg", c.alpha},
+                     {"cutter_s_mm", c.s},
+                     {"cutter_region", c.region},
+                     {"normal_angle_deg", c.normal_angle},
+                     {"evaluations", c.evaluations},
+                     {"plane_A_mm", c.plane_A},
+                     {"plane_error_mm", plane_error(c)}});
+  }
+  return j.dump(2) + "\n";
+}
+
+std::string contacts_text(const Job& job, const ContactSearch& search) {
+  Summary sum = summarize(job);
+  std::string s = fmt::format("{}\n", job.title);
+  s += fmt::format("cutter axis crosses the workpiece axis at {:.4f} deg (disc swung {:.4f} deg); search from A = {:.4f} mm\n",
+                   90 - search.setting().swing, search.setting().swing, search.setting().start_distance);
+  s += fmt::format("method {}: {} steps, {} distance evaluations ({:.1f} per step) on a lattice of {} points per step\n",
+                   method_name(job.method), job.contacts.size(), sum.evaluations, sum.mean_evaluations,
+                   search.lattice().size(search.cutter().length()));
+  s += fmt::format("A from {:.6f} to {:.6f} mm; surfaces' normals parallel within {:.2e} deg\n", sum.a_min, sum.a_max,
+                   sum.normal_worst);
+  s += fmt::format("plane programming (profile offset by the corner radius) is off by up to {:+.4f} mm (psi = {:g} deg)\n\n",
+                   sum.plane_worst, sum.plane_worst_psi);
+  s += fmt::format("{:>8} {:>12} {:>9} {:>9} {:>8} {:>8} {:>12} {:>10}\n", "psi deg", "A mm", "u deg", "r mm", "cutter",
+                   "evals", "plane A mm", "error mm");
+  for (const auto& c : job.contacts)
+    s += fmt::format("{:8.3f} {:12.6f} {:9.3f} {:9.4f} {:>8} {:8} {:12.6f} {:+10.6f}\n", c.psi, c.A, c.u, c.r, c.region,
+                     c.evaluations, c.plane_A, plane_error(c));
+  return s;
+}
+
+std::string pass_program(const Job& job, const ContactSearch& search, const PassOptions& o) {
+  const double twist = search.workpiece().twist();
+  double a_max = 0;
+  for (const auto& c : job.contacts) a_max = std::max(a_max, c.A);
+  const double retract = a_max + o.clearance;
+  std::string s = "%\n";
+  s += fmt::format("O{:04d} (NCURVE HELICOID)\n", o.program_number);
+  std::string title = job.title;
+  std::transform(title.begin(), title.end(), title.begin(), [](unsigned char ch) {
+    return ch == '(' || ch == ')' ? ' ' : static_cast<char>(std::toupper(ch));
+  });
+  s += fmt::format("({})\n", title);
+  s += fmt::format("(X = CENTRE DISTANCE A-PSI, A = WORKPIECE TURN, Z ALONG THE AXIS: A = PSI - {:.6f} * Z)\n", twist);
+  s += "G21 G90 G94\n";
+  s += fmt::format("G00 X{:.3f}\n", retract);
+  bool forward = true;
+  for (const auto& c : job.contacts) {
+    double z0 = forward ? o.z_start : o.z_end, z1 = forward ? o.z_end : o.z_start;
+    s += fmt::format("G00 Z{:.3f} A{:.3f}\n", z0, c.psi - twist * z0);
+    s += fmt::format("G01 X{:.4f} F{:g}\n", c.A, o.feed);
+    s += fmt::format("G01 Z{:.3f} A{:.3f}\n", z1, c.psi - twist * z1);
+    s += fmt::format("G00 X{:.3f}\n", retract);
+    forward = !forward;
+  }
+  s += "M30\n%\n";
+  return s;
+}
+
+std::string contacts_svg(const Job& job, const ContactSearch& search) {
+  const auto& profile = search.workpiece().profile;
+  constexpr double W = 900, H = 420, pad = 50;
+  std::string s = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"{}\" y=\"20\" font-size=\"14\">{}</text>\n",
+      W, H, pad, job.title);
+  // Left: the end profile (phase 0) with each contact turned back to it.
+  double R = profile.r_max() * 1.1, cx = pad + 160, cy = H / 2 + 10, k = 160 / R;
+  std::string path;
+  for (int i = 0; i <= 720; ++i) {
+    Vec2 p = profile.point(profile.u0() + profile.period() * i / 720);
+    path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", cx + k * p.x, cy - k * p.y);
+  }
+  s += fmt::format("<path d=\"{}Z\" fill=\"#eef\" stroke=\"#336\"/>\n", path);
+  for (const auto& c : job.contacts) {
+    Vec2 p = profile.point(c.u);
+    s += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"{}\"/>\n", cx + k * p.x, cy - k * p.y,
+                     c.region == "corner" ? "#c00" : "#080");
+  }
+  s += fmt::format("<text x=\"{}\" y=\"{}\">end profile (mm, scale {:.2f} px/mm); contacts: red corner, green flank</text>\n",
+                   pad, H - 12, k);
+  // Right: A(psi) and the plane method's error.
+  if (job.contacts.size() >= 2) {
+    double x0 = 420, x1 = W - pad, top = 50, mid = 230, bottom = H - 40;
+    double p0 = job.contacts.front().psi, p1 = job.contacts.back().psi;
+    double a_lo = 1e300, a_hi = -1e300, e_max = 1e-6;
+    for (const auto& c : job.contacts) {
+      a_lo = std::min(a_lo, c.A), a_hi = std::max(a_hi, c.A);
+      e_max = std::max(e_max, std::abs(plane_error(c)));
+    }
+    auto X = [&](double psi) { return x0 + (x1 - x0) * (psi - p0) / (p1 - p0); };
+    std::string a_path, e_path;
+    for (std::size_t i = 0; i < job.contacts.size(); ++i) {
+      const auto& c = job.contacts[i];
+      double ya = mid - 10 - (mid - 10 - top) * (c.A - a_lo) / std::max(a_hi - a_lo, 1e-9);
+      double ye = (mid + 20 + bottom) / 2 - (bottom - mid - 20) / 2 * plane_error(c) / e_max;
+      a_path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", X(c.psi), ya);
+      e_path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", X(c.psi), ye);
+    }
+    s += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#c00\"/>\n", a_path);
+    s += fmt::format("<text x=\"{}\" y=\"{}\">A(psi): {:.4f} .. {:.4f} mm over psi {:g} .. {:g} deg</text>\n", x0,
+                     top - 8, a_lo, a_hi, p0, p1);
+    double zero = (mid + 20 + bottom) / 2;
+    s += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#999\"/>\n", x0, zero, x1, zero);
+    s += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#06c\"/>\n", e_path);
+    s += fmt::format("<text x=\"{}\" y=\"{}\">plane method A minus true A: +-{:.1f} um full scale</text>\n", x0,
+                     mid + 14, e_max * 1000);
+    s += fmt::format("<text x=\"{}\" y=\"{}\">psi, degrees</text>\n", (x0 + x1) / 2, H - 12);
+  }
+  s += "</svg>\n";
+  return s;
+}
+
+}  // namespace ncurve::helicoid
