@@ -1,25 +1,6 @@
 # ncurve gen as a user runs it: the program it writes runs under ncurve run, the JSON carries the
 # documented keys, and bad input gives the documented exit codes.
-function(expect_rc rc want what)
-  if(NOT rc STREQUAL want)
-    message(SEND_ERROR "${what}: exit ${rc}, expected ${want}")
-  endif()
-endfunction()
-
-# runs a command, checks its exit code, and leaves its output in `out` and `err`
-function(run_expect want what)
-  execute_process(COMMAND ${ARGN} OUTPUT_VARIABLE o ERROR_VARIABLE e RESULT_VARIABLE rc)
-  expect_rc("${rc}" ${want} "${what}")
-  set(out "${o}" PARENT_SCOPE)
-  set(err "${e}" PARENT_SCOPE)
-endfunction()
-
-function(expect_text text needle what)
-  string(FIND "${text}" "${needle}" at)
-  if(at EQUAL -1)
-    message(SEND_ERROR "${what}: no '${needle}' in:\n${text}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_helpers.cmake)
 
 set(prog "${OUT}/gen_spiral.nc")
 run_expect(0 "gen spiral arcs" ${NCURVE} gen spiral --tol 0.005 --form arcs -o ${prog} --json)

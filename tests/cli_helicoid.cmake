@@ -1,0 +1,33 @@
+# ncurve helicoid as a user runs it: seed 004's table with its sanity values, the documented CSV
+# and JSON columns, a program that runs under ncurve run, and errors for incomplete input.
+include(${CMAKE_CURRENT_LIST_DIR}/cli_helpers.cmake)
+
+run_expect(0 "helicoid seed004 csv" ${NCURVE} helicoid --example seed004 --csv)
+expect_text("${out}" "psi_deg,A_mm,u_deg,r_mm,x_mm,y_mm,z_mm," "csv header")
+expect_text("${out}" "evaluations,plane_A_mm,plane_error_mm" "csv header")
+expect_text("${out}" "\n0.000000,161.5000000," "A(0) = 35.5 + 126")
+expect_text("${out}" "\n36.000000,176.5000000," "A(36) = 50.5 + 126")
+expect_text("${out}" "\n72.000000,161.5000000," "A(72) = A(0)")
+
+run_expect(0 "helicoid json" ${NCURVE} helicoid --example seed004 --step 6 --json --program ${OUT}/rotor.nc
+           --plot ${OUT}/rotor.svg)
+foreach(key psi_deg A_mm u_deg r_mm x_mm y_mm z_mm cutter_x_mm cutter_alpha_deg cutter_s_mm evaluations plane_A_mm
+        plane_error_mm mean_evaluations)
+  expect_text("${out}" "\"${key}\"" "helicoid --json")
+endforeach()
+file(READ ${OUT}/rotor.svg svg)
+expect_text("${svg}" "<svg" "plot")
+expect_text("${svg}" "plane method" "plot")
+run_expect(0 "run the rotor program" ${NCURVE} run ${OUT}/rotor.nc --machine ${SRC}/profiles/fanuc-4axis-helicoid.toml
+           --format csv)
+expect_text("${out}" ",line,161.500000,0.000000,0.000000," "first pass at A(0)")
+expect_text("${out}" ",line,176.500000,0.000000," "pass at A(36)")
+
+run_expect(0 "helicoid any profile" ${NCURVE} helicoid --profile-x "40*COS[u]" --profile-y "30*SIN[u]" --lead 500
+           --lobes 2 --cutter-diameter 200 --corner-radius 1 --included-angle 40 --step 15)
+expect_text("${out}" "   0.000   140.000000" "ellipse: A(0) = a + R")
+
+run_expect(2 "profile without lead" ${NCURVE} helicoid --profile ellipse)
+expect_text("${err}" "--lead is needed" "missing lead")
+run_expect(2 "no profile" ${NCURVE} helicoid)
+expect_text("${err}" "--example seed004" "no profile")

@@ -1,0 +1,184 @@
+// Helicoid contacts: seed 004's sanity values, closed forms, and the robust search against brute force.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "geom/curve.hpp"
+#include "helicoid/contact.hpp"
+
+namespace ncurve::helicoid {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+ContactSearch seed_search(double included_angle, Lattice lattice = {}) {
+  Workpiece work{EndProfile::seed004_rotor(), 860, 1, 5};
+  auto cutter = DiscCutter::v_insert(252, 1.2, included_angle, 18);
+  return ContactSearch(work, cutter, Setting{helix_angle(860, 43), 177.7}, lattice);
+}
+
+std::vector<double> range(double from, double to, double step) {
+  std::vector<double> v;
+  for (int i = 0; from + i * step <= to + 1e-9; ++i) v.push_back(from + i * step);
+  return v;
+}
+
+TEST(Helicoid, NativeRotorIsTheCatalogueCurve) {
+  auto spec = *geom::find_curve("rotor");
+  spec.to = 360;
+  auto native = EndProfile::seed004_rotor();
+  auto generic = EndProfile::from_curve(std::make_shared<geom::Curve>(spec, std::map<std::string, double>{}));
+  for (double u = 0; u < 360; u += 7.3) {
+    EXPECT_NEAR(native.point(u).x, generic.point(u).x, 1e-9) << u;
+    EXPECT_NEAR(native.point(u).y, generic.point(u).y, 1e-9) << u;
+    EXPECT_NEAR(native.d1(u).x, generic.d1(u).x, 1e-9) << u;
+    EXPECT_NEAR(native.d1(u).y, generic.d1(u).y, 1e-9) << u;
+  }
+  EXPECT_NEAR(native.r_min(), 35.5, 1e-6);
+  EXPECT_NEAR(native.r_max(), 50.5, 1e-6);
+}
+
+TEST(Helicoid, FirstHitOfTheTurnedProfile) {
+  auto p = EndProfile::seed004_rotor();
+  // On the X axis the first hit is the radius in that direction: root at phase 0, crest at 36.
+  EXPECT_NEAR(p.first_hit(0, 0).x, 35.5, 1e-9);
+  EXPECT_NEAR(p.first_hit(36, 0).x, 50.5, 1e-9);
+  // Off the axis the hit lies on the turned curve, and nothing on the line further out does.
+  for (double phi : {3.0, 17.0, 50.0}) {
+    for (double y : {-12.0, 4.0, 20.0}) {
+      auto h = p.first_hit(phi, y);
+      ASSERT_TRUE(h.found);
+      Vec2 q = p.point(h.u);
+      double c = std::cos(phi * kDeg), s = std::sin(phi * kDeg);
+      EXPECT_NEAR(c * q.x - s * q.y, h.x, 1e-9);
+      EXPECT_NEAR(s * q.x + c * q.y, y, 1e-9);
+      for (double u = 0; u < 360; u += 0.01) {
+        Vec2 r = p.point(u);
+        double x = c * r.x - s * r.y, yy = s * r.x + c * r.y;
+        if (std::abs(yy - y) < 0.01) {
+          EXPECT_LE(x, h.x + 0.01 * 40) << phi << " " << y << " " << u;
+        }
+      }
+    }
+  }
+  EXPECT_FALSE(p.first_hit(0, 51).found);
+}
+
+TEST(Helicoid, GradientMatchesDifferences) {
+  auto cs = seed_search(35);
+  for (double psi : {5.0, 20.0}) {
+    for (auto [a, s] : {std::pair{0.3, 19.0}, {-1.0, 20.5}, {2.0, 26.0}}) {
+      auto d = cs.distance(psi, a, s);
+      ASSERT_TRUE(d.hit);
+      const double h = 1e-5;
+      double da = (cs.distance(psi, a + h, s).d - cs.distance(psi, a - h, s).d) / (2 * h);
+      double ds = (cs.distance(psi, a, s + h).d - cs.distance(psi, a, s - h).d) / (2 * h);
+      EXPECT_NEAR(d.d_alpha, da, 1e-5 * (1 + std::abs(da)));
+      EXPECT_NEAR(d.d_s, ds, 1e-5 * (1 + std::abs(ds)));
+    }
+  }
+}
+
+TEST(Helicoid, SeedSanityValues) {
+  auto cs = seed_search(35);
+  auto contacts = cs.run(range(0, 72, 1), Method::robust);
+  ASSERT_EQ(contacts.size(), 73u);
+  EXPECT_NEAR(contacts[0].A, 35.5 + 126, 1e-6);   // root faces the cutter
+  EXPECT_NEAR(contacts[36].A, 50.5 + 126, 1e-6);  // crest
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    EXPECT_NEAR(contacts[i].A, contacts[72 - i].A, 1e-6) << contacts[i].psi;  // A(psi) = A(72 - psi)
+    EXPECT_LT(contacts[i].normal_angle, 1e-4) << contacts[i].psi;              // meshing condition
+    EXPECT_LT(cs.deepest_penetration(contacts[i].psi, contacts[i].A), 1e-6) << contacts[i].psi;
+    // Touching: a micrometre closer and the cutter cuts.
+    EXPECT_GT(cs.deepest_penetration(contacts[i].psi, contacts[i].A - 1e-3), 0.9e-3) << contacts[i].psi;
+  }
+  for (double psi : {0.0, 18.0, 36.0}) EXPECT_LT(cs.deepest_penetration(psi, 177.7), 0) << psi;  // start is clear
+  // Plane programming is exact at root and crest only.
+  EXPECT_NEAR(contacts[0].plane_A, contacts[0].A, 1e-6);
+  EXPECT_NEAR(contacts[36].plane_A, contacts[36].A, 1e-6);
+  EXPECT_GT(std::abs(contacts[18].plane_A - contacts[18].A), 0.01);
+}
+
+TEST(Helicoid, CylinderProfileTouchesAtTheTip) {
+  auto eval = [](double u, Vec2& p, Vec2& d) {
+    p = {40 * std::cos(u * kDeg), 40 * std::sin(u * kDeg)};
+    d = {-40 * std::sin(u * kDeg) * kDeg, 40 * std::cos(u * kDeg) * kDeg};
+  };
+  Workpiece work{EndProfile("circle", eval, 0, 360), 860, 1, 1};
+  ContactSearch cs(work, DiscCutter::v_insert(252, 1.2, 35, 18), Setting{helix_angle(860, 40), 0}, Lattice{});
+  for (const auto& c : cs.run(range(0, 90, 15), Method::robust)) {
+    EXPECT_NEAR(c.A, 40 + 126, 1e-6) << c.psi;
+    EXPECT_EQ(c.region, "corner");
+    EXPECT_NEAR(c.alpha, 0, 1e-4);
+  }
+}
+
+TEST(Helicoid, StraightEccentricCircleIsTwoCircles) {
+  // Zero twist: in the end section the corner circle (radius rc) touches the profile circle.
+  const double e = 8, rho = 30, rc = 1.2, R = 126;
+  auto eval = [&](double u, Vec2& p, Vec2& d) {
+    p = {e + rho * std::cos(u * kDeg), rho * std::sin(u * kDeg)};
+    d = {-rho * std::sin(u * kDeg) * kDeg, rho * std::cos(u * kDeg) * kDeg};
+  };
+  Workpiece work{EndProfile("eccentric circle", eval, 0, 360), 0, 1, 1};
+  ContactSearch cs(work, DiscCutter::v_insert(2 * R, rc, 35, 20), Setting{0, 0}, Lattice{});
+  for (const auto& c : cs.run(range(0, 360, 30), Method::robust)) {
+    double ey = e * std::sin(c.psi * kDeg);
+    double expected = R - rc + e * std::cos(c.psi * kDeg) + std::sqrt((rho + rc) * (rho + rc) - ey * ey);
+    EXPECT_NEAR(c.A, expected, 1e-6) << c.psi;
+    EXPECT_NEAR(c.plane_A, expected, 1e-6) << c.psi;  // without twist plane programming is exact
+  }
+}
+
+// The robust search lands on brute force's lattice minimum at every step, for the seed's 35 deg
+// insert and for a 70 deg reading, where the contact jumps from the corner to a flank and back.
+void expect_robust_is_brute(double included_angle) {
+  Lattice coarse{0.2, 0.2, 30};
+  auto cs = seed_search(included_angle, coarse);
+  auto psis = range(0, 72, 1);
+  auto brute = cs.run(psis, Method::brute);
+  auto robust = cs.run(psis, Method::robust);
+  ASSERT_EQ(brute.size(), robust.size());
+  bool flank = false;
+  std::int64_t robust_evaluations = 0;
+  for (std::size_t i = 0; i < psis.size(); ++i) {
+    EXPECT_NEAR(robust[i].A, brute[i].A, 1e-9) << psis[i];
+    EXPECT_EQ(robust[i].region, brute[i].region) << psis[i];
+    flank = flank || brute[i].region != "corner";
+    robust_evaluations += robust[i].evaluations;
+  }
+  EXPECT_EQ(flank, included_angle > 60);
+  EXPECT_LT(robust_evaluations * 100, static_cast<std::int64_t>(psis.size()) * coarse.size(cs.cutter().length()));
+}
+
+TEST(Helicoid, RobustEqualsBruteSeedInsert) { expect_robust_is_brute(35); }
+TEST(Helicoid, RobustEqualsBruteWideInsert) { expect_robust_is_brute(70); }
+
+TEST(Helicoid, PlainNinePointIsCaughtWhereTheContactJumps) {
+  auto cs = seed_search(70);
+  auto psis = range(0, 72, 1);
+  auto plain = cs.run(psis, Method::nine_point);
+  auto robust = cs.run(psis, Method::robust);
+  double worst = 0;
+  for (std::size_t i = 0; i < psis.size(); ++i) {
+    EXPECT_LE(plain[i].A, robust[i].A + 1e-9) << psis[i];  // a local minimum is never past the first touch
+    worst = std::max(worst, robust[i].A - plain[i].A);
+    EXPECT_LT(cs.deepest_penetration(psis[i], robust[i].A), 1e-6) << psis[i];
+  }
+  EXPECT_GT(worst, 0.1);  // the seed's search alone would cut 0.1 mm and more into the rotor
+}
+
+TEST(Helicoid, BadInput) {
+  auto eight = [](double u, Vec2& p, Vec2& d) {  // a figure eight does not wind around the axis
+    p = {std::sin(u * kDeg) + 0.1, std::sin(2 * u * kDeg)};
+    d = {std::cos(u * kDeg) * kDeg, 2 * std::cos(2 * u * kDeg) * kDeg};
+  };
+  EXPECT_THROW(EndProfile("eight", eight, 0, 360), std::runtime_error);
+  EXPECT_THROW(DiscCutter::v_insert(252, 1.2, 190, 18), std::runtime_error);
+  EXPECT_THROW(method_from_name("fast"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace ncurve::helicoid
