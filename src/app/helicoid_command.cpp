@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <numbers>
 
 #include "geom/curve.hpp"
 #include "helicoid/report.hpp"
@@ -129,7 +130,7 @@ int helicoid_command(const HelicoidArgs& a) {
     Lattice lattice;
     lattice.alpha_step = a.alpha_step;
     lattice.s_step = a.s_step;
-    double reach = std::acos(std::max(-1.0, (diameter / 2 - depth - flank) / (diameter / 2))) * 180 / M_PI;
+    double reach = std::acos(std::max(-1.0, (diameter / 2 - depth - flank) / (diameter / 2))) * 180 / std::numbers::pi;
     lattice.alpha_max = a.alpha_range.value_or(std::min(89.0, reach + 2));
     search.emplace(work, cutter, setting, lattice);
     if (search->setting().start_distance < work.profile.r_max() + cutter.outer_radius() - 1e-9 &&
