@@ -133,21 +133,17 @@ Vec2 EndProfile::outward_normal(double u) const {
   return {n.x / len, n.y / len};
 }
 
-double EndProfile::u_at_angle(double theta) const {
+double EndProfile::lookup(const std::vector<double>& table, double theta) const {
   double a = (theta - theta_[0]) / cell_;
   a -= kTable * std::floor(a / kTable);
   int k = std::min(static_cast<int>(a), kTable - 1);
   double f = a - k;
-  return u_[k] + f * (u_[k + 1] - u_[k]);
+  return table[k] + f * (table[k + 1] - table[k]);
 }
 
-double EndProfile::table_radius(double theta) const {
-  double a = (theta - theta_[0]) / cell_;
-  a -= kTable * std::floor(a / kTable);
-  int k = std::min(static_cast<int>(a), kTable - 1);
-  double f = a - k;
-  return r_[k] + f * (r_[k + 1] - r_[k]);
-}
+double EndProfile::u_at_angle(double theta) const { return lookup(u_, theta); }
+
+double EndProfile::table_radius(double theta) const { return lookup(r_, theta); }
 
 EndProfile::Hit EndProfile::first_hit(double phi, double y) const {
   if (!(std::abs(y) < r_max_)) return {};

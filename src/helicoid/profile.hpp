@@ -53,6 +53,7 @@ private:
   void point_and_d1(double u, Vec2& p, Vec2& d) const;
   double u_at_angle(double theta) const;  // table: profile polar angle (degrees) -> u
   double table_radius(double theta) const;
+  double lookup(const std::vector<double>& table, double theta) const;  // periodic, linear
 
   std::string name_;
   Eval eval_;
