@@ -256,32 +256,37 @@ public:
     return cs_.distance(psi_, a, s);
   }
 
-  // Every lattice point, skipping those whose distance cannot be below the best so far: the hit
-  // lies within the profile's largest radius, so x_hit <= sqrt(r_max^2 - y^2).
-  Node brute() {
+  // A distance no point of the lattice node can be below: the hit lies within the profile's
+  // largest radius, so x_hit <= sqrt(r_max^2 - y^2). +inf where the line misses that circle.
+  double lower_bound(Node n) const {
     const double rmax = cs_.work_.profile.r_max();
+    const double a = alpha(n) * kDeg;
+    auto cp = cs_.cutter_.at(s(n));
+    double qx = cs_.setting_.start_distance - cp.p.x * std::cos(a);
+    double qy = cp.p.x * std::sin(a) * cs_.e2_[1] + cp.p.y * cs_.axis_[1];
+    if (std::abs(qy) >= rmax) return kInf;
+    return qx - std::sqrt(rmax * rmax - qy * qy);
+  }
+
+  // Every lattice point, skipping those whose bound is not below the best so far; the row
+  // alpha = 0 first, for a good best early.
+  Node brute() {
     Node best{0, 0};
     double best_d = kInf;
     auto consider = [&](Node n) {
-      const double a = alpha(n) * kDeg;
-      auto cp = cs_.cutter_.at(s(n));
-      double rho = cp.p.x, w = cp.p.y;
-      double qx = cs_.setting_.start_distance - rho * std::cos(a);
-      double qy = rho * std::sin(a) * cs_.e2_[1] + w * cs_.axis_[1];
-      if (std::abs(qy) >= rmax) return;
-      if (qx - std::sqrt(rmax * rmax - qy * qy) >= best_d) return;
+      if (lower_bound(n) >= best_d) return;
       ++evaluations_;
       double d = cs_.distance(psi_, alpha(n), s(n)).d;
       if (d < best_d) best_d = d, best = n;
     };
     for (int j = 0; j <= cs_.ns_; ++j) consider({0, j});
     for (int i = -cs_.na_; i <= cs_.na_; ++i)
-      for (int j = 0; j <= cs_.ns_; ++j) consider({i, j});
+      if (i != 0)
+        for (int j = 0; j <= cs_.ns_; ++j) consider({i, j});
     return best;
   }
 
   std::int64_t evaluations() const { return evaluations_; }
-  void clear_count() { evaluations_ = 0; }
 
 private:
   const ContactSearch& cs_;
@@ -435,16 +440,11 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
   return out;
 }
 
-}  // namespace ncurve::helicoid
-
-namespace ncurve::helicoid {
-
 double ContactSearch::deepest_penetration(double psi, double A, std::int64_t* evaluations) const {
   // Scan every 8th lattice point (skipping those the largest-radius bound clears), then descend
   // from the lowest few, apart from each other, to the continuous minimum.
   constexpr int kStride = 8;
   const double contact = setting_.start_distance - A;
-  const double rmax = work_.profile.r_max();
   StepSearch step(*this, psi);
   struct Low {
     StepSearch::Node n;
@@ -454,11 +454,7 @@ double ContactSearch::deepest_penetration(double psi, double A, std::int64_t* ev
   for (int i = -(na_ / kStride) * kStride; i <= na_; i += kStride)
     for (int j = 0; j <= ns_; j += kStride) {
       StepSearch::Node n{i, j};
-      auto cp = cutter_.at(step.s(n));
-      double a = step.alpha(n) * kDeg;
-      double qx = setting_.start_distance - cp.p.x * std::cos(a);
-      double qy = cp.p.x * std::sin(a) * e2_[1] + cp.p.y * axis_[1];
-      if (std::abs(qy) >= rmax || qx - std::sqrt(rmax * rmax - qy * qy) >= contact + 0.05) continue;
+      if (step.lower_bound(n) >= contact + 0.05) continue;
       double d = step.value(n);
       if (d < contact + 0.05) low.push_back({n, d});
     }
