@@ -209,6 +209,8 @@ void Interpreter::step() {
   }
   if (b.error >= 0) throw nc::Alarm(prog_->errors[b.error]);
   if (b.sequence >= 0) last_sequence_ = b.sequence;
+  if (b.kind == Statement::nc) ++nc_blocks_since_;
+  else if (b.kind != Statement::empty) ++statements_since_;
   switch (b.kind) {
     case Statement::empty: ++f.pc; break;
     case Statement::assign: exec_assignment(b); ++frames_.back().pc; break;

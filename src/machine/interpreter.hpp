@@ -164,6 +164,8 @@ private:
   bool feed_per_rev_ = false;
   bool css_ = false;
   bool exact_stop_ = false;
+  bool exact_stop_once_ = false;  // G09 in the current block
+  std::uint32_t statements_since_ = 0, nc_blocks_since_ = 0;  // since the previous event
   int exact_stop_code_ = 64;
   int length_comp_ = 49;
   int work_index_ = 1;       // 1..6 = G54..G59, 7+ = G54.1 P(n-6)

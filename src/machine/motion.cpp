@@ -72,6 +72,7 @@ void Interpreter::set_origin() {
 void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
   const bool lathe = profile_.lathe();
   const bool system_a = lathe && profile_.gcode_system == 'A';
+  exact_stop_once_ = false;
   for (std::size_t i = 0; i < g_codes_.size(); ++i) {
     int g = g_codes_[i];
     std::uint16_t column = 0;
@@ -80,7 +81,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
     switch (g) {
       case 0: case 10: case 20: case 30: motion_ = g / 10; break;
       case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
-      case 90: break;  // G09: one-shot exact stop, for the time planner
+      case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 170: case 180: case 190: plane_ = g / 10; break;
       case 200: inch_ = true; break;
       case 210: inch_ = false; break;
@@ -194,6 +195,10 @@ void Interpreter::emit(Move& m) {
   m.line = block_ ? block_->line : 0;
   m.feed_per_rev = feed_per_rev_;
   m.spindle = speed_;
+  m.exact_stop = exact_stop_ || exact_stop_once_;
+  m.macro_statements = statements_since_;
+  m.nc_blocks = nc_blocks_since_;
+  statements_since_ = nc_blocks_since_ = 0;
   RunStats& s = result_.stats;
   ++s.by_kind[static_cast<int>(m.kind)];
   if (m.is_motion()) {

@@ -28,6 +28,9 @@ struct Move {
   double seconds = 0;          // dwell time; estimated time for other moves
   double length = 0;           // path length, mm
   int code = 0;                // T number, M code, spindle or coolant M code
+  bool exact_stop = false;     // G61 modal or G09 in the block: the feed comes to zero at the block end
+  std::uint32_t macro_statements = 0;  // macro statements executed since the previous event (for the time planner)
+  std::uint32_t nc_blocks = 0;         // NC blocks read since the previous event, this one included
   int program = -1;            // O number of the program holding the block
   const nc::SourceFile* file = nullptr;
   std::uint32_t line = 0;      // 1-based line in file

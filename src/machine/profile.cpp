@@ -133,6 +133,69 @@ void parameters_table(MachineProfile& p, const toml::table& t, const std::string
   }
 }
 
+double positive(const std::string& origin, const toml::node& node, const std::string& key, bool zero_allowed) {
+  double v = number(origin, node, key);
+  if (!(zero_allowed ? v >= 0 : v > 0))
+    fail(origin, node, fmt::format("'{}' must be {}", key, zero_allowed ? "zero or more" : "more than zero"));
+  return v;
+}
+
+AxisVector positive_axes(const std::string& origin, const toml::node& node, const std::string& key,
+                         const std::string& axes, bool zero_allowed) {
+  AxisVector v = axis_vector(origin, node, key, axes);
+  for (char a : axes) {
+    double x = v[axis_index(a)];
+    if (!(zero_allowed ? x >= 0 : x > 0))
+      fail(origin, node, fmt::format("'{}' must be {} for every axis", key, zero_allowed ? "zero or more" : "more than zero"));
+  }
+  return v;
+}
+
+void motion_table(MachineProfile& p, const toml::table& t, const std::string& origin) {
+  MotionSettings& m = p.motion;
+  for (const auto& [k, node] : t) {
+    std::string key(k.str());
+    if (key == "acceleration") m.acceleration = positive_axes(origin, node, key, p.axes, false);
+    else if (key == "jerk") m.jerk = positive(origin, node, key, true);
+    else if (key == "acc_dec") {
+      std::string v = text(origin, node, key);
+      if (v == "before") m.acc_dec = AccDec::before;
+      else if (v == "after") m.acc_dec = AccDec::after;
+      else fail(origin, node, "acc_dec must be \"before\" (interpolation, with look-ahead) or \"after\"");
+    } else if (key == "filter") {
+      std::string v = text(origin, node, key);
+      if (v == "linear") m.filter = Filter::linear;
+      else if (v == "exponential") m.filter = Filter::exponential;
+      else fail(origin, node, "filter must be \"linear\" or \"exponential\"");
+    } else if (key == "time_constant") m.time_constant = positive_axes(origin, node, key, p.axes, true);
+    else if (key == "look_ahead") {
+      double v = number(origin, node, key);
+      if (v < 1 || v > 1000 || v != static_cast<int>(v)) fail(origin, node, "look_ahead is a whole number of blocks, 1 .. 1000");
+      m.look_ahead = static_cast<int>(v);
+    } else if (key == "block_time") m.block_time = positive(origin, node, key, true);
+    else if (key == "macro_time") m.macro_time = positive(origin, node, key, true);
+    else if (key == "corner_speed") m.corner_speed = positive_axes(origin, node, key, p.axes, true);
+    else if (key == "in_position") m.in_position = positive(origin, node, key, false);
+    else fail(origin, node, fmt::format("unknown key '{}' in [motion] (acceleration, jerk, acc_dec, filter, "
+                                        "time_constant, look_ahead, block_time, macro_time, corner_speed, in_position)", key));
+  }
+}
+
+void servo_table(MachineProfile& p, const toml::table& t, const std::string& origin) {
+  ServoSettings& s = p.servo;
+  for (const auto& [k, node] : t) {
+    std::string key(k.str());
+    if (key == "kv") s.kv = positive_axes(origin, node, key, p.axes, false);
+    else if (key == "feed_forward") {
+      s.feed_forward = number(origin, node, key);
+      if (s.feed_forward < 0 || s.feed_forward > 1) fail(origin, node, "feed_forward is a coefficient from 0 to 1");
+    } else if (key == "period") {
+      s.period = number(origin, node, key);
+      if (s.period < 1e-5 || s.period > 0.01) fail(origin, node, "period is in seconds, 0.00001 .. 0.01");
+    } else fail(origin, node, fmt::format("unknown key '{}' in [servo] (kv, feed_forward, period)", key));
+  }
+}
+
 }  // namespace
 
 void set_parameter(MachineProfile& p, const std::string& key, double value) {
@@ -195,6 +258,10 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
         else if (f == "spindle_speed_for_time") p.spindle_speed_for_time = number(origin, fn, f);
         else fail(origin, fn, fmt::format("unknown key '{}' in [feeds]", f));
       }
+    } else if (key == "motion") {
+      motion_table(p, *t, origin);
+    } else if (key == "servo") {
+      servo_table(p, *t, origin);
     } else if (key == "work_offsets") {
       static const char* names[] = {"EXT", "G54", "G55", "G56", "G57", "G58", "G59"};
       for (const auto& [wk, wn] : *t) {

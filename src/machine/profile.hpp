@@ -20,6 +20,30 @@ struct LatheOffset {
   double x_wear = 0, z_wear = 0, r_wear = 0, tip = 0, x = 0, z = 0, r = 0;
 };
 
+enum class AccDec { before, after };  // acc/dec before interpolation (look-ahead) or after it (filter)
+enum class Filter { linear, exponential };
+
+// How the control turns blocks into motion, for the time planner ([motion] in a profile).
+struct MotionSettings {
+  AxisVector acceleration{1000, 1000, 1000, 3600, 3600, 3600};  // mm/s^2 (deg/s^2) per axis
+  double jerk = 0;                 // mm/s^3 along the path; 0 = no limit (trapezoidal feed)
+  AccDec acc_dec = AccDec::before;
+  Filter filter = Filter::linear;  // acc/dec after interpolation
+  AxisVector time_constant{};      // s, acc/dec after interpolation per axis (No.1622)
+  int look_ahead = 1;              // blocks read and planned ahead of the moving one (buffer)
+  double block_time = 0.001;       // s: processing time of an NC block, the shortest time a block may take
+  double macro_time = 0.0005;      // s per macro statement
+  AxisVector corner_speed{};       // mm/min allowed change of axis speed at a corner (No.1783); 0 = stop
+  double in_position = 0.02;       // mm, in-position width for exact stop (No.1826)
+};
+
+// The position loop of each axis ([servo] in a profile).
+struct ServoSettings {
+  AxisVector kv{30, 30, 30, 30, 30, 30};  // position loop gain, 1/s (No.1825 / 100)
+  double feed_forward = 0;                // velocity feed-forward coefficient 0..1
+  double period = 0.001;                  // s, servo/interpolation period
+};
+
 struct MachineProfile {
   std::string name = "FANUC 0i-MF 3-axis mill, factory parameters";
   MachineType type = MachineType::mill;
@@ -50,6 +74,8 @@ struct MachineProfile {
   std::array<AxisVector, 4> reference_points{};  // machine coordinates of reference points 1..4
   std::map<int, double> tool_offsets;  // mill, memory A: offset number -> value (#2001.., #10001..)
   std::map<int, LatheOffset> lathe_offsets;  // lathe: offset number 1..64 -> geometry and wear
+  MotionSettings motion;
+  ServoSettings servo;
 
   bool lathe() const { return type == MachineType::lathe; }
 };
