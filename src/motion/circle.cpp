@@ -1,0 +1,120 @@
+#include "motion/circle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "motion/planner.hpp"
+#include "motion/servo.hpp"
+
+namespace ncurve::motion {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+double deg(double rad) {
+  double d = rad * 180 / kPi;
+  return d < 0 ? d + 360 : d;
+}
+}  // namespace
+
+double axis_delay(const machine::MachineProfile& profile, int axis) {
+  double d = (1 - profile.servo.feed_forward) / profile.servo.kv[axis];
+  if (profile.motion.acc_dec == machine::AccDec::after) {
+    double T = profile.motion.time_constant[axis];
+    d += profile.motion.filter == machine::Filter::linear ? T / 2 : T;
+  }
+  return d;
+}
+
+CircleResult circle_test(const machine::MachineProfile& profile, const CircleTest& test) {
+  CircleResult r;
+  const double R = test.radius, V = test.feed / 60, w = V / R;
+  const double sign = test.clockwise ? -1 : 1;
+
+  // the circle as the interpreter would give it: full turns from (R, 0)
+  std::vector<machine::Move> moves;
+  for (int k = 0; k < test.turns; ++k) {
+    machine::Move m;
+    m.kind = machine::MoveKind::arc;
+    m.clockwise = test.clockwise;
+    m.start[0] = m.end[0] = R;
+    m.sweep = sign * 2 * kPi;
+    m.length = 2 * kPi * R;
+    m.feed = test.feed;
+    m.seconds = m.length / V;
+    m.nc_blocks = 1;
+    m.line = static_cast<std::uint32_t>(k + 1);
+    moves.push_back(m);
+  }
+
+  const int measured = test.turns / 2;
+  double min_dev = 1e300, max_dev = -1e300, sum = 0;
+  std::size_t n = 0;
+  ServoSim sim(profile, [&](const Tick& t) {
+    if (!t.block || t.block->move.line != static_cast<std::uint32_t>(measured + 1)) return;
+    double rad = std::hypot(t.actual[0], t.actual[1]) - R;
+    double ang = deg(std::atan2(t.actual[1], t.actual[0]));
+    r.polar.emplace_back(ang, rad);
+    sum += rad;
+    ++n;
+    max_dev = std::max(max_dev, rad);
+    if (rad < min_dev) {
+      min_dev = rad;
+      r.max_deviation_angle = ang;
+    }
+  });
+  Planner planner(profile, [&](const BlockTime& b) { sim.on_block(b); });
+  for (const auto& m : moves) planner.on_move(m);
+  planner.finish();
+  sim.finish(1.0);
+  if (n > 0) {
+    r.radius_reduction = -sum / n;
+    r.roundness = max_dev - min_dev;
+  }
+  r.max_contour_error = sim.stats().max_error;
+
+  // closed forms
+  double terms = 0;
+  for (int a = 0; a < 2; ++a) {
+    double t = (1 - profile.servo.feed_forward * profile.servo.feed_forward) / (profile.servo.kv[a] * profile.servo.kv[a]);
+    if (profile.motion.acc_dec == machine::AccDec::after) {
+      double T = profile.motion.time_constant[a];
+      t += profile.motion.filter == machine::Filter::linear ? T * T / 12 : T * T;
+    }
+    terms += t / 2;
+  }
+  r.fanuc_radius_reduction = V * V / (2 * R) * terms;
+  r.first_order_roundness = V * std::fabs(axis_delay(profile, 0) - axis_delay(profile, 1));
+
+  const auto gx = axis_response(profile, 0, w), gy = axis_response(profile, 1, w);
+  double hmin = 1e300, hmax = -1e300, hsum = 0;
+  const int samples = 7200;
+  for (int i = 0; i < samples; ++i) {
+    double th = 2 * kPi * i / samples;
+    std::complex<double> e = std::polar(1.0, th);
+    double x = R * (gx * e).real(), y = R * sign * (gy * std::complex<double>(0, -1) * e).real();
+    double dev = std::hypot(x, y) - R;
+    hsum += dev;
+    hmax = std::max(hmax, dev);
+    if (dev < hmin) {
+      hmin = dev;
+      r.harmonic_angle = deg(std::atan2(y, x));
+    }
+  }
+  r.harmonic_radius_reduction = -hsum / samples;
+  r.harmonic_roundness = hmax - hmin;
+
+  const double ax = profile.motion.acceleration[0], ay = profile.motion.acceleration[1];
+  for (int i = 0; i <= 9000; ++i) {
+    double a = i * kPi / 2 / 9000;
+    double e = V * V / 2 * std::cos(a) * std::sin(a) * (std::cos(a) / ay + std::sin(a) / ax);
+    if (e > r.seed002_error) {
+      r.seed002_error = e;
+      r.seed002_angle = a * 180 / kPi;
+    }
+  }
+  return r;
+}
+
+}  // namespace ncurve::motion
