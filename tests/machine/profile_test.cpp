@@ -39,3 +39,32 @@ TEST(Profile, UnknownKeysAreErrorsWithPosition) {
   EXPECT_THROW(parse_profile("[machine\n", "p.toml"), std::runtime_error);
   EXPECT_THROW(parse_profile("[work_offsets]\nG54 = [1, 2]\n", "p.toml"), std::runtime_error);
 }
+
+TEST(Profile, MotionAndServoTables) {
+  auto mill = load_profile(NCURVE_SOURCE_DIR "/profiles/fanuc-mill.toml");
+  EXPECT_EQ(mill.motion.look_ahead, 30);
+  EXPECT_DOUBLE_EQ(mill.motion.acceleration[2], 800.0);
+  EXPECT_DOUBLE_EQ(mill.motion.corner_speed[0], 400.0);
+  EXPECT_DOUBLE_EQ(mill.servo.kv[1], 30.0);
+  auto p = parse_profile("[machine]\naxes = [\"X\", \"Y\"]\n[motion]\nacc_dec = \"after\"\nfilter = \"exponential\"\n"
+                         "time_constant = [0.03, 0.05]\n[servo]\nkv = [25, 20]\nfeed_forward = 0.5\n",
+                         "p.toml");
+  EXPECT_EQ(p.motion.acc_dec, AccDec::after);
+  EXPECT_EQ(p.motion.filter, Filter::exponential);
+  EXPECT_DOUBLE_EQ(p.motion.time_constant[1], 0.05);
+  EXPECT_DOUBLE_EQ(p.servo.kv[0], 25.0);
+  EXPECT_DOUBLE_EQ(p.servo.feed_forward, 0.5);
+  auto error = [](const std::string& text) {
+    try {
+      parse_profile(text, "bad.toml");
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("[motion]\nacceleration = [1000, 0, 1000]\n").find("bad.toml:2:"), std::string::npos);
+  EXPECT_NE(error("[motion]\nlook_ahead = 2.5\n").find("whole number"), std::string::npos);
+  EXPECT_NE(error("[servo]\nfeed_forward = 1.5\n").find("0 to 1"), std::string::npos);
+  EXPECT_NE(error("[servo]\ngain = 30\n").find("unknown key 'gain'"), std::string::npos);
+  EXPECT_NE(error("[motion]\nacc_dec = \"during\"\n").find("acc_dec must be"), std::string::npos);
+}

@@ -1,0 +1,32 @@
+// The `ncurve analyze` subcommand: cycle time, servo contour error and shape error of a program;
+// `ncurve analyze circle`: the circular test on the machine model.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "app/run_setup.hpp"
+
+namespace ncurve::app {
+
+struct AnalyzeArgs {
+  RunInputs in;
+  bool json = false;
+  bool servo = false;
+  std::string blocks;  // per-block timing CSV
+  std::string plot;    // SVG
+  std::string curve;   // nominal curve for the shape error
+  std::string x, y, z, t_range;
+  std::optional<double> from, to;
+  std::vector<std::string> kv;  // circle: KX[,KY]
+  std::optional<double> feed_forward;
+  double radius = 0, feed = 0;
+  bool clockwise = false;
+  CLI::App* command = nullptr;
+  CLI::App* circle = nullptr;
+};
+
+void add_analyze_command(CLI::App& app, AnalyzeArgs& args);
+int analyze_command(const AnalyzeArgs& args);
+
+}  // namespace ncurve::app

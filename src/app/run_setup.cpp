@@ -1,0 +1,78 @@
+#include "app/run_setup.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace ncurve::app {
+namespace {
+
+std::pair<int, double> parse_set(const std::string& s) {
+  auto eq = s.find('=');
+  auto bad = [&] { return std::runtime_error(fmt::format("--set: '{}' is not of the form #100=5", s)); };
+  if (s.empty() || s[0] != '#' || eq == std::string::npos) throw bad();
+  try {
+    std::size_t used = 0;
+    int n = std::stoi(s.substr(1, eq - 1), &used);
+    if (used != eq - 1) throw bad();
+    std::string value = s.substr(eq + 1);
+    double v = std::stod(value, &used);
+    if (used != value.size()) throw bad();
+    return {n, v};
+  } catch (const std::logic_error&) {
+    throw bad();
+  }
+}
+
+}  // namespace
+
+void apply_parameters(machine::MachineProfile& profile, const std::vector<std::string>& params) {
+  for (const auto& p : params) {
+    auto eq = p.find('=');
+    std::size_t used = 0;
+    double v = 0;
+    try {
+      if (eq == std::string::npos) throw std::invalid_argument(p);
+      v = std::stod(p.substr(eq + 1), &used);
+      if (used != p.size() - eq - 1) throw std::invalid_argument(p);
+    } catch (const std::logic_error&) {
+      throw std::runtime_error(fmt::format("--param: '{}' is not of the form 6050=102", p));
+    }
+    try {
+      machine::set_parameter(profile, p.substr(0, eq), v);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(fmt::format("--param: {}", e.what()));
+    }
+  }
+}
+
+void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
+  auto* program = cmd->add_option("program", in.program, "part program (.nc)")->check(CLI::ExistingFile);
+  if (program_required) program->required();
+  cmd->add_option("--machine", in.machine, "machine profile (TOML); default: FANUC 3-axis mill, factory parameters")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--lib", in.libs, "folder of macro programs (O9010.nc, ...); may be repeated")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--param", in.params,
+                  "set a control parameter over the profile's, e.g. --param 6050=102 (G102 calls O9010); may be "
+                  "repeated");
+  cmd->add_option("--set", in.sets, "preset a variable before the run, e.g. --set \"#100=5\"; may be repeated");
+  cmd->add_option("--max-steps", in.max_steps, "stop a program that has not ended after this many blocks")
+      ->check(CLI::PositiveNumber);
+}
+
+RunSetup prepare_run(const RunInputs& in) {
+  RunSetup s;
+  s.options.max_steps = in.max_steps;
+  for (const auto& v : in.sets) s.options.presets.push_back(parse_set(v));
+  if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
+  apply_parameters(s.profile, in.params);
+  s.problems = s.lib->add_file(in.program, true);
+  for (const auto& dir : in.libs) {
+    auto more = s.lib->add_folder(dir);
+    s.problems.insert(s.problems.end(), more.begin(), more.end());
+  }
+  return s;
+}
+
+}  // namespace ncurve::app

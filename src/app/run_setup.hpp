@@ -1,0 +1,40 @@
+// What `ncurve run` and `ncurve analyze` share: the machine profile with --param overrides, the
+// program and its macro folders, and the run options.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "machine/interpreter.hpp"
+#include "machine/library.hpp"
+#include "machine/profile.hpp"
+
+namespace ncurve::app {
+
+struct RunInputs {
+  std::string program;
+  std::string machine;
+  std::vector<std::string> libs;
+  std::vector<std::string> sets;    // "#100=5"
+  std::vector<std::string> params;  // "6050=102"
+  std::uint64_t max_steps = machine::RunOptions{}.max_steps;
+};
+
+struct RunSetup {
+  machine::MachineProfile profile = machine::default_mill();
+  std::unique_ptr<machine::ProgramLibrary> lib = std::make_unique<machine::ProgramLibrary>();
+  std::vector<nc::Diagnostic> problems;  // syntax found while reading the programs
+  machine::RunOptions options;
+};
+
+// The options naming them: program (required unless program_required is false), --machine, --lib,
+// --param, --set, --max-steps.
+void add_run_inputs(CLI::App* command, RunInputs& in, bool program_required);
+// Throws std::runtime_error with a message for the user (bad option, profile or file).
+RunSetup prepare_run(const RunInputs& in);
+// Applies "--param N=V" overrides to a profile.
+void apply_parameters(machine::MachineProfile& profile, const std::vector<std::string>& params);
+
+}  // namespace ncurve::app

@@ -1,0 +1,50 @@
+# ncurve analyze as a user runs it: the circular test's JSON keys and values against the closed
+# form, a program's cycle time, block table and plots, and errors for bad input.
+include(${CMAKE_CURRENT_LIST_DIR}/cli_helpers.cmake)
+
+# R 50, F 5000, Kv 30: V^2 / (2 R Kv^2) = 0.0772 mm (simulated 0.0770)
+run_expect(0 "circle json" ${NCURVE} analyze circle --radius 50 --feed 5000 --json)
+foreach(key radius_reduction roundness max_deviation_angle max_contour_error closed_form fanuc_radius_reduction)
+  expect_text("${out}" "\"${key}\"" "analyze circle --json")
+endforeach()
+if(NOT out MATCHES "\"radius_reduction\": 0\\.07(69|70)")
+  message(SEND_ERROR "radius reduction is not V^2/(2 R Kv^2): ${out}")
+endif()
+# Kv X 25 < Y 30: the ellipse's smallest radius near 135 degrees, roundness V (1/25 - 1/30) = 0.556 mm
+run_expect(0 "circle mismatched gains" ${NCURVE} analyze circle --radius 50 --feed 5000 --kv 25,30 --json
+           --plot ${OUT}/circle.svg)
+if(NOT out MATCHES "\"max_deviation_angle\": (13[2-9]|14[0-9]|31[2-9]|32[0-9])\\.")
+  message(SEND_ERROR "the ellipse is not at 135 (315) degrees: ${out}")
+endif()
+if(NOT out MATCHES "\"roundness\": 0\\.55")
+  message(SEND_ERROR "roundness is not V (1/Kx - 1/Ky): ${out}")
+endif()
+file(READ ${OUT}/circle.svg svg)
+expect_text("${svg}" "Circular test: R 50 mm, F 5000 mm/min" "polar plot title")
+expect_text("${svg}" "µm" "polar plot rings")
+
+run_expect(0 "analyze program" ${NCURVE} analyze ${SRC}/examples/spiral.nc --machine ${SRC}/profiles/fanuc-mill.toml
+           --json --servo --blocks ${OUT}/blocks.csv --plot ${OUT}/feed.svg)
+foreach(key cycle_time_s motion_s wait_s settle_s programmed_time_s starved_blocks mean_feed_mm_min macro_statements
+        contour_error max_mm)
+  expect_text("${out}" "\"${key}\"" "analyze --json")
+endforeach()
+file(READ ${OUT}/blocks.csv csv)
+expect_text("${csv}" "file,line,kind,length_mm,programmed_mm_min,cap_mm_min,limit,v_in_mm_min,v_peak_mm_min" "block table")
+expect_text("${csv}" "spiral.nc,23,line," "the loop's G01 block")
+file(READ ${OUT}/feed.svg svg)
+expect_text("${svg}" "feed, mm/min" "feed plot axis")
+run_expect(0 "analyze text" ${NCURVE} analyze ${SRC}/examples/spiral.nc)
+expect_text("${out}" "cycle time" "analyze text")
+expect_text("${out}" "macro statements 604" "statements of the spiral loop: 6 per turn x 100 + 4")
+
+run_expect(2 "no program" ${NCURVE} analyze)
+run_expect(2 "bad gain" ${NCURVE} analyze circle --radius 50 --feed 100 --kv fast)
+expect_text("${err}" "--kv" "bad gain message")
+run_expect(2 "negative radius" ${NCURVE} analyze circle --radius -5 --feed 100)
+file(WRITE ${OUT}/bad_motion.toml "[motion]\nlook_ahead = 0\n")
+run_expect(2 "bad profile" ${NCURVE} analyze ${SRC}/examples/spiral.nc --machine ${OUT}/bad_motion.toml)
+expect_text("${err}" "bad_motion.toml:2:" "profile error position")
+file(WRITE ${OUT}/alarm.nc "G01 X10.\nM30\n")
+run_expect(1 "program alarm" ${NCURVE} analyze ${OUT}/alarm.nc)
+expect_text("${err}" "PS0011" "feed zero alarm")
