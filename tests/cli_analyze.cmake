@@ -48,3 +48,16 @@ expect_text("${err}" "bad_motion.toml:2:" "profile error position")
 file(WRITE ${OUT}/alarm.nc "G01 X10.\nM30\n")
 run_expect(1 "program alarm" ${NCURVE} analyze ${OUT}/alarm.nc)
 expect_text("${err}" "PS0011" "feed zero alarm")
+
+# shape error against the nominal spiral r = 1 + 2 theta: 100 equal 3.6 degree chords leave
+# r (1 - cos 1.8 deg) = 6.69 um at the outer end (r = 13.57), plus IS-B rounding (< 0.71 um)
+run_expect(0 "shape error" ${NCURVE} analyze ${SRC}/examples/spiral.nc --json --curve spiral --r0 1
+           --pitch 12.566370614359172 --from 0 --to 360)
+expect_text("${out}" "\"shape_error\"" "shape error json")
+if(NOT out MATCHES "\"max_mm\": 0\\.00(669|6[7-9]|7[0-3])")
+  message(SEND_ERROR "shape error is not the chord height of 3.6 degrees at r = 13.57: ${out}")
+endif()
+expect_text("${out}" "\"line\": 23" "worst block is the loop's G01")
+run_expect(2 "unknown curve" ${NCURVE} analyze ${SRC}/examples/spiral.nc --curve trefoil)
+expect_text("${err}" "no curve named 'trefoil'" "unknown curve message")
+run_expect(2 "stray argument" ${NCURVE} analyze ${SRC}/examples/spiral.nc --r0 1)

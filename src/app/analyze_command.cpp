@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "gen/generate.hpp"
 #include "motion/circle.hpp"
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
@@ -160,6 +161,18 @@ int program_command(const AnalyzeArgs& a) {
   }
   for (const auto& d : setup.problems) std::cerr << nc::format(d) << "\n";
   const machine::MachineProfile& profile = setup.profile;
+  std::optional<geom::Curve> curve;
+  if (!a.curve.name.empty()) {
+    try {
+      curve.emplace(build_curve(a.curve, a.command->remaining(), profile));
+    } catch (const std::exception& e) {
+      std::cerr << "ncurve analyze: --curve: " << e.what() << "\n";
+      return 2;
+    }
+  } else if (!a.command->remaining().empty()) {
+    std::cerr << "ncurve analyze: unexpected argument '" << a.command->remaining().front() << "'\n";
+    return 2;
+  }
 
   std::ofstream csv;
   if (!a.blocks.empty()) {
@@ -191,13 +204,47 @@ int program_command(const AnalyzeArgs& a) {
       cut_length += b.length;
     }
   });
+  // The contour measured against the curve: feed moves (lines and arcs), and for a plane curve on a
+  // mill only those that stay at one Z (plunges and retracts are not part of the contour).
+  struct Tee final : machine::MoveSink {
+    machine::MoveSink* planner = nullptr;
+    std::vector<machine::Move>* contour = nullptr;
+    bool plane_only = false;
+    void on_move(const machine::Move& m) override {
+      planner->on_move(m);
+      if (!contour || (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc)) return;
+      if (plane_only && m.end[2] != m.start[2]) return;
+      contour->push_back(m);
+    }
+  } tee;
+  std::vector<machine::Move> contour;
+  tee.planner = &planner;
+  if (curve) {
+    tee.contour = &contour;
+    tee.plane_only = !profile.lathe() && curve->planar_z();
+  }
   machine::Interpreter interp(profile, *setup.lib, setup.options);
-  machine::RunResult result = interp.run(planner);
+  machine::RunResult result = interp.run(tee);
   planner.finish();
   if (sim) sim->finish(std::max(0.2, 5.0 / profile.servo.kv[0]));
   if (!result.ok()) {
     std::cerr << nc::format(*result.alarm) << "\n";
     return 1;
+  }
+  std::optional<gen::Stats> shape;
+  std::vector<std::uint32_t> shape_lines;
+  if (curve) {
+    gen::Options o;
+    o.profile = profile;
+    o.tol = 0.01;
+    if (!contour.empty()) o.depth = -contour.front().start[2];
+    try {
+      shape = gen::measure(contour, *curve, o, false);
+    } catch (const std::exception& e) {
+      std::cerr << "ncurve analyze: --curve: " << e.what() << "\n";
+      return 1;
+    }
+    for (const auto& m : contour) shape_lines.push_back(m.line);
   }
   const motion::PlanTotals& t = planner.totals();
   const double mean_feed = t.feed_motion_seconds > 0 ? t.feed_length / t.feed_motion_seconds * 60 : 0;
@@ -229,6 +276,22 @@ int program_command(const AnalyzeArgs& a) {
       j["contour_error"] = {{"max_mm", s.max_error}, {"rms_mm", s.rms}, {"t_s", s.max_t}, {"line", s.max_line},
                             {"at", {s.max_actual[0], s.max_actual[1], s.max_actual[2]}}};
     }
+    if (shape) {
+      double sq = 0;
+      std::size_t worst = 0;
+      for (std::size_t i = 0; i < shape->deviation.size(); ++i) {
+        sq += shape->deviation[i].second * shape->deviation[i].second;
+        if (shape->deviation[i].second > shape->deviation[worst].second) worst = i;
+      }
+      j["shape_error"] = {{"curve", curve->name()},
+                          {"max_mm", shape->max_deviation},
+                          {"t", shape->worst_t},
+                          {"at", shape->worst_point},
+                          {"line", shape_lines.empty() ? 0 : shape_lines[worst]},
+                          {"blocks", shape->deviation.size()},
+                          {"rms_block_max_mm", shape->deviation.empty() ? 0 : std::sqrt(sq / shape->deviation.size())},
+                          {"path_length_mm", shape->path_length}};
+    }
     std::cout << j.dump(2) << "\n";
     return 0;
   }
@@ -245,6 +308,17 @@ int program_command(const AnalyzeArgs& a) {
   if (slowest_wait.wait > 0)
     std::cout << fmt::format("  longest wait      {:.4f} s before {} (the control was still reading or computing)\n",
                              slowest_wait.wait, where(slowest_wait.move));
+  if (shape) {
+    std::size_t worst = 0;
+    for (std::size_t i = 0; i < shape->deviation.size(); ++i)
+      if (shape->deviation[i].second > shape->deviation[worst].second) worst = i;
+    std::cout << fmt::format(
+        "  shape error       max {:.6f} mm from {} at t = {:.6g} (X {:.4f} Y {:.4f} Z {:.4f}), block at line {}; {} "
+        "contour blocks, {:.3f} mm\n",
+        shape->max_deviation, curve->name(), shape->worst_t, shape->worst_point[0], shape->worst_point[1],
+        shape->worst_point[2], shape_lines.empty() ? 0 : shape_lines[worst], shape->deviation.size(),
+        shape->path_length);
+  }
   if (sim) {
     const auto& s = sim->stats();
     std::cout << fmt::format(
@@ -268,6 +342,16 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
   cmd->add_option("--plot", a.plot, "SVG: feed reached against programmed along the path");
   cmd->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's")->delimiter(',');
   cmd->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1 over the profile's");
+  cmd->allow_extras();
+  cmd->add_option("--curve", a.curve.name,
+                  "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "
+                  "or expr");
+  cmd->add_option("--x", a.curve.x, "--curve expr: x(t)");
+  cmd->add_option("--y", a.curve.y, "--curve expr: y(t)");
+  cmd->add_option("--z", a.curve.z, "--curve expr: z(t)");
+  cmd->add_option("--t", a.curve.t_range, "--curve expr: range of t as FROM:TO");
+  cmd->add_option("--from", a.curve.from, "start of the curve parameter t");
+  cmd->add_option("--to", a.curve.to, "end of the curve parameter t");
   CLI::App* circle = cmd->add_subcommand("circle", "ISO 230-4 circular test on the machine model");
   circle->add_option("--radius", a.radius, "radius, mm")->required()->check(CLI::PositiveNumber);
   circle->add_option("--feed", a.feed, "feed, mm/min")->required()->check(CLI::PositiveNumber);

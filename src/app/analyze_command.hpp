@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "app/curve_args.hpp"
 #include "app/run_setup.hpp"
 
 namespace ncurve::app {
@@ -15,9 +16,7 @@ struct AnalyzeArgs {
   bool servo = false;
   std::string blocks;  // per-block timing CSV
   std::string plot;    // SVG
-  std::string curve;   // nominal curve for the shape error
-  std::string x, y, z, t_range;
-  std::optional<double> from, to;
+  CurveArgs curve;     // nominal curve for the shape error (name empty: none)
   std::vector<std::string> kv;  // circle: KX[,KY]
   std::optional<double> feed_forward;
   double radius = 0, feed = 0;

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "app/curve_args.hpp"
 #include "gen/generate.hpp"
 #include "machine/profile.hpp"
 
@@ -24,33 +25,6 @@ std::string list_curves() {
   s += "\n  expr       any curve: ncurve gen expr --x \"..\" --y \"..\" [--z \"..\"] --t 0:360 [--NAME VALUE ...]\n"
        "             (macro expression language: SIN COS TAN ATAN ... in degrees, [ ] or ( ), names for parameters)\n";
   return s;
-}
-
-// --name value pairs left over by the option parser are curve parameters.
-std::map<std::string, double> curve_parameters(const std::vector<std::string>& extras) {
-  std::map<std::string, double> out;
-  for (std::size_t i = 0; i < extras.size(); ++i) {
-    const std::string& key = extras[i];
-    if (key.rfind("--", 0) != 0 || key.size() < 3)
-      throw std::runtime_error(fmt::format("unexpected argument '{}'", key));
-    std::string name = key.substr(2), value;
-    if (auto eq = name.find('='); eq != std::string::npos) {
-      value = name.substr(eq + 1);
-      name = name.substr(0, eq);
-    } else {
-      if (i + 1 >= extras.size()) throw std::runtime_error(fmt::format("{} needs a value", key));
-      value = extras[++i];
-    }
-    try {
-      std::size_t used = 0;
-      double v = std::stod(value, &used);
-      if (used != value.size()) throw std::invalid_argument(value);
-      out[name] = v;
-    } catch (const std::exception&) {
-      throw std::runtime_error(fmt::format("{}: '{}' is not a number", key, value));
-    }
-  }
-  return out;
 }
 
 }  // namespace
@@ -112,29 +86,7 @@ int gen_command(const GenArgs& a) {
     o.program_number = a.program_number;
     o.tool_radius = a.tool_radius;
     o.side = a.side == "right" ? gen::Side::right : gen::Side::left;
-    auto values = curve_parameters(a.command->remaining());
-    nc::EvalOptions eval;
-    eval.atan_signed = o.profile.atan_signed;
-    geom::CurveSpec spec;
-    if (a.curve == "expr") {
-      if (a.x.empty() && a.y.empty()) throw std::runtime_error("expr needs --x and --y (and optionally --z)");
-      spec.name = "expr";
-      spec.x = a.x.empty() ? "0" : a.x;
-      spec.y = a.y.empty() ? "0" : a.y;
-      spec.z = a.z.empty() ? "0" : a.z;
-      for (const auto& [name, value] : values) spec.params.push_back({name, value, "user parameter"});
-      auto colon = a.t_range.find(':');
-      if (a.t_range.empty() || colon == std::string::npos) throw std::runtime_error("expr needs --t FROM:TO");
-      spec.from = std::stod(a.t_range.substr(0, colon));
-      spec.to = std::stod(a.t_range.substr(colon + 1));
-    } else {
-      const geom::CurveSpec* found = geom::find_curve(a.curve);
-      if (!found) throw std::runtime_error(fmt::format("no curve named '{}' (ncurve gen --list shows them)", a.curve));
-      spec = *found;
-    }
-    curve.emplace(spec, values, eval);
-    if (a.from) curve->set_range(*a.from, curve->t1());
-    if (a.to) curve->set_range(curve->t0(), *a.to);
+    curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to}, a.command->remaining(), o.profile));
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 2;

@@ -90,11 +90,17 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
   machine::RunResult r = interp.run(keep);
   if (!r.ok()) throw std::runtime_error("the generated program does not run: " + nc::format(*r.alarm));
 
-  Stats s;
+  if (keep.moves.empty()) throw std::runtime_error("the generated program cuts no contour");
+  Stats s = measure(keep.moves, curve, o, true);
   report::SourceStats source = report::source_stats(lib, lib.main()->file.get());  // as `ncurve run` counts
   s.words = source.words;
   s.bytes = source.bytes;
   s.blocks = source.blocks;
+  return s;
+}
+
+Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curve, const Options& o, bool require_end) {
+  Stats s;
   AxisMap map = axis_map(curve, o);
   geom::Placement place = [map](const Vec3& c) { return map(c); };
   geom::Plane plane = plane_of(o.profile);
@@ -127,8 +133,8 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
     return 0.5 * (lo + up);
   };
 
-  if (keep.moves.empty()) throw std::runtime_error("the generated program cuts no contour");
-  s.points = keep.moves.size() + 1;
+  if (contour.empty()) throw std::runtime_error("no contour to measure");
+  s.points = contour.size() + 1;
   auto note = [&](double d, double t) {
     if (d > s.max_deviation) {
       s.max_deviation = d;
@@ -136,13 +142,13 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
       s.worst_point = map(curve.point(t));
     }
   };
-  Vec3 first{keep.moves[0].start[0], keep.moves[0].start[1], keep.moves[0].start[2]};
+  Vec3 first{contour[0].start[0], contour[0].start[1], contour[0].start[2]};
   s.path.push_back(first);
   double t_prev = project(first, t_first, 1e-3 + 10 * o.tol);
   note(dist(first, map(curve.point(t_prev))), t_prev);
   const Vec3 curve_end = map(curve.point(curve.t1()));
-  for (const auto& m : keep.moves) {
-    const bool last_move = &m == &keep.moves.back();
+  for (const auto& m : contour) {
+    const bool last_move = &m == &contour.back();
     geom::Piece piece;
     piece.start = {m.start[0], m.start[1], m.start[2]};
     piece.end = {m.end[0], m.end[1], m.end[2]};
@@ -151,7 +157,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
     piece.ccw = m.sweep > 0;
     s.path_length += m.length;
     double t_end = project(piece.end, t_prev, 3 * m.length + 10 * o.tol + 1e-3);
-    if (last_move) {  // the contour must reach the end of the curve
+    if (last_move && require_end) {  // the contour must reach the end of the curve
       if (dist(piece.end, curve_end) > o.tol)
         throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
                                              dist(piece.end, curve_end), curve.t1()));

@@ -8,6 +8,7 @@
 
 #include "geom/approx.hpp"
 #include "geom/curve.hpp"
+#include "machine/move.hpp"
 #include "machine/profile.hpp"
 
 namespace ncurve::gen {
@@ -68,6 +69,11 @@ Result generate(const geom::Curve& curve, const Options& o);
 // program) against the curve; throws with the interpreter's alarm if the program fails.
 Stats round_trip(const std::string& text, const geom::Curve& curve, const Options& o, std::uint32_t first_line,
                  std::uint32_t last_line);
+
+// Measures a contour (lines and arcs, in order along the curve) against the curve: the largest
+// distance from the curve to the path, by optimisation on each piece. With require_end the
+// contour must end at the curve's end (within the tolerance).
+Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curve, const Options& o, bool require_end);
 
 // An SVG picture: the curve, the path (with its vertices) in the machine plane, and the deviation
 // along the curve against the tolerance.
