@@ -232,7 +232,8 @@ int program_command(const AnalyzeArgs& a) {
     return 1;
   }
   std::optional<gen::Stats> shape;
-  std::vector<std::uint32_t> shape_lines;
+  double shape_rms = 0;        // of the blocks' largest deviations
+  std::uint32_t shape_line = 0;  // the block where the deviation peaks
   if (curve) {
     gen::Options o;
     o.profile = profile;
@@ -244,7 +245,14 @@ int program_command(const AnalyzeArgs& a) {
       std::cerr << "ncurve analyze: --curve: " << e.what() << "\n";
       return 1;
     }
-    for (const auto& m : contour) shape_lines.push_back(m.line);
+    double sq = 0;
+    std::size_t worst = 0;
+    for (std::size_t i = 0; i < shape->deviation.size(); ++i) {
+      sq += shape->deviation[i].second * shape->deviation[i].second;
+      if (shape->deviation[i].second > shape->deviation[worst].second) worst = i;
+    }
+    shape_rms = shape->deviation.empty() ? 0 : std::sqrt(sq / shape->deviation.size());
+    if (worst < contour.size()) shape_line = contour[worst].line;
   }
   const motion::PlanTotals& t = planner.totals();
   const double mean_feed = t.feed_motion_seconds > 0 ? t.feed_length / t.feed_motion_seconds * 60 : 0;
@@ -277,19 +285,13 @@ int program_command(const AnalyzeArgs& a) {
                             {"at", {s.max_actual[0], s.max_actual[1], s.max_actual[2]}}};
     }
     if (shape) {
-      double sq = 0;
-      std::size_t worst = 0;
-      for (std::size_t i = 0; i < shape->deviation.size(); ++i) {
-        sq += shape->deviation[i].second * shape->deviation[i].second;
-        if (shape->deviation[i].second > shape->deviation[worst].second) worst = i;
-      }
       j["shape_error"] = {{"curve", curve->name()},
                           {"max_mm", shape->max_deviation},
                           {"t", shape->worst_t},
                           {"at", shape->worst_point},
-                          {"line", shape_lines.empty() ? 0 : shape_lines[worst]},
+                          {"line", shape_line},
                           {"blocks", shape->deviation.size()},
-                          {"rms_block_max_mm", shape->deviation.empty() ? 0 : std::sqrt(sq / shape->deviation.size())},
+                          {"rms_block_max_mm", shape_rms},
                           {"path_length_mm", shape->path_length}};
     }
     std::cout << j.dump(2) << "\n";
@@ -309,14 +311,11 @@ int program_command(const AnalyzeArgs& a) {
     std::cout << fmt::format("  longest wait      {:.4f} s before {} (the control was still reading or computing)\n",
                              slowest_wait.wait, where(slowest_wait.move));
   if (shape) {
-    std::size_t worst = 0;
-    for (std::size_t i = 0; i < shape->deviation.size(); ++i)
-      if (shape->deviation[i].second > shape->deviation[worst].second) worst = i;
     std::cout << fmt::format(
         "  shape error       max {:.6f} mm from {} at t = {:.6g} (X {:.4f} Y {:.4f} Z {:.4f}), block at line {}; {} "
         "contour blocks, {:.3f} mm\n",
         shape->max_deviation, curve->name(), shape->worst_t, shape->worst_point[0], shape->worst_point[1],
-        shape->worst_point[2], shape_lines.empty() ? 0 : shape_lines[worst], shape->deviation.size(),
+        shape->worst_point[2], shape_line, shape->deviation.size(),
         shape->path_length);
   }
   if (sim) {
