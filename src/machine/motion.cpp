@@ -12,18 +12,6 @@ namespace ncurve::machine {
 namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-// The two in-plane axes and the normal axis of G17/G18/G19, and the centre offset letters.
-struct PlaneAxes {
-  int p, q, n;
-  char ip, iq;
-};
-PlaneAxes plane_axes(int plane) {
-  switch (plane) {
-    case 18: return {2, 0, 1, 'K', 'I'};
-    case 19: return {1, 2, 0, 'J', 'K'};
-    default: return {0, 1, 2, 'I', 'J'};
-  }
-}
 
 const char* kindless_unsupported(int g) {
   switch (g) {
@@ -43,6 +31,14 @@ const char* kindless_unsupported(int g) {
   }
 }
 }  // namespace
+
+PlaneAxes plane_axes(int plane) {
+  switch (plane) {
+    case 18: return {2, 0, 1, 'K', 'I'};
+    case 19: return {1, 2, 0, 'J', 'K'};
+    default: return {0, 1, 2, 'I', 'J'};
+  }
+}
 
 const char* to_string(MoveKind k) {
   switch (k) {

@@ -14,6 +14,14 @@ enum class MoveKind : std::uint8_t {
 
 const char* to_string(MoveKind k);
 
+// The two in-plane axes of G17/G18/G19 (p to q is counter-clockwise about the plane normal), the
+// normal axis, and the letters of the centre offsets along p and q.
+struct PlaneAxes {
+  int p, q, n;
+  char ip, iq;
+};
+PlaneAxes plane_axes(int plane);
+
 struct Move {
   MoveKind kind = MoveKind::line;
   std::uint8_t plane = 17;     // 17 XY, 18 ZX, 19 YZ

@@ -12,12 +12,6 @@ using machine::MoveKind;
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// In-plane axes of G17/G18/G19 (the first to the second is counter-clockwise) and the normal.
-void plane_axes(int plane, int& p, int& q, int& n) {
-  if (plane == 18) p = 2, q = 0, n = 1;
-  else if (plane == 19) p = 1, q = 2, n = 0;
-  else p = 0, q = 1, n = 2;
-}
 
 // Time of a ramp phase, its speed and distance, for the S-curve: jerk up, constant acceleration, jerk down.
 struct Phases {
@@ -205,8 +199,7 @@ void Planner::add(const Move& m) {
   Limit limit = Limit::programmed;
   double accel = kInf;
   if (m.kind == MoveKind::arc) {
-    int pa, qa, na;
-    plane_axes(m.plane, pa, qa, na);
+    const auto [pa, qa, na, ip, iq] = machine::plane_axes(m.plane);
     double rp = m.start[pa] - m.center[pa], rq = m.start[qa] - m.center[qa];
     double R = std::hypot(rp, rq);
     double sgn = m.sweep >= 0 ? 1 : -1;

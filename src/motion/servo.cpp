@@ -8,11 +8,6 @@ namespace ncurve::motion {
 using machine::MoveKind;
 
 namespace {
-void plane_axes(int plane, int& p, int& q, int& n) {
-  if (plane == 18) p = 2, q = 0, n = 1;
-  else if (plane == 19) p = 1, q = 2, n = 0;
-  else p = 0, q = 1, n = 2;
-}
 
 double norm(const Point& a, const Point& b) {
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
@@ -52,8 +47,7 @@ Point ServoSim::path_point(const Segment& seg, double s) const {
     for (int a = 0; a < 3; ++a) p[a] = m.start[a] + f * (m.end[a] - m.start[a]);
     return p;
   }
-  int pa, qa, na;
-  plane_axes(m.plane, pa, qa, na);
+  const auto [pa, qa, na, ip, iq] = machine::plane_axes(m.plane);
   double rp = m.start[pa] - m.center[pa], rq = m.start[qa] - m.center[qa];
   double R = std::hypot(rp, rq), a0 = std::atan2(rq, rp), ang = a0 + m.sweep * f;
   Point p;
@@ -77,8 +71,7 @@ double ServoSim::distance_to(const Segment& seg, const Point& p) const {
     t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0;
     return norm(p, {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]});
   }
-  int pa, qa, na;
-  plane_axes(m.plane, pa, qa, na);
+  const auto [pa, qa, na, ip, iq] = machine::plane_axes(m.plane);
   double rp = m.start[pa] - m.center[pa], rq = m.start[qa] - m.center[qa];
   double a0 = std::atan2(rq, rp);
   double pp = p[pa] - m.center[pa], pq = p[qa] - m.center[qa];
