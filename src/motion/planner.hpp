@@ -105,7 +105,6 @@ private:
   double last_ready_ = 0;
   double v_last_ = 0;                // mm/s at the end of the last final block
   double carry_compute_ = 0;         // statements read before the next motion
-  double carry_dwell_ = 0;
   bool ended_ = false;
 };
 
