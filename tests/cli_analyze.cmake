@@ -41,6 +41,8 @@ expect_text("${out}" "macro statements 604" "statements of the spiral loop: 6 pe
 run_expect(2 "no program" ${NCURVE} analyze)
 run_expect(2 "bad gain" ${NCURVE} analyze circle --radius 50 --feed 100 --kv fast)
 expect_text("${err}" "--kv" "bad gain message")
+run_expect(2 "feed-forward above 1" ${NCURVE} analyze ${SRC}/examples/spiral.nc --servo --feed-forward 1.5)
+run_expect(2 "circle feed-forward above 1" ${NCURVE} analyze circle --radius 50 --feed 100 --feed-forward 1.5)
 run_expect(2 "negative radius" ${NCURVE} analyze circle --radius -5 --feed 100)
 file(WRITE ${OUT}/bad_motion.toml "[motion]\nlook_ahead = 0\n")
 run_expect(2 "bad profile" ${NCURVE} analyze ${SRC}/examples/spiral.nc --machine ${OUT}/bad_motion.toml)

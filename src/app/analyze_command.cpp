@@ -29,8 +29,10 @@ bool write_file(const std::string& path, const std::string& text, const char* wh
   return true;
 }
 
-// --kv 30 or --kv 30,25 (X, Y).
-void apply_kv(machine::MachineProfile& p, const std::vector<std::string>& kv) {
+// --kv 30 or --kv 30,25 (X, Y), and --feed-forward, over the profile's servo settings.
+void apply_servo_options(machine::MachineProfile& p, const AnalyzeArgs& a) {
+  if (a.feed_forward) p.servo.feed_forward = *a.feed_forward;
+  const std::vector<std::string>& kv = a.kv;
   if (kv.empty()) return;
   if (kv.size() > 2) throw std::runtime_error("--kv takes KX or KX,KY");
   for (std::size_t i = 0; i < kv.size(); ++i) {
@@ -52,11 +54,7 @@ int circle_command(const AnalyzeArgs& a) {
   motion::CircleTest test;
   try {
     if (!a.in.machine.empty()) profile = machine::load_profile(a.in.machine);
-    apply_kv(profile, a.kv);
-    if (a.feed_forward) {
-      if (*a.feed_forward < 0 || *a.feed_forward > 1) throw std::runtime_error("--feed-forward is from 0 to 1");
-      profile.servo.feed_forward = *a.feed_forward;
-    }
+    apply_servo_options(profile, a);
   } catch (const std::exception& e) {
     std::cerr << "ncurve analyze circle: " << e.what() << "\n";
     return 2;
@@ -153,8 +151,7 @@ int program_command(const AnalyzeArgs& a) {
   RunSetup setup;
   try {
     setup = prepare_run(a.in);
-    apply_kv(setup.profile, a.kv);
-    if (a.feed_forward) setup.profile.servo.feed_forward = *a.feed_forward;
+    apply_servo_options(setup.profile, a);
   } catch (const std::exception& e) {
     std::cerr << "ncurve analyze: " << e.what() << "\n";
     return 2;
@@ -340,7 +337,8 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
   cmd->add_option("--blocks", a.blocks, "write each motion's timing and feed to this CSV file");
   cmd->add_option("--plot", a.plot, "SVG: feed reached against programmed along the path");
   cmd->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's")->delimiter(',');
-  cmd->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1 over the profile's");
+  cmd->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1 over the profile's")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->allow_extras();
   cmd->add_option("--curve", a.curve.name,
                   "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "
@@ -355,7 +353,8 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
   circle->add_option("--radius", a.radius, "radius, mm")->required()->check(CLI::PositiveNumber);
   circle->add_option("--feed", a.feed, "feed, mm/min")->required()->check(CLI::PositiveNumber);
   circle->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's")->delimiter(',');
-  circle->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1");
+  circle->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1")
+      ->check(CLI::Range(0.0, 1.0));
   circle->add_option("--machine", a.in.machine, "machine profile (TOML)")->check(CLI::ExistingFile);
   circle->add_flag("--cw", a.clockwise, "clockwise (G02); default counter-clockwise");
   circle->add_flag("--json", a.json, "results as JSON");

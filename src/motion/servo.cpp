@@ -168,7 +168,6 @@ void ServoSim::on_block(const BlockTime& b) {
   for (int a = 0; a < 3; ++a) keep = std::max(keep, 4 * std::fabs(error_[a]) + 4 * std::fabs(filtered_[a] - held_[a]));
   while (window_.size() > 2 && window_.front().s0 + window_.front().block.length < path_length_ - keep)
     window_.pop_front();
-  stats_.rms = stats_.ticks ? std::sqrt(sum_sq_ / stats_.ticks) : 0;
 }
 
 void ServoSim::finish(double settle_seconds) {

@@ -35,7 +35,7 @@ public:
   using Callback = std::function<void(const Tick&)>;
   explicit ServoSim(const machine::MachineProfile& profile, Callback on_tick = {});
   void on_block(const BlockTime& b);  // in plan order, e.g. from Planner's callback
-  void finish(double settle_seconds);  // runs on with the command at rest for this long
+  void finish(double settle_seconds);  // runs on with the command at rest for this long; sets the RMS
   const ContourStats& stats() const { return stats_; }
 
 private:
