@@ -170,7 +170,8 @@ void motion_table(MachineProfile& p, const toml::table& t, const std::string& or
     } else if (key == "time_constant") m.time_constant = positive_axes(origin, node, key, p.axes, true);
     else if (key == "look_ahead") {
       double v = number(origin, node, key);
-      if (v < 1 || v > 1000 || v != static_cast<int>(v)) fail(origin, node, "look_ahead is a whole number of blocks, 1 .. 1000");
+      if (v < 0 || v > 1000 || v != static_cast<int>(v))
+        fail(origin, node, "look_ahead is a whole number of blocks, 0 (no buffer) .. 1000");
       m.look_ahead = static_cast<int>(v);
     } else if (key == "block_time") m.block_time = positive(origin, node, key, true);
     else if (key == "macro_time") m.macro_time = positive(origin, node, key, true);

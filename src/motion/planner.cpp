@@ -283,13 +283,17 @@ double Planner::start_of(std::int64_t index) const {
 // The block can be read once the block look_ahead places before it has started (the buffer is full
 // until then), and only after the statements and blocks before it have been processed. Block k of
 // the pending ones is read look_ahead blocks after a final one, or (k = look_ahead) after the front,
-// whose start the caller gives.
+// whose start the caller gives. Without a buffer (look_ahead 0) the control reads and computes a
+// block only once the one before it has ended.
 double Planner::ready_of(std::size_t k, double front_start) {
   Pending& p = pending_[k];
   if (p.ready_known) return p.ready;
   double previous = k == 0 ? last_ready_ : ready_of(k - 1, front_start);
-  std::int64_t reader = next_index_ + static_cast<std::int64_t>(k) - profile_.motion.look_ahead;
-  double buffer = reader == next_index_ ? front_start : start_of(reader);
+  double buffer = clock_;
+  if (profile_.motion.look_ahead > 0) {
+    std::int64_t reader = next_index_ + static_cast<std::int64_t>(k) - profile_.motion.look_ahead;
+    buffer = reader == next_index_ ? front_start : start_of(reader);
+  }
   p.ready = std::max(previous, buffer) + p.compute;
   p.ready_known = true;
   return p.ready;

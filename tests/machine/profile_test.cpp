@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "machine/profile.hpp"
 
 using namespace ncurve::machine;
@@ -67,4 +69,15 @@ TEST(Profile, MotionAndServoTables) {
   EXPECT_NE(error("[servo]\nfeed_forward = 1.5\n").find("0 to 1"), std::string::npos);
   EXPECT_NE(error("[servo]\ngain = 30\n").find("unknown key 'gain'"), std::string::npos);
   EXPECT_NE(error("[motion]\nacc_dec = \"during\"\n").find("acc_dec must be"), std::string::npos);
+}
+
+TEST(Profile, EveryShippedProfileLoads) {
+  int loaded = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(NCURVE_SOURCE_DIR "/profiles")) {
+    if (entry.path().extension() != ".toml") continue;
+    EXPECT_NO_THROW(load_profile(entry.path().string())) << entry.path();
+    ++loaded;
+  }
+  EXPECT_GE(loaded, 5);
+  EXPECT_EQ(load_profile(NCURVE_SOURCE_DIR "/profiles/seed001.toml").motion.look_ahead, 0);
 }

@@ -163,6 +163,25 @@ TEST(Planner, MacroStatementsStallMotionWhenTheyCannotKeepUp) {
   EXPECT_NEAR(q.totals.seconds, 0.03 + 10 * 0.1, 1e-9);
 }
 
+
+TEST(Planner, WithoutABufferComputeAndMotionAddUp) {
+  // look_ahead 0: each block is read and computed only after the previous one has ended, and
+  // stops at its end. 1 mm at 1000 mm/s^2 from rest to rest: a triangle of 2 sqrt(1/1000) s.
+  auto prof = simple();
+  prof.motion.macro_time = 0.05;
+  prof.motion.look_ahead = 0;
+  std::string text = "G91 G01 F6000.\n#1=0\nWHILE[#1LT10]DO1\n#1=#1+1\nX1.\nEND1\nM30\n";
+  auto p = plan(text, prof);
+  ASSERT_EQ(p.blocks.size(), 10u);
+  const double move = 2 * std::sqrt(1.0 / 1000);
+  EXPECT_NEAR(p.totals.seconds, 10 * (0.15 + move), 1e-9);
+  EXPECT_EQ(p.totals.stops, 10u);
+  for (const auto& b : p.blocks) EXPECT_NEAR(b.wait, 0.15, 1e-9);
+  // with a buffer of one block the computing hides behind the motion
+  prof.motion.look_ahead = 1;
+  auto q = plan(text, prof);
+  EXPECT_LT(q.totals.seconds, 10 * 0.15 + move + 1e-9);
+}
 TEST(Planner, AccDecAfterInterpolationAddsTheFilterDelay) {
   auto prof = simple();
   prof.motion.acc_dec = machine::AccDec::after;
