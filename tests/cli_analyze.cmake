@@ -63,3 +63,28 @@ expect_text("${out}" "\"line\": 23" "worst block is the loop's G01")
 run_expect(2 "unknown curve" ${NCURVE} analyze ${SRC}/examples/spiral.nc --curve trefoil)
 expect_text("${err}" "no curve named 'trefoil'" "unknown curve message")
 run_expect(2 "stray argument" ${NCURVE} analyze ${SRC}/examples/spiral.nc --r0 1)
+
+# seed 000's models on the same spiral: Khan's arc is pi/(2 sqrt 2) = 1.1107 chords, so its total is
+# 1.1107 x the contour (48.07 mm) = 53.39 mm; the true arc is the spiral's 48.08 mm
+run_expect(0 "shape models" ${NCURVE} analyze ${SRC}/examples/spiral.nc --json --curve spiral --r0 1
+           --pitch 12.566370614359172 --from 0 --to 360 --tol 0.005 --shape-csv ${OUT}/shape.csv
+           --shape-plot ${OUT}/shape.svg)
+foreach(key shape_models yang_chord_height joshi_radial narayan_arc khan_arc arc_length_mm blocks_beyond_tolerance)
+  expect_text("${out}" "\"${key}\"" "analyze --curve --json")
+endforeach()
+if(NOT out MATCHES "\"khan_length_mm\": 53\\.39" OR NOT out MATCHES "\"arc_length_mm\": 48\\.08")
+  message(SEND_ERROR "arc lengths are not the spiral's and 1.1107 x the chords: ${out}")
+endif()
+file(STRINGS ${OUT}/shape.csv rows)
+list(LENGTH rows n)
+if(NOT n EQUAL 101)
+  message(SEND_ERROR "shape CSV has ${n} rows, not a header and 100 blocks")
+endif()
+list(GET rows 0 header)
+expect_text("${header}" "line,kind,t0,t1,deviation_mm,chord_mm,arc_mm,radius_mm,yang_mm,joshi_mm,narayan_arc_mm,khan_arc_mm"
+            "shape CSV header")
+file(READ ${OUT}/shape.svg svg)
+expect_text("${svg}" "tolerance 5 µm" "shape plot tolerance")
+expect_text("${svg}" "X, mm" "shape plot axis")
+run_expect(2 "shape plot without a curve" ${NCURVE} analyze ${SRC}/examples/spiral.nc --shape-plot ${OUT}/x.svg)
+expect_text("${err}" "need a nominal curve" "shape options need --curve")

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "gen/generate.hpp"
+#include "gen/shape_models.hpp"
 #include "motion/circle.hpp"
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
@@ -147,6 +148,55 @@ std::vector<report::FeedSample> feed_samples(const std::vector<BlockRecord>& blo
   return out;
 }
 
+std::string shape_csv(const gen::ShapeModels& m) {
+  auto number = [](double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string(); };
+  std::string out = "line,kind,t0,t1,deviation_mm,chord_mm,arc_mm,radius_mm,yang_mm,joshi_mm,narayan_arc_mm,khan_arc_mm\n";
+  for (const auto& b : m.blocks)
+    out += fmt::format("{},{},{:.12g},{:.12g},{:.9g},{},{:.9g},{},{},{},{},{}\n", b.line, b.arc_move ? "arc" : "line",
+                       b.t0, b.t1, b.deviation, number(b.chord), b.arc, number(b.radius), number(b.yang),
+                       number(b.joshi), number(b.narayan), number(b.khan));
+  return out;
+}
+
+std::string shape_plot(const std::vector<machine::Move>& contour, const geom::Curve& curve, const gen::Options& o,
+                       const gen::Stats& s, double tol, const std::string& program) {
+  const geom::Plane plane = gen::plane_of(o.profile);
+  const int u = plane.u_axis, v = plane.v_axis;
+  std::vector<report::DeviationSegment> path;
+  for (std::size_t i = 0; i < contour.size() && i < s.deviation.size(); ++i) {
+    const machine::Move& m = contour[i];
+    const double dev = s.deviation[i].second;
+    if (m.kind != machine::MoveKind::arc) {
+      path.push_back({m.start[u], m.start[v], m.end[u], m.end[v], dev, i});
+      continue;
+    }
+    const double u0 = m.start[u] - m.center[u], v0 = m.start[v] - m.center[v];
+    const int pieces = 16;
+    double pu = m.start[u], pv = m.start[v];
+    for (int k = 1; k <= pieces; ++k) {
+      const double a = m.sweep * k / pieces;
+      double qu = m.center[u] + u0 * std::cos(a) - v0 * std::sin(a), qv = m.center[v] + u0 * std::sin(a) + v0 * std::cos(a);
+      if (k == pieces) qu = m.end[u], qv = m.end[v];
+      path.push_back({pu, pv, qu, qv, dev, i});
+      pu = qu, pv = qv;
+    }
+  }
+  const gen::AxisMap map = gen::axis_map(curve, o);
+  std::vector<std::array<double, 2>> nominal;
+  const int samples = 2000;
+  for (int k = 0; k <= samples; ++k) {
+    geom::Vec3 p = map(curve.point(curve.t0() + (curve.t1() - curve.t0()) * k / samples));
+    nominal.push_back({p[u], p[v]});
+  }
+  const std::string axes = o.profile.axes;
+  auto name = [&](int axis) { return axis < static_cast<int>(axes.size()) ? axes[static_cast<std::size_t>(axis)] : '?'; };
+  return report::deviation_svg(path, nominal, tol,
+                               fmt::format("{}: shape error against {}", program, curve.name()),
+                               fmt::format("largest {:.2f} µm at t = {:.6g} · {} contour blocks, {:.3f} mm",
+                                           s.max_deviation * 1000, s.worst_t, s.deviation.size(), s.path_length),
+                               name(u), name(v));
+}
+
 int program_command(const AnalyzeArgs& a) {
   RunSetup setup;
   try {
@@ -159,6 +209,10 @@ int program_command(const AnalyzeArgs& a) {
   for (const auto& d : setup.problems) std::cerr << nc::format(d) << "\n";
   const machine::MachineProfile& profile = setup.profile;
   std::optional<geom::Curve> curve;
+  if (a.curve.name.empty() && (!a.shape_csv.empty() || !a.shape_plot.empty() || a.tol > 0)) {
+    std::cerr << "ncurve analyze: --shape-csv, --shape-plot and --tol need a nominal curve (--curve NAME ...)\n";
+    return 2;
+  }
   if (!a.curve.name.empty()) {
     try {
       curve.emplace(build_curve(a.curve, a.command->remaining(), profile));
@@ -229,19 +283,27 @@ int program_command(const AnalyzeArgs& a) {
     return 1;
   }
   std::optional<gen::Stats> shape;
+  gen::ShapeModels models;
   double shape_rms = 0;        // of the blocks' largest deviations
   std::uint32_t shape_line = 0;  // the block where the deviation peaks
+  std::size_t beyond_tol = 0;
   if (curve) {
     gen::Options o;
     o.profile = profile;
-    o.tol = 0.01;
+    o.tol = a.tol > 0 ? a.tol : 0.01;
     if (!contour.empty()) o.depth = -contour.front().start[2];
     try {
       shape = gen::measure(contour, *curve, o, false);
+      models = gen::shape_models(contour, *curve, o, *shape);
     } catch (const std::exception& e) {
       std::cerr << "ncurve analyze: --curve: " << e.what() << "\n";
       return 1;
     }
+    for (const auto& [t, d] : shape->deviation) beyond_tol += a.tol > 0 && d > a.tol;
+    if (!a.shape_csv.empty() && !write_file(a.shape_csv, shape_csv(models), "shape CSV")) return 2;
+    if (!a.shape_plot.empty() &&
+        !write_file(a.shape_plot, shape_plot(contour, *curve, o, *shape, a.tol, a.in.program), "shape plot"))
+      return 2;
     double sq = 0;
     std::size_t worst = 0;
     for (std::size_t i = 0; i < shape->deviation.size(); ++i) {
@@ -290,6 +352,20 @@ int program_command(const AnalyzeArgs& a) {
                           {"blocks", shape->deviation.size()},
                           {"rms_block_max_mm", shape_rms},
                           {"path_length_mm", shape->path_length}};
+      if (a.tol > 0) j["shape_error"]["tolerance_mm"] = a.tol, j["shape_error"]["blocks_beyond_tolerance"] = beyond_tol;
+      auto model = [](const gen::ModelError& e) {
+        return nlohmann::json{{"max_mm", e.max}, {"max_error_mm", e.max_error}, {"max_relative_error", e.max_relative},
+                              {"line", e.line}, {"block", e.block}};
+      };
+      j["shape_models"] = {{"line_blocks", models.lines},
+                           {"centre", models.centre},
+                           {"yang_chord_height", model(models.yang)},
+                           {"joshi_radial", model(models.joshi)},
+                           {"arc_length_mm", models.arc_length},
+                           {"narayan_arc", model(models.narayan)},
+                           {"khan_arc", model(models.khan)},
+                           {"narayan_length_mm", models.narayan_length},
+                           {"khan_length_mm", models.khan_length}};
     }
     std::cout << j.dump(2) << "\n";
     return 0;
@@ -314,6 +390,23 @@ int program_command(const AnalyzeArgs& a) {
         shape->max_deviation, curve->name(), shape->worst_t, shape->worst_point[0], shape->worst_point[1],
         shape->worst_point[2], shape_line, shape->deviation.size(),
         shape->path_length);
+    if (a.tol > 0)
+      std::cout << fmt::format("  tolerance         {} mm: {} blocks beyond it\n", a.tol, beyond_tol);
+    if (models.lines > 0) {
+      const double um = 1000;
+      std::cout << fmt::format(
+          "  seed 000's models over {} line blocks (centre X {:.4f} Y {:.4f} for the radial ones):\n"
+          "    chord height, Yang a = sqrt(8Rh - 4h^2)  max {:.3f} um, off the measured by up to {:.3f} um "
+          "({:.1f} %)\n"
+          "    radial shape error, Joshi eqs 8-11      max {:.3f} um, off the measured by up to {:.3f} um "
+          "({:.1f} %)\n"
+          "    arc length {:.4f} mm: Narayan {:.4f} mm (blocks off by up to {:.3f} %), Khan pi/(2 sqrt 2) chord "
+          "{:.4f} mm (up to {:.3f} %)\n",
+          models.lines, models.centre[0], models.centre[1], models.yang.max * um, models.yang.max_error * um,
+          100 * models.yang.max_relative, models.joshi.max * um, models.joshi.max_error * um,
+          100 * models.joshi.max_relative, models.arc_length, models.narayan_length, 100 * models.narayan.max_relative,
+          models.khan_length, 100 * models.khan.max_relative);
+    }
   }
   if (sim) {
     const auto& s = sim->stats();
@@ -343,6 +436,11 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
   cmd->add_option("--curve", a.curve.name,
                   "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "
                   "or expr");
+  cmd->add_option("--shape-csv", a.shape_csv,
+                  "--curve: write each contour block's deviation and seed 000's models to this CSV file");
+  cmd->add_option("--shape-plot", a.shape_plot, "--curve: SVG of the path coloured by its deviation from the curve");
+  cmd->add_option("--tol", a.tol, "--curve: shape tolerance, mm; blocks beyond it are counted and marked")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--x", a.curve.x, "--curve expr: x(t)");
   cmd->add_option("--y", a.curve.y, "--curve expr: y(t)");
   cmd->add_option("--z", a.curve.z, "--curve expr: z(t)");

@@ -17,6 +17,9 @@ struct AnalyzeArgs {
   std::string blocks;  // per-block timing CSV
   std::string plot;    // SVG
   CurveArgs curve;     // nominal curve for the shape error (name empty: none)
+  std::string shape_csv;   // per-block shape error and seed 000's models
+  std::string shape_plot;  // SVG: path coloured by deviation
+  double tol = 0;          // mm: shape tolerance to mark (0: none)
   std::vector<std::string> kv;  // circle: KX[,KY]
   std::optional<double> feed_forward;
   double radius = 0, feed = 0;

@@ -145,6 +145,7 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
   Vec3 first{contour[0].start[0], contour[0].start[1], contour[0].start[2]};
   s.path.push_back(first);
   double t_prev = project(first, t_first, 1e-3 + 10 * o.tol);
+  s.start_t = t_prev;
   note(dist(first, map(curve.point(t_prev))), t_prev);
   const Vec3 curve_end = map(curve.point(curve.t1()));
   for (const auto& m : contour) {

@@ -47,6 +47,7 @@ struct Stats {
   double path_length = 0;    // contour length, mm
   double max_deviation = 0;  // round trip: largest distance from the curve to the path, mm
   double worst_t = 0;        // where it is
+  double start_t = 0;        // the curve parameter nearest the contour's first point
   geom::Vec3 worst_point{};  // machine coordinates of the curve point there
   // for plots: the contour as points (arcs sampled), and each move's largest deviation at the
   // curve parameter where it ends

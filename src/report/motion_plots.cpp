@@ -77,6 +77,88 @@ std::string feed_svg(const std::vector<FeedSample>& samples, const std::string& 
   return s + "</svg>\n";
 }
 
+namespace {
+// Blue (0) through green and yellow to red (1).
+std::string heat(double f) {
+  static constexpr double stops[5][3] = {{33, 102, 172}, {67, 170, 139}, {171, 221, 94}, {253, 174, 97}, {215, 48, 39}};
+  f = std::clamp(f, 0.0, 1.0) * 4;
+  int i = std::min(3, static_cast<int>(f));
+  double g = f - i;
+  auto c = [&](int k) { return static_cast<int>(std::lround(stops[i][k] + (stops[i + 1][k] - stops[i][k]) * g)); };
+  return fmt::format("rgb({},{},{})", c(0), c(1), c(2));
+}
+}  // namespace
+
+std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::vector<std::array<double, 2>>& nominal,
+                          double tolerance, const std::string& title, const std::string& subtitle, char u_name,
+                          char v_name) {
+  const double plot = 640, top = 60, left = 60, bar_x = left + plot + 40;
+  std::string s = header(bar_x + 140, top + plot + 60);
+  s += fmt::format("<text x=\"{}\" y=\"24\" font-size=\"15\">{}</text>\n", left, escape(title));
+  s += fmt::format("<text x=\"{}\" y=\"44\">{}</text>\n", left, escape(subtitle));
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY, worst = 0;
+  auto grow = [&](double x, double y) {
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  };
+  for (const auto& p : path) {
+    grow(p.x0, p.y0), grow(p.x1, p.y1);
+    worst = std::max(worst, p.deviation);
+  }
+  for (const auto& p : nominal) grow(p[0], p[1]);
+  if (!std::isfinite(x0)) x0 = y0 = 0, x1 = y1 = 1;
+  const double span = std::max({x1 - x0, y1 - y0, 1e-9}), k = plot / span;  // one scale on both axes
+  auto X = [&](double x) { return left + (x - x0) * k + (plot - (x1 - x0) * k) / 2; };
+  auto Y = [&](double y) { return top + plot - (y - y0) * k - (plot - (y1 - y0) * k) / 2; };
+  // grid in mm
+  const double g = nice_step(span, 6);
+  for (double x = std::ceil(x0 / g) * g; x <= x1 + 1e-9; x += g)
+    s += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" stroke=\"#eee\"/><text x=\"{0:.1f}\" "
+                     "y=\"{3}\" text-anchor=\"middle\" font-size=\"10\">{4:g}</text>\n",
+                     X(x), top, top + plot, top + plot + 14, x);
+  for (double y = std::ceil(y0 / g) * g; y <= y1 + 1e-9; y += g)
+    s += fmt::format("<line x1=\"{0}\" y1=\"{1:.1f}\" x2=\"{2}\" y2=\"{1:.1f}\" stroke=\"#eee\"/><text x=\"{3}\" "
+                     "y=\"{1:.1f}\" text-anchor=\"end\" dy=\"3\" font-size=\"10\">{4:g}</text>\n",
+                     left, Y(y), left + plot, left - 4, y);
+  s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}, mm (grid {:g} mm, equal scales)</text>\n",
+                   left + plot / 2, top + plot + 32, u_name, g);
+  s += fmt::format("<text x=\"20\" y=\"{0}\" transform=\"rotate(-90 20 {0})\" text-anchor=\"middle\">{1}, mm</text>\n",
+                   top + plot / 2, v_name);
+  std::string pts;
+  for (const auto& p : nominal) pts += fmt::format("{:.2f},{:.2f} ", X(p[0]), Y(p[1]));
+  s += fmt::format("<polyline fill=\"none\" stroke=\"#bbb\" stroke-width=\"5\" stroke-linecap=\"round\" points=\"{}\"/>\n", pts);
+  const double scale = std::max(worst, tolerance > 0 ? tolerance : 0.0);
+  std::size_t over = 0, blocks = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const auto& p = path[i];
+    const bool beyond = tolerance > 0 && p.deviation > tolerance;
+    const bool first = i == 0 || path[i - 1].block != p.block;
+    blocks += first;
+    over += beyond && first;
+    s += fmt::format("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{}\" "
+                     "stroke-linecap=\"round\"/>\n",
+                     X(p.x0), Y(p.y0), X(p.x1), Y(p.y1), heat(scale > 0 ? p.deviation / scale : 0), beyond ? 4 : 2);
+  }
+  // colour scale in micrometres
+  for (int i = 0; i < 100; ++i)
+    s += fmt::format("<rect x=\"{}\" y=\"{:.1f}\" width=\"18\" height=\"{:.2f}\" fill=\"{}\"/>\n", bar_x,
+                     top + plot - (i + 1) * plot / 100, plot / 100 + 0.5, heat((i + 0.5) / 100));
+  const double um = scale * 1000, step = nice_step(std::max(um, 1e-6), 5);
+  for (double v = 0; v <= um + 1e-9; v += step)
+    s += fmt::format("<text x=\"{}\" y=\"{:.1f}\" dy=\"4\" font-size=\"10\">{:g} µm</text>\n", bar_x + 24,
+                     top + plot - (um > 0 ? v / um : 0) * plot, v);
+  if (tolerance > 0)
+    s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"black\" stroke-width=\"2\"/>"
+                     "<text x=\"{}\" y=\"{:.1f}\" dy=\"4\" text-anchor=\"end\" font-size=\"10\">tolerance</text>\n",
+                     bar_x - 4, top + plot - tolerance / scale * plot, bar_x + 22, top + plot - tolerance / scale * plot,
+                     bar_x - 8, top + plot - tolerance / scale * plot);
+  s += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"11\">deviation of each block</text>\n", bar_x - 10, top - 8);
+  s += fmt::format("<text x=\"{}\" y=\"{}\">largest deviation {:.2f} µm{} · grey: the nominal curve · {} blocks</text>\n",
+                   left, top + plot + 52, worst * 1000,
+                   tolerance > 0 ? fmt::format(" · tolerance {:g} µm, {} blocks beyond it (thick)", tolerance * 1000, over) : "",
+                   blocks);
+  return s + "</svg>\n";
+}
+
 std::string polar_svg(const motion::CircleResult& r, const motion::CircleTest& test, const std::string& subtitle) {
   const double size = 640, c = size / 2, R0 = 200;
   std::string s = header(size, size + 40);

@@ -1,5 +1,7 @@
-// SVG plots of motion: feed along the path, and the circular test's polar deviation diagram.
+// SVG plots of ncurve analyze: feed along the path, the path coloured by its deviation from the
+// nominal curve, and the circular test's polar deviation diagram.
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,19 @@ struct FeedSample {
 
 // Feed reached against programmed along the path; starved stretches in red.
 std::string feed_svg(const std::vector<FeedSample>& samples, const std::string& title);
+
+// One piece of the commanded path in the plane (arcs come as several), and its block's deviation.
+struct DeviationSegment {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  double deviation = 0;  // mm
+  std::size_t block = 0;  // index of its block: an arc's pieces share it
+};
+
+// The path coloured by deviation (a scale in micrometres beside it) over the nominal curve in grey;
+// with tolerance > 0, blocks beyond it are drawn thicker and counted. Axis names label the plane.
+std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::vector<std::array<double, 2>>& nominal,
+                          double tolerance, const std::string& title, const std::string& subtitle, char u_name,
+                          char v_name);
 
 // Radial deviation against angle, magnified about the nominal circle, with rings in micrometres.
 std::string polar_svg(const motion::CircleResult& r, const motion::CircleTest& test, const std::string& subtitle);
