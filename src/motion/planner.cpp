@@ -220,6 +220,7 @@ void Planner::add(const Move& m) {
     programmed = m.seconds > 0 ? m.length / m.seconds : m.feed / 60;
     p.cap = programmed;
     double clamp = std::sqrt(accel * R);  // centripetal acceleration within the slower axis's limit
+    if (ms.jerk > 0) clamp = std::min(clamp, std::cbrt(ms.jerk * R * R));  // its turning rate v^3/R^2 within the jerk
     if (before && clamp < p.cap) p.cap = clamp, limit = Limit::arc;
   } else {
     for (int a = 0; a < 3; ++a) p.start_dir[a] = p.end_dir[a] = all > 0 ? d[a] / all : 0;

@@ -199,6 +199,16 @@ TEST(Planner, ArcFeedIsClampedByCentripetalAcceleration) {
   ASSERT_EQ(p.blocks.size(), 2u);
   EXPECT_EQ(p.blocks[1].limit, motion::Limit::arc);
   EXPECT_NEAR(p.blocks[1].cap, 60 * std::sqrt(1000.0), 1e-6);
+  // with a jerk limit the centripetal acceleration v^2/R turns at v^3/R^2: at J = 10,000 mm/s^3
+  // the clamp is cbrt(J R^2) = 21.5 mm/s, below sqrt(a R) = 31.6
+  auto jerk = simple();
+  jerk.motion.jerk = 10000;
+  auto q = plan("G01 X1. F6000.\nG03 X-1. Y0 I-1. J0\nM30\n", jerk);
+  EXPECT_EQ(q.blocks[1].limit, motion::Limit::arc);
+  EXPECT_NEAR(q.blocks[1].cap, 60 * std::cbrt(10000.0), 1e-6);
+  jerk.motion.jerk = 1e6;  // fast enough: acceleration decides again
+  auto r = plan("G01 X1. F6000.\nG03 X-1. Y0 I-1. J0\nM30\n", jerk);
+  EXPECT_NEAR(r.blocks[1].cap, 60 * std::sqrt(1000.0), 1e-6);
 }
 
 TEST(Planner, ExactStopWaitsForThePositionLoopToSettle) {
