@@ -31,3 +31,20 @@ run_expect(2 "profile without lead" ${NCURVE} helicoid --profile ellipse)
 expect_text("${err}" "--lead is needed" "missing lead")
 run_expect(2 "no profile" ${NCURVE} helicoid)
 expect_text("${err}" "--example seed004" "no profile")
+
+# the seed's rotor as 360 points (periodic spline) and its insert as a general cutter profile
+run_expect(0 "helicoid point profile and general cutter" ${NCURVE} helicoid --profile-csv ${SRC}/examples/rotor-points.csv
+           --lead 860 --lobes 5 --cutter-profile ${SRC}/examples/seed004-insert.csv --start-distance 177.7 --step 36 --csv)
+# within a micrometre (the points carry 6 decimals)
+if(NOT out MATCHES "\n0\\.000000,161\\.(4999|5000)" OR NOT out MATCHES "\n36\\.000000,176\\.(4999|5000)")
+  message(SEND_ERROR "point profile: A(0) is not 35.5 + 126 or A(36) not 50.5 + 126: ${out}")
+endif()
+file(WRITE ${OUT}/bad_cutter.csv "rho,w\n120,-3,0.5\n120,3\n")
+run_expect(2 "bad cutter profile" ${NCURVE} helicoid --example seed004 --cutter-profile ${OUT}/bad_cutter.csv)
+expect_text("${err}" "bad_cutter.csv:2:1: arc radius 0.5 is less than half the chord" "cutter profile error")
+run_expect(2 "cutter profile and insert" ${NCURVE} helicoid --example seed004 --cutter-profile
+           ${SRC}/examples/seed004-insert.csv --corner-radius 2)
+expect_text("${err}" "leave out --cutter-diameter" "two cutters")
+file(WRITE ${OUT}/bad_points.csv "x,y\n40,0\n0,40\n-40,zero\n")
+run_expect(2 "bad point profile" ${NCURVE} helicoid --profile-csv ${OUT}/bad_points.csv --lead 500)
+expect_text("${err}" "bad_points.csv:4:5: 'zero' is not a number" "point profile error")

@@ -11,6 +11,7 @@
 
 #include "geom/curve.hpp"
 #include "helicoid/report.hpp"
+#include "io/number_rows.hpp"
 
 namespace ncurve::app {
 
@@ -21,6 +22,10 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   h->add_option("--profile", a.profile, "end profile: rotor (seed 004) or a closed curve of `ncurve gen --list`");
   h->add_option("--profile-x", a.profile_x, "end profile x(u), macro expression in u (degrees)");
   h->add_option("--profile-y", a.profile_y, "end profile y(u)");
+  h->add_option("--profile-csv", a.profile_csv,
+                 "end profile as a closed list of points x,y (mm) in order around the axis: a periodic cubic spline "
+                 "runs through them, the first point turned to face +X")
+      ->check(CLI::ExistingFile);
   h->add_option("--u", a.u_range, "range of u closing the profile once, FROM:TO (default 0:360)");
   h->add_option("--lead", a.lead, "lead, mm per turn (0: straight, no twist)");
   h->add_option("--hand", a.hand, "right or left")->check(CLI::IsMember({"right", "left"}));
@@ -28,6 +33,10 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   h->add_option("--cutter-diameter", a.cutter_diameter, "disc cutter outside diameter, mm")->check(CLI::PositiveNumber);
   h->add_option("--corner-radius", a.corner_radius, "insert corner radius, mm")->check(CLI::NonNegativeNumber);
   h->add_option("--included-angle", a.included_angle, "insert included angle, degrees (symmetric V)");
+  h->add_option("--cutter-profile", a.cutter_profile,
+                 "general cutter axial profile: vertices rho,w[,radius] (mm) from the -w side over the rim to the +w "
+                 "side; a radius makes the piece to the next vertex an arc (> 0 convex, < 0 concave)")
+      ->check(CLI::ExistingFile);
   h->add_option("--flank-depth", a.flank_depth, "radial depth of the insert's flanks, mm (default: profile depth + 3)");
   h->add_option("--ref-radius", a.ref_radius, "radius at which the cutter follows the helix, mm (default: mean radius)");
   h->add_option("--crossing-angle", a.crossing_angle, "angle between cutter and workpiece axes, degrees (overrides --ref-radius)");
@@ -71,7 +80,18 @@ int helicoid_command(const HelicoidArgs& a) {
     const bool seed = a.example == "seed004";
     std::optional<EndProfile> profile;
     std::string profile_name;
-    if (!a.profile_x.empty() || !a.profile_y.empty()) {
+    if (!a.profile_csv.empty() + !a.profile_x.empty() + !a.profile.empty() > 1)
+      throw std::runtime_error("give one end profile: --profile, --profile-x/--profile-y or --profile-csv");
+    if (!a.profile_csv.empty()) {
+      std::vector<Vec2> points;
+      for (const auto& row : io::read_number_file(a.profile_csv, 2, 2)) points.push_back({row.values[0], row.values[1]});
+      try {
+        profile = EndProfile::from_points("points " + a.profile_csv, points);
+      } catch (const std::exception& e) {
+        throw std::runtime_error(a.profile_csv + ": " + e.what());
+      }
+      profile_name = "points " + a.profile_csv;
+    } else if (!a.profile_x.empty() || !a.profile_y.empty()) {
       if (a.profile_x.empty() || a.profile_y.empty()) throw std::runtime_error("--profile-x needs --profile-y and back");
       geom::CurveSpec spec;
       spec.name = "profile";
@@ -117,12 +137,25 @@ int helicoid_command(const HelicoidArgs& a) {
     };
     Workpiece work{*profile, need(a.lead, 860, "--lead"), a.hand == "left" ? -1 : 1, a.lobes.value_or(seed ? 5 : 1)};
     if (work.lead < 0) throw std::runtime_error("--lead must be >= 0 (give the hand with --hand)");
-    double diameter = need(a.cutter_diameter, 252, "--cutter-diameter");
-    double corner = need(a.corner_radius, 1.2, "--corner-radius");
-    double angle = need(a.included_angle, 35, "--included-angle");
     double depth = work.profile.r_max() - work.profile.r_min();
+    std::optional<DiscCutter> general;
+    std::string cutter_name;
+    if (!a.cutter_profile.empty()) {
+      if (a.cutter_diameter || a.corner_radius || a.included_angle || a.flank_depth)
+        throw std::runtime_error("--cutter-profile gives the whole cutter: leave out --cutter-diameter, --corner-radius, "
+                                 "--included-angle and --flank-depth");
+      general = DiscCutter::from_file(a.cutter_profile);
+    }
+    double diameter = general ? 2 * general->outer_radius() : need(a.cutter_diameter, 252, "--cutter-diameter");
+    double corner = general ? 0 : need(a.corner_radius, 1.2, "--corner-radius");
+    double angle = general ? 0 : need(a.included_angle, 35, "--included-angle");
     double flank = a.flank_depth.value_or(depth + 3);
-    DiscCutter cutter = DiscCutter::v_insert(diameter, corner, angle, flank);
+    if (general) {
+      double inner = general->outer_radius();
+      for (const auto& e : general->elements()) inner = std::min({inner, e.start.x, e.end.x});
+      flank = general->outer_radius() - inner;
+    }
+    DiscCutter cutter = general ? *general : DiscCutter::v_insert(diameter, corner, angle, flank);
     double ref = a.ref_radius.value_or((work.profile.r_min() + work.profile.r_max()) / 2);
     Setting setting;
     setting.swing = a.crossing_angle ? 90 - *a.crossing_angle : helix_angle(work.lead, ref);
@@ -142,8 +175,10 @@ int helicoid_command(const HelicoidArgs& a) {
     for (int i = 0; i <= n; ++i) psis.push_back(from + i * a.step);
     job.method = method_from_name(a.method);
     job.step = a.step;
-    job.title = fmt::format("{}, lead {:g} mm {} hand, cutter D{:g} r{:g} {:g} deg, crossing {:.4f} deg", profile_name,
-                            work.lead, a.hand, diameter, corner, angle, 90 - setting.swing);
+    const std::string cutter_text = general ? fmt::format("cutter {} (D{:g})", a.cutter_profile, diameter)
+                                            : fmt::format("cutter D{:g} r{:g} {:g} deg", diameter, corner, angle);
+    job.title = fmt::format("{}, lead {:g} mm {} hand, {}, crossing {:.4f} deg", profile_name, work.lead, a.hand,
+                            cutter_text, 90 - setting.swing);
   } catch (const std::exception& e) {
     std::cerr << "ncurve helicoid: " << e.what() << "\n";
     return 2;

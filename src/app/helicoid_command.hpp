@@ -11,6 +11,8 @@ struct HelicoidArgs {
   std::string example;
   std::string profile;     // rotor or a curve of `ncurve gen --list`
   std::string profile_x, profile_y, u_range;
+  std::string profile_csv;   // end profile as points x, y
+  std::string cutter_profile;  // cutter axial profile: rho, w[, radius] vertices
   std::optional<double> lead;
   std::string hand = "right";
   std::optional<int> lobes;

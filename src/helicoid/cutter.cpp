@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "io/number_rows.hpp"
+
 namespace ncurve::helicoid {
 
 double ProfileElement::length() const {
@@ -55,6 +57,56 @@ DiscCutter DiscCutter::v_insert(double diameter, double corner_radius, double in
   e.push_back({ProfileElement::Kind::line, t_plus, f_plus, {}, 0, 0, 0, "flank+"});
   return DiscCutter(std::move(e));
 }
+
+namespace {
+
+DiscCutter from_rows(const std::vector<io::NumberRow>& rows, const std::string& origin) {
+  if (rows.size() < 2) throw std::runtime_error(fmt::format("{}: a cutter profile needs at least 2 vertices", origin));
+  auto where = [&](std::size_t k) { return fmt::format("{}:{}:1", origin, rows[k].line); };
+  if (rows.back().values.size() > 2 && rows.back().values[2] != 0)
+    throw std::runtime_error(where(rows.size() - 1) + ": the last vertex ends the profile: no arc radius after it");
+  if (!(rows.front().values[1] < rows.back().values[1]))
+    throw std::runtime_error(where(0) + ": list the profile from the -w side over the rim to the +w side (w grows)");
+  std::vector<ProfileElement> e;
+  for (std::size_t k = 0; k + 1 < rows.size(); ++k) {
+    const Vec2 a{rows[k].values[0], rows[k].values[1]}, b{rows[k + 1].values[0], rows[k + 1].values[1]};
+    if (!(a.x > 0) || !(b.x > 0)) throw std::runtime_error(where(a.x > 0 ? k + 1 : k) + ": rho must be > 0 (off the cutter axis)");
+    const double r = rows[k].values.size() > 2 ? rows[k].values[2] : 0;
+    const std::string n = fmt::format("{}", e.size() + 1);
+    if (r == 0) {
+      e.push_back({ProfileElement::Kind::line, a, b, {}, 0, 0, 0, "line" + n});
+      continue;
+    }
+    const double chord = std::hypot(b.x - a.x, b.y - a.y), R = std::abs(r);
+    if (!(chord > 0)) throw std::runtime_error(where(k) + ": the arc's ends coincide");
+    if (R < chord / 2 - 1e-12)
+      throw std::runtime_error(fmt::format("{}: arc radius {} is less than half the chord {:.6f}", where(k), R, chord / 2));
+    // material on the left of the travel: a convex arc has its centre on the left of the chord
+    const Vec2 d{(b.x - a.x) / chord, (b.y - a.y) / chord}, left{-d.y, d.x};
+    const double side = r > 0 ? 1 : -1, off = std::sqrt(std::max(0.0, R * R - chord * chord / 4));
+    const Vec2 c{(a.x + b.x) / 2 + side * left.x * off, (a.y + b.y) / 2 + side * left.y * off};
+    const double a0 = std::atan2(a.y - c.y, a.x - c.x);
+    double sweep = 2 * std::asin(std::min(1.0, chord / (2 * R)));
+    e.push_back({ProfileElement::Kind::arc, a, b, c, R, a0, a0 + side * sweep, "arc" + n});
+  }
+  // the corner: the convex arc over the outermost point
+  double outer = 0;
+  for (const auto& x : e) outer = std::max({outer, x.start.x, x.end.x});
+  for (auto& x : e)
+    if (x.kind == ProfileElement::Kind::arc && x.a1 > x.a0 && x.a0 <= 0 && x.a1 >= 0 && x.centre.x + x.radius >= outer) {
+      x.region = "corner";
+      break;
+    }
+  return DiscCutter(std::move(e));
+}
+
+}  // namespace
+
+DiscCutter DiscCutter::from_text(const std::string& text, const std::string& origin) {
+  return from_rows(io::read_number_rows(text, origin, 2, 3), origin);
+}
+
+DiscCutter DiscCutter::from_file(const std::string& path) { return from_rows(io::read_number_file(path, 2, 3), path); }
 
 DiscCutter::Point DiscCutter::at(double s) const {
   s = std::clamp(s, 0.0, total_);

@@ -26,6 +26,12 @@ public:
   // Symmetric V insert with a round corner: outside diameter, corner radius, included angle
   // (degrees) and the radial depth of its flanks below the outside diameter.
   static DiscCutter v_insert(double diameter, double corner_radius, double included_angle, double flank_depth);
+  // A general axial profile from a file of vertices `rho_mm, w_mm[, radius_mm]`, listed from the
+  // -w side over the rim to the +w side. The piece from a vertex to the next is a line, or with a
+  // radius an arc: > 0 convex (bulging outwards), < 0 concave. The convex arc at the outermost
+  // point is the "corner" (the plane method's offset); the other pieces are line<k> and arc<k>.
+  static DiscCutter from_file(const std::string& path);
+  static DiscCutter from_text(const std::string& text, const std::string& origin);
 
   double length() const { return total_; }
   double outer_radius() const { return outer_; }

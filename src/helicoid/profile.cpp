@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 #include "geom/curve.hpp"
+#include "geom/periodic_spline.hpp"
 
 namespace ncurve::helicoid {
 namespace {
@@ -89,6 +91,20 @@ EndProfile EndProfile::from_curve(std::shared_ptr<const geom::Curve> curve) {
     d = {v[0], v[1]};
   };
   return EndProfile(curve->name(), eval, u0, period);
+}
+
+EndProfile EndProfile::from_points(std::string name, const std::vector<Vec2>& points) {
+  std::vector<std::array<double, 2>> xy;
+  for (const auto& p : points) xy.push_back({p.x, p.y});
+  auto spline = std::make_shared<const geom::PeriodicSpline>(xy);
+  const double per_degree = spline->length() / 360;
+  auto eval = [spline, per_degree](double u, Vec2& p, Vec2& d) {
+    std::array<double, 2> q, v;
+    spline->eval(u * per_degree, q, v);
+    p = {q[0], q[1]};
+    d = {v[0] * per_degree, v[1] * per_degree};
+  };
+  return EndProfile(std::move(name), eval, 0, 360);
 }
 
 EndProfile EndProfile::seed004_rotor() {

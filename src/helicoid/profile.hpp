@@ -30,6 +30,10 @@ public:
   // Seed 004's screw-drill rotor (five lobes, root r = 35.5 mm at u = 0, crest 50.5 mm at u = 36),
   // evaluated natively: the same curve as `ncurve gen rotor`, several times faster.
   static EndProfile seed004_rotor();
+  // A closed point list (x, y in mm, in order around the axis, the last not repeating the first)
+  // through which a periodic cubic spline runs; u = 0..360 degrees by chord length from the first
+  // point, which is turned to face +X.
+  static EndProfile from_points(std::string name, const std::vector<Vec2>& points);
 
   const std::string& name() const { return name_; }
   double u0() const { return u0_; }

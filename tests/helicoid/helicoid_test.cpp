@@ -1,6 +1,8 @@
 // Helicoid contacts: seed 004's sanity values, closed forms, and the robust search against brute force.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -168,6 +170,93 @@ TEST(Helicoid, PlainNinePointIsCaughtWhereTheContactJumps) {
     EXPECT_LT(cs.deepest_penetration(psis[i], robust[i].A), 1e-6) << psis[i];
   }
   EXPECT_GT(worst, 0.1);  // the seed's search alone would cut 0.1 mm and more into the rotor
+}
+
+TEST(Helicoid, GeneralCutterProfileIsTheInsertItDescribes) {
+  // The seed's insert written as vertices (the corner as a convex arc) gives the same contacts.
+  auto insert = DiscCutter::v_insert(252, 1.2, 35, 18);
+  const auto& e = insert.elements();
+  ASSERT_EQ(e.size(), 3u);
+  std::string text = "rho,w,radius  # the seed's insert\n";
+  text += fmt::format("{:.15g},{:.15g}\n{:.15g},{:.15g},1.2\n{:.15g},{:.15g}\n{:.15g},{:.15g}\n", e[0].start.x,
+                      e[0].start.y, e[1].start.x, e[1].start.y, e[2].start.x, e[2].start.y, e[2].end.x, e[2].end.y);
+  auto general = DiscCutter::from_text(text, "insert.csv");
+  ASSERT_EQ(general.elements().size(), 3u);
+  EXPECT_EQ(general.elements()[1].region, "corner");
+  EXPECT_NEAR(general.outer_radius(), 126, 1e-12);
+  EXPECT_NEAR(general.length(), insert.length(), 1e-12);
+  for (double s = 0; s <= insert.length(); s += insert.length() / 37) {
+    auto a = insert.at(s), b = general.at(s);
+    EXPECT_NEAR(a.p.x, b.p.x, 1e-12);
+    EXPECT_NEAR(a.p.y, b.p.y, 1e-12);
+    EXPECT_NEAR(a.normal.x, b.normal.x, 1e-12);
+    EXPECT_NEAR(a.normal.y, b.normal.y, 1e-12);
+  }
+  Workpiece work{EndProfile::seed004_rotor(), 860, 1, 5};
+  ContactSearch mine(work, general, Setting{helix_angle(860, 43), 177.7}, {});
+  auto contacts = mine.run(range(0, 36, 6), Method::robust);
+  EXPECT_NEAR(contacts[0].A, 161.5, 1e-6);
+  EXPECT_NEAR(contacts[6].A, 176.5, 1e-6);
+  auto reference = seed_search(35).run(range(0, 36, 6), Method::robust);
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    EXPECT_NEAR(contacts[i].A, reference[i].A, 1e-9) << contacts[i].psi;
+    EXPECT_NEAR(contacts[i].plane_A, reference[i].plane_A, 1e-9) << contacts[i].psi;  // the corner is found
+  }
+  // a concave arc bends the other way: its middle lies inside the chord (towards the material)
+  auto dish = DiscCutter::from_text("100,-5,-20\n100,5\n", "dish.csv");
+  EXPECT_LT(dish.at(dish.length() / 2).p.x, 100);
+  EXPECT_GT(DiscCutter::from_text("100,-5,20\n100,5\n", "bulge.csv").at(5).p.x, 100);
+}
+
+TEST(Helicoid, GeneralCutterProfileErrorsNameTheRow) {
+  auto message = [](const std::string& text) {
+    try {
+      DiscCutter::from_text(text, "c.csv");
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("100,-5,1\n100,5\n").find("c.csv:1:1: arc radius 1 is less than half the chord"), 0u);
+  EXPECT_EQ(message("100,5\n100,-5\n").find("c.csv:1:1: list the profile from the -w side"), 0u);
+  EXPECT_EQ(message("100,-5\n100, 5x\n").find("c.csv:2:6: '5x' is not a number"), 0u);
+  EXPECT_EQ(message("100,-5\n100,5,3\n").find("c.csv:2:1: the last vertex ends the profile"), 0u);
+  EXPECT_EQ(message("100\n").find("c.csv:1:1: 1 numbers where 2 to 3 are expected"), 0u);
+}
+
+TEST(Helicoid, PointListProfileFollowsTheCurve) {
+  // 360 points of the seed's rotor: the spline through them is the rotor to well under a micrometre
+  // (cubic spline error ~ h^4 curvature^3 / 384), and so are the contacts.
+  auto rotor = EndProfile::seed004_rotor();
+  std::vector<Vec2> points;
+  for (int k = 0; k < 360; ++k) points.push_back(rotor.point(k));
+  auto spline = EndProfile::from_points("rotor points", points);
+  EXPECT_NEAR(spline.r_min(), 35.5, 1e-4);
+  EXPECT_NEAR(spline.r_max(), 50.5, 1e-4);
+  // every point of the spline is within 1 um of the rotor (its nearest rotor point: scan, then refine)
+  for (double u = 0.37; u < 360; u += 9.1) {
+    Vec2 p = spline.point(u);
+    auto dist = [&](double v) {
+      Vec2 q = rotor.point(v);
+      return std::hypot(p.x - q.x, p.y - q.y);
+    };
+    double best_v = 0;
+    for (double v = 0; v < 360; v += 0.01)
+      if (dist(v) < dist(best_v)) best_v = v;
+    double lo = best_v - 0.01, hi = best_v + 0.01;
+    for (int k = 0; k < 100; ++k) {
+      double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+      if (dist(m1) < dist(m2)) hi = m2;
+      else lo = m1;
+    }
+    EXPECT_LT(dist((lo + hi) / 2), 1e-3) << u;  // 0.13 um at worst
+  }
+  Workpiece work{spline, 860, 1, 5};
+  ContactSearch cs(work, DiscCutter::v_insert(252, 1.2, 35, 18), Setting{helix_angle(860, 43), 177.7}, {});
+  auto contacts = cs.run(range(0, 36, 9), Method::robust);
+  auto reference = seed_search(35).run(range(0, 36, 9), Method::robust);
+  for (std::size_t i = 0; i < contacts.size(); ++i) EXPECT_NEAR(contacts[i].A, reference[i].A, 1e-3) << contacts[i].psi;
+  EXPECT_THROW(EndProfile::from_points("three", {{1, 0}, {0, 1}, {-1, 0}}), std::runtime_error);
 }
 
 TEST(Helicoid, BadInput) {
