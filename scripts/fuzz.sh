@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang and fuzzes the parser and interpreter for SECONDS (default 60),
-# then the curve expressions (compile, differentiate, print, check) for half as long.
+# then the curve expressions (compile, differentiate, print, check) for half as long, and the
+# cutter-profile and point-list files for a quarter.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNCURVE_FUZZ=ON \
   -DNCURVE_TESTS=OFF -DNCURVE_BENCH=OFF >/dev/null
-cmake --build build-fuzz --target fuzz_run fuzz_curve
+cmake --build build-fuzz --target fuzz_run fuzz_curve fuzz_rows
 corpus=build-fuzz/corpus
 mkdir -p "$corpus"
 cp tests/programs/*.nc examples/*.nc macros/*.nc "$corpus"/
@@ -32,5 +33,19 @@ if ./build-fuzz/fuzz/fuzz_curve "$curves" -max_total_time="$(( (seconds + 1) / 2
 else
   tail -n 60 "$log"
   echo "fuzz_curve: failure; the input that caused it is named above (crash-*, timeout-* or leak-*)"
+  exit 1
+fi
+
+rows=build-fuzz/corpus-rows
+mkdir -p "$rows"
+cp examples/*.csv "$rows"/
+printf '100,-5,-20\n100,5\n' >"$rows/dish"
+log=build-fuzz/fuzz-rows.log
+if ./build-fuzz/fuzz/fuzz_rows "$rows" -max_total_time="$(( (seconds + 3) / 4 ))" -max_len=4096 -timeout=10 \
+    -rss_limit_mb=2048 -print_final_stats=1 >"$log" 2>&1; then
+  grep -E "^Done|^stat::(number_of_executed_units|peak_rss_mb)" "$log" || true
+else
+  tail -n 60 "$log"
+  echo "fuzz_rows: failure; the input that caused it is named above (crash-*, timeout-* or leak-*)"
   exit 1
 fi
