@@ -29,9 +29,11 @@ std::string cycle_text(const Context& c, double chord_error, std::uint32_t& firs
   Frame fr = frame(o, c.words, c.start, c.end, c.dec, c.feed);
   w.lines(fr.before_start);
   w.lines(fr.to_depth);
-  w.block(fmt::format("G102 X{} Y{} I{} J{} Q{} T{} F{}", number(c.end[0], c.dec), number(c.end[1], c.dec),
+  const bool clockwise = c.curve.name() == "spiral-cw";
+  w.block(fmt::format("G102 X{} Y{} I{} J{} Q{} T{}{} F{}", number(c.end[0], c.dec), number(c.end[1], c.dec),
                       number(centre[0] - c.start[0], c.dec), number(centre[1] - c.start[1], c.dec),
-                      number(param(c.curve, "pitch"), 6), number(chord_error, 6), number(c.feed, 4)));
+                      number(param(c.curve, "pitch"), 6), number(chord_error, 6), clockwise ? " D2" : "",
+                      number(c.feed, 4)));
   w.lines(fr.retract);
   w.block("M30");
   first = w.line + 1;
@@ -46,10 +48,10 @@ std::string cycle_text(const Context& c, double chord_error, std::uint32_t& firs
 }  // namespace
 
 Emitted cycle(const Context& c) {
-  if (c.curve.name() != "spiral" || c.o.tool_radius > 0 || is_lathe(c.o))
+  if ((c.curve.name() != "spiral" && c.curve.name() != "spiral-cw") || c.o.tool_radius > 0 || is_lathe(c.o))
     throw std::runtime_error(
-        "the cycle form is the G102 spiral cycle (macros/O9010.nc): for the built-in spiral on a mill, without a "
-        "tool radius; use adaptive-macro for other curves");
+        "the cycle form is the G102 spiral cycle (macros/O9010.nc): for the built-in spiral or spiral-cw on a mill, "
+        "without a tool radius; use adaptive-macro for other curves");
   const double rounding = c.fit.grid.worst_error();
   double chord_error = std::floor((c.fit.tol - rounding) * 1e6) / 1e6;
   if (!(chord_error > 0))

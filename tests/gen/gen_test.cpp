@@ -218,6 +218,29 @@ TEST(Gen, AdaptiveMacroIsCompactAndNearlyAsShortAsEqualError) {
   EXPECT_LT(length(lines[1]) * 2, length(lines[lines.size() - 2]));
 }
 
+TEST(Gen, ClockwiseSpiralCycleUsesD2) {
+  auto spiral = curve("spiral-cw", {{"r0", 5}, {"pitch", 10}});
+  auto r = gen::generate(spiral, options(gen::Form::cycle, 0.005));
+  ASSERT_TRUE(r.within_tolerance) << r.stats.max_deviation;
+  // from (5, 0) clockwise about the origin to radius 15 at -360 degrees
+  EXPECT_NE(r.text.find("G102 X15. Y0. I-5. J0. Q10. T0."), std::string::npos) << r.text;
+  EXPECT_NE(r.text.find(" D2 F"), std::string::npos) << r.text;
+  machine::MachineProfile p = machine::default_mill();
+  machine::set_parameter(p, "6050", 102);
+  auto lines = contour_lines(r.text, p);
+  ASSERT_GT(lines.size(), 20u);
+  // clockwise: the first move goes to negative Y, and every vertex is on r = 5 + 10 (clockwise angle) / 360
+  EXPECT_LT(lines.front().second[1], 0);
+  for (const auto& l : lines) {
+    double rho = std::hypot(l.second[0], l.second[1]);
+    double turn = -std::atan2(l.second[1], l.second[0]);
+    if (turn < 0) turn += 2 * std::numbers::pi;
+    double off = std::fabs(rho - (5 + 10 * turn / (2 * std::numbers::pi)));
+    off = std::min(off, std::fabs(rho - (5 + 10 * (turn + 2 * std::numbers::pi) / (2 * std::numbers::pi))));
+    EXPECT_LE(off, 0.0015) << l.second[0] << " " << l.second[1];
+  }
+}
+
 TEST(Gen, SpiralCycleIsSeed001G102WithAToleranceArgument) {
   auto spiral = curve("spiral");
   auto r = gen::generate(spiral, options(gen::Form::cycle, 0.005));
