@@ -8,44 +8,33 @@ seconds="${1:-60}"
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNCURVE_FUZZ=ON \
   -DNCURVE_TESTS=OFF -DNCURVE_BENCH=OFF >/dev/null
 cmake --build build-fuzz --target fuzz_run fuzz_curve fuzz_rows
+# fuzz TARGET CORPUS SECONDS MAX_LEN: runs one target, prints its totals, or the failing input's log
+fuzz() {
+  local log="build-fuzz/$1.log"
+  if ./build-fuzz/fuzz/"$1" "$2" -max_total_time="$3" -max_len="$4" -timeout=10 -rss_limit_mb=2048 \
+      -print_final_stats=1 >"$log" 2>&1; then
+    grep -E "^Done|^stat::(number_of_executed_units|peak_rss_mb)" "$log" || true
+  else
+    tail -n 60 "$log"
+    echo "$1: failure; the input that caused it is named above (crash-*, timeout-* or leak-*)"
+    exit 1
+  fi
+}
+
 corpus=build-fuzz/corpus
 mkdir -p "$corpus"
 cp tests/programs/*.nc examples/*.nc macros/*.nc "$corpus"/
-log=build-fuzz/fuzz.log
-if ./build-fuzz/fuzz/fuzz_run "$corpus" -max_total_time="$seconds" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
-    -print_final_stats=1 >"$log" 2>&1; then
-  grep -E "^Done|^stat::(number_of_executed_units|peak_rss_mb)" "$log" || true
-else
-  tail -n 60 "$log"
-  echo "fuzz: failure; the input that caused it is named above (crash-*, timeout-* or leak-*)"
-  exit 1
-fi
+fuzz fuzz_run "$corpus" "$seconds" 8192
 
 curves=build-fuzz/corpus-curves
 mkdir -p "$curves"
 printf 'CX+[R0+A*t/360]*COS[t]\nCY+[R0+A*t/360]*SIN[t]\n0' >"$curves/spiral"
 printf 'A/COS[t]\n0\nA*TAN[t]' >"$curves/hyperbola"
 printf '63*SIN[t]-7.5*SIN[6*t]+20*SIN[ATAN[SIN[5*t]]/[1.4-COS[5*t]]-t]\nSQRT[ABS[t]]*EXP[t/90]\nLN[t+1]' >"$curves/rotor"
-log=build-fuzz/fuzz-curve.log
-if ./build-fuzz/fuzz/fuzz_curve "$curves" -max_total_time="$(( (seconds + 1) / 2 ))" -max_len=512 -timeout=10 \
-    -rss_limit_mb=2048 -print_final_stats=1 >"$log" 2>&1; then
-  grep -E "^Done|^stat::(number_of_executed_units|peak_rss_mb)" "$log" || true
-else
-  tail -n 60 "$log"
-  echo "fuzz_curve: failure; the input that caused it is named above (crash-*, timeout-* or leak-*)"
-  exit 1
-fi
+fuzz fuzz_curve "$curves" "$(( (seconds + 1) / 2 ))" 512
 
 rows=build-fuzz/corpus-rows
 mkdir -p "$rows"
 cp examples/*.csv "$rows"/
 printf '100,-5,-20\n100,5\n' >"$rows/dish"
-log=build-fuzz/fuzz-rows.log
-if ./build-fuzz/fuzz/fuzz_rows "$rows" -max_total_time="$(( (seconds + 3) / 4 ))" -max_len=4096 -timeout=10 \
-    -rss_limit_mb=2048 -print_final_stats=1 >"$log" 2>&1; then
-  grep -E "^Done|^stat::(number_of_executed_units|peak_rss_mb)" "$log" || true
-else
-  tail -n 60 "$log"
-  echo "fuzz_rows: failure; the input that caused it is named above (crash-*, timeout-* or leak-*)"
-  exit 1
-fi
+fuzz fuzz_rows "$rows" "$(( (seconds + 3) / 4 ))" 4096
