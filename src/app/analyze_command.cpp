@@ -158,28 +158,14 @@ std::string shape_csv(const gen::ShapeModels& m) {
   return out;
 }
 
-std::string shape_plot(const std::vector<machine::Move>& contour, const geom::Curve& curve, const gen::Options& o,
-                       const gen::Stats& s, double tol, const std::string& program) {
+std::string shape_plot(const geom::Curve& curve, const gen::Options& o, const gen::Stats& s, double tol,
+                       const std::string& program) {
   const geom::Plane plane = gen::plane_of(o.profile);
   const int u = plane.u_axis, v = plane.v_axis;
   std::vector<report::DeviationSegment> path;
-  for (std::size_t i = 0; i < contour.size() && i < s.deviation.size(); ++i) {
-    const machine::Move& m = contour[i];
-    const double dev = s.deviation[i].second;
-    if (m.kind != machine::MoveKind::arc) {
-      path.push_back({m.start[u], m.start[v], m.end[u], m.end[v], dev, i});
-      continue;
-    }
-    const double u0 = m.start[u] - m.center[u], v0 = m.start[v] - m.center[v];
-    const int pieces = 16;
-    double pu = m.start[u], pv = m.start[v];
-    for (int k = 1; k <= pieces; ++k) {
-      const double a = m.sweep * k / pieces;
-      double qu = m.center[u] + u0 * std::cos(a) - v0 * std::sin(a), qv = m.center[v] + u0 * std::sin(a) + v0 * std::cos(a);
-      if (k == pieces) qu = m.end[u], qv = m.end[v];
-      path.push_back({pu, pv, qu, qv, dev, i});
-      pu = qu, pv = qv;
-    }
+  for (std::size_t i = 0; i + 1 < s.path.size() && i < s.path_block.size(); ++i) {
+    const std::size_t block = s.path_block[i];
+    path.push_back({s.path[i][u], s.path[i][v], s.path[i + 1][u], s.path[i + 1][v], s.deviation[block].second, block});
   }
   const gen::AxisMap map = gen::axis_map(curve, o);
   std::vector<std::array<double, 2>> nominal;
@@ -302,7 +288,7 @@ int program_command(const AnalyzeArgs& a) {
     for (const auto& [t, d] : shape->deviation) beyond_tol += a.tol > 0 && d > a.tol;
     if (!a.shape_csv.empty() && !write_file(a.shape_csv, shape_csv(models), "shape CSV")) return 2;
     if (!a.shape_plot.empty() &&
-        !write_file(a.shape_plot, shape_plot(contour, *curve, o, *shape, a.tol, a.in.program), "shape plot"))
+        !write_file(a.shape_plot, shape_plot(*curve, o, *shape, a.tol, a.in.program), "shape plot"))
       return 2;
     double sq = 0;
     std::size_t worst = 0;

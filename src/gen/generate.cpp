@@ -181,9 +181,11 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
         q[plane.u_axis] = piece.centre[plane.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
         q[plane.v_axis] = piece.centre[plane.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
         s.path.push_back(q);
+        s.path_block.push_back(s.deviation.size() - 1);
       }
     }
     s.path.push_back(piece.end);
+    s.path_block.push_back(s.deviation.size() - 1);
     t_prev = t_end;
   }
   return s;

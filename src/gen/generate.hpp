@@ -52,6 +52,7 @@ struct Stats {
   // for plots: the contour as points (arcs sampled), and each move's largest deviation at the
   // curve parameter where it ends
   std::vector<geom::Vec3> path;
+  std::vector<std::size_t> path_block;  // for each point after the first, the move that reaches it
   std::vector<std::pair<double, double>> deviation;  // (t, mm)
 };
 
