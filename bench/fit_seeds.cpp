@@ -29,10 +29,12 @@ public:
   std::vector<machine::Move> moves;
 };
 
+// Runs the main program (text, or the file `name` when text is empty) with the macro folder.
 std::vector<machine::Move> interpret(const std::string& name, const std::string& text,
                                      const machine::MachineProfile& profile, const std::string& macros) {
   machine::ProgramLibrary lib;
-  lib.add_text(name, text, true);
+  if (text.empty()) lib.add_file(name, true);
+  else lib.add_text(name, text, true);
   lib.add_folder(macros);
   machine::Interpreter interp(profile, lib, {});
   Collect sink;
@@ -147,16 +149,6 @@ void print(const std::string& title, const std::vector<Cell>& cells, const std::
                f.model[i] - cells[i].measured, 100 * (f.model[i] / cells[i].measured - 1));
 }
 
-std::string read_file(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw std::runtime_error("cannot open " + path);
-  std::string text;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
-  std::fclose(f);
-  return text;
-}
-
 const Parameter kMacroTime{"macro_time", "s/statement", 0.01,
                            [](machine::MachineProfile& p, double&, double v) { p.motion.macro_time = v; }};
 const Parameter kAcceleration{"acceleration", "mm/s^2", 200, [](machine::MachineProfile& p, double&, double v) {
@@ -165,7 +157,7 @@ const Parameter kAcceleration{"acceleration", "mm/s^2", 200, [](machine::Machine
 const Parameter kFeed{"F", "mm/min", 2000, [](machine::MachineProfile&, double& feed, double v) { feed = v; }};
 
 std::vector<Cell> seed000(const std::string& dir, const machine::MachineProfile& mill) {
-  auto macro = interpret("spiral.nc", read_file(dir + "/examples/spiral.nc"), mill, dir + "/macros");
+  auto macro = interpret(dir + "/examples/spiral.nc", "", mill, dir + "/macros");
   auto expanded = macro;  // the same moves as plain blocks: no macro statements before them
   for (auto& m : expanded) m.macro_statements = 0;
   return {{"seed 000 expanded", 35, expanded, false}, {"seed 000 macro", 73, macro, false}};

@@ -285,7 +285,6 @@ int program_command(const AnalyzeArgs& a) {
       std::cerr << "ncurve analyze: --curve: " << e.what() << "\n";
       return 1;
     }
-    for (const auto& [t, d] : shape->deviation) beyond_tol += a.tol > 0 && d > a.tol;
     if (!a.shape_csv.empty() && !write_file(a.shape_csv, shape_csv(models), "shape CSV")) return 2;
     if (!a.shape_plot.empty() &&
         !write_file(a.shape_plot, shape_plot(*curve, o, *shape, a.tol, a.in.program), "shape plot"))
@@ -294,6 +293,7 @@ int program_command(const AnalyzeArgs& a) {
     std::size_t worst = 0;
     for (std::size_t i = 0; i < shape->deviation.size(); ++i) {
       sq += shape->deviation[i].second * shape->deviation[i].second;
+      beyond_tol += a.tol > 0 && shape->deviation[i].second > a.tol;
       if (shape->deviation[i].second > shape->deviation[worst].second) worst = i;
     }
     shape_rms = shape->deviation.empty() ? 0 : std::sqrt(sq / shape->deviation.size());
