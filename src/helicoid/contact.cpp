@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 namespace ncurve::helicoid {
@@ -13,6 +14,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kSettled = 1e-7;  // of a lattice cell: a shorter Newton step is not taken
 
 EndProfile offset_profile(const EndProfile& base, double distance) {
   auto eval = [base, distance](double u, Vec2& p, Vec2& d) {
@@ -200,6 +202,33 @@ public:
     return f0 - drop;
   }
 
+  // Second differences at c on the lattice of stride `stride`, in units of that stride:
+  // {f_ii, f_jj, f_ij}, centred where the rows allow and one-sided at their edges; nullopt where
+  // a value is not finite.
+  std::optional<std::array<double, 3>> stencil_hessian(Node c, int stride) {
+    auto f = [&](int di, int dj) { return value({c.i + di * stride, c.j + dj * stride}); };
+    // The three points along an axis, and the pair for the mixed difference, that stay inside.
+    auto span = [&](bool along_i) {
+      auto ok = [&](int k) { return inside(along_i ? Node{c.i + k * stride, c.j} : Node{c.i, c.j + k * stride}); };
+      return ok(-1) && ok(1) ? -1 : (ok(1) && ok(2) ? 0 : -2);
+    };
+    int a = span(true), b = span(false);
+    std::array<double, 3> h{f(a, 0) - 2 * f(a + 1, 0) + f(a + 2, 0), f(0, b) - 2 * f(0, b + 1) + f(0, b + 2), 0};
+    int a0 = a == -2 ? -1 : a, b0 = b == -2 ? -1 : b;
+    int a1 = a == -1 ? 1 : a0 + 1, b1 = b == -1 ? 1 : b0 + 1;
+    h[2] = (f(a1, b1) - f(a1, b0) - f(a0, b1) + f(a0, b0)) / ((a1 - a0) * (b1 - b0));
+    if (!std::isfinite(h[0] + h[1] + h[2])) return std::nullopt;
+    return h;
+  }
+
+  // A distance evaluated off the walk (with its gradient) kept for the walk.
+  ContactSearch::Distance eval_node(Node n) {
+    auto at = eval(alpha(n), s(n));
+    std::int64_t key = (static_cast<std::int64_t>(n.i) << 32) ^ static_cast<std::uint32_t>(n.j);
+    cache_.try_emplace(key, at.d);
+    return at;
+  }
+
   // The lattice minimum refined off the lattice: Newton on the exact gradient with the Hessian
   // of the 3x3 stencil, each step kept only if the distance falls.
   struct Refined {
@@ -234,6 +263,8 @@ public:
       }
       da = std::clamp(da, -2 * ha, 2 * ha);
       ds = std::clamp(ds, -2 * hs, 2 * hs);
+      // Settled: a Newton step this short moves the contact by less than the noise of d shows.
+      if (newton && std::abs(da) < kSettled * ha && std::abs(ds) < kSettled * hs) break;
       bool improved = false;
       for (int half = 0; half < 6; ++half) {
         double na = std::clamp(a + da, -cs_.na_ * ha, cs_.na_ * ha);
@@ -315,12 +346,16 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
   // shoulder. A coarse trace close to the best is descended to the fine lattice.
   constexpr int kCoarse = 16;  // lattice cells per coarse step
   // A trace well above the best is left alone for as many steps as its gap could not close at
-  // twice the fastest rate the gap has changed so far.
+  // twice the fastest rate the gap has changed lately (the fastest so far, fading by a factor a
+  // step: a rate seen at the crest says little about the flank ten steps on).
+  constexpr double kRateFade = 0.7;
   struct Trace {
+    Trace(int lo, int hi, Node start) : j_lo(lo), j_hi(hi), first(start) {}
     int j_lo, j_hi;
     Node first;
     std::vector<Node> path;
     bool guarded = false;  // has a coarse trace of its interior
+    std::optional<std::array<double, 3>> hessian;  // of the last full walk's stencil (coarse traces)
     double gap = kInf, gap_rate = 0;
     int idle = 0;     // steps left before the next update
     int updated = -1; // step of the last update
@@ -334,8 +369,10 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
     }
     void schedule(double value, double best, int step_index) {
       double g = value - best;
-      if (updated >= 0 && std::isfinite(gap) && std::isfinite(g))
-        gap_rate = std::max(gap_rate, std::abs(g - gap) / (step_index - updated));
+      if (updated >= 0 && std::isfinite(gap) && std::isfinite(g)) {
+        int steps = step_index - updated;
+        gap_rate = std::max(gap_rate * std::pow(kRateFade, steps), std::abs(g - gap) / steps);
+      }
       gap = g;
       updated = step_index;
       double rate = std::max(gap_rate, 0.01);
@@ -349,9 +386,9 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
       double end = start + e.length();
       int j_lo = static_cast<int>(std::ceil(start / lattice_.s_step - 1e-9));
       int j_hi = std::min(ns_, static_cast<int>(std::floor(end / lattice_.s_step + 1e-9)));
-      if (j_hi >= j_lo) fine.push_back({j_lo, j_hi, Node{0, (j_lo + j_hi) / 2}, {}});
+      if (j_hi >= j_lo) fine.emplace_back(j_lo, j_hi, Node{0, (j_lo + j_hi) / 2});
       if (j_hi - j_lo > 4 * kCoarse) {
-        coarse.push_back({j_lo + kCoarse, j_hi - kCoarse, Node{0, (j_lo + j_hi) / 2}, {}});
+        coarse.emplace_back(j_lo + kCoarse, j_hi - kCoarse, Node{0, (j_lo + j_hi) / 2});
         fine.back().guarded = true;
       }
       start = end;
@@ -397,10 +434,47 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
           }
         }
         for (auto& t : coarse) {  // every step: a new contact can rise faster than any rate seen so far
+          // One evaluation with its gradient and the last stencil's curvature predict the trace's
+          // minimum; a prediction clear of the best by twice its own drop needs no walk.
+          const double margin = 2 * t.gap_rate + 0.02;
+          if (t.hessian && !t.path.empty()) {
+            step.restrict_rows(t.j_lo, t.j_hi);
+            Node p = step.clamp(predicted(t.path, t.first));
+            auto at = step.eval_node(p);
+            const auto& h = *t.hessian;
+            double ga = at.d_alpha * lattice_.alpha_step * kCoarse, gs = at.d_s * lattice_.s_step * kCoarse;
+            // The quadratic model's minimum within the rows: the full Newton step, or along alpha
+            // alone where that step would leave the rows.
+            double det = h[0] * h[1] - h[2] * h[2];
+            double di = 0, dj = 0;
+            bool model = at.hit && h[0] > 0;
+            if (model && det > 0) {
+              di = -(h[1] * ga - h[2] * gs) / det;
+              dj = -(-h[2] * ga + h[0] * gs) / det;
+            }
+            if (model && (det <= 0 || !step.inside({p.i, p.j + static_cast<int>(std::lround(dj)) * kCoarse}))) {
+              bool pinned = (p.j == t.j_lo && gs > 0) || (p.j == t.j_hi && gs < 0);
+              model = pinned;
+              di = -ga / h[0], dj = 0;
+            }
+            double drop = -(ga * di + gs * dj) / 2;
+            // Where the model curves down, the walk's neighbours could be lower than its minimum.
+            for (int ki = -1; ki <= 1; ++ki)
+              for (int kj = -1; kj <= 1; ++kj)
+                if (step.inside({p.i + ki * kCoarse, p.j + kj * kCoarse}))
+                  drop = std::max(drop, -(ga * ki + gs * kj + (h[0] * ki * ki + 2 * h[2] * ki * kj + h[1] * kj * kj) / 2));
+            if (model && std::abs(di) <= 2 && std::abs(dj) <= 2 && at.d - 2 * drop > best + margin) {
+              t.path.push_back(step.clamp({p.i + static_cast<int>(std::lround(di)) * kCoarse,
+                                           p.j + static_cast<int>(std::lround(dj)) * kCoarse}));
+              t.schedule(at.d - drop, best, step_index);
+              continue;
+            }
+          }
           Node n = advance(t, kCoarse);
+          t.hessian = step.stencil_hessian(n, kCoarse);
           double v = step.fitted_minimum(n, kCoarse);
           double coarseness = step.value(n) - v;
-          if (v <= best + 2 * t.gap_rate + coarseness + 0.02) {
+          if (v <= best + margin + coarseness) {
             for (std::size_t k = 0; k < fine.size(); ++k) {  // the element holding this coarse trace
               auto& f = fine[k];
               if (f.j_lo > t.j_lo || f.j_hi < t.j_hi) continue;

@@ -136,10 +136,10 @@ TEST(Helicoid, StraightEccentricCircleIsTwoCircles) {
 
 // The robust search lands on brute force's lattice minimum at every step, for the seed's 35 deg
 // insert and for a 70 deg reading, where the contact jumps from the corner to a flank and back.
-void expect_robust_is_brute(double included_angle) {
+void expect_robust_is_brute(double included_angle, double psi_step = 1) {
   Lattice coarse{0.2, 0.2, 30};
   auto cs = seed_search(included_angle, coarse);
-  auto psis = range(0, 72, 1);
+  auto psis = range(0, 72, psi_step);
   auto brute = cs.run(psis, Method::brute);
   auto robust = cs.run(psis, Method::robust);
   ASSERT_EQ(brute.size(), robust.size());
@@ -157,6 +157,21 @@ void expect_robust_is_brute(double included_angle) {
 
 TEST(Helicoid, RobustEqualsBruteSeedInsert) { expect_robust_is_brute(35); }
 TEST(Helicoid, RobustEqualsBruteWideInsert) { expect_robust_is_brute(70); }
+// Coarser phase steps: the traces' predictions are poorer and the contact jumps farther.
+TEST(Helicoid, RobustEqualsBruteInCoarseSteps) {
+  expect_robust_is_brute(70, 3);
+  expect_robust_is_brute(80, 4.5);
+}
+
+// The target for the seed's example on the default lattice: fewer than 30 distance
+// evaluations per step on average, refinement and safeguards included.
+TEST(Helicoid, RobustSearchNeedsFewerThanThirtyEvaluationsPerStep) {
+  auto cs = seed_search(35);
+  auto contacts = cs.run(range(0, 72, 1), Method::robust);
+  std::int64_t evaluations = 0;
+  for (const auto& c : contacts) evaluations += c.evaluations;
+  EXPECT_LT(static_cast<double>(evaluations) / static_cast<double>(contacts.size()), 30.0);
+}
 
 TEST(Helicoid, PlainNinePointIsCaughtWhereTheContactJumps) {
   auto cs = seed_search(70);
