@@ -4,7 +4,7 @@ include(${CMAKE_CURRENT_LIST_DIR}/cli_helpers.cmake)
 
 run_expect(0 "helicoid seed004 csv" ${NCURVE} helicoid --example seed004 --csv)
 expect_text("${out}" "psi_deg,A_mm,u_deg,r_mm,x_mm,y_mm,z_mm," "csv header")
-expect_text("${out}" "evaluations,plane_A_mm,plane_error_mm" "csv header")
+expect_text("${out}" "evaluations,plane_A_mm,plane_error_mm,cusp_mm" "csv header")
 expect_text("${out}" "\n0.000000,161.5000000," "A(0) = 35.5 + 126")
 expect_text("${out}" "\n36.000000,176.5000000," "A(36) = 50.5 + 126")
 expect_text("${out}" "\n72.000000,161.5000000," "A(72) = A(0)")
@@ -22,6 +22,28 @@ run_expect(0 "run the rotor program" ${NCURVE} run ${OUT}/rotor.nc --machine ${S
            --format csv)
 expect_text("${out}" ",line,161.500000,0.000000,0.000000," "first pass at A(0)")
 expect_text("${out}" ",line,176.500000,0.000000," "pass at A(36)")
+
+# the program fitted to a cusp tolerance: fewer passes than steps, each a helical pass that runs
+run_expect(0 "helicoid program within a cusp tolerance" ${NCURVE} helicoid --example seed004 --step 0.5 --to 36
+           --program-tol 0.05 --program ${OUT}/rotor_tol.nc --json)
+string(REGEX MATCH "\"passes\": ([0-9]+)" passes "${out}")
+set(passes ${CMAKE_MATCH_1})
+if(NOT passes OR passes GREATER_EQUAL 73 OR passes LESS 10)
+  message(SEND_ERROR "--program-tol 0.05: expected fewer passes than the 73 steps: ${passes}")
+endif()
+expect_text("${out}" "\"cusp_mm\"" "json cusp column")
+file(READ ${OUT}/rotor_tol.nc prog)
+expect_text("${prog}" "(${passes} PASSES OF 73 STEPS, CUSPS WITHIN 0.05 MM)" "program header")
+string(REGEX MATCHALL "G01 Z" cuts "${prog}")
+list(LENGTH cuts cut_count)
+if(NOT cut_count EQUAL passes)
+  message(SEND_ERROR "program has ${cut_count} passes, the JSON says ${passes}")
+endif()
+run_expect(0 "run the fitted rotor program" ${NCURVE} run ${OUT}/rotor_tol.nc --machine
+           ${SRC}/profiles/fanuc-4axis-helicoid.toml)
+expect_text("${out}" "completed" "fitted program runs")
+run_expect(1 "cusp tolerance below what the step allows" ${NCURVE} helicoid --example seed004 --step 3 --program-tol 0.01)
+expect_text("${err}" "make the psi step smaller" "coarse step for the tolerance")
 
 run_expect(0 "helicoid any profile" ${NCURVE} helicoid --profile-x "40*COS[u]" --profile-y "30*SIN[u]" --lead 500
            --lobes 2 --cutter-diameter 200 --corner-radius 1 --included-angle 40 --step 15)

@@ -53,7 +53,10 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   h->add_flag("--json", a.json, "contacts as JSON");
   h->add_flag("--no-check", a.no_check, "skip the interference check over the whole cutter");
   h->add_option("-o,--output", a.output, "write the table to this file");
-  h->add_option("--program", a.program, "write a 4-axis FANUC program (X, Z, A): one helical pass per step");
+  h->add_option("--program", a.program, "write a 4-axis FANUC program (X, Z, A): one helical pass per step (or see --program-tol)");
+  h->add_option("--program-tol", a.program_tol,
+                 "program: the fewest of the steps' passes whose cusps stay within this, mm")
+      ->check(CLI::PositiveNumber);
   h->add_option("--length", a.length, "program: pass length along Z, mm")->check(CLI::PositiveNumber);
   h->add_option("--feed", a.feed, "program: feed along the pass, mm/min")->check(CLI::PositiveNumber);
   h->add_option("--plot", a.plot, "SVG: end profile with contacts, A(psi), plane-method error");
@@ -197,6 +200,13 @@ int helicoid_command(const HelicoidArgs& a) {
           throw std::runtime_error(fmt::format("psi = {:g} deg: at A = {:.6f} mm the cutter cuts {:.6f} mm into the "
                                                "workpiece elsewhere (interference)", c.psi, c.A, p));
       }
+    }
+    for (std::size_t i = 0; i + 1 < job.contacts.size(); ++i)
+      job.cusps.push_back(search->cusp(job.contacts[i], job.contacts[i + 1]).height);
+    if (a.program_tol) {
+      auto plan = search->fewest_passes(job.contacts, *a.program_tol);
+      job.passes = plan.passes;
+      job.pass_tolerance = *a.program_tol;
     }
   } catch (const std::exception& e) {
     std::cerr << "ncurve helicoid: " << e.what() << "\n";

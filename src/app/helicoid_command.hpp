@@ -26,6 +26,7 @@ struct HelicoidArgs {
   bool csv = false, json = false, no_check = false;
   std::string output, program, plot;
   double length = 100, feed = 200;
+  std::optional<double> program_tol;
   CLI::App* command = nullptr;
 };
 

@@ -36,7 +36,6 @@ double outward(const Local& l, Vec3& n) {
   return len / s2;
 }
 
-constexpr double kGolden = 0.6180339887498949;
 
 struct Arc2 {
   bool line = false;
@@ -115,32 +114,8 @@ double point_arc_distance(const Vec3& p, const Piece& arc, const Plane& plane) {
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb,
                    const std::function<double(const Vec3&)>& dist) {
-  constexpr int kSamples = 8;
-  auto f = [&](double t) { return dist(place(curve.point(t))); };
-  double best_t = ta, best = f(ta);
-  int best_i = 0;
-  for (int i = 1; i <= kSamples; ++i) {
-    double t = ta + (tb - ta) * i / kSamples;
-    double d = f(t);
-    if (d > best) { best = d; best_t = t; best_i = i; }
-  }
-  // golden-section search for the maximum next to the best sample
-  double lo = ta + (tb - ta) * std::max(0, best_i - 1) / kSamples;
-  double hi = ta + (tb - ta) * std::min(kSamples, best_i + 1) / kSamples;
-  double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
-  double f1 = f(x1), f2 = f(x2);
-  for (int i = 0; i < 40 && hi - lo > 1e-12 * (1 + std::fabs(hi)); ++i) {
-    if (f1 > f2) {
-      hi = x2; x2 = x1; f2 = f1;
-      x1 = hi - kGolden * (hi - lo); f1 = f(x1);
-    } else {
-      lo = x1; x1 = x2; f1 = f2;
-      x2 = lo + kGolden * (hi - lo); f2 = f(x2);
-    }
-  }
-  if (f1 > best) { best = f1; best_t = x1; }
-  if (f2 > best) { best = f2; best_t = x2; }
-  return {best, best_t};
+  auto m = sampled_maximum([&](double t) { return dist(place(curve.point(t))); }, ta, tb, 8);
+  return {m.value, m.at};
 }
 
 namespace {

@@ -9,6 +9,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "geom/search.hpp"
+
 namespace ncurve::helicoid {
 namespace {
 
@@ -512,6 +514,60 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
     out.push_back(c);
   }
   return out;
+}
+
+double ContactSearch::stock(const Contact& pass, double u) const {
+  const Vec2 p = work_.profile.point(u);
+  const double twist = work_.twist();
+  // Smallest over the helix of the distance to the cutter surface: the largest of its negative.
+  auto closeness = [&](double z) {
+    double phi = (pass.psi + twist * z) * kDeg;
+    double c = std::cos(phi), s = std::sin(phi);
+    Vec3 rel{c * p.x - s * p.y - pass.A, s * p.x + c * p.y, z};
+    double w = rel[0] * axis_[0] + rel[1] * axis_[1] + rel[2] * axis_[2];
+    double rho = std::sqrt(std::max(0.0, rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - w * w));
+    return -cutter_.signed_distance({rho, w});
+  };
+  // The helix passes the disc within its radius of the contact's height; 64 samples there, then
+  // to 1e-5 mm in z (the distance is flat at its minimum: the error is far below 1e-9 mm).
+  const double reach = cutter_.outer_radius(), z0 = pass.work_point[2];
+  return -geom::sampled_maximum(closeness, z0 - reach, z0 + reach, 64, 1e-5).value;
+}
+
+ContactSearch::Cusp ContactSearch::cusp(const Contact& a, const Contact& b) const {
+  const double du = std::remainder(b.u - a.u, work_.profile.period());
+  if (std::abs(du) < 1e-9) return {std::max(0.0, std::min(stock(a, a.u), stock(b, a.u))), a.u};
+  auto left = [&](double t) {
+    double u = a.u + t * du;
+    return std::min(stock(a, u), stock(b, u));
+  };
+  auto top = geom::sampled_maximum(left, 0.0, 1.0, 8);
+  return {top.value, a.u + top.at * du};
+}
+
+ContactSearch::PassPlan ContactSearch::fewest_passes(const std::vector<Contact>& contacts, double tol) const {
+  PassPlan plan;
+  if (contacts.empty()) return plan;
+  if (!(tol > 0)) throw std::runtime_error("pass tolerance must be > 0 mm");
+  std::size_t at = 0;
+  plan.passes.push_back(0);
+  while (at + 1 < contacts.size()) {
+    Cusp reach = cusp(contacts[at], contacts[at + 1]);
+    if (reach.height > tol)
+      throw std::runtime_error(fmt::format(
+          "psi = {:g} and {:g} deg: neighbouring passes leave a cusp of {:.6f} mm (at u = {:.3f} deg), above the "
+          "tolerance {:g} mm: make the psi step smaller", contacts[at].psi, contacts[at + 1].psi, reach.height, reach.u, tol));
+    std::size_t next = at + 1;
+    while (next + 1 < contacts.size()) {
+      Cusp c = cusp(contacts[at], contacts[next + 1]);
+      if (c.height > tol) break;
+      reach = c, ++next;
+    }
+    plan.passes.push_back(next);
+    plan.cusps.push_back(reach);
+    at = next;
+  }
+  return plan;
 }
 
 double ContactSearch::deepest_penetration(double psi, double A, std::int64_t* evaluations) const {

@@ -88,6 +88,28 @@ public:
   // deepest penetration found (<= 0 when clear) by a scan of the whole cutter with local descent.
   double deepest_penetration(double psi, double A, std::int64_t* evaluations = nullptr) const;
 
+  // Material one pass leaves over the profile point u: the distance from the helix through it
+  // (the path the screw motion moves it along) to the cutter standing at the pass's A and psi,
+  // i.e. the distance from the design surface to what the pass cuts; < 0 where it cuts too deep.
+  double stock(const Contact& pass, double u) const;
+
+  // The highest material two passes leave on the profile between their contacts (each point's
+  // stock from the nearer pass; any other pass can only lower it).
+  struct Cusp {
+    double height = 0;  // mm
+    double u = 0;       // profile parameter of the top, degrees
+  };
+  Cusp cusp(const Contact& a, const Contact& b) const;
+
+  // The fewest of the given contacts (in order, first and last kept) whose neighbours leave cusps
+  // within `tol`: greedy, each pass followed by the farthest one within the tolerance. Throws,
+  // naming the phases, when two neighbouring contacts already leave more.
+  struct PassPlan {
+    std::vector<std::size_t> passes;  // indices into the contacts
+    std::vector<Cusp> cusps;          // between passes k and k + 1
+  };
+  PassPlan fewest_passes(const std::vector<Contact>& contacts, double tol) const;
+
   const Workpiece& workpiece() const { return work_; }
   const DiscCutter& cutter() const { return cutter_; }
   const Setting& setting() const { return setting_; }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -32,6 +33,10 @@ DiscCutter::DiscCutter(std::vector<ProfileElement> elements) : elements_(std::mo
       double lo = std::min(e.a0, e.a1), hi = std::max(e.a0, e.a1);
       if (lo <= 0 && hi >= 0) outer_ = std::max(outer_, e.centre.x + e.radius);
     }
+  }
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    ends_.push_back(at_element(i, 0));
+    ends_.push_back(at_element(i, elements_[i].length()));
   }
 }
 
@@ -112,8 +117,11 @@ DiscCutter::Point DiscCutter::at(double s) const {
   s = std::clamp(s, 0.0, total_);
   std::size_t i = 0;
   while (i + 1 < elements_.size() && s > starts_[i + 1]) ++i;
+  return at_element(i, s - starts_[i]);
+}
+
+DiscCutter::Point DiscCutter::at_element(std::size_t i, double local) const {
   const auto& e = elements_[i];
-  double local = s - starts_[i];
   Point out;
   out.element = static_cast<int>(i);
   if (e.kind == ProfileElement::Kind::line) {
@@ -131,6 +139,37 @@ DiscCutter::Point DiscCutter::at(double s) const {
     out.normal = dir > 0 ? radial : Vec2{-radial.x, -radial.y};
   }
   return out;
+}
+
+double DiscCutter::signed_distance(Vec2 q) const {
+  double best = std::numeric_limits<double>::infinity(), sign = 1;
+  auto consider = [&](Vec2 foot, Vec2 normal) {
+    Vec2 d{q.x - foot.x, q.y - foot.y};
+    double dist = std::hypot(d.x, d.y);
+    if (dist < best) best = dist, sign = d.x * normal.x + d.y * normal.y < 0 ? -1 : 1;
+  };
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const auto& e = elements_[i];
+    const Point& first = ends_[2 * i];
+    consider(first.p, first.normal);
+    consider(ends_[2 * i + 1].p, ends_[2 * i + 1].normal);
+    if (e.kind == ProfileElement::Kind::line) {
+      double len = e.length();
+      Vec2 t{(e.end.x - e.start.x) / len, (e.end.y - e.start.y) / len};
+      double along = (q.x - e.start.x) * t.x + (q.y - e.start.y) * t.y;
+      if (along > 0 && along < len) consider({e.start.x + t.x * along, e.start.y + t.y * along}, first.normal);
+    } else {
+      double dir = e.a1 > e.a0 ? 1 : -1;
+      double ang = std::atan2(q.y - e.centre.y, q.x - e.centre.x);
+      double from_start = std::remainder(dir * (ang - e.a0) - std::numbers::pi, 2 * std::numbers::pi) + std::numbers::pi;
+      if (from_start < std::abs(e.a1 - e.a0)) {
+        Vec2 radial{std::cos(ang), std::sin(ang)};
+        consider({e.centre.x + e.radius * radial.x, e.centre.y + e.radius * radial.y},
+                 dir > 0 ? radial : Vec2{-radial.x, -radial.y});
+      }
+    }
+  }
+  return sign * best;
 }
 
 double DiscCutter::corner_middle() const {

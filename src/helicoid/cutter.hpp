@@ -44,12 +44,17 @@ public:
     int element;
   };
   Point at(double s) const;  // s in [0, length()]
+  // Distance from a point (rho, w) of a meridian half-plane to the profile: > 0 outside the
+  // cutter's material, < 0 inside. For a point in space this is its distance to the surface.
+  double signed_distance(Vec2 q) const;
   const std::string& region(double s) const { return elements_[at(s).element].region; }
   double corner_middle() const;  // arc length of the outermost point
 
 private:
+  Point at_element(std::size_t i, double local) const;
   std::vector<ProfileElement> elements_;
   std::vector<double> starts_;
+  std::vector<Point> ends_;  // each element's first and last point
   double total_ = 0, outer_ = 0;
 };
 

@@ -12,7 +12,7 @@ namespace {
 
 const char* kColumns =
     "psi_deg,A_mm,u_deg,r_mm,x_mm,y_mm,z_mm,cutter_x_mm,cutter_y_mm,cutter_z_mm,cutter_alpha_deg,cutter_s_mm,"
-    "cutter_region,normal_angle_deg,evaluations,plane_A_mm,plane_error_mm";
+    "cutter_region,normal_angle_deg,evaluations,plane_A_mm,plane_error_mm,cusp_mm";
 
 double plane_error(const Contact& c) { return c.plane_A - c.A; }
 
@@ -20,11 +20,14 @@ double plane_error(const Contact& c) { return c.plane_A - c.A; }
 
 std::string contacts_csv(const Job& job) {
   std::string s = std::string(kColumns) + "\n";
-  for (const auto& c : job.contacts)
-    s += fmt::format("{:.6f},{:.7f},{:.6f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.6f},{:.6f},{},{:.3e},{},{:.7f},{:.7f}\n",
+  for (std::size_t i = 0; i < job.contacts.size(); ++i) {
+    const auto& c = job.contacts[i];
+    s += fmt::format("{:.6f},{:.7f},{:.6f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.7f},{:.6f},{:.6f},{},{:.3e},{},{:.7f},{:.7f},",
                      c.psi, c.A, c.u, c.r, c.work_point[0], c.work_point[1], c.work_point[2], c.cutter_point[0],
                      c.cutter_point[1], c.cutter_point[2], c.alpha, c.s, c.region, c.normal_angle, c.evaluations,
                      c.plane_A, plane_error(c));
+    s += i < job.cusps.size() ? fmt::format("{:.7f}\n", job.cusps[i]) : "\n";
+  }
   return s;
 }
 
@@ -32,6 +35,7 @@ namespace {
 
 struct Summary {
   double a_min = 1e300, a_max = -1e300, plane_worst = 0, plane_worst_psi = 0, normal_worst = 0, mean_evaluations = 0;
+  double cusp_worst = 0, cusp_worst_psi = 0;
   std::int64_t evaluations = 0;
 };
 
@@ -44,6 +48,8 @@ Summary summarize(const Job& job) {
     s.normal_worst = std::max(s.normal_worst, c.normal_angle);
     s.evaluations += c.evaluations;
   }
+  for (std::size_t i = 0; i < job.cusps.size(); ++i)
+    if (job.cusps[i] > s.cusp_worst) s.cusp_worst = job.cusps[i], s.cusp_worst_psi = job.contacts[i].psi;
   if (!job.contacts.empty()) s.mean_evaluations = static_cast<double>(s.evaluations) / job.contacts.size();
   return s;
 }
@@ -66,7 +72,13 @@ std::string contacts_json(const Job& job, const ContactSearch& search) {
   j["summary"] = {{"A_min_mm", sum.a_min},         {"A_max_mm", sum.a_max},
                   {"evaluations", sum.evaluations}, {"mean_evaluations", sum.mean_evaluations},
                   {"normal_angle_max_deg", sum.normal_worst}, {"plane_error_max_mm", sum.plane_worst},
-                  {"plane_error_max_psi_deg", sum.plane_worst_psi}};
+                  {"plane_error_max_psi_deg", sum.plane_worst_psi},
+                  {"cusp_max_mm", sum.cusp_worst}, {"cusp_max_psi_deg", sum.cusp_worst_psi}};
+  if (job.pass_tolerance > 0) {
+    auto psis = nlohmann::ordered_json::array();
+    for (std::size_t k : job.passes) psis.push_back(job.contacts[k].psi);
+    j["program"] = {{"tolerance_mm", job.pass_tolerance}, {"passes", job.passes.size()}, {"psi_deg", psis}};
+  }
   auto& steps = j["steps"] = nlohmann::ordered_json::array();
   for (const auto& c : job.contacts) {
     steps.push_back({{"psi_deg", c.psi},
@@ -86,6 +98,7 @@ std::string contacts_json(const Job& job, const ContactSearch& search) {
                      {"evaluations", c.evaluations},
                      {"plane_A_mm", c.plane_A},
                      {"plane_error_mm", plane_error(c)}});
+    if (steps.size() <= job.cusps.size()) steps.back()["cusp_mm"] = job.cusps[steps.size() - 1];
   }
   return j.dump(2) + "\n";
 }
@@ -100,8 +113,15 @@ std::string contacts_text(const Job& job, const ContactSearch& search) {
                    search.lattice().size(search.cutter().length()));
   s += fmt::format("A from {:.6f} to {:.6f} mm; surfaces' normals parallel within {:.2e} deg\n", sum.a_min, sum.a_max,
                    sum.normal_worst);
-  s += fmt::format("plane programming (profile offset by the corner radius) is off by up to {:+.4f} mm (psi = {:g} deg)\n\n",
+  s += fmt::format("plane programming (profile offset by the corner radius) is off by up to {:+.4f} mm (psi = {:g} deg)\n",
                    sum.plane_worst, sum.plane_worst_psi);
+  if (!job.cusps.empty())
+    s += fmt::format("one pass per step leaves cusps up to {:.4f} mm (after psi = {:g} deg)\n", sum.cusp_worst,
+                     sum.cusp_worst_psi);
+  if (job.pass_tolerance > 0)
+    s += fmt::format("program: {} passes of the {} steps leave cusps within {:g} mm\n", job.passes.size(),
+                     job.contacts.size(), job.pass_tolerance);
+  s += "\n";
   s += fmt::format("{:>8} {:>12} {:>9} {:>9} {:>8} {:>8} {:>12} {:>10}\n", "psi deg", "A mm", "u deg", "r mm", "cutter",
                    "evals", "plane A mm", "error mm");
   for (const auto& c : job.contacts)
@@ -123,10 +143,17 @@ std::string pass_program(const Job& job, const ContactSearch& search, const Pass
   });
   s += fmt::format("({})\n", title);
   s += fmt::format("(X = CENTRE DISTANCE A-PSI, A = WORKPIECE TURN, Z ALONG THE AXIS: A = PSI - {:.6f} * Z)\n", twist);
+  if (job.pass_tolerance > 0)
+    s += fmt::format("({} PASSES OF {} STEPS, CUSPS WITHIN {:g} MM)\n", job.passes.size(), job.contacts.size(),
+                     job.pass_tolerance);
   s += "G21 G90 G94\n";
   s += fmt::format("G00 X{:.3f}\n", retract);
+  std::vector<std::size_t> passes = job.passes;
+  if (passes.empty())
+    for (std::size_t i = 0; i < job.contacts.size(); ++i) passes.push_back(i);
   bool forward = true;
-  for (const auto& c : job.contacts) {
+  for (std::size_t k : passes) {
+    const auto& c = job.contacts[k];
     double z0 = forward ? o.z_start : o.z_end, z1 = forward ? o.z_end : o.z_start;
     s += fmt::format("G00 Z{:.3f} A{:.3f}\n", z0, c.psi - twist * z0);
     s += fmt::format("G01 X{:.4f} F{:g}\n", c.A, o.feed);

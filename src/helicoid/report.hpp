@@ -12,6 +12,11 @@ struct Job {
   Method method = Method::robust;
   double step = 1;    // psi step, degrees
   std::vector<Contact> contacts;
+  std::vector<double> cusps;  // material left between the passes of steps i and i + 1, mm
+  // The program's passes (indices into contacts; empty: one per step) and the cusp tolerance
+  // they were chosen for (0: none).
+  std::vector<std::size_t> passes;
+  double pass_tolerance = 0;
 };
 
 std::string contacts_csv(const Job& job);
@@ -24,8 +29,8 @@ struct PassOptions {
   double feed = 200;                 // mm/min along the pass
   double clearance = 5;              // X retract above the largest A between passes, mm
 };
-// One helical pass per psi step (X at A(psi), A and Z tied by the lead), passes alternating in
-// direction. Runs under `ncurve run` with a profile that has axes X, Z and A.
+// One helical pass per psi step, or per chosen pass (X at A(psi), A and Z tied by the lead),
+// passes alternating in direction. Runs under `ncurve run` with a profile that has axes X, Z and A.
 std::string pass_program(const Job& job, const ContactSearch& search, const PassOptions& options);
 
 // End profile with the contact points, A(psi), and the plane method's error against it.

@@ -134,6 +134,64 @@ TEST(Helicoid, StraightEccentricCircleIsTwoCircles) {
   }
 }
 
+// Without twist the corner cuts a circle of radius rc in the end section: two passes leave a cusp
+// between two circles tangent to the profile circle, highest on the bisector of their centres.
+TEST(Helicoid, CuspOfStraightEccentricCircleIsClosedForm) {
+  const double e = 8, rho = 30, rc = 1.2, R = 126;
+  auto eval = [&](double u, Vec2& p, Vec2& d) {
+    p = {e + rho * std::cos(u * kDeg), rho * std::sin(u * kDeg)};
+    d = {-rho * std::sin(u * kDeg) * kDeg, rho * std::cos(u * kDeg) * kDeg};
+  };
+  Workpiece work{EndProfile("eccentric circle", eval, 0, 360), 0, 1, 1};
+  ContactSearch cs(work, DiscCutter::v_insert(2 * R, rc, 35, 20), Setting{0, 0}, Lattice{});
+  auto contacts = cs.run(range(0, 90, 0.5), Method::robust);
+  // Closed form from A alone: the corner circle's centre turned back into the workpiece frame.
+  auto cusp = [&](const Contact& a, const Contact& b) {
+    auto bearing = [&](const Contact& c) {
+      double x = (c.A - R + rc) * std::cos(c.psi * kDeg) - e, y = -(c.A - R + rc) * std::sin(c.psi * kDeg);
+      return std::atan2(y, x);
+    };
+    double half = std::remainder(bearing(b) - bearing(a), 2 * std::numbers::pi) / 2;
+    return std::sqrt(rho * rho + (rho + rc) * (rho + rc) - 2 * rho * (rho + rc) * std::cos(half)) - rc;
+  };
+  for (std::size_t i = 0; i + 12 < contacts.size(); i += 29) {
+    EXPECT_NEAR(cs.stock(contacts[i], contacts[i].u), 0, 1e-7) << contacts[i].psi;
+    EXPECT_NEAR(cs.cusp(contacts[i], contacts[i + 1]).height, cusp(contacts[i], contacts[i + 1]), 1e-7) << contacts[i].psi;
+    EXPECT_NEAR(cs.cusp(contacts[i], contacts[i + 12]).height, cusp(contacts[i], contacts[i + 12]), 1e-7) << contacts[i].psi;
+  }
+  // The fewest passes: every gap within the tolerance, and none could reach one step farther.
+  const double tol = 0.1;
+  auto plan = cs.fewest_passes(contacts, tol);
+  ASSERT_EQ(plan.passes.front(), 0u);
+  ASSERT_EQ(plan.passes.back(), contacts.size() - 1);
+  ASSERT_EQ(plan.cusps.size() + 1, plan.passes.size());
+  EXPECT_LT(plan.passes.size(), contacts.size() / 2);  // 0.5 deg steps leave about 11 um
+  for (std::size_t k = 0; k + 1 < plan.passes.size(); ++k) {
+    const auto& a = contacts[plan.passes[k]];
+    EXPECT_LE(cusp(a, contacts[plan.passes[k + 1]]), tol + 1e-9) << a.psi;
+    EXPECT_NEAR(plan.cusps[k].height, cusp(a, contacts[plan.passes[k + 1]]), 1e-7) << a.psi;
+    if (plan.passes[k + 1] + 1 < contacts.size()) {
+      EXPECT_GT(cusp(a, contacts[plan.passes[k + 1] + 1]), tol) << a.psi;
+    }
+  }
+  EXPECT_THROW(cs.fewest_passes(contacts, 0.001), std::runtime_error);  // 0.5 deg steps are too coarse for 1 um
+}
+
+// The stock a pass leaves is measured from the surfaces themselves (a point's distance to the
+// cutter), not from the directed distance the search minimises: at every contact they agree.
+TEST(Helicoid, PassesTouchAtTheirContactsOnTheSeedRotor) {
+  auto cs = seed_search(35);
+  auto contacts = cs.run(range(0, 72, 6), Method::robust);
+  for (const auto& c : contacts) {
+    EXPECT_NEAR(cs.stock(c, c.u), 0, 1e-7) << c.psi;
+    EXPECT_GT(cs.stock(c, c.u + 0.5), 1e-3) << c.psi;
+    EXPECT_GT(cs.stock(c, c.u - 0.5), 1e-3) << c.psi;
+  }
+  auto plan = cs.fewest_passes(cs.run(range(0, 72, 0.5), Method::robust), 0.05);
+  for (const auto& c : plan.cusps) EXPECT_LE(c.height, 0.05);
+  EXPECT_LT(plan.passes.size(), 145u);
+}
+
 // The robust search lands on brute force's lattice minimum at every step, for the seed's 35 deg
 // insert and for a 70 deg reading, where the contact jumps from the corner to a flank and back.
 void expect_robust_is_brute(double included_angle, double psi_step = 1) {
