@@ -45,6 +45,29 @@ expect_text("${out}" "completed" "fitted program runs")
 run_expect(1 "cusp tolerance below what the step allows" ${NCURVE} helicoid --example seed004 --step 3 --program-tol 0.01)
 expect_text("${err}" "make the psi step smaller" "coarse step for the tolerance")
 
+# final motion along Z at a fixed centre distance: the same contact for every psi, shifted along Z
+run_expect(0 "helicoid final motion z" ${NCURVE} helicoid --example seed004 --final-motion z- --centre-distance 170
+           --step 6 --to 12 --csv --program ${OUT}/rotor_z.nc)
+expect_text("${out}" "cusp_mm,Z_mm" "csv Z column")
+expect_text("${out}" "\n0.000000,170.0000000," "A is the fixed centre distance")
+expect_text("${out}" ",-45.830" "Z where the cutter touches at psi 0")
+expect_text("${out}" ",-60.163" "Z at psi 6: 6 deg / (360 / 860 mm) further")
+run_expect(0 "run the z-motion program" ${NCURVE} run ${OUT}/rotor_z.nc --machine ${SRC}/profiles/fanuc-4axis-helicoid.toml
+           --format csv)
+expect_text("${out}" ",line,170.000000,0.000000,0.000000," "passes at the centre distance")
+run_expect(0 "helicoid final motion z over centre distances" ${NCURVE} helicoid --example seed004 --final-motion z-
+           --centre-distance 162:176:7 --csv)
+expect_text("${out}" "\n0.000000,162.0000000," "first centre distance")
+expect_text("${out}" "\n0.000000,169.0000000," "second centre distance")
+expect_text("${out}" "\n0.000000,176.0000000," "last centre distance")
+run_expect(2 "bad centre distance range" ${NCURVE} helicoid --example seed004 --final-motion z- --centre-distance 162:x)
+expect_text("${err}" "--centre-distance '162:x': give A or FROM:TO:STEP" "bad range")
+run_expect(2 "z motion without a centre distance" ${NCURVE} helicoid --example seed004 --final-motion z-)
+expect_text("${err}" "need --centre-distance" "z motion needs a centre distance")
+run_expect(1 "z motion start not clear" ${NCURVE} helicoid --example seed004 --final-motion z+ --centre-distance 170
+           --start-z 0 --from 36 --to 36)
+expect_text("${err}" "psi = 36 deg: the cutter at centre distance 170 mm and Z = 0 mm is not clear" "start not clear")
+
 run_expect(0 "helicoid any profile" ${NCURVE} helicoid --profile-x "40*COS[u]" --profile-y "30*SIN[u]" --lead 500
            --lobes 2 --cutter-diameter 200 --corner-radius 1 --included-angle 40 --step 15)
 expect_text("${out}" "   0.000   140.000000" "ellipse: A(0) = a + R")

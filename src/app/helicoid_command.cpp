@@ -41,6 +41,13 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   h->add_option("--ref-radius", a.ref_radius, "radius at which the cutter follows the helix, mm (default: mean radius)");
   h->add_option("--crossing-angle", a.crossing_angle, "angle between cutter and workpiece axes, degrees (overrides --ref-radius)");
   h->add_option("--start-distance", a.start_distance, "centre distance the search starts from, mm (must be clear)");
+  h->add_option("--final-motion", a.final_motion,
+                 "x: the cutter comes in along -X (seed 004); z- or z+: at --centre-distance it travels along Z")
+      ->check(CLI::IsMember({"x", "z-", "z+"}));
+  h->add_option("--centre-distance", a.centre_distance,
+                 "final motion along Z: the fixed centre distance, mm, or FROM:TO:STEP for one row per distance at psi "
+                 "= --from");
+  h->add_option("--start-z", a.start_z, "final motion along Z: where the cutter starts, clear of the workpiece, mm");
   h->add_option("--step", a.step, "psi step, degrees")->check(CLI::PositiveNumber);
   h->add_option("--from", a.from, "first psi, degrees (default 0)");
   h->add_option("--to", a.to, "last psi, degrees (default 360/lobes)");
@@ -78,7 +85,7 @@ int helicoid_command(const HelicoidArgs& a) {
   using namespace helicoid;
   std::optional<ContactSearch> search;
   Job job;
-  std::vector<double> psis;
+  std::vector<double> psis, centre_distances;
   try {
     const bool seed = a.example == "seed004";
     std::optional<EndProfile> profile;
@@ -176,6 +183,39 @@ int helicoid_command(const HelicoidArgs& a) {
     double from = a.from.value_or(0), to = a.to.value_or(360.0 / work.lobes);
     int n = static_cast<int>(std::floor((to - from) / a.step + 1e-9));
     for (int i = 0; i <= n; ++i) psis.push_back(from + i * a.step);
+    if ((a.final_motion != "x") == a.centre_distance.empty() || (a.final_motion == "x" && a.start_z))
+      throw std::runtime_error("--centre-distance and --start-z go with --final-motion z- or z+, and z- and z+ need "
+                               "--centre-distance");
+    if (!a.centre_distance.empty()) {
+      std::vector<double> v;
+      std::size_t at = 0;
+      for (;;) {
+        std::size_t colon = a.centre_distance.find(':', at);
+        std::string part = a.centre_distance.substr(at, colon == std::string::npos ? std::string::npos : colon - at);
+        std::size_t used = 0;
+        double x = 0;
+        try {
+          x = std::stod(part, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != part.size() || !std::isfinite(x))
+          throw std::runtime_error(fmt::format("--centre-distance '{}': give A or FROM:TO:STEP in mm", a.centre_distance));
+        v.push_back(x);
+        if (colon == std::string::npos) break;
+        at = colon + 1;
+      }
+      if (v.size() != 1 && (v.size() != 3 || !(v[2] > 0) || v[1] < v[0]))
+        throw std::runtime_error(fmt::format("--centre-distance '{}': give A or FROM:TO:STEP (STEP > 0, TO >= FROM)",
+                                             a.centre_distance));
+      if (v.size() == 1) {
+        centre_distances.push_back(v[0]);
+      } else {
+        int count = static_cast<int>(std::floor((v[1] - v[0]) / v[2] + 1e-9));
+        for (int i = 0; i <= count; ++i) centre_distances.push_back(v[0] + i * v[2]);
+        psis = {psis.front()};
+      }
+    }
     job.method = method_from_name(a.method);
     job.step = a.step;
     const std::string cutter_text = general ? fmt::format("cutter {} (D{:g})", a.cutter_profile, diameter)
@@ -187,7 +227,15 @@ int helicoid_command(const HelicoidArgs& a) {
     return 2;
   }
   try {
-    job.contacts = search->run(psis, job.method);
+    if (a.final_motion != "x") {
+      for (double distance : centre_distances) {
+        AxialMotion motion{distance, a.start_z, a.final_motion == "z+" ? 1 : -1};
+        for (auto& c : search->run_axial(psis, job.method, motion)) job.contacts.push_back(c);
+      }
+      job.final_motion = a.final_motion;
+    } else {
+      job.contacts = search->run(psis, job.method);
+    }
     for (const auto& c : job.contacts) {
       if (c.normal_angle > 1e-3)
         throw std::runtime_error(fmt::format(
@@ -195,7 +243,7 @@ int helicoid_command(const HelicoidArgs& a) {
             "s {:.3f} mm): the contact is at an edge of the searched cutter region, widen --alpha-range or "
             "--flank-depth", c.psi, c.normal_angle, c.region, c.alpha, c.s));
       if (!a.no_check) {
-        double p = search->deepest_penetration(c.psi, c.A);
+        double p = search->deepest_penetration(c.phase, c.A);
         if (p > 1e-6)
           throw std::runtime_error(fmt::format("psi = {:g} deg: at A = {:.6f} mm the cutter cuts {:.6f} mm into the "
                                                "workpiece elsewhere (interference)", c.psi, c.A, p));

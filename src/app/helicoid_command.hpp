@@ -27,6 +27,9 @@ struct HelicoidArgs {
   std::string output, program, plot;
   double length = 100, feed = 200;
   std::optional<double> program_tol;
+  std::string final_motion = "x";  // x, z- (towards -Z) or z+
+  std::string centre_distance;  // A, or FROM:TO:STEP
+  std::optional<double> start_z;
   CLI::App* command = nullptr;
 };
 

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -58,6 +59,18 @@ struct Contact {
   double normal_angle = 0;  // between the surfaces' normals at the contact, degrees (0 = meshing)
   std::int64_t evaluations = 0;  // directed-distance evaluations of the search
   double plane_A = 0;     // plane-programming centre distance (offset end profile), mm
+  double z = 0;           // cutter centre's Z at the contact (0 when the final motion is X), mm
+  double phase = 0;       // psi + 360 z / lead (signed by hand): the same contact with the cutter at Z = 0
+};
+
+// The final motion along Z instead of X: the cutter stands at a fixed centre distance, starts
+// clear at `start_z` and travels along Z (direction -1 or +1) until it first touches. Without a
+// start it starts at Z = 0, or where it is clear nearest behind 0 (the touch is then where it
+// enters the workpiece around Z = 0).
+struct AxialMotion {
+  double centre_distance = 0;  // mm
+  std::optional<double> start_z;
+  int direction = -1;
 };
 
 class ContactSearch {
@@ -79,6 +92,13 @@ public:
 
   // Contacts for each phase (degrees), in order; the tracing prediction follows the order.
   std::vector<Contact> run(const std::vector<double>& psis, Method method) const;
+
+  // Contacts when the final motion is along Z. A screw motion leaves the helicoid where it is, so
+  // the cutter at Z = z and phase psi touches as it does at Z = 0 and phase psi + twist z: the
+  // first touch along Z is the first phase, going the way the travel turns it, at which A(phase)
+  // reaches the centre distance (a traced table of A over one lobe, then Illinois on the bracket).
+  // Throws, naming psi, when the start is not clear or the cutter never reaches the workpiece.
+  std::vector<Contact> run_axial(const std::vector<double>& psis, Method method, const AxialMotion& motion) const;
 
   // Plane programming (the method seed 004 improves on): the end profile offset by the corner
   // radius, the cutter's corner centre placed on it along X.

@@ -12,7 +12,7 @@ namespace {
 
 const char* kColumns =
     "psi_deg,A_mm,u_deg,r_mm,x_mm,y_mm,z_mm,cutter_x_mm,cutter_y_mm,cutter_z_mm,cutter_alpha_deg,cutter_s_mm,"
-    "cutter_region,normal_angle_deg,evaluations,plane_A_mm,plane_error_mm,cusp_mm";
+    "cutter_region,normal_angle_deg,evaluations,plane_A_mm,plane_error_mm,cusp_mm,Z_mm";
 
 double plane_error(const Contact& c) { return c.plane_A - c.A; }
 
@@ -26,7 +26,8 @@ std::string contacts_csv(const Job& job) {
                      c.psi, c.A, c.u, c.r, c.work_point[0], c.work_point[1], c.work_point[2], c.cutter_point[0],
                      c.cutter_point[1], c.cutter_point[2], c.alpha, c.s, c.region, c.normal_angle, c.evaluations,
                      c.plane_A, plane_error(c));
-    s += i < job.cusps.size() ? fmt::format("{:.7f}\n", job.cusps[i]) : "\n";
+    s += i < job.cusps.size() ? fmt::format("{:.7f},", job.cusps[i]) : ",";
+    s += fmt::format("{:.7f}\n", c.z);
   }
   return s;
 }
@@ -62,6 +63,7 @@ std::string contacts_json(const Job& job, const ContactSearch& search) {
   j["title"] = job.title;
   j["method"] = method_name(job.method);
   j["step_deg"] = job.step;
+  j["final_motion"] = job.final_motion;
   j["swing_deg"] = search.setting().swing;
   j["crossing_angle_deg"] = 90 - search.setting().swing;
   j["start_distance_mm"] = search.setting().start_distance;
@@ -97,7 +99,8 @@ std::string contacts_json(const Job& job, const ContactSearch& search) {
                      {"normal_angle_deg", c.normal_angle},
                      {"evaluations", c.evaluations},
                      {"plane_A_mm", c.plane_A},
-                     {"plane_error_mm", plane_error(c)}});
+                     {"plane_error_mm", plane_error(c)},
+                     {"Z_mm", c.z}});
     if (steps.size() <= job.cusps.size()) steps.back()["cusp_mm"] = job.cusps[steps.size() - 1];
   }
   return j.dump(2) + "\n";
@@ -124,9 +127,13 @@ std::string contacts_text(const Job& job, const ContactSearch& search) {
   s += "\n";
   s += fmt::format("{:>8} {:>12} {:>9} {:>9} {:>8} {:>8} {:>12} {:>10}\n", "psi deg", "A mm", "u deg", "r mm", "cutter",
                    "evals", "plane A mm", "error mm");
-  for (const auto& c : job.contacts)
-    s += fmt::format("{:8.3f} {:12.6f} {:9.3f} {:9.4f} {:>8} {:8} {:12.6f} {:+10.6f}\n", c.psi, c.A, c.u, c.r, c.region,
+  const bool axial = job.final_motion != "x";
+  if (axial) s += fmt::format("final motion along Z ({}): Z mm is where the cutter touches\n", job.final_motion);
+  for (const auto& c : job.contacts) {
+    s += fmt::format("{:8.3f} {:12.6f} {:9.3f} {:9.4f} {:>8} {:8} {:12.6f} {:+10.6f}", c.psi, c.A, c.u, c.r, c.region,
                      c.evaluations, c.plane_A, plane_error(c));
+    s += axial ? fmt::format(" Z {:12.6f}\n", c.z) : "\n";
+  }
   return s;
 }
 
@@ -155,9 +162,9 @@ std::string pass_program(const Job& job, const ContactSearch& search, const Pass
   for (std::size_t k : passes) {
     const auto& c = job.contacts[k];
     double z0 = forward ? o.z_start : o.z_end, z1 = forward ? o.z_end : o.z_start;
-    s += fmt::format("G00 Z{:.3f} A{:.3f}\n", z0, c.psi - twist * z0);
+    s += fmt::format("G00 Z{:.3f} A{:.3f}\n", z0, c.phase - twist * z0);
     s += fmt::format("G01 X{:.4f} F{:g}\n", c.A, o.feed);
-    s += fmt::format("G01 Z{:.3f} A{:.3f}\n", z1, c.psi - twist * z1);
+    s += fmt::format("G01 Z{:.3f} A{:.3f}\n", z1, c.phase - twist * z1);
     s += fmt::format("G00 X{:.3f}\n", retract);
     forward = !forward;
   }

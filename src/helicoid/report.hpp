@@ -11,6 +11,7 @@ struct Job {
   std::string title;  // e.g. "seed004 rotor, lead 860 mm right hand, cutter D252 r1.2 35 deg"
   Method method = Method::robust;
   double step = 1;    // psi step, degrees
+  std::string final_motion = "x";  // x, z- or z+
   std::vector<Contact> contacts;
   std::vector<double> cusps;  // material left between the passes of steps i and i + 1, mm
   // The program's passes (indices into contacts; empty: one per step) and the cusp tolerance

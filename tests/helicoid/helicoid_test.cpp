@@ -192,6 +192,33 @@ TEST(Helicoid, PassesTouchAtTheirContactsOnTheSeedRotor) {
   EXPECT_LT(plan.passes.size(), 145u);
 }
 
+// Final motion along Z at a fixed centre distance: where the cutter stops it touches (no point
+// of it inside the rotor, a micrometre further along the travel it cuts), and by the screw
+// symmetry the touch moves along Z by lead/360 per degree of psi while it stays in one gap.
+TEST(Helicoid, AxialFinalMotionStopsAtTheFirstTouch) {
+  auto cs = seed_search(35);
+  const double twist = cs.workpiece().twist();
+  for (int direction : {-1, 1}) {
+    AxialMotion motion{170, 0.0, direction};
+    auto contacts = cs.run_axial(range(0, 12, 3), Method::robust, motion);
+    ASSERT_EQ(contacts.size(), 5u);
+    for (const auto& c : contacts) {
+      EXPECT_NEAR(c.phase, c.psi + twist * c.z, 1e-9);
+      EXPECT_NEAR(c.A, 170, 1e-9);
+      EXPECT_GT(direction * c.z, 0) << "travelled the wrong way";
+      EXPECT_LT(cs.deepest_penetration(c.phase, 170), 1e-6) << c.psi;
+      double further = c.psi + twist * (c.z + direction * 1e-3);
+      EXPECT_GT(cs.deepest_penetration(further, 170), 1e-5) << c.psi;
+      EXPECT_NEAR(c.z + c.psi / twist, contacts[0].z, 1e-7) << c.psi;  // same contact, shifted along the helix
+    }
+  }
+  EXPECT_THROW(cs.run_axial({0}, Method::robust, AxialMotion{180, {}, -1}), std::runtime_error);   // never reaches
+  EXPECT_THROW(cs.run_axial({36}, Method::robust, AxialMotion{170, 0.0, -1}), std::runtime_error);  // start not clear
+  auto backed = cs.run_axial({36}, Method::robust, AxialMotion{170, {}, -1});  // backs up to clear, then travels
+  EXPECT_GT(backed[0].z, 0);
+  EXPECT_LT(cs.deepest_penetration(backed[0].phase, 170), 1e-6);
+}
+
 // The robust search lands on brute force's lattice minimum at every step, for the seed's 35 deg
 // insert and for a 70 deg reading, where the contact jumps from the corner to a flank and back.
 void expect_robust_is_brute(double included_angle, double psi_step = 1) {
