@@ -413,28 +413,96 @@ private:
   std::int64_t evaluations_ = 0;
 };
 
-std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method method) const {
-  std::vector<Contact> out;
-  using Node = StepSearch::Node;
-  // Tracing prediction: the line through the two previous contacts.
-  auto predicted = [](const std::vector<Node>& path, Node first) -> Node {
-    if (path.empty()) return first;
-    if (path.size() == 1) return path.back();
-    const auto& a = path[path.size() - 2];
-    const auto& b = path.back();
-    return {2 * b.i - a.i, 2 * b.j - a.j};
-  };
-  std::vector<Node> path;  // lattice contacts so far
-  const Node corner{0, static_cast<int>(std::lround(cutter_.corner_middle() / lattice_.s_step))};
-  // Robust: per element of the cutter profile (corner, each flank) a fine trace of the smallest
-  // distance within its rows, and a coarse trace of its interior (away from the shoulders it
-  // shares with its neighbours), where a separate contact can rise while the fine trace sits on a
-  // shoulder. A coarse trace close to the best is descended to the fine lattice.
-  constexpr int kCoarse = 16;  // lattice cells per coarse step
+namespace {
+
+using Node = StepSearch::Node;
+
+// Tracing prediction: the line through the two previous contacts.
+Node predicted(const std::vector<Node>& path, Node first) {
+  if (path.empty()) return first;
+  if (path.size() == 1) return path.back();
+  const auto& a = path[path.size() - 2];
+  const auto& b = path.back();
+  return {2 * b.i - a.i, 2 * b.j - a.j};
+}
+
+constexpr double kTie = 1e-9;  // mm: well above the evaluation noise (~1e-12), far below any real step
+
+// The robust search's traces, carried from step to step: per element of the cutter profile
+// (corner, each flank) a fine trace of the smallest distance within its rows, and a coarse trace
+// of its interior (away from the shoulders it shares with its neighbours), where a separate
+// contact can rise while the fine trace sits on a shoulder. A coarse trace close to the best is
+// descended to the fine lattice.
+class RobustTraces {
+public:
+  explicit RobustTraces(const ContactSearch& cs)
+      : ns_(cs.s_cells()), alpha_step_(cs.lattice().alpha_step), s_step_(cs.lattice().s_step) {
+    double start = 0;
+    for (const auto& e : cs.cutter().elements()) {
+      double end = start + e.length();
+      int j_lo = static_cast<int>(std::ceil(start / s_step_ - 1e-9));
+      int j_hi = std::min(ns_, static_cast<int>(std::floor(end / s_step_ + 1e-9)));
+      if (j_hi >= j_lo) fine_.emplace_back(j_lo, j_hi, Node{0, (j_lo + j_hi) / 2});
+      if (j_hi - j_lo > 4 * kCoarse) {
+        coarse_.emplace_back(j_lo + kCoarse, j_hi - kCoarse, Node{0, (j_lo + j_hi) / 2});
+        fine_.back().guarded = true;
+      }
+      start = end;
+    }
+  }
+
+  // The lattice contact of this step.
+  Node next(StepSearch& step, int step_index) {
+    // The trace that held the contact last time first, then the others that are due.
+    std::size_t lead = 0;
+    for (std::size_t k = 0; k < fine_.size(); ++k)
+      if (fine_[k].gap < fine_[lead].gap) lead = k;
+    best_ = kInf;
+    value_.assign(fine_.size(), kInf);
+    for (std::size_t k = 0; k < fine_.size(); ++k) {
+      std::size_t at = (lead + k) % fine_.size();
+      if (at != lead && !fine_[at].due()) continue;
+      Node n = advance(fine_[at], step, 1);
+      offer(at, n, step.value(n));
+      if (on_shoulder(fine_[at], n)) {
+        if (at == lead)
+          for (auto& f : fine_) f.idle = 0;
+        else if (fine_[at].guarded)
+          fine_[at].idle = kAsleep;
+      }
+    }
+    for (auto& t : coarse_) {  // every step: a new contact can rise faster than any rate seen so far
+      const double margin = 2 * t.gap_rate + 0.02;
+      if (predicted_clear(t, step, margin, step_index)) continue;
+      Node n = advance(t, step, kCoarse);
+      t.hessian = step.stencil_hessian(n, kCoarse);
+      double v = step.fitted_minimum(n, kCoarse);
+      double coarseness = step.value(n) - v;
+      if (v <= best_ + margin + coarseness) {
+        for (std::size_t k = 0; k < fine_.size(); ++k) {  // the element holding this coarse trace
+          auto& f = fine_[k];
+          if (f.j_lo > t.j_lo || f.j_hi < t.j_hi) continue;
+          step.restrict_rows(f.j_lo, f.j_hi);
+          Node m = step.descend(n, kCoarse / 2, kTie);
+          if (step.value(m) < value_[k]) f.path = {m}, f.idle = 0;
+          offer(k, m, step.value(m));
+        }
+      }
+      t.schedule(v, best_, step_index);
+    }
+    for (std::size_t k = 0; k < fine_.size(); ++k)
+      if (std::isfinite(value_[k]) && fine_[k].idle != kAsleep) fine_[k].schedule(value_[k], best_, step_index);
+    return node_;
+  }
+
+private:
+  static constexpr int kCoarse = 16;  // lattice cells per coarse step
+  static constexpr int kAsleep = std::numeric_limits<int>::max();
   // A trace well above the best is left alone for as many steps as its gap could not close at
   // twice the fastest rate the gap has changed lately (the fastest so far, fading by a factor a
   // step: a rate seen at the crest says little about the flank ten steps on).
-  constexpr double kRateFade = 0.7;
+  static constexpr double kRateFade = 0.7;
+
   struct Trace {
     Trace(int lo, int hi, Node start) : j_lo(lo), j_hi(hi), first(start) {}
     int j_lo, j_hi;
@@ -465,22 +533,77 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
       idle = std::isfinite(g) ? std::max(0, static_cast<int>(g / (2 * rate)) - 1) : 0;
     }
   };
-  std::vector<Trace> fine, coarse;
-  {
-    double start = 0;
-    for (const auto& e : cutter_.elements()) {
-      double end = start + e.length();
-      int j_lo = static_cast<int>(std::ceil(start / lattice_.s_step - 1e-9));
-      int j_hi = std::min(ns_, static_cast<int>(std::floor(end / lattice_.s_step + 1e-9)));
-      if (j_hi >= j_lo) fine.emplace_back(j_lo, j_hi, Node{0, (j_lo + j_hi) / 2});
-      if (j_hi - j_lo > 4 * kCoarse) {
-        coarse.emplace_back(j_lo + kCoarse, j_hi - kCoarse, Node{0, (j_lo + j_hi) / 2});
-        fine.back().guarded = true;
-      }
-      start = end;
-    }
+
+  void offer(std::size_t k, Node n, double v) {
+    value_[k] = std::min(value_[k], v);
+    if (v < best_) best_ = v, node_ = n;
   }
-  constexpr double kTie = 1e-9;  // mm: well above the evaluation noise (~1e-12), far below any real step
+
+  Node advance(Trace& t, StepSearch& step, int stride) {
+    step.restrict_rows(t.j_lo, t.j_hi);
+    Node n = t.path.empty() ? step.descend(t.first, 64, kTie) : step.walk(predicted(t.path, t.first), stride, kTie, true);
+    t.path.push_back(n);
+    return n;
+  }
+
+  // A fine trace resting on a row it shares with a neighbour element is that neighbour's
+  // shoulder, not a contact of its own: it sleeps until its coarse trace wakes it.
+  bool on_shoulder(const Trace& t, Node n) const {
+    return (n.j == t.j_lo && t.j_lo > 0) || (n.j == t.j_hi && t.j_hi < ns_);
+  }
+
+  // One evaluation with its gradient and the last stencil's curvature predict a coarse trace's
+  // minimum; a prediction clear of the best by twice its own drop needs no walk (the trace moves
+  // to the predicted minimum and is rescheduled).
+  bool predicted_clear(Trace& t, StepSearch& step, double margin, int step_index) {
+    if (!t.hessian || t.path.empty()) return false;
+    step.restrict_rows(t.j_lo, t.j_hi);
+    Node p = step.clamp(predicted(t.path, t.first));
+    auto at = step.eval_node(p);
+    const auto& h = *t.hessian;
+    double ga = at.d_alpha * alpha_step_ * kCoarse, gs = at.d_s * s_step_ * kCoarse;
+    // The quadratic model's minimum within the rows: the full Newton step, or along alpha alone
+    // where that step would leave the rows.
+    double det = h[0] * h[1] - h[2] * h[2];
+    double di = 0, dj = 0;
+    bool model = at.hit && h[0] > 0;
+    if (model && det > 0) {
+      di = -(h[1] * ga - h[2] * gs) / det;
+      dj = -(-h[2] * ga + h[0] * gs) / det;
+    }
+    if (model && (det <= 0 || !step.inside({p.i, p.j + static_cast<int>(std::lround(dj)) * kCoarse}))) {
+      model = (p.j == t.j_lo && gs > 0) || (p.j == t.j_hi && gs < 0);  // pinned to the edge
+      di = -ga / h[0], dj = 0;
+    }
+    double drop = -(ga * di + gs * dj) / 2;
+    // Where the model curves down, the walk's neighbours could be lower than its minimum.
+    for (int ki = -1; ki <= 1; ++ki)
+      for (int kj = -1; kj <= 1; ++kj)
+        if (step.inside({p.i + ki * kCoarse, p.j + kj * kCoarse}))
+          drop = std::max(drop, -(ga * ki + gs * kj + (h[0] * ki * ki + 2 * h[2] * ki * kj + h[1] * kj * kj) / 2));
+    if (!model || std::abs(di) > 2 || std::abs(dj) > 2 || at.d - 2 * drop <= best_ + margin) return false;
+    t.path.push_back(step.clamp({p.i + static_cast<int>(std::lround(di)) * kCoarse,
+                                 p.j + static_cast<int>(std::lround(dj)) * kCoarse}));
+    t.schedule(at.d - drop, best_, step_index);
+    return true;
+  }
+
+  std::vector<Trace> fine_, coarse_;
+  int ns_;
+  double alpha_step_, s_step_;
+  // This step's best so far, its node, and each fine trace's value.
+  double best_ = kInf;
+  Node node_;
+  std::vector<double> value_;
+};
+
+}  // namespace
+
+std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method method) const {
+  std::vector<Contact> out;
+  std::vector<Node> path;  // lattice contacts so far
+  const Node corner{0, static_cast<int>(std::lround(cutter_.corner_middle() / lattice_.s_step))};
+  RobustTraces traces(*this);
   for (std::size_t step_index = 0; step_index < psis.size(); ++step_index) {
     const double psi = psis[step_index];
     StepSearch step(*this, psi);
@@ -488,95 +611,7 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
     switch (method) {
       case Method::brute: node = step.brute(); break;
       case Method::nine_point: node = step.walk(predicted(path, corner), 1, 0.0, false); break;
-      case Method::robust: {
-        // The trace that held the contact last time first, then the others that are due.
-        std::size_t lead = 0;
-        for (std::size_t k = 0; k < fine.size(); ++k)
-          if (fine[k].gap < fine[lead].gap) lead = k;
-        double best = kInf;
-        std::vector<double> value(fine.size(), kInf);
-        auto advance = [&](Trace& t, int stride) {
-          step.restrict_rows(t.j_lo, t.j_hi);
-          Node n = t.path.empty() ? step.descend(t.first, 64, kTie) : step.walk(predicted(t.path, t.first), stride, kTie, true);
-          t.path.push_back(n);
-          return n;
-        };
-        // A fine trace resting on a row it shares with a neighbour element is that neighbour's
-        // shoulder, not a contact of its own: it sleeps until its coarse trace wakes it.
-        auto on_shoulder = [&](const Trace& t, Node n) {
-          return (n.j == t.j_lo && t.j_lo > 0) || (n.j == t.j_hi && t.j_hi < ns_);
-        };
-        for (std::size_t k = 0; k < fine.size(); ++k) {
-          std::size_t at = (lead + k) % fine.size();
-          if (at != lead && !fine[at].due()) continue;
-          Node n = advance(fine[at], 1);
-          value[at] = step.value(n);
-          if (value[at] < best) best = value[at], node = n;
-          if (on_shoulder(fine[at], n)) {
-            if (at == lead)
-              for (auto& f : fine) f.idle = 0;
-            else if (fine[at].guarded)
-              fine[at].idle = std::numeric_limits<int>::max();
-          }
-        }
-        for (auto& t : coarse) {  // every step: a new contact can rise faster than any rate seen so far
-          // One evaluation with its gradient and the last stencil's curvature predict the trace's
-          // minimum; a prediction clear of the best by twice its own drop needs no walk.
-          const double margin = 2 * t.gap_rate + 0.02;
-          if (t.hessian && !t.path.empty()) {
-            step.restrict_rows(t.j_lo, t.j_hi);
-            Node p = step.clamp(predicted(t.path, t.first));
-            auto at = step.eval_node(p);
-            const auto& h = *t.hessian;
-            double ga = at.d_alpha * lattice_.alpha_step * kCoarse, gs = at.d_s * lattice_.s_step * kCoarse;
-            // The quadratic model's minimum within the rows: the full Newton step, or along alpha
-            // alone where that step would leave the rows.
-            double det = h[0] * h[1] - h[2] * h[2];
-            double di = 0, dj = 0;
-            bool model = at.hit && h[0] > 0;
-            if (model && det > 0) {
-              di = -(h[1] * ga - h[2] * gs) / det;
-              dj = -(-h[2] * ga + h[0] * gs) / det;
-            }
-            if (model && (det <= 0 || !step.inside({p.i, p.j + static_cast<int>(std::lround(dj)) * kCoarse}))) {
-              bool pinned = (p.j == t.j_lo && gs > 0) || (p.j == t.j_hi && gs < 0);
-              model = pinned;
-              di = -ga / h[0], dj = 0;
-            }
-            double drop = -(ga * di + gs * dj) / 2;
-            // Where the model curves down, the walk's neighbours could be lower than its minimum.
-            for (int ki = -1; ki <= 1; ++ki)
-              for (int kj = -1; kj <= 1; ++kj)
-                if (step.inside({p.i + ki * kCoarse, p.j + kj * kCoarse}))
-                  drop = std::max(drop, -(ga * ki + gs * kj + (h[0] * ki * ki + 2 * h[2] * ki * kj + h[1] * kj * kj) / 2));
-            if (model && std::abs(di) <= 2 && std::abs(dj) <= 2 && at.d - 2 * drop > best + margin) {
-              t.path.push_back(step.clamp({p.i + static_cast<int>(std::lround(di)) * kCoarse,
-                                           p.j + static_cast<int>(std::lround(dj)) * kCoarse}));
-              t.schedule(at.d - drop, best, step_index);
-              continue;
-            }
-          }
-          Node n = advance(t, kCoarse);
-          t.hessian = step.stencil_hessian(n, kCoarse);
-          double v = step.fitted_minimum(n, kCoarse);
-          double coarseness = step.value(n) - v;
-          if (v <= best + margin + coarseness) {
-            for (std::size_t k = 0; k < fine.size(); ++k) {  // the element holding this coarse trace
-              auto& f = fine[k];
-              if (f.j_lo > t.j_lo || f.j_hi < t.j_hi) continue;
-              step.restrict_rows(f.j_lo, f.j_hi);
-              Node m = step.descend(n, kCoarse / 2, kTie);
-              double vm = step.value(m);
-              if (vm < value[k]) value[k] = vm, f.path = {m}, f.idle = 0;
-              if (vm < best) best = vm, node = m;
-            }
-          }
-          t.schedule(v, best, step_index);
-        }
-        for (std::size_t k = 0; k < fine.size(); ++k)
-          if (std::isfinite(value[k]) && fine[k].idle != std::numeric_limits<int>::max()) fine[k].schedule(value[k], best, step_index);
-        break;
-      }
+      case Method::robust: node = traces.next(step, static_cast<int>(step_index)); break;
     }
     path.push_back(node);
     auto refined = step.refine(node);

@@ -117,15 +117,25 @@ TEST(Helicoid, CylinderProfileTouchesAtTheTip) {
   }
 }
 
+// A straight (zero lead) circle of radius rho centred e off the axis, and a disc of radius R with
+// corner radius rc square to it.
+struct EccentricCircle {
+  static constexpr double e = 8, rho = 30, rc = 1.2, R = 126;
+  ContactSearch search() const {
+    auto eval = [](double u, Vec2& p, Vec2& d) {
+      p = {e + rho * std::cos(u * kDeg), rho * std::sin(u * kDeg)};
+      d = {-rho * std::sin(u * kDeg) * kDeg, rho * std::cos(u * kDeg) * kDeg};
+    };
+    Workpiece work{EndProfile("eccentric circle", eval, 0, 360), 0, 1, 1};
+    return ContactSearch(work, DiscCutter::v_insert(2 * R, rc, 35, 20), Setting{0, 0}, Lattice{});
+  }
+};
+
 TEST(Helicoid, StraightEccentricCircleIsTwoCircles) {
   // Zero twist: in the end section the corner circle (radius rc) touches the profile circle.
-  const double e = 8, rho = 30, rc = 1.2, R = 126;
-  auto eval = [&](double u, Vec2& p, Vec2& d) {
-    p = {e + rho * std::cos(u * kDeg), rho * std::sin(u * kDeg)};
-    d = {-rho * std::sin(u * kDeg) * kDeg, rho * std::cos(u * kDeg) * kDeg};
-  };
-  Workpiece work{EndProfile("eccentric circle", eval, 0, 360), 0, 1, 1};
-  ContactSearch cs(work, DiscCutter::v_insert(2 * R, rc, 35, 20), Setting{0, 0}, Lattice{});
+  constexpr EccentricCircle g;
+  const double e = g.e, rho = g.rho, rc = g.rc, R = g.R;
+  auto cs = g.search();
   for (const auto& c : cs.run(range(0, 360, 30), Method::robust)) {
     double ey = e * std::sin(c.psi * kDeg);
     double expected = R - rc + e * std::cos(c.psi * kDeg) + std::sqrt((rho + rc) * (rho + rc) - ey * ey);
@@ -137,13 +147,9 @@ TEST(Helicoid, StraightEccentricCircleIsTwoCircles) {
 // Without twist the corner cuts a circle of radius rc in the end section: two passes leave a cusp
 // between two circles tangent to the profile circle, highest on the bisector of their centres.
 TEST(Helicoid, CuspOfStraightEccentricCircleIsClosedForm) {
-  const double e = 8, rho = 30, rc = 1.2, R = 126;
-  auto eval = [&](double u, Vec2& p, Vec2& d) {
-    p = {e + rho * std::cos(u * kDeg), rho * std::sin(u * kDeg)};
-    d = {-rho * std::sin(u * kDeg) * kDeg, rho * std::cos(u * kDeg) * kDeg};
-  };
-  Workpiece work{EndProfile("eccentric circle", eval, 0, 360), 0, 1, 1};
-  ContactSearch cs(work, DiscCutter::v_insert(2 * R, rc, 35, 20), Setting{0, 0}, Lattice{});
+  constexpr EccentricCircle g;
+  const double e = g.e, rho = g.rho, rc = g.rc, R = g.R;
+  auto cs = g.search();
   auto contacts = cs.run(range(0, 90, 0.5), Method::robust);
   // Closed form from A alone: the corner circle's centre turned back into the workpiece frame.
   auto cusp = [&](const Contact& a, const Contact& b) {
