@@ -103,6 +103,26 @@ TEST(Helicoid, SeedSanityValues) {
   EXPECT_GT(std::abs(contacts[18].plane_A - contacts[18].A), 0.01);
 }
 
+// Mirroring the whole set-up in the XZ plane turns a right-hand helicoid into a left-hand one,
+// the cutter's swing with it, and psi into -psi. The seed's profile is its own mirror, so the
+// left-hand rotor has A_left(psi) = A_right(-psi) = A_right(psi), with the contact mirrored.
+TEST(Helicoid, LeftHandIsTheMirrorImage) {
+  auto right = seed_search(35);
+  Workpiece left_work{EndProfile::seed004_rotor(), 860, -1, 5};
+  ContactSearch left(left_work, DiscCutter::v_insert(252, 1.2, 35, 18), Setting{helix_angle(860, 43), 177.7}, {});
+  auto r = right.run(range(-30, 0, 6), Method::robust);
+  auto l = left.run(range(0, 30, 6), Method::robust);
+  ASSERT_EQ(r.size(), l.size());
+  for (std::size_t i = 0; i < l.size(); ++i) {
+    const auto& mirror = r[r.size() - 1 - i];  // at -psi
+    EXPECT_NEAR(l[i].A, mirror.A, 1e-7) << l[i].psi;
+    EXPECT_NEAR(l[i].work_point[0], mirror.work_point[0], 1e-6) << l[i].psi;
+    EXPECT_NEAR(l[i].work_point[1], -mirror.work_point[1], 1e-6) << l[i].psi;
+    EXPECT_NEAR(l[i].work_point[2], mirror.work_point[2], 1e-6) << l[i].psi;
+    EXPECT_LT(left.deepest_penetration(l[i].psi, l[i].A), 1e-6) << l[i].psi;
+  }
+}
+
 TEST(Helicoid, CylinderProfileTouchesAtTheTip) {
   auto eval = [](double u, Vec2& p, Vec2& d) {
     p = {40 * std::cos(u * kDeg), 40 * std::sin(u * kDeg)};
