@@ -50,3 +50,15 @@ file(READ ${OUT}/gen_plot.svg svg)
 expect_text("${svg}" "<svg" "plot")
 expect_text("${svg}" "stroke:#d22" "plot path")
 expect_text("${svg}" "deviation per move" "plot deviation")
+
+# depth passes: a plane contour cut in passes of --step-down, each measured; not for a helix
+run_expect(0 "gen depth passes" ${NCURVE} gen ellipse --tol 0.01 --form arcs --depth 2 --step-down 0.8
+           -o ${OUT}/gen_passes.nc --json)
+expect_text("${out}" "\"passes\": 3" "three passes of 0.8 mm to 2 mm")
+file(READ ${OUT}/gen_passes.nc passes_prog)
+expect_text("${passes_prog}" "WHILE [#199 GT -2.] DO3" "the pass loop")
+expect_text("${passes_prog}" "G01 Z#199" "the plunge to the pass depth")
+run_expect(0 "run the depth-pass program" ${NCURVE} run ${OUT}/gen_passes.nc)
+expect_text("${out}" "-2.0000 .. 5.0000" "Z down to the depth")
+run_expect(1 "depth passes on a helix" ${NCURVE} gen helix --tol 0.01 --step-down 1)
+expect_text("${err}" "depth passes need a plane curve" "helix rises in Z")

@@ -51,6 +51,8 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
   gen->add_option("--t", a.t_range, "expr: range of t as FROM:TO");
   gen->add_option("--feed", a.feed, "feed, mm/min (mill) or mm/rev (lathe)")->check(CLI::PositiveNumber);
   gen->add_option("--depth", a.depth, "mill: depth of a plane contour below Z0, mm");
+  gen->add_option("--step-down", a.step_down, "mill: depth per pass for a plane contour, mm (default: one pass)")
+      ->check(CLI::NonNegativeNumber);
   gen->add_option("--clearance", a.clearance, "mill: rapid plane above Z0; lathe: retract, mm");
   gen->add_option("--program-number", a.program_number, "O number of the program")->check(CLI::Range(1, 9999));
   gen->add_option("--tool-radius", a.tool_radius,
@@ -82,6 +84,7 @@ int gen_command(const GenArgs& a) {
     o.tol = a.tol;
     o.feed = a.feed;
     o.depth = a.depth;
+    o.step_down = a.step_down;
     o.clearance = a.clearance;
     o.program_number = a.program_number;
     o.tool_radius = a.tool_radius;
@@ -129,6 +132,7 @@ int gen_command(const GenArgs& a) {
     j["worst_point"] = s.worst_point;
     j["within_tolerance"] = r.within_tolerance;
     j["tool_radius"] = o.tool_radius;
+    j["passes"] = s.passes;
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [key, value] : r.parameters) params[key] = value;
     j["parameters"] = params;
@@ -143,6 +147,9 @@ int gen_command(const GenArgs& a) {
         "  path length {:.4f} mm, max deviation {:.6f} mm at t = {:.6g} (round trip through the interpreter)\n",
         curve->name(), curve->t0(), curve->t1(), gen::to_string(o.form), o.tol, s.words, s.bytes, s.blocks, s.points,
         s.path_length, s.max_deviation, s.worst_t);
+    if (s.passes > 1)
+      out << fmt::format("  {} depth passes of at most {} mm to Z-{}, each measured (the figures above are the last)\n",
+                         s.passes, o.step_down, o.depth);
     for (const auto& [key, value] : r.parameters)
       out << fmt::format("  set parameter No.{} = {} on the control (ncurve run ... --param {}={})\n", key, value, key,
                          value);

@@ -18,6 +18,7 @@ struct GenArgs {
   std::string x, y, z, t_range;
   double feed = 0;
   double depth = 1;
+  double step_down = 0;
   double clearance = 5;
   int program_number = 1000;
   double tool_radius = 0;

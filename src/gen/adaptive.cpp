@@ -220,6 +220,7 @@ Emitted adaptive_macro(const Context& c) {
   Writer w;
   w.block("%");
   w.lines(header(c.curve, o, fmt::format("step from the curvature, {} band", c.with_z ? "chords" : "tolerance")));
+  begin_passes(w, o, c.dec);
   w.block("(VARIABLES)");
   w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(c.curve.name())));
   parameter_blocks(w, c.curve);

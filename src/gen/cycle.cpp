@@ -25,6 +25,7 @@ std::string cycle_text(const Context& c, double chord_error, std::uint32_t& firs
   w.lines(header(c.curve, o, "G102 spiral cycle, chord error argument T"));
   w.block("(PARAMETER SETTING: NO.6050 = 102, G102 CALLS O9010)");
   w.block("(O9010 FOLLOWS THIS PROGRAM; NCURVE MACROS/O9010.NC)");
+  begin_passes(w, o, c.dec);
   w.block(modes(o));
   Frame fr = frame(o, c.words, c.start, c.end, c.dec, c.feed);
   w.lines(fr.before_start);
@@ -35,6 +36,7 @@ std::string cycle_text(const Context& c, double chord_error, std::uint32_t& firs
                       number(param(c.curve, "pitch"), 6), number(chord_error, 6), clockwise ? " D2" : "",
                       number(c.feed, 4)));
   w.lines(fr.retract);
+  end_passes(w, o);
   w.block("M30");
   first = w.line + 1;
   std::string macro = o9010_text();  // one tape: the macro's own % lines go

@@ -79,6 +79,25 @@ std::string modes(const Options& o) {
   return "G21 G17 G90 G94 G54";
 }
 
+bool depth_passes(const Options& o) { return o.step_down > 0 && !is_lathe(o); }
+
+void begin_passes(Writer& w, const Options& o, int dec) {
+  if (!depth_passes(o)) return;
+  w.block(fmt::format("#{}=0 (DEPTH OF THE PASS: {} DOWN TO {})", kPassDepth, number(o.step_down, dec),
+                      number(-o.depth, dec)));
+  w.block(fmt::format("WHILE [#{} GT {}] DO3", kPassDepth, number(-o.depth, dec)));
+  w.block(fmt::format("#{0}=#{0}-{1}", kPassDepth, number(o.step_down, dec)));
+  w.block(fmt::format("IF [#{0} LT {1}] THEN #{0}={1}", kPassDepth, number(-o.depth, dec)));
+}
+
+void end_passes(Writer& w, const Options& o) {
+  if (depth_passes(o)) w.block("END3");
+}
+
+std::string plunge_z(const Options& o, double z, int dec) {
+  return depth_passes(o) ? fmt::format("Z#{}", kPassDepth) : fmt::format("Z{}", number(z, dec));
+}
+
 Frame frame(const Options& o, const AxisWords& words, const Vec3& start, const Vec3& end, int dec, double feed) {
   Frame f;
   if (is_lathe(o)) {
@@ -90,7 +109,7 @@ Frame frame(const Options& o, const AxisWords& words, const Vec3& start, const V
   }
   f.before_start = fmt::format("G00 Z{}\nX{} Y{}", number(o.clearance, dec), number(start[0], dec),
                                number(start[1], dec));
-  f.to_depth = fmt::format("G01 Z{} F{}", number(start[2], dec), number(feed, 4));
+  f.to_depth = fmt::format("G01 {} F{}", plunge_z(o, start[2], dec), number(feed, 4));
   f.retract = fmt::format("G00 Z{}", number(o.clearance, dec));
   return f;
 }

@@ -36,6 +36,14 @@ struct AxisWords {
 std::string header(const geom::Curve& curve, const Options& o, const std::string& method);
 std::string modes(const Options& o);
 
+// Depth passes (mill, plane curve, Options::step_down > 0): a WHILE loop (DO3) around the whole
+// pass from its variables to the retract, #199 the pass's depth; the plunge feeds to Z#199.
+constexpr int kPassDepth = 199;
+bool depth_passes(const Options& o);
+void begin_passes(Writer& w, const Options& o, int decimals);
+void end_passes(Writer& w, const Options& o);
+std::string plunge_z(const Options& o, double z, int decimals);  // "Z-1.000" or "Z#199"
+
 // Approach before the contour and retract after it.
 struct Frame {
   std::string before_start;  // rapid moves to above the start point

@@ -76,12 +76,20 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
                  std::uint32_t last_line) {
   machine::ProgramLibrary lib;
   lib.add_text("<generated>", text, true);
+  // The contour's moves, one group per pass: a feed move outside the contour (the plunge) ends one.
   struct Keep final : machine::MoveSink {
     std::uint32_t first, last;
-    std::vector<machine::Move> moves;
+    std::vector<std::vector<machine::Move>> passes;
+    bool between = true;
     void on_move(const machine::Move& m) override {
-      if ((m.kind == machine::MoveKind::line || m.kind == machine::MoveKind::arc) && m.line >= first && m.line <= last)
-        moves.push_back(m);
+      if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
+      if (m.line < first || m.line > last) {
+        between = true;
+        return;
+      }
+      if (between) passes.emplace_back();
+      between = false;
+      passes.back().push_back(m);
     }
   } keep;
   keep.first = first_line;
@@ -90,8 +98,20 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
   machine::RunResult r = interp.run(keep);
   if (!r.ok()) throw std::runtime_error("the generated program does not run: " + nc::format(*r.alarm));
 
-  if (keep.moves.empty()) throw std::runtime_error("the generated program cuts no contour");
-  Stats s = measure(keep.moves, curve, o, true);
+  if (keep.passes.empty()) throw std::runtime_error("the generated program cuts no contour");
+  if (keep.passes.size() > 1 && !detail::depth_passes(o))
+    throw std::runtime_error("the generated program cuts its contour more than once");
+  // Each pass against the curve at the pass's own depth; the last one is the finished contour.
+  std::vector<Stats> measured;
+  for (const auto& pass : keep.passes) {
+    Options at_depth = o;
+    if (detail::depth_passes(o)) at_depth.depth = -pass.front().start[2];
+    measured.push_back(measure(pass, curve, at_depth, true));
+  }
+  Stats s = measured.back();
+  for (const auto& m : measured)
+    if (m.max_deviation > s.max_deviation) s.max_deviation = m.max_deviation, s.worst_t = m.worst_t, s.worst_point = m.worst_point;
+  s.passes = keep.passes.size();
   report::SourceStats source = report::source_stats(lib, lib.main()->file.get());  // as `ncurve run` counts
   s.words = source.words;
   s.bytes = source.bytes;
@@ -212,6 +232,7 @@ Emitted expanded_or_arcs(const Context& c) {
   Writer w;
   w.block("%");
   w.lines(header(c.curve, o, method));
+  begin_passes(w, o, c.dec);
   w.block(modes(o));
   Frame fr = frame(o, c.words, c.start, c.end, c.dec, c.feed);
   w.lines(fr.before_start);
@@ -242,6 +263,7 @@ Emitted equal_step_macro(const Context& c) {
   Writer w;
   w.block("%");
   w.lines(header(c.curve, o, "equal parameter step"));
+  begin_passes(w, o, c.dec);
   w.block("(VARIABLES)");
   w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(c.curve.name())));
   parameter_blocks(w, c.curve);
@@ -267,6 +289,7 @@ namespace detail {
 
 void end_program(Writer& w, const Context& c) {
   w.lines(frame(c.o, c.words, c.start, c.end, c.dec, c.feed).retract);
+  end_passes(w, c.o);
   w.block("M30");
   w.block("%");
 }
@@ -307,7 +330,7 @@ void approach(Writer& w, const Context& c, const MacroWords& start) {
   w.block(fmt::format("G00 Z{}", number(o.clearance, c.dec)));
   for (const auto& a : start.assignments) w.block(a);
   w.block(fmt::format("G00 {}", start.words));
-  if (!c.with_z) w.block(fmt::format("G01 Z{} F{}", number(-o.depth, c.dec), number(c.feed, 4)));
+  if (!c.with_z) w.block(fmt::format("G01 {} F{}", plunge_z(o, -o.depth, c.dec), number(c.feed, 4)));
   else w.block(fmt::format("G01 F{}", number(c.feed, 4)));
 }
 
@@ -327,6 +350,10 @@ Result generate(const geom::Curve& contour, const Options& o) {
   }
   const geom::Curve& curve = cutter_centre ? *cutter_centre : contour;
   const bool with_z = !is_lathe(o) && !curve.planar_z();
+  if (o.step_down < 0) throw std::runtime_error("the depth per pass must not be negative");
+  if (o.step_down > 0 && is_lathe(o)) throw std::runtime_error("depth passes are for the mill");
+  if (o.step_down > 0 && with_z) throw std::runtime_error("depth passes need a plane curve; this one rises in Z");
+  if (o.step_down > 0 && !(o.depth > 0)) throw std::runtime_error("depth passes need a depth > 0");
   const int dec = decimals_of(o.profile.increment);
   geom::Grid grid;
   grid.step = {o.profile.increment, o.profile.increment, o.profile.increment};

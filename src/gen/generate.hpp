@@ -26,6 +26,7 @@ struct Options {
   double feed = 0;          // mm/min (mill) or mm/rev (lathe); 0: 200 mm/min or 0.1 mm/rev
   double depth = 1;         // mill: cutting depth below Z0 for a plane curve, mm
   double clearance = 5;     // mill: rapid plane above Z0; lathe: retract distance, mm
+  double step_down = 0;     // mill, plane curve: depth per pass, mm (0: one pass at full depth)
   int program_number = 1000;
   double tool_radius = 0;   // > 0: the program is the cutter-centre path, offset to `side`
   Side side = Side::left;
@@ -54,6 +55,7 @@ struct Stats {
   std::vector<geom::Vec3> path;
   std::vector<std::size_t> path_block;  // for each point after the first, the move that reaches it
   std::vector<std::pair<double, double>> deviation;  // (t, mm)
+  std::size_t passes = 1;    // depth passes measured (all within max_deviation; the rest is the last)
 };
 
 struct Result {

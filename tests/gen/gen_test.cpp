@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "gen/generate.hpp"
@@ -383,4 +384,42 @@ TEST(Gen, ArcsByRadiusAndWithinTheControlsRadiusCheck) {
   // the default fit's arcs would not all pass it
   auto loose = gen::generate(ellipse, options(gen::Form::arcs, 0.005));
   EXPECT_FALSE(test::run(loose.text, strict.profile).result.ok());
+}
+
+// Depth passes: every form cuts the same contour at each depth, step_down apart down to the
+// depth (the last pass shorter), and the round trip measures every pass.
+TEST(Gen, DepthPassesRepeatTheContourStepDownApart) {
+  auto spiral = curve("spiral", {{"r0", 5}, {"pitch", 10}});
+  for (gen::Form form : {gen::Form::expanded, gen::Form::arcs, gen::Form::macro, gen::Form::adaptive_macro,
+                         gen::Form::cycle}) {
+    auto o = options(form, 0.005);
+    o.depth = 3;
+    o.step_down = 1.2;
+    auto r = gen::generate(spiral, o);
+    EXPECT_TRUE(r.within_tolerance) << gen::to_string(form);
+    EXPECT_EQ(r.stats.passes, 3u) << gen::to_string(form);
+    auto profile = o.profile;
+    for (const auto& [key, value] : r.parameters) machine::set_parameter(profile, key, value);
+    auto ran = test::run(r.text, profile);
+    ASSERT_TRUE(ran.result.ok()) << gen::to_string(form);
+    // The plunges (feed moves straight down) and the feed moves at each depth.
+    std::vector<double> plunges;
+    std::map<double, std::size_t> moves_at;
+    for (const auto& m : ran.motions()) {
+      if (m.kind == machine::MoveKind::rapid) continue;
+      bool down = m.end[0] == m.start[0] && m.end[1] == m.start[1] && m.end[2] < m.start[2];
+      if (down) plunges.push_back(m.end[2]);
+      else if (m.kind == machine::MoveKind::line || m.kind == machine::MoveKind::arc) ++moves_at[std::round(m.end[2] * 1000) / 1000];
+    }
+    ASSERT_EQ(plunges.size(), 3u) << gen::to_string(form);
+    EXPECT_NEAR(plunges[0], -1.2, 1e-9);
+    EXPECT_NEAR(plunges[1], -2.4, 1e-9);
+    EXPECT_NEAR(plunges[2], -3.0, 1e-9);
+    ASSERT_EQ(moves_at.size(), 3u) << gen::to_string(form);
+    EXPECT_EQ(moves_at[-1.2], moves_at[-3.0]) << gen::to_string(form);
+    EXPECT_EQ(moves_at[-2.4], moves_at[-3.0]) << gen::to_string(form);
+  }
+  auto o = options(gen::Form::expanded, 0.01);
+  o.step_down = 1;
+  EXPECT_THROW(gen::generate(curve("helix"), o), std::runtime_error);  // rises in Z
 }
