@@ -58,6 +58,10 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
   gen->add_option("--tool-radius", a.tool_radius,
                   "program the cutter centre (mill) or tool-nose centre (lathe) for this radius, mm")
       ->check(CLI::NonNegativeNumber);
+  gen->add_option("--tip", a.tip,
+                  "lathe: imaginary tool nose direction 0..9 (FANUC, +X up: 2 = turning towards the chuck); the "
+                  "program follows that tip, 0 the nose centre")
+      ->check(CLI::Range(0, 9));
   gen->add_option("--side", a.side, "left or right of the curve looking along it (G41 / G42 side); default left")
       ->check(CLI::IsMember({"left", "right"}));
   gen->add_option("--plot", a.plot, "SVG plot of the curve, the path and the deviation along it");
@@ -89,6 +93,7 @@ int gen_command(const GenArgs& a) {
     o.program_number = a.program_number;
     o.tool_radius = a.tool_radius;
     o.side = a.side == "right" ? gen::Side::right : gen::Side::left;
+    o.tip = a.tip;
     curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to}, a.command->remaining(), o.profile));
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";

@@ -19,6 +19,7 @@ struct GenArgs {
   double feed = 0;
   double depth = 1;
   double step_down = 0;
+  int tip = 0;
   double clearance = 5;
   int program_number = 1000;
   double tool_radius = 0;

@@ -30,6 +30,10 @@ struct Options {
   int program_number = 1000;
   double tool_radius = 0;   // > 0: the program is the cutter-centre path, offset to `side`
   Side side = Side::left;
+  // lathe with a tool radius: the imaginary tool nose direction (FANUC 0..9, drawn with +X up
+  // and +Z right: 1 (-X,+Z), 2 (-X,-Z), 3 (+X,-Z), 4 (+X,+Z), 5 +Z, 6 -X, 7 -Z, 8 +X); the
+  // program is the path of that imaginary tip. 0 or 9: the nose centre.
+  int tip = 0;
 };
 
 // How the curve sits on the machine: machine axis a = scale[a] * curve[from[a]] + offset[a]

@@ -423,3 +423,35 @@ TEST(Gen, DepthPassesRepeatTheContourStepDownApart) {
   o.step_down = 1;
   EXPECT_THROW(gen::generate(curve("helix"), o), std::runtime_error);  // rises in Z
 }
+
+// Lathe tool-nose radius: a ball of radius 20 turned to the centre with a 0.8 mm nose. The
+// program follows the imaginary tip (FANUC direction 2: -X, -Z of the nose centre), so the
+// nose centre, one radius back, is 20 + 0.8 from the ball's centre outside (20 - 0.8 inside).
+TEST(Gen, LatheNoseRadiusProgramsTheImaginaryTip) {
+  const double R = 20, r = 0.8, tol = 0.005;
+  auto spec = *geom::find_curve("ellipse");
+  spec.from = 0, spec.to = 180;
+  const geom::Curve half(spec, {{"a", R}, {"b", R}});
+  for (int tip : {0, 2, 3}) {
+    for (gen::Side side : {gen::Side::right, gen::Side::left}) {
+      gen::Options o = options(gen::Form::expanded, tol);
+      o.profile = machine::default_lathe();
+      o.tool_radius = r;
+      o.side = side;
+      o.tip = tip;
+      auto result = gen::generate(half, o);
+      ASSERT_TRUE(result.within_tolerance) << tip;
+      auto ran = test::run(result.text, o.profile);
+      ASSERT_TRUE(ran.result.ok()) << tip;
+      const double vx = tip == 2 ? -1 : tip == 3 ? 1 : 0, vz = tip == 0 ? 0 : -1;
+      std::size_t checked = 0;
+      for (const auto& m : ran.motions()) {
+        if (m.kind != machine::MoveKind::line || m.line < 10) continue;
+        double x = m.end[0] - r * vx, z = m.end[2] - r * vz;  // the nose centre (X as a radius inside)
+        EXPECT_NEAR(std::hypot(x, z), side == gen::Side::right ? R + r : R - r, tol + 1e-6) << tip << " " << m.line;
+        ++checked;
+      }
+      EXPECT_GT(checked, 20u);
+    }
+  }
+}
