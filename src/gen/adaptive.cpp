@@ -218,14 +218,7 @@ Emitted adaptive_macro(const Context& c) {
   const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
 
   Writer w;
-  w.block("%");
-  w.lines(header(c.curve, o, fmt::format("step from the curvature, {} band", c.with_z ? "chords" : "tolerance")));
-  begin_passes(w, o, c.dec);
-  w.block("(VARIABLES)");
-  w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(c.curve.name())));
-  parameter_blocks(w, c.curve);
-  w.block(fmt::format("#110={} (T START)", number(c.curve.t0(), 12)));
-  w.block(fmt::format("#111={} (T END)", number(c.curve.t1(), 12)));
+  macro_preamble(w, c, fmt::format("step from the curvature, {} band", c.with_z ? "chords" : "tolerance"));
   w.block(fmt::format("#115={} (VERTEX OFFSET OUTWARD, MM)", number(rule.offset, kDigits)));
   w.block(fmt::format("#116={} (STEP FACTOR: CHORD = #116/SQRT[CURVATURE])", number(rule.factor, kDigits)));
   w.block(fmt::format("#117={} (LEAST CURVATURE, 1/MM)", number(rule.min_curvature, kDigits)));

@@ -27,6 +27,9 @@ struct Emitted {
 
 std::string arc_words(const Context& c, const geom::Piece& p);  // I J (K) of an arc
 void parameter_blocks(Writer& w, const geom::Curve& curve);      // #101=.. (NAME: DOC)
+// The macro forms' opening: tape start, header, depth-pass loop, the variables of the curve
+// (#100 = t, its parameters, #110 t start, #111 t end).
+void macro_preamble(Writer& w, const Context& c, const std::string& method);
 // Rapid to above the start point given as macro words, then feed to it.
 void approach(Writer& w, const Context& c, const MacroWords& start);
 

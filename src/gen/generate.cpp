@@ -266,14 +266,7 @@ Emitted equal_step_macro(const Context& c) {
   geom::Path steps = geom::fit_lines(c.fit, geom::LineMethod::equal_step);
   const std::size_t n = steps.pieces.size();
   Writer w;
-  w.block("%");
-  w.lines(header(c.curve, o, "equal parameter step"));
-  begin_passes(w, o, c.dec);
-  w.block("(VARIABLES)");
-  w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(c.curve.name())));
-  parameter_blocks(w, c.curve);
-  w.block(fmt::format("#110={} (T START)", number(c.curve.t0(), 12)));
-  w.block(fmt::format("#111={} (T END)", number(c.curve.t1(), 12)));
+  macro_preamble(w, c, "equal parameter step");
   w.block(fmt::format("#112={} (SEGMENTS)", n));
   w.block("#113=[#111-#110]/#112 (T STEP)");
   w.block("#114=0 (SEGMENT COUNTER)");
@@ -321,6 +314,17 @@ std::string arc_words(const Context& c, const geom::Piece& p) {
 void parameter_blocks(Writer& w, const geom::Curve& curve) {
   for (const auto& p : curve.params())
     w.block(fmt::format("#{}={} ({}: {})", p.var, number(p.value, 12), comment_text(p.name), comment_text(p.doc)));
+}
+
+void macro_preamble(Writer& w, const Context& c, const std::string& method) {
+  w.block("%");
+  w.lines(header(c.curve, c.o, method));
+  begin_passes(w, c.o, c.dec);
+  w.block("(VARIABLES)");
+  w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(c.curve.name())));
+  parameter_blocks(w, c.curve);
+  w.block(fmt::format("#110={} (T START)", number(c.curve.t0(), 12)));
+  w.block(fmt::format("#111={} (T END)", number(c.curve.t1(), 12)));
 }
 
 void approach(Writer& w, const Context& c, const MacroWords& start) {
