@@ -1,4 +1,5 @@
 #include "gen/generate.hpp"
+#include "geom/search.hpp"
 
 #include <fmt/format.h>
 
@@ -142,20 +143,12 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
     return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   };
   auto project = [&](const Vec3& p, double t_from, double reach) {
-    constexpr int kSamples = 24;
     double hi = std::min(t_last, t_from + reach / std::max(speed_at(t_from), 1e-12));
-    double step = (hi - t_from) / kSamples, best_t = t_from, best_d = dist(p, map(curve.point(t_from)));
-    for (int i = 1; i <= kSamples; ++i) {
-      double t = t_from + step * i;
-      double d = dist(p, map(curve.point(t)));
-      if (d < best_d) { best_d = d; best_t = t; }
-    }
-    double lo = std::max(t_from, best_t - step), up = std::min(hi, best_t + step);
-    for (int k = 0; k < 100 && up - lo > 1e-13 * std::max(1.0, std::fabs(up)); ++k) {
-      double m1 = lo + (up - lo) / 3, m2 = up - (up - lo) / 3;
-      if (dist(p, map(curve.point(m1))) < dist(p, map(curve.point(m2)))) up = m2; else lo = m1;
-    }
-    return 0.5 * (lo + up);
+    auto closeness = [&](double t) {
+      Vec3 q = map(curve.point(t));
+      return -((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    };
+    return geom::sampled_maximum(closeness, t_from, hi, 16).at;
   };
 
   if (contour.empty()) throw std::runtime_error("no contour to measure");

@@ -22,9 +22,9 @@ struct Local {
   Vec3 p, d1, d2;
 };
 Local local(const Fit& f, double t) {
-  Vec3 c = f.curve.point(t);
-  Vec3 p = f.place(c);
-  return {p, sub(f.place(add(c, f.curve.d1(t))), p), sub(f.place(add(c, f.curve.d2(t))), p)};
+  Curve::Jet j = f.curve.jet(t);
+  Vec3 p = f.place(j.p);
+  return {p, sub(f.place(add(j.p, j.d1)), p), sub(f.place(add(j.p, j.d2)), p)};
 }
 
 // Outward unit normal (away from the centre of curvature) and curvature of the placed curve.
@@ -112,38 +112,54 @@ double point_arc_distance(const Vec3& p, const Piece& arc, const Plane& plane) {
   return std::min(norm(sub(p, arc.start)), norm(sub(p, arc.end)));
 }
 
+// A piece within a tolerance is short: six samples find its humps (at most three: both ends and
+// the middle, when its ends sit off the curve), Brent's method places each to a millionth of it.
+constexpr int kPieceSamples = 6;
+constexpr double kPieceResolution = 1e-6;
+
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb,
                    const std::function<double(const Vec3&)>& dist) {
-  auto m = sampled_maximum([&](double t) { return dist(place(curve.point(t))); }, ta, tb, 8);
+  auto m = sampled_maximum([&](double t) { return dist(place(curve.point(t))); }, ta, tb, kPieceSamples,
+                           kPieceResolution * (tb - ta));
   return {m.value, m.at};
 }
 
 namespace {
 
+// max_distance with the placed curve points at both ends already known.
+template <class Dist>
+double deviation(const Fit& f, double ta, double tb, const Vec3& at_ta, const Vec3& at_tb, Dist dist) {
+  auto at = [&](double t) { return dist(t == ta ? at_ta : t == tb ? at_tb : f.place(f.curve.point(t))); };
+  return sampled_maximum(at, ta, tb, kPieceSamples, kPieceResolution * (tb - ta)).value;
+}
+
+struct Vertex {
+  Vec3 at;      // as emitted (snapped)
+  Local curve;  // the placed curve there
+};
+
 // Vertices: exact curve points at both ends of the range, elsewhere the curve point moved outward
 // by `offset` (a band of +-tol holds segments about 1.4 times longer than chords), then snapped.
-Vec3 vertex(const Fit& f, double t, double offset) {
+Vertex vertex(const Fit& f, double t, double offset) {
   Local l = local(f, t);
   if (offset > 0 && t > f.curve.t0() && t < f.curve.t1()) {
     Vec3 n;
     outward(l, n);
-    return f.grid.snap(add(l.p, scale(n, offset)));
+    return {f.grid.snap(add(l.p, scale(n, offset))), l};
   }
-  return f.grid.snap(l.p);
+  return {f.grid.snap(l.p), l};
 }
 
-double segment_error(const Fit& f, double ta, double tb, const Vec3& a, const Vec3& b, bool radial = false) {
+double segment_error(const Fit& f, double ta, double tb, const Vertex& a, const Vertex& b, bool radial = false) {
   if (radial)
-    return max_distance(f.curve, f.place, ta, tb,
-                        [&](const Vec3& p) { return radial_distance(p, a, b, f.centre, f.plane); })
-        .distance;
-  return max_distance(f.curve, f.place, ta, tb, [&](const Vec3& p) { return point_segment_distance(p, a, b); })
-      .distance;
+    return deviation(f, ta, tb, a.curve.p, b.curve.p,
+                     [&](const Vec3& p) { return radial_distance(p, a.at, b.at, f.centre, f.plane); });
+  return deviation(f, ta, tb, a.curve.p, b.curve.p,
+                   [&](const Vec3& p) { return point_segment_distance(p, a.at, b.at); });
 }
 
-// A first guess of the parameter step for a sag h at t (from the local curvature).
-double step_guess(const Fit& f, double t, double h) {
-  Local l = local(f, t);
+// A first guess of the parameter step for a sag h where the curve is l (from its curvature).
+double step_guess(const Fit& f, const Local& l, double h) {
   Vec3 n;
   double k = outward(l, n);
   double speed = norm(l.d1);
@@ -158,18 +174,26 @@ Path lines_greedy(const Fit& f, bool band, bool radial = false) {
   const double span = t_end - f.curve.t0();
   const double offset = band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0;
   double ta = f.curve.t0();
-  Vec3 a = vertex(f, ta, offset);
+  Vertex a = vertex(f, ta, offset);
+  double learned = 1;  // the last step over its curvature prediction (the band, the rounding)
   while (ta < t_end) {
-    auto ok = [&](double tb) { return segment_error(f, ta, tb, a, vertex(f, tb, offset), radial) <= f.tol; };
-    double guess = std::min(t_end, ta + step_guess(f, ta, f.tol + offset));
-    double tb = longest_step(ta, t_end, guess, ok, span, [&] {
+    Vertex b{};
+    double b_error = 0, b_t = ta;  // the longest segment within the tolerance tried so far
+    auto error_to = [&](double tb) {
+      Vertex end = vertex(f, tb, offset);
+      double e = segment_error(f, ta, tb, a, end, radial);
+      if (e <= f.tol && tb > b_t) b = end, b_error = e, b_t = tb;
+      return e;
+    };
+    const double predicted = step_guess(f, a.curve, f.tol + offset);
+    double tb = longest_within(ta, t_end, std::min(t_end, ta + predicted * learned), f.tol, offset, error_to, span, [&] {
       return fmt::format("{}: no segment from t = {:.6g} stays within {} mm (tolerance below the machine increment?)",
                          f.curve.name(), ta, f.tol);
     });
-    Vec3 b = vertex(f, tb, offset);
-    double err = segment_error(f, ta, tb, a, b, radial);
-    path.max_deviation = std::max(path.max_deviation, err);
-    path.pieces.push_back(Piece{false, a, b, {}, false, ta, tb});
+    if (tb != b_t) throw std::logic_error("lines_greedy: the step found was not the longest one measured");
+    if (tb < t_end) learned = std::clamp((tb - ta) / predicted, 0.25, 4.0);
+    path.max_deviation = std::max(path.max_deviation, b_error);
+    path.pieces.push_back(Piece{false, a.at, b.at, {}, false, ta, tb});
     ta = tb;
     a = b;
   }
@@ -179,12 +203,12 @@ Path lines_greedy(const Fit& f, bool band, bool radial = false) {
 // All chords for the given parameters (vertices on the curve); the largest error.
 double chords_error(const Fit& f, const std::vector<double>& ts, Path* out) {
   double worst = 0;
-  Vec3 a = vertex(f, ts[0], 0);
+  Vertex a = vertex(f, ts[0], 0);
   for (std::size_t i = 1; i < ts.size(); ++i) {
-    Vec3 b = vertex(f, ts[i], 0);
+    Vertex b = vertex(f, ts[i], 0);
     double e = segment_error(f, ts[i - 1], ts[i], a, b);
     worst = std::max(worst, e);
-    if (out) out->pieces.push_back(Piece{false, a, b, {}, false, ts[i - 1], ts[i]});
+    if (out) out->pieces.push_back(Piece{false, a.at, b.at, {}, false, ts[i - 1], ts[i]});
     a = b;
   }
   return worst;
@@ -438,7 +462,7 @@ Path fit_arcs(const Fit& f) {
         }
         return true;
       };
-      double guess = std::min(stop, ta + 4 * step_guess(f, ta, f.tol));
+      double guess = std::min(stop, ta + 4 * step_guess(f, local(f, ta), f.tol));
       double lo = longest_step(ta, stop, guess, ok, span, [&] {
         return fmt::format("{}: no arc from t = {:.6g} stays within {} mm", f.curve.name(), ta, f.tol);
       });

@@ -166,15 +166,29 @@ void Curve::compile(nc::EvalOptions options) {
   for (int a = 0; a < 3; ++a) {
     sym_d1_[a] = derivative(sym_pos_[a], kTVar);
     sym_d2_[a] = derivative(sym_d1_[a], kTVar);
-    pos_[a] = Tape(sym_pos_[a], options);
-    d1_[a] = Tape(sym_d1_[a], options);
-    d2_[a] = Tape(sym_d2_[a], options);
   }
+  auto list = [](const std::array<Sym, 3>& e) { return std::vector<Sym>(e.begin(), e.end()); };
+  pos_ = Tape(list(sym_pos_), options);
+  d1_ = Tape(list(sym_d1_), options);
+  d2_ = Tape(list(sym_d2_), options);
+  std::vector<Sym> all = list(sym_pos_);
+  all.insert(all.end(), sym_d1_.begin(), sym_d1_.end());
+  all.insert(all.end(), sym_d2_.begin(), sym_d2_.end());
+  jet_ = Tape(all, options);
 }
 
-Vec3 Curve::eval(const Tapes& tapes, double t) const {
+Vec3 Curve::eval(const Tape& tape, double t) const {
   vars_[kTVar] = t;
-  return {tapes[0](vars_.data()), tapes[1](vars_.data()), tapes[2](vars_.data())};
+  Vec3 out;
+  tape(vars_.data(), out.data());
+  return out;
+}
+
+Curve::Jet Curve::jet(double t) const {
+  vars_[kTVar] = t;
+  double out[9];
+  jet_(vars_.data(), out);
+  return {{out[0], out[1], out[2]}, {out[3], out[4], out[5]}, {out[6], out[7], out[8]}};
 }
 
 Curve Curve::offset(double radius, bool left, int u, int v) const {

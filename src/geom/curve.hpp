@@ -49,6 +49,11 @@ public:
   Vec3 point(double t) const { return eval(pos_, t); }
   Vec3 d1(double t) const { return eval(d1_, t); }
   Vec3 d2(double t) const { return eval(d2_, t); }
+  // Point, first and second derivative together (their common terms computed once).
+  struct Jet {
+    Vec3 p, d1, d2;
+  };
+  Jet jet(double t) const;
   // Curvature and the unit principal normal (zero where the curve is straight).
   double curvature(double t, Vec3* normal = nullptr) const;
 
@@ -76,15 +81,14 @@ public:
   Curve offset(double radius, bool left, int u, int v) const;
 
 private:
-  using Tapes = std::array<Tape, 3>;
-  Vec3 eval(const Tapes& tapes, double t) const;
+  Vec3 eval(const Tape& tape, double t) const;
   void compile(nc::EvalOptions options);  // derivatives and tapes from sym_pos_
 
   std::string name_;
   double t0_, t1_;
   std::vector<Param> params_;
   std::array<Sym, 3> sym_pos_, sym_d1_, sym_d2_;
-  Tapes pos_, d1_, d2_;
+  Tape pos_, d1_, d2_, jet_;
   nc::EvalOptions options_;
   mutable std::array<double, kVarCount> vars_{};  // parameter values at their numbers; t set per call
 };

@@ -42,39 +42,144 @@ double longest_step(double ta, double stop, double guess, Ok ok, double span, Fa
   return largest_ok(lo, hi, ok, span);
 }
 
+// The largest t in (ta, stop] with err(t) <= tol, for an error that grows like the sag of a
+// chord once past `floor` (err + floor ~ c (t - ta)^2, so sqrt(err + floor) is nearly linear in
+// t): from a guess, that model brackets the answer, then regula falsi with the Illinois
+// correction (bisection if it stalls) closes the bracket to `rel` of the step. err(t) <= tol
+// must hold for t just past ta; fail() names the place when not even a tiny step does.
+template <class Err, class Fail>
+double longest_within(double ta, double stop, double guess, double tol, double floor, Err err, double span, Fail fail,
+                      double rel = 1e-4, double accept = 1e-3) {
+  const double root = std::sqrt(tol + floor);
+  const double flat = std::sqrt(2 * floor) - root;  // g where err is at the floor
+  auto g = [&](double t) {
+    double e = err(t);
+    return std::isnan(e) ? root : std::sqrt(std::max(e, 0.0) + floor) - root;
+  };
+  // where the line through (ta, -root) and (t, gt) crosses zero, as a multiple of t - ta
+  auto model_ratio = [&](double gt) { return root / std::max(root + gt, 1e-3 * root); };
+  double t = std::clamp(guess, ta + 1e-12 * span, stop);
+  double lo = ta, glo = -root, hi = stop, ghi = 0;
+  double gt = g(t);
+  if (gt <= 0) {
+    for (double least = 1.002;; least = 1 + 8 * (least - 1)) {  // the model fails below a floor: grow
+      lo = t, glo = gt;
+      if (t >= stop) return stop;
+      t = std::min(stop, ta + (t - ta) * std::max(least, 1.002 * model_ratio(gt)));
+      gt = g(t);
+      if (gt > 0) break;
+    }
+    hi = t, ghi = gt;
+  } else {
+    for (;;) {
+      hi = t, ghi = gt;
+      t = ta + (t - ta) * std::clamp(0.998 * model_ratio(gt), 0.1, 0.998);
+      if (t - ta < 1e-12 * span) throw std::runtime_error(fail());
+      gt = g(t);
+      if (gt <= 0) break;
+    }
+    lo = t, glo = gt;
+  }
+  int stuck_side = 0;  // +1: hi stayed last time, -1: lo stayed
+  double width_before = hi - lo, g_at_lo = glo;  // glo itself may be scaled down by Illinois
+  for (int i = 0; i < 200 && hi - lo > rel * (hi - ta) && g_at_lo < -accept * root; ++i) {
+    double next;
+    if (i % 3 == 2 && hi - lo > 0.25 * width_before) {
+      next = 0.5 * (lo + hi);
+    } else {
+      // regula falsi; from hi's model alone while lo is below the floor (no sag seen there yet)
+      next = g_at_lo <= flat ? ta + (hi - ta) * model_ratio(ghi) : hi - ghi * (hi - lo) / (ghi - glo);
+      const double margin = 0.25 * rel * (hi - ta);
+      next = std::clamp(next, lo + margin, hi - margin);
+    }
+    if (i % 3 == 2) width_before = hi - lo;
+    double gn = g(next);
+    if (gn <= 0) {
+      lo = next, glo = g_at_lo = gn;
+      if (stuck_side == 1) ghi *= 0.5;
+      stuck_side = 1;
+    } else {
+      hi = next, ghi = gn;
+      if (stuck_side == -1) glo *= 0.5;
+      stuck_side = -1;
+    }
+  }
+  return lo;
+}
+
 struct Maximum {
   double value, at;
 };
 
-// The largest value of f on [lo, hi]: `samples` equal steps, then golden-section search between
-// the neighbours of the best sample (f unimodal there) until the bracket is narrower than
-// `resolution` (default: to rounding).
+// Brent's method: the maximum of f in [a, b] from x inside it (f(x) >= f at both ends), by
+// parabolic steps through the best three points, golden-section steps where a parabola is not
+// trusted; stops when x is known within `resolution`.
+template <class F>
+Maximum brent_maximum(F f, double a, double b, double x, double fx, double resolution) {
+  constexpr double kGoldenStep = 0.3819660112501051;  // (3 - sqrt 5) / 2
+  double w = x, v = x, fw = fx, fv = fx;  // second and third best points (f values, maximising)
+  double d = 0, e = 0;                    // this step and the one before the last
+  for (int i = 0; i < 100; ++i) {
+    const double m = 0.5 * (a + b);
+    const double tol1 = std::max(0.5 * resolution, 4e-16 * std::fabs(x)), tol2 = 2 * tol1;
+    if (std::fabs(x - m) <= tol2 - 0.5 * (b - a)) break;
+    bool parabolic = false;
+    if (std::fabs(e) > tol1) {
+      double r = (x - w) * (fv - fx), q = (x - v) * (fw - fx);  // on -f: a minimisation
+      double p = (x - v) * q - (x - w) * r;
+      q = 2 * (q - r);
+      if (q > 0) p = -p; else q = -q;
+      double e_before = e;
+      e = d;
+      if (std::fabs(p) < std::fabs(0.5 * q * e_before) && p > q * (a - x) && p < q * (b - x)) {
+        d = p / q;
+        parabolic = true;
+        double u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = x < m ? tol1 : -tol1;
+      }
+    }
+    if (!parabolic) {
+      e = (x < m ? b : a) - x;
+      d = kGoldenStep * e;
+    }
+    const double u = std::fabs(d) >= tol1 ? x + d : x + (d > 0 ? tol1 : -tol1);
+    const double fu = f(u);
+    if (fu >= fx) {
+      (u < x ? b : a) = x;
+      v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+    } else {
+      (u < x ? a : b) = u;
+      if (fu >= fw || w == x) {
+        v = w, fv = fw, w = u, fw = fu;
+      } else if (fu >= fv || v == x || v == w) {
+        v = u, fv = fu;
+      }
+    }
+  }
+  return {fx, x};
+}
+
+// The largest value of f on [lo, hi]: `samples` equal steps, then Brent's method between the
+// neighbours of the best sample (f unimodal there) until the maximum is placed within
+// `resolution` (default: a billionth of [lo, hi]; the value is then exact to about 1e-17 of
+// its curvature scale).
 template <class F>
 Maximum sampled_maximum(F f, double lo, double hi, int samples, double resolution = 0) {
-  constexpr double kGolden = 0.6180339887498949;
   Maximum best{f(lo), lo};
   int best_i = 0;
   for (int i = 1; i <= samples; ++i) {
-    double t = lo + (hi - lo) * i / samples;
+    double t = i == samples ? hi : lo + (hi - lo) * i / samples;
     double v = f(t);
     if (v > best.value) best = {v, t}, best_i = i;
   }
+  if (resolution <= 0) resolution = 1e-9 * (hi - lo);
+  // at an end and falling from it: that end is the maximum of its (unimodal) neighbourhood
+  if (best_i == 0 && f(lo + resolution) <= best.value) return best;
+  if (best_i == samples && f(hi - resolution) <= best.value) return best;
   double a = lo + (hi - lo) * std::max(0, best_i - 1) / samples;
   double b = lo + (hi - lo) * std::min(samples, best_i + 1) / samples;
-  double x1 = b - kGolden * (b - a), x2 = a + kGolden * (b - a);
-  double f1 = f(x1), f2 = f(x2);
-  for (int i = 0; i < 40 && b - a > std::max(resolution, 1e-12 * (1 + std::fabs(b))); ++i) {
-    if (f1 > f2) {
-      b = x2, x2 = x1, f2 = f1;
-      x1 = b - kGolden * (b - a), f1 = f(x1);
-    } else {
-      a = x1, x1 = x2, f1 = f2;
-      x2 = a + kGolden * (b - a), f2 = f(x2);
-    }
-  }
-  if (f1 > best.value) best = {f1, x1};
-  if (f2 > best.value) best = {f2, x2};
-  return best;
+  Maximum m = brent_maximum(f, a, b, best.at, best.value, resolution);
+  return m.value > best.value ? m : best;
 }
 
 }  // namespace ncurve::geom

@@ -3,7 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
 #include <numbers>
 #include <stdexcept>
 
@@ -327,57 +331,95 @@ Sym limit_depth(const Sym& e, int max_depth, int& next_temp, std::vector<std::pa
   return n;
 }
 
-Tape::Tape(const Sym& e, nc::EvalOptions options) : options_(options) {
-  emit(e);
-  int depth = 0, deepest = 0;
-  for (const Step& s : steps_) {
-    if (s.op == SymOp::konst || s.op == SymOp::var) ++depth;
-    else if (s.op == SymOp::add || s.op == SymOp::sub || s.op == SymOp::mul || s.op == SymOp::div ||
-             s.op == SymOp::atan2 || s.op == SymOp::pow) --depth;
-    deepest = std::max(deepest, depth);
+namespace {
+
+// Structural identity of a node whose operands have the registers a and b.
+struct NodeKey {
+  SymOp op;
+  std::uint64_t k_bits;
+  int var, a, b;
+  bool operator<(const NodeKey& o) const {
+    return std::tie(op, k_bits, var, a, b) < std::tie(o.op, o.k_bits, o.var, o.a, o.b);
   }
-  if (deepest > kStack) throw std::runtime_error("expression too deeply nested to evaluate");
+};
+
+}  // namespace
+
+Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(options) {
+  std::map<NodeKey, int> registers;
+  // post-order: operands first; equal subtrees (by structure) share a register
+  auto visit = [&](auto& self, const Sym& e) -> int {
+    int a = e->a ? self(self, e->a) : -1;
+    int b = e->b ? self(self, e->b) : -1;
+    NodeKey key{e->op, e->op == SymOp::konst ? std::bit_cast<std::uint64_t>(e->k) : 0,
+                e->op == SymOp::var ? e->var : 0, a, b};
+    auto [it, fresh] = registers.try_emplace(key, registers_);
+    if (!fresh) return it->second;
+    steps_.push_back(Step{e->op, registers_, a, b, e->k, e->var});
+    return registers_++;
+  };
+  for (const Sym& e : outputs) outputs_.push_back(visit(visit, e));
+  // a sine and a cosine of one register: the first computes both, the second is dropped
+  std::map<int, std::size_t> sine_of, cosine_of;  // operand register -> step
+  for (std::size_t i = 0; i < steps_.size(); ++i) {
+    if (steps_[i].op == SymOp::sin) sine_of[steps_[i].a] = i;
+    if (steps_[i].op == SymOp::cos) cosine_of[steps_[i].a] = i;
+  }
+  std::vector<bool> dropped(steps_.size(), false);
+  for (const auto& [operand, si] : sine_of) {
+    auto c = cosine_of.find(operand);
+    if (c == cosine_of.end()) continue;
+    std::size_t first = std::min(si, c->second), second = std::max(si, c->second);
+    steps_[first].paired = true;
+    steps_[first].b = steps_[second].dst;
+    dropped[second] = true;
+  }
+  std::vector<Step> kept;
+  for (std::size_t i = 0; i < steps_.size(); ++i)
+    if (!dropped[i]) kept.push_back(steps_[i]);
+  steps_ = std::move(kept);
 }
 
-void Tape::emit(const Sym& e) {
-  if (e->a) emit(e->a);
-  if (e->b) emit(e->b);
-  steps_.push_back(Step{e->op, e->var, e->k});
-}
-
-double Tape::operator()(const double* vars) const {
-  double stack[kStack];
-  int top = -1;
+void Tape::operator()(const double* vars, double* out) const {
+  constexpr int kOnStack = 256;
+  double on_stack[kOnStack];
+  std::vector<double> on_heap;
+  double* r = on_stack;
+  if (registers_ > kOnStack) {
+    on_heap.resize(static_cast<std::size_t>(registers_));
+    r = on_heap.data();
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const Step& s : steps_) {
+    double& d = r[s.dst];
     switch (s.op) {
-      case SymOp::konst: stack[++top] = s.k; break;
-      case SymOp::var: stack[++top] = vars[s.var]; break;
-      case SymOp::neg: stack[top] = -stack[top]; break;
-      case SymOp::add: --top; stack[top] += stack[top + 1]; break;
-      case SymOp::sub: --top; stack[top] -= stack[top + 1]; break;
-      case SymOp::mul: --top; stack[top] *= stack[top + 1]; break;
-      case SymOp::div:
-        --top;
-        if (stack[top + 1] == 0) return std::nan("");
-        stack[top] /= stack[top + 1];
+      case SymOp::konst: d = s.k; break;
+      case SymOp::var: d = vars[s.var]; break;
+      case SymOp::neg: d = -r[s.a]; break;
+      case SymOp::add: d = r[s.a] + r[s.b]; break;
+      case SymOp::sub: d = r[s.a] - r[s.b]; break;
+      case SymOp::mul: d = r[s.a] * r[s.b]; break;
+      case SymOp::div: d = r[s.b] == 0 ? nan : r[s.a] / r[s.b]; break;
+      case SymOp::sin:
+      case SymOp::cos:
+        if (s.paired) {
+          double sine = 0, cosine = 0;
+          nc::sincos_deg(r[s.a], sine, cosine);
+          d = s.op == SymOp::sin ? sine : cosine;
+          r[s.b] = s.op == SymOp::sin ? cosine : sine;
+          break;
+        }
+        [[fallthrough]];
+      default:
+        if (s.b >= 0) {
+          if (nc::apply_binary(to_nc(s.op), r[s.a], r[s.b], d, options_) != nc::EvalFault::none) d = nan;
+        } else if (nc::apply_unary(to_nc(s.op), r[s.a], d, options_) != nc::EvalFault::none) {
+          d = nan;
+        }
         break;
-      case SymOp::atan2: case SymOp::pow: {
-        --top;
-        double out = 0;
-        if (nc::apply_binary(to_nc(s.op), stack[top], stack[top + 1], out, options_) != nc::EvalFault::none)
-          return std::nan("");
-        stack[top] = out;
-        break;
-      }
-      default: {
-        double out = 0;
-        if (nc::apply_unary(to_nc(s.op), stack[top], out, options_) != nc::EvalFault::none) return std::nan("");
-        stack[top] = out;
-        break;
-      }
     }
   }
-  return stack[top];
+  for (std::size_t i = 0; i < outputs_.size(); ++i) out[i] = r[outputs_[i]];
 }
 
 }  // namespace ncurve::geom

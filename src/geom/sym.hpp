@@ -46,23 +46,31 @@ int bracket_depth(const Sym& e);
 // brackets; each (variable, expression) in temps must be assigned first, in order.
 Sym limit_depth(const Sym& e, int max_depth, int& next_temp, std::vector<std::pair<int, Sym>>& temps);
 
-// Flat postfix code for fast evaluation with FANUC's functions (nc::apply_unary / apply_binary).
+// Straight-line code for fast evaluation of several expressions at once with FANUC's functions
+// (nc::apply_unary / apply_binary): equal subexpressions are computed once, and a sine and cosine
+// of the same angle by one sincos.
 class Tape {
 public:
   Tape() = default;
-  explicit Tape(const Sym& e, nc::EvalOptions options = {});
-  // vars[n] is the value of #n; returns NaN on a domain error or division by zero.
-  double operator()(const double* vars) const;
+  explicit Tape(const std::vector<Sym>& outputs, nc::EvalOptions options = {});
+  std::size_t outputs() const { return outputs_.size(); }
+  // vars[n] is the value of #n; out[i] of output i is NaN on a domain error or division by zero
+  // in what it depends on.
+  void operator()(const double* vars, double* out) const;
 
 private:
-  static constexpr int kStack = 64;
   struct Step {
     SymOp op;
-    int var;
-    double k;
+    int dst;
+    int a = -1, b = -1;  // operand registers; for sin/cos with `paired`, b is the partner's register
+    double k = 0;        // konst
+    int var = 0;         // var
+    bool paired = false;
   };
-  void emit(const Sym& e);
+  int emit(const Sym& e, std::vector<std::pair<const SymNode*, int>>& seen);
   std::vector<Step> steps_;
+  std::vector<int> outputs_;  // registers
+  int registers_ = 0;
   nc::EvalOptions options_;
 };
 

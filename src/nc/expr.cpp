@@ -18,18 +18,6 @@ bool to_integer(double x, std::int64_t& out) {
   return true;
 }
 
-// A degree angle whose sine or cosine is exactly 0 or ±1 gets exact values (SIN[180] is 0, not 1.2e-16).
-void sincos_deg(double deg, double& s, double& c) {
-  double r = std::fmod(deg, 360.0);
-  if (r < 0) r += 360.0;
-  if (r == 0.0) { s = 0; c = 1; return; }
-  if (r == 90.0) { s = 1; c = 0; return; }
-  if (r == 180.0) { s = 0; c = -1; return; }
-  if (r == 270.0) { s = -1; c = 0; return; }
-  s = std::sin(deg * kDeg);
-  c = std::cos(deg * kDeg);
-}
-
 EvalFault finite(double x, double& out) {
   if (!std::isfinite(x) || std::fabs(x) > kMaxMagnitude) return EvalFault::overflow;
   out = x;
@@ -43,6 +31,21 @@ double atan2_deg(double y, double x, bool signed_range) {
 }
 
 }  // namespace
+
+void sincos_deg(double deg, double& s, double& c) {
+  double r = std::fmod(deg, 360.0);
+  if (r < 0) r += 360.0;
+  if (r == 0.0) { s = 0; c = 1; return; }
+  if (r == 90.0) { s = 1; c = 0; return; }
+  if (r == 180.0) { s = 0; c = -1; return; }
+  if (r == 270.0) { s = -1; c = 0; return; }
+#ifdef __GLIBC__
+  ::sincos(deg * kDeg, &s, &c);  // one argument reduction for both
+#else
+  s = std::sin(deg * kDeg);
+  c = std::cos(deg * kDeg);
+#endif
+}
 
 EvalFault apply_unary(Op op, double a, double& out, const EvalOptions& o) {
   double s, c;

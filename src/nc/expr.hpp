@@ -49,6 +49,8 @@ struct EvalResult {
 };
 
 // Pure function part of the evaluator (no variables involved).
+// Sine and cosine of a degree angle; exactly 0 or +-1 where they are (SIN[180] is 0, not 1.2e-16).
+void sincos_deg(double deg, double& s, double& c);
 EvalFault apply_unary(Op op, double a, double& out, const EvalOptions& o);
 EvalFault apply_binary(Op op, double a, double b, double& out, const EvalOptions& o);
 

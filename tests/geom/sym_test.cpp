@@ -21,7 +21,9 @@ Sym parse_sym(const std::string& text) { return from_code(nc::compile_expression
 double at(const Sym& e, double t) {
   std::vector<double> vars(kVarCount, 0.0);
   vars[kTVar] = t;
-  return Tape(e)(vars.data());
+  double out = 0;
+  Tape({e})(vars.data(), &out);
+  return out;
 }
 }  // namespace
 
@@ -98,4 +100,41 @@ TEST(Sym, WhatCannotBeDifferentiatedIsRefused) {
   EXPECT_THROW(parse_sym("#100 MOD 3"), nc::Alarm);
   EXPECT_EQ(substitute_names("a*cos(t)+PI", {"a"}), "#101*COS[#100]+3.14159265358979");
   EXPECT_THROW(substitute_names("q*t", {"a"}), std::runtime_error);
+}
+
+TEST(Sym, TapeSharesSubexpressionsAndSineCosinePairs) {
+  // x, y and their derivatives share the radius and one sincos of t; each output must equal its
+  // own single-expression tape and the closed form
+  Sym x = parse_sym("[2+#100/90]*COS[#100*3]"), y = parse_sym("[2+#100/90]*SIN[#100*3]");
+  Sym bad = parse_sym("SQRT[#100-200]");  // NaN below t = 200, and only there
+  Tape all({x, y, derivative(x, kTVar), bad});
+  EXPECT_EQ(all.outputs(), 4u);
+  std::vector<double> vars(kVarCount, 0.0);
+  for (double t : {0.0, 30.0, 123.4, 250.0}) {
+    vars[kTVar] = t;
+    double out[4];
+    all(vars.data(), out);
+    double r = 2 + t / 90;
+    EXPECT_NEAR(out[0], r * std::cos(3 * t * kRad), 1e-13) << t;
+    EXPECT_NEAR(out[1], r * std::sin(3 * t * kRad), 1e-13) << t;
+    EXPECT_EQ(out[0], at(x, t));
+    EXPECT_EQ(out[1], at(y, t));
+    EXPECT_NEAR(out[2], std::cos(3 * t * kRad) / 90 - r * 3 * kRad * std::sin(3 * t * kRad), 1e-13) << t;
+    if (t < 200) EXPECT_TRUE(std::isnan(out[3])) << t;
+    else EXPECT_NEAR(out[3], std::sqrt(t - 200), 1e-13);
+  }
+  vars[kTVar] = 60;  // 180 degrees: FANUC's exact zero survives the pairing
+  double out[4];
+  all(vars.data(), out);
+  EXPECT_EQ(out[1], 0.0);
+}
+
+TEST(Sym, CurveJetIsPointAndDerivatives) {
+  Curve c(*find_curve("rotor"), {});
+  for (double t : {0.0, 11.0, 97.5, 300.0}) {
+    Curve::Jet j = c.jet(t);
+    EXPECT_EQ(j.p, c.point(t));
+    EXPECT_EQ(j.d1, c.d1(t));
+    EXPECT_EQ(j.d2, c.d2(t));
+  }
 }
