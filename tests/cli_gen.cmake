@@ -38,6 +38,26 @@ run_expect(1 "run the cycle without its parameter" ${NCURVE} run ${OUT}/gen_cycl
 run_expect(2 "an unknown parameter" ${NCURVE} run ${OUT}/gen_cycle.nc --param 9999=1)
 expect_text("${err}" "9999" "the unknown parameter is named")
 
+# a curve cycle: G103 (No.6051) in O9011 for the ellipse; the macro alone for the control's memory
+# is the shipped one, and a hand-written call runs against the shipped library
+run_expect(0 "gen ellipse cycle" ${NCURVE} gen ellipse --form cycle -o ${OUT}/gen_ellipse_cycle.nc --json)
+expect_text("${out}" "\"6051\": 103" "gen ellipse cycle --json parameters")
+expect_text("${out}" "\"macro\": \"%\\nO9011" "gen ellipse cycle --json macro")
+run_expect(0 "run the ellipse cycle" ${NCURVE} run ${OUT}/gen_ellipse_cycle.nc --param 6051=103)
+run_expect(0 "gen ellipse cycle macro only" ${NCURVE} gen ellipse --form cycle --macro-only -o ${OUT}/O9011.nc)
+file(READ ${OUT}/O9011.nc written)
+file(READ ${SRC}/macros/O9011.nc shipped)
+if(NOT written STREQUAL shipped)
+  message(FATAL_ERROR "gen --macro-only: O9011 differs from macros/O9011.nc")
+endif()
+file(WRITE ${OUT}/gen_call_g103.nc "G90 G17 G00 X20. Y0.\nG01 F300.\nG103 A20. B10. S0. E90. T0.01\nM30\n")
+run_expect(0 "a hand-written G103 call" ${NCURVE} run ${OUT}/gen_call_g103.nc --param 6051=103 --lib ${SRC}/macros)
+run_expect(0 "an expr curve's cycle in another slot" ${NCURVE} gen expr --x "4*COS[t]" --y "3*SIN[t]" --t 0:90
+           --form cycle --cycle-program 9015 --json)
+expect_text("${out}" "\"6055\": 107" "gen --cycle-program names its parameter")
+run_expect(2 "macro-only without the cycle form" ${NCURVE} gen ellipse --macro-only)
+run_expect(2 "a cycle program out of O9010..O9019" ${NCURVE} gen ellipse --form cycle --cycle-program 9020)
+
 # tool radius: the cutter centre, and the gouge named
 run_expect(0 "gen with a tool radius" ${NCURVE} gen ellipse --tool-radius 5 --side right --json)
 expect_text("${out}" "\"tool_radius\": 5.0" "gen --json tool_radius")

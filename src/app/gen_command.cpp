@@ -64,6 +64,13 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
       ->check(CLI::Range(0, 9));
   gen->add_option("--side", a.side, "left or right of the curve looking along it (G41 / G42 side); default left")
       ->check(CLI::IsMember({"left", "right"}));
+  gen->add_option("--cycle-program", a.cycle_program,
+                  "cycle: the macro's program O9010..O9019 (G102..G111, No.6050..6059); default: the curve's own "
+                  "(spiral 9010, ellipse 9011, parabola 9012, hyperbola 9013, involute 9014, sine 9015, cycloid 9016, "
+                  "trochoid 9017, helix 9018, rotor and expr 9019)")
+      ->check(CLI::Range(9010, 9019));
+  gen->add_flag("--macro-only", a.macro_only,
+                "cycle: write only the cycle's macro program (for the control's memory), not the calling program");
   gen->add_option("--plot", a.plot, "SVG plot of the curve, the path and the deviation along it");
   gen->add_option("-o,--output", a.output, "write the program here (statistics go to the terminal)");
   gen->add_flag("--json", a.json, "statistics as JSON");
@@ -94,6 +101,8 @@ int gen_command(const GenArgs& a) {
     o.tool_radius = a.tool_radius;
     o.side = a.side == "right" ? gen::Side::right : gen::Side::left;
     o.tip = a.tip;
+    o.cycle_program = a.cycle_program;
+    if (a.macro_only && o.form != gen::Form::cycle) throw std::runtime_error("--macro-only is for --form cycle");
     curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to}, a.command->remaining(), o.profile));
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
@@ -107,9 +116,10 @@ int gen_command(const GenArgs& a) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 1;
   }
+  const std::string& program = a.macro_only ? r.macro : r.text;
   if (!a.output.empty()) {
     std::ofstream f(a.output, std::ios::binary);
-    if (!f || !(f << r.text)) {
+    if (!f || !(f << program)) {
       std::cerr << fmt::format("{}: error: cannot write the program\n", a.output);
       return 2;
     }
@@ -141,10 +151,11 @@ int gen_command(const GenArgs& a) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [key, value] : r.parameters) params[key] = value;
     j["parameters"] = params;
-    if (a.output.empty()) j["program"] = r.text;
+    if (a.output.empty()) j["program"] = program;
+    if (!r.macro.empty()) j["macro"] = r.macro;
     std::cout << j.dump(2) << "\n";
   } else {
-    if (a.output.empty()) std::cout << r.text;
+    if (a.output.empty()) std::cout << program;
     std::ostream& out = a.output.empty() ? std::cerr : std::cout;
     out << fmt::format(
         "curve {} (t {:.6g}..{:.6g}), form {}, tolerance {} mm\n"

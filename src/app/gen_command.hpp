@@ -20,6 +20,8 @@ struct GenArgs {
   double depth = 1;
   double step_down = 0;
   int tip = 0;
+  int cycle_program = 0;
+  bool macro_only = false;
   double clearance = 5;
   int program_number = 1000;
   double tool_radius = 0;

@@ -215,7 +215,6 @@ AdaptiveRule adaptive_rule(const Context& c) {
 Emitted adaptive_macro(const Context& c) {
   const Options& o = c.o;
   const AdaptiveRule rule = adaptive_rule(c);
-  const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
 
   Writer w;
   macro_preamble(w, c, fmt::format("step from the curvature, {} band", c.with_z ? "chords" : "tolerance"));
@@ -235,6 +234,15 @@ Emitted adaptive_macro(const Context& c) {
   approach(w, c, start);
 
   w.block("WHILE [#100 LT #111] DO1");
+  step_blocks(w);
+  w.block("#100=#100+#129");
+  w.block("IF [#100 GT #111] THEN #100=#111");
+  next = kFirstTemp;
+  for (const auto& b : curvature_blocks(c, next)) w.block(b);
+  return close_loop(w, c, macro_words(vertex_axes(c), next));
+}
+
+void step_blocks(Writer& w) {
   w.block("#119=ABS[1.5*#127-0.5*#118]");
   w.block(fmt::format("#131=ABS[2*#127-#118]*{}", number(kEndWeight, 6)));
   w.block("IF [#119 LT #131] THEN #119=#131");
@@ -245,10 +253,11 @@ Emitted adaptive_macro(const Context& c) {
   w.block("#131=1.5*#129");
   w.block("#129=#116/SQRT[#119]/#126");
   w.block("IF [#129 GT #131] THEN #129=#131");
-  w.block("#100=#100+#129");
-  w.block("IF [#100 GT #111] THEN #100=#111");
+}
+
+std::vector<std::string> curvature_blocks(const Context& c, int& next) {
+  const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
   std::vector<std::string> blocks;
-  next = kFirstTemp;
   if (c.with_z) {
     for (int k = 0; k < 3; ++k) assign(120 + k, axis_derivative(c, k, 1), next, blocks);
     for (int k = 0; k < 3; ++k) assign(123 + k, axis_derivative(c, k, 2), next, blocks);
@@ -269,22 +278,25 @@ Emitted adaptive_macro(const Context& c) {
     blocks.push_back("IF [#127 GT 0] THEN #130=-#115");
     blocks.push_back("IF [#100 GE #111] THEN #130=0");
   }
-  for (const auto& b : blocks) w.block(b);
-  // the vertex: the curve point moved along the normal (-v', u') / speed by #130
-  std::vector<std::pair<char, Sym>> axes = point_axes(c.curve, c.map, o, c.with_z);
-  if (!c.with_z) {
-    auto shift = [&](int axis) -> Sym {
-      Sym n = axis == u ? geom::make(SymOp::neg, geom::variable(121)) : geom::variable(120);
-      return geom::make(SymOp::div, geom::make(SymOp::mul, geom::variable(130), n), geom::variable(126));
-    };
-    for (auto& [letter, e] : axes) {
-      int axis = letter == 'X' ? 0 : letter == 'Y' ? 1 : 2;
-      if (axis != u && axis != v) continue;
-      Sym moved = geom::make(SymOp::add, axis_sym(c.curve, c.map, axis), shift(axis));
-      e = is_lathe(o) && axis == 0 ? geom::make(SymOp::mul, geom::konst(2), moved) : moved;
-    }
+  return blocks;
+}
+
+std::vector<std::pair<char, Sym>> vertex_axes(const Context& c) {
+  const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
+  std::vector<std::pair<char, Sym>> axes = point_axes(c.curve, c.map, c.o, c.with_z);
+  if (c.with_z) return axes;
+  // the curve point moved along the normal (-v', u') / speed by #130
+  auto shift = [&](int axis) -> Sym {
+    Sym n = axis == u ? geom::make(SymOp::neg, geom::variable(121)) : geom::variable(120);
+    return geom::make(SymOp::div, geom::make(SymOp::mul, geom::variable(130), n), geom::variable(126));
+  };
+  for (auto& [letter, e] : axes) {
+    int axis = letter == 'X' ? 0 : letter == 'Y' ? 1 : 2;
+    if (axis != u && axis != v) continue;
+    Sym moved = geom::make(SymOp::add, axis_sym(c.curve, c.map, axis), shift(axis));
+    e = is_lathe(c.o) && axis == 0 ? geom::make(SymOp::mul, geom::konst(2), moved) : moved;
   }
-  return close_loop(w, c, macro_words(axes, next));
+  return axes;
 }
 
 }  // namespace ncurve::gen::detail

@@ -23,6 +23,7 @@ struct Emitted {
   std::string text;
   std::uint32_t first = 0, last = 0;  // the contour's lines in the text
   std::vector<std::pair<std::string, double>> parameters;  // control parameters the program needs
+  std::string macro;  // cycle: the macro program alone, as a tape for the control's memory
 };
 
 std::string arc_words(const Context& c, const geom::Piece& p);  // I J (K) of an arc
@@ -40,6 +41,13 @@ Emitted close_loop(Writer& w, const Context& c, const MacroWords& move);
 void end_program(Writer& w, const Context& c);
 
 Emitted adaptive_macro(const Context& c);
+// The adaptive loop's pieces (shared with the curve cycles): the step from the curvature behind
+// and ahead (#118, #127, #128, #129, least curvature #117, factor #116 -> new #129); at #100 the
+// derivatives #120.., speed #126, signed curvature #127, its size #128 and the vertex offset
+// #130 (+-#115 outward, 0 at the end); the vertex's axes (the curve point moved by #130).
+void step_blocks(Writer& w);
+std::vector<std::string> curvature_blocks(const Context& c, int& next_temp);
+std::vector<std::pair<char, geom::Sym>> vertex_axes(const Context& c);
 Emitted cycle(const Context& c);
 
 // The adaptive macro's step rule run natively (what the control will compute): the parameters

@@ -393,6 +393,7 @@ Result generate(const geom::Curve& contour, const Options& o) {
   Result r;
   r.text = std::move(e.text);
   r.parameters = e.parameters;
+  r.macro = std::move(e.macro);
   Options on_control = o;
   for (const auto& [key, value] : r.parameters) machine::set_parameter(on_control.profile, key, value);
   r.stats = round_trip(r.text, curve, on_control, e.first, e.last);

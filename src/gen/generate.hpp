@@ -34,6 +34,7 @@ struct Options {
   // and +Z right: 1 (-X,+Z), 2 (-X,-Z), 3 (+X,-Z), 4 (+X,+Z), 5 +Z, 6 -X, 7 -Z, 8 +X); the
   // program is the path of that imaginary tip. 0 or 9: the nose centre.
   int tip = 0;
+  int cycle_program = 0;  // cycle: O9010..O9019 (G102..G111, No.6050..6059); 0: the curve's own
 };
 
 // How the curve sits on the machine: machine axis a = scale[a] * curve[from[a]] + offset[a]
@@ -66,6 +67,7 @@ struct Result {
   std::string text;
   std::optional<geom::Curve> cutter_centre;  // with a tool radius: the offset curve the path follows
   std::vector<std::pair<std::string, double>> parameters;  // to set on the control, e.g. {"6050", 102}
+  std::string macro;  // cycle: its macro program alone (also at the end of text)
   Stats stats;
   bool within_tolerance = false;
 };

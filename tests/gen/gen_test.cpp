@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <numbers>
+#include <sstream>
 
 #include "gen/generate.hpp"
 #include "support/run_program.hpp"
@@ -69,7 +71,8 @@ TEST(Gen, SpiralSegmentCountsMeetTheSeedReference) {
 TEST(Gen, EveryCurveAndFormRunsWithinTolerance) {
   for (const auto& spec : geom::catalogue()) {
     geom::Curve c(spec, {});
-    for (gen::Form form : {gen::Form::expanded, gen::Form::arcs, gen::Form::macro, gen::Form::adaptive_macro}) {
+    for (gen::Form form : {gen::Form::expanded, gen::Form::arcs, gen::Form::macro, gen::Form::adaptive_macro,
+                           gen::Form::cycle}) {
       if (form == gen::Form::arcs && !c.planar_z()) continue;  // helix: arcs need a plane
       gen::Options o = options(form, 0.005);
       if (spec.name == "hyperbola") o.profile = machine::default_lathe();
@@ -78,7 +81,10 @@ TEST(Gen, EveryCurveAndFormRunsWithinTolerance) {
       EXPECT_TRUE(r.within_tolerance);
       EXPECT_LE(r.stats.max_deviation, 0.005);
       EXPECT_GT(r.stats.max_deviation, 0.0025);  // the path uses the tolerance, not a needlessly fine step
-      // independently: the program runs on its own and ends where the curve ends
+      // independently: the program runs on its own (with the parameters it asks for) and ends
+      // where the curve ends
+      EXPECT_EQ(r.parameters.empty(), form != gen::Form::cycle);
+      for (const auto& [key, value] : r.parameters) machine::set_parameter(o.profile, key, value);
       auto ran = test::run(r.text, o.profile);
       ASSERT_TRUE(ran.result.ok());
       auto cut = ran.motions();
@@ -177,8 +183,15 @@ TEST(Gen, BadCurvesAreNamed) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("#1016"), std::string::npos) << e.what();
   }
-  // the G102 cycle is the spiral's
-  EXPECT_THROW(gen::generate(curve("ellipse"), options(gen::Form::cycle, 0.005)), std::runtime_error);
+  // the cycles program the contour (the control offsets the cutter); the spiral's is G102 in O9010
+  auto with_radius = options(gen::Form::cycle, 0.005);
+  with_radius.tool_radius = 2;
+  EXPECT_THROW(gen::generate(curve("ellipse"), with_radius), std::runtime_error);
+  auto elsewhere = options(gen::Form::cycle, 0.005);
+  elsewhere.cycle_program = 9012;
+  EXPECT_THROW(gen::generate(curve("spiral"), elsewhere), std::runtime_error);
+  elsewhere.cycle_program = 9020;
+  EXPECT_THROW(gen::generate(curve("ellipse"), elsewhere), std::runtime_error);
 }
 
 namespace {
@@ -453,5 +466,65 @@ TEST(Gen, LatheNoseRadiusProgramsTheImaginaryTip) {
       }
       EXPECT_GT(checked, 20u);
     }
+  }
+}
+
+// A curve cycle is a real cycle: O9011 (G103, No.6051) takes the ellipse's semi-axes, its range
+// and the chord error as arguments, so a programmer calls it by hand for another ellipse; the
+// shipped macros/ are what ncurve gen writes.
+TEST(Gen, CurveCycleTakesItsCurveAsArguments) {
+  auto r = gen::generate(curve("ellipse"), options(gen::Form::cycle, 0.005));
+  ASSERT_TRUE(r.within_tolerance);
+  ASSERT_EQ(r.parameters.size(), 1u);
+  EXPECT_EQ(r.parameters[0].first, "6051");
+  EXPECT_EQ(r.parameters[0].second, 103);
+  EXPECT_NE(r.text.find("G103 A40. B20. S0. E360. T0.00"), std::string::npos) << r.text;
+  ASSERT_FALSE(r.macro.empty());
+  EXPECT_NE(r.text.find(r.macro.substr(2, r.macro.size() - 4)), std::string::npos);  // appended, without its %
+
+  // by hand: the upper half of a 30 x 10 ellipse from (30, 0), chord error 0.01, from the library
+  machine::MachineProfile p = machine::default_mill();
+  machine::set_parameter(p, "6051", 103);
+  const std::string main = "G90 G17 G00 X30. Y0.\nG01 F300.\nG103 A30. B10. S0. E180. T0.01\nM30\n";
+  auto ran = test::run(main, p, {}, {{"O9011.nc", r.macro}});
+  ASSERT_TRUE(ran.result.ok()) << nc::format(*ran.result.alarm);
+  auto moves = ran.motions();
+  ASSERT_GT(moves.size(), 20u);
+  // every vertex within T + rounding of the ellipse (nearest point: dense samples, then golden section)
+  auto gap = [](double x, double y) {
+    auto d = [&](double t) { return std::hypot(30 * std::cos(t) - x, 10 * std::sin(t) - y); };
+    double best = 0;
+    for (int i = 1; i <= 20000; ++i)
+      if (d(std::numbers::pi * i / 20000) < d(best)) best = std::numbers::pi * i / 20000;
+    double a = best - std::numbers::pi / 20000, b = best + std::numbers::pi / 20000;
+    for (int k = 0; k < 60; ++k) {
+      double m1 = a + (b - a) * 0.382, m2 = a + (b - a) * 0.618;
+      if (d(m1) < d(m2)) b = m2; else a = m1;
+    }
+    return d(0.5 * (a + b));
+  };
+  double worst = 0;
+  for (const auto& m : moves) worst = std::max(worst, gap(m.end[0], m.end[1]));
+  EXPECT_LE(worst, 0.01 + 0.0008);
+  EXPECT_GT(worst, 0.005);  // the vertices sit on the band, outward by T
+  EXPECT_NEAR(moves.back().end[0], -30, 1e-9);
+  EXPECT_NEAR(moves.back().end[1], 0, 1e-9);
+
+  // a missing argument is the cycle's alarm 3001
+  auto missing = test::run("G00 X30. Y0.\nG103 A30. S0. E180. T0.01\nM30\n", p, {}, {{"O9011.nc", r.macro}});
+  EXPECT_EQ(missing.alarm_code(), "MC3001");
+
+  // the shipped library is what gen writes (scripts/make_cycles.sh)
+  for (const auto& [name, program] : std::vector<std::pair<std::string, int>>{
+           {"ellipse", 9011}, {"parabola", 9012}, {"hyperbola", 9013}, {"involute", 9014}, {"sine", 9015},
+           {"cycloid", 9016}, {"trochoid", 9017}, {"helix", 9018}, {"rotor", 9019}}) {
+    auto o = options(gen::Form::cycle, 0.005);
+    if (name == "hyperbola") o.profile = machine::default_lathe();
+    auto g = gen::generate(curve(name), o);
+    std::ifstream f(std::string(NCURVE_SOURCE_DIR) + "/macros/O" + std::to_string(program) + ".nc", std::ios::binary);
+    std::stringstream shipped;
+    shipped << f.rdbuf();
+    EXPECT_EQ(g.macro, shipped.str()) << name << ": run scripts/make_cycles.sh";
+    EXPECT_EQ(g.parameters[0].first, std::to_string(6050 + program - 9010)) << name;
   }
 }
