@@ -142,7 +142,11 @@ std::string curve_macro(const Context& c, const Slot& slot, std::uint32_t first_
   w.block(fmt::format("#132=[#111-#110]*{} (LONGEST T STEP)", number(kLongestStep, 6)));
   w.block("#100=#110");
   int next = kFirstTemp;
-  for (const auto& b : curvature_blocks(c, next)) w.block(b);
+  auto curvature_at_100 = [&] {
+    next = kFirstTemp;
+    for (const auto& b : curvature_blocks(c, next)) w.block(b);
+  };
+  curvature_at_100();
   w.block("#118=#127");
   w.block("#119=#128");
   w.block("IF [#119 LT #117] THEN #119=#117");
@@ -156,8 +160,7 @@ std::string curve_macro(const Context& c, const Slot& slot, std::uint32_t first_
   w.block("#134=1");
   w.block("WHILE [#134 LE 2] DO2");
   w.block("#100=#135+0.5*#129");
-  next = kFirstTemp;
-  for (const auto& b : curvature_blocks(c, next)) w.block(b);
+  curvature_at_100();
   w.block("IF [#128 LT #119] THEN #128=#119");
   w.block("#131=#116/SQRT[#128]/#126");
   w.block("#134=#134+1");
@@ -171,8 +174,7 @@ std::string curve_macro(const Context& c, const Slot& slot, std::uint32_t first_
   w.block("IF [#133 LE 0] THEN #129=#111-#100");
   w.block("#100=#100+#129");
   w.block("IF [#100 GT #111] THEN #100=#111");
-  next = kFirstTemp;
-  for (const auto& b : curvature_blocks(c, next)) w.block(b);
+  curvature_at_100();
   MacroWords move = macro_words(vertex_axes(c), next);
   for (const auto& a : move.assignments) w.block(a);
   w.block(fmt::format("G01 {}", move.words));
