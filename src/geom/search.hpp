@@ -3,6 +3,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace ncurve::geom {
@@ -52,9 +53,11 @@ double longest_within(double ta, double stop, double guess, double tol, double f
                       double rel = 1e-4, double accept = 1e-3) {
   const double root = std::sqrt(tol + floor);
   const double flat = std::sqrt(2 * floor) - root;  // g where err is at the floor
-  auto g = [&](double t) {
+  auto g = [&](double t) {  // <= 0 exactly when err(t) <= tol
     double e = err(t);
-    return std::isnan(e) ? root : std::sqrt(std::max(e, 0.0) + floor) - root;
+    if (std::isnan(e)) return root;
+    double v = std::sqrt(std::max(e, 0.0) + floor) - root;
+    return e <= tol ? std::min(v, 0.0) : std::max(v, std::numeric_limits<double>::min());
   };
   // where the line through (ta, -root) and (t, gt) crosses zero, as a multiple of t - ta
   auto model_ratio = [&](double gt) { return root / std::max(root + gt, 1e-3 * root); };
