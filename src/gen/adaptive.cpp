@@ -24,11 +24,11 @@ struct Local {
 };
 
 Local local(const Context& c, double t) {
-  Vec3 p = c.curve.point(t), a = c.curve.d1(t), b = c.curve.d2(t);
-  Local l{c.map(p), {}, {}};
+  geom::Curve::Jet j = c.curve.jet(t);
+  Local l{c.map(j.p), {}, {}};
   for (int k = 0; k < 3; ++k) {
-    l.d1[k] = c.map.from[k] >= 0 ? a[c.map.from[k]] : 0.0;
-    l.d2[k] = c.map.from[k] >= 0 ? b[c.map.from[k]] : 0.0;
+    l.d1[k] = c.map.from[k] >= 0 ? j.d1[c.map.from[k]] : 0.0;
+    l.d2[k] = c.map.from[k] >= 0 ? j.d2[c.map.from[k]] : 0.0;
   }
   return l;
 }
