@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -150,6 +151,27 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
     };
     return geom::sampled_maximum(closeness, t_from, hi, 16).at;
   };
+  // The same by Newton's method on (C(t) - p).C'(t) = 0 from a guess past t_from, with the jet
+  // there; NaN if it does not settle on a nearest point ahead of t_from.
+  auto project_newton = [&](const Vec3& p, double t_from, double guess, geom::PlacedJet& j) {
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    const double settled = 1e-9 * (guess - t_from);
+    double t = guess;
+    for (int i = 0; i < 6; ++i) {
+      j = geom::placed_jet(curve, place, t);
+      Vec3 r{j.p[0] - p[0], j.p[1] - p[1], j.p[2] - p[2]};
+      double slope = r[0] * j.d1[0] + r[1] * j.d1[1] + r[2] * j.d1[2];
+      double bend = j.d1[0] * j.d1[0] + j.d1[1] * j.d1[1] + j.d1[2] * j.d1[2] + r[0] * j.d2[0] + r[1] * j.d2[1] +
+                    r[2] * j.d2[2];
+      if (!(bend > 0)) return kNaN;  // not a nearest point
+      double dt = -slope / bend;
+      if (std::fabs(dt) <= settled) return t;
+      t += dt;
+      if (!(t > t_from && t <= t_last)) return kNaN;
+    }
+    return kNaN;
+  };
+  const double trust = 1e-3 * o.tol;  // the quintic between jets must agree with the curve this well
 
   if (contour.empty()) throw std::runtime_error("no contour to measure");
   s.points = contour.size() + 1;
@@ -163,8 +185,9 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
   Vec3 first{contour[0].start[0], contour[0].start[1], contour[0].start[2]};
   s.path.push_back(first);
   double t_prev = project(first, t_first, 1e-3 + 10 * o.tol);
+  geom::PlacedJet jet_prev = geom::placed_jet(curve, place, t_prev);
   s.start_t = t_prev;
-  note(dist(first, map(curve.point(t_prev))), t_prev);
+  note(dist(first, jet_prev.p), t_prev);
   const Vec3 curve_end = map(curve.point(curve.t1()));
   for (const auto& m : contour) {
     const bool last_move = &m == &contour.back();
@@ -175,18 +198,27 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
     piece.centre = m.center;
     piece.ccw = m.sweep > 0;
     s.path_length += m.length;
-    double t_end = project(piece.end, t_prev, 3 * m.length + 10 * o.tol + 1e-3);
+    geom::PlacedJet jet_end;
+    double t_end;
     if (last_move && require_end) {  // the contour must reach the end of the curve
       if (dist(piece.end, curve_end) > o.tol)
         throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
                                              dist(piece.end, curve_end), curve.t1()));
       t_end = curve.t1();
+      jet_end = geom::placed_jet(curve, place, t_end);
+    } else {
+      const double speed = std::sqrt(jet_prev.d1[0] * jet_prev.d1[0] + jet_prev.d1[1] * jet_prev.d1[1] +
+                                     jet_prev.d1[2] * jet_prev.d1[2]);
+      t_end = project_newton(piece.end, t_prev, std::min(t_last, t_prev + m.length / std::max(speed, 1e-12)), jet_end);
+      if (std::isnan(t_end)) {
+        t_end = project(piece.end, t_prev, 3 * m.length + 10 * o.tol + 1e-3);
+        jet_end = geom::placed_jet(curve, place, t_end);
+      }
     }
-    note(dist(piece.end, map(curve.point(t_end))), t_end);
-    auto d = [&](const Vec3& p) {
-      return piece.arc ? geom::point_arc_distance(p, piece, plane) : geom::point_segment_distance(p, piece.start, piece.end);
-    };
-    geom::Worst w = geom::max_distance(curve, place, t_prev, t_end, d);
+    note(dist(piece.end, jet_end.p), t_end);
+    const geom::Segment segment(piece.start, piece.end);
+    auto d = [&](const Vec3& p) { return piece.arc ? geom::point_arc_distance(p, piece, plane) : segment.distance(p); };
+    geom::Worst w = geom::max_distance(curve, place, t_prev, t_end, jet_prev, jet_end, d, trust);
     note(w.distance, w.t);
     s.deviation.emplace_back(t_end, w.distance);
     if (piece.arc) {
@@ -205,6 +237,7 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
     s.path.push_back(piece.end);
     s.path_block.push_back(s.deviation.size() - 1);
     t_prev = t_end;
+    jet_prev = jet_end;
   }
   return s;
 }

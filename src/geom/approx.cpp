@@ -1,10 +1,15 @@
 #include "geom/approx.hpp"
+#include "geom/quintic.hpp"
 #include "geom/search.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -17,15 +22,8 @@ Vec3 scale(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 
-// Placed point, tangent and second derivative (placements are affine).
-struct Local {
-  Vec3 p, d1, d2;
-};
-Local local(const Fit& f, double t) {
-  Curve::Jet j = f.curve.jet(t);
-  Vec3 p = f.place(j.p);
-  return {p, sub(f.place(add(j.p, j.d1)), p), sub(f.place(add(j.p, j.d2)), p)};
-}
+using Local = PlacedJet;
+Local local(const Fit& f, double t) { return placed_jet(f.curve, f.place, t); }
 
 // Outward unit normal (away from the centre of curvature) and curvature of the placed curve.
 double outward(const Local& l, Vec3& n) {
@@ -72,12 +70,7 @@ Vec3 Grid::snap(const Vec3& p) const {
 
 double Grid::worst_error() const { return 0.5 * norm(step); }
 
-double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
-  Vec3 ab = sub(b, a);
-  double len2 = dot(ab, ab);
-  double s = len2 > 0 ? std::clamp(dot(sub(p, a), ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(sub(p, add(a, scale(ab, s))));
-}
+double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) { return Segment(a, b).distance(p); }
 
 double radial_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& centre, const Plane& plane) {
   const int u = plane.u_axis, v = plane.v_axis;
@@ -116,12 +109,63 @@ double point_arc_distance(const Vec3& p, const Piece& arc, const Plane& plane) {
 // the middle, when its ends sit off the curve), Brent's method places each to a millionth of it.
 constexpr int kPieceSamples = 6;
 constexpr double kPieceResolution = 1e-6;
+// On the quintic the place of a maximum matters less: the curve's confirms it.
+constexpr double kModelResolution = 1e-4;
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb,
                    const std::function<double(const Vec3&)>& dist) {
   auto m = sampled_maximum([&](double t) { return dist(place(curve.point(t))); }, ta, tb, kPieceSamples,
                            kPieceResolution * (tb - ta));
   return {m.value, m.at};
+}
+
+PlacedJet placed_jet(const Curve& curve, const Placement& place, double t) {
+  Curve::Jet j = curve.jet(t);
+  Vec3 p = place(j.p);
+  return {p, sub(place(add(j.p, j.d1)), p), sub(place(add(j.p, j.d2)), p)};
+}
+
+namespace {
+
+// The maximum of dist over the quintic through the jets at both ends of a step h long, in s = 0..1.
+template <class Dist>
+Maximum on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist dist) {
+  const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
+  auto at = [&](double s) { return dist(s == 0 ? a.p : s == 1 ? b.p : q.at(s)); };
+  return sampled_maximum(at, 0.0, 1.0, kPieceSamples, kModelResolution);
+}
+
+// The curve's maximum near the quintic's: the curve must agree with the quintic there within
+// trust and be no higher a thousandth of the step to either side (so its maximum lies between);
+// the parabola through the three values places it. NaN if not. At an end of the step the
+// quintic's value is the curve's.
+constexpr double kConfirmStep = 1e-3;
+template <class OnCurve>
+double confirmed(OnCurve on_curve, double ta, double h, const Maximum& model, double trust) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (model.at == 0 || model.at == 1) return model.value;
+  const double t = ta + h * model.at, d = kConfirmStep * h;
+  if (t - d < ta || t + d > ta + h) return kNaN;  // too near an end to bracket
+  const double v = on_curve(t);
+  if (!(std::fabs(v - model.value) <= trust)) return kNaN;
+  const double before = on_curve(t - d), after = on_curve(t + d);
+  const double slack = 1e-6 * trust;
+  if (before > v + slack || after > v + slack) return kNaN;
+  const double bend = before + after - 2 * v;  // <= 0 about a maximum
+  if (bend >= 0) return std::max({v, before, after});
+  return v - 0.125 * (after - before) * (after - before) / bend;  // the parabola's vertex value
+}
+
+}  // namespace
+
+Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
+                   const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust) {
+  const double h = tb - ta;
+  if (!(h > 0)) return {dist(a.p), ta};
+  const Maximum m = on_quintic(a, b, h, dist);
+  const double v = confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, m, trust);
+  if (std::isnan(v)) return max_distance(curve, place, ta, tb, dist);
+  return {v, ta + h * m.at};
 }
 
 namespace {
@@ -154,8 +198,8 @@ double segment_error(const Fit& f, double ta, double tb, const Vertex& a, const 
   if (radial)
     return deviation(f, ta, tb, a.curve.p, b.curve.p,
                      [&](const Vec3& p) { return radial_distance(p, a.at, b.at, f.centre, f.plane); });
-  return deviation(f, ta, tb, a.curve.p, b.curve.p,
-                   [&](const Vec3& p) { return point_segment_distance(p, a.at, b.at); });
+  const Segment ab(a.at, b.at);
+  return deviation(f, ta, tb, a.curve.p, b.curve.p, [&](const Vec3& p) { return ab.distance(p); });
 }
 
 // A first guess of the parameter step for a sag h where the curve is l (from its curvature).
@@ -168,34 +212,120 @@ double step_guess(const Fit& f, const Local& l, double h) {
   return std::min(range, std::sqrt(8 * h / k) / speed);
 }
 
-Path lines_greedy(const Fit& f, bool band, bool radial = false) {
+// Steps are searched to a thousandth: closer, the coordinate rounding decides more than the step.
+constexpr double kStepRel = 1e-3;
+
+double band_offset(const Fit& f, bool band) { return band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0; }
+
+// Greedy longest segments from `from` to `to` (vertices there as anywhere else in the curve).
+Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to) {
   Path path;
-  const double t_end = f.curve.t1();
-  const double span = t_end - f.curve.t0();
-  const double offset = band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0;
-  double ta = f.curve.t0();
+  const double t_end = to;
+  const double span = f.curve.t1() - f.curve.t0();
+  const double offset = band_offset(f, band);
+  const double trust = 1e-3 * f.tol;
+  double ta = from;
   Vertex a = vertex(f, ta, offset);
   double learned = 1;  // the last step over its curvature prediction (the band, the rounding)
   while (ta < t_end) {
     Vertex b{};
     double b_error = 0, b_t = ta;  // the longest segment within the tolerance tried so far
-    auto error_to = [&](double tb) {
-      Vertex end = vertex(f, tb, offset);
-      double e = segment_error(f, ta, tb, a, end, radial);
-      if (e <= f.tol && tb > b_t) b = end, b_error = e, b_t = tb;
-      return e;
-    };
+    Maximum b_model{};
     const double predicted = step_guess(f, a.curve, f.tol + offset);
-    double tb = longest_within(ta, t_end, std::min(t_end, ta + predicted * learned), f.tol, offset, error_to, span, [&] {
-      return fmt::format("{}: no segment from t = {:.6g} stays within {} mm (tolerance below the machine increment?)",
-                         f.curve.name(), ta, f.tol);
-    });
-    if (tb != b_t) throw std::logic_error("lines_greedy: the step found was not the longest one measured");
+    auto longest = [&](bool on_model) {
+      b_t = ta;
+      auto error_to = [&](double tb) {
+        Vertex end = vertex(f, tb, offset);
+        Maximum m{};
+        double e;
+        if (on_model) {
+          const Segment ab(a.at, end.at);
+          m = on_quintic(a.curve, end.curve, tb - ta, [&](const Vec3& p) { return ab.distance(p); });
+          e = m.value;
+        } else {
+          e = segment_error(f, ta, tb, a, end, radial);
+        }
+        if (e <= f.tol && tb > b_t) b = end, b_error = e, b_t = tb, b_model = m;
+        return e;
+      };
+      double tb = longest_within(ta, t_end, std::min(t_end, ta + predicted * learned), f.tol, offset, error_to, span, [&] {
+        return fmt::format("{}: no segment from t = {:.6g} stays within {} mm (tolerance below the machine increment?)",
+                           f.curve.name(), ta, f.tol);
+      }, kStepRel);
+      if (tb != b_t) throw std::logic_error("lines_greedy: the step found was not the longest one measured");
+      return tb;
+    };
+    const bool on_model = f.model_steps && !radial;
+    double tb = longest(on_model);
+    if (on_model) {
+      const Segment ab(a.at, b.at);
+      auto on_curve = [&](double t) { return ab.distance(f.place(f.curve.point(t))); };
+      double e = confirmed(on_curve, ta, tb - ta, b_model, trust);
+      if (e <= f.tol) b_error = e;
+      else tb = longest(false);  // the quintic misleads here: every trial on the curve
+    }
     if (tb < t_end) learned = std::clamp((tb - ta) / predicted, 0.25, 4.0);
     path.max_deviation = std::max(path.max_deviation, b_error);
     path.pieces.push_back(Piece{false, a.at, b.at, {}, false, ta, tb});
     ta = tb;
     a = b;
+  }
+  return path;
+}
+
+// Where a long curve is cut to be fit on several threads at once: about every
+// Fit::chunk_segments predicted segments.
+std::vector<double> chunk_cuts(const Fit& f, bool band) {
+  constexpr int kSamples = 256;
+  const double t0 = f.curve.t0(), t1 = f.curve.t1(), h = f.tol + band_offset(f, band);
+  if (!(f.chunk_segments > 0)) return {t0, t1};
+  std::vector<double> ts(kSamples + 1), predicted(kSamples + 1, 0.0);  // segments up to ts[i]
+  double density_before = 0;
+  for (int i = 0; i <= kSamples; ++i) {
+    ts[i] = t0 + (t1 - t0) * i / kSamples;
+    const double density = 1 / step_guess(f, local(f, ts[i]), h);
+    if (i > 0) predicted[i] = predicted[i - 1] + 0.5 * (density + density_before) * (ts[i] - ts[i - 1]);
+    density_before = density;
+  }
+  const double total = predicted.back();
+  const int chunks = std::isfinite(total) ? static_cast<int>(std::min(total / f.chunk_segments, 64.0)) : 1;
+  std::vector<double> cuts{t0};
+  for (int k = 1, i = 1; k < chunks; ++k) {
+    const double want = total * k / chunks;
+    while (predicted[i] < want) ++i;
+    const double f_in = (want - predicted[i - 1]) / (predicted[i] - predicted[i - 1]);
+    cuts.push_back(ts[i - 1] + f_in * (ts[i] - ts[i - 1]));
+  }
+  cuts.push_back(t1);
+  return cuts;
+}
+
+Path lines_in_chunks(const Fit& f, bool band, bool radial = false) {
+  const std::vector<double> cuts = chunk_cuts(f, band);
+  const std::size_t chunks = cuts.size() - 1;
+  if (chunks == 1) return lines_greedy(f, band, radial, cuts[0], cuts[1]);
+  std::vector<Path> parts(chunks);
+  std::vector<std::exception_ptr> errors(chunks);
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t k; (k = next++) < chunks;) {
+      try {
+        parts[k] = lines_greedy(f, band, radial, cuts[k], cuts[k + 1]);
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    }
+  };
+  const std::size_t helpers = std::min<std::size_t>(chunks, std::max(1u, std::thread::hardware_concurrency())) - 1;
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < helpers; ++i) threads.emplace_back(work);
+  work();
+  for (auto& t : threads) t.join();
+  Path path;
+  for (std::size_t k = 0; k < chunks; ++k) {
+    if (errors[k]) std::rethrow_exception(errors[k]);  // the first along the curve
+    path.max_deviation = std::max(path.max_deviation, parts[k].max_deviation);
+    path.pieces.insert(path.pieces.end(), parts[k].pieces.begin(), parts[k].pieces.end());
   }
   return path;
 }
@@ -256,9 +386,9 @@ Path fit_lines(const Fit& f, LineMethod method) {
     throw std::runtime_error(fmt::format("tolerance {} mm is not above the coordinate rounding ({:.6f} mm)", f.tol,
                                          f.grid.worst_error()));
   switch (method) {
-    case LineMethod::equal_error: return lines_greedy(f, true);
-    case LineMethod::equal_error_on_curve: return lines_greedy(f, false);
-    case LineMethod::radial_error: return lines_greedy(f, false, true);
+    case LineMethod::equal_error: return lines_in_chunks(f, true);
+    case LineMethod::equal_error_on_curve: return lines_in_chunks(f, false);
+    case LineMethod::radial_error: return lines_in_chunks(f, false, true);
     case LineMethod::equal_step: {
       auto passes = [&](long n) { return chords_error(f, equal_steps(f, n), nullptr) <= f.tol; };
       long n = 1;

@@ -1,6 +1,7 @@
 // Tool paths of lines and arcs within a shape tolerance of a curve, and the deviation measure
 // that proves it (maximum distance, found by optimisation on each piece).
 #pragma once
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -52,6 +53,12 @@ struct Fit {
   bool arcs_with_r = false;        // R words: the control finds the centre from R and the ends
   double r_step = 0.001;           // increment of an R word
   double arc_radius_limit = 1e300;  // No.3410: start and end radius may differ by this much
+  // Equal error: each step searched on the quintic through the jets at its ends (one curve
+  // evaluation per trial), its deviation confirmed on the curve; off: every trial on the curve.
+  bool model_steps = true;
+  // Equal error on a long curve: cut where about this many segments are predicted, the pieces fit
+  // on all cores (cuts depend on the curve alone; each join may cost a segment). 0: never cut.
+  double chunk_segments = 4096;
 };
 
 Path fit_lines(const Fit& fit, LineMethod method);
@@ -65,7 +72,39 @@ struct Worst {
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb,
                    const std::function<double(const Vec3&)>& dist);
 
+// Placed point, first and second derivative (placements are affine).
+struct PlacedJet {
+  Vec3 p, d1, d2;
+};
+PlacedJet placed_jet(const Curve& curve, const Placement& place, double t);
+
+// max_distance with the placed jets at ta and tb known: the maximum is placed on the quintic
+// through them and its value taken on the curve, where it must be a local maximum (the curve no
+// higher a little to either side) and agree with the quintic within `trust`; otherwise (a step
+// too long for the quintic) the search on the curve alone.
+Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
+                   const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust);
+
 double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b);
+// The same for many points against one segment (its direction and length worked out once).
+class Segment {
+public:
+  Segment(const Vec3& a, const Vec3& b) : a_(a), ab_{b[0] - a[0], b[1] - a[1], b[2] - a[2]} {
+    const double len2 = ab_[0] * ab_[0] + ab_[1] * ab_[1] + ab_[2] * ab_[2];
+    inv_len2_ = len2 > 0 ? 1 / len2 : 0;
+  }
+  double distance(const Vec3& p) const {
+    const double ax = p[0] - a_[0], ay = p[1] - a_[1], az = p[2] - a_[2];
+    double s = (ax * ab_[0] + ay * ab_[1] + az * ab_[2]) * inv_len2_;
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    const double dx = ax - s * ab_[0], dy = ay - s * ab_[1], dz = az - s * ab_[2];
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  }
+
+private:
+  Vec3 a_, ab_;
+  double inv_len2_;
+};
 // Distance from p to where the ray from centre through p meets the line ab, in the plane (u, v).
 double radial_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& centre, const Plane& plane);
 // Distance to an arc in the plane from start to end about centre (radius varying linearly from

@@ -120,6 +120,8 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
   std::vector<std::string> names;
   for (const auto& p : spec.params) {
     names.push_back(p.name);
+    if (params_.size() >= static_cast<std::size_t>(kVarCount - kFirstParamVar))
+      throw std::runtime_error(fmt::format("{}: too many parameters", spec.name));
     params_.push_back(Param{p.name, kFirstParamVar + static_cast<int>(params_.size()), p.value, p.doc});
   }
   for (const auto& given : values) {
@@ -134,7 +136,7 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
     }
     it->value = value;
   }
-  for (const auto& p : params_) vars_[static_cast<std::size_t>(p.var)] = p.value;
+  for (const auto& p : params_) param_values_.push_back(p.value);
   const std::string* texts[3] = {&spec.x, &spec.y, &spec.z};
   const char* axis = "xyz";
   for (int a = 0; a < 3; ++a) {
@@ -177,17 +179,24 @@ void Curve::compile(nc::EvalOptions options) {
   jet_ = Tape(all, options);
 }
 
+// The variables the tapes read, t and the parameters at their numbers: per thread, so that one
+// curve can be evaluated on several at once.
+const double* Curve::variables(double t) const {
+  thread_local std::array<double, kVarCount> vars{};
+  vars[kTVar] = t;
+  std::copy(param_values_.begin(), param_values_.end(), vars.begin() + kFirstParamVar);
+  return vars.data();
+}
+
 Vec3 Curve::eval(const Tape& tape, double t) const {
-  vars_[kTVar] = t;
   Vec3 out;
-  tape(vars_.data(), out.data());
+  tape(variables(t), out.data());
   return out;
 }
 
 Curve::Jet Curve::jet(double t) const {
-  vars_[kTVar] = t;
   double out[9];
-  jet_(vars_.data(), out);
+  jet_(variables(t), out);
   return {{out[0], out[1], out[2]}, {out[3], out[4], out[5]}, {out[6], out[7], out[8]}};
 }
 

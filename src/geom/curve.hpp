@@ -82,6 +82,7 @@ public:
 
 private:
   Vec3 eval(const Tape& tape, double t) const;
+  const double* variables(double t) const;
   void compile(nc::EvalOptions options);  // derivatives and tapes from sym_pos_
 
   std::string name_;
@@ -90,7 +91,7 @@ private:
   std::array<Sym, 3> sym_pos_, sym_d1_, sym_d2_;
   Tape pos_, d1_, d2_, jet_;
   nc::EvalOptions options_;
-  mutable std::array<double, kVarCount> vars_{};  // parameter values at their numbers; t set per call
+  std::vector<double> param_values_;  // at #101.. in order
 };
 
 // Text with names (t, parameters, PI) to macro text with #100, #101..; throws on unknown names.

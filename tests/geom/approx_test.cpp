@@ -1,0 +1,136 @@
+// The deviation of a piece searched on the quintic between two jets and confirmed on the curve,
+// and the equal-error fit built on it (steps on the quintic, long curves cut and fit on threads):
+// against closed forms and against the search on the curve alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geom/approx.hpp"
+#include "geom/quintic.hpp"
+
+using namespace ncurve::geom;
+
+namespace {
+
+Curve expression(const std::string& x, const std::string& y, double from, double to) {
+  CurveSpec spec;
+  spec.name = "expr";
+  spec.x = x;
+  spec.y = y;
+  spec.z = "0";
+  spec.from = from;
+  spec.to = to;
+  return Curve(spec, {});
+}
+
+const Placement kSame = [](const Vec3& p) { return p; };
+
+}  // namespace
+
+TEST(Quintic, ReproducesAQuinticAndConvergesAsTheSixthPower) {
+  // a quintic curve is its own quintic: p(t) = (t^5 - 2t^3, 3t^4 + t, 1) on [0.5, 2]
+  auto p = [](double t) { return Vec3{std::pow(t, 5) - 2 * t * t * t, 3 * std::pow(t, 4) + t, 1}; };
+  auto d1 = [](double t) { return Vec3{5 * std::pow(t, 4) - 6 * t * t, 12 * t * t * t + 1, 0}; };
+  auto d2 = [](double t) { return Vec3{20 * t * t * t - 12 * t, 36 * t * t, 0}; };
+  Quintic q = Quintic::through(p(0.5), d1(0.5), d2(0.5), p(2), d1(2), d2(2), 1.5);
+  for (double s : {0.0, 0.1, 0.37, 0.5, 0.9, 1.0}) {
+    Vec3 exact = p(0.5 + 1.5 * s), model = q.at(s);
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(model[a], exact[a], 1e-12) << "s = " << s;
+  }
+  // a unit circle: the quintic between jets an angle h apart misses it by ~h^6 / 46080
+  auto miss = [](double h) {
+    auto at = [](double a) { return Vec3{std::cos(a), std::sin(a), 0}; };
+    auto v = [](double a) { return Vec3{-std::sin(a), std::cos(a), 0}; };
+    auto acc = [](double a) { return Vec3{-std::cos(a), -std::sin(a), 0}; };
+    Quintic c = Quintic::through(at(0), v(0), acc(0), at(h), v(h), acc(h), h);
+    Vec3 mid = c.at(0.5);
+    return std::fabs(std::hypot(mid[0], mid[1]) - 1);
+  };
+  const double h = 0.4;
+  EXPECT_NEAR(miss(h), std::pow(h, 6) / 46080, 0.05 * std::pow(h, 6) / 46080);
+  EXPECT_NEAR(miss(h) / miss(h / 2), 64, 2);
+}
+
+TEST(Approx, DeviationFromJetsIsTheSagOfAChord) {
+  // circle of radius 50 (t in degrees): a chord over an angle a sags 50 (1 - cos(a / 2))
+  Curve circle = expression("50*COS[t]", "50*SIN[t]", 0, 360);
+  for (double a : {0.5, 3.0, 20.0}) {
+    const double ta = 10, tb = 10 + a;
+    PlacedJet ja = placed_jet(circle, kSame, ta), jb = placed_jet(circle, kSame, tb);
+    Segment chord(ja.p, jb.p);
+    Worst w = max_distance(circle, kSame, ta, tb, ja, jb, [&](const Vec3& p) { return chord.distance(p); }, 1e-9);
+    const double sag = 50 * (1 - std::cos(a / 2 * std::numbers::pi / 180));
+    EXPECT_NEAR(w.distance, sag, 1e-12 + 1e-9 * sag) << a << " degrees";
+    EXPECT_NEAR(w.t, 10 + a / 2, 1e-2 * a) << a << " degrees";
+  }
+}
+
+TEST(Approx, DeviationFromJetsAgreesWithTheSearchOnTheCurve) {
+  // a spiral's offset segments (ends off the curve, humps at both ends and in the middle)
+  Curve spiral = expression("[5+2*t/360]*COS[t]", "[5+2*t/360]*SIN[t]", 0, 3600);
+  for (double ta = 3; ta < 3600; ta += 397) {
+    const double tb = ta + 2.5;
+    PlacedJet ja = placed_jet(spiral, kSame, ta), jb = placed_jet(spiral, kSame, tb);
+    Segment s(Vec3{ja.p[0] * 1.0001, ja.p[1] * 1.0001, 0}, Vec3{jb.p[0] * 1.0001, jb.p[1] * 1.0001, 0});
+    auto d = [&](const Vec3& p) { return s.distance(p); };
+    Worst model = max_distance(spiral, kSame, ta, tb, ja, jb, d, 1e-9);
+    Worst curve = max_distance(spiral, kSame, ta, tb, d);
+    EXPECT_NEAR(model.distance, curve.distance, 1e-12) << "t = " << ta;
+  }
+}
+
+TEST(Approx, DeviationFromJetsSearchesTheCurveWhereTheQuinticMisleads) {
+  // one and a half waves of a sine in one step: the ends' jets cannot see the crests (height 1)
+  Curve wave = expression("t", "SIN[t]", 0, 540);
+  PlacedJet ja = placed_jet(wave, kSame, 0), jb = placed_jet(wave, kSame, 540);
+  Segment axis(ja.p, jb.p);
+  Worst w = max_distance(wave, kSame, 0, 540, ja, jb, [&](const Vec3& p) { return axis.distance(p); }, 1e-6);
+  EXPECT_NEAR(w.distance, 1, 1e-12);
+  EXPECT_TRUE(std::fabs(w.t - 90) < 1e-3 || std::fabs(w.t - 450) < 1e-3) << w.t;
+}
+
+TEST(Approx, StepsOnTheQuinticCostNoMoreSegmentsThanStepsOnTheCurve) {
+  Curve spiral = expression("[5+2*t/360]*COS[t]", "[5+2*t/360]*SIN[t]", 0, 1800);
+  Fit fit{spiral, kSame, Grid{{0.0001, 0.0001, 0}}, Plane{0, 1}, 0.0005};
+  Path modelled = fit_lines(fit, LineMethod::equal_error);
+  fit.model_steps = false;
+  Path searched = fit_lines(fit, LineMethod::equal_error);
+  ASSERT_GT(searched.pieces.size(), 100u);
+  EXPECT_LE(modelled.pieces.size(), searched.pieces.size() * 1.005);
+  EXPECT_LE(modelled.max_deviation, fit.tol);
+  // each piece's deviation, searched on the curve alone
+  for (const auto& p : modelled.pieces) {
+    Segment s(p.start, p.end);
+    Worst w = max_distance(spiral, kSame, p.t0, p.t1, [&](const Vec3& q) { return s.distance(q); });
+    ASSERT_LE(w.distance, fit.tol) << "piece from t = " << p.t0;
+  }
+}
+
+TEST(Approx, LongCurvesAreFitInJoinedChunksTheSameEveryTime) {
+  // ~20,000 segments: fit in chunks on threads; joined end to end, and identical when repeated
+  Curve spiral = expression("[5+2*t/360]*COS[t]", "[5+2*t/360]*SIN[t]", 0, 14400);
+  Fit fit{spiral, kSame, Grid{{0.0001, 0.0001, 0}}, Plane{0, 1}, 0.0003};
+  Path first = fit_lines(fit, LineMethod::equal_error);
+  Path again = fit_lines(fit, LineMethod::equal_error);
+  ASSERT_GT(first.pieces.size(), 4 * 4096u);
+  ASSERT_EQ(first.pieces.size(), again.pieces.size());
+  for (std::size_t i = 0; i < first.pieces.size(); ++i) {
+    ASSERT_EQ(first.pieces[i].end, again.pieces[i].end) << i;
+    if (i > 0) {
+      ASSERT_EQ(first.pieces[i].start, first.pieces[i - 1].end) << i;
+      ASSERT_EQ(first.pieces[i].t0, first.pieces[i - 1].t1) << i;
+    }
+  }
+  EXPECT_EQ(first.pieces.front().t0, 0);
+  EXPECT_EQ(first.pieces.back().t1, 14400);
+  EXPECT_LE(first.max_deviation, fit.tol);
+  // at most one segment more per join than the greedy fit in one piece
+  Fit whole = fit;
+  whole.chunk_segments = 0;
+  Path one = fit_lines(whole, LineMethod::equal_error);
+  EXPECT_LE(first.pieces.size(), one.pieces.size() + first.pieces.size() / 4096);
+  bool same = first.pieces.size() == one.pieces.size();
+  for (std::size_t i = 0; same && i < one.pieces.size(); ++i) same = first.pieces[i].end == one.pieces[i].end;
+  EXPECT_FALSE(same) << "no cut was made";
+}
