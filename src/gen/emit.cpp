@@ -12,7 +12,7 @@ using geom::Sym;
 using geom::SymOp;
 using geom::Vec3;
 
-void Writer::block(const std::string& b) {
+void Writer::block(std::string_view b) {
   text += b;
   text += '\n';
   ++line;
@@ -39,13 +39,20 @@ std::string comment_text(std::string s) {
 
 int decimals_of(double increment) { return std::max(0, static_cast<int>(std::lround(-std::log10(increment)))); }
 
-std::string number(double v, int decimals) {
-  std::string s = fmt::format("{:.{}f}", v, decimals);
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-  }
+void append_number(std::string& out, double v, int decimals) {
+  char buf[400];  // fits any double in fixed notation
+  const std::size_t n = fmt::format_to_n(buf, sizeof buf, "{:.{}f}", v, decimals).size;
+  std::string_view s(buf, std::min(n, sizeof buf));
+  if (s.find('.') != std::string_view::npos)
+    while (s.back() == '0') s.remove_suffix(1);
   if (s == "-0." || s == "-0") s = "0.";
-  if (s.find('.') == std::string::npos) s += '.';
+  out += s;
+  if (s.find('.') == std::string_view::npos) out += '.';
+}
+
+std::string number(double v, int decimals) {
+  std::string s;
+  append_number(s, v, decimals);
   return s;
 }
 
@@ -53,10 +60,21 @@ bool is_lathe(const Options& o) { return o.profile.lathe(); }
 
 double feed_of(const Options& o) { return o.feed > 0 ? o.feed : (is_lathe(o) ? 0.1 : 200.0); }
 
+void AxisWords::append(std::string& out, const Vec3& p) const {
+  const bool lathe = is_lathe(o);
+  out += 'X';
+  append_number(out, lathe ? 2 * p[0] : p[0], decimals);
+  out += lathe ? " Z" : " Y";
+  append_number(out, lathe ? p[2] : p[1], decimals);
+  if (with_z && !lathe) {
+    out += " Z";
+    append_number(out, p[2], decimals);
+  }
+}
+
 std::string AxisWords::operator()(const Vec3& p) const {
-  if (is_lathe(o)) return fmt::format("X{} Z{}", number(2 * p[0], decimals), number(p[2], decimals));
-  std::string s = fmt::format("X{} Y{}", number(p[0], decimals), number(p[1], decimals));
-  if (with_z) s += fmt::format(" Z{}", number(p[2], decimals));
+  std::string s;
+  append(s, p);
   return s;
 }
 

@@ -2,6 +2,7 @@
 // axis words, the header, the approach and retract, curve expressions in macro variables.
 #pragma once
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -15,13 +16,14 @@ constexpr int kFirstTemp = 150;  // macro temporaries #150..
 struct Writer {
   std::string text;
   std::uint32_t line = 0;
-  void block(const std::string& b);
+  void block(std::string_view b);
   void lines(const std::string& text);  // each non-empty line a block
 };
 
 std::string comment_text(std::string s);
 int decimals_of(double increment);
 std::string number(double v, int decimals);
+void append_number(std::string& out, double v, int decimals);
 bool is_lathe(const Options& o);
 double feed_of(const Options& o);
 
@@ -31,6 +33,7 @@ struct AxisWords {
   int decimals;
   bool with_z;  // mill: Z follows the curve
   std::string operator()(const geom::Vec3& p) const;
+  void append(std::string& out, const geom::Vec3& p) const;
 };
 
 std::string header(const geom::Curve& curve, const Options& o, const std::string& method);

@@ -1,4 +1,5 @@
 #include "gen/generate.hpp"
+#include "geom/parallel.hpp"
 #include "geom/search.hpp"
 
 #include <fmt/format.h>
@@ -155,19 +156,26 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
   // there; NaN if it does not settle on a nearest point ahead of t_from.
   auto project_newton = [&](const Vec3& p, double t_from, double guess, geom::PlacedJet& j) {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-    const double settled = 1e-9 * (guess - t_from);
+    // a last step this small moves the jet by its Taylor terms (the next step would be ~1e-8)
+    const double settled = 1e-4 * (guess - t_from);
     double t = guess;
-    for (int i = 0; i < 6; ++i) {
+    for (int i = 0; i < 8; ++i) {
       j = geom::placed_jet(curve, place, t);
       Vec3 r{j.p[0] - p[0], j.p[1] - p[1], j.p[2] - p[2]};
       double slope = r[0] * j.d1[0] + r[1] * j.d1[1] + r[2] * j.d1[2];
       double bend = j.d1[0] * j.d1[0] + j.d1[1] * j.d1[1] + j.d1[2] * j.d1[2] + r[0] * j.d2[0] + r[1] * j.d2[1] +
                     r[2] * j.d2[2];
       if (!(bend > 0)) return kNaN;  // not a nearest point
-      double dt = -slope / bend;
-      if (std::fabs(dt) <= settled) return t;
+      const double dt = -slope / bend;
+      if (!(t + dt > t_from && t + dt <= t_last)) return kNaN;
+      if (std::fabs(dt) <= settled) {
+        for (int a = 0; a < 3; ++a) {
+          j.p[a] += dt * (j.d1[a] + 0.5 * dt * j.d2[a]);
+          j.d1[a] += dt * j.d2[a];
+        }
+        return t + dt;
+      }
       t += dt;
-      if (!(t > t_from && t <= t_last)) return kNaN;
     }
     return kNaN;
   };
@@ -189,42 +197,76 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
   s.start_t = t_prev;
   note(dist(first, jet_prev.p), t_prev);
   const Vec3 curve_end = map(curve.point(curve.t1()));
-  for (const auto& m : contour) {
-    const bool last_move = &m == &contour.back();
+  // 1. Where each move ends on the curve, in order: each projection starts from the one before.
+  struct Span {
     geom::Piece piece;
+    double t0, t1;
+    geom::PlacedJet j0, j1;
+    double end_distance;  // of the move's end from the curve
+  };
+  std::vector<Span> spans(contour.size());
+  double t_per_mm = 0;  // of the move before: the first guess of the next move's parameter step
+  for (std::size_t i = 0; i < contour.size(); ++i) {
+    const machine::Move& m = contour[i];
+    Span& span = spans[i];
+    geom::Piece& piece = span.piece;
     piece.start = {m.start[0], m.start[1], m.start[2]};
     piece.end = {m.end[0], m.end[1], m.end[2]};
     piece.arc = m.kind == machine::MoveKind::arc;
     piece.centre = m.center;
     piece.ccw = m.sweep > 0;
     s.path_length += m.length;
+    span.t0 = t_prev;
+    span.j0 = jet_prev;
     geom::PlacedJet jet_end;
     double t_end;
-    if (last_move && require_end) {  // the contour must reach the end of the curve
+    if (i + 1 == contour.size() && require_end) {  // the contour must reach the end of the curve
       if (dist(piece.end, curve_end) > o.tol)
         throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
                                              dist(piece.end, curve_end), curve.t1()));
       t_end = curve.t1();
       jet_end = geom::placed_jet(curve, place, t_end);
     } else {
-      const double speed = std::sqrt(jet_prev.d1[0] * jet_prev.d1[0] + jet_prev.d1[1] * jet_prev.d1[1] +
-                                     jet_prev.d1[2] * jet_prev.d1[2]);
-      t_end = project_newton(piece.end, t_prev, std::min(t_last, t_prev + m.length / std::max(speed, 1e-12)), jet_end);
+      if (!(t_per_mm > 0)) t_per_mm = 1 / std::max(std::sqrt(jet_prev.d1[0] * jet_prev.d1[0] + jet_prev.d1[1] * jet_prev.d1[1] +
+                                                             jet_prev.d1[2] * jet_prev.d1[2]),
+                                                   1e-12);
+      t_end = project_newton(piece.end, t_prev, std::min(t_last, t_prev + m.length * t_per_mm), jet_end);
       if (std::isnan(t_end)) {
         t_end = project(piece.end, t_prev, 3 * m.length + 10 * o.tol + 1e-3);
         jet_end = geom::placed_jet(curve, place, t_end);
       }
     }
-    note(dist(piece.end, jet_end.p), t_end);
-    const geom::Segment segment(piece.start, piece.end);
-    auto d = [&](const Vec3& p) { return piece.arc ? geom::point_arc_distance(p, piece, plane) : segment.distance(p); };
-    geom::Worst w = geom::max_distance(curve, place, t_prev, t_end, jet_prev, jet_end, d, trust);
-    note(w.distance, w.t);
-    s.deviation.emplace_back(t_end, w.distance);
+    t_per_mm = m.length > 0 ? (t_end - t_prev) / m.length : 0;
+    span.t1 = t_end;
+    span.j1 = jet_end;
+    span.end_distance = dist(piece.end, jet_end.p);
+    t_prev = t_end;
+    jet_prev = jet_end;
+  }
+  // 2. The deviation of each move, on all cores.
+  std::vector<geom::Worst> worst(spans.size());
+  constexpr std::size_t kBatch = 1024;
+  geom::for_each_on_cores((spans.size() + kBatch - 1) / kBatch, [&](std::size_t b) {
+    for (std::size_t i = b * kBatch; i < std::min(spans.size(), (b + 1) * kBatch); ++i) {
+      const Span& span = spans[i];
+      const geom::Segment segment(span.piece.start, span.piece.end);
+      auto d = [&](const Vec3& p) {
+        return span.piece.arc ? geom::point_arc_distance(p, span.piece, plane) : segment.distance(p);
+      };
+      worst[i] = geom::max_distance(curve, place, span.t0, span.t1, span.j0, span.j1, d, trust);
+    }
+  });
+  // 3. In order: the worst point, the deviation along the contour, the path drawn.
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    const Span& span = spans[i];
+    const geom::Piece& piece = span.piece;
+    note(span.end_distance, span.t1);
+    note(worst[i].distance, worst[i].t);
+    s.deviation.emplace_back(span.t1, worst[i].distance);
     if (piece.arc) {
       const int samples = 16;
       for (int k = 1; k < samples; ++k) {
-        double a = m.sweep * k / samples;
+        double a = contour[i].sweep * k / samples;
         double u0 = piece.start[plane.u_axis] - piece.centre[plane.u_axis];
         double v0 = piece.start[plane.v_axis] - piece.centre[plane.v_axis];
         Vec3 q = piece.start;
@@ -236,8 +278,6 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
     }
     s.path.push_back(piece.end);
     s.path_block.push_back(s.deviation.size() - 1);
-    t_prev = t_end;
-    jet_prev = jet_end;
   }
   return s;
 }
@@ -271,9 +311,12 @@ Emitted expanded_or_arcs(const Context& c) {
   Emitted e;
   e.first = w.line + 1;
   int motion = 1;
+  std::string line;
   for (const auto& p : path.pieces) {
     if (!p.arc) {
-      w.block(fmt::format("{}{}", motion == 1 ? "" : "G01 ", c.words(p.end)));
+      line = motion == 1 ? "" : "G01 ";
+      c.words.append(line, p.end);
+      w.block(line);
       motion = 1;
       continue;
     }

@@ -1,13 +1,11 @@
 #include "geom/approx.hpp"
+#include "geom/parallel.hpp"
 #include "geom/quintic.hpp"
 #include "geom/search.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <thread>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -212,8 +210,8 @@ double step_guess(const Fit& f, const Local& l, double h) {
   return std::min(range, std::sqrt(8 * h / k) / speed);
 }
 
-// Steps are searched to a thousandth: closer, the coordinate rounding decides more than the step.
-constexpr double kStepRel = 1e-3;
+// Steps are searched to 0.3 %: closer, the coordinate rounding decides more than the step does.
+constexpr double kStepRel = 3e-3;
 
 double band_offset(const Fit& f, bool band) { return band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0; }
 
@@ -305,25 +303,9 @@ Path lines_in_chunks(const Fit& f, bool band, bool radial = false) {
   const std::size_t chunks = cuts.size() - 1;
   if (chunks == 1) return lines_greedy(f, band, radial, cuts[0], cuts[1]);
   std::vector<Path> parts(chunks);
-  std::vector<std::exception_ptr> errors(chunks);
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t k; (k = next++) < chunks;) {
-      try {
-        parts[k] = lines_greedy(f, band, radial, cuts[k], cuts[k + 1]);
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-    }
-  };
-  const std::size_t helpers = std::min<std::size_t>(chunks, std::max(1u, std::thread::hardware_concurrency())) - 1;
-  std::vector<std::thread> threads;
-  for (std::size_t i = 0; i < helpers; ++i) threads.emplace_back(work);
-  work();
-  for (auto& t : threads) t.join();
+  for_each_on_cores(chunks, [&](std::size_t k) { parts[k] = lines_greedy(f, band, radial, cuts[k], cuts[k + 1]); });
   Path path;
   for (std::size_t k = 0; k < chunks; ++k) {
-    if (errors[k]) std::rethrow_exception(errors[k]);  // the first along the curve
     path.max_deviation = std::max(path.max_deviation, parts[k].max_deviation);
     path.pieces.insert(path.pieces.end(), parts[k].pieces.begin(), parts[k].pieces.end());
   }
