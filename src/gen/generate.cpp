@@ -253,7 +253,7 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
       auto d = [&](const Vec3& p) {
         return span.piece.arc ? geom::point_arc_distance(p, span.piece, plane) : segment.distance(p);
       };
-      worst[i] = geom::max_distance(curve, place, span.t0, span.t1, span.j0, span.j1, d, trust);
+      worst[i] = geom::max_distance(curve, place, span.t0, span.t1, span.j0, span.j1, d, trust, span.piece.arc ? 6 : 4);
     }
   });
   // 3. In order: the worst point, the deviation along the contour, the path drawn.

@@ -109,6 +109,8 @@ constexpr int kPieceSamples = 6;
 constexpr double kPieceResolution = 1e-6;
 // On the quintic the place of a maximum matters less: the curve's confirms it.
 constexpr double kModelResolution = 1e-4;
+// A segment's deviation has its humps at the ends (off the curve) and in the middle: four samples.
+constexpr int kLineSamples = 4;
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb,
                    const std::function<double(const Vec3&)>& dist) {
@@ -127,10 +129,10 @@ namespace {
 
 // The maximum of dist over the quintic through the jets at both ends of a step h long, in s = 0..1.
 template <class Dist>
-Maximum on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist dist) {
+Maximum on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist dist, int samples) {
   const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
   auto at = [&](double s) { return dist(s == 0 ? a.p : s == 1 ? b.p : q.at(s)); };
-  return sampled_maximum(at, 0.0, 1.0, kPieceSamples, kModelResolution);
+  return sampled_maximum(at, 0.0, 1.0, samples, kModelResolution);
 }
 
 // The curve's maximum near the quintic's: the curve must agree with the quintic there within
@@ -157,10 +159,10 @@ double confirmed(OnCurve on_curve, double ta, double h, const Maximum& model, do
 }  // namespace
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
-                   const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust) {
+                   const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust, int samples) {
   const double h = tb - ta;
   if (!(h > 0)) return {dist(a.p), ta};
-  const Maximum m = on_quintic(a, b, h, dist);
+  const Maximum m = on_quintic(a, b, h, dist, samples);
   const double v = confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, m, trust);
   if (std::isnan(v)) return max_distance(curve, place, ta, tb, dist);
   return {v, ta + h * m.at};
@@ -238,7 +240,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to) 
         double e;
         if (on_model) {
           const Segment ab(a.at, end.at);
-          m = on_quintic(a.curve, end.curve, tb - ta, [&](const Vec3& p) { return ab.distance(p); });
+          m = on_quintic(a.curve, end.curve, tb - ta, [&](const Vec3& p) { return ab.distance(p); }, kLineSamples);
           e = m.value;
         } else {
           e = segment_error(f, ta, tb, a, end, radial);

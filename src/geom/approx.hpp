@@ -81,9 +81,11 @@ PlacedJet placed_jet(const Curve& curve, const Placement& place, double t);
 // max_distance with the placed jets at ta and tb known: the maximum is placed on the quintic
 // through them and its value taken on the curve, where it must be a local maximum (the curve no
 // higher a little to either side) and agree with the quintic within `trust`; otherwise (a step
-// too long for the quintic) the search on the curve alone.
+// too long for the quintic) the search on the curve alone. `samples` steps on the quintic before
+// Brent's method: 4 for a segment (humps at the ends and in the middle), 6 for an arc.
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
-                   const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust);
+                   const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust,
+                   int samples = 6);
 
 double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b);
 // The same for many points against one segment (its direction and length worked out once).
