@@ -127,12 +127,23 @@ PlacedJet placed_jet(const Curve& curve, const Placement& place, double t) {
 
 namespace {
 
-// The maximum of dist over the quintic through the jets at both ends of a step h long, in s = 0..1.
+// The highest two maxima of dist over the quintic through the jets at both ends of a step h
+// long, in s = 0..1 (second: value -inf if there is one hump).
+struct ModelMaxima {
+  Maximum best, second;
+};
 template <class Dist>
-Maximum on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist dist, int samples) {
+ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist dist, int samples) {
   const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
   auto at = [&](double s) { return dist(s == 0 ? a.p : s == 1 ? b.p : q.at(s)); };
-  return sampled_maximum(at, 0.0, 1.0, samples, kModelResolution);
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  ModelMaxima m{{kNone, 0}, {kNone, 0}};
+  each_sampled_maximum(at, 0.0, 1.0, samples, kModelResolution, [&](const Maximum& x) {
+    if (std::isnan(m.best.value)) return;
+    if (std::isnan(x.value) || x.value > m.best.value) m.second = m.best, m.best = x;
+    else if (x.value > m.second.value) m.second = x;
+  });
+  return m;
 }
 
 // The curve's maximum near the quintic's: the curve must agree with the quintic there within
@@ -156,16 +167,28 @@ double confirmed(OnCurve on_curve, double ta, double h, const Maximum& model, do
   return v - 0.125 * (after - before) * (after - before) / bend;  // the parabola's vertex value
 }
 
+// The curve's maximum over the quintic's humps: each one within trust of the highest confirmed
+// on the curve; NaN if one is not.
+template <class OnCurve>
+Maximum confirmed(OnCurve on_curve, double ta, double h, const ModelMaxima& model, double trust) {
+  Maximum out{confirmed(on_curve, ta, h, model.best, trust), model.best.at};
+  if (model.second.value >= model.best.value - trust) {
+    const double v = confirmed(on_curve, ta, h, model.second, trust);
+    if (std::isnan(v) || v > out.value) out = {v, model.second.at};
+  }
+  return out;
+}
+
 }  // namespace
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
                    const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust, int samples) {
   const double h = tb - ta;
   if (!(h > 0)) return {dist(a.p), ta};
-  const Maximum m = on_quintic(a, b, h, dist, samples);
-  const double v = confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, m, trust);
-  if (std::isnan(v)) return max_distance(curve, place, ta, tb, dist);
-  return {v, ta + h * m.at};
+  const ModelMaxima m = on_quintic(a, b, h, dist, samples);
+  const Maximum v = confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, m, trust);
+  if (std::isnan(v.value)) return max_distance(curve, place, ta, tb, dist);
+  return {v.value, ta + h * v.at};
 }
 
 namespace {
@@ -230,18 +253,18 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to) 
   while (ta < t_end) {
     Vertex b{};
     double b_error = 0, b_t = ta;  // the longest segment within the tolerance tried so far
-    Maximum b_model{};
+    ModelMaxima b_model{};
     const double predicted = step_guess(f, a.curve, f.tol + offset);
     auto longest = [&](bool on_model) {
       b_t = ta;
       auto error_to = [&](double tb) {
         Vertex end = vertex(f, tb, offset);
-        Maximum m{};
+        ModelMaxima m{};
         double e;
         if (on_model) {
           const Segment ab(a.at, end.at);
           m = on_quintic(a.curve, end.curve, tb - ta, [&](const Vec3& p) { return ab.distance(p); }, kLineSamples);
-          e = m.value;
+          e = m.best.value;
         } else {
           e = segment_error(f, ta, tb, a, end, radial);
         }
@@ -260,7 +283,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to) 
     if (on_model) {
       const Segment ab(a.at, b.at);
       auto on_curve = [&](double t) { return ab.distance(f.place(f.curve.point(t))); };
-      double e = confirmed(on_curve, ta, tb - ta, b_model, trust);
+      double e = confirmed(on_curve, ta, tb - ta, b_model, trust).value;
       if (e <= f.tol) b_error = e;
       else tb = longest(false);  // the quintic misleads here: every trial on the curve
     }

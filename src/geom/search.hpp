@@ -162,27 +162,49 @@ Maximum brent_maximum(F f, double a, double b, double x, double fx, double resol
   return {fx, x};
 }
 
-// The largest value of f on [lo, hi]: `samples` equal steps, then Brent's method between the
-// neighbours of the best sample (f unimodal there) until the maximum is placed within
-// `resolution` (default: a billionth of [lo, hi]; the value is then exact to about 1e-17 of
-// its curvature scale).
-template <class F>
-Maximum sampled_maximum(F f, double lo, double hi, int samples, double resolution = 0) {
-  Maximum best{f(lo), lo};
-  int best_i = 0;
-  for (int i = 1; i <= samples; ++i) {
-    double t = i == samples ? hi : lo + (hi - lo) * i / samples;
-    double v = f(t);
-    if (v > best.value) best = {v, t}, best_i = i;
+// Each local maximum of f on [lo, hi] that `samples` equal steps show (a sample no lower than
+// its neighbours), placed by Brent's method between those neighbours within `resolution`
+// (default: a billionth of [lo, hi]; the value is then exact to about 1e-17 of its curvature
+// scale); an end sample falling away from the end is that end's maximum. on_max(Maximum) is
+// called for each. Every one is refined, not only the highest sample: two samples straddling a
+// hump can both lie below an end that the hump itself overtops.
+template <class F, class OnMax>
+void each_sampled_maximum(F f, double lo, double hi, int samples, double resolution, OnMax on_max) {
+  constexpr int kMostSamples = 64;
+  if (samples < 1 || samples > kMostSamples) throw std::invalid_argument("each_sampled_maximum: 1..64 samples");
+  double at[kMostSamples + 1], value[kMostSamples + 1];
+  for (int i = 0; i <= samples; ++i) {
+    at[i] = i == samples ? hi : lo + (hi - lo) * i / samples;
+    value[i] = f(at[i]);
+    if (std::isnan(value[i])) return on_max(Maximum{value[i], at[i]});  // undefined there: no maximum
   }
   if (resolution <= 0) resolution = 1e-9 * (hi - lo);
-  // at an end and falling from it: that end is the maximum of its (unimodal) neighbourhood
-  if (best_i == 0 && f(lo + resolution) <= best.value) return best;
-  if (best_i == samples && f(hi - resolution) <= best.value) return best;
-  double a = lo + (hi - lo) * std::max(0, best_i - 1) / samples;
-  double b = lo + (hi - lo) * std::min(samples, best_i + 1) / samples;
-  Maximum m = brent_maximum(f, a, b, best.at, best.value, resolution);
-  return m.value > best.value ? m : best;
+  for (int i = 0; i <= samples; ++i) {
+    const bool above_before = i == 0 || value[i] > value[i - 1];
+    const bool above_after = i == samples || value[i] >= value[i + 1];
+    if (!above_before || !above_after) continue;
+    if (i == 0 && f(lo + resolution) <= value[0]) {
+      on_max(Maximum{value[0], lo});
+      continue;
+    }
+    if (i == samples && f(hi - resolution) <= value[samples]) {
+      on_max(Maximum{value[samples], hi});
+      continue;
+    }
+    const Maximum sample{value[i], at[i]};
+    const Maximum m = brent_maximum(f, at[std::max(0, i - 1)], at[std::min(samples, i + 1)], at[i], value[i], resolution);
+    on_max(m.value > sample.value ? m : sample);
+  }
+}
+
+// The largest value of f on [lo, hi] (the highest of each_sampled_maximum's; NaN where f is).
+template <class F>
+Maximum sampled_maximum(F f, double lo, double hi, int samples, double resolution = 0) {
+  Maximum best{-std::numeric_limits<double>::infinity(), lo};
+  each_sampled_maximum(f, lo, hi, samples, resolution, [&](const Maximum& m) {
+    if (std::isnan(m.value) || m.value > best.value) best = m;
+  });
+  return best;
 }
 
 }  // namespace ncurve::geom

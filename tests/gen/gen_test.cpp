@@ -21,7 +21,7 @@ geom::Curve curve(const std::string& name, std::map<std::string, double> values 
 
 // ceil of the integral of sqrt(kappa / 8h) ds over r = 1 + 2 phi, phi in 0..2pi (Simpson, closed-form kappa)
 int reference_segments(double h) {
-  const int n = 20000;
+  const int n = 50000;
   double sum = 0;
   for (int i = 0; i <= n; ++i) {
     double phi = 2 * std::numbers::pi * i / n;
@@ -526,5 +526,60 @@ TEST(Gen, CurveCycleTakesItsCurveAsArguments) {
     shipped << f.rdbuf();
     EXPECT_EQ(g.macro, shipped.str()) << name << ": run scripts/make_cycles.sh";
     EXPECT_EQ(g.parameters[0].first, std::to_string(6050 + program - 9010)) << name;
+  }
+}
+
+TEST(Gen, RoundTripDeviationIsTheBruteForceDistance) {
+  // The round trip's maximum deviation (Newton projections, the quintic between them, confirmed
+  // on the curve) against brute force: the curve sampled densely, each sample's distance to the
+  // nearest move, and each vertex's distance to the curve, both polished by golden sections.
+  auto spiral = curve("spiral");
+  for (double tol : {0.005, 0.001}) {
+    gen::Options o = options(gen::Form::expanded, tol);
+    o.profile.increment = 0.0001;
+    gen::Result r = gen::generate(spiral, o);
+    ASSERT_TRUE(r.within_tolerance);
+    const auto& path = r.stats.path;
+    const double z = path.front()[2];
+    auto at = [&](double t) {
+      geom::Vec3 p = spiral.point(t);
+      return geom::Vec3{p[0], p[1], z};
+    };
+    auto golden = [](auto f, double lo, double hi) {  // maximum of a unimodal f
+      const double g = 0.3819660112501051;
+      for (int i = 0; i < 60; ++i) {
+        double a = lo + g * (hi - lo), b = hi - g * (hi - lo);
+        if (f(a) < f(b)) lo = a; else hi = b;
+      }
+      return f(0.5 * (lo + hi));
+    };
+    const int n = 50000;
+    const double dt = 360.0 / n;
+    double brute = 0;
+    std::size_t seg = 0;
+    auto to_path = [&](double t) {  // distance to the nearest of the moves about `seg`
+      double best = 1e300;
+      for (std::size_t k = seg > 2 ? seg - 2 : 0; k < std::min(path.size() - 1, seg + 3); ++k)
+        best = std::min(best, geom::point_segment_distance(at(t), path[k], path[k + 1]));
+      return best;
+    };
+    for (int i = 0; i <= n; ++i) {
+      const double t = i * dt;
+      while (seg + 1 < path.size() - 1 &&
+             geom::point_segment_distance(at(t), path[seg + 1], path[seg + 2]) <
+                 geom::point_segment_distance(at(t), path[seg], path[seg + 1]))
+        ++seg;
+      if (to_path(t) > 0.9 * tol) brute = std::max(brute, golden(to_path, std::max(0.0, t - dt), std::min(360.0, t + dt)));
+    }
+    std::size_t near = 0;  // sample index nearest the vertex
+    for (const auto& v : path) {
+      auto closeness = [&](double t) {
+        geom::Vec3 p = at(t);
+        return -std::hypot(p[0] - v[0], p[1] - v[1]);
+      };
+      while (near < static_cast<std::size_t>(n) && closeness((near + 1) * dt) > closeness(near * dt)) ++near;
+      brute = std::max(brute, -golden(closeness, std::max(0.0, (near - 1.0) * dt), std::min(360.0, (near + 1.0) * dt)));
+    }
+    EXPECT_NEAR(r.stats.max_deviation, brute, 1e-9 + 1e-6 * tol) << tol;
   }
 }

@@ -75,3 +75,11 @@ TEST(Search, LongestWithinNamesThePlaceWhenNoStepFits) {
     EXPECT_STREQ(e.what(), "no step from t = 5");
   }
 }
+
+TEST(Search, SampledMaximumRefinesAHumpThatItsSamplesStraddleBelowAnEnd) {
+  // a narrow hump of height 1 at 0.41 between samples (1/3, 1/2 at 0.2 and 0.1) and an end at 0.97
+  auto f = [](double t) { return std::exp(-std::pow((t - 0.41) / 0.06, 2)) + 0.97 * std::pow(t, 20); };
+  Maximum m = sampled_maximum(f, 0.0, 1.0, 6, 1e-9);
+  EXPECT_NEAR(m.at, 0.41, 1e-6);
+  EXPECT_NEAR(m.value, f(0.41), 1e-12);  // 1 + 0.97 * 0.41^20: the end's tail adds 1.7e-8
+}
