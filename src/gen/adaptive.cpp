@@ -1,136 +1,85 @@
-// adaptive-macro: a WHILE loop in which the control takes each next parameter step from the
-// curvature ahead, with the vertices moved outward by the tolerance band (as the equal-error
-// lines), so that the executed moves are about as few as the equal-error expansion.
+// adaptive-macro: a WHILE loop in which the control finds each move itself, as the equal-error
+// fit does: the longest step whose deviation from the curve is within the aim. The deviation is
+// estimated at the middle of the step from the curve's point and derivatives there (the hump of
+// the parabola through them), with the vertices outward by the tolerance band and rounded to the
+// increment as the control will round them; the next step is tried from the error model
+// (sag + band grows as the step squared).
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 #include "gen/forms.hpp"
-#include "geom/search.hpp"
 
 namespace ncurve::gen::detail {
 namespace {
 
 using geom::Sym;
-using geom::SymOp;
 using geom::Vec3;
 
-// Derivatives of the contour in the plane of the control's arcs (mill X, Y; lathe Z, X as a radius),
-// or in space for a curve that rises in Z.
-struct Local {
-  Vec3 p, d1, d2;  // machine coordinates
+constexpr int kTrials = 6;        // trials per move once one is within the aim
+constexpr double kClose = 0.995;  // a trial within the aim and this close to it ends the search
+constexpr double kShrink = 0.99;  // after a trial over the aim, the next is this much shorter
+constexpr int kDigits = 9;        // decimals of the macro's constants
+
+// The loop's variables. Locals keep the blocks short (a cycle's arguments are copied out before
+// the loop): #1 aim, #2 band, #3 longest t step, #5 t at the vertex A, #6 t step to try, #7 t
+// tried, #8 longest step within the aim, #9 trials, #10 done, #11 phase (0 vertex, 1 middle), #12
+// t of the best vertex, #16..#20 and #33 scratch; from #21 the vectors A, B (tried), best B and the
+// chord, dims each. The curve's point and derivatives are common variables #120.., their shared
+// parts temporaries from #150.
+namespace var {
+constexpr int vectors = 21;
+constexpr int jet = 120;
+}  // namespace var
+
+struct Loop {
+  const Context& c;
+  std::vector<int> axes;  // machine axes in the loop (internal indices)
+  int dims() const { return static_cast<int>(axes.size()); }
+  int a(int i) const { return var::vectors + i; }
+  int b(int i) const { return var::vectors + dims() + i; }
+  int best_b(int i) const { return var::vectors + 2 * dims() + i; }
+  int chord(int i) const { return var::vectors + 3 * dims() + i; }
+  int p(int i) const { return var::jet + i; }
+  int d1(int i) const { return var::jet + dims() + i; }
+  int d2(int i) const { return var::jet + 2 * dims() + i; }
+  int scratch(int i) const { return 17 + i; }  // three at most
+
+  // sum over the axes of f(i), as macro text
+  template <class F>
+  std::string sum(F f) const {
+    std::string s;
+    for (int i = 0; i < dims(); ++i) s += (i ? "+" : "") + f(i);
+    return s;
+  }
+  // "ROUND[[e]*1000.]/1000.": where the control puts a coordinate of axis i
+  std::string rounded(int i, const std::string& e) const {
+    const std::string m = number(1 / c.fit.grid.step[static_cast<std::size_t>(axes[static_cast<std::size_t>(i)])], 6);
+    return fmt::format("ROUND[[{}]*{}]/{}", e, m, m);
+  }
+  // The words of a move to the vertex in variables first.. (lathe X as a diameter)
+  std::string words(int first) const {
+    std::string out;
+    auto slot = [&](int axis) {
+      for (int i = 0; i < dims(); ++i)
+        if (axes[static_cast<std::size_t>(i)] == axis) return first + i;
+      return -1;
+    };
+    if (is_lathe(c.o)) return fmt::format("X[2*#{}] Z[#{}]", slot(0), slot(2));
+    out = fmt::format("X[#{}] Y[#{}]", slot(0), slot(1));
+    if (c.with_z) out += fmt::format(" Z[#{}]", slot(2));
+    return out;
+  }
 };
 
-Local local(const Context& c, double t) {
-  geom::Curve::Jet j = c.curve.jet(t);
-  Local l{c.map(j.p), {}, {}};
-  for (int k = 0; k < 3; ++k) {
-    l.d1[k] = c.map.from[k] >= 0 ? j.d1[c.map.from[k]] : 0.0;
-    l.d2[k] = c.map.from[k] >= 0 ? j.d2[c.map.from[k]] : 0.0;
-  }
+Loop loop_of(const Context& c) {
+  Loop l{c, {}};
+  if (c.with_z) l.axes = {0, 1, 2};
+  else l.axes = {c.fit.plane.u_axis, c.fit.plane.v_axis};
   return l;
-}
-
-// Speed, signed curvature in the plane (space: unsigned), as the macro computes them.
-struct Turning {
-  double speed, signed_k, k;
-};
-
-Turning turning(const Context& c, const Local& l) {
-  if (c.with_z) {
-    double s2 = l.d1[0] * l.d1[0] + l.d1[1] * l.d1[1] + l.d1[2] * l.d1[2];
-    double a2 = l.d2[0] * l.d2[0] + l.d2[1] * l.d2[1] + l.d2[2] * l.d2[2];
-    double va = l.d1[0] * l.d2[0] + l.d1[1] * l.d2[1] + l.d1[2] * l.d2[2];
-    double s = std::sqrt(s2);
-    double k = std::sqrt(std::fabs(s2 * a2 - va * va)) / (s * s * s);
-    return {s, k, k};
-  }
-  const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
-  double s = std::sqrt(l.d1[u] * l.d1[u] + l.d1[v] * l.d1[v]);
-  double k = (l.d1[u] * l.d2[v] - l.d1[v] * l.d2[u]) / (s * s * s);
-  return {s, k, std::fabs(k)};
-}
-
-// Curvature past an inflection weighs this much of its extrapolated size at the end of the step.
-constexpr double kEndWeight = 0.75;
-constexpr int kDigits = 12;  // decimals of the macro's constants
-
-// The vertex for parameter t: the curve point moved outward by the band (not at the curve's
-// ends, and not for a space curve), snapped as the control rounds it.
-Vec3 vertex(const Context& c, const AdaptiveRule& r, double t, const Local& l, const Turning& tn) {
-  const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
-  double off = tn.signed_k > 0 ? -r.offset : r.offset;
-  if (t >= c.curve.t1() || t <= c.curve.t0()) off = 0;
-  Vec3 p = l.p;
-  if (!c.with_z) {
-    p[u] += off * -l.d1[v] / tn.speed;
-    p[v] += off * l.d1[u] / tn.speed;
-  }
-  return c.fit.grid.snap(p);
-}
-
-// The curvature the first step is taken for: the one whose step is the longest first move
-// within the tolerance (the macro starts with it instead of a curvature behind the start).
-// Constants as the macro prints them, so that the control computes with the same numbers.
-double printed(double v) { return std::stod(number(v, kDigits)); }
-
-double first_speed(const Context& c) { return printed(turning(c, local(c, c.curve.t0())).speed); }
-
-double first_curvature(const Context& c, const AdaptiveRule& r) {
-  return printed(std::pow(r.factor / (r.first_step * first_speed(c)), 2));
-}
-
-// The vertices the macro produces for a rule, step by step as the control computes them.
-std::vector<std::pair<double, Vec3>> run_rule(const Context& c, const AdaptiveRule& r) {
-  const double t0 = c.curve.t0(), t1 = c.curve.t1();
-  std::vector<std::pair<double, Vec3>> out{{t0, c.start}};
-  double t = t0;
-  Turning tn = turning(c, local(c, t));
-  const double k_first = first_curvature(c, r);
-  tn.signed_k = tn.k = k_first;
-  tn.speed = first_speed(c);
-  double k_prev = k_first, dt_prev = t1 - t0;
-  while (t < t1) {
-    // signed curvature extrapolated along the last step: its middle and (weighted) its end
-    double ahead = std::fabs(1.5 * tn.signed_k - 0.5 * k_prev);
-    double at_end = std::fabs(2 * tn.signed_k - k_prev) * kEndWeight;
-    if (ahead < at_end) ahead = at_end;
-    if (ahead < 0.5 * tn.k) ahead = 0.5 * tn.k;
-    if (ahead < r.min_curvature) ahead = r.min_curvature;
-    k_prev = tn.signed_k;
-    double dt = r.factor / std::sqrt(ahead) / tn.speed;
-    if (dt > 1.5 * dt_prev) dt = 1.5 * dt_prev;
-    dt_prev = dt;
-    t += dt;
-    if (t > t1) t = t1;
-    Local l = local(c, t);
-    tn = turning(c, l);
-    out.emplace_back(t, vertex(c, r, t, l, tn));
-    if (out.size() > 20'000'000) throw std::runtime_error("adaptive macro: more than 20 million moves");
-  }
-  return out;
-}
-
-double rule_error(const Context& c, const std::vector<std::pair<double, Vec3>>& vs) {
-  double worst = 0;
-  for (std::size_t i = 1; i < vs.size(); ++i) {
-    const Vec3 &a = vs[i - 1].second, &b = vs[i].second;
-    auto w = geom::max_distance(c.curve, c.fit.place, vs[i - 1].first, vs[i].first,
-                                [&](const Vec3& p) { return geom::point_segment_distance(p, a, b); });
-    worst = std::max(worst, w.distance);
-  }
-  return std::max(worst, geom::point_segment_distance(c.map(c.curve.point(c.curve.t1())), vs.back().second,
-                                                      vs.back().second));
-}
-
-std::string assign(int var, const Sym& e, int& next_temp, std::vector<std::string>& blocks) {
-  std::vector<std::pair<int, Sym>> temps;
-  Sym limited = geom::limit_depth(e, 5, next_temp, temps);
-  for (const auto& [t, s] : temps) blocks.push_back(fmt::format("#{}={}", t, geom::to_macro(s)));
-  blocks.push_back(fmt::format("#{}={}", var, geom::to_macro(limited)));
-  return blocks.back();
 }
 
 Sym axis_derivative(const Context& c, int axis, int order) {
@@ -138,18 +87,152 @@ Sym axis_derivative(const Context& c, int axis, int order) {
   return (order == 1 ? c.curve.first() : c.curve.second())[c.map.from[axis]];
 }
 
-}  // namespace
+void assign(Writer& w, int var, const Sym& e, int depth, int& next_temp) {
+  std::vector<std::pair<int, Sym>> temps;
+  Sym limited = geom::limit_depth(e, depth, next_temp, temps);
+  for (const auto& [t, s] : temps) w.block(fmt::format("#{}={}", t, geom::to_macro(s)));
+  w.block(fmt::format("#{}={}", var, geom::to_macro(limited)));
+}
 
-AdaptiveRule adaptive_rule(const Context& c) {
-  const double tol = c.fit.tol;
-  const double rounding = c.fit.grid.worst_error();
-  if (tol <= rounding)
-    throw std::runtime_error(fmt::format("tolerance {} mm is not above the coordinate rounding ({:.6f} mm)", tol,
-                                         rounding));
-  AdaptiveRule r;
-  // a plane contour's vertices sit outward by the band, the chords' middle inward by as much
-  r.offset = printed(c.with_z ? 0.0 : tol - rounding);
-  const double nominal = c.with_z ? std::sqrt(8 * (tol - rounding)) : 4 * std::sqrt(r.offset);
+bool uses_any(const Sym& e, const std::set<int>& vars) {
+  if (e->op == geom::SymOp::var) return vars.count(e->var) > 0;
+  return (e->a && uses_any(e->a, vars)) || (e->b && uses_any(e->b, vars));
+}
+
+// The curve's point and derivatives at #100 into #120..; parts that do not change with t are
+// written before the loop (to `before`).
+void jet_blocks(const Loop& l, Writer& before, Writer& inside, int& next_temp) {
+  const Context& c = l.c;
+  std::vector<Sym> outputs;
+  for (int order = 0; order < 3; ++order)
+    for (int axis : l.axes)
+      outputs.push_back(order == 0 ? axis_sym(c.curve, c.map, axis) : axis_derivative(c, axis, order));
+  std::vector<std::pair<int, Sym>> temps;
+  std::vector<Sym> shared = geom::share_subexpressions(outputs, next_temp, temps);
+  std::set<int> varying{geom::kTVar};
+  for (const auto& [t, e] : temps) {
+    const bool moves = uses_any(e, varying);
+    if (moves) varying.insert(t);
+    assign(moves ? inside : before, t, e, 5, next_temp);
+  }
+  for (std::size_t i = 0; i < shared.size(); ++i) assign(inside, var::jet + static_cast<int>(i), shared[i], 5, next_temp);
+}
+
+double printed(double v) { return std::stod(number(v, kDigits)); }
+
+// The loop itself, from the vertex A (#21..) at t = #5 to #111; returns the line of its G01.
+std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text) {
+  const int n = l.dims();
+  auto each = [&](auto f) {
+    for (int i = 0; i < n; ++i) w.block(f(i));
+  };
+  w.block("WHILE [#5 LT #111] DO1");
+  w.block("#8=0");
+  w.block("#9=0");
+  w.block("#10=0");
+  w.block("WHILE [#10 EQ 0] DO2");
+  w.block("#7=#5+#6");
+  w.block("IF [#7 GT #111] THEN #7=#111");
+  w.block("#100=#7");
+  w.lines("N3 " + jet_text);
+  w.block("IF [#100 NE #7] GOTO 2");
+  // the vertex at #7: the curve point outward by the band (not at the end), rounded
+  if (n == 2) {
+    w.block(fmt::format("#16=#{}*#{}-#{}*#{}", l.d1(0), l.d2(1), l.d1(1), l.d2(0)));
+    w.block(fmt::format("#17=SQRT[#{}*#{}+#{}*#{}]", l.d1(0), l.d1(0), l.d1(1), l.d1(1)));
+    w.block("#20=#2/#17");
+    w.block("IF [#16 GT 0] THEN #20=-#20");
+    w.block("IF [#7 GE #111] THEN #20=0");
+    w.block(fmt::format("#{}={}", l.b(0), l.rounded(0, fmt::format("#{}-#20*#{}", l.p(0), l.d1(1)))));
+    w.block(fmt::format("#{}={}", l.b(1), l.rounded(1, fmt::format("#{}+#20*#{}", l.p(1), l.d1(0)))));
+  } else {
+    w.block(fmt::format("#16=[{}]/[{}]", l.sum([&](int i) { return fmt::format("#{}*#{}", l.d1(i), l.d2(i)); }),
+                        l.sum([&](int i) { return fmt::format("#{}*#{}", l.d1(i), l.d1(i)); })));
+    each([&](int i) { return fmt::format("#{}=#{}-#16*#{}", l.scratch(i), l.d2(i), l.d1(i)); });
+    w.block(fmt::format("#16=SQRT[{}]", l.sum([&](int i) { return fmt::format("#{}*#{}", l.scratch(i), l.scratch(i)); })));
+    w.block("#20=0");
+    w.block("IF [#16 GT 0] THEN #20=-#2/#16");
+    w.block("IF [#7 GE #111] THEN #20=0");
+    each([&](int i) {
+      return fmt::format("#{}={}", l.b(i), l.rounded(i, fmt::format("#{}+#20*#{}", l.p(i), l.scratch(i))));
+    });
+  }
+  // the chord B - A; the plane keeps its length in #19, space makes it a unit vector
+  each([&](int i) { return fmt::format("#{}=#{}-#{}", l.chord(i), l.b(i), l.a(i)); });
+  const int length = n == 2 ? 19 : 16;
+  w.block(fmt::format("#{}=SQRT[{}]", length,
+                      l.sum([&](int i) { return fmt::format("#{}*#{}", l.chord(i), l.chord(i)); })));
+  w.block(fmt::format("IF [#{} EQ 0] THEN #{}=1", length, length));
+  if (n == 3) each([&](int i) { return fmt::format("#{}=#{}/#16", l.chord(i), l.chord(i)); });
+  w.block("#100=0.5*[#5+#7]");
+  w.block("GOTO 3");
+  // the middle of the step: distance #16 from the chord, its first (#33) and second (#20)
+  // derivative across it, and the hump of the parabola through them, within the step (the plane:
+  // all three times the chord's length)
+  if (n == 2) {
+    w.block(fmt::format("N2 #16=[#{}-#{}]*#{}-[#{}-#{}]*#{}", l.p(1), l.a(1), l.chord(0), l.p(0), l.a(0),
+                        l.chord(1)));
+    w.block(fmt::format("#33=#{}*#{}-#{}*#{}", l.d1(1), l.chord(0), l.d1(0), l.chord(1)));
+    w.block(fmt::format("#20=#{}*#{}-#{}*#{}", l.d2(1), l.chord(0), l.d2(0), l.chord(1)));
+  } else {
+    w.block(fmt::format("N2 #{}=#{}-#{}", l.scratch(0), l.p(0), l.a(0)));
+    for (int i = 1; i < n; ++i) w.block(fmt::format("#{}=#{}-#{}", l.scratch(i), l.p(i), l.a(i)));
+    w.block(fmt::format("#16={}", l.sum([&](int i) { return fmt::format("#{}*#{}", l.scratch(i), l.chord(i)); })));
+    each([&](int i) { return fmt::format("#{}=#{}-#16*#{}", l.scratch(i), l.scratch(i), l.chord(i)); });
+    w.block(fmt::format("#16=SQRT[{}]", l.sum([&](int i) { return fmt::format("#{}*#{}", l.scratch(i), l.scratch(i)); })));
+    w.block("#20=0");
+    w.block("IF [#16 GT 0] THEN #20=1/#16");
+    w.block(fmt::format("#33=[{}]*#20", l.sum([&](int i) { return fmt::format("#{}*#{}", l.d1(i), l.scratch(i)); })));
+    w.block(fmt::format("#20=[{}]*#20", l.sum([&](int i) { return fmt::format("#{}*#{}", l.d2(i), l.scratch(i)); })));
+  }
+  w.block("#17=0");
+  w.block("IF [#20 NE 0] THEN #17=-#33/#20");
+  w.block("#18=#7-#100");
+  w.block("IF [#17 GT #18] THEN #17=#18");
+  w.block("IF [#17 LT -#18] THEN #17=-#18");
+  w.block(n == 2 ? "#16=ABS[#16+[#33+0.5*#20*#17]*#17]/#19" : "#16=ABS[#16+[#33+0.5*#20*#17]*#17]");
+  // keep the longest step within the aim; stop close to the aim, at the end, or after the trials
+  w.block("#18=#7-#5");
+  w.block("IF [#16 GT #1] GOTO 4");
+  w.block("IF [#18 LE #8] GOTO 5");
+  w.block("#8=#18");
+  w.block("#12=#7");
+  each([&](int i) { return fmt::format("#{}=#{}", l.best_b(i), l.b(i)); });
+  w.block(fmt::format("N5 IF [#16 GE {}*#1] THEN #10=1", number(kClose, 6)));
+  w.block("N4 #9=#9+1");
+  w.block(fmt::format("IF [#9 GE {}] THEN #10=#8", kTrials));
+  // the next trial: sag + band grows as the step squared
+  w.block("#6=#18*SQRT[[#1+#2]/[#16+#2]]");
+  w.block(fmt::format("IF [#16 GT #1] THEN #6={}*#6", number(kShrink, 6)));
+  w.block("IF [#6 GT #3] THEN #6=#3");
+  w.block("END2");
+  w.block(fmt::format("G01 {}", l.words(l.best_b(0))));
+  const std::uint32_t move = w.line;
+  w.block("#5=#12");
+  each([&](int i) { return fmt::format("#{}=#{}", l.a(i), l.best_b(i)); });
+  w.block("#6=#8");
+  w.block("END1");
+  return move;
+}
+
+// The start vertex A (#21..): the curve point at #110, rounded.
+Sym renamed(const Sym& e, int from, int to) {
+  if (e->op == geom::SymOp::var) return e->var == from ? geom::variable(to) : e;
+  if (!e->a) return e;
+  return geom::make(e->op, renamed(e->a, from, to), e->b ? renamed(e->b, from, to) : nullptr);
+}
+
+void start_blocks(const Loop& l, Writer& w, int& next_temp) {
+  for (int i = 0; i < l.dims(); ++i) {
+    std::vector<std::pair<int, Sym>> temps;
+    Sym at_start = renamed(axis_sym(l.c.curve, l.c.map, l.axes[static_cast<std::size_t>(i)]), geom::kTVar, 110);
+    Sym limited = geom::limit_depth(at_start, 3, next_temp, temps);
+    for (const auto& [t, s] : temps) w.block(fmt::format("#{}={}", t, geom::to_macro(s)));
+    w.block(fmt::format("#{}={}", l.a(i), l.rounded(i, geom::to_macro(limited))));
+  }
+}
+
+double curve_length(const Context& c) {
   double length = 0;
   Vec3 prev = c.map(c.curve.point(c.curve.t0()));
   for (int i = 1; i <= 256; ++i) {
@@ -157,146 +240,72 @@ AdaptiveRule adaptive_rule(const Context& c) {
     length += std::hypot(q[0] - prev[0], q[1] - prev[1], q[2] - prev[2]);
     prev = q;
   }
-  // no chord longer than a quarter of the curve where it is straight
-  r.min_curvature = printed(std::pow(nominal / (0.25 * length), 2));
-  // the first move: the longest within the tolerance from the start point on the curve
-  {
-    const double t0 = c.curve.t0(), span = c.curve.t1() - t0;
-    const Vec3 a = c.start;
-    auto ok = [&](double dt) {
-      double t = t0 + dt;
-      Local l = local(c, t);
-      Vec3 b = vertex(c, r, t, l, turning(c, l));
-      auto w = geom::max_distance(c.curve, c.fit.place, t0, t,
-                                  [&](const Vec3& p) { return geom::point_segment_distance(p, a, b); });
-      return w.distance <= tol;
-    };
-    Turning tn = turning(c, local(c, t0));
-    double guess = t0 + std::min(span, 0.8 * nominal / std::sqrt(std::max(tn.k, r.min_curvature)) / tn.speed);
-    double lo = geom::longest_step(t0, t0 + span, guess, [&](double t) { return ok(t - t0); }, span, [] {
-                  return std::string("adaptive macro: no first move within the tolerance");
-                }) - t0;
-    // not on the edge of a rounding cell: small changes of the control's arithmetic must not
-    // move a vertex to the next increment
-    auto robust = [&](double dt) { return ok(dt) && ok(dt * (1 - 1e-7)) && ok(dt * (1 + 1e-7)); };
-    while (!robust(lo) && lo > 1e-12 * span) lo *= 1 - 1e-5;
-    r.first_step = lo;
-  }
-  // the largest step factor whose moves stay within the tolerance (the rule is run exactly as
-  // the control will run it and measured by optimisation on every move)
-  auto passes_exactly = [&](double f) {
-    AdaptiveRule trial = r;
-    trial.factor = printed(f * nominal);
-    return rule_error(c, run_rule(c, trial)) <= tol;
-  };
-  auto passes = [&](double f) {
-    return passes_exactly(f) && passes_exactly(f * (1 - 1e-7)) && passes_exactly(f * (1 + 1e-7));
-  };
-  double lo = 1.0, hi = 1.25;
-  if (passes(hi)) {
-    lo = hi;
-  } else if (!passes(lo)) {
-    hi = lo;
-    lo = 0.5;
-    while (!passes(lo)) {
-      hi = lo;
-      lo *= 0.5;
-      if (lo < 1e-3) throw std::runtime_error("adaptive macro: no step rule keeps this curve within the tolerance");
-    }
-  }
-  for (int i = 0; i < 10 && hi > lo; ++i) {
-    double mid = 0.5 * (lo + hi);
-    if (passes(mid)) lo = mid; else hi = mid;
-  }
-  r.factor = printed(lo * nominal);
-  return r;
+  return length;
+}
+
+Emitted adaptive_text(const Context& c, double aim) {
+  const Loop l = loop_of(c);
+  const double offset = std::floor((c.fit.tol - c.fit.grid.worst_error()) * 1e9) / 1e9;
+  const double nominal = 4 * std::sqrt(offset);
+  // the first step from the curvature at the start (a chord of a quarter of the curve at most)
+  const double least_k = std::pow(nominal / (0.25 * curve_length(c)), 2);
+  const double span = c.curve.t1() - c.curve.t0();
+  const geom::Vec3 d1 = c.curve.d1(c.curve.t0());
+  const double speed = std::hypot(d1[0], d1[1], d1[2]);
+  const double first = std::min(span, nominal / std::sqrt(std::max(c.curve.curvature(c.curve.t0()), least_k)) / speed);
+
+  Writer w;
+  macro_preamble(w, c, "steps by the control");
+  w.block(fmt::format("#1={} (AIM, MM)", number(aim, kDigits)));
+  w.block(fmt::format("#2={} (BAND: VERTEX OFFSET, MM)", number(offset, kDigits)));
+  w.block(fmt::format("#3={} (LONGEST T STEP)", number(span / 4, kDigits)));
+  w.block(fmt::format("#6={} (FIRST T STEP)", number(first, 6)));
+  w.block("(#5 T AT VERTEX #21.., #120.. JET AT #100)");
+  w.block(modes(c.o));
+  adaptive_start(w, c);
+  approach(w, c, MacroWords{{}, adaptive_start_words(c)});
+  Emitted e;
+  e.first = e.last = adaptive_loop(w, c);
+  end_program(w, c);
+  e.text = std::move(w.text);
+  return e;
+}
+
+}  // namespace
+
+void adaptive_start(Writer& w, const Context& c) {
+  int next = kFirstTemp;
+  start_blocks(loop_of(c), w, next);
+  w.block("#5=#110");
+}
+
+std::string adaptive_start_words(const Context& c) {
+  const Loop l = loop_of(c);
+  return l.words(l.a(0));
+}
+
+std::uint32_t adaptive_loop(Writer& w, const Context& c) {
+  const Loop l = loop_of(c);
+  Writer before, inside;
+  int next = kFirstTemp;
+  jet_blocks(l, before, inside, next);
+  w.lines(before.text);
+  return loop_blocks(l, w, inside.text);
 }
 
 Emitted adaptive_macro(const Context& c) {
-  const Options& o = c.o;
-  const AdaptiveRule rule = adaptive_rule(c);
-
-  Writer w;
-  macro_preamble(w, c, fmt::format("step from the curvature, {} band", c.with_z ? "chords" : "tolerance"));
-  w.block(fmt::format("#115={} (VERTEX OFFSET OUTWARD, MM)", number(rule.offset, kDigits)));
-  w.block(fmt::format("#116={} (STEP FACTOR: CHORD = #116/SQRT[CURVATURE])", number(rule.factor, kDigits)));
-  w.block(fmt::format("#117={} (LEAST CURVATURE, 1/MM)", number(rule.min_curvature, kDigits)));
-  w.block("(#118 #119 CURVATURE BEHIND, AHEAD; #120.. DERIVATIVES; #126 SPEED; #129 T STEP)");
-  w.block(modes(o));
-  w.block("#100=#110");
-  w.block(fmt::format("#126={} (SPEED AT T START)", number(first_speed(c), kDigits)));
-  w.block(fmt::format("#127={} (CURVATURE FOR THE FIRST STEP)", number(first_curvature(c, rule), kDigits)));
-  w.block("#128=#127");
-  w.block("#118=#127");
-  w.block("#129=#111-#110");
-  int next = kFirstTemp;
-  MacroWords start = macro_words(point_axes(c.curve, c.map, o, c.with_z), next);
-  approach(w, c, start);
-
-  w.block("WHILE [#100 LT #111] DO1");
-  step_blocks(w);
-  w.block("#100=#100+#129");
-  w.block("IF [#100 GT #111] THEN #100=#111");
-  next = kFirstTemp;
-  for (const auto& b : curvature_blocks(c, next)) w.block(b);
-  return close_loop(w, c, macro_words(vertex_axes(c), next));
-}
-
-void step_blocks(Writer& w) {
-  w.block("#119=ABS[1.5*#127-0.5*#118]");
-  w.block(fmt::format("#131=ABS[2*#127-#118]*{}", number(kEndWeight, 6)));
-  w.block("IF [#119 LT #131] THEN #119=#131");
-  w.block("#131=0.5*#128");
-  w.block("IF [#119 LT #131] THEN #119=#131");
-  w.block("IF [#119 LT #117] THEN #119=#117");
-  w.block("#118=#127");
-  w.block("#131=1.5*#129");
-  w.block("#129=#116/SQRT[#119]/#126");
-  w.block("IF [#129 GT #131] THEN #129=#131");
-}
-
-std::vector<std::string> curvature_blocks(const Context& c, int& next) {
-  const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
-  std::vector<std::string> blocks;
-  if (c.with_z) {
-    for (int k = 0; k < 3; ++k) assign(120 + k, axis_derivative(c, k, 1), next, blocks);
-    for (int k = 0; k < 3; ++k) assign(123 + k, axis_derivative(c, k, 2), next, blocks);
-    blocks.push_back("#126=SQRT[#120*#120+#121*#121+#122*#122]");
-    blocks.push_back(
-        "#127=SQRT[ABS[#126*#126*[#123*#123+#124*#124+#125*#125]-[#120*#123+#121*#124+#122*#125]*[#120*#123+#121*"
-        "#124+#122*#125]]]/[#126*#126*#126]");
-    blocks.push_back("#128=#127");
-  } else {
-    assign(120, axis_derivative(c, u, 1), next, blocks);
-    assign(121, axis_derivative(c, v, 1), next, blocks);
-    assign(122, axis_derivative(c, u, 2), next, blocks);
-    assign(123, axis_derivative(c, v, 2), next, blocks);
-    blocks.push_back("#126=SQRT[#120*#120+#121*#121]");
-    blocks.push_back("#127=[#120*#123-#121*#122]/[#126*#126*#126]");
-    blocks.push_back("#128=ABS[#127]");
-    blocks.push_back("#130=#115");
-    blocks.push_back("IF [#127 GT 0] THEN #130=-#115");
-    blocks.push_back("IF [#100 GE #111] THEN #130=0");
+  const double rounding = c.fit.grid.worst_error();
+  if (c.fit.tol <= rounding)
+    throw std::runtime_error(fmt::format("tolerance {} mm is not above the coordinate rounding ({:.6f} mm)",
+                                         c.o.tol, rounding));
+  // the estimate at the middle is within about 1 % of the true deviation: aim lower until the
+  // control's own path is within the tolerance
+  double aim = printed(c.fit.tol);
+  for (int attempt = 0; attempt < 40; ++attempt, aim = printed(aim * 0.99)) {
+    Emitted e = adaptive_text(c, aim);
+    if (round_trip(e.text, c.curve, c.o, e.first, e.last).max_deviation <= c.o.tol) return e;
   }
-  return blocks;
-}
-
-std::vector<std::pair<char, Sym>> vertex_axes(const Context& c) {
-  const int u = c.fit.plane.u_axis, v = c.fit.plane.v_axis;
-  std::vector<std::pair<char, Sym>> axes = point_axes(c.curve, c.map, c.o, c.with_z);
-  if (c.with_z) return axes;
-  // the curve point moved along the normal (-v', u') / speed by #130
-  auto shift = [&](int axis) -> Sym {
-    Sym n = axis == u ? geom::make(SymOp::neg, geom::variable(121)) : geom::variable(120);
-    return geom::make(SymOp::div, geom::make(SymOp::mul, geom::variable(130), n), geom::variable(126));
-  };
-  for (auto& [letter, e] : axes) {
-    int axis = letter == 'X' ? 0 : letter == 'Y' ? 1 : 2;
-    if (axis != u && axis != v) continue;
-    Sym moved = geom::make(SymOp::add, axis_sym(c.curve, c.map, axis), shift(axis));
-    e = is_lathe(c.o) && axis == 0 ? geom::make(SymOp::mul, geom::konst(2), moved) : moved;
-  }
-  return axes;
+  throw std::runtime_error("adaptive macro: no aim keeps this curve within the tolerance");
 }
 
 }  // namespace ncurve::gen::detail

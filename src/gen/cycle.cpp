@@ -1,8 +1,8 @@
 // cycle: a custom G code that calls a macro program in O9010..O9019, which is copied after the
 // main program. The spiral is seed 001's G102 (No.6050 = 102 calls O9010), with a chord error
 // argument T instead of a fixed angle step; every other curve gets its own cycle (G103 = ellipse
-// in O9011 ...), the curve's parameters, its range and the chord error as arguments, and the
-// adaptive macro's step from the curvature inside.
+// in O9011 ...), the curve's parameters, its range and the tolerance as arguments, and the
+// adaptive macro's loop inside.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -99,17 +99,13 @@ Slot slot_of(const Context& c) {
   return {program, 102 + program - 9010, 6050 + program - 9010};
 }
 
-// The chord error the macro aims at, a first step shorter by this (its start is on the curve, not
-// on the band) and no step longer than this part of the range.
-constexpr double kFirstMove = 0.85;
-constexpr double kLongestStep = 0.125;
-
 // The curve cycle's macro program: arguments checked, copied to the curve's variables, then the
-// adaptive loop with the rule from the chord error T.
+// adaptive loop with the tolerance T.
 std::string curve_macro(const Context& c, const Slot& slot, std::uint32_t first_line, std::uint32_t& contour_line) {
   const auto letters = argument_letters(c.curve);
   const geom::CurveSpec* spec = geom::find_curve(c.curve.name());
   const std::string t_doc = spec ? spec->t_doc : "t";
+  const std::string rounding = number(c.fit.grid.worst_error(), 9);
   Writer w;
   w.line = first_line - 1;
   w.block(fmt::format("O{} (G{} {} CYCLE)", slot.program, slot.g, comment_text(c.curve.name())));
@@ -120,77 +116,37 @@ std::string curve_macro(const Context& c, const Slot& slot, std::uint32_t first_
   for (const auto& [p, l] : letters)
     w.block(fmt::format("(#{:<3} {}  {}: {})", local_of(l), l, comment_text(p->name), comment_text(p->doc)));
   w.block(fmt::format("(#19  S  T START; #8 E T END: {})", comment_text(t_doc)));
-  w.block("(#20  T  CHORD ERROR, MM: EACH STEP FROM THE CURVATURE)");
+  w.block(fmt::format("(#20  T  TOLERANCE, MM, ABOVE THE ROUNDING {})", rounding));
   w.block("(#9   F  FEED)");
-  w.block("(WORK: COMMON VARIABLES #100-#199)");
+  w.block("(WORK: LOCALS #1-#33 AFTER THE ARGUMENTS ARE READ, COMMONS #100-#199)");
   for (const auto& [p, l] : letters) w.block(fmt::format("IF [#{} EQ #0] GOTO 901", local_of(l)));
   w.block("IF [#19 EQ #0] GOTO 901");
   w.block("IF [#8 EQ #0] GOTO 901");
   w.block("IF [#8 LE #19] GOTO 901");
   w.block("IF [#20 EQ #0] GOTO 901");
-  w.block("IF [#20 LE 0] GOTO 901");
+  w.block(fmt::format("IF [#20 LE {}] GOTO 901", rounding));
   w.block("IF [#9 EQ #0] GOTO 1");
   w.block("G01 F#9");
   w.block("N1 #110=#19 (T START)");
   w.block("#111=#8 (T END)");
   for (const auto& [p, l] : letters) w.block(fmt::format("#{}=#{} ({})", p->var, local_of(l), comment_text(p->name)));
-  // the band: vertices T outward, chords' middle T inward (a space curve: chords of sag T)
-  w.block(c.with_z ? "#115=0" : "#115=#20 (VERTEX OFFSET OUTWARD)");
-  w.block(c.with_z ? "#116=SQRT[8*#20] (STEP FACTOR: CHORD = #116/SQRT[CURVATURE])"
-                   : "#116=4*SQRT[#20] (STEP FACTOR: CHORD = #116/SQRT[CURVATURE])");
-  w.block("#117=0.000000001 (LEAST CURVATURE)");
-  w.block(fmt::format("#132=[#111-#110]*{} (LONGEST T STEP)", number(kLongestStep, 6)));
-  w.block("#100=#110");
-  int next = kFirstTemp;
-  auto curvature_at_100 = [&] {
-    next = kFirstTemp;
-    for (const auto& b : curvature_blocks(c, next)) w.block(b);
-  };
-  curvature_at_100();
-  w.block("#118=#127");
-  w.block("#119=#128");
-  w.block("IF [#119 LT #117] THEN #119=#117");
-  w.block(fmt::format("#129=#116/SQRT[#119]/#126*{} (FIRST STEP, x1.5 NEXT)", number(kFirstMove / 1.5, 12)));
-  w.block("WHILE [#100 LT #111] DO1");
-  step_blocks(w);
-  w.block("IF [#129 GT #132] THEN #129=#132");
-  // corrected (twice at most) by the curvature and speed at the middle of the step: the rule
-  // above extrapolates from behind, which misses an inflection ahead or a quickly changing speed
-  w.block("#135=#100 (T AT THE LAST VERTEX)");
-  w.block("#134=1");
-  w.block("WHILE [#134 LE 2] DO2");
-  w.block("#100=#135+0.5*#129");
-  curvature_at_100();
-  w.block("IF [#128 LT #119] THEN #128=#119");
-  w.block("#131=#116/SQRT[#128]/#126");
-  w.block("#134=#134+1");
-  w.block("IF [#131 GE #129] THEN #134=3");
-  w.block("IF [#131 LT #129] THEN #129=#131");
-  w.block("END2");
-  w.block("#100=#135");
-  // the last move ends on the curve: no longer than the first; one before it takes what is over
-  w.block(fmt::format("#133=#111-#100-{}*#129", number(kFirstMove, 6)));
-  w.block("IF [#133 LT #129] THEN #129=#133");
-  w.block("IF [#133 LE 0] THEN #129=#111-#100");
-  w.block("#100=#100+#129");
-  w.block("IF [#100 GT #111] THEN #100=#111");
-  curvature_at_100();
-  MacroWords move = macro_words(vertex_axes(c), next);
-  for (const auto& a : move.assignments) w.block(a);
-  w.block(fmt::format("G01 {}", move.words));
-  contour_line = w.line;
-  w.block("END1");
+  w.block(fmt::format("#2=#20-{} (VERTEX OFFSET OUTWARD)", rounding));
+  w.block("#1=#20 (AIM: DEVIATION AT A STEP'S MIDDLE)");
+  w.block("#3=[#111-#110]/4 (LONGEST T STEP)");
+  w.block("#6=[#111-#110]/64 (T STEP TRIED FIRST)");
+  adaptive_start(w, c);
+  contour_line = adaptive_loop(w, c);
   w.block("M99");
   w.block(fmt::format("N901 #3000=1 (G{} ARGUMENT MISSING OR OUT OF RANGE)", slot.g));
   return w.text;
 }
 
-std::string curve_cycle_text(const Context& c, const Slot& slot, double chord_error, std::uint32_t& first,
+std::string curve_cycle_text(const Context& c, const Slot& slot, double tolerance, std::uint32_t& first,
                              std::uint32_t& last, std::string& macro) {
   const Options& o = c.o;
   Writer w;
   w.block("%");
-  w.lines(header(c.curve, o, fmt::format("G{} cycle, chord error argument T", slot.g)));
+  w.lines(header(c.curve, o, fmt::format("G{} cycle, tolerance argument T", slot.g)));
   w.block(fmt::format("(PARAMETER SETTING: NO.{} = {}, G{} CALLS O{})", slot.parameter, slot.g, slot.g, slot.program));
   w.block(fmt::format("(O{} FOLLOWS THIS PROGRAM)", slot.program));
   begin_passes(w, o, c.dec);
@@ -200,7 +156,7 @@ std::string curve_cycle_text(const Context& c, const Slot& slot, double chord_er
   w.lines(fr.to_depth);
   std::string call = fmt::format("G{}", slot.g);
   for (const auto& [p, l] : argument_letters(c.curve)) call += fmt::format(" {}{}", l, number(p->value, 9));
-  call += fmt::format(" S{} E{} T{} F{}", number(c.curve.t0(), 9), number(c.curve.t1(), 9), number(chord_error, 6),
+  call += fmt::format(" S{} E{} T{} F{}", number(c.curve.t0(), 9), number(c.curve.t1(), 9), number(tolerance, 6),
                       number(c.feed, 4));
   w.block(call);
   w.lines(fr.retract);
@@ -215,13 +171,14 @@ std::string curve_cycle_text(const Context& c, const Slot& slot, double chord_er
   return w.text;
 }
 
-// The largest chord error (in millionths) whose cycle the round trip finds within the tolerance.
+// The largest T argument (in millionths, 1 % apart) whose cycle the round trip finds within the
+// tolerance.
 template <class Text>
-Emitted tightened(const Context& c, const Options& with_cycle, const Slot& slot, double chord_error, Text text) {
-  for (int attempt = 0; attempt < 12; ++attempt, chord_error = std::floor(chord_error * 0.9 * 1e6) / 1e6) {
-    if (!(chord_error > 0)) break;
+Emitted tightened(const Context& c, const Options& with_cycle, const Slot& slot, double t_argument, Text text) {
+  for (int attempt = 0; attempt < 40; ++attempt, t_argument = std::floor(t_argument * 0.99 * 1e6) / 1e6) {
+    if (!(t_argument > 0)) break;
     Emitted e;
-    e.text = text(chord_error, e.first, e.last, e.macro);
+    e.text = text(t_argument, e.first, e.last, e.macro);
     e.parameters = {{std::to_string(slot.parameter), slot.g}};
     Stats s = round_trip(e.text, c.curve, with_cycle, e.first, e.last);
     if (s.max_deviation <= c.o.tol) return e;
@@ -257,7 +214,8 @@ Emitted cycle(const Context& c) {
                        return cycle_text(c, t, first, last);
                      });
   }
-  return tightened(c, with_cycle, slot, chord_error,
+  // the curve cycles' T is the tolerance itself
+  return tightened(c, with_cycle, slot, std::floor(c.fit.tol * 1e6) / 1e6,
                    [&](double t, std::uint32_t& first, std::uint32_t& last, std::string& macro) {
                      return curve_cycle_text(c, slot, t, first, last, macro);
                    });

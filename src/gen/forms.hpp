@@ -41,23 +41,14 @@ Emitted close_loop(Writer& w, const Context& c, const MacroWords& move);
 void end_program(Writer& w, const Context& c);
 
 Emitted adaptive_macro(const Context& c);
-// The adaptive loop's pieces (shared with the curve cycles): the step from the curvature behind
-// and ahead (#118, #127, #128, #129, least curvature #117, factor #116 -> new #129); at #100 the
-// derivatives #120.., speed #126, signed curvature #127, its size #128 and the vertex offset
-// #130 (+-#115 outward, 0 at the end); the vertex's axes (the curve point moved by #130).
-void step_blocks(Writer& w);
-std::vector<std::string> curvature_blocks(const Context& c, int& next_temp);
-std::vector<std::pair<char, geom::Sym>> vertex_axes(const Context& c);
+// The adaptive loop (shared with the curve cycles). Before it: the curve's parameters, #110 and
+// #111 (t range), #1 the aim (deviation at a step's middle, mm), #2 the vertex offset outward
+// (tolerance band, mm), #3 the longest t step and #6 the t step tried first. adaptive_start sets
+// the start vertex (#21.., the curve point at #110 rounded) and #5; adaptive_loop moves to #111
+// and returns the line of its one G01 block.
+void adaptive_start(Writer& w, const Context& c);
+std::string adaptive_start_words(const Context& c);  // the words of a move to the start vertex
+std::uint32_t adaptive_loop(Writer& w, const Context& c);
 Emitted cycle(const Context& c);
-
-// The adaptive macro's step rule run natively (what the control will compute): the parameters
-// of the vertices for a step factor; exposed for tests and benchmarks.
-struct AdaptiveRule {
-  double offset = 0;     // vertices moved outward from the curve by this much (tolerance band), mm
-  double factor = 0;     // parameter step = factor / sqrt(curvature ahead) / speed
-  double min_curvature = 0;
-  double first_step = 0;  // parameter step of the first move
-};
-AdaptiveRule adaptive_rule(const Context& c);
 
 }  // namespace ncurve::gen::detail

@@ -29,6 +29,14 @@ Sym node(SymOp op, Sym a, Sym b = nullptr) {
 bool is_k(const Sym& e, double k) { return e->op == SymOp::konst && e->k == k; }
 bool is_const(const Sym& e) { return e->op == SymOp::konst; }
 
+bool same(const Sym& x, const Sym& y) {
+  if (x == y) return true;
+  if (!x || !y || x->op != y->op) return false;
+  if (x->op == SymOp::konst) return x->k == y->k;
+  if (x->op == SymOp::var) return x->var == y->var;
+  return same(x->a, y->a) && same(x->b, y->b);
+}
+
 nc::Op to_nc(SymOp op) {
   switch (op) {
     case SymOp::sin: return nc::Op::sin;
@@ -164,6 +172,8 @@ Sym make(SymOp op, Sym a, Sym b) {
       if (b->op == SymOp::neg) return make(SymOp::sub, a, b->a);
       if (is_const(b) && b->k < 0) return make(SymOp::sub, a, konst(-b->k));
       if (a->op == SymOp::neg) return make(SymOp::sub, b, a->a);
+      if (same(a, b)) return make(SymOp::mul, konst(2), a);
+      if (b->op == SymOp::sub) return make(SymOp::sub, make(SymOp::add, a, b->a), b->b);  // a+[x-y]: a+x-y
       return node(op, a, b);
     case SymOp::sub:
       if (is_const(a) && is_const(b)) return konst(a->k - b->k);
@@ -171,6 +181,10 @@ Sym make(SymOp op, Sym a, Sym b) {
       if (is_k(a, 0)) return make(SymOp::neg, b);
       if (b->op == SymOp::neg) return make(SymOp::add, a, b->a);
       if (is_const(b) && b->k < 0) return make(SymOp::add, a, konst(-b->k));
+      if (same(a, b)) return konst(0);
+      if (a->op == SymOp::neg && same(a->a, b)) return make(SymOp::neg, make(SymOp::mul, konst(2), b));
+      if (b->op == SymOp::add) return make(SymOp::sub, make(SymOp::sub, a, b->a), b->b);  // a-[x+y]: a-x-y
+      if (b->op == SymOp::sub) return make(SymOp::add, make(SymOp::sub, a, b->a), b->b);  // a-[x-y]: a-x+y
       return node(op, a, b);
     case SymOp::mul:
       if (is_const(a) && is_const(b)) return konst(a->k * b->k);
@@ -344,6 +358,53 @@ struct NodeKey {
 };
 
 }  // namespace
+
+std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next_temp,
+                                      std::vector<std::pair<int, Sym>>& temps) {
+  // one node per structure, operands before their users
+  std::map<NodeKey, int> ids;
+  std::vector<Sym> nodes;          // by id, as given
+  std::vector<int> ops_a, ops_b;   // operand ids (-1: none)
+  auto visit = [&](auto& self, const Sym& e) -> int {
+    int a = e->a ? self(self, e->a) : -1;
+    int b = e->b ? self(self, e->b) : -1;
+    NodeKey key{e->op, e->op == SymOp::konst ? std::bit_cast<std::uint64_t>(e->k) : 0,
+                e->op == SymOp::var ? e->var : 0, a, b};
+    auto [it, fresh] = ids.try_emplace(key, static_cast<int>(nodes.size()));
+    if (fresh) {
+      nodes.push_back(e);
+      ops_a.push_back(a);
+      ops_b.push_back(b);
+    }
+    return it->second;
+  };
+  std::vector<int> roots;
+  for (const Sym& e : outputs) roots.push_back(visit(visit, e));
+  std::vector<int> uses(nodes.size(), 0);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (ops_a[i] >= 0) ++uses[static_cast<std::size_t>(ops_a[i])];
+    if (ops_b[i] >= 0) ++uses[static_cast<std::size_t>(ops_b[i])];
+  }
+  for (int r : roots) ++uses[static_cast<std::size_t>(r)];
+  constexpr std::size_t kVariableLength = 4;  // "#150"
+  std::vector<Sym> built(nodes.size());
+  auto build = [&](auto& self, int id) -> Sym {
+    const auto i = static_cast<std::size_t>(id);
+    if (built[i]) return built[i];
+    const Sym& e = nodes[i];
+    Sym out = e;
+    if (e->a) out = node(e->op, self(self, ops_a[i]), ops_b[i] >= 0 ? self(self, ops_b[i]) : nullptr);
+    const bool long_constant = e->op == SymOp::konst && to_macro(out).size() > 2 * kVariableLength;
+    if (uses[i] > 1 && (e->a || long_constant) && to_macro(out).size() > kVariableLength) {
+      temps.emplace_back(next_temp, out);
+      out = variable(next_temp++);
+    }
+    return built[i] = out;
+  };
+  std::vector<Sym> rewritten;
+  for (int r : roots) rewritten.push_back(build(build, r));
+  return rewritten;
+}
 
 Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(options) {
   std::map<NodeKey, int> registers;

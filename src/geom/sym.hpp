@@ -46,6 +46,13 @@ int bracket_depth(const Sym& e);
 // brackets; each (variable, expression) in temps must be assigned first, in order.
 Sym limit_depth(const Sym& e, int max_depth, int& next_temp, std::vector<std::pair<int, Sym>>& temps);
 
+// Equal subexpressions of several expressions written once: the outputs rewritten over
+// temporaries (from next_temp on), each (variable, expression) of temps assigned first, in order.
+// What occurs more than once gets a temporary if it is longer than a variable (a constant: twice).
+// A subexpression gets a temporary where it occurs more than once and is longer than a variable.
+std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next_temp,
+                                      std::vector<std::pair<int, Sym>>& temps);
+
 // Straight-line code for fast evaluation of several expressions at once with FANUC's functions
 // (nc::apply_unary / apply_binary): equal subexpressions are computed once, and a sine and cosine
 // of the same angle by one sincos.

@@ -68,7 +68,10 @@ TEST(Sym, MacroTextReadsBackToTheSameValues) {
     Sym back = parse_sym(to_macro(s));
     for (double t : {0.5, 33.0, 71.0}) EXPECT_NEAR(at(back, t), at(s, t), 1e-9 * (1 + std::fabs(at(s, t))));
   }
-  EXPECT_EQ(to_macro(parse_sym("#1-[#2-#3]")), "#1-[#2-#3]");
+  EXPECT_EQ(to_macro(parse_sym("#1-[#2-#3]")), "#1-#2+#3");  // sums are flattened
+  EXPECT_EQ(to_macro(parse_sym("#1+[#2-#3]-[#4+#5]")), "#1+#2-#3-#4-#5");
+  EXPECT_EQ(to_macro(parse_sym("-[#1*2]-#1*2")), "-4.*#1");
+  EXPECT_EQ(to_macro(parse_sym("#1*#2-#1*#2")), "0.");
   EXPECT_EQ(to_macro(parse_sym("#1/[#2*#3]")), "#1/[#2*#3]");
   EXPECT_EQ(to_macro(parse_sym("[#1+0]*1")), "#1");
   EXPECT_EQ(to_macro(konst(1e-9)), "0.000000001");
@@ -92,6 +95,56 @@ TEST(Sym, DepthLimitedTextRunsOnTheControl) {
   auto r = test::run(prog);
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   EXPECT_NEAR(r.var(149), at(e, 12.5), 1e-9 * (1 + std::fabs(at(e, 12.5))));
+}
+
+// The rotor's point and derivatives written with their common parts once: the interpreter computes
+// the same values from text that is much shorter, and nothing shared appears twice.
+TEST(Sym, SharedSubexpressionsRunOnTheControlAndShortenTheText) {
+  const Curve rotor(*find_curve("rotor"), {});
+  std::vector<Sym> outputs;
+  for (const auto* e : {&rotor.position(), &rotor.first(), &rotor.second()})
+    for (int k = 0; k < 2; ++k) outputs.push_back((*e)[k]);
+  int next = 150;
+  std::vector<std::pair<int, Sym>> temps;
+  const std::vector<Sym> shared = share_subexpressions(outputs, next, temps);
+  ASSERT_EQ(shared.size(), outputs.size());
+  ASSERT_FALSE(temps.empty());
+  std::size_t plain = 0, written = 0;
+  std::string prog = "#100=37.25\n";
+  auto assign = [&](int var, const Sym& e) {
+    int depth_next = 190;
+    std::vector<std::pair<int, Sym>> deep;
+    Sym limited = limit_depth(e, 5, depth_next, deep);
+    for (const auto& [v, d] : deep) prog += "#" + std::to_string(v) + "=" + to_macro(d) + "\n";
+    prog += "#" + std::to_string(var) + "=" + to_macro(limited) + "\n";
+    written += to_macro(e).size();
+  };
+  for (const auto& [var, e] : temps) assign(var, e);
+  for (std::size_t i = 0; i < shared.size(); ++i) {
+    assign(120 + static_cast<int>(i), shared[i]);
+    plain += to_macro(outputs[i]).size();
+  }
+  EXPECT_LT(2 * written, plain) << written << " characters shared, " << plain << " plain";
+  // no temporary's text occurs in another expression: it was replaced everywhere
+  for (const auto& [var, e] : temps) {
+    const std::string text = to_macro(e);
+    for (const auto& [other, o] : temps)
+      if (other != var) EXPECT_EQ(to_macro(o).find(text), std::string::npos) << text;
+    for (const Sym& o : shared) EXPECT_EQ(to_macro(o).find(text), std::string::npos) << text;
+  }
+  prog += "M30\n";
+  std::vector<double> vars(kVarCount, 0.0);
+  vars[kTVar] = 37.25;
+  for (const auto& p : rotor.params()) vars[static_cast<std::size_t>(p.var)] = p.value;
+  std::string with_params;
+  for (const auto& p : rotor.params()) with_params += "#" + std::to_string(p.var) + "=" + to_macro(konst(p.value)) + "\n";
+  auto r = test::run(with_params + prog);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    double expect = 0;
+    Tape({outputs[i]})(vars.data(), &expect);
+    EXPECT_NEAR(r.var(120 + static_cast<int>(i)), expect, 1e-9 * (1 + std::fabs(expect))) << i;
+  }
 }
 
 TEST(Sym, WhatCannotBeDifferentiatedIsRefused) {
