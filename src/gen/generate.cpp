@@ -249,11 +249,13 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
   geom::for_each_on_cores((spans.size() + kBatch - 1) / kBatch, [&](std::size_t b) {
     for (std::size_t i = b * kBatch; i < std::min(spans.size(), (b + 1) * kBatch); ++i) {
       const Span& span = spans[i];
-      const geom::Segment segment(span.piece.start, span.piece.end);
-      auto d = [&](const Vec3& p) {
-        return span.piece.arc ? geom::point_arc_distance(p, span.piece, plane) : segment.distance(p);
-      };
-      worst[i] = geom::max_distance(curve, place, span.t0, span.t1, span.j0, span.j1, d, trust, span.piece.arc ? 6 : 4);
+      if (span.piece.arc) {
+        auto d = [&](const Vec3& p) { return geom::point_arc_distance(p, span.piece, plane); };
+        worst[i] = geom::max_distance(curve, place, span.t0, span.t1, span.j0, span.j1, d, trust, 6);
+      } else {
+        const geom::Segment segment(span.piece.start, span.piece.end);
+        worst[i] = geom::max_distance(curve, place, span.t0, span.t1, span.j0, span.j1, segment, trust);
+      }
     }
   });
   // 3. In order: the worst point, the deviation along the contour, the path drawn.

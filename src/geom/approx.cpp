@@ -146,6 +146,82 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist di
   return m;
 }
 
+// The same for a segment: the part of Q(s) - A across the segment is a vector quintic D(s), so
+// the humps of the distance are where D.D' = 0, found by Newton's method (g = D.D', g' = D'.D' +
+// D.D'') kept inside the samples around each highest sample. Values are the segment distance
+// (which the part across is, unless the point lies beyond an end).
+ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const Segment& ab, int samples) {
+  const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
+  std::array<Vec3, 6> e;  // D(s) = sum e[k] s^k
+  e[0] = ab.across(sub(q.origin, ab.start()));
+  for (int k = 0; k < 5; ++k) e[static_cast<std::size_t>(k + 1)] = ab.across(q.c[static_cast<std::size_t>(k)]);
+  // g and g' at s
+  auto newton = [&](double s, double& g, double& dg) {
+    Vec3 d{}, d1{}, d2{};
+    for (int axis = 0; axis < 3; ++axis) {
+      double v = 0, v1 = 0, v2 = 0;
+      for (int k = 5; k >= 0; --k) {
+        v2 = v2 * s + 2 * v1;
+        v1 = v1 * s + v;
+        v = v * s + e[static_cast<std::size_t>(k)][axis];
+      }
+      d[axis] = v, d1[axis] = v1, d2[axis] = v2;
+    }
+    g = dot(d, d1);
+    dg = dot(d1, d1) + dot(d, d2);
+  };
+  auto at = [&](double s) { return ab.distance(s == 0 ? a.p : s == 1 ? b.p : q.at(s)); };
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  constexpr int kMostSamples = 16;
+  samples = std::clamp(samples, 1, kMostSamples);
+  double value[kMostSamples + 1];
+  for (int i = 0; i <= samples; ++i) {
+    value[i] = at(static_cast<double>(i) / samples);
+    if (std::isnan(value[i])) return {{value[i], static_cast<double>(i) / samples}, {kNone, 0}};
+  }
+  ModelMaxima m{{kNone, 0}, {kNone, 0}};
+  auto take = [&](const Maximum& x) {
+    if (x.value > m.best.value) m.second = m.best, m.best = x;
+    else if (x.value > m.second.value) m.second = x;
+  };
+  for (int i = 0; i <= samples; ++i) {
+    const bool above_before = i == 0 || value[i] > value[i - 1];
+    const bool above_after = i == samples || value[i] >= value[i + 1];
+    if (!above_before || !above_after) continue;
+    if (i == 0 && at(kModelResolution) <= value[0]) {
+      take({value[0], 0});
+      continue;
+    }
+    if (i == samples && at(1 - kModelResolution) <= value[samples]) {
+      take({value[samples], 1});
+      continue;
+    }
+    // Newton's method from the sample on g (> 0 below the hump, < 0 above it), kept between the
+    // samples either side; else a search of the distance itself
+    const double lo = static_cast<double>(std::max(0, i - 1)) / samples;
+    const double hi = static_cast<double>(std::min(samples, i + 1)) / samples;
+    double s = static_cast<double>(i) / samples;
+    bool converged = false;
+    for (int iteration = 0; iteration < 12 && !converged; ++iteration) {
+      double g = 0, dg = 0;
+      newton(s, g, dg);
+      if (!(dg < 0)) break;
+      const double next = s - g / dg;
+      if (!(next > lo && next < hi)) break;
+      converged = std::fabs(next - s) < 1e-7;
+      s = next;
+    }
+    if (!converged) {
+      const Maximum x = brent_maximum(at, lo, hi, static_cast<double>(i) / samples, value[i], kModelResolution);
+      take(x.value > value[i] ? x : Maximum{value[i], static_cast<double>(i) / samples});
+      continue;
+    }
+    const double v = at(s);
+    take(v > value[i] ? Maximum{v, s} : Maximum{value[i], static_cast<double>(i) / samples});
+  }
+  return m;
+}
+
 // The curve's maximum near the quintic's: the curve must agree with the quintic there within
 // trust and be no higher a thousandth of the step to either side (so its maximum lies between);
 // the parabola through the three values places it. NaN if not. At an end of the step the
@@ -188,6 +264,18 @@ Worst max_distance(const Curve& curve, const Placement& place, double ta, double
   const ModelMaxima m = on_quintic(a, b, h, dist, samples);
   const Maximum v = confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, m, trust);
   if (std::isnan(v.value)) return max_distance(curve, place, ta, tb, dist);
+  return {v.value, ta + h * v.at};
+}
+
+Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
+                   const PlacedJet& b, const Segment& segment, double trust) {
+  const double h = tb - ta;
+  if (!(h > 0)) return {segment.distance(a.p), ta};
+  const ModelMaxima m = on_quintic(a, b, h, segment, kLineSamples);
+  auto on_curve = [&](double t) { return segment.distance(place(curve.point(t))); };
+  const Maximum v = confirmed(on_curve, ta, h, m, trust);
+  if (std::isnan(v.value))
+    return max_distance(curve, place, ta, tb, [&](const Vec3& p) { return segment.distance(p); });
   return {v.value, ta + h * v.at};
 }
 
@@ -263,7 +351,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to) 
         double e;
         if (on_model) {
           const Segment ab(a.at, end.at);
-          m = on_quintic(a.curve, end.curve, tb - ta, [&](const Vec3& p) { return ab.distance(p); }, kLineSamples);
+          m = on_quintic(a.curve, end.curve, tb - ta, ab, kLineSamples);
           e = m.best.value;
         } else {
           e = segment_error(f, ta, tb, a, end, radial);

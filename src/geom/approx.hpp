@@ -88,12 +88,23 @@ Worst max_distance(const Curve& curve, const Placement& place, double ta, double
                    int samples = 6);
 
 double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b);
+class Segment;
+// max_distance to a segment: its humps on the quintic found by Newton's method on the distance
+// across the segment, a polynomial (no search through a distance function).
+Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
+                   const PlacedJet& b, const Segment& segment, double trust);
 // The same for many points against one segment (its direction and length worked out once).
 class Segment {
 public:
   Segment(const Vec3& a, const Vec3& b) : a_(a), ab_{b[0] - a[0], b[1] - a[1], b[2] - a[2]} {
     const double len2 = ab_[0] * ab_[0] + ab_[1] * ab_[1] + ab_[2] * ab_[2];
     inv_len2_ = len2 > 0 ? 1 / len2 : 0;
+  }
+  const Vec3& start() const { return a_; }
+  // v less its component along the segment
+  Vec3 across(const Vec3& v) const {
+    const double s = (v[0] * ab_[0] + v[1] * ab_[1] + v[2] * ab_[2]) * inv_len2_;
+    return {v[0] - s * ab_[0], v[1] - s * ab_[1], v[2] - s * ab_[2]};
   }
   double distance(const Vec3& p) const {
     const double ax = p[0] - a_[0], ay = p[1] - a_[1], az = p[2] - a_[2];

@@ -13,12 +13,12 @@ using namespace ncurve::geom;
 
 namespace {
 
-Curve expression(const std::string& x, const std::string& y, double from, double to) {
+Curve expression(const std::string& x, const std::string& y, double from, double to, const std::string& z = "0") {
   CurveSpec spec;
   spec.name = "expr";
   spec.x = x;
   spec.y = y;
-  spec.z = "0";
+  spec.z = z;
   spec.from = from;
   spec.to = to;
   return Curve(spec, {});
@@ -77,6 +77,32 @@ TEST(Approx, DeviationFromJetsAgreesWithTheSearchOnTheCurve) {
     Worst model = max_distance(spiral, kSame, ta, tb, ja, jb, d, 1e-9);
     Worst curve = max_distance(spiral, kSame, ta, tb, d);
     EXPECT_NEAR(model.distance, curve.distance, 1e-12) << "t = " << ta;
+  }
+}
+
+// The segment's own search (Newton's method on the distance across it, a polynomial on the
+// quintic) finds what the search on the curve finds, in the plane and in space, with the hump in
+// the middle or, for a chord across an inflection, two humps near the quarters.
+TEST(Approx, SegmentDeviationByNewtonAgreesWithTheSearchOnTheCurve) {
+  Curve spiral = expression("[5+2*t/360]*COS[t]", "[5+2*t/360]*SIN[t]", 0, 3600);
+  Curve helix = expression("10*COS[t]", "10*SIN[t]", 0, 3600, "t/36");
+  Curve wave = expression("t", "SIN[t]", 0, 360);
+  struct Case {
+    const Curve* curve;
+    double ta, tb, outward;
+  };
+  std::vector<Case> cases;
+  for (double ta = 3; ta < 3600; ta += 397) cases.push_back({&spiral, ta, ta + 2.5, 1.0001});
+  for (double ta = 3; ta < 3600; ta += 397) cases.push_back({&helix, ta, ta + 4, 1.0002});
+  cases.push_back({&wave, 170, 190, 1});  // across the inflection at 180
+  for (const Case& k : cases) {
+    PlacedJet ja = placed_jet(*k.curve, kSame, k.ta), jb = placed_jet(*k.curve, kSame, k.tb);
+    Segment s(Vec3{ja.p[0] * k.outward, ja.p[1] * k.outward, ja.p[2]}, Vec3{jb.p[0] * k.outward, jb.p[1] * k.outward, jb.p[2]});
+    Worst model = max_distance(*k.curve, kSame, k.ta, k.tb, ja, jb, s, 1e-9);
+    Worst curve = max_distance(*k.curve, kSame, k.ta, k.tb, [&](const Vec3& p) { return s.distance(p); });
+    ASSERT_GT(curve.distance, 0);
+    EXPECT_NEAR(model.distance, curve.distance, 1e-12 + 1e-9 * curve.distance) << "t = " << k.ta;
+    EXPECT_NEAR(model.t, curve.t, 1e-3 * (k.tb - k.ta)) << "t = " << k.ta;
   }
 }
 
