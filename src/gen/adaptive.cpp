@@ -26,9 +26,9 @@ constexpr int kDigits = 9;        // decimals of the macro's constants
 
 // The loop's variables. Locals keep the blocks short (a cycle's arguments are copied out before
 // the loop): #1 aim, #2 band, #3 longest t step, #5 t at the vertex A, #6 t step to try, #7 t
-// tried, #8 longest step within the aim, #9 trials, #10 done, #11 phase (0 vertex, 1 middle), #12
-// t of the best vertex, #16..#20 and #33 scratch; from #21 the vectors A, B (tried), best B and the
-// chord, dims each. The curve's point and derivatives are common variables #120.., their shared
+// tried, #8 longest step within the aim, #9 trials, #10 done, #12 t of the best vertex, #16..#20
+// and #33 scratch; from #21 the vectors A, B (tried), best B and the chord, dims each. #100 is #7
+// while the vertex is found, the middle of the step after. The curve's point and derivatives are common variables #120.., their shared
 // parts temporaries from #150.
 namespace var {
 constexpr int vectors = 21;
@@ -300,12 +300,8 @@ Emitted adaptive_macro(const Context& c) {
                                          c.o.tol, rounding));
   // the estimate at the middle is within about 1 % of the true deviation: aim lower until the
   // control's own path is within the tolerance
-  double aim = printed(c.fit.tol);
-  for (int attempt = 0; attempt < 40; ++attempt, aim = printed(aim * 0.99)) {
-    Emitted e = adaptive_text(c, aim);
-    if (round_trip(e.text, c.curve, c.o, e.first, e.last).max_deviation <= c.o.tol) return e;
-  }
-  throw std::runtime_error("adaptive macro: no aim keeps this curve within the tolerance");
+  return tightened(c, c.o, printed(c.fit.tol), printed, [&](double aim) { return adaptive_text(c, aim); },
+                   "adaptive macro: no aim keeps this curve within the tolerance");
 }
 
 }  // namespace ncurve::gen::detail

@@ -171,21 +171,7 @@ std::string curve_cycle_text(const Context& c, const Slot& slot, double toleranc
   return w.text;
 }
 
-// The largest T argument (in millionths, 1 % apart) whose cycle the round trip finds within the
-// tolerance.
-template <class Text>
-Emitted tightened(const Context& c, const Options& with_cycle, const Slot& slot, double t_argument, Text text) {
-  for (int attempt = 0; attempt < 40; ++attempt, t_argument = std::floor(t_argument * 0.99 * 1e6) / 1e6) {
-    if (!(t_argument > 0)) break;
-    Emitted e;
-    e.text = text(t_argument, e.first, e.last, e.macro);
-    e.parameters = {{std::to_string(slot.parameter), slot.g}};
-    Stats s = round_trip(e.text, c.curve, with_cycle, e.first, e.last);
-    if (s.max_deviation <= c.o.tol) return e;
-  }
-  throw std::runtime_error(
-      fmt::format("the G{} cycle does not meet the tolerance on this curve; use adaptive-macro", slot.g));
-}
+double millionths(double v) { return std::floor(v * 1e6) / 1e6; }
 
 }  // namespace
 
@@ -194,7 +180,7 @@ Emitted cycle(const Context& c) {
     throw std::runtime_error(
         "the cycle form programs the contour itself: without --tool-radius (the control's G41/G42 offsets the cutter)");
   const double rounding = c.fit.grid.worst_error();
-  double chord_error = std::floor((c.fit.tol - rounding) * 1e6) / 1e6;
+  double chord_error = millionths(c.fit.tol - rounding);
   if (!(chord_error > 0))
     throw std::runtime_error(fmt::format("tolerance {} mm is not above the coordinate rounding ({:.6f} mm)", c.o.tol,
                                          rounding));
@@ -204,21 +190,30 @@ Emitted cycle(const Context& c) {
   const Slot slot = slot_of(c);
   Options with_cycle = c.o;
   with_cycle.profile.g_code_macros[static_cast<std::size_t>(slot.program - 9010)] = slot.g;
+  // the largest T argument (in millionths) whose cycle the round trip finds within the tolerance
+  const std::string failure =
+      fmt::format("the G{} cycle does not meet the tolerance on this curve; use adaptive-macro", slot.g);
+  auto with_parameter = [&](Emitted e) {
+    e.parameters = {{std::to_string(slot.parameter), slot.g}};
+    return e;
+  };
   if (spiral) {
     if (is_lathe(c.o)) throw std::runtime_error("the G102 spiral cycle is for the mill (XY plane)");
     // O9010's step is from the local circle of curvature: tighten T if the control's path is not
     // within the tolerance
-    return tightened(c, with_cycle, slot, chord_error,
-                     [&](double t, std::uint32_t& first, std::uint32_t& last, std::string& macro) {
-                       macro = o9010_text();
-                       return cycle_text(c, t, first, last);
-                     });
+    return tightened(c, with_cycle, chord_error, millionths, [&](double t) {
+      Emitted e;
+      e.macro = o9010_text();
+      e.text = cycle_text(c, t, e.first, e.last);
+      return with_parameter(std::move(e));
+    }, failure);
   }
   // the curve cycles' T is the tolerance itself
-  return tightened(c, with_cycle, slot, std::floor(c.fit.tol * 1e6) / 1e6,
-                   [&](double t, std::uint32_t& first, std::uint32_t& last, std::string& macro) {
-                     return curve_cycle_text(c, slot, t, first, last, macro);
-                   });
+  return tightened(c, with_cycle, millionths(c.fit.tol), millionths, [&](double t) {
+    Emitted e;
+    e.text = curve_cycle_text(c, slot, t, e.first, e.last, e.macro);
+    return with_parameter(std::move(e));
+  }, failure);
 }
 
 }  // namespace ncurve::gen::detail

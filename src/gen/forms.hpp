@@ -1,5 +1,6 @@
 // The program forms, each writing the text and the lines of its contour for the round trip.
 #pragma once
+#include <stdexcept>
 #include <string>
 
 #include "gen/emit.hpp"
@@ -39,6 +40,18 @@ void approach(Writer& w, const Context& c, const MacroWords& start);
 Emitted close_loop(Writer& w, const Context& c, const MacroWords& move);
 // The retract, M30 and the closing %.
 void end_program(Writer& w, const Context& c);
+
+// The program text(value) for the largest value, from `value` down in 1 % steps (each rounded
+// by `round`), whose round trip under `on_control` is within the tolerance; else `failure`.
+template <class Round, class Text>
+Emitted tightened(const Context& c, const Options& on_control, double value, Round round, Text text,
+                  const std::string& failure) {
+  for (int attempt = 0; attempt < 40 && value > 0; ++attempt, value = round(value * 0.99)) {
+    Emitted e = text(value);
+    if (round_trip(e.text, c.curve, on_control, e.first, e.last).max_deviation <= c.o.tol) return e;
+  }
+  throw std::runtime_error(failure);
+}
 
 Emitted adaptive_macro(const Context& c);
 // The adaptive loop (shared with the curve cycles). Before it: the curve's parameters, #110 and
