@@ -132,18 +132,26 @@ namespace {
 struct ModelMaxima {
   Maximum best, second;
 };
+// f's two highest maxima over s = 0..1, each placed by refine (see each_sampled_maximum).
+template <class F, class Refine>
+ModelMaxima two_highest(F f, int samples, Refine refine) {
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  ModelMaxima m{{kNone, 0}, {kNone, 0}};
+  each_sampled_maximum(f, 0.0, 1.0, samples, kModelResolution, [&](const Maximum& x) {
+    if (std::isnan(m.best.value)) return;
+    if (std::isnan(x.value) || x.value > m.best.value) m.second = m.best, m.best = x;
+    else if (x.value > m.second.value) m.second = x;
+  }, refine);
+  return m;
+}
+
 template <class Dist>
 ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist dist, int samples) {
   const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
   auto at = [&](double s) { return dist(s == 0 ? a.p : s == 1 ? b.p : q.at(s)); };
-  constexpr double kNone = -std::numeric_limits<double>::infinity();
-  ModelMaxima m{{kNone, 0}, {kNone, 0}};
-  each_sampled_maximum(at, 0.0, 1.0, samples, kModelResolution, [&](const Maximum& x) {
-    if (std::isnan(m.best.value)) return;
-    if (std::isnan(x.value) || x.value > m.best.value) m.second = m.best, m.best = x;
-    else if (x.value > m.second.value) m.second = x;
+  return two_highest(at, samples, [&](double lo, double hi, double x, double fx) {
+    return brent_maximum(at, lo, hi, x, fx, kModelResolution);
   });
-  return m;
 }
 
 // The same for a segment: the part of Q(s) - A across the segment is a vector quintic D(s), so
@@ -171,55 +179,21 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const S
     dg = dot(d1, d1) + dot(d, d2);
   };
   auto at = [&](double s) { return ab.distance(s == 0 ? a.p : s == 1 ? b.p : q.at(s)); };
-  constexpr double kNone = -std::numeric_limits<double>::infinity();
-  constexpr int kMostSamples = 16;
-  samples = std::clamp(samples, 1, kMostSamples);
-  double value[kMostSamples + 1];
-  for (int i = 0; i <= samples; ++i) {
-    value[i] = at(static_cast<double>(i) / samples);
-    if (std::isnan(value[i])) return {{value[i], static_cast<double>(i) / samples}, {kNone, 0}};
-  }
-  ModelMaxima m{{kNone, 0}, {kNone, 0}};
-  auto take = [&](const Maximum& x) {
-    if (x.value > m.best.value) m.second = m.best, m.best = x;
-    else if (x.value > m.second.value) m.second = x;
-  };
-  for (int i = 0; i <= samples; ++i) {
-    const bool above_before = i == 0 || value[i] > value[i - 1];
-    const bool above_after = i == samples || value[i] >= value[i + 1];
-    if (!above_before || !above_after) continue;
-    if (i == 0 && at(kModelResolution) <= value[0]) {
-      take({value[0], 0});
-      continue;
-    }
-    if (i == samples && at(1 - kModelResolution) <= value[samples]) {
-      take({value[samples], 1});
-      continue;
-    }
-    // Newton's method from the sample on g (> 0 below the hump, < 0 above it), kept between the
-    // samples either side; else a search of the distance itself
-    const double lo = static_cast<double>(std::max(0, i - 1)) / samples;
-    const double hi = static_cast<double>(std::min(samples, i + 1)) / samples;
-    double s = static_cast<double>(i) / samples;
-    bool converged = false;
-    for (int iteration = 0; iteration < 12 && !converged; ++iteration) {
+  // Newton's method from the sample on g (> 0 below the hump, < 0 above it), kept between the
+  // samples either side; else a search of the distance itself
+  return two_highest(at, samples, [&](double lo, double hi, double x, double fx) {
+    double s = x;
+    for (int iteration = 0; iteration < 12; ++iteration) {
       double g = 0, dg = 0;
       newton(s, g, dg);
       if (!(dg < 0)) break;
       const double next = s - g / dg;
       if (!(next > lo && next < hi)) break;
-      converged = std::fabs(next - s) < 1e-7;
+      if (std::fabs(next - s) < 1e-7) return Maximum{at(next), next};
       s = next;
     }
-    if (!converged) {
-      const Maximum x = brent_maximum(at, lo, hi, static_cast<double>(i) / samples, value[i], kModelResolution);
-      take(x.value > value[i] ? x : Maximum{value[i], static_cast<double>(i) / samples});
-      continue;
-    }
-    const double v = at(s);
-    take(v > value[i] ? Maximum{v, s} : Maximum{value[i], static_cast<double>(i) / samples});
-  }
-  return m;
+    return brent_maximum(at, lo, hi, x, fx, kModelResolution);
+  });
 }
 
 // The curve's maximum near the quintic's: the curve must agree with the quintic there within
@@ -255,28 +229,29 @@ Maximum confirmed(OnCurve on_curve, double ta, double h, const ModelMaxima& mode
   return out;
 }
 
-}  // namespace
-
-Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
-                   const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust, int samples) {
+// The maxima that model(h) finds on the quintic, confirmed on the curve; else the curve searched.
+template <class Dist, class Model>
+Worst confirmed_maximum(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
+                        Dist dist, double trust, Model model) {
   const double h = tb - ta;
   if (!(h > 0)) return {dist(a.p), ta};
-  const ModelMaxima m = on_quintic(a, b, h, dist, samples);
-  const Maximum v = confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, m, trust);
+  const Maximum v = confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, model(h), trust);
   if (std::isnan(v.value)) return max_distance(curve, place, ta, tb, dist);
   return {v.value, ta + h * v.at};
 }
 
+}  // namespace
+
+Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
+                   const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust, int samples) {
+  return confirmed_maximum(curve, place, ta, tb, a, dist, trust,
+                           [&](double h) { return on_quintic(a, b, h, dist, samples); });
+}
+
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
                    const PlacedJet& b, const Segment& segment, double trust) {
-  const double h = tb - ta;
-  if (!(h > 0)) return {segment.distance(a.p), ta};
-  const ModelMaxima m = on_quintic(a, b, h, segment, kLineSamples);
-  auto on_curve = [&](double t) { return segment.distance(place(curve.point(t))); };
-  const Maximum v = confirmed(on_curve, ta, h, m, trust);
-  if (std::isnan(v.value))
-    return max_distance(curve, place, ta, tb, [&](const Vec3& p) { return segment.distance(p); });
-  return {v.value, ta + h * v.at};
+  return confirmed_maximum(curve, place, ta, tb, a, [&](const Vec3& p) { return segment.distance(p); }, trust,
+                           [&](double h) { return on_quintic(a, b, h, segment, kLineSamples); });
 }
 
 namespace {

@@ -163,13 +163,13 @@ Maximum brent_maximum(F f, double a, double b, double x, double fx, double resol
 }
 
 // Each local maximum of f on [lo, hi] that `samples` equal steps show (a sample no lower than
-// its neighbours), placed by Brent's method between those neighbours within `resolution`
-// (default: a billionth of [lo, hi]; the value is then exact to about 1e-17 of its curvature
-// scale); an end sample falling away from the end is that end's maximum. on_max(Maximum) is
-// called for each. Every one is refined, not only the highest sample: two samples straddling a
-// hump can both lie below an end that the hump itself overtops.
-template <class F, class OnMax>
-void each_sampled_maximum(F f, double lo, double hi, int samples, double resolution, OnMax on_max) {
+// its neighbours), placed by refine(a, b, x, f(x)) between the neighbours a and b of the sample x
+// (below: Brent's method within `resolution`, default a billionth of [lo, hi]; the value is then
+// exact to about 1e-17 of its curvature scale); an end sample falling away from the end is that
+// end's maximum. on_max(Maximum) is called for each. Every one is refined, not only the highest
+// sample: two samples straddling a hump can both lie below an end that the hump itself overtops.
+template <class F, class OnMax, class Refine>
+void each_sampled_maximum(F f, double lo, double hi, int samples, double resolution, OnMax on_max, Refine refine) {
   constexpr int kMostSamples = 64;
   if (samples < 1 || samples > kMostSamples) throw std::invalid_argument("each_sampled_maximum: 1..64 samples");
   double at[kMostSamples + 1], value[kMostSamples + 1];
@@ -192,9 +192,17 @@ void each_sampled_maximum(F f, double lo, double hi, int samples, double resolut
       continue;
     }
     const Maximum sample{value[i], at[i]};
-    const Maximum m = brent_maximum(f, at[std::max(0, i - 1)], at[std::min(samples, i + 1)], at[i], value[i], resolution);
+    const Maximum m = refine(at[std::max(0, i - 1)], at[std::min(samples, i + 1)], at[i], value[i]);
     on_max(m.value > sample.value ? m : sample);
   }
+}
+
+template <class F, class OnMax>
+void each_sampled_maximum(F f, double lo, double hi, int samples, double resolution, OnMax on_max) {
+  if (resolution <= 0) resolution = 1e-9 * (hi - lo);
+  each_sampled_maximum(f, lo, hi, samples, resolution, on_max, [&](double a, double b, double x, double fx) {
+    return brent_maximum(f, a, b, x, fx, resolution);
+  });
 }
 
 // The largest value of f on [lo, hi] (the highest of each_sampled_maximum's; NaN where f is).
