@@ -357,35 +357,47 @@ struct NodeKey {
   }
 };
 
-}  // namespace
+// The outputs' nodes with equal subtrees (by structure) numbered once, operands before their
+// users: each distinct node, its operands' numbers (-1: none), and the outputs' numbers.
+struct Interned {
+  std::vector<Sym> nodes;
+  std::vector<int> a, b;
+  std::vector<int> roots;
+};
 
-std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next_temp,
-                                      std::vector<std::pair<int, Sym>>& temps) {
-  // one node per structure, operands before their users
+Interned intern(const std::vector<Sym>& outputs) {
+  Interned in;
   std::map<NodeKey, int> ids;
-  std::vector<Sym> nodes;          // by id, as given
-  std::vector<int> ops_a, ops_b;   // operand ids (-1: none)
   auto visit = [&](auto& self, const Sym& e) -> int {
     int a = e->a ? self(self, e->a) : -1;
     int b = e->b ? self(self, e->b) : -1;
     NodeKey key{e->op, e->op == SymOp::konst ? std::bit_cast<std::uint64_t>(e->k) : 0,
                 e->op == SymOp::var ? e->var : 0, a, b};
-    auto [it, fresh] = ids.try_emplace(key, static_cast<int>(nodes.size()));
+    auto [it, fresh] = ids.try_emplace(key, static_cast<int>(in.nodes.size()));
     if (fresh) {
-      nodes.push_back(e);
-      ops_a.push_back(a);
-      ops_b.push_back(b);
+      in.nodes.push_back(e);
+      in.a.push_back(a);
+      in.b.push_back(b);
     }
     return it->second;
   };
-  std::vector<int> roots;
-  for (const Sym& e : outputs) roots.push_back(visit(visit, e));
+  for (const Sym& e : outputs) in.roots.push_back(visit(visit, e));
+  return in;
+}
+
+}  // namespace
+
+std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next_temp,
+                                      std::vector<std::pair<int, Sym>>& temps) {
+  const Interned in = intern(outputs);
+  const std::vector<Sym>& nodes = in.nodes;
+  const std::vector<int>&ops_a = in.a, &ops_b = in.b;
   std::vector<int> uses(nodes.size(), 0);
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     if (ops_a[i] >= 0) ++uses[static_cast<std::size_t>(ops_a[i])];
     if (ops_b[i] >= 0) ++uses[static_cast<std::size_t>(ops_b[i])];
   }
-  for (int r : roots) ++uses[static_cast<std::size_t>(r)];
+  for (int r : in.roots) ++uses[static_cast<std::size_t>(r)];
   constexpr std::size_t kVariableLength = 4;  // "#150"
   std::vector<Sym> built(nodes.size());
   auto build = [&](auto& self, int id) -> Sym {
@@ -402,24 +414,19 @@ std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next
     return built[i] = out;
   };
   std::vector<Sym> rewritten;
-  for (int r : roots) rewritten.push_back(build(build, r));
+  for (int r : in.roots) rewritten.push_back(build(build, r));
   return rewritten;
 }
 
 Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(options) {
-  std::map<NodeKey, int> registers;
-  // post-order: operands first; equal subtrees (by structure) share a register
-  auto visit = [&](auto& self, const Sym& e) -> int {
-    int a = e->a ? self(self, e->a) : -1;
-    int b = e->b ? self(self, e->b) : -1;
-    NodeKey key{e->op, e->op == SymOp::konst ? std::bit_cast<std::uint64_t>(e->k) : 0,
-                e->op == SymOp::var ? e->var : 0, a, b};
-    auto [it, fresh] = registers.try_emplace(key, registers_);
-    if (!fresh) return it->second;
-    steps_.push_back(Step{e->op, registers_, a, b, e->k, e->var});
-    return registers_++;
-  };
-  for (const Sym& e : outputs) outputs_.push_back(visit(visit, e));
+  // operands first; equal subtrees share a register (its node's number)
+  const Interned in = intern(outputs);
+  for (std::size_t i = 0; i < in.nodes.size(); ++i) {
+    const SymNode& e = *in.nodes[i];
+    steps_.push_back(Step{e.op, static_cast<int>(i), in.a[i], in.b[i], e.k, e.var});
+  }
+  registers_ = static_cast<int>(in.nodes.size());
+  outputs_ = in.roots;
   // a sine and a cosine of one register: the first computes both, the second is dropped
   std::map<int, std::size_t> sine_of, cosine_of;  // operand register -> step
   for (std::size_t i = 0; i < steps_.size(); ++i) {
