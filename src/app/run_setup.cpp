@@ -67,6 +67,7 @@ RunSetup prepare_run(const RunInputs& in) {
   for (const auto& v : in.sets) s.options.presets.push_back(parse_set(v));
   if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
   apply_parameters(s.profile, in.params);
+  s.lib = std::make_unique<machine::ProgramLibrary>(s.profile.parse_options());
   s.problems = s.lib->add_file(in.program, true);
   for (const auto& dir : in.libs) {
     auto more = s.lib->add_folder(dir);

@@ -106,7 +106,7 @@ void jet_blocks(const Loop& l, Writer& before, Writer& inside, int& next_temp) {
   std::vector<Sym> outputs;
   for (int order = 0; order < 3; ++order)
     for (int axis : l.axes)
-      outputs.push_back(order == 0 ? axis_sym(c.curve, c.map, axis) : axis_derivative(c, axis, order));
+      outputs.push_back(order == 0 ? geom::simplify(axis_sym(c.curve, c.map, axis)) : axis_derivative(c, axis, order));
   std::vector<std::pair<int, Sym>> temps;
   std::vector<Sym> shared = geom::share_subexpressions(outputs, next_temp, temps);
   std::set<int> varying{geom::kTVar};
@@ -225,7 +225,7 @@ Sym renamed(const Sym& e, int from, int to) {
 void start_blocks(const Loop& l, Writer& w, int& next_temp) {
   for (int i = 0; i < l.dims(); ++i) {
     std::vector<std::pair<int, Sym>> temps;
-    Sym at_start = renamed(axis_sym(l.c.curve, l.c.map, l.axes[static_cast<std::size_t>(i)]), geom::kTVar, 110);
+    Sym at_start = renamed(geom::simplify(axis_sym(l.c.curve, l.c.map, l.axes[static_cast<std::size_t>(i)])), geom::kTVar, 110);
     Sym limited = geom::limit_depth(at_start, 3, next_temp, temps);
     for (const auto& [t, s] : temps) w.block(fmt::format("#{}={}", t, geom::to_macro(s)));
     w.block(fmt::format("#{}={}", l.a(i), l.rounded(i, geom::to_macro(limited))));

@@ -41,10 +41,16 @@ int decimals_of(double increment) { return std::max(0, static_cast<int>(std::lro
 
 void append_number(std::string& out, double v, int decimals) {
   char buf[400];  // fits any double in fixed notation
-  const std::size_t n = fmt::format_to_n(buf, sizeof buf, "{:.{}f}", v, decimals).size;
-  std::string_view s(buf, std::min(n, sizeof buf));
-  if (s.find('.') != std::string_view::npos)
-    while (s.back() == '0') s.remove_suffix(1);
+  std::string_view s;
+  for (;; --decimals) {  // fewer decimals until the number fits the digits every control takes
+    const std::size_t n = fmt::format_to_n(buf, sizeof buf, "{:.{}f}", v, std::max(decimals, 0)).size;
+    s = std::string_view(buf, std::min(n, sizeof buf));
+    if (s.find('.') != std::string_view::npos)
+      while (s.back() == '0') s.remove_suffix(1);
+    if (decimals <= 0 || std::count_if(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; }) <=
+                             nc::kPortableDigits)
+      break;
+  }
   if (s == "-0." || s == "-0") s = "0.";
   out += s;
   if (s.find('.') == std::string_view::npos) out += '.';

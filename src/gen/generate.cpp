@@ -82,7 +82,7 @@ geom::Plane plane_of(const machine::MachineProfile& p) {
 
 Stats round_trip(const std::string& text, const geom::Curve& curve, const Options& o, std::uint32_t first_line,
                  std::uint32_t last_line) {
-  machine::ProgramLibrary lib;
+  machine::ProgramLibrary lib(o.profile.parse_options());
   lib.add_text("<generated>", text, true);
   // The contour's moves, one group per pass: a feed move outside the contour (the plunge) ends one.
   struct Keep final : machine::MoveSink {

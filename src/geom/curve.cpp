@@ -166,8 +166,8 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
 
 void Curve::compile(nc::EvalOptions options) {
   for (int a = 0; a < 3; ++a) {
-    sym_d1_[a] = derivative(sym_pos_[a], kTVar);
-    sym_d2_[a] = derivative(sym_d1_[a], kTVar);
+    sym_d1_[a] = simplify(derivative(sym_pos_[a], kTVar));
+    sym_d2_[a] = simplify(derivative(sym_d1_[a], kTVar));
   }
   auto list = [](const std::array<Sym, 3>& e) { return std::vector<Sym>(e.begin(), e.end()); };
   pos_ = Tape(list(sym_pos_), options);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <tuple>
@@ -12,6 +13,7 @@
 #include <stdexcept>
 
 #include "nc/diagnostic.hpp"
+#include "nc/program.hpp"
 
 namespace ncurve::geom {
 namespace {
@@ -72,19 +74,40 @@ const char* function_name(SymOp op) {
   }
 }
 
-// A constant as FANUC reads it: no exponent, at most 15 significant digits, always a decimal point.
+int digit_count(std::string_view s) {
+  return static_cast<int>(std::count_if(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; }));
+}
+
+// A constant (>= 0) as every FANUC reads it: no exponent, a decimal point, at most 8 digits (the
+// leading zero of 0.5 counts; it is left out where the digit is worth more). What 8 digits hold
+// to worse than 1e-6 keeps 15 significant digits: the program then fails loudly on an 8-digit
+// control instead of cutting a different curve.
 std::string number_text(double k) {
-  std::string s = fmt::format("{:.15g}", k);
-  if (s.find_first_of("eE") != std::string::npos) {
-    int exponent = static_cast<int>(std::floor(std::log10(std::fabs(k))));
-    int decimals = std::clamp(14 - exponent, 0, 40);
-    s = fmt::format("{:.{}f}", k, decimals);
-  }
-  if (s.find('.') == std::string::npos) s += '.';
-  else {
+  auto fixed = [&](int decimals) {
+    std::string s = fmt::format("{:.{}f}", k, decimals);
+    if (s.find('.') == std::string::npos) s += '.';
     while (s.back() == '0') s.pop_back();
+    return s;
+  };
+  std::string best;
+  for (int decimals = 0; decimals <= 40; ++decimals) {
+    std::string s = fixed(decimals);
+    if (s.size() > 1 && s[0] == '0' && digit_count(s) > nc::kPortableDigits) s.erase(0, 1);  // .xxxxxxxx
+    if (digit_count(s) > nc::kPortableDigits && !best.empty()) break;
+    best = s;
+    if (std::strtod(s.c_str(), nullptr) == k) return best;
   }
-  return s;
+  if (std::fabs(std::strtod(best.c_str(), nullptr) - k) <= 1e-6 * k) return best;
+  const int exponent = static_cast<int>(std::floor(std::log10(k)));
+  return fixed(std::clamp(nc::kMostDigits - 1 - exponent, 0, 40));
+}
+
+// Relative error of k as printed; 1 where it takes more digits than every control reads.
+double printed_error(double k) {
+  if (k == 0) return 0;
+  const std::string text = number_text(std::fabs(k));
+  if (digit_count(text) > nc::kPortableDigits) return 1;
+  return std::fabs(std::strtod(text.c_str(), nullptr) - std::fabs(k)) / std::fabs(k);
 }
 
 struct Printed {
@@ -112,8 +135,11 @@ Printed operand(const Sym& e, int needed) {
 Printed print(const Sym& e) {
   switch (e->op) {
     case SymOp::konst: {
-      if (e->k < 0) return {fmt::format("-{}", number_text(-e->k)), 0};
-      return {number_text(e->k), 0};
+      const std::string sign = e->k < 0 ? "-" : "";
+      // a small constant 8 digits cannot hold, by its reciprocal: [1./3282.8064]
+      if (printed_error(e->k) > 1e-6 && printed_error(1 / e->k) <= 1e-6)
+        return {fmt::format("{}[1./{}]", sign, number_text(std::fabs(1 / e->k))), 1};
+      return {sign + number_text(std::fabs(e->k)), 0};
     }
     case SymOp::var: return {fmt::format("#{}", e->var), 0};
     case SymOp::neg: {
@@ -327,6 +353,225 @@ Sym derivative(const Sym& e, int var) {
   }
 }
 
+namespace {
+
+// A total order on expressions by structure (op, constant, variable, then operands).
+int compare(const Sym& x, const Sym& y) {
+  if (x == y) return 0;
+  if (!x || !y) return x ? 1 : -1;
+  if (x->op != y->op) return x->op < y->op ? -1 : 1;
+  if (x->op == SymOp::konst) return x->k < y->k ? -1 : (x->k > y->k ? 1 : 0);
+  if (x->op == SymOp::var) return x->var < y->var ? -1 : (x->var > y->var ? 1 : 0);
+  if (int c = compare(x->a, y->a)) return c;
+  return compare(x->b, y->b);
+}
+
+struct Factor {
+  Sym base;
+  int power;
+};
+struct Term {
+  double coeff = 1;
+  std::vector<Factor> factors;  // by compare() of their bases, each base once
+};
+using Terms = std::vector<Term>;
+
+bool is_sum(const Sym& e) { return e->op == SymOp::add || e->op == SymOp::sub; }
+
+int compare_factors(const std::vector<Factor>& x, const std::vector<Factor>& y) {
+  for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+    if (int c = compare(x[i].base, y[i].base)) return c;
+    if (x[i].power != y[i].power) return x[i].power < y[i].power ? -1 : 1;
+  }
+  return x.size() == y.size() ? 0 : (x.size() < y.size() ? -1 : 1);
+}
+
+// a + b, or 0 where they cancel to rounding
+double cancelled(double a, double b) {
+  const double s = a + b;
+  return std::fabs(s) <= 1e-13 * (std::fabs(a) + std::fabs(b)) ? 0.0 : s;
+}
+
+void sort_factors(Term& t) {
+  std::sort(t.factors.begin(), t.factors.end(),
+            [](const Factor& x, const Factor& y) { return compare(x.base, y.base) < 0; });
+  std::vector<Factor> merged;
+  for (const Factor& f : t.factors) {
+    if (!merged.empty() && compare(merged.back().base, f.base) == 0) merged.back().power += f.power;
+    else merged.push_back(f);
+    if (merged.back().power == 0) merged.pop_back();
+  }
+  t.factors = std::move(merged);
+}
+
+void collect_terms(Terms& terms) {
+  for (Term& t : terms) sort_factors(t);
+  std::sort(terms.begin(), terms.end(),
+            [](const Term& x, const Term& y) { return compare_factors(x.factors, y.factors) < 0; });
+  Terms merged;
+  for (const Term& t : terms) {
+    if (!merged.empty() && compare_factors(merged.back().factors, t.factors) == 0)
+      merged.back().coeff = cancelled(merged.back().coeff, t.coeff);
+    else merged.push_back(t);
+    if (merged.back().coeff == 0) merged.pop_back();
+  }
+  terms = std::move(merged);
+}
+
+void sum_terms(const Sym& e, double scale, Terms& out);
+Sym rebuild(Terms terms);
+
+// e^power multiplied into t
+void product_factors(const Sym& e, int power, Term& t) {
+  switch (e->op) {
+    case SymOp::konst:
+      if (e->k != 0 || power > 0) {
+        t.coeff *= std::pow(e->k, power);
+        return;
+      }
+      break;
+    case SymOp::neg:
+      if (power % 2) t.coeff = -t.coeff;
+      product_factors(e->a, power, t);
+      return;
+    case SymOp::mul:
+      product_factors(e->a, power, t);
+      product_factors(e->b, power, t);
+      return;
+    case SymOp::div:
+      product_factors(e->a, power, t);
+      product_factors(e->b, -power, t);
+      return;
+    case SymOp::pow:
+      if (e->b->op == SymOp::konst && e->b->k == std::round(e->b->k) && std::fabs(e->b->k) <= 8) {
+        product_factors(e->a, power * static_cast<int>(e->b->k), t);
+        return;
+      }
+      break;
+    case SymOp::add: case SymOp::sub: {
+      Terms inner;
+      sum_terms(e, 1, inner);
+      collect_terms(inner);
+      if (inner.empty()) {
+        if (power > 0) t.coeff = 0;
+        else t.factors.push_back({e, power});  // a division by zero stays as written
+        return;
+      }
+      if (inner.size() == 1) {
+        t.coeff *= std::pow(inner[0].coeff, power);
+        for (Factor f : inner[0].factors) t.factors.push_back({f.base, f.power * power});
+        return;
+      }
+      // a sum as one factor: its sign out, and a coefficient all its terms share
+      double content = inner[0].coeff;
+      for (const Term& u : inner)
+        if (std::fabs(u.coeff) != std::fabs(content)) content = content < 0 ? -1 : 1;
+      for (Term& u : inner) u.coeff /= content;
+      t.coeff *= std::pow(content, power);
+      t.factors.push_back({rebuild(std::move(inner)), power});
+      return;
+    }
+    default: break;
+  }
+  Sym atom = e;
+  if (e->a) atom = make(e->op, simplify(e->a), e->b ? simplify(e->b) : nullptr);
+  if (atom->op == SymOp::konst && (atom->k != 0 || power > 0)) t.coeff *= std::pow(atom->k, power);
+  else t.factors.push_back({atom, power});
+}
+
+// scale * e as terms added to out
+void sum_terms(const Sym& e, double scale, Terms& out) {
+  switch (e->op) {
+    case SymOp::add: sum_terms(e->a, scale, out); sum_terms(e->b, scale, out); return;
+    case SymOp::sub: sum_terms(e->a, scale, out); sum_terms(e->b, -scale, out); return;
+    case SymOp::neg: sum_terms(e->a, -scale, out); return;
+    case SymOp::konst: out.push_back(Term{scale * e->k, {}}); return;
+    default: break;
+  }
+  Term t;
+  t.coeff = scale;
+  product_factors(e, 1, t);
+  // a constant times one sum: its terms join this sum
+  if (t.factors.size() == 1 && t.factors[0].power == 1 && is_sum(t.factors[0].base)) {
+    sum_terms(t.factors[0].base, t.coeff, out);
+    return;
+  }
+  out.push_back(std::move(t));
+}
+
+Sym power_of(const Sym& base, int n) {
+  Sym p = base;
+  for (int i = 1; i < n; ++i) p = make(SymOp::mul, p, base);
+  return p;
+}
+
+// |coeff| * factors (positive powers over negative ones)
+Sym magnitude(const Term& t) {
+  // a coefficient whose reciprocal prints closer or shorter divides: x/360. rather than 0.0027778*x
+  const double c = std::fabs(t.coeff);
+  const double ec = printed_error(c), er = printed_error(1 / c);
+  const bool divide = !t.factors.empty() &&
+                      (er < 0.5 * ec || (er <= 2 * ec && number_text(1 / c).size() < number_text(c).size()));
+  Sym num = konst(divide ? 1 : c);
+  for (const Factor& f : t.factors)
+    for (int i = 0; i < f.power; ++i) num = make(SymOp::mul, num, f.base);
+  if (divide) num = make(SymOp::div, num, konst(1 / c));
+  for (const Factor& f : t.factors)
+    for (int i = 0; i < -f.power; ++i) num = make(SymOp::div, num, f.base);
+  return num;
+}
+
+Sym rebuild(Terms terms) {
+  if (terms.empty()) return konst(0);
+  // factors every term shares come out in front: a*x+a*y is a*[x+y]
+  std::vector<Factor> common;
+  if (terms.size() > 1) {
+    for (const Factor& f : terms[0].factors) {
+      int power = f.power;
+      for (std::size_t i = 1; i < terms.size() && power != 0; ++i) {
+        auto it = std::find_if(terms[i].factors.begin(), terms[i].factors.end(),
+                               [&](const Factor& g) { return compare(g.base, f.base) == 0; });
+        if (it == terms[i].factors.end() || (it->power > 0) != (power > 0)) power = 0;
+        else power = power > 0 ? std::min(power, it->power) : std::max(power, it->power);
+      }
+      if (power != 0) common.push_back({f.base, power});
+    }
+  }
+  if (!common.empty()) {
+    for (Term& t : terms) {
+      for (const Factor& c : common) t.factors.push_back({c.base, -c.power});
+      sort_factors(t);
+    }
+    Term front{1, common};
+    Sym rest = rebuild(std::move(terms));
+    Sym f = magnitude(front);
+    // the sum first where the common part is a pure divisor: [x+y]/a
+    bool divisor_only = std::all_of(common.begin(), common.end(), [](const Factor& c) { return c.power < 0; });
+    if (divisor_only) {
+      Sym den = konst(1);
+      for (const Factor& c : common) den = make(SymOp::mul, den, power_of(c.base, -c.power));
+      return make(SymOp::div, rest, den);
+    }
+    return make(SymOp::mul, f, rest);
+  }
+  // positive terms first, so that the sum rarely starts with a sign
+  std::stable_partition(terms.begin(), terms.end(), [](const Term& t) { return t.coeff > 0; });
+  Sym out = magnitude(terms[0]);
+  if (terms[0].coeff < 0) out = make(SymOp::neg, out);
+  for (std::size_t i = 1; i < terms.size(); ++i)
+    out = make(terms[i].coeff > 0 ? SymOp::add : SymOp::sub, out, magnitude(terms[i]));
+  return out;
+}
+
+}  // namespace
+
+Sym simplify(const Sym& e) {
+  Terms terms;
+  sum_terms(e, 1, terms);
+  collect_terms(terms);
+  return rebuild(std::move(terms));
+}
+
 std::string to_macro(const Sym& e) { return print(e).text; }
 int bracket_depth(const Sym& e) { return print(e).depth; }
 
@@ -421,11 +666,17 @@ std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next
 Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(options) {
   // operands first; equal subtrees share a register (its node's number)
   const Interned in = intern(outputs);
+  registers_ = static_cast<int>(in.nodes.size());
   for (std::size_t i = 0; i < in.nodes.size(); ++i) {
     const SymNode& e = *in.nodes[i];
+    const SymNode* divisor = e.op == SymOp::div ? in.nodes[static_cast<std::size_t>(in.b[i])].get() : nullptr;
+    if (divisor && divisor->op == SymOp::konst && divisor->k != 0) {  // x/k as x*(1/k): a product is faster
+      steps_.push_back(Step{SymOp::konst, registers_, -1, -1, 1 / divisor->k, 0});
+      steps_.push_back(Step{SymOp::mul, static_cast<int>(i), in.a[i], registers_++, 0, 0});
+      continue;
+    }
     steps_.push_back(Step{e.op, static_cast<int>(i), in.a[i], in.b[i], e.k, e.var});
   }
-  registers_ = static_cast<int>(in.nodes.size());
   outputs_ = in.roots;
   // a sine and a cosine of one register: the first computes both, the second is dropped
   std::map<int, std::size_t> sine_of, cosine_of;  // operand register -> step

@@ -35,6 +35,11 @@ Sym make(SymOp op, Sym a, Sym b = nullptr);
 Sym from_code(const std::vector<nc::Instr>& code, const std::string& origin);
 
 Sym derivative(const Sym& e, int var);
+// The same value in a canonical sum-of-products form: nested sums and products flattened, operands
+// in one order, like terms and like factors collected (a*b-b*a is 0, x*y/x is y), a sign or a
+// common factor taken out of a sum. Products are not multiplied out, so the text never grows by
+// more than a few brackets.
+Sym simplify(const Sym& e);
 bool depends_on(const Sym& e, int var);
 
 // Macro text with the fewest brackets FANUC precedence allows.

@@ -24,7 +24,7 @@ int number_from_file_name(const std::string& path) {
 std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, std::string text, bool is_main) {
   auto file = std::make_shared<const nc::SourceFile>(name, std::move(text));
   files_.push_back(file);
-  nc::ParseResult r = nc::parse(file);
+  nc::ParseResult r = nc::parse(file, options_);
   int from_name = number_from_file_name(name);
   for (auto& p : r.programs) {
     if (p->number < 0 && from_name >= 0) p->number = from_name;

@@ -11,6 +11,7 @@ namespace ncurve::machine {
 
 class ProgramLibrary {
 public:
+  explicit ProgramLibrary(nc::ParseOptions options = {}) : options_(options) {}
   // Parses a file and registers its programs; a program without an O line takes its number from a
   // file name like O9010.nc. Returns the syntax problems found (they also stay attached to their blocks).
   std::vector<nc::Diagnostic> add_text(const std::string& name, std::string text, bool is_main = false);
@@ -24,6 +25,7 @@ public:
   const std::vector<std::shared_ptr<const nc::SourceFile>>& files() const { return files_; }
 
 private:
+  nc::ParseOptions options_;
   std::vector<std::shared_ptr<const nc::SourceFile>> files_;
   std::vector<std::unique_ptr<nc::Program>> programs_;
   std::map<int, const nc::Program*> by_number_;

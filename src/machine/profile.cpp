@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -116,7 +117,12 @@ void machine_table(MachineProfile& p, const toml::table& t, const std::string& o
     else if (key == "block_skip") p.block_skip = flag(origin, node, key);
     else if (key == "macro_call_nesting") p.macro_nesting = static_cast<int>(number(origin, node, key));
     else if (key == "subprogram_nesting") p.subprogram_nesting = static_cast<int>(number(origin, node, key));
-    else fail(origin, node, fmt::format("unknown key '{}' in [machine]", key));
+    else if (key == "number_digits") {
+      double v = number(origin, node, key);
+      if (v != std::floor(v) || v < 8 || v > nc::kMostDigits)
+        fail(origin, node, fmt::format("number_digits must be a whole number from 8 to {}", nc::kMostDigits));
+      p.number_digits = static_cast<int>(v);
+    } else fail(origin, node, fmt::format("unknown key '{}' in [machine]", key));
   }
 }
 

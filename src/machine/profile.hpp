@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "nc/program.hpp"
+
 namespace ncurve::machine {
 
 enum class MachineType { mill, lathe };
@@ -62,6 +64,7 @@ struct MachineProfile {
   bool block_skip = false;          // block skip switch on: blocks starting with '/' are skipped
   int macro_nesting = 4;            // G65/G66/custom calls: 4 on 0i/16i, 5 on 30i
   int subprogram_nesting = 10;      // M98 calls: 10 on 0i, 15 on 30i
+  int number_digits = 8;            // digits in one number (word or constant), leading zeros counted
   double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   std::array<int, 10> g_code_macros{};  // No.6050..6059: G code that calls O9010..O9019
@@ -78,6 +81,7 @@ struct MachineProfile {
   ServoSettings servo;
 
   bool lathe() const { return type == MachineType::lathe; }
+  nc::ParseOptions parse_options() const { return nc::ParseOptions{number_digits}; }
 };
 
 MachineProfile default_mill();

@@ -18,7 +18,6 @@ namespace {
 
 constexpr std::size_t kMaxBlockChars = 4096;  // significant characters of one block
 constexpr int kMaxBracketNesting = 5;         // FANUC: brackets nest five deep at most
-constexpr int kMaxDigits = 15;
 constexpr std::size_t kMaxComment = 256;             // characters of a comment kept (for #3000 messages)
 
 struct Ch {
@@ -105,7 +104,10 @@ struct SyntaxError {
 // Parses one block (already stripped of spaces and comments, upper case) into a Block.
 class BlockParser {
 public:
-  BlockParser(std::span<const Ch> s, Program& prog) : s_(s), prog_(prog) {}
+  // max_digits: every digit typed counts, as on the control; a curve's expression (outside any
+  // program) counts significant digits only.
+  BlockParser(std::span<const Ch> s, Program& prog, int max_digits, bool leading_zeros_count = true)
+      : s_(s), prog_(prog), max_digits_(max_digits), leading_zeros_count_(leading_zeros_count) {}
 
   void statement(Block& b) {
     if (i_ == s_.size()) return;
@@ -127,6 +129,8 @@ public:
 private:
   std::span<const Ch> s_;
   Program& prog_;
+  int max_digits_;
+  bool leading_zeros_count_;
   std::size_t i_ = 0;
   int depth_ = 0;      // bracket nesting
   int stack_ = 0;      // evaluation stack depth while emitting
@@ -184,8 +188,8 @@ private:
   }
 
   // ---- numbers ----
-  // Up to 15 significant digits: the integer mantissa and the power of ten are exact doubles, so one
-  // division gives the correctly rounded value, as strtod would.
+  // Up to max_digits_ (15 at most) digits: the integer mantissa and the power of ten are exact
+  // doubles, so one division gives the correctly rounded value, as strtod would.
   double number(bool& decimal_point) {
     std::size_t start = i_;
     std::int64_t mantissa = 0;
@@ -196,12 +200,14 @@ private:
         if (decimal_point) fail("PS0007", "a number has two decimal points");
         decimal_point = true;
       } else {
-        if (mantissa != 0 || c != '0') ++digits;
-        if (digits > kMaxDigits) {
+        if ((leading_zeros_count_ || mantissa != 0 || c != '0') && ++digits > max_digits_) {
           std::size_t end = i_;
           while (end < s_.size() && (is_digit(s_[end].c) || s_[end].c == '.')) ++end;
           i_ = start;
-          fail("PS0003", fmt::format("too many digits; at most {}", kMaxDigits),
+          fail("PS0003",
+               leading_zeros_count_ ? fmt::format("too many digits; this control takes {} (leading zeros count; "
+                                                  "machine profile number_digits)", max_digits_)
+                                    : fmt::format("too many digits; at most {} significant", max_digits_),
                static_cast<std::uint32_t>(end - start));
         }
         mantissa = mantissa * 10 + (c - '0');
@@ -644,7 +650,7 @@ void advise_huge_pages(void* data, std::size_t bytes) {
 // Expanded programs are mostly blocks of plain words (X1.234 Y-5. F100.). Such a line is compiled
 // straight from the raw text; anything else (macros, comments, N, '/', errors) returns false and
 // goes through the general scanner and BlockParser, which give the same result for plain lines.
-bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog) {
+bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int max_digits) {
   const std::size_t words_mark = prog.words.size();
   auto bail = [&] {
     prog.words.resize(words_mark);
@@ -671,16 +677,14 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog) {
       k = skip_blanks(k + 1);
     }
     std::int64_t mantissa = 0;
-    int digits = 0, significant = 0, fraction = 0;
+    int digits = 0, fraction = 0;
     for (; k < raw.size(); k = skip_blanks(k + 1)) {
       const char c = raw[k];
       if (c == '.') {
         if (w.decimal_point) return bail();
         w.decimal_point = true;
       } else if (is_digit(c)) {
-        ++digits;
-        if (mantissa != 0 || c != '0') ++significant;
-        if (significant > kMaxDigits) return bail();
+        if (++digits > max_digits) return bail();
         mantissa = mantissa * 10 + (c - '0');
         if (w.decimal_point) ++fraction;
       } else {
@@ -704,7 +708,8 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog) {
 
 }  // namespace
 
-ParseResult parse(std::shared_ptr<const SourceFile> file) {
+ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) {
+  const int max_digits = std::clamp(options.max_digits, 1, kMostDigits);
   ParseResult result;
   std::uint32_t line = 0;
   Program* current = nullptr;
@@ -774,7 +779,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       i = j;
     }
     if (b.kind == Statement::empty && b.error < 0 && i < s.size()) {
-      BlockParser bp(s.subspan(i), *current);
+      BlockParser bp(s.subspan(i), *current, max_digits);
       std::size_t words_mark = current->words.size(), code_mark = current->code.size();
       try {
         bp.statement(b);
@@ -807,7 +812,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file) {
       if (started) done = true;
       continue;
     }
-    if (current && plain_nc_line(raw, line, *current)) {
+    if (current && plain_nc_line(raw, line, *current, max_digits)) {
       started = true;
       continue;
     }
@@ -879,7 +884,7 @@ CompiledExpr compile_expression(const std::string& text, const std::string& orig
     chars.push_back(Ch{to_upper(static_cast<char>(u)), clamp_col(k + 1)});
   }
   Program p;
-  BlockParser bp(chars, p);
+  BlockParser bp(chars, p, kMostDigits, false);
   try {
     bp.standalone_expression();
   } catch (const SyntaxError& e) {

@@ -68,9 +68,20 @@ struct ParseResult {
   std::vector<Diagnostic> diagnostics;  // every problem found in the text, in order
 };
 
+// Digits in one number, NC word or macro constant, every digit typed counted (0.00000001 has nine,
+// .00000001 eight): FANUC 0i takes 8 (alarm PS0003 beyond), so every control takes programs written
+// with 8; double precision holds 15.
+constexpr int kPortableDigits = 8;
+constexpr int kMostDigits = 15;
+
+// What the control accepts that differs between models.
+struct ParseOptions {
+  int max_digits = kPortableDigits;
+};
+
 // Splits a file into programs (one per O number) and compiles each block.
 // Problems are reported and also attached to their block, to be raised when it runs, as FANUC does.
-ParseResult parse(std::shared_ptr<const SourceFile> file);
+ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options = {});
 
 // Compiles one stand-alone expression (for curves given as text); throws Alarm on error.
 struct CompiledExpr {

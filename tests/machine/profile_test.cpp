@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "machine/library.hpp"
 #include "machine/profile.hpp"
 
 using namespace ncurve::machine;
@@ -26,6 +27,21 @@ TEST(Profile, ThirtyIRaisesNestingAndIncrementSystem) {
   EXPECT_EQ(p.macro_nesting, 5);
   EXPECT_DOUBLE_EQ(p.increment, 0.0001);
   EXPECT_DOUBLE_EQ(p.arc_radius_tolerance, 0.002);
+}
+
+// FANUC 0i reads 8 digits in a number (PS0003 beyond); a profile may allow up to 15.
+TEST(Profile, NumberDigitsReachTheParser) {
+  const std::string program = "O1\n#1=3.14159265358979\nM30\n";
+  ProgramLibrary zero_i(default_mill().parse_options());
+  auto problems = zero_i.add_text("t.nc", program, true);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].code, "PS0003");
+  EXPECT_EQ(problems[0].span.line, 2u);
+  auto wide = parse_profile("[machine]\nnumber_digits = 15\n", "p.toml");
+  ProgramLibrary thirty(wide.parse_options());
+  EXPECT_TRUE(thirty.add_text("t.nc", program, true).empty());
+  EXPECT_THROW(parse_profile("[machine]\nnumber_digits = 7\n", "p.toml"), std::runtime_error);
+  EXPECT_THROW(parse_profile("[machine]\nnumber_digits = 16\n", "p.toml"), std::runtime_error);
 }
 
 TEST(Profile, UnknownKeysAreErrorsWithPosition) {

@@ -168,12 +168,27 @@ TEST(Parser, PlainLinesCompileAsTheGeneralScannerDoes) {
   }
 }
 
-// Leading zeros after the point do not count as digits, and the value keeps its scale.
-TEST(Parser, LongDecimalFractionsKeepTheirValue) {
-  auto r = parse_text("O1\nX0.00555555555555556 Y0.000000000000000000000000123\n#1=0.0174532925199433*2\n");
-  ASSERT_TRUE(r.diagnostics.empty());
+// FANUC 0i takes 8 digits in a number, every digit typed counted (0.00000001 has nine, .00000001
+// eight); a profile may allow up to 15, and long fractions keep their value.
+TEST(Parser, DigitsPerNumberFollowTheControl) {
+  const std::string text = "O1\n#1=.00000001\n#2=0.00000001\nX12345.678\nX123456.789\nG01 X1. Y.123456789 (C)\n";
+  auto eight = parse_text(text);
+  ASSERT_EQ(eight.diagnostics.size(), 3u);
+  const std::uint32_t lines[] = {3, 5, 6}, columns[] = {4, 2, 10};
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(eight.diagnostics[i].code, "PS0003");
+    EXPECT_EQ(eight.diagnostics[i].span.line, lines[i]);
+    EXPECT_EQ(eight.diagnostics[i].span.column, columns[i]);
+  }
+  EXPECT_DOUBLE_EQ(eight.programs[0]->code[eight.programs[0]->blocks[1].value.begin].k, 1e-8);
+  auto fifteen = parse(std::make_shared<SourceFile>("t.nc", text), ParseOptions{15});
+  EXPECT_TRUE(fifteen.diagnostics.empty());
+  auto r = parse(std::make_shared<SourceFile>("t.nc", "O1\nX.00555555555555 Y-.00000000000123\n#1=.017453292519943*2\nX1234567890123456\n"),
+                 ParseOptions{15});
+  ASSERT_EQ(r.diagnostics.size(), 1u);  // 16 digits
+  EXPECT_EQ(r.diagnostics[0].span.line, 4u);
   const Program& p = *r.programs[0];
-  EXPECT_DOUBLE_EQ(p.words[0].value, 0.00555555555555556);
-  EXPECT_DOUBLE_EQ(p.words[1].value, 1.23e-25);
-  EXPECT_DOUBLE_EQ(p.code[p.blocks[1].value.begin].k, 0.0174532925199433);
+  EXPECT_DOUBLE_EQ(p.words[0].value, 0.00555555555555);
+  EXPECT_DOUBLE_EQ(p.words[1].value, -1.23e-12);
+  EXPECT_DOUBLE_EQ(p.code[p.blocks[1].value.begin].k, 0.017453292519943);
 }
