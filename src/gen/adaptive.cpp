@@ -25,11 +25,12 @@ constexpr double kShrink = 0.99;  // after a trial over the aim, the next is thi
 constexpr int kDigits = 9;        // decimals of the macro's constants
 
 // The loop's variables. Locals keep the blocks short (a cycle's arguments are copied out before
-// the loop): #1 aim, #2 band, #3 longest t step, #5 t at the vertex A, #6 t step to try, #7 t
-// tried, #8 longest step within the aim, #9 trials, #10 done, #12 t of the best vertex, #16..#20
-// and #33 scratch; from #21 the vectors A, B (tried), best B and the chord, dims each. #100 is #7
-// while the vertex is found, the middle of the step after. The curve's point and derivatives are common variables #120.., their shared
-// parts temporaries from #150.
+// the loop): #1 aim, #2 band, #3 longest t step, #4 the chord's length squared (space), #5 t at
+// the vertex A, #6 t step to try (0: the start vertex), #7 t tried, #8 longest step within the
+// aim, #9 trials, #10 done, #12 t of the best vertex, #13 first t step, #16..#20 and #33
+// scratch; from #21 the vectors A, B (tried), best B and the chord, dims each. #100 is #7 while
+// the vertex is found, the middle of the step after. The curve's point and derivatives are
+// common variables #120.., their shared parts temporaries from #150.
 namespace var {
 constexpr int vectors = 21;
 constexpr int jet = 120;
@@ -60,25 +61,38 @@ struct Loop {
     const std::string m = number(1 / c.fit.grid.step[static_cast<std::size_t>(axes[static_cast<std::size_t>(i)])], 6);
     return fmt::format("ROUND[[{}]*{}]/{}", e, m, m);
   }
-  // The words of a move to the vertex in variables first.. (lathe X as a diameter)
-  std::string words(int first) const {
-    std::string out;
+  // The words of a move to the vertex in variables first.. (lathe X as a diameter); an axis the
+  // curve keeps constant is written as its number where `constants` asks for it (the approach).
+  std::string words(int first, bool constants) const {
     auto slot = [&](int axis) {
       for (int i = 0; i < dims(); ++i)
         if (axes[static_cast<std::size_t>(i)] == axis) return first + i;
       return -1;
     };
     if (is_lathe(c.o)) return fmt::format("X[2*#{}] Z[#{}]", slot(0), slot(2));
-    out = fmt::format("X[#{}] Y[#{}]", slot(0), slot(1));
-    if (c.with_z) out += fmt::format(" Z[#{}]", slot(2));
+    std::string out;
+    for (auto [letter, axis] : {std::pair{'X', 0}, {'Y', 1}, {'Z', 2}}) {
+      if (axis == 2 && !c.with_z) break;
+      std::string w;
+      if (slot(axis) >= 0) w = fmt::format("{}[#{}]", letter, slot(axis));
+      else if (constants) w = fmt::format("{}{}", letter, number(geom::simplify(axis_sym(c.curve, c.map, axis))->k, c.dec));
+      if (!w.empty()) out += (out.empty() ? "" : " ") + w;
+    }
     return out;
   }
 };
 
+// The loop's axes: the plane's two, or in space those the curve moves (a space curve that keeps
+// one axis constant, like a hyperbola in XZ on a mill, is a plane loop)
 Loop loop_of(const Context& c) {
   Loop l{c, {}};
-  if (c.with_z) l.axes = {0, 1, 2};
-  else l.axes = {c.fit.plane.u_axis, c.fit.plane.v_axis};
+  if (!c.with_z) {
+    l.axes = {c.fit.plane.u_axis, c.fit.plane.v_axis};
+    return l;
+  }
+  for (int axis = 0; axis < 3; ++axis)
+    if (geom::simplify(axis_sym(c.curve, c.map, axis))->op != geom::SymOp::konst) l.axes.push_back(axis);
+  if (l.axes.size() < 2) l.axes = {0, 1, 2};
   return l;
 }
 
@@ -108,20 +122,25 @@ void jet_blocks(const Loop& l, Writer& before, Writer& inside, int& next_temp) {
     for (int axis : l.axes)
       outputs.push_back(order == 0 ? geom::simplify(axis_sym(c.curve, c.map, axis)) : axis_derivative(c, axis, order));
   std::vector<std::pair<int, Sym>> temps;
-  std::vector<Sym> shared = geom::share_subexpressions(outputs, next_temp, temps);
+  std::vector<int> jet_vars(outputs.size());
+  for (std::size_t i = 0; i < outputs.size(); ++i) jet_vars[i] = var::jet + static_cast<int>(i);
+  std::vector<Sym> shared = geom::share_subexpressions(outputs, next_temp, temps, jet_vars);
   std::set<int> varying{geom::kTVar};
   for (const auto& [t, e] : temps) {
     const bool moves = uses_any(e, varying);
     if (moves) varying.insert(t);
     assign(moves ? inside : before, t, e, 5, next_temp);
   }
-  for (std::size_t i = 0; i < shared.size(); ++i) assign(inside, var::jet + static_cast<int>(i), shared[i], 5, next_temp);
+  for (std::size_t i = 0; i < shared.size(); ++i)
+    if (shared[i]->op != geom::SymOp::var || shared[i]->var != jet_vars[i])  // not assigned with the temporaries
+      assign(inside, jet_vars[i], shared[i], 5, next_temp);
 }
 
 double printed(double v) { return std::stod(number(v, kDigits)); }
 
-// The loop itself, from the vertex A (#21..) at t = #5 to #111; returns the line of its G01.
-std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text) {
+// The loop itself, from t = #5 to #111; returns the line of its G01. The first trial (#6 = 0) finds
+// the start vertex A (#21..) and runs `approach`, then the steps start from #13.
+std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text, const std::string& approach) {
   const int n = l.dims();
   auto each = [&](auto f) {
     for (int i = 0; i < n; ++i) w.block(f(i));
@@ -131,18 +150,17 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text)
   w.block("#9=0");
   w.block("#10=0");
   w.block("WHILE [#10 EQ 0] DO2");
-  w.block("#7=#5+#6");
+  w.block("N8 #7=#5+#6");
   w.block("IF [#7 GT #111] THEN #7=#111");
   w.block("#100=#7");
   w.lines("N3 " + jet_text);
   w.block("IF [#100 NE #7] GOTO 2");
-  // the vertex at #7: the curve point outward by the band (not at the end), rounded
+  // the vertex at #7: the curve point outward by the band (not at the start or the end), rounded
   if (n == 2) {
     w.block(fmt::format("#16=#{}*#{}-#{}*#{}", l.d1(0), l.d2(1), l.d1(1), l.d2(0)));
-    w.block(fmt::format("#17=SQRT[#{}*#{}+#{}*#{}]", l.d1(0), l.d1(0), l.d1(1), l.d1(1)));
-    w.block("#20=#2/#17");
+    w.block(fmt::format("#20=#2/SQRT[#{}*#{}+#{}*#{}]", l.d1(0), l.d1(0), l.d1(1), l.d1(1)));
     w.block("IF [#16 GT 0] THEN #20=-#20");
-    w.block("IF [#7 GE #111] THEN #20=0");
+    w.block("IF [#6*[#111-#7] EQ 0] THEN #20=0");
     w.block(fmt::format("#{}={}", l.b(0), l.rounded(0, fmt::format("#{}-#20*#{}", l.p(0), l.d1(1)))));
     w.block(fmt::format("#{}={}", l.b(1), l.rounded(1, fmt::format("#{}+#20*#{}", l.p(1), l.d1(0)))));
   } else {
@@ -151,24 +169,28 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text)
     each([&](int i) { return fmt::format("#{}=#{}-#16*#{}", l.scratch(i), l.d2(i), l.d1(i)); });
     w.block(fmt::format("#16=SQRT[{}]", l.sum([&](int i) { return fmt::format("#{}*#{}", l.scratch(i), l.scratch(i)); })));
     w.block("#20=0");
-    w.block("IF [#16 GT 0] THEN #20=-#2/#16");
-    w.block("IF [#7 GE #111] THEN #20=0");
+    w.block("IF [#16*#6*[#111-#7] GT 0] THEN #20=-#2/#16");
     each([&](int i) {
       return fmt::format("#{}={}", l.b(i), l.rounded(i, fmt::format("#{}+#20*#{}", l.p(i), l.scratch(i))));
     });
   }
-  // the chord B - A; the plane keeps its length in #19, space makes it a unit vector
-  each([&](int i) { return fmt::format("#{}=#{}-#{}", l.chord(i), l.b(i), l.a(i)); });
-  const int length = n == 2 ? 19 : 16;
-  w.block(fmt::format("#{}=SQRT[{}]", length,
-                      l.sum([&](int i) { return fmt::format("#{}*#{}", l.chord(i), l.chord(i)); })));
+  // the first trial: the start vertex
+  w.block("IF [#6 GT 0] GOTO 6");
+  each([&](int i) { return fmt::format("#{}=#{}", l.a(i), l.b(i)); });
+  w.lines(approach);
+  w.block("#6=#13");
+  w.block("GOTO 8");
+  // the chord B - A; the plane keeps its length in #19, space its length squared in #4
+  each([&](int i) { return fmt::format("{}#{}=#{}-#{}", i ? "" : "N6 ", l.chord(i), l.b(i), l.a(i)); });
+  const std::string squares = l.sum([&](int i) { return fmt::format("#{}*#{}", l.chord(i), l.chord(i)); });
+  const int length = n == 2 ? 19 : 4;
+  w.block(n == 2 ? fmt::format("#19=SQRT[{}]", squares) : fmt::format("#4={}", squares));
   w.block(fmt::format("IF [#{} EQ 0] THEN #{}=1", length, length));
-  if (n == 3) each([&](int i) { return fmt::format("#{}=#{}/#16", l.chord(i), l.chord(i)); });
   w.block("#100=0.5*[#5+#7]");
   w.block("GOTO 3");
   // the middle of the step: distance #16 from the chord, its first (#33) and second (#20)
-  // derivative across it, and the hump of the parabola through them, within the step (the plane:
-  // all three times the chord's length)
+  // derivative across it, and the hump of the parabola through them, within the step (all three
+  // times the chord's length in the plane, times the distance in space)
   if (n == 2) {
     w.block(fmt::format("N2 #16=[#{}-#{}]*#{}-[#{}-#{}]*#{}", l.p(1), l.a(1), l.chord(0), l.p(0), l.a(0),
                         l.chord(1)));
@@ -177,20 +199,20 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text)
   } else {
     w.block(fmt::format("N2 #{}=#{}-#{}", l.scratch(0), l.p(0), l.a(0)));
     for (int i = 1; i < n; ++i) w.block(fmt::format("#{}=#{}-#{}", l.scratch(i), l.p(i), l.a(i)));
-    w.block(fmt::format("#16={}", l.sum([&](int i) { return fmt::format("#{}*#{}", l.scratch(i), l.chord(i)); })));
+    w.block(fmt::format("#16=[{}]/#4", l.sum([&](int i) { return fmt::format("#{}*#{}", l.scratch(i), l.chord(i)); })));
     each([&](int i) { return fmt::format("#{}=#{}-#16*#{}", l.scratch(i), l.scratch(i), l.chord(i)); });
-    w.block(fmt::format("#16=SQRT[{}]", l.sum([&](int i) { return fmt::format("#{}*#{}", l.scratch(i), l.scratch(i)); })));
-    w.block("#20=0");
-    w.block("IF [#16 GT 0] THEN #20=1/#16");
-    w.block(fmt::format("#33=[{}]*#20", l.sum([&](int i) { return fmt::format("#{}*#{}", l.d1(i), l.scratch(i)); })));
-    w.block(fmt::format("#20=[{}]*#20", l.sum([&](int i) { return fmt::format("#{}*#{}", l.d2(i), l.scratch(i)); })));
+    w.block(fmt::format("#16={}", l.sum([&](int i) { return fmt::format("#{}*#{}", l.scratch(i), l.scratch(i)); })));
+    w.block(fmt::format("#33={}", l.sum([&](int i) { return fmt::format("#{}*#{}", l.d1(i), l.scratch(i)); })));
+    w.block(fmt::format("#20={}", l.sum([&](int i) { return fmt::format("#{}*#{}", l.d2(i), l.scratch(i)); })));
+    w.block("#19=SQRT[#16]");
+    w.block("IF [#19 EQ 0] THEN #19=1");
   }
   w.block("#17=0");
   w.block("IF [#20 NE 0] THEN #17=-#33/#20");
   w.block("#18=#7-#100");
   w.block("IF [#17 GT #18] THEN #17=#18");
   w.block("IF [#17 LT -#18] THEN #17=-#18");
-  w.block(n == 2 ? "#16=ABS[#16+[#33+0.5*#20*#17]*#17]/#19" : "#16=ABS[#16+[#33+0.5*#20*#17]*#17]");
+  w.block("#16=ABS[#16+[#33+0.5*#20*#17]*#17]/#19");
   // keep the longest step within the aim; stop close to the aim, at the end, or after the trials
   w.block("#18=#7-#5");
   w.block("IF [#16 GT #1] GOTO 4");
@@ -206,30 +228,13 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text)
   w.block(fmt::format("IF [#16 GT #1] THEN #6={}*#6", number(kShrink, 6)));
   w.block("IF [#6 GT #3] THEN #6=#3");
   w.block("END2");
-  w.block(fmt::format("G01 {}", l.words(l.best_b(0))));
+  w.block(fmt::format("G01 {}", l.words(l.best_b(0), false)));
   const std::uint32_t move = w.line;
   w.block("#5=#12");
   each([&](int i) { return fmt::format("#{}=#{}", l.a(i), l.best_b(i)); });
   w.block("#6=#8");
   w.block("END1");
   return move;
-}
-
-// The start vertex A (#21..): the curve point at #110, rounded.
-Sym renamed(const Sym& e, int from, int to) {
-  if (e->op == geom::SymOp::var) return e->var == from ? geom::variable(to) : e;
-  if (!e->a) return e;
-  return geom::make(e->op, renamed(e->a, from, to), e->b ? renamed(e->b, from, to) : nullptr);
-}
-
-void start_blocks(const Loop& l, Writer& w, int& next_temp) {
-  for (int i = 0; i < l.dims(); ++i) {
-    std::vector<std::pair<int, Sym>> temps;
-    Sym at_start = renamed(geom::simplify(axis_sym(l.c.curve, l.c.map, l.axes[static_cast<std::size_t>(i)])), geom::kTVar, 110);
-    Sym limited = geom::limit_depth(at_start, 3, next_temp, temps);
-    for (const auto& [t, s] : temps) w.block(fmt::format("#{}={}", t, geom::to_macro(s)));
-    w.block(fmt::format("#{}={}", l.a(i), l.rounded(i, geom::to_macro(limited))));
-  }
 }
 
 double curve_length(const Context& c) {
@@ -259,13 +264,14 @@ Emitted adaptive_text(const Context& c, double aim) {
   w.block(fmt::format("#1={} (AIM, MM)", number(aim, kDigits)));
   w.block(fmt::format("#2={} (BAND: VERTEX OFFSET, MM)", number(offset, kDigits)));
   w.block(fmt::format("#3={} (LONGEST T STEP)", number(span / 4, kDigits)));
-  w.block(fmt::format("#6={} (FIRST T STEP)", number(first, 6)));
+  w.block(fmt::format("#13={} (FIRST T STEP)", number(first, 6)));
   w.block("(#5 T AT VERTEX #21.., #120.. JET AT #100)");
   w.block(modes(c.o));
-  adaptive_start(w, c);
-  approach(w, c, MacroWords{{}, adaptive_start_words(c)});
+  adaptive_start(w);
+  Writer to_start;
+  approach(to_start, c, MacroWords{{}, loop_of(c).words(var::vectors, true)});
   Emitted e;
-  e.first = e.last = adaptive_loop(w, c);
+  e.first = e.last = adaptive_loop(w, c, to_start.text);
   end_program(w, c);
   e.text = std::move(w.text);
   return e;
@@ -273,24 +279,18 @@ Emitted adaptive_text(const Context& c, double aim) {
 
 }  // namespace
 
-void adaptive_start(Writer& w, const Context& c) {
-  int next = kFirstTemp;
-  start_blocks(loop_of(c), w, next);
+void adaptive_start(Writer& w) {
   w.block("#5=#110");
+  w.block("#6=0");
 }
 
-std::string adaptive_start_words(const Context& c) {
-  const Loop l = loop_of(c);
-  return l.words(l.a(0));
-}
-
-std::uint32_t adaptive_loop(Writer& w, const Context& c) {
+std::uint32_t adaptive_loop(Writer& w, const Context& c, const std::string& approach) {
   const Loop l = loop_of(c);
   Writer before, inside;
   int next = kFirstTemp;
   jet_blocks(l, before, inside, next);
   w.lines(before.text);
-  return loop_blocks(l, w, inside.text);
+  return loop_blocks(l, w, inside.text, approach);
 }
 
 Emitted adaptive_macro(const Context& c) {

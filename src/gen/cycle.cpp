@@ -133,9 +133,9 @@ std::string curve_macro(const Context& c, const Slot& slot, std::uint32_t first_
   w.block(fmt::format("#2=#20-{} (VERTEX OFFSET OUTWARD)", rounding));
   w.block("#1=#20 (AIM: DEVIATION AT A STEP'S MIDDLE)");
   w.block("#3=[#111-#110]/4 (LONGEST T STEP)");
-  w.block("#6=[#111-#110]/64 (T STEP TRIED FIRST)");
-  adaptive_start(w, c);
-  contour_line = adaptive_loop(w, c);
+  w.block("#13=[#111-#110]/64 (T STEP TRIED FIRST)");
+  adaptive_start(w);
+  contour_line = adaptive_loop(w, c, "");
   w.block("M99");
   w.block(fmt::format("N901 #3000=1 (G{} ARGUMENT MISSING OR OUT OF RANGE)", slot.g));
   return w.text;

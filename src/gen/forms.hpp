@@ -56,12 +56,12 @@ Emitted tightened(const Context& c, const Options& on_control, double value, Rou
 Emitted adaptive_macro(const Context& c);
 // The adaptive loop (shared with the curve cycles). Before it: the curve's parameters, #110 and
 // #111 (t range), #1 the aim (deviation at a step's middle, mm), #2 the vertex offset outward
-// (tolerance band, mm), #3 the longest t step and #6 the t step tried first. adaptive_start sets
-// the start vertex (#21.., the curve point at #110 rounded) and #5; adaptive_loop moves to #111
-// and returns the line of its one G01 block.
-void adaptive_start(Writer& w, const Context& c);
-std::string adaptive_start_words(const Context& c);  // the words of a move to the start vertex
-std::uint32_t adaptive_loop(Writer& w, const Context& c);
+// (tolerance band, mm), #3 the longest t step and #13 the t step tried first. adaptive_start
+// sets #5 (t at the vertex A) and #6 = 0, so that the loop's first trial finds the start vertex
+// (#21.., the curve point at #110 rounded) and runs `approach` (blocks moving there, may be
+// empty); adaptive_loop moves to #111 and returns the line of its one G01 block.
+void adaptive_start(Writer& w);
+std::uint32_t adaptive_loop(Writer& w, const Context& c, const std::string& approach);
 Emitted cycle(const Context& c);
 
 }  // namespace ncurve::gen::detail

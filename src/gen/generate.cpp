@@ -391,8 +391,7 @@ void macro_preamble(Writer& w, const Context& c, const std::string& method) {
   w.block("%");
   w.lines(header(c.curve, c.o, method));
   begin_passes(w, c.o, c.dec);
-  w.block("(VARIABLES)");
-  w.block(fmt::format("(#100 = T, CURVE PARAMETER: {})", comment_text(c.curve.name())));
+  w.block(fmt::format("(VARIABLES: #100 = T OF THE {})", comment_text(c.curve.name())));
   parameter_blocks(w, c.curve);
   w.block(fmt::format("#110={} (T START)", number(c.curve.t0(), 12)));
   w.block(fmt::format("#111={} (T END)", number(c.curve.t1(), 12)));

@@ -512,13 +512,22 @@ Sym magnitude(const Term& t) {
   const double ec = printed_error(c), er = printed_error(1 / c);
   const bool divide = !t.factors.empty() &&
                       (er < 0.5 * ec || (er <= 2 * ec && number_text(1 / c).size() < number_text(c).size()));
-  Sym num = konst(divide ? 1 : c);
+  // sines and cosines last: the x and y of a curve often differ only there, and the rest of
+  // the product is then one shared subexpression
+  std::vector<Sym> front, back;  // multiplied before and after the divisions
   for (const Factor& f : t.factors)
-    for (int i = 0; i < f.power; ++i) num = make(SymOp::mul, num, f.base);
-  if (divide) num = make(SymOp::div, num, konst(1 / c));
+    for (int i = 0; i < f.power; ++i)
+      (f.base->op == SymOp::sin || f.base->op == SymOp::cos ? back : front).push_back(f.base);
+  if (divide && front.empty()) std::swap(front, back);  // 1/57.29578 would fold to a constant
+  Sym num = divide ? nullptr : konst(c);
+  auto times = [&](const Sym& x) { num = num ? make(SymOp::mul, num, x) : x; };
+  auto over = [&](const Sym& x) { num = make(SymOp::div, num ? num : konst(1), x); };
+  for (const Sym& x : front) times(x);
+  if (divide) over(konst(1 / c));
   for (const Factor& f : t.factors)
-    for (int i = 0; i < -f.power; ++i) num = make(SymOp::div, num, f.base);
-  return num;
+    for (int i = 0; i < -f.power; ++i) over(f.base);
+  for (const Sym& x : back) times(x);
+  return num ? num : konst(c);
 }
 
 Sym rebuild(Terms terms) {
@@ -633,8 +642,10 @@ Interned intern(const std::vector<Sym>& outputs) {
 }  // namespace
 
 std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next_temp,
-                                      std::vector<std::pair<int, Sym>>& temps) {
+                                      std::vector<std::pair<int, Sym>>& temps, const std::vector<int>& output_vars) {
   const Interned in = intern(outputs);
+  std::map<int, int> own_var;  // node -> the variable of the first output it is
+  for (std::size_t i = 0; i < output_vars.size() && i < in.roots.size(); ++i) own_var.try_emplace(in.roots[i], output_vars[i]);
   const std::vector<Sym>& nodes = in.nodes;
   const std::vector<int>&ops_a = in.a, &ops_b = in.b;
   std::vector<int> uses(nodes.size(), 0);
@@ -653,8 +664,10 @@ std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next
     if (e->a) out = node(e->op, self(self, ops_a[i]), ops_b[i] >= 0 ? self(self, ops_b[i]) : nullptr);
     const bool long_constant = e->op == SymOp::konst && to_macro(out).size() > 2 * kVariableLength;
     if (uses[i] > 1 && (e->a || long_constant) && to_macro(out).size() > kVariableLength) {
-      temps.emplace_back(next_temp, out);
-      out = variable(next_temp++);
+      auto own = own_var.find(id);
+      const int v = own != own_var.end() ? own->second : next_temp++;
+      temps.emplace_back(v, out);
+      out = variable(v);
     }
     return built[i] = out;
   };

@@ -53,10 +53,12 @@ Sym limit_depth(const Sym& e, int max_depth, int& next_temp, std::vector<std::pa
 
 // Equal subexpressions of several expressions written once: the outputs rewritten over
 // temporaries (from next_temp on), each (variable, expression) of temps assigned first, in order.
-// What occurs more than once gets a temporary if it is longer than a variable (a constant: twice).
-// A subexpression gets a temporary where it occurs more than once and is longer than a variable.
+// A subexpression gets a temporary where it occurs more than once and is longer than a variable
+// (a constant: twice as long). With output_vars, an output that others share is assigned to its
+// own variable among the temporaries, and comes back as that variable.
 std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next_temp,
-                                      std::vector<std::pair<int, Sym>>& temps);
+                                      std::vector<std::pair<int, Sym>>& temps,
+                                      const std::vector<int>& output_vars = {});
 
 // Straight-line code for fast evaluation of several expressions at once with FANUC's functions
 // (nc::apply_unary / apply_binary): equal subexpressions are computed once, and a sine and cosine
