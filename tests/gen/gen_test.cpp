@@ -232,6 +232,39 @@ TEST(Gen, AdaptiveMacroIsCompactAndNearlyAsShortAsEqualError) {
   EXPECT_LT(length(lines[1]) * 2, length(lines[lines.size() - 2]));
 }
 
+// Every built-in curve's adaptive macro, comments included, is under 2 KB but the rotor's and the
+// helix's (long exact derivatives, three axes; guarded near their present size); the loop finds
+// the start vertex itself (the curve point rounded, where the contour begins), and the
+// hyperbola, which a mill cuts in XZ, loops in that plane alone.
+TEST(Gen, AdaptiveMacroOfEveryCurveIsCompactAndStartsOnTheCurve) {
+  for (const geom::CurveSpec& spec : geom::catalogue()) {
+    auto c = curve(spec.name);
+    auto adaptive = gen::generate(c, options(gen::Form::adaptive_macro, 0.005));
+    ASSERT_TRUE(adaptive.within_tolerance) << spec.name;
+    const bool long_jet = spec.name == "rotor" || spec.name == "helix";
+    EXPECT_LT(adaptive.stats.bytes, long_jet ? 2200u : 2048u) << spec.name;
+    // the contour's first move starts at the curve's start point, rounded to the increment
+    const std::size_t g01 = adaptive.text.find("\nG01 X[");
+    ASSERT_NE(g01, std::string::npos) << spec.name;
+    const auto contour_line = static_cast<std::uint32_t>(std::count(adaptive.text.begin(), adaptive.text.begin() + g01, '\n') + 2);
+    auto ran = test::run(adaptive.text, machine::default_mill(), {}, {});
+    ASSERT_TRUE(ran.result.ok()) << spec.name;
+    const machine::Move* first = nullptr;
+    for (const auto& m : ran.motions())
+      if (m.line == contour_line && !first) first = &m;
+    ASSERT_NE(first, nullptr) << spec.name;
+    const geom::Vec3 start = c.point(c.t0());
+    for (int axis = 0; axis < 3; ++axis) {
+      const double expect = spec.z == "0" && axis == 2 ? -1.0 : std::round(start[axis] * 1000) / 1000;  // plane: at depth
+      EXPECT_NEAR(first->start[axis], expect, 1e-9) << spec.name << " axis " << axis;
+    }
+    if (spec.name == "hyperbola") {  // a mill cuts it in XZ: Y is written once, in the approach
+      EXPECT_EQ(adaptive.text.find("Y[#"), std::string::npos);
+      EXPECT_NE(adaptive.text.find("G01 X[#25] Z[#26]"), std::string::npos) << adaptive.text;
+    }
+  }
+}
+
 // As few moves as the equal-error expansion, within 2 % (a move where that is less than one), on
 // seed 000's spiral at its tolerances and on curves with inflections, loops and a rise in Z.
 TEST(Gen, AdaptiveMacroMovesAreWithinTwoPercentOfTheFewest) {
