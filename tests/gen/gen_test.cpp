@@ -2,6 +2,7 @@
 // interpreter, arcs against the closed-form ellipse, bad curves.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -249,10 +250,9 @@ TEST(Gen, AdaptiveMacroOfEveryCurveIsCompactAndStartsOnTheCurve) {
     const auto contour_line = static_cast<std::uint32_t>(std::count(adaptive.text.begin(), adaptive.text.begin() + g01, '\n') + 2);
     auto ran = test::run(adaptive.text, machine::default_mill(), {}, {});
     ASSERT_TRUE(ran.result.ok()) << spec.name;
-    const machine::Move* first = nullptr;
-    for (const auto& m : ran.motions())
-      if (m.line == contour_line && !first) first = &m;
-    ASSERT_NE(first, nullptr) << spec.name;
+    const std::vector<machine::Move> moves = ran.motions();
+    auto first = std::find_if(moves.begin(), moves.end(), [&](const machine::Move& m) { return m.line == contour_line; });
+    ASSERT_NE(first, moves.end()) << spec.name;
     const geom::Vec3 start = c.point(c.t0());
     for (int axis = 0; axis < 3; ++axis) {
       const double expect = spec.z == "0" && axis == 2 ? -1.0 : std::round(start[axis] * 1000) / 1000;  // plane: at depth
