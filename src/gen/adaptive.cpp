@@ -19,7 +19,7 @@ namespace {
 using geom::Sym;
 using geom::Vec3;
 
-constexpr int kTrials = 6;        // trials per move once one is within the aim
+constexpr int kTrials = 5;        // trials per move once one is within the aim
 constexpr double kClose = 0.995;  // a trial within the aim and this close to it ends the search
 constexpr double kShrink = 0.99;  // after a trial over the aim, the next is this much shorter
 constexpr int kDigits = 9;        // decimals of the macro's constants
@@ -27,10 +27,11 @@ constexpr int kDigits = 9;        // decimals of the macro's constants
 // The loop's variables. Locals keep the blocks short (a cycle's arguments are copied out before
 // the loop): #1 aim, #2 band, #3 longest t step, #4 the chord's length squared (space), #5 t at
 // the vertex A, #6 t step to try (0: the start vertex), #7 t tried, #8 longest step within the
-// aim, #9 trials, #10 done, #12 t of the best vertex, #13 first t step, #16..#20 and #33
-// scratch; from #21 the vectors A, B (tried), best B and the chord, dims each. #100 is #7 while
-// the vertex is found, the middle of the step after. The curve's point and derivatives are
-// common variables #120.., their shared parts temporaries from #150.
+// aim, #9 trials since one was within it (kTrials ends the search), #12 t of the best vertex,
+// #13 first t step, #16..#20 and #33 scratch; from #21 the vectors A, B (tried), best B and the
+// chord, dims each. #100 is #7 while the vertex is found, the middle of the step after. The
+// curve's point and derivatives are common variables #120.., their shared parts temporaries
+// from #150.
 namespace var {
 constexpr int vectors = 21;
 constexpr int jet = 120;
@@ -53,7 +54,10 @@ struct Loop {
   template <class F>
   std::string sum(F f) const {
     std::string s;
-    for (int i = 0; i < dims(); ++i) s += (i ? "+" : "") + f(i);
+    for (int i = 0; i < dims(); ++i) {
+      if (i) s += '+';
+      s += f(i);
+    }
     return s;
   }
   // "ROUND[[e]*1000.]/1000.": where the control puts a coordinate of axis i
@@ -138,6 +142,16 @@ void jet_blocks(const Loop& l, Writer& before, Writer& inside, int& next_temp) {
 
 double printed(double v) { return std::stod(number(v, kDigits)); }
 
+// A number below 1 as the control also reads it, without its leading zero (.5).
+std::string fraction(const std::string& text) {
+  const bool minus = text.starts_with('-');
+  const std::string_view digits = std::string_view(text).substr(minus ? 1 : 0);
+  if (!digits.starts_with("0.")) return text;
+  std::string out(minus ? "-" : "");
+  out += digits.substr(1);
+  return out;
+}
+
 // The loop itself, from t = #5 to #111; returns the line of its G01. The first trial (#6 = 0) finds
 // the start vertex A (#21..) and runs `approach`, then the steps start from #13.
 std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text, const std::string& approach) {
@@ -148,8 +162,7 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text,
   w.block("WHILE [#5 LT #111] DO1");
   w.block("#8=0");
   w.block("#9=0");
-  w.block("#10=0");
-  w.block("WHILE [#10 EQ 0] DO2");
+  w.block(fmt::format("WHILE [#9 LT {}] DO2", kTrials));
   w.block("N8 #7=#5+#6");
   w.block("IF [#7 GT #111] THEN #7=#111");
   w.block("#100=#7");
@@ -157,10 +170,10 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text,
   w.block("IF [#100 NE #7] GOTO 2");
   // the vertex at #7: the curve point outward by the band (not at the start or the end), rounded
   if (n == 2) {
-    w.block(fmt::format("#16=#{}*#{}-#{}*#{}", l.d1(0), l.d2(1), l.d1(1), l.d2(0)));
-    w.block(fmt::format("#20=#2/SQRT[#{}*#{}+#{}*#{}]", l.d1(0), l.d1(0), l.d1(1), l.d1(1)));
-    w.block("IF [#16 GT 0] THEN #20=-#20");
-    w.block("IF [#6*[#111-#7] EQ 0] THEN #20=0");
+    w.block("#20=0");
+    w.block(fmt::format("IF [#6*[#111-#7] GT 0] THEN #20=#2/SQRT[#{}*#{}+#{}*#{}]", l.d1(0), l.d1(0), l.d1(1),
+                        l.d1(1)));
+    w.block(fmt::format("IF [#{}*#{} GT #{}*#{}] THEN #20=-#20", l.d1(0), l.d2(1), l.d1(1), l.d2(0)));
     w.block(fmt::format("#{}={}", l.b(0), l.rounded(0, fmt::format("#{}-#20*#{}", l.p(0), l.d1(1)))));
     w.block(fmt::format("#{}={}", l.b(1), l.rounded(1, fmt::format("#{}+#20*#{}", l.p(1), l.d1(0)))));
   } else {
@@ -186,7 +199,7 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text,
   const int length = n == 2 ? 19 : 4;
   w.block(n == 2 ? fmt::format("#19=SQRT[{}]", squares) : fmt::format("#4={}", squares));
   w.block(fmt::format("IF [#{} EQ 0] THEN #{}=1", length, length));
-  w.block("#100=0.5*[#5+#7]");
+  w.block("#100=.5*[#5+#7]");
   w.block("GOTO 3");
   // the middle of the step: distance #16 from the chord, its first (#33) and second (#20)
   // derivative across it, and the hump of the parabola through them, within the step (all three
@@ -212,7 +225,7 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text,
   w.block("#18=#7-#100");
   w.block("IF [#17 GT #18] THEN #17=#18");
   w.block("IF [#17 LT -#18] THEN #17=-#18");
-  w.block("#16=ABS[#16+[#33+0.5*#20*#17]*#17]/#19");
+  w.block("#16=ABS[#16+[#33+.5*#20*#17]*#17]/#19");
   // keep the longest step within the aim; stop close to the aim, at the end, or after the trials
   w.block("#18=#7-#5");
   w.block("IF [#16 GT #1] GOTO 4");
@@ -220,12 +233,11 @@ std::uint32_t loop_blocks(const Loop& l, Writer& w, const std::string& jet_text,
   w.block("#8=#18");
   w.block("#12=#7");
   each([&](int i) { return fmt::format("#{}=#{}", l.best_b(i), l.b(i)); });
-  w.block(fmt::format("N5 IF [#16 GE {}*#1] THEN #10=1", number(kClose, 6)));
-  w.block("N4 #9=#9+1");
-  w.block(fmt::format("IF [#9 GE {}] THEN #10=#8", kTrials));
+  w.block(fmt::format("N5 IF [#16 GE {}*#1] THEN #9={}", fraction(number(kClose, 6)), kTrials));
+  w.block("N4 IF [#8 GT 0] THEN #9=#9+1");
   // the next trial: sag + band grows as the step squared
   w.block("#6=#18*SQRT[[#1+#2]/[#16+#2]]");
-  w.block(fmt::format("IF [#16 GT #1] THEN #6={}*#6", number(kShrink, 6)));
+  w.block(fmt::format("IF [#16 GT #1] THEN #6={}*#6", fraction(number(kShrink, 6))));
   w.block("IF [#6 GT #3] THEN #6=#3");
   w.block("END2");
   w.block(fmt::format("G01 {}", l.words(l.best_b(0), false)));
@@ -260,14 +272,13 @@ Emitted adaptive_text(const Context& c, double aim) {
   const double first = std::min(span, nominal / std::sqrt(std::max(c.curve.curvature(c.curve.t0()), least_k)) / speed);
 
   Writer w;
-  macro_preamble(w, c, "steps by the control");
-  w.block(fmt::format("#1={} (AIM, MM)", number(aim, kDigits)));
-  w.block(fmt::format("#2={} (BAND: VERTEX OFFSET, MM)", number(offset, kDigits)));
+  macro_preamble(w, c, "", ", #120.. JET THERE, #5 T AT VERTEX #21..", 5);
+  w.block(fmt::format("#1={} (AIM, MM)", fraction(number(aim, kDigits))));
+  w.block(fmt::format("#2={} (BAND: VERTEX OFFSET, MM)", fraction(number(offset, kDigits))));
   w.block(fmt::format("#3={} (LONGEST T STEP)", number(span / 4, kDigits)));
-  w.block(fmt::format("#13={} (FIRST T STEP)", number(first, 6)));
-  w.block("(#5 T AT VERTEX #21.., #120.. JET AT #100)");
+  w.block(fmt::format("#13={} (FIRST T STEP)", fraction(number(first, 6))));
   w.block(modes(c.o));
-  adaptive_start(w);
+  adaptive_start(w, 5);
   Writer to_start;
   approach(to_start, c, MacroWords{{}, loop_of(c).words(var::vectors, true)});
   Emitted e;
@@ -279,8 +290,8 @@ Emitted adaptive_text(const Context& c, double aim) {
 
 }  // namespace
 
-void adaptive_start(Writer& w) {
-  w.block("#5=#110");
+void adaptive_start(Writer& w, int t_start) {
+  if (t_start != 5) w.block(fmt::format("#5=#{}", t_start));
   w.block("#6=0");
 }
 

@@ -29,9 +29,11 @@ struct Emitted {
 
 std::string arc_words(const Context& c, const geom::Piece& p);  // I J (K) of an arc
 void parameter_blocks(Writer& w, const geom::Curve& curve);      // #101=.. (NAME: DOC)
-// The macro forms' opening: tape start, header, depth-pass loop, the variables of the curve
-// (#100 = t, its parameters, #110 t start, #111 t end).
-void macro_preamble(Writer& w, const Context& c, const std::string& method);
+// The macro forms' opening: tape start, header (method may be empty), depth-pass loop, the
+// variables of the curve (#100 = t and `more_variables` in a comment, its parameters, #t_start t
+// start, #111 t end).
+void macro_preamble(Writer& w, const Context& c, const std::string& method, const std::string& more_variables = "",
+                    int t_start = 110);
 // Rapid to above the start point given as macro words, then feed to it.
 void approach(Writer& w, const Context& c, const MacroWords& start);
 
@@ -57,10 +59,10 @@ Emitted adaptive_macro(const Context& c);
 // The adaptive loop (shared with the curve cycles). Before it: the curve's parameters, #110 and
 // #111 (t range), #1 the aim (deviation at a step's middle, mm), #2 the vertex offset outward
 // (tolerance band, mm), #3 the longest t step and #13 the t step tried first. adaptive_start
-// sets #5 (t at the vertex A) and #6 = 0, so that the loop's first trial finds the start vertex
+// sets #5 (t at the vertex A) to #t_start (none if that is #5) and #6 = 0, so that the loop's first trial finds the start vertex
 // (#21.., the curve point at #110 rounded) and runs `approach` (blocks moving there, may be
 // empty); adaptive_loop moves to #111 and returns the line of its one G01 block.
-void adaptive_start(Writer& w);
+void adaptive_start(Writer& w, int t_start = 110);
 std::uint32_t adaptive_loop(Writer& w, const Context& c, const std::string& approach);
 Emitted cycle(const Context& c);
 

@@ -387,13 +387,14 @@ void parameter_blocks(Writer& w, const geom::Curve& curve) {
     w.block(fmt::format("#{}={} ({}: {})", p.var, number(p.value, 12), comment_text(p.name), comment_text(p.doc)));
 }
 
-void macro_preamble(Writer& w, const Context& c, const std::string& method) {
+void macro_preamble(Writer& w, const Context& c, const std::string& method, const std::string& more_variables,
+                    int t_start) {
   w.block("%");
   w.lines(header(c.curve, c.o, method));
   begin_passes(w, c.o, c.dec);
-  w.block(fmt::format("(VARIABLES: #100 = T OF THE {})", comment_text(c.curve.name())));
+  w.block(fmt::format("(#100 = T OF THE {}{})", comment_text(c.curve.name()), more_variables));
   parameter_blocks(w, c.curve);
-  w.block(fmt::format("#110={} (T START)", number(c.curve.t0(), 12)));
+  w.block(fmt::format("#{}={} (T START)", t_start, number(c.curve.t0(), 12)));
   w.block(fmt::format("#111={} (T END)", number(c.curve.t1(), 12)));
 }
 

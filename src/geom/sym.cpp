@@ -462,10 +462,15 @@ void product_factors(const Sym& e, int power, Term& t) {
         for (Factor f : inner[0].factors) t.factors.push_back({f.base, f.power * power});
         return;
       }
-      // a sum as one factor: its sign out, and a coefficient all its terms share
-      double content = inner[0].coeff;
-      for (const Term& u : inner)
-        if (std::fabs(u.coeff) != std::fabs(content)) content = content < 0 ? -1 : 1;
+      // a sum as one factor: its sign out, and a coefficient of which all its terms' are whole
+      // multiples (a*x+2*a*y is a*[x+2*y])
+      double least = std::fabs(inner[0].coeff);
+      for (const Term& u : inner) least = std::min(least, std::fabs(u.coeff));
+      const bool multiples = std::all_of(inner.begin(), inner.end(), [&](const Term& u) {
+        const double ratio = std::fabs(u.coeff) / least;
+        return ratio <= 64 && std::fabs(ratio - std::round(ratio)) <= 1e-12 * ratio;
+      });
+      const double content = std::copysign(multiples ? least : 1.0, inner[0].coeff);
       for (Term& u : inner) u.coeff /= content;
       t.coeff *= std::pow(content, power);
       t.factors.push_back({rebuild(std::move(inner)), power});

@@ -1,6 +1,7 @@
 // Symbolic derivatives against closed forms and finite differences; macro text that the
 // interpreter reads back to the same values.
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
@@ -89,6 +90,9 @@ TEST(Sym, SimplifyCollectsLikeTermsAndFactors) {
   EXPECT_EQ(to_macro(simplify(parse_sym("3*[#1-#2]+3*[#2-#1]+#3"))), "#3");
   EXPECT_EQ(to_macro(simplify(parse_sym("#1*SIN[#3]+SIN[#3]*#2"))), "SIN[#3]*[#1+#2]");
   EXPECT_EQ(to_macro(simplify(parse_sym("#1/360*2"))), "#1/180.");
+  // a sum whose coefficients are whole multiples of one keeps that one outside
+  EXPECT_EQ(to_macro(simplify(parse_sym("#3*[0.75*#1+1.5*#2]"))), "0.75*#3*[#1+2.*#2]");
+  EXPECT_EQ(to_macro(simplify(parse_sym("#3*[0.75*#1+1.3*#2]"))), "#3*[0.75*#1+1.3*#2]");
   // the rotor's exact second derivatives: same values from much shorter text
   const Curve rotor(*find_curve("rotor"), {});
   Sym raw = derivative(derivative(rotor.position()[0], kTVar), kTVar);
@@ -136,8 +140,8 @@ TEST(Sym, SharedSubexpressionsRunOnTheControlAndShortenTheText) {
     int depth_next = 190;
     std::vector<std::pair<int, Sym>> deep;
     Sym limited = limit_depth(e, 5, depth_next, deep);
-    for (const auto& [v, d] : deep) prog += "#" + std::to_string(v) + "=" + to_macro(d) + "\n";
-    prog += "#" + std::to_string(var) + "=" + to_macro(limited) + "\n";
+    for (const auto& [v, d] : deep) prog += fmt::format("#{}={}\n", v, to_macro(d));
+    prog += fmt::format("#{}={}\n", var, to_macro(limited));
     written += to_macro(e).size();
   };
   for (const auto& [var, e] : temps) assign(var, e);
@@ -150,7 +154,9 @@ TEST(Sym, SharedSubexpressionsRunOnTheControlAndShortenTheText) {
   for (const auto& [var, e] : temps) {
     const std::string text = to_macro(e);
     for (const auto& [other, o] : temps)
-      if (other != var) EXPECT_EQ(to_macro(o).find(text), std::string::npos) << text;
+      if (other != var) {
+        EXPECT_EQ(to_macro(o).find(text), std::string::npos) << text;
+      }
     for (const Sym& o : shared) EXPECT_EQ(to_macro(o).find(text), std::string::npos) << text;
   }
   prog += "M30\n";
