@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 
 namespace ncurve::gen::detail {
@@ -39,7 +40,39 @@ std::string comment_text(std::string s) {
 
 int decimals_of(double increment) { return std::max(0, static_cast<int>(std::lround(-std::log10(increment)))); }
 
+namespace {
+
+// v with `decimals` decimals when v * 10^decimals is within a millionth of a whole number (as
+// coordinates on the increment are) and its digits fit: the same text as the general path,
+// without formatting the double. False otherwise.
+bool append_grid_number(std::string& out, double v, int decimals) {
+  static constexpr double kPow10[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
+  if (decimals < 0 || decimals > 9) return false;
+  const double scaled = v * kPow10[decimals];
+  const double whole = std::nearbyint(scaled);
+  if (!(std::fabs(scaled - whole) < 1e-6) || !(std::fabs(whole) < 1e15)) return false;
+  char digits[24];
+  const auto magnitude = static_cast<long long>(std::fabs(whole));
+  const int length = static_cast<int>(std::to_chars(digits, digits + sizeof digits, magnitude).ptr - digits);
+  auto fraction_digit = [&](int i) {  // i-th decimal; zeros before the digits of a small number
+    const int at = length - decimals + i;
+    return at < 0 ? '0' : digits[at];
+  };
+  int fraction = decimals;  // trailing zeros dropped
+  while (fraction > 0 && fraction_digit(fraction - 1) == '0') --fraction;
+  if (std::max(1, length - decimals) + fraction > nc::kPortableDigits && fraction > 0) return false;
+  if (magnitude != 0 && whole < 0) out += '-';
+  if (length <= decimals) out += '0';
+  else out.append(digits, static_cast<std::size_t>(length - decimals));
+  out += '.';
+  for (int i = 0; i < fraction; ++i) out += fraction_digit(i);
+  return true;
+}
+
+}  // namespace
+
 void append_number(std::string& out, double v, int decimals) {
+  if (append_grid_number(out, v, decimals)) return;
   char buf[400];  // fits any double in fixed notation
   std::string_view s;
   for (;; --decimals) {  // fewer decimals until the number fits the digits every control takes
@@ -158,7 +191,10 @@ std::vector<std::pair<char, Sym>> point_axes(const geom::Curve& curve, const Axi
                                              bool with_z) {
   if (is_lathe(o))
     return {{'X', geom::make(SymOp::mul, geom::konst(2), axis_sym(curve, map, 0))}, {'Z', axis_sym(curve, map, 2)}};
-  std::vector<std::pair<char, Sym>> axes{{'X', axis_sym(curve, map, 0)}, {'Y', axis_sym(curve, map, 1)}};
+  std::vector<std::pair<char, Sym>> axes;
+  axes.reserve(3);
+  axes.emplace_back('X', axis_sym(curve, map, 0));
+  axes.emplace_back('Y', axis_sym(curve, map, 1));
   if (with_z) axes.emplace_back('Z', axis_sym(curve, map, 2));
   return axes;
 }

@@ -56,12 +56,13 @@ Emitted tightened(const Context& c, const Options& on_control, double value, Rou
 }
 
 Emitted adaptive_macro(const Context& c);
-// The adaptive loop (shared with the curve cycles). Before it: the curve's parameters, #110 and
-// #111 (t range), #1 the aim (deviation at a step's middle, mm), #2 the vertex offset outward
-// (tolerance band, mm), #3 the longest t step and #13 the t step tried first. adaptive_start
-// sets #5 (t at the vertex A) to #t_start (none if that is #5) and #6 = 0, so that the loop's first trial finds the start vertex
-// (#21.., the curve point at #110 rounded) and runs `approach` (blocks moving there, may be
-// empty); adaptive_loop moves to #111 and returns the line of its one G01 block.
+// The adaptive loop (shared with the curve cycles). Before it: the curve's parameters, the t
+// start in #t_start and the t end in #111, #1 the aim (deviation at a step's middle, mm), #2 the
+// vertex offset outward (tolerance band, mm), #3 the longest t step and #13 the t step tried
+// first. adaptive_start sets #5 (t at the vertex A) to #t_start (nothing to do if that is #5)
+// and #6 = 0, so that the loop's first trial finds the start vertex (#21.., the curve point at
+// #5 rounded) and runs `approach` (blocks moving there, may be empty); adaptive_loop moves to
+// #111 and returns the line of its one G01 block.
 void adaptive_start(Writer& w, int t_start = 110);
 std::uint32_t adaptive_loop(Writer& w, const Context& c, const std::string& approach);
 Emitted cycle(const Context& c);

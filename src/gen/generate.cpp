@@ -47,12 +47,6 @@ bool parse_form(const std::string& text, Form& out) {
   return false;
 }
 
-Vec3 AxisMap::operator()(const Vec3& c) const {
-  Vec3 out;
-  for (int a = 0; a < 3; ++a) out[a] = (from[a] >= 0 ? c[from[a]] : 0.0) + offset[a];
-  return out;
-}
-
 AxisMap axis_map(const geom::Curve& curve, const Options& o) {
   AxisMap m;
   const bool uses_z = !curve.planar_z();
@@ -95,7 +89,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
         between = true;
         return;
       }
-      if (between) passes.emplace_back();
+      if (between) passes.emplace_back().reserve(last - first + 1);  // an expanded contour: a move a line
       between = false;
       passes.back().push_back(m);
     }
@@ -129,8 +123,8 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
 
 Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curve, const Options& o, bool require_end) {
   Stats s;
-  AxisMap map = axis_map(curve, o);
-  geom::Placement place = [map](const Vec3& c) { return map(c); };
+  const AxisMap map = axis_map(curve, o);
+  const geom::Placement& place = map;
   geom::Plane plane = plane_of(o.profile);
 
   auto dist = [](const Vec3& a, const Vec3& b) {
@@ -144,13 +138,13 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
     Vec3 d = curve.d1(t);
     return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   };
-  auto project = [&](const Vec3& p, double t_from, double reach) {
+  auto project = [&](const Vec3& p, double t_from, double reach, int samples = 16) {
     double hi = std::min(t_last, t_from + reach / std::max(speed_at(t_from), 1e-12));
     auto closeness = [&](double t) {
       Vec3 q = map(curve.point(t));
       return -((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
     };
-    return geom::sampled_maximum(closeness, t_from, hi, 16).at;
+    return geom::sampled_maximum(closeness, t_from, hi, samples).at;
   };
   // The same by Newton's method on (C(t) - p).C'(t) = 0 from a guess past t_from, with the jet
   // there; NaN if it does not settle on a nearest point ahead of t_from.
@@ -192,94 +186,119 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
   };
   Vec3 first{contour[0].start[0], contour[0].start[1], contour[0].start[2]};
   s.path.push_back(first);
-  double t_prev = project(first, t_first, 1e-3 + 10 * o.tol);
-  geom::PlacedJet jet_prev = geom::placed_jet(curve, place, t_prev);
-  s.start_t = t_prev;
-  note(dist(first, jet_prev.p), t_prev);
+  const double t_start = project(first, t_first, 1e-3 + 10 * o.tol);
+  const geom::PlacedJet jet_start = geom::placed_jet(curve, place, t_start);
+  s.start_t = t_start;
+  note(dist(first, jet_start.p), t_start);
   const Vec3 curve_end = map(curve.point(curve.t1()));
-  // 1. Where each move ends on the curve, in order: each projection starts from the one before.
-  struct Span {
+  auto piece_of = [](const machine::Move& m) {
     geom::Piece piece;
-    double t0, t1;
-    geom::PlacedJet j0, j1;
-    double end_distance;  // of the move's end from the curve
-  };
-  std::vector<Span> spans(contour.size());
-  double t_per_mm = 0;  // of the move before: the first guess of the next move's parameter step
-  for (std::size_t i = 0; i < contour.size(); ++i) {
-    const machine::Move& m = contour[i];
-    Span& span = spans[i];
-    geom::Piece& piece = span.piece;
     piece.start = {m.start[0], m.start[1], m.start[2]};
     piece.end = {m.end[0], m.end[1], m.end[2]};
     piece.arc = m.kind == machine::MoveKind::arc;
     piece.centre = m.center;
     piece.ccw = m.sweep > 0;
-    s.path_length += m.length;
-    span.t0 = t_prev;
-    span.j0 = jet_prev;
-    geom::PlacedJet jet_end;
-    double t_end;
-    if (i + 1 == contour.size() && require_end) {  // the contour must reach the end of the curve
-      if (dist(piece.end, curve_end) > o.tol)
-        throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
-                                             dist(piece.end, curve_end), curve.t1()));
-      t_end = curve.t1();
-      jet_end = geom::placed_jet(curve, place, t_end);
-    } else {
-      if (!(t_per_mm > 0)) t_per_mm = 1 / std::max(std::sqrt(jet_prev.d1[0] * jet_prev.d1[0] + jet_prev.d1[1] * jet_prev.d1[1] +
-                                                             jet_prev.d1[2] * jet_prev.d1[2]),
-                                                   1e-12);
-      t_end = project_newton(piece.end, t_prev, std::min(t_last, t_prev + m.length * t_per_mm), jet_end);
-      if (std::isnan(t_end)) {
-        t_end = project(piece.end, t_prev, 3 * m.length + 10 * o.tol + 1e-3);
-        jet_end = geom::placed_jet(curve, place, t_end);
-      }
-    }
-    t_per_mm = m.length > 0 ? (t_end - t_prev) / m.length : 0;
-    span.t1 = t_end;
-    span.j1 = jet_end;
-    span.end_distance = dist(piece.end, jet_end.p);
-    t_prev = t_end;
-    jet_prev = jet_end;
-  }
-  // 2. The deviation of each move, on all cores.
-  std::vector<geom::Worst> worst(spans.size());
-  constexpr std::size_t kBatch = 1024;
-  geom::for_each_on_cores((spans.size() + kBatch - 1) / kBatch, [&](std::size_t b) {
-    for (std::size_t i = b * kBatch; i < std::min(spans.size(), (b + 1) * kBatch); ++i) {
-      const Span& span = spans[i];
-      if (span.piece.arc) {
-        auto d = [&](const Vec3& p) { return geom::point_arc_distance(p, span.piece, plane); };
-        worst[i] = geom::max_distance(curve, place, span.t0, span.t1, span.j0, span.j1, d, trust, 6);
+    return piece;
+  };
+  // Where each move ends on the curve and how far the curve strays from it.
+  struct Measured {
+    double t1;             // the curve parameter nearest the move's end
+    double end_distance;   // of the move's end from the curve
+    geom::Worst worst;     // the curve's largest distance from the move
+  };
+  std::vector<Measured> measured(contour.size());
+  struct Place {
+    double t;
+    geom::PlacedJet jet;
+  };
+  // Moves first..last-1 from the curve point `from` on, in order: each end projected from the one
+  // before (Newton's method from the step per mm of the move before), then its deviation.
+  auto measure_moves = [&](std::size_t first_move, std::size_t last_move, Place from) {
+    double t_per_mm = 0;
+    for (std::size_t i = first_move; i < last_move; ++i) {
+      const machine::Move& m = contour[i];
+      const geom::Piece piece = piece_of(m);
+      Place to;
+      if (i + 1 == contour.size() && require_end) {  // the contour must reach the end of the curve
+        if (dist(piece.end, curve_end) > o.tol)
+          throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
+                                               dist(piece.end, curve_end), curve.t1()));
+        to = {curve.t1(), geom::placed_jet(curve, place, curve.t1())};
       } else {
-        const geom::Segment segment(span.piece.start, span.piece.end);
-        worst[i] = geom::max_distance(curve, place, span.t0, span.t1, span.j0, span.j1, segment, trust);
+        if (!(t_per_mm > 0)) {
+          const Vec3& d = from.jet.d1;
+          t_per_mm = 1 / std::max(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 1e-12);
+        }
+        to.t = project_newton(piece.end, from.t, std::min(t_last, from.t + m.length * t_per_mm), to.jet);
+        if (std::isnan(to.t)) {
+          to.t = project(piece.end, from.t, 3 * m.length + 10 * o.tol + 1e-3);
+          to.jet = geom::placed_jet(curve, place, to.t);
+        }
       }
+      t_per_mm = m.length > 0 ? (to.t - from.t) / m.length : 0;
+      geom::Worst worst;
+      if (piece.arc) {
+        auto d = [&](const Vec3& p) { return geom::point_arc_distance(p, piece, plane); };
+        worst = geom::max_distance(curve, place, from.t, to.t, from.jet, to.jet, d, trust, 6);
+      } else {
+        const geom::Segment segment(piece.start, piece.end);
+        worst = geom::max_distance(curve, place, from.t, to.t, from.jet, to.jet, segment, trust);
+      }
+      measured[i] = {to.t, dist(piece.end, to.jet.p), worst};
+      from = to;
     }
+    return from;
+  };
+  // On all cores, in runs of kRun moves: where each run starts is searched first, in order, over
+  // the curve that the run before spans; each run's own chain of projections must then arrive
+  // there, else the next run is measured again from where it did (as one chain in order would).
+  constexpr std::size_t kRun = 512;
+  const std::size_t runs = (contour.size() + kRun - 1) / kRun;
+  std::vector<Place> run_start(runs);
+  run_start[0] = {t_start, jet_start};
+  for (std::size_t k = 1; k < runs; ++k) {
+    double reach = 10 * o.tol + 1e-3;
+    for (std::size_t i = (k - 1) * kRun; i < k * kRun; ++i) reach += 3 * contour[i].length;
+    const double t = project(piece_of(contour[k * kRun - 1]).end, run_start[k - 1].t, reach, 64);
+    run_start[k] = {t, geom::placed_jet(curve, place, t)};
+  }
+  std::vector<Place> run_end(runs);
+  geom::for_each_on_cores(runs, [&](std::size_t k) {
+    run_end[k] = measure_moves(k * kRun, std::min(contour.size(), (k + 1) * kRun), run_start[k]);
   });
-  // 3. In order: the worst point, the deviation along the contour, the path drawn.
-  for (std::size_t i = 0; i < spans.size(); ++i) {
-    const Span& span = spans[i];
-    const geom::Piece& piece = span.piece;
-    note(span.end_distance, span.t1);
-    note(worst[i].distance, worst[i].t);
-    s.deviation.emplace_back(span.t1, worst[i].distance);
-    if (piece.arc) {
+  for (std::size_t k = 1; k < runs; ++k) {
+    const double step = run_end[k - 1].t - run_start[k - 1].t;
+    if (std::fabs(run_end[k - 1].t - run_start[k].t) <= 1e-6 * std::fabs(step)) continue;
+    run_start[k] = run_end[k - 1];
+    run_end[k] = measure_moves(k * kRun, std::min(contour.size(), (k + 1) * kRun), run_start[k]);
+  }
+  // In order: the worst point, the deviation along the contour, the path drawn.
+  s.deviation.reserve(contour.size());
+  s.path.reserve(contour.size() + 1);
+  s.path_block.reserve(contour.size());
+  for (std::size_t i = 0; i < contour.size(); ++i) {
+    const machine::Move& m = contour[i];
+    const Measured& at = measured[i];
+    s.path_length += m.length;
+    note(at.end_distance, at.t1);
+    note(at.worst.distance, at.worst.t);
+    s.deviation.emplace_back(at.t1, at.worst.distance);
+    const Vec3 start{m.start[0], m.start[1], m.start[2]};
+    if (m.kind == machine::MoveKind::arc) {
       const int samples = 16;
+      const double u0 = start[plane.u_axis] - m.center[plane.u_axis];
+      const double v0 = start[plane.v_axis] - m.center[plane.v_axis];
       for (int k = 1; k < samples; ++k) {
-        double a = contour[i].sweep * k / samples;
-        double u0 = piece.start[plane.u_axis] - piece.centre[plane.u_axis];
-        double v0 = piece.start[plane.v_axis] - piece.centre[plane.v_axis];
-        Vec3 q = piece.start;
-        q[plane.u_axis] = piece.centre[plane.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
-        q[plane.v_axis] = piece.centre[plane.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
+        double a = m.sweep * k / samples;
+        Vec3 q = start;
+        q[plane.u_axis] = m.center[plane.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
+        q[plane.v_axis] = m.center[plane.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
         s.path.push_back(q);
-        s.path_block.push_back(s.deviation.size() - 1);
+        s.path_block.push_back(i);
       }
     }
-    s.path.push_back(piece.end);
-    s.path_block.push_back(s.deviation.size() - 1);
+    s.path.push_back({m.end[0], m.end[1], m.end[2]});
+    s.path_block.push_back(i);
   }
   return s;
 }
@@ -303,6 +322,7 @@ Emitted expanded_or_arcs(const Context& c) {
                                                          : "equal error, points on the curve";
   }
   Writer w;
+  w.text.reserve(1024 + 24 * path.pieces.size());  // "X-123.456 Y78.901" a piece, arcs longer
   w.block("%");
   w.lines(header(c.curve, o, method));
   begin_passes(w, o, c.dec);
@@ -440,7 +460,6 @@ Result generate(const geom::Curve& contour, const Options& o) {
   if (is_lathe(o) && o.profile.diameter_x) grid.step[0] = o.profile.increment / 2;
   if (is_lathe(o)) grid.step[1] = 0;
   if (!is_lathe(o) && !with_z) grid.step[2] = 0;  // a plane contour's Z is a constant
-  geom::Placement place = [map](const Vec3& p) { return map(p); };
   // the fit aims a little inside the tolerance: the round trip measures the control's own path
   Context c{curve,
             o,
@@ -449,7 +468,7 @@ Result generate(const geom::Curve& contour, const Options& o) {
             dec,
             feed_of(o),
             AxisWords{o, dec, with_z},
-            geom::Fit{curve, place, grid, plane_of(o.profile), o.tol * 0.999},
+            geom::Fit{curve, map, grid, plane_of(o.profile), o.tol * 0.999},
             grid.snap(map(curve.point(curve.t0()))),
             grid.snap(map(curve.point(curve.t1())))};
   c.fit.arcs_with_r = o.profile.arcs_with_r;

@@ -37,13 +37,8 @@ struct Options {
   int cycle_program = 0;  // cycle: O9010..O9019 (G102..G111, No.6050..6059); 0: the curve's own
 };
 
-// How the curve sits on the machine: machine axis a = scale[a] * curve[from[a]] + offset[a]
-// (internal units: lathe X as a radius). from[a] < 0 means the constant offset alone.
-struct AxisMap {
-  std::array<int, 3> from{0, 1, 2};
-  std::array<double, 3> offset{0, 0, 0};
-  geom::Vec3 operator()(const geom::Vec3& c) const;
-};
+// How the curve sits on the machine.
+using AxisMap = geom::Placement;
 AxisMap axis_map(const geom::Curve& curve, const Options& o);
 geom::Plane plane_of(const machine::MachineProfile& p);
 

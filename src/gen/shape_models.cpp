@@ -48,7 +48,7 @@ ShapeModels shape_models(const std::vector<machine::Move>& contour, const geom::
                          const Stats& measured) {
   ShapeModels out;
   const AxisMap map = axis_map(curve, o);
-  const geom::Placement place = [map](const Vec3& c) { return map(c); };
+  const geom::Placement& place = map;
   const geom::Plane plane = plane_of(o.profile);
   const int u = plane.u_axis, v = plane.v_axis;
   out.centre = map(Vec3{0, 0, 0});

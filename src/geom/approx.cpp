@@ -121,8 +121,7 @@ Worst max_distance(const Curve& curve, const Placement& place, double ta, double
 
 PlacedJet placed_jet(const Curve& curve, const Placement& place, double t) {
   Curve::Jet j = curve.jet(t);
-  Vec3 p = place(j.p);
-  return {p, sub(place(add(j.p, j.d1)), p), sub(place(add(j.p, j.d2)), p)};
+  return {place(j.p), place.direction(j.d1), place.direction(j.d2)};
 }
 
 namespace {
@@ -393,6 +392,9 @@ Path lines_in_chunks(const Fit& f, bool band, bool radial = false) {
   std::vector<Path> parts(chunks);
   for_each_on_cores(chunks, [&](std::size_t k) { parts[k] = lines_greedy(f, band, radial, cuts[k], cuts[k + 1]); });
   Path path;
+  std::size_t pieces = 0;
+  for (const Path& part : parts) pieces += part.pieces.size();
+  path.pieces.reserve(pieces);
   for (std::size_t k = 0; k < chunks; ++k) {
     path.max_deviation = std::max(path.max_deviation, parts[k].max_deviation);
     path.pieces.insert(path.pieces.end(), parts[k].pieces.begin(), parts[k].pieces.end());
@@ -505,8 +507,7 @@ Path fit_lines(const Fit& f, LineMethod method) {
 
 std::vector<double> inflections(const Curve& curve, const Placement& place, const Plane& plane) {
   auto turn = [&](double t) {
-    Vec3 c = curve.point(t), p = place(c);
-    Vec3 d1 = sub(place(add(c, curve.d1(t))), p), d2 = sub(place(add(c, curve.d2(t))), p);
+    const Vec3 d1 = place.direction(curve.d1(t)), d2 = place.direction(curve.d2(t));
     return d1[plane.u_axis] * d2[plane.v_axis] - d1[plane.v_axis] * d2[plane.u_axis];
   };
   std::vector<double> out;

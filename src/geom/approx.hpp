@@ -1,6 +1,7 @@
 // Tool paths of lines and arcs within a shape tolerance of a curve, and the deviation measure
 // that proves it (maximum distance, found by optimisation on each piece).
 #pragma once
+#include <array>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -9,8 +10,24 @@
 
 namespace ncurve::geom {
 
-// Machine coordinates of a curve point (e.g. a lathe profile drawn in x, y goes to Z, X).
-using Placement = std::function<Vec3(const Vec3&)>;
+// Where a curve point lands on the machine: axis a = curve[from[a]] + offset[a], or the offset
+// alone where from[a] < 0 (a lathe profile drawn in x, y goes to Z, X; internal units: lathe X
+// as a radius). The identity by default.
+struct Placement {
+  std::array<int, 3> from{0, 1, 2};
+  Vec3 offset{0, 0, 0};
+  Vec3 operator()(const Vec3& c) const {
+    Vec3 out = direction(c);
+    for (int a = 0; a < 3; ++a) out[a] += offset[a];
+    return out;
+  }
+  // a derivative of the curve as it lies on the machine
+  Vec3 direction(const Vec3& d) const {
+    Vec3 out;
+    for (int a = 0; a < 3; ++a) out[a] = from[a] >= 0 ? d[from[a]] : 0.0;
+    return out;
+  }
+};
 
 // Where emitted coordinates land: each axis rounds to its least increment (in internal units:
 // a lathe's diameter X rounds to half the increment as a radius).

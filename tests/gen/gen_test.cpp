@@ -1,5 +1,6 @@
 // ncurve gen: segment counts against the integral of seed 000, every curve and form through the
 // interpreter, arcs against the closed-form ellipse, bad curves.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "gen/emit.hpp"
 #include "gen/generate.hpp"
 #include "geom/approx.hpp"
 #include "support/run_program.hpp"
@@ -594,6 +596,59 @@ TEST(Gen, CurveCycleTakesItsCurveAsArguments) {
     shipped << f.rdbuf();
     EXPECT_EQ(g.macro, shipped.str()) << name << ": run scripts/make_cycles.sh";
     EXPECT_EQ(g.parameters[0].first, std::to_string(6050 + program - 9010)) << name;
+  }
+}
+
+// Numbers as programs carry them: trailing zeros dropped, a point always, at most 8 digits. On
+// the increment's grid (the fast path) the text is the fixed notation of the value, trimmed.
+TEST(Gen, NumbersReadAsTheControlTakesThem) {
+  using gen::detail::number;
+  EXPECT_EQ(number(0, 3), "0.");
+  EXPECT_EQ(number(-0.0, 3), "0.");
+  EXPECT_EQ(number(-0.5, 3), "-0.5");
+  EXPECT_EQ(number(0.0005, 4), "0.0005");
+  EXPECT_EQ(number(-0.0005, 3), "-0.001");  // a hair beyond half an increment in binary
+  EXPECT_EQ(number(100, 3), "100.");
+  EXPECT_EQ(number(12.3456789, 3), "12.346");
+  EXPECT_EQ(number(1234.56789, 9), "1234.5679");      // eight digits
+  EXPECT_EQ(number(0.000123456789, 9), "0.0001235");  // the leading zeros count
+  auto trimmed = [](double v, int decimals) {
+    std::string s = fmt::format("{:.{}f}", v, decimals);
+    if (s.find('.') != std::string::npos) s.erase(s.find_last_not_of('0') + 1);
+    if (s.find('.') == std::string::npos) s += '.';
+    return s == "-0." ? std::string("0.") : s;
+  };
+  for (int decimals = 0; decimals <= 6; ++decimals)
+    for (long k = -2'000'003; k <= 2'000'003; k += 7919) {
+      const double v = k / std::pow(10.0, decimals);
+      ASSERT_EQ(number(v, decimals), trimmed(v, decimals)) << k << " at " << decimals;
+    }
+}
+
+// The round trip measures a long contour in runs on all cores; where a run's start is searched
+// over many turns of a tight spiral it may land on the wrong turn, and the chain of projections
+// must win. Truth: a spiral's radius tells its turn, so each move's end has one nearest t.
+TEST(Gen, RoundTripFollowsATightSpiralAcrossItsRuns) {
+  geom::CurveSpec spec = *geom::find_curve("spiral");
+  spec.to = 360 * 40;
+  const geom::Curve spiral(spec, {{"r0", 5}, {"pitch", 0.5}});
+  gen::Options o = options(gen::Form::expanded, 0.01);
+  gen::Result r = gen::generate(spiral, o);
+  ASSERT_TRUE(r.within_tolerance) << r.stats.max_deviation;
+  ASSERT_GT(r.stats.deviation.size(), 4 * 512u);  // several runs, each over many turns
+  for (std::size_t i = 0; i < r.stats.deviation.size(); ++i) {
+    const geom::Vec3& end = r.stats.path[i + 1];
+    double t = 360 * (std::hypot(end[0], end[1]) - 5) / 0.5;  // the turn from the radius
+    for (int k = 0; k < 20; ++k) {  // Newton on (C(t) - end).C'(t) = 0
+      const geom::Vec3 p = spiral.point(t), d1 = spiral.d1(t), d2 = spiral.d2(t);
+      const double g = (p[0] - end[0]) * d1[0] + (p[1] - end[1]) * d1[1];
+      const double dg = d1[0] * d1[0] + d1[1] * d1[1] + (p[0] - end[0]) * d2[0] + (p[1] - end[1]) * d2[1];
+      t -= g / dg;
+    }
+    if (i + 1 < r.stats.deviation.size()) {
+      ASSERT_NEAR(r.stats.deviation[i].first, t, 1e-6) << "move " << i;
+    }
+    ASSERT_LE(r.stats.deviation[i].second, o.tol) << "move " << i;
   }
 }
 

@@ -24,7 +24,7 @@ Curve expression(const std::string& x, const std::string& y, double from, double
   return Curve(spec, {});
 }
 
-const Placement kSame = [](const Vec3& p) { return p; };
+const Placement kSame;
 
 }  // namespace
 
