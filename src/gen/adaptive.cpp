@@ -272,7 +272,7 @@ Emitted adaptive_text(const Context& c, double aim) {
   const double first = std::min(span, nominal / std::sqrt(std::max(c.curve.curvature(c.curve.t0()), least_k)) / speed);
 
   Writer w;
-  macro_preamble(w, c, "", ", #120.. JET THERE, #5 T AT VERTEX #21..", 5);
+  macro_preamble(w, c, "", fmt::format(", #{}.. JET THERE, #5 T AT VERTEX #{}..", var::jet, var::vectors), 5);
   w.block(fmt::format("#1={} (AIM, MM)", fraction(number(aim, kDigits))));
   w.block(fmt::format("#2={} (BAND: VERTEX OFFSET, MM)", fraction(number(offset, kDigits))));
   w.block(fmt::format("#3={} (LONGEST T STEP)", number(span / 4, kDigits)));
@@ -280,7 +280,7 @@ Emitted adaptive_text(const Context& c, double aim) {
   w.block(modes(c.o));
   adaptive_start(w, 5);
   Writer to_start;
-  approach(to_start, c, MacroWords{{}, loop_of(c).words(var::vectors, true)});
+  approach(to_start, c, MacroWords{{}, l.words(var::vectors, true)});
   Emitted e;
   e.first = e.last = adaptive_loop(w, c, to_start.text);
   end_program(w, c);
