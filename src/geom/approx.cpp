@@ -19,6 +19,9 @@ Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] 
 Vec3 scale(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 
 using Local = PlacedJet;
 Local local(const Fit& f, double t) { return placed_jet(f.curve, f.place, t); }
@@ -153,46 +156,109 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist di
   });
 }
 
-// The same for a segment: the part of Q(s) - A across the segment is a vector quintic D(s), so
-// the humps of the distance are where D.D' = 0, found by Newton's method (g = D.D', g' = D'.D' +
-// D.D'') kept inside the samples around each highest sample. Values are the segment distance
-// (which the part across is, unless the point lies beyond an end).
+// The same for a segment, in its frame: the quintic's part along the segment (x, from its
+// start) and across it (y, z) are scalar quintics, and the distance is the part across plus any
+// part along beyond an end. The humps across are where g = y y' + z z' = 0 (z = 0 for a curve in
+// a plane through the segment), found by Newton's method from each highest sample, kept between
+// the samples either side; else a search of the distance itself. Squared distances are compared,
+// one square root per maximum.
 ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const Segment& ab, int samples) {
   const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
-  std::array<Vec3, 6> e;  // D(s) = sum e[k] s^k
-  e[0] = ab.across(sub(q.origin, ab.start()));
-  for (int k = 0; k < 5; ++k) e[static_cast<std::size_t>(k + 1)] = ab.across(q.c[static_cast<std::size_t>(k)]);
-  // g and g' at s
-  auto newton = [&](double s, double& g, double& dg) {
-    Vec3 d{}, d1{}, d2{};
-    for (int axis = 0; axis < 3; ++axis) {
-      double v = 0, v1 = 0, v2 = 0;
-      for (int k = 5; k >= 0; --k) {
-        v2 = v2 * s + 2 * v1;
-        v1 = v1 * s + v;
-        v = v * s + e[static_cast<std::size_t>(k)][axis];
-      }
-      d[axis] = v, d1[axis] = v1, d2[axis] = v2;
-    }
-    g = dot(d, d1);
-    dg = dot(d1, d1) + dot(d, d2);
+  const double length = norm(ab.vector());
+  const Vec3 along = length > 0 ? scale(ab.vector(), 1 / length) : Vec3{1, 0, 0};
+  // across: perpendicular to `along` and to the axis it has least of (a curve in a plane of axes: z = 0)
+  int least = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(along[i]) < std::fabs(along[least])) least = i;
+  Vec3 axis{0, 0, 0};
+  axis[least] = 1;
+  Vec3 across = cross(along, axis);
+  across = scale(across, 1 / norm(across));
+  const Vec3 other = cross(along, across);
+  std::array<double, 6> x, y, z;  // sum x[k] s^k ...
+  auto put = [&](std::size_t k, const Vec3& e) { x[k] = dot(along, e), y[k] = dot(across, e), z[k] = dot(other, e); };
+  put(0, sub(q.origin, ab.start()));
+  for (std::size_t k = 0; k < 5; ++k) put(k + 1, q.c[k]);
+  const bool flat = z == std::array<double, 6>{};
+  auto squared = [&](double px, double py, double pz) {
+    const double beyond = px < 0 ? px : px > length ? px - length : 0.0;
+    return py * py + pz * pz + beyond * beyond;
   };
-  auto at = [&](double s) { return ab.distance(s == 0 ? a.p : s == 1 ? b.p : q.at(s)); };
-  // Newton's method from the sample on g (> 0 below the hump, < 0 above it), kept between the
-  // samples either side; else a search of the distance itself
-  return two_highest(at, samples, [&](double lo, double hi, double x, double fx) {
-    double s = x;
+  const Vec3 end = sub(b.p, ab.start());
+  const double at_end = squared(dot(along, end), dot(across, end), dot(other, end));
+  auto at = [&](double s) {
+    if (s == 1) return at_end;
+    double px = x[5], py = y[5], pz = z[5];
+    for (std::size_t k = 5; k-- > 0;) px = px * s + x[k], py = py * s + y[k], pz = pz * s + z[k];
+    return squared(px, py, pz);
+  };
+  auto jet = [](const std::array<double, 6>& c, double s, double& v, double& v1, double& v2) {
+    v = c[5], v1 = 0, v2 = 0;
+    for (std::size_t k = 5; k-- > 0;) v2 = v2 * s + 2 * v1, v1 = v1 * s + v, v = v * s + c[k];
+  };
+  // g = y y' + z z' and g' at s
+  auto newton = [&](double s, double& g, double& dg) {
+    double v, v1, v2;
+    jet(y, s, v, v1, v2);
+    g = v * v1, dg = v1 * v1 + v * v2;
+    if (flat) return;
+    jet(z, s, v, v1, v2);
+    g += v * v1, dg += v1 * v1 + v * v2;
+  };
+  auto rising = [&](double s) {  // the squared distance's slope at s
+    double g, dg, px, px1, unused;
+    newton(s, g, dg);
+    jet(x, s, px, px1, unused);
+    const double beyond = px < 0 ? px : px > length ? px - length : 0.0;
+    return g + beyond * px1;
+  };
+  auto refine = [&](double lo, double hi, double s0, double f0, double start) {
+    double s = start;
     for (int iteration = 0; iteration < 12; ++iteration) {
       double g = 0, dg = 0;
       newton(s, g, dg);
       if (!(dg < 0)) break;
       const double next = s - g / dg;
       if (!(next > lo && next < hi)) break;
-      if (std::fabs(next - s) < 1e-7) return Maximum{at(next), next};
+      if (std::fabs(next - s) < kModelResolution) return Maximum{at(next), next};
       s = next;
     }
-    return brent_maximum(at, lo, hi, x, fx, kModelResolution);
-  });
+    return brent_maximum(at, lo, hi, s0, f0, kModelResolution);
+  };
+  // each sample no lower than its neighbours: an end one falling away from the end is that
+  // end's maximum, else Newton's method from the vertex of the parabola through it and its
+  // neighbours (see each_sampled_maximum)
+  constexpr int kMostSamples = 16;
+  if (samples < 2 || samples > kMostSamples) throw std::invalid_argument("on_quintic: 2..16 samples");
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  ModelMaxima m{{kNone, 0}, {kNone, 0}};
+  std::array<double, kMostSamples + 1> value;
+  const double step = 1.0 / samples;
+  auto sample = [&](int i) { return i == samples ? 1.0 : i * step; };
+  for (int i = 0; i <= samples; ++i) {
+    value[i] = at(sample(i));
+    if (std::isnan(value[i])) return {{value[i], sample(i)}, {kNone, 0}};
+  }
+  for (int i = 0; i <= samples; ++i) {
+    if (!((i == 0 || value[i] > value[i - 1]) && (i == samples || value[i] >= value[i + 1]))) continue;
+    Maximum x{value[i], sample(i)};
+    const bool end_maximum = i == 0 ? !(rising(0) > 0) : i == samples && !(rising(1) < 0);
+    if (!end_maximum) {
+      const double lo = sample(std::max(0, i - 1)), hi = sample(std::min(samples, i + 1));
+      double start = x.at;
+      if (i > 0 && i < samples) {
+        const double bend = value[i - 1] - 2 * value[i] + value[i + 1];
+        if (bend < 0) start = std::clamp(x.at + 0.5 * step * (value[i - 1] - value[i + 1]) / bend, lo, hi);
+      }
+      const Maximum refined = refine(lo, hi, x.at, x.value, start);
+      if (refined.value > x.value) x = refined;
+    }
+    if (std::isnan(x.value) || x.value > m.best.value) m.second = m.best, m.best = x;
+    else if (x.value > m.second.value) m.second = x;
+  }
+  for (Maximum* found : {&m.best, &m.second})
+    if (found->value >= 0) found->value = std::sqrt(found->value);
+  return m;
 }
 
 // The curve's maximum near the quintic's: the curve must agree with the quintic there within

@@ -118,6 +118,7 @@ public:
     inv_len2_ = len2 > 0 ? 1 / len2 : 0;
   }
   const Vec3& start() const { return a_; }
+  const Vec3& vector() const { return ab_; }  // start to end
   // v less its component along the segment
   Vec3 across(const Vec3& v) const {
     const double s = (v[0] * ab_[0] + v[1] * ab_[1] + v[2] * ab_[2]) * inv_len2_;
