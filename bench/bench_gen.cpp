@@ -32,10 +32,11 @@ BENCHMARK(Spiral1um)->Unit(benchmark::kMillisecond)->UseRealTime();  // the fit 
 
 void Expression100k(benchmark::State& state) {
   geom::CurveSpec spec;
-  spec.name = "expr";
-  spec.x = "[R0+PITCH*t/360]*COS[t]";
-  spec.y = "[R0+PITCH*t/360]*SIN[t]";
-  spec.z = "0";
+  using namespace std::string_literals;  // (GCC 12 warns falsely of an overlap on assigning a char*)
+  spec.name = "expr"s;
+  spec.x = "[R0+PITCH*t/360]*COS[t]"s;
+  spec.y = "[R0+PITCH*t/360]*SIN[t]"s;
+  spec.z = "0"s;
   spec.params = {{"R0", 5, ""}, {"PITCH", 2, ""}};
   spec.from = 0;
   spec.to = 360 * 100;  // 100 turns out to radius 205 mm

@@ -81,7 +81,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
   // The contour's moves, one group per pass: a feed move outside the contour (the plunge) ends one.
   struct Keep final : machine::MoveSink {
     std::uint32_t first, last;
-    std::vector<std::vector<machine::Move>> passes;
+    std::vector<std::vector<ContourMove>> passes;
     bool between = true;
     void on_move(const machine::Move& m) override {
       if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
@@ -91,7 +91,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
       }
       if (between) passes.emplace_back().reserve(last - first + 1);  // an expanded contour: a move a line
       between = false;
-      passes.back().push_back(m);
+      passes.back().push_back(ContourMove::of(m));
     }
   } keep;
   keep.first = first_line;
@@ -121,7 +121,19 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
   return s;
 }
 
+ContourMove ContourMove::of(const machine::Move& m) {
+  return {{m.start[0], m.start[1], m.start[2]}, {m.end[0], m.end[1], m.end[2]}, m.center, m.sweep, m.length,
+          m.kind == machine::MoveKind::arc};
+}
+
 Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curve, const Options& o, bool require_end) {
+  std::vector<ContourMove> moves;
+  moves.reserve(contour.size());
+  for (const machine::Move& m : contour) moves.push_back(ContourMove::of(m));
+  return measure(moves, curve, o, require_end);
+}
+
+Stats measure(const std::vector<ContourMove>& contour, const geom::Curve& curve, const Options& o, bool require_end) {
   Stats s;
   const AxisMap map = axis_map(curve, o);
   const geom::Placement& place = map;
@@ -184,19 +196,19 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
       s.worst_point = map(curve.point(t));
     }
   };
-  Vec3 first{contour[0].start[0], contour[0].start[1], contour[0].start[2]};
+  const Vec3 first = contour[0].start;
   s.path.push_back(first);
   const double t_start = project(first, t_first, 1e-3 + 10 * o.tol);
   const geom::PlacedJet jet_start = geom::placed_jet(curve, place, t_start);
   s.start_t = t_start;
   note(dist(first, jet_start.p), t_start);
   const Vec3 curve_end = map(curve.point(curve.t1()));
-  auto piece_of = [](const machine::Move& m) {
+  auto piece_of = [](const ContourMove& m) {
     geom::Piece piece;
-    piece.start = {m.start[0], m.start[1], m.start[2]};
-    piece.end = {m.end[0], m.end[1], m.end[2]};
-    piece.arc = m.kind == machine::MoveKind::arc;
-    piece.centre = m.center;
+    piece.start = m.start;
+    piece.end = m.end;
+    piece.arc = m.arc;
+    piece.centre = m.centre;
     piece.ccw = m.sweep > 0;
     return piece;
   };
@@ -216,7 +228,7 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
   auto measure_moves = [&](std::size_t first_move, std::size_t last_move, Place from) {
     double t_per_mm = 0;
     for (std::size_t i = first_move; i < last_move; ++i) {
-      const machine::Move& m = contour[i];
+      const ContourMove& m = contour[i];
       const geom::Piece piece = piece_of(m);
       Place to;
       if (i + 1 == contour.size() && require_end) {  // the contour must reach the end of the curve
@@ -277,27 +289,27 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
   s.path.reserve(contour.size() + 1);
   s.path_block.reserve(contour.size());
   for (std::size_t i = 0; i < contour.size(); ++i) {
-    const machine::Move& m = contour[i];
+    const ContourMove& m = contour[i];
     const Measured& at = measured[i];
     s.path_length += m.length;
     note(at.end_distance, at.t1);
     note(at.worst.distance, at.worst.t);
     s.deviation.emplace_back(at.t1, at.worst.distance);
-    const Vec3 start{m.start[0], m.start[1], m.start[2]};
-    if (m.kind == machine::MoveKind::arc) {
+    const Vec3& start = m.start;
+    if (m.arc) {
       const int samples = 16;
-      const double u0 = start[plane.u_axis] - m.center[plane.u_axis];
-      const double v0 = start[plane.v_axis] - m.center[plane.v_axis];
+      const double u0 = start[plane.u_axis] - m.centre[plane.u_axis];
+      const double v0 = start[plane.v_axis] - m.centre[plane.v_axis];
       for (int k = 1; k < samples; ++k) {
         double a = m.sweep * k / samples;
         Vec3 q = start;
-        q[plane.u_axis] = m.center[plane.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
-        q[plane.v_axis] = m.center[plane.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
+        q[plane.u_axis] = m.centre[plane.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
+        q[plane.v_axis] = m.centre[plane.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
         s.path.push_back(q);
         s.path_block.push_back(i);
       }
     }
-    s.path.push_back({m.end[0], m.end[1], m.end[2]});
+    s.path.push_back(m.end);
     s.path_block.push_back(i);
   }
   return s;

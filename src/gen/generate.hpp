@@ -75,9 +75,19 @@ Result generate(const geom::Curve& curve, const Options& o);
 Stats round_trip(const std::string& text, const geom::Curve& curve, const Options& o, std::uint32_t first_line,
                  std::uint32_t last_line);
 
+// A move of a contour as measure() takes it (work coordinates, lathe X as a radius).
+struct ContourMove {
+  geom::Vec3 start{}, end{}, centre{};
+  double sweep = 0;   // arcs: radians, counter-clockwise positive about the plane normal
+  double length = 0;  // mm
+  bool arc = false;
+  static ContourMove of(const machine::Move& m);
+};
+
 // Measures a contour (lines and arcs, in order along the curve) against the curve: the largest
 // distance from the curve to the path, by optimisation on each piece. With require_end the
 // contour must end at the curve's end (within the tolerance).
+Stats measure(const std::vector<ContourMove>& contour, const geom::Curve& curve, const Options& o, bool require_end);
 Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curve, const Options& o, bool require_end);
 
 // An SVG picture: the curve, the path (with its vertices) in the machine plane, and the deviation

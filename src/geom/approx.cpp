@@ -64,8 +64,18 @@ Arc2 arc_from_tangent(double pu, double pv, double tu, double tv, double qu, dou
 }  // namespace
 
 Vec3 Grid::snap(const Vec3& p) const {
+  // to the nearest whole number by adding and taking away 1.5 * 2^52 (exact below 2^51, ties to
+  // even; IEEE arithmetic keeps it from being folded away): a library call fewer than std::round
+  constexpr double kShift = 0x1.8p52;
   Vec3 out;
-  for (int a = 0; a < 3; ++a) out[a] = step[a] > 0 ? std::round(p[a] / step[a]) * step[a] : p[a];
+  for (int a = 0; a < 3; ++a) {
+    if (!(step[a] > 0)) {
+      out[a] = p[a];
+      continue;
+    }
+    const double steps = p[a] / step[a];
+    out[a] = (std::fabs(steps) < 0x1p51 ? (steps + kShift) - kShift : std::round(steps)) * step[a];
+  }
   return out;
 }
 
@@ -368,9 +378,11 @@ constexpr double kStepRel = 3e-3;
 
 double band_offset(const Fit& f, bool band) { return band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0; }
 
-// Greedy longest segments from `from` to `to` (vertices there as anywhere else in the curve).
-Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to) {
+// Greedy longest segments from `from` to `to` (vertices there as anywhere else in the curve),
+// room made for `expected` of them.
+Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, std::size_t expected = 0) {
   Path path;
+  path.pieces.reserve(expected);
   const double t_end = to;
   const double span = f.curve.t1() - f.curve.t0();
   const double offset = band_offset(f, band);
@@ -426,10 +438,14 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to) 
 
 // Where a long curve is cut to be fit on several threads at once: about every
 // Fit::chunk_segments predicted segments.
-std::vector<double> chunk_cuts(const Fit& f, bool band) {
+struct Chunks {
+  std::vector<double> cuts;
+  double segments = 0;  // predicted in each
+};
+Chunks chunk_cuts(const Fit& f, bool band) {
   constexpr int kSamples = 256;
   const double t0 = f.curve.t0(), t1 = f.curve.t1(), h = f.tol + band_offset(f, band);
-  if (!(f.chunk_segments > 0)) return {t0, t1};
+  if (!(f.chunk_segments > 0)) return {{t0, t1}};
   std::vector<double> ts(kSamples + 1), predicted(kSamples + 1, 0.0);  // segments up to ts[i]
   double density_before = 0;
   for (int i = 0; i <= kSamples; ++i) {
@@ -439,7 +455,7 @@ std::vector<double> chunk_cuts(const Fit& f, bool band) {
     density_before = density;
   }
   const double total = predicted.back();
-  const int chunks = std::isfinite(total) ? static_cast<int>(std::min(total / f.chunk_segments, 64.0)) : 1;
+  const int chunks = std::isfinite(total) ? std::max(1, static_cast<int>(std::min(total / f.chunk_segments, 64.0))) : 1;
   std::vector<double> cuts{t0};
   for (int k = 1, i = 1; k < chunks; ++k) {
     const double want = total * k / chunks;
@@ -448,15 +464,20 @@ std::vector<double> chunk_cuts(const Fit& f, bool band) {
     cuts.push_back(ts[i - 1] + f_in * (ts[i] - ts[i - 1]));
   }
   cuts.push_back(t1);
-  return cuts;
+  return {cuts, total / chunks};
 }
 
 Path lines_in_chunks(const Fit& f, bool band, bool radial = false) {
-  const std::vector<double> cuts = chunk_cuts(f, band);
+  const Chunks c = chunk_cuts(f, band);
+  const std::vector<double>& cuts = c.cuts;
   const std::size_t chunks = cuts.size() - 1;
   if (chunks == 1) return lines_greedy(f, band, radial, cuts[0], cuts[1]);
+  // room for twice the prediction: pages never written cost nothing
+  const auto expected = static_cast<std::size_t>(2 * c.segments) + 16;
   std::vector<Path> parts(chunks);
-  for_each_on_cores(chunks, [&](std::size_t k) { parts[k] = lines_greedy(f, band, radial, cuts[k], cuts[k + 1]); });
+  for_each_on_cores(chunks, [&](std::size_t k) {
+    parts[k] = lines_greedy(f, band, radial, cuts[k], cuts[k + 1], expected);
+  });
   Path path;
   std::size_t pieces = 0;
   for (const Path& part : parts) pieces += part.pieces.size();

@@ -685,15 +685,39 @@ Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(
   // operands first; equal subtrees share a register (its node's number)
   const Interned in = intern(outputs);
   registers_ = static_cast<int>(in.nodes.size());
+  auto constant = [&](int reg, double& k) {
+    if (reg < 0) return false;
+    const SymNode& n = *in.nodes[static_cast<std::size_t>(reg)];
+    k = n.k;
+    return n.op == SymOp::konst;
+  };
   for (std::size_t i = 0; i < in.nodes.size(); ++i) {
     const SymNode& e = *in.nodes[i];
-    const SymNode* divisor = e.op == SymOp::div ? in.nodes[static_cast<std::size_t>(in.b[i])].get() : nullptr;
-    if (divisor && divisor->op == SymOp::konst && divisor->k != 0) {  // x/k as x*(1/k): a product is faster
-      steps_.push_back(Step{SymOp::konst, registers_, -1, -1, 1 / divisor->k, 0});
-      steps_.push_back(Step{SymOp::mul, static_cast<int>(i), in.a[i], registers_++, 0, 0});
-      continue;
+    Step s{Code::call, e.op, static_cast<int>(i), in.a[i], in.b[i], e.k, e.var};
+    double k = 0;
+    switch (e.op) {
+      case SymOp::konst: s.code = Code::konst; break;
+      case SymOp::var: s.code = Code::var; break;
+      case SymOp::neg: s.code = Code::neg; break;
+      case SymOp::add:
+      case SymOp::mul:
+        s.code = e.op == SymOp::add ? Code::add : Code::mul;
+        if (constant(s.a, k)) std::swap(s.a, s.b);
+        if (constant(s.b, k)) s.code = e.op == SymOp::add ? Code::add_k : Code::mul_k, s.k = k, s.b = -1;
+        break;
+      case SymOp::sub:
+        s.code = Code::sub;
+        if (constant(s.b, k)) s.code = Code::sub_k, s.k = k, s.b = -1;
+        else if (constant(s.a, k)) s.code = Code::k_sub, s.k = k, s.a = s.b, s.b = -1;
+        break;
+      case SymOp::div:
+        s.code = Code::div;
+        if (constant(s.b, k) && k != 0) s.code = Code::mul_k, s.k = 1 / k, s.b = -1;  // a product is faster
+        else if (constant(s.a, k)) s.code = Code::k_div, s.k = k, s.a = s.b, s.b = -1;
+        break;
+      default: break;
     }
-    steps_.push_back(Step{e.op, static_cast<int>(i), in.a[i], in.b[i], e.k, e.var});
+    steps_.push_back(s);
   }
   outputs_ = in.roots;
   // a sine and a cosine of one register: the first computes both, the second is dropped
@@ -710,6 +734,19 @@ Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(
     steps_[first].paired = true;
     steps_[first].b = steps_[second].dst;
     dropped[second] = true;
+  }
+  // from the outputs back: steps whose register nothing reads
+  std::vector<bool> read(static_cast<std::size_t>(registers_), false);
+  for (int r : outputs_) read[static_cast<std::size_t>(r)] = true;
+  for (std::size_t i = steps_.size(); i-- > 0;) {
+    const Step& s = steps_[i];
+    if (dropped[i]) continue;
+    if (!read[static_cast<std::size_t>(s.dst)] && !(s.paired && read[static_cast<std::size_t>(s.b)])) {
+      dropped[i] = true;
+      continue;
+    }
+    if (s.a >= 0) read[static_cast<std::size_t>(s.a)] = true;
+    if (s.b >= 0 && !s.paired) read[static_cast<std::size_t>(s.b)] = true;
   }
   std::vector<Step> kept;
   for (std::size_t i = 0; i < steps_.size(); ++i)
@@ -729,26 +766,26 @@ void Tape::operator()(const double* vars, double* out) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const Step& s : steps_) {
     double& d = r[s.dst];
-    switch (s.op) {
-      case SymOp::konst: d = s.k; break;
-      case SymOp::var: d = vars[s.var]; break;
-      case SymOp::neg: d = -r[s.a]; break;
-      case SymOp::add: d = r[s.a] + r[s.b]; break;
-      case SymOp::sub: d = r[s.a] - r[s.b]; break;
-      case SymOp::mul: d = r[s.a] * r[s.b]; break;
-      case SymOp::div: d = r[s.b] == 0 ? nan : r[s.a] / r[s.b]; break;
-      case SymOp::sin:
-      case SymOp::cos:
+    switch (s.code) {
+      case Code::konst: d = s.k; break;
+      case Code::var: d = vars[s.var]; break;
+      case Code::neg: d = -r[s.a]; break;
+      case Code::add: d = r[s.a] + r[s.b]; break;
+      case Code::sub: d = r[s.a] - r[s.b]; break;
+      case Code::mul: d = r[s.a] * r[s.b]; break;
+      case Code::div: d = r[s.b] == 0 ? nan : r[s.a] / r[s.b]; break;
+      case Code::add_k: d = r[s.a] + s.k; break;
+      case Code::sub_k: d = r[s.a] - s.k; break;
+      case Code::k_sub: d = s.k - r[s.a]; break;
+      case Code::mul_k: d = r[s.a] * s.k; break;
+      case Code::k_div: d = r[s.a] == 0 ? nan : s.k / r[s.a]; break;
+      case Code::call:
         if (s.paired) {
           double sine = 0, cosine = 0;
           nc::sincos_deg(r[s.a], sine, cosine);
           d = s.op == SymOp::sin ? sine : cosine;
           r[s.b] = s.op == SymOp::sin ? cosine : sine;
-          break;
-        }
-        [[fallthrough]];
-      default:
-        if (s.b >= 0) {
+        } else if (s.b >= 0) {
           if (nc::apply_binary(to_nc(s.op), r[s.a], r[s.b], d, options_) != nc::EvalFault::none) d = nan;
         } else if (nc::apply_unary(to_nc(s.op), r[s.a], d, options_) != nc::EvalFault::none) {
           d = nan;

@@ -61,8 +61,9 @@ std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next
                                       const std::vector<int>& output_vars = {});
 
 // Straight-line code for fast evaluation of several expressions at once with FANUC's functions
-// (nc::apply_unary / apply_binary): equal subexpressions are computed once, and a sine and cosine
-// of the same angle by one sincos.
+// (nc::apply_unary / apply_binary): equal subexpressions are computed once, a sine and cosine of
+// the same angle by one sincos, a constant operand of + - * / is written into its step, and steps
+// that no output needs are dropped.
 class Tape {
 public:
   Tape() = default;
@@ -73,15 +74,17 @@ public:
   void operator()(const double* vars, double* out) const;
 
 private:
+  // add_k: r[a] + k, k_sub: k - r[a], ... (mul_k also stands for a division by a constant)
+  enum class Code : std::uint8_t { konst, var, neg, add, sub, mul, div, add_k, sub_k, k_sub, mul_k, k_div, call };
   struct Step {
-    SymOp op;
+    Code code;
+    SymOp op;  // call: the function
     int dst;
     int a = -1, b = -1;  // operand registers; for sin/cos with `paired`, b is the partner's register
-    double k = 0;        // konst
+    double k = 0;        // konst and the constant operand
     int var = 0;         // var
     bool paired = false;
   };
-  int emit(const Sym& e, std::vector<std::pair<const SymNode*, int>>& seen);
   std::vector<Step> steps_;
   std::vector<int> outputs_;  // registers
   int registers_ = 0;

@@ -1,6 +1,8 @@
 #include "nc/expr.hpp"
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <numbers>
 
 namespace ncurve::nc {
@@ -33,12 +35,16 @@ double atan2_deg(double y, double x, bool signed_range) {
 }  // namespace
 
 void sincos_deg(double deg, double& s, double& c) {
-  double r = std::fmod(deg, 360.0);
-  if (r < 0) r += 360.0;
-  if (r == 0.0) { s = 0; c = 1; return; }
-  if (r == 90.0) { s = 1; c = 0; return; }
-  if (r == 180.0) { s = 0; c = -1; return; }
-  if (r == 270.0) { s = -1; c = 0; return; }
+  // whole multiples of 90 degrees exactly
+  const double quarters = deg / 90.0;
+  if (std::fabs(quarters) < 0x1p52 && static_cast<double>(static_cast<std::int64_t>(quarters)) == quarters &&
+      quarters * 90.0 == deg) {
+    static constexpr double kSine[4] = {0, 1, 0, -1};
+    const auto q = static_cast<std::size_t>(static_cast<std::int64_t>(quarters) & 3);  // two's complement: -1 -> 3
+    s = kSine[q];
+    c = kSine[(q + 1) & 3];
+    return;
+  }
 #ifdef __GLIBC__
   ::sincos(deg * kDeg, &s, &c);  // one argument reduction for both
 #else

@@ -160,3 +160,17 @@ TEST(Approx, LongCurvesAreFitInJoinedChunksTheSameEveryTime) {
   for (std::size_t i = 0; same && i < one.pieces.size(); ++i) same = first.pieces[i].end == one.pieces[i].end;
   EXPECT_FALSE(same) << "no cut was made";
 }
+
+TEST(Grid, SnapsToTheNearestIncrement) {
+  const Grid grid{{0.001, 0.0001, 0}};
+  for (int i = -2000; i <= 2000; ++i) {
+    const double x = i * 0.0123456789 + 1e-7, y = -i * 0.0009876543 - 3e-9;
+    const Vec3 p = grid.snap({x, y, 7.25});
+    EXPECT_EQ(p[0], std::round(x / 0.001) * 0.001) << x;
+    EXPECT_EQ(p[1], std::round(y / 0.0001) * 0.0001) << y;
+    EXPECT_EQ(p[2], 7.25);  // no increment: as it is
+  }
+  // beyond 2^51 increments, still whole ones
+  const Grid fine{{1e-9, 1e-9, 1e-9}};
+  EXPECT_EQ(fine.snap({1e7 + 3e-10, 0, 0})[0], std::round((1e7 + 3e-10) / 1e-9) * 1e-9);
+}

@@ -28,6 +28,21 @@ TEST(Expression, TrigonometryInDegrees) {
   EXPECT_NEAR(eval("ASIN[-0.5]", nat), -30.0, 1e-12);
 }
 
+TEST(Expression, SineAndCosineAreExactOnWholeQuarterTurns) {
+  for (int k = -9; k <= 9; ++k) {
+    const double sine[4] = {0, 1, 0, -1};
+    const int q = ((k % 4) + 4) % 4;
+    const std::string angle = std::to_string(90 * k) + ".";
+    EXPECT_EQ(eval("SIN[" + angle + "]"), sine[q]) << angle;
+    EXPECT_EQ(eval("COS[" + angle + "]"), sine[(q + 1) % 4]) << angle;
+  }
+  EXPECT_EQ(eval("SIN[36000090.]"), 1.0);
+  // near a quarter turn is not on it
+  EXPECT_NEAR(eval("COS[90.000001]"), -std::sin(1e-6 * M_PI / 180), 1e-15);
+  EXPECT_NE(eval("COS[90.000001]"), 0.0);
+  EXPECT_NEAR(eval("SIN[-179.99999]"), -std::sin(1e-5 * M_PI / 180), 1e-15);
+}
+
 TEST(Expression, AtanIsQuadrantAware) {
   EXPECT_NEAR(eval("ATAN[1]/[1]"), 45.0, 1e-12);
   EXPECT_NEAR(eval("ATAN[1]/[-1]"), 135.0, 1e-12);
