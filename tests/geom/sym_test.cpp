@@ -209,6 +209,30 @@ TEST(Sym, TapeSharesSubexpressionsAndSineCosinePairs) {
   EXPECT_EQ(out[1], 0.0);
 }
 
+TEST(Sym, TapeConstantOperandsOnEitherSide) {
+  // each form of a step with a constant operand, against the arithmetic; k/t is NaN at t = 0
+  const char* texts[] = {"2.5+#100", "#100+2.5", "2.5-#100", "#100-2.5", "2.5*#100", "#100*2.5", "2.5/#100", "#100/2.5",
+                         "-[2.5-#100]*4"};
+  auto direct = [](int i, double t) {
+    const double values[] = {2.5 + t, t + 2.5, 2.5 - t, t - 2.5, 2.5 * t, t * 2.5, t == 0 ? NAN : 2.5 / t, t / 2.5,
+                             -(2.5 - t) * 4};
+    return values[i];
+  };
+  std::vector<Sym> outputs;
+  for (const char* text : texts) outputs.push_back(parse_sym(text));
+  Tape all(outputs);
+  std::vector<double> vars(kVarCount, 0.0);
+  for (double t : {-3.0, 0.0, 0.75, 1e3}) {
+    vars[kTVar] = t;
+    double out[9];
+    all(vars.data(), out);
+    for (int i = 0; i < 9; ++i) {
+      if (std::isnan(direct(i, t))) EXPECT_TRUE(std::isnan(out[i])) << texts[i] << " at " << t;
+      else EXPECT_NEAR(out[i], direct(i, t), 1e-12 * (1 + std::fabs(direct(i, t)))) << texts[i] << " at " << t;
+    }
+  }
+}
+
 TEST(Sym, CurveJetIsPointAndDerivatives) {
   Curve c(*find_curve("rotor"), {});
   for (double t : {0.0, 11.0, 97.5, 300.0}) {
