@@ -341,18 +341,20 @@ double deviation(const Fit& f, double ta, double tb, const Vec3& at_ta, const Ve
 struct Vertex {
   Vec3 at;      // as emitted (snapped)
   Local curve;  // the placed curve there
+  Vec3 aimed;   // before snapping
 };
 
 // Vertices: exact curve points at both ends of the range, elsewhere the curve point moved outward
 // by `offset` (a band of +-tol holds segments about 1.4 times longer than chords), then snapped.
 Vertex vertex(const Fit& f, double t, double offset) {
   Local l = local(f, t);
+  Vec3 aimed = l.p;
   if (offset > 0 && t > f.curve.t0() && t < f.curve.t1()) {
     Vec3 n;
     outward(l, n);
-    return {f.grid.snap(add(l.p, scale(n, offset))), l};
+    aimed = add(l.p, scale(n, offset));
   }
-  return {f.grid.snap(l.p), l};
+  return {f.grid.snap(aimed), l, aimed};
 }
 
 double segment_error(const Fit& f, double ta, double tb, const Vertex& a, const Vertex& b, bool radial = false) {
@@ -395,20 +397,26 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
     double b_error = 0, b_t = ta;  // the longest segment within the tolerance tried so far
     ModelMaxima b_model{};
     const double predicted = step_guess(f, a.curve, f.tol + offset);
+    // a step tried on the quintic; the longest within the tolerance kept in b
+    struct Tried {
+      double e;
+      ModelMaxima m;
+      Vertex end;
+    };
+    auto tried_on_model = [&](double tb) {
+      Tried r{0, {}, vertex(f, tb, offset)};
+      r.m = on_quintic(a.curve, r.end.curve, tb - ta, Segment(a.at, r.end.at), kLineSamples);
+      r.e = r.m.best.value;
+      if (r.e <= f.tol && tb > b_t) b = r.end, b_error = r.e, b_t = tb, b_model = r.m;
+      return r;
+    };
     auto longest = [&](bool on_model) {
       b_t = ta;
       auto error_to = [&](double tb) {
+        if (on_model) return tried_on_model(tb).e;
         Vertex end = vertex(f, tb, offset);
-        ModelMaxima m{};
-        double e;
-        if (on_model) {
-          const Segment ab(a.at, end.at);
-          m = on_quintic(a.curve, end.curve, tb - ta, ab, kLineSamples);
-          e = m.best.value;
-        } else {
-          e = segment_error(f, ta, tb, a, end, radial);
-        }
-        if (e <= f.tol && tb > b_t) b = end, b_error = e, b_t = tb, b_model = m;
+        const double e = segment_error(f, ta, tb, a, end, radial);
+        if (e <= f.tol && tb > b_t) b = end, b_error = e, b_t = tb;
         return e;
       };
       double tb = longest_within(ta, t_end, std::min(t_end, ta + predicted * learned), f.tol, offset, error_to, span, [&] {
@@ -418,8 +426,70 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       if (tb != b_t) throw std::logic_error("lines_greedy: the step found was not the longest one measured");
       return tb;
     };
+    // The step by a scan: one trial at the guess gives the quintic over its step, from which the
+    // error of longer and shorter steps is estimated without the curve: their end vertex aimed
+    // and snapped, their hump where the first one's lies in proportion (its distance is
+    // stationary there, so the estimate is off by second-order terms; the first trial's error
+    // calibrates it). From a little beyond where the estimate without rounding meets the
+    // tolerance, down in steps of 0.1 %, each step estimated within goes on trial until one is:
+    // the rounding of the end vertex makes some steps a few per cent longer than others around
+    // them, and the scan finds them. NaN where that does not settle it (no hump inside, three
+    // trials over).
+    auto scanned = [&]() {
+      constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+      constexpr double kAbove = 0.02, kBelow = 0.04, kStep = 0.001;
+      constexpr int kTrials = 3;
+      b_t = ta;
+      const double h0 = std::min(t_end, ta + predicted * learned) - ta;
+      const Tried first = tried_on_model(ta + h0);
+      if (ta + h0 == t_end && first.e <= f.tol) return t_end;
+      Maximum hump{-1, 0};
+      for (const Maximum& m : {first.m.best, first.m.second})
+        if (m.at > 0 && m.at < 1 && m.value > hump.value) hump = m;
+      if (!(hump.value >= 0)) return kNaN;
+      const Quintic q = Quintic::through(a.curve.p, a.curve.d1, a.curve.d2, first.end.curve.p, first.end.curve.d1,
+                                         first.end.curve.d2, h0);
+      Vec3 normal{0, 0, 0};
+      if (offset > 0) outward(first.end.curve, normal);
+      const Vec3 offset_vector = scale(normal, offset);
+      // |AP x AB|^2 and |AB|^2 (the hump's distance from the line squared is their ratio) for the
+      // step h, from a to the end aimed at (snapped, or both ends as aimed)
+      auto across = [&](double h, bool snapped, double& length2) {
+        const double s = h / h0;
+        const Vec3& start = snapped ? a.at : a.aimed;
+        const Vec3 aimed = add(q.at(s), offset_vector);
+        const Vec3 ab = sub(snapped ? f.grid.snap(aimed) : aimed, start);
+        const Vec3 c = cross(sub(q.at(hump.at * s), start), ab);
+        length2 = dot(ab, ab);
+        return dot(c, c);
+      };
+      auto estimate = [&](double h, bool snapped) {
+        double length2 = 0;
+        const double c2 = across(h, snapped, length2);
+        return std::sqrt(c2 / length2);
+      };
+      const double calibration = hump.value - estimate(h0, true);
+      const double smooth = estimate(h0, false) + calibration;
+      if (!(smooth + offset > 0)) return kNaN;
+      const double h_tol = h0 * std::sqrt((f.tol + offset) / (smooth + offset));
+      const double limit = f.tol - calibration;  // on the estimate
+      if (!(limit > 0)) return kNaN;
+      int trials = 0;
+      double h_before = 0;
+      for (double rel = 1 + kAbove; rel >= 1 - kBelow && trials < kTrials; rel -= kStep) {
+        const double h = std::min(h_tol * rel, t_end - ta);
+        if (ta + h <= b_t) return b_t;  // the first trial was longer
+        double length2 = 0;
+        if (h == h_before || across(h, true, length2) > limit * limit * length2) continue;
+        h_before = h;
+        ++trials;
+        if (tried_on_model(ta + h).e <= f.tol) return b_t;
+      }
+      return b_t > ta ? b_t : kNaN;
+    };
     const bool on_model = f.model_steps && !radial;
-    double tb = longest(on_model);
+    double tb = on_model ? scanned() : std::numeric_limits<double>::quiet_NaN();
+    if (std::isnan(tb)) tb = longest(on_model);
     if (on_model) {
       const Segment ab(a.at, b.at);
       auto on_curve = [&](double t) { return ab.distance(f.place(f.curve.point(t))); };

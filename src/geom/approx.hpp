@@ -70,8 +70,9 @@ struct Fit {
   bool arcs_with_r = false;        // R words: the control finds the centre from R and the ends
   double r_step = 0.001;           // increment of an R word
   double arc_radius_limit = 1e300;  // No.3410: start and end radius may differ by this much
-  // Equal error: each step searched on the quintic through the jets at its ends (one curve
-  // evaluation per trial), its deviation confirmed on the curve; off: every trial on the curve.
+  // Equal error: each step scanned on the quintic through the jets at its ends (a trial, one
+  // curve evaluation, then steps estimated from that quintic and the few estimated within tried),
+  // its deviation confirmed on the curve; off: every trial on the curve.
   bool model_steps = true;
   // Equal error on a long curve: cut where about this many segments are predicted, the pieces fit
   // on all cores (cuts depend on the curve alone; each join may cost a segment). 0: never cut.

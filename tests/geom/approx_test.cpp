@@ -116,14 +116,17 @@ TEST(Approx, DeviationFromJetsSearchesTheCurveWhereTheQuinticMisleads) {
   EXPECT_TRUE(std::fabs(w.t - 90) < 1e-3 || std::fabs(w.t - 450) < 1e-3) << w.t;
 }
 
-TEST(Approx, StepsOnTheQuinticCostNoMoreSegmentsThanStepsOnTheCurve) {
+// Steps scanned on the quintic find the longer steps that the rounding of the end vertex offers
+// (about 1 % fewer segments at a tolerance a few increments wide) where the search on the curve
+// settles for the first one it brackets.
+TEST(Approx, StepsScannedOnTheQuinticAreFewerThanStepsSearchedOnTheCurve) {
   Curve spiral = expression("[5+2*t/360]*COS[t]", "[5+2*t/360]*SIN[t]", 0, 1800);
   Fit fit{spiral, kSame, Grid{{0.0001, 0.0001, 0}}, Plane{0, 1}, 0.0005};
   Path modelled = fit_lines(fit, LineMethod::equal_error);
   fit.model_steps = false;
   Path searched = fit_lines(fit, LineMethod::equal_error);
-  ASSERT_GT(searched.pieces.size(), 100u);
-  EXPECT_LE(modelled.pieces.size(), searched.pieces.size() * 1.005);
+  ASSERT_GT(searched.pieces.size(), 1000u);
+  EXPECT_LE(modelled.pieces.size(), searched.pieces.size() * 0.995);
   EXPECT_LE(modelled.max_deviation, fit.tol);
   // each piece's deviation, searched on the curve alone
   for (const auto& p : modelled.pieces) {
