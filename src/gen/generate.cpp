@@ -344,20 +344,28 @@ Emitted expanded_or_arcs(const Context& c) {
   w.lines(fr.to_depth);
   Emitted e;
   e.first = w.line + 1;
-  int motion = 1;
-  std::string line;
-  for (const auto& p : path.pieces) {
-    if (!p.arc) {
-      line = motion == 1 ? "" : "G01 ";
-      c.words.append(line, p.end);
-      w.block(line);
-      motion = 1;
-      continue;
+  // The contour's blocks, in parts on all cores: a block's G code depends only on the piece before.
+  const std::vector<geom::Piece>& pieces = path.pieces;
+  constexpr std::size_t kPart = 4096;
+  std::vector<std::string> parts((pieces.size() + kPart - 1) / kPart);
+  auto g_code = [](const geom::Piece& p) { return p.arc ? (p.ccw ? 3 : 2) : 1; };
+  geom::for_each_on_cores(parts.size(), [&](std::size_t k) {
+    std::string& text = parts[k];
+    const std::size_t first = k * kPart, last = std::min(pieces.size(), first + kPart);
+    text.reserve(32 * (last - first));
+    int motion = first == 0 ? 1 : g_code(pieces[first - 1]);
+    for (std::size_t i = first; i < last; ++i) {
+      const geom::Piece& p = pieces[i];
+      const int g = g_code(p);
+      if (g != motion) text += fmt::format("G0{} ", g);
+      c.words.append(text, p.end);
+      if (p.arc) text += ' ' + arc_words(c, p);
+      text += '\n';
+      motion = g;
     }
-    int g = p.ccw ? 3 : 2;
-    w.block(fmt::format("{}{} {}", motion == g ? "" : fmt::format("G0{} ", g), c.words(p.end), arc_words(c, p)));
-    motion = g;
-  }
+  });
+  for (const std::string& part : parts) w.text += part;
+  w.line += static_cast<std::uint32_t>(pieces.size());
   e.last = w.line;
   end_program(w, c);
   e.text = std::move(w.text);

@@ -198,8 +198,11 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const S
   const double at_end = squared(dot(along, end), dot(across, end), dot(other, end));
   auto at = [&](double s) {
     if (s == 1) return at_end;
-    double px = x[5], py = y[5], pz = z[5];
-    for (std::size_t k = 5; k-- > 0;) px = px * s + x[k], py = py * s + y[k], pz = pz * s + z[k];
+    double px = x[5], py = y[5];
+    for (std::size_t k = 5; k-- > 0;) px = px * s + x[k], py = py * s + y[k];
+    if (flat) return squared(px, py, 0.0);
+    double pz = z[5];
+    for (std::size_t k = 5; k-- > 0;) pz = pz * s + z[k];
     return squared(px, py, pz);
   };
   auto jet = [](const std::array<double, 6>& c, double s, double& v, double& v1, double& v2) {
@@ -215,12 +218,21 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const S
     jet(z, s, v, v1, v2);
     g += v * v1, dg += v1 * v1 + v * v2;
   };
-  auto rising = [&](double s) {  // the squared distance's slope at s
-    double g, dg, px, px1, unused;
-    newton(s, g, dg);
-    jet(x, s, px, px1, unused);
+  auto rising = [&](double s) {  // half the squared distance's slope at s = 0 or 1
+    auto value_slope = [s](const std::array<double, 6>& c, double& v, double& v1) {
+      if (s == 0) {
+        v = c[0], v1 = c[1];
+      } else {
+        v = c[0] + c[1] + c[2] + c[3] + c[4] + c[5];
+        v1 = c[1] + 2 * c[2] + 3 * c[3] + 4 * c[4] + 5 * c[5];
+      }
+    };
+    double px, px1, py, py1, pz, pz1;
+    value_slope(x, px, px1);
+    value_slope(y, py, py1);
+    value_slope(z, pz, pz1);
     const double beyond = px < 0 ? px : px > length ? px - length : 0.0;
-    return g + beyond * px1;
+    return py * py1 + pz * pz1 + beyond * px1;
   };
   auto refine = [&](double lo, double hi, double s0, double f0, double start) {
     double s = start;
