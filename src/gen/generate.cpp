@@ -7,9 +7,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <condition_variable>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
@@ -74,41 +78,350 @@ geom::Plane plane_of(const machine::MachineProfile& p) {
   return geom::Plane{0, 1};
 }
 
+namespace {
+
+// Where each move ends on the curve and how far the curve strays from it.
+struct Measured {
+  double t1;            // the curve parameter nearest the move's end
+  double end_distance;  // of the move's end from the curve
+  geom::Worst worst;    // the curve's largest distance from the move
+};
+
+// A curve parameter and the placed jet there.
+struct Place {
+  double t = 0;
+  geom::PlacedJet jet{};
+};
+
+// Measures a contour in runs of kRun moves: where each run starts is searched in order over the
+// curve that the run before spans, then each run is measured on its own (on all cores, or while
+// the program still runs: see Ahead), each end projected from the one before. A run's chain must
+// arrive where the next run starts, else the next run is measured again from where it did (as
+// one chain in order would).
+class Measurer {
+public:
+  static constexpr std::size_t kRun = 512;
+
+  Measurer(const geom::Curve& curve, const Options& o, bool require_end)
+      : curve_(curve), o_(o), map_(axis_map(curve, o)), plane_(plane_of(o.profile)), require_end_(require_end) {}
+
+  const AxisMap& map() const { return map_; }
+
+  // Where run k starts (run 0: the first move's start; after it: where run k-1 ends, searched
+  // over three times the curve it spans from where run k-1 starts). Reads moves up to k * kRun.
+  Place run_start(const std::vector<ContourMove>& contour, std::size_t k, const Place& before) const {
+    double t;
+    if (k == 0) {
+      t = project(contour[0].start, curve_.t0(), 1e-3 + 10 * o_.tol);
+    } else {
+      double reach = 10 * o_.tol + 1e-3;
+      for (std::size_t i = (k - 1) * kRun; i < k * kRun; ++i) reach += 3 * contour[i].length;
+      t = project(contour[k * kRun - 1].end, before.t, reach, 64);
+    }
+    return {t, geom::placed_jet(curve_, map_, t)};
+  }
+
+  // Run k from `from` on; `moves` is the contour's length (the last move must reach the end of
+  // the curve) or more while it is not known. Writes measured[i] of its moves.
+  Place measure_run(const std::vector<ContourMove>& contour, std::size_t k, Place from, std::size_t moves,
+                    std::vector<Measured>& measured) const {
+    const double t_last = curve_.t1();
+    const Vec3 curve_end = map_(curve_.point(t_last));
+    double t_per_mm = 0;
+    for (std::size_t i = k * kRun; i < std::min(moves, (k + 1) * kRun); ++i) {
+      const ContourMove& m = contour[i];
+      const geom::Piece piece = piece_of(m);
+      Place to;
+      if (i + 1 == moves && require_end_) {  // the contour must reach the end of the curve
+        if (distance(piece.end, curve_end) > o_.tol)
+          throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
+                                               distance(piece.end, curve_end), t_last));
+        to = {t_last, geom::placed_jet(curve_, map_, t_last)};
+      } else {
+        if (!(t_per_mm > 0)) {
+          const Vec3& d = from.jet.d1;
+          t_per_mm = 1 / std::max(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 1e-12);
+        }
+        to.t = project_newton(piece.end, from.t, std::min(t_last, from.t + m.length * t_per_mm), to.jet);
+        if (std::isnan(to.t)) {
+          to.t = project(piece.end, from.t, 3 * m.length + 10 * o_.tol + 1e-3);
+          to.jet = geom::placed_jet(curve_, map_, to.t);
+        }
+      }
+      t_per_mm = m.length > 0 ? (to.t - from.t) / m.length : 0;
+      geom::Worst worst;
+      if (piece.arc) {
+        auto d = [&](const Vec3& p) { return geom::point_arc_distance(p, piece, plane_); };
+        worst = geom::max_distance(curve_, map_, from.t, to.t, from.jet, to.jet, d, trust(), 6);
+      } else {
+        const geom::Segment segment(piece.start, piece.end);
+        worst = geom::max_distance(curve_, map_, from.t, to.t, from.jet, to.jet, segment, trust());
+      }
+      measured[i] = {to.t, distance(piece.end, to.jet.p), worst};
+      from = to;
+    }
+    return from;
+  }
+
+  // The whole contour: runs that `ahead` measured from the start found here are taken as they are.
+  Stats measure(const std::vector<ContourMove>& contour, std::vector<Measured> measured = {},
+                const std::vector<Place>& ahead_start = {}, const std::vector<Place>& ahead_end = {}) const {
+    if (contour.empty()) throw std::runtime_error("no contour to measure");
+    const std::size_t moves = contour.size(), runs = (moves + kRun - 1) / kRun;
+    measured.resize(moves);
+    std::vector<Place> start(runs), end(runs);
+    for (std::size_t k = 0; k < runs; ++k) start[k] = run_start(contour, k, k > 0 ? start[k - 1] : Place{});
+    auto ahead = [&](std::size_t k) { return k < ahead_end.size() && ahead_start[k].t == start[k].t; };
+    std::vector<std::size_t> left;
+    for (std::size_t k = 0; k < runs; ++k) {
+      if (ahead(k)) end[k] = ahead_end[k];
+      else left.push_back(k);
+    }
+    geom::for_each_on_cores(left.size(), [&](std::size_t i) {
+      end[left[i]] = measure_run(contour, left[i], start[left[i]], moves, measured);
+    });
+    for (std::size_t k = 1; k < runs; ++k) {
+      const double step = end[k - 1].t - start[k - 1].t;
+      if (std::fabs(end[k - 1].t - start[k].t) <= 1e-6 * std::fabs(step)) continue;
+      start[k] = end[k - 1];
+      end[k] = measure_run(contour, k, start[k], moves, measured);
+    }
+    return stats(contour, measured, start[0]);
+  }
+
+private:
+  static double distance(const Vec3& a, const Vec3& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+  }
+  double trust() const { return 1e-3 * o_.tol; }  // the quintic between jets must agree with the curve this well
+  static geom::Piece piece_of(const ContourMove& m) {
+    geom::Piece piece;
+    piece.start = m.start;
+    piece.end = m.end;
+    piece.arc = m.arc;
+    piece.centre = m.centre;
+    piece.ccw = m.sweep > 0;
+    return piece;
+  }
+
+  // nearest curve parameter to p, searching forward from t_from over about `reach` mm of curve
+  // (a window scaled by the local speed: the contour follows the curve in order, so a nearby turn
+  // of a spiral is never taken for this one)
+  double project(const Vec3& p, double t_from, double reach, int samples = 16) const {
+    const Vec3 d = curve_.d1(t_from);
+    const double speed = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const double hi = std::min(curve_.t1(), t_from + reach / std::max(speed, 1e-12));
+    auto closeness = [&](double t) {
+      const Vec3 q = map_(curve_.point(t));
+      return -((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    };
+    return geom::sampled_maximum(closeness, t_from, hi, samples).at;
+  }
+
+  // The same by Newton's method on (C(t) - p).C'(t) = 0 from a guess past t_from, with the jet
+  // there; NaN if it does not settle on a nearest point ahead of t_from.
+  double project_newton(const Vec3& p, double t_from, double guess, geom::PlacedJet& j) const {
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    // a last step this small moves the jet by its Taylor terms (the next step would be ~1e-8)
+    const double settled = 1e-4 * (guess - t_from);
+    double t = guess;
+    for (int i = 0; i < 8; ++i) {
+      j = geom::placed_jet(curve_, map_, t);
+      Vec3 r{j.p[0] - p[0], j.p[1] - p[1], j.p[2] - p[2]};
+      double slope = r[0] * j.d1[0] + r[1] * j.d1[1] + r[2] * j.d1[2];
+      double bend = j.d1[0] * j.d1[0] + j.d1[1] * j.d1[1] + j.d1[2] * j.d1[2] + r[0] * j.d2[0] + r[1] * j.d2[1] +
+                    r[2] * j.d2[2];
+      if (!(bend > 0)) return kNaN;  // not a nearest point
+      const double dt = -slope / bend;
+      if (!(t + dt > t_from && t + dt <= curve_.t1())) return kNaN;
+      if (std::fabs(dt) <= settled) {
+        for (int a = 0; a < 3; ++a) {
+          j.p[a] += dt * (j.d1[a] + 0.5 * dt * j.d2[a]);
+          j.d1[a] += dt * j.d2[a];
+        }
+        return t + dt;
+      }
+      t += dt;
+    }
+    return kNaN;
+  }
+
+  // In order: the worst point, the deviation along the contour, the path drawn.
+  Stats stats(const std::vector<ContourMove>& contour, const std::vector<Measured>& measured,
+              const Place& start) const {
+    Stats s;
+    s.points = contour.size() + 1;
+    auto note = [&](double d, double t) {
+      if (d > s.max_deviation) {
+        s.max_deviation = d;
+        s.worst_t = t;
+        s.worst_point = map_(curve_.point(t));
+      }
+    };
+    s.start_t = start.t;
+    note(distance(contour[0].start, start.jet.p), start.t);
+    s.deviation.reserve(contour.size());
+    s.path.reserve(contour.size() + 1);
+    s.path_block.reserve(contour.size());
+    s.path.push_back(contour[0].start);
+    for (std::size_t i = 0; i < contour.size(); ++i) {
+      const ContourMove& m = contour[i];
+      const Measured& at = measured[i];
+      s.path_length += m.length;
+      note(at.end_distance, at.t1);
+      note(at.worst.distance, at.worst.t);
+      s.deviation.emplace_back(at.t1, at.worst.distance);
+      const Vec3& from = m.start;
+      if (m.arc) {
+        const int samples = 16;
+        const double u0 = from[plane_.u_axis] - m.centre[plane_.u_axis];
+        const double v0 = from[plane_.v_axis] - m.centre[plane_.v_axis];
+        for (int k = 1; k < samples; ++k) {
+          double a = m.sweep * k / samples;
+          Vec3 q = from;
+          q[plane_.u_axis] = m.centre[plane_.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
+          q[plane_.v_axis] = m.centre[plane_.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
+          s.path.push_back(q);
+          s.path_block.push_back(i);
+        }
+      }
+      s.path.push_back(m.end);
+      s.path_block.push_back(i);
+    }
+    return s;
+  }
+
+  const geom::Curve& curve_;
+  Options o_;
+  AxisMap map_;
+  geom::Plane plane_;
+  bool require_end_;
+};
+
+// Measures a pass's runs while the program still runs, on a thread beside the interpreter: run k
+// once a move after it has come (the last run is left to Measurer::measure, which knows where the
+// contour ends). stop() before the pass outgrows its reserve (its moves would move) and before
+// measuring; runs not done then are measured there.
+class Ahead {
+public:
+  Ahead(const Measurer& m, const std::vector<ContourMove>& moves)
+      : measurer_(m), moves_(moves), measured_(moves.capacity()), worker_([this] { work(); }) {}
+  Ahead(const Ahead&) = delete;
+  Ahead& operator=(const Ahead&) = delete;
+  ~Ahead() { stop(); }
+
+  void arrived(std::size_t moves) {  // the pass has this many moves now
+    if (moves % Measurer::kRun != 1) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      arrived_ = moves;
+    }
+    wake_.notify_one();
+  }
+  void stop() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stopped_ = true;
+    }
+    wake_.notify_one();
+    if (worker_.joinable()) worker_.join();
+  }
+  // after stop()
+  std::vector<Measured>& measured() { return measured_; }
+  const std::vector<Place>& starts() const { return starts_; }
+  const std::vector<Place>& ends() const { return ends_; }
+
+private:
+  void work() {
+    try {
+      for (std::size_t k = 0;; ++k) {
+        {
+          std::unique_lock<std::mutex> lock(mutex_);
+          wake_.wait(lock, [&] { return stopped_ || arrived_ > (k + 1) * Measurer::kRun; });
+          if (stopped_) return;
+        }
+        const Place start = measurer_.run_start(moves_, k, k > 0 ? starts_.back() : Place{});
+        const Place end = measurer_.measure_run(moves_, k, start, std::numeric_limits<std::size_t>::max(), measured_);
+        starts_.push_back(start);
+        ends_.push_back(end);
+      }
+    } catch (...) {  // Measurer::measure measures the run again and reports what went wrong
+    }
+  }
+
+  const Measurer& measurer_;
+  const std::vector<ContourMove>& moves_;
+  std::vector<Measured> measured_;
+  std::vector<Place> starts_, ends_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::size_t arrived_ = 0;
+  bool stopped_ = false;
+  std::thread worker_;
+};
+
+}  // namespace
+
 Stats round_trip(const std::string& text, const geom::Curve& curve, const Options& o, std::uint32_t first_line,
                  std::uint32_t last_line) {
   machine::ProgramLibrary lib(o.profile.parse_options());
   lib.add_text("<generated>", text, true);
   // The contour's moves, one group per pass: a feed move outside the contour (the plunge) ends one.
+  // Each pass is measured against the curve at the pass's own depth, as far as it can be while
+  // the program runs (with a core to spare).
+  struct Pass {
+    std::vector<ContourMove> moves;
+    std::unique_ptr<Measurer> measurer;
+    std::unique_ptr<Ahead> ahead;
+  };
   struct Keep final : machine::MoveSink {
+    const geom::Curve& curve;
+    const Options& o;
     std::uint32_t first, last;
-    std::vector<std::vector<ContourMove>> passes;
+    bool spare_core = std::thread::hardware_concurrency() > 1;
+    std::vector<Pass> passes;
     bool between = true;
+    Keep(const geom::Curve& c, const Options& options, std::uint32_t first_line, std::uint32_t last_line)
+        : curve(c), o(options), first(first_line), last(last_line) {}
     void on_move(const machine::Move& m) override {
       if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
       if (m.line < first || m.line > last) {
         between = true;
         return;
       }
-      if (between) passes.emplace_back().reserve(last - first + 1);  // an expanded contour: a move a line
+      if (between) {
+        if (!passes.empty() && passes.back().ahead) passes.back().ahead->stop();
+        Pass& pass = passes.emplace_back();
+        pass.moves.reserve(last - first + 1);  // an expanded contour: a move a line
+        Options at_depth = o;
+        if (detail::depth_passes(o)) at_depth.depth = -m.start[2];
+        pass.measurer = std::make_unique<Measurer>(curve, at_depth, true);
+        if (spare_core) pass.ahead = std::make_unique<Ahead>(*pass.measurer, pass.moves);
+      }
       between = false;
-      passes.back().push_back(ContourMove::of(m));
+      Pass& pass = passes.back();
+      if (pass.ahead && pass.moves.size() == pass.moves.capacity()) pass.ahead->stop();  // the moves will move
+      pass.moves.push_back(ContourMove::of(m));
+      if (pass.ahead) pass.ahead->arrived(pass.moves.size());
     }
-  } keep;
-  keep.first = first_line;
-  keep.last = last_line;
+  } keep(curve, o, first_line, last_line);
   machine::Interpreter interp(o.profile, lib);
   machine::RunResult r = interp.run(keep);
+  for (Pass& pass : keep.passes)
+    if (pass.ahead) pass.ahead->stop();
   if (!r.ok()) throw std::runtime_error("the generated program does not run: " + nc::format(*r.alarm));
 
   if (keep.passes.empty()) throw std::runtime_error("the generated program cuts no contour");
   if (keep.passes.size() > 1 && !detail::depth_passes(o))
     throw std::runtime_error("the generated program cuts its contour more than once");
-  // Each pass against the curve at the pass's own depth; the last one is the finished contour.
+  // the last pass is the finished contour
   std::vector<Stats> measured;
-  for (const auto& pass : keep.passes) {
-    Options at_depth = o;
-    if (detail::depth_passes(o)) at_depth.depth = -pass.front().start[2];
-    measured.push_back(measure(pass, curve, at_depth, true));
+  for (Pass& pass : keep.passes) {
+    if (pass.ahead)
+      measured.push_back(pass.measurer->measure(pass.moves, std::move(pass.ahead->measured()), pass.ahead->starts(),
+                                                pass.ahead->ends()));
+    else
+      measured.push_back(pass.measurer->measure(pass.moves));
   }
   Stats s = measured.back();
   for (const auto& m : measured)
@@ -134,185 +447,7 @@ Stats measure(const std::vector<machine::Move>& contour, const geom::Curve& curv
 }
 
 Stats measure(const std::vector<ContourMove>& contour, const geom::Curve& curve, const Options& o, bool require_end) {
-  Stats s;
-  const AxisMap map = axis_map(curve, o);
-  const geom::Placement& place = map;
-  geom::Plane plane = plane_of(o.profile);
-
-  auto dist = [](const Vec3& a, const Vec3& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-  };
-  // nearest curve parameter to p, searching forward from t_from over about `reach` mm of curve
-  // (a window scaled by the local speed: the contour follows the curve in order, so a nearby turn
-  // of a spiral is never taken for this one)
-  const double t_first = curve.t0(), t_last = curve.t1();
-  auto speed_at = [&](double t) {
-    Vec3 d = curve.d1(t);
-    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  };
-  auto project = [&](const Vec3& p, double t_from, double reach, int samples = 16) {
-    double hi = std::min(t_last, t_from + reach / std::max(speed_at(t_from), 1e-12));
-    auto closeness = [&](double t) {
-      Vec3 q = map(curve.point(t));
-      return -((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-    };
-    return geom::sampled_maximum(closeness, t_from, hi, samples).at;
-  };
-  // The same by Newton's method on (C(t) - p).C'(t) = 0 from a guess past t_from, with the jet
-  // there; NaN if it does not settle on a nearest point ahead of t_from.
-  auto project_newton = [&](const Vec3& p, double t_from, double guess, geom::PlacedJet& j) {
-    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-    // a last step this small moves the jet by its Taylor terms (the next step would be ~1e-8)
-    const double settled = 1e-4 * (guess - t_from);
-    double t = guess;
-    for (int i = 0; i < 8; ++i) {
-      j = geom::placed_jet(curve, place, t);
-      Vec3 r{j.p[0] - p[0], j.p[1] - p[1], j.p[2] - p[2]};
-      double slope = r[0] * j.d1[0] + r[1] * j.d1[1] + r[2] * j.d1[2];
-      double bend = j.d1[0] * j.d1[0] + j.d1[1] * j.d1[1] + j.d1[2] * j.d1[2] + r[0] * j.d2[0] + r[1] * j.d2[1] +
-                    r[2] * j.d2[2];
-      if (!(bend > 0)) return kNaN;  // not a nearest point
-      const double dt = -slope / bend;
-      if (!(t + dt > t_from && t + dt <= t_last)) return kNaN;
-      if (std::fabs(dt) <= settled) {
-        for (int a = 0; a < 3; ++a) {
-          j.p[a] += dt * (j.d1[a] + 0.5 * dt * j.d2[a]);
-          j.d1[a] += dt * j.d2[a];
-        }
-        return t + dt;
-      }
-      t += dt;
-    }
-    return kNaN;
-  };
-  const double trust = 1e-3 * o.tol;  // the quintic between jets must agree with the curve this well
-
-  if (contour.empty()) throw std::runtime_error("no contour to measure");
-  s.points = contour.size() + 1;
-  auto note = [&](double d, double t) {
-    if (d > s.max_deviation) {
-      s.max_deviation = d;
-      s.worst_t = t;
-      s.worst_point = map(curve.point(t));
-    }
-  };
-  const Vec3 first = contour[0].start;
-  s.path.push_back(first);
-  const double t_start = project(first, t_first, 1e-3 + 10 * o.tol);
-  const geom::PlacedJet jet_start = geom::placed_jet(curve, place, t_start);
-  s.start_t = t_start;
-  note(dist(first, jet_start.p), t_start);
-  const Vec3 curve_end = map(curve.point(curve.t1()));
-  auto piece_of = [](const ContourMove& m) {
-    geom::Piece piece;
-    piece.start = m.start;
-    piece.end = m.end;
-    piece.arc = m.arc;
-    piece.centre = m.centre;
-    piece.ccw = m.sweep > 0;
-    return piece;
-  };
-  // Where each move ends on the curve and how far the curve strays from it.
-  struct Measured {
-    double t1;             // the curve parameter nearest the move's end
-    double end_distance;   // of the move's end from the curve
-    geom::Worst worst;     // the curve's largest distance from the move
-  };
-  std::vector<Measured> measured(contour.size());
-  struct Place {
-    double t;
-    geom::PlacedJet jet;
-  };
-  // Moves first..last-1 from the curve point `from` on, in order: each end projected from the one
-  // before (Newton's method from the step per mm of the move before), then its deviation.
-  auto measure_moves = [&](std::size_t first_move, std::size_t last_move, Place from) {
-    double t_per_mm = 0;
-    for (std::size_t i = first_move; i < last_move; ++i) {
-      const ContourMove& m = contour[i];
-      const geom::Piece piece = piece_of(m);
-      Place to;
-      if (i + 1 == contour.size() && require_end) {  // the contour must reach the end of the curve
-        if (dist(piece.end, curve_end) > o.tol)
-          throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
-                                               dist(piece.end, curve_end), curve.t1()));
-        to = {curve.t1(), geom::placed_jet(curve, place, curve.t1())};
-      } else {
-        if (!(t_per_mm > 0)) {
-          const Vec3& d = from.jet.d1;
-          t_per_mm = 1 / std::max(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 1e-12);
-        }
-        to.t = project_newton(piece.end, from.t, std::min(t_last, from.t + m.length * t_per_mm), to.jet);
-        if (std::isnan(to.t)) {
-          to.t = project(piece.end, from.t, 3 * m.length + 10 * o.tol + 1e-3);
-          to.jet = geom::placed_jet(curve, place, to.t);
-        }
-      }
-      t_per_mm = m.length > 0 ? (to.t - from.t) / m.length : 0;
-      geom::Worst worst;
-      if (piece.arc) {
-        auto d = [&](const Vec3& p) { return geom::point_arc_distance(p, piece, plane); };
-        worst = geom::max_distance(curve, place, from.t, to.t, from.jet, to.jet, d, trust, 6);
-      } else {
-        const geom::Segment segment(piece.start, piece.end);
-        worst = geom::max_distance(curve, place, from.t, to.t, from.jet, to.jet, segment, trust);
-      }
-      measured[i] = {to.t, dist(piece.end, to.jet.p), worst};
-      from = to;
-    }
-    return from;
-  };
-  // On all cores, in runs of kRun moves: where each run starts is searched first, in order, over
-  // the curve that the run before spans; each run's own chain of projections must then arrive
-  // there, else the next run is measured again from where it did (as one chain in order would).
-  constexpr std::size_t kRun = 512;
-  const std::size_t runs = (contour.size() + kRun - 1) / kRun;
-  std::vector<Place> run_start(runs);
-  run_start[0] = {t_start, jet_start};
-  for (std::size_t k = 1; k < runs; ++k) {
-    double reach = 10 * o.tol + 1e-3;
-    for (std::size_t i = (k - 1) * kRun; i < k * kRun; ++i) reach += 3 * contour[i].length;
-    const double t = project(piece_of(contour[k * kRun - 1]).end, run_start[k - 1].t, reach, 64);
-    run_start[k] = {t, geom::placed_jet(curve, place, t)};
-  }
-  std::vector<Place> run_end(runs);
-  geom::for_each_on_cores(runs, [&](std::size_t k) {
-    run_end[k] = measure_moves(k * kRun, std::min(contour.size(), (k + 1) * kRun), run_start[k]);
-  });
-  for (std::size_t k = 1; k < runs; ++k) {
-    const double step = run_end[k - 1].t - run_start[k - 1].t;
-    if (std::fabs(run_end[k - 1].t - run_start[k].t) <= 1e-6 * std::fabs(step)) continue;
-    run_start[k] = run_end[k - 1];
-    run_end[k] = measure_moves(k * kRun, std::min(contour.size(), (k + 1) * kRun), run_start[k]);
-  }
-  // In order: the worst point, the deviation along the contour, the path drawn.
-  s.deviation.reserve(contour.size());
-  s.path.reserve(contour.size() + 1);
-  s.path_block.reserve(contour.size());
-  for (std::size_t i = 0; i < contour.size(); ++i) {
-    const ContourMove& m = contour[i];
-    const Measured& at = measured[i];
-    s.path_length += m.length;
-    note(at.end_distance, at.t1);
-    note(at.worst.distance, at.worst.t);
-    s.deviation.emplace_back(at.t1, at.worst.distance);
-    const Vec3& start = m.start;
-    if (m.arc) {
-      const int samples = 16;
-      const double u0 = start[plane.u_axis] - m.centre[plane.u_axis];
-      const double v0 = start[plane.v_axis] - m.centre[plane.v_axis];
-      for (int k = 1; k < samples; ++k) {
-        double a = m.sweep * k / samples;
-        Vec3 q = start;
-        q[plane.u_axis] = m.centre[plane.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
-        q[plane.v_axis] = m.centre[plane.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
-        s.path.push_back(q);
-        s.path_block.push_back(i);
-      }
-    }
-    s.path.push_back(m.end);
-    s.path_block.push_back(i);
-  }
-  return s;
+  return Measurer(curve, o, require_end).measure(contour);
 }
 
 namespace {

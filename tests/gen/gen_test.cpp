@@ -652,6 +652,33 @@ TEST(Gen, RoundTripFollowsATightSpiralAcrossItsRuns) {
   }
 }
 
+// The round trip measures runs of moves while the program still runs; the same moves measured
+// afterwards in one go must give the same figures, move by move.
+TEST(Gen, RoundTripMeasuredWhileTheProgramRunsIsMeasuredAfterwards) {
+  geom::CurveSpec spec = *geom::find_curve("spiral");
+  spec.to = 360 * 160;  // some runs measured while the program runs
+  const geom::Curve spiral(spec, {{"r0", 5}, {"pitch", 0.5}});
+  gen::Options o = options(gen::Form::expanded, 0.01);
+  const gen::Result r = gen::generate(spiral, o);
+  ASSERT_GT(r.stats.deviation.size(), 16 * 512u);
+  std::vector<gen::ContourMove> moves;
+  for (std::size_t i = 0; i + 1 < r.stats.path.size(); ++i) {
+    gen::ContourMove m;
+    m.start = r.stats.path[i];
+    m.end = r.stats.path[i + 1];
+    m.length = std::hypot(m.end[0] - m.start[0], m.end[1] - m.start[1], m.end[2] - m.start[2]);
+    moves.push_back(m);
+  }
+  o.depth = -moves.front().start[2];
+  const gen::Stats after = gen::measure(moves, spiral, o, true);
+  ASSERT_EQ(after.deviation.size(), r.stats.deviation.size());
+  for (std::size_t i = 0; i < after.deviation.size(); ++i) {
+    ASSERT_NEAR(after.deviation[i].first, r.stats.deviation[i].first, 1e-9) << "move " << i;
+    ASSERT_NEAR(after.deviation[i].second, r.stats.deviation[i].second, 1e-12) << "move " << i;
+  }
+  EXPECT_NEAR(after.max_deviation, r.stats.max_deviation, 1e-12);
+}
+
 TEST(Gen, RoundTripDeviationIsTheBruteForceDistance) {
   // The round trip's maximum deviation (Newton projections, the quintic between them, confirmed
   // on the curve) against brute force: the curve sampled densely, each sample's distance to the
