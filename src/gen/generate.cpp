@@ -305,7 +305,7 @@ private:
 class Ahead {
 public:
   Ahead(const Measurer& m, const std::vector<ContourMove>& moves)
-      : measurer_(m), moves_(moves), measured_(moves.capacity()), worker_([this] { work(); }) {}
+      : measurer_(m), moves_(moves), measured_(moves.capacity()), arrived_(moves.size()), worker_([this] { work(); }) {}
   Ahead(const Ahead&) = delete;
   Ahead& operator=(const Ahead&) = delete;
   ~Ahead() { stop(); }
@@ -396,13 +396,16 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
         Options at_depth = o;
         if (detail::depth_passes(o)) at_depth.depth = -m.start[2];
         pass.measurer = std::make_unique<Measurer>(curve, at_depth, true);
-        if (spare_core) pass.ahead = std::make_unique<Ahead>(*pass.measurer, pass.moves);
       }
       between = false;
       Pass& pass = passes.back();
       if (pass.ahead && pass.moves.size() == pass.moves.capacity()) pass.ahead->stop();  // the moves will move
       pass.moves.push_back(ContourMove::of(m));
-      if (pass.ahead) pass.ahead->arrived(pass.moves.size());
+      // a long contour (a run done, room for more): measure while the program runs
+      if (spare_core && pass.moves.size() == Measurer::kRun + 1 && pass.moves.capacity() > 2 * Measurer::kRun)
+        pass.ahead = std::make_unique<Ahead>(*pass.measurer, pass.moves);
+      else if (pass.ahead)
+        pass.ahead->arrived(pass.moves.size());
     }
   } keep(curve, o, first_line, last_line);
   machine::Interpreter interp(o.profile, lib);
