@@ -120,11 +120,6 @@ public:
   }
   const Vec3& start() const { return a_; }
   const Vec3& vector() const { return ab_; }  // start to end
-  // v less its component along the segment
-  Vec3 across(const Vec3& v) const {
-    const double s = (v[0] * ab_[0] + v[1] * ab_[1] + v[2] * ab_[2]) * inv_len2_;
-    return {v[0] - s * ab_[0], v[1] - s * ab_[1], v[2] - s * ab_[2]};
-  }
   double distance(const Vec3& p) const {
     const double ax = p[0] - a_[0], ay = p[1] - a_[1], az = p[2] - a_[2];
     double s = (ax * ab_[0] + ay * ab_[1] + az * ab_[2]) * inv_len2_;
