@@ -1,4 +1,5 @@
 #include "gen/generate.hpp"
+#include "base/memory.hpp"
 #include "geom/parallel.hpp"
 #include "geom/search.hpp"
 
@@ -305,7 +306,7 @@ private:
 class Ahead {
 public:
   Ahead(const Measurer& m, const std::vector<ContourMove>& moves)
-      : measurer_(m), moves_(moves), measured_(moves.capacity()), arrived_(moves.size()), worker_([this] { work(); }) {}
+      : measurer_(m), moves_(moves), measured_(room(moves.capacity())), arrived_(moves.size()), worker_([this] { work(); }) {}
   Ahead(const Ahead&) = delete;
   Ahead& operator=(const Ahead&) = delete;
   ~Ahead() { stop(); }
@@ -332,6 +333,12 @@ public:
   const std::vector<Place>& ends() const { return ends_; }
 
 private:
+  static std::vector<Measured> room(std::size_t moves) {
+    std::vector<Measured> measured;
+    base::reserve_large(measured, moves);
+    measured.resize(moves);
+    return measured;
+  }
   void work() {
     try {
       for (std::size_t k = 0;; ++k) {
@@ -392,7 +399,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
       if (between) {
         if (!passes.empty() && passes.back().ahead) passes.back().ahead->stop();
         Pass& pass = passes.emplace_back();
-        pass.moves.reserve(last - first + 1);  // an expanded contour: a move a line
+        base::reserve_large(pass.moves, last - first + 1);  // an expanded contour: a move a line
         Options at_depth = o;
         if (detail::depth_passes(o)) at_depth.depth = -m.start[2];
         pass.measurer = std::make_unique<Measurer>(curve, at_depth, true);

@@ -1,4 +1,5 @@
 #include "geom/approx.hpp"
+#include "base/memory.hpp"
 #include "geom/parallel.hpp"
 #include "geom/quintic.hpp"
 #include "geom/search.hpp"
@@ -124,6 +125,9 @@ constexpr double kPieceResolution = 1e-6;
 constexpr double kModelResolution = 1e-4;
 // A segment's deviation has its humps at the ends (off the curve) and in the middle: four samples.
 constexpr int kLineSamples = 4;
+// Newton's method squares the error at each step: after a step this short the hump is placed
+// within kModelResolution (unless the distance's third derivative is 16 times its second).
+constexpr double kNewtonSettled = 2.5e-3;
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb,
                    const std::function<double(const Vec3&)>& dist) {
@@ -196,27 +200,36 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const S
   };
   const Vec3 end = sub(b.p, ab.start());
   const double at_end = squared(dot(along, end), dot(across, end), dot(other, end));
+  // polynomials summed over powers of s in pairs (short chains of dependent operations)
+  auto poly = [](const std::array<double, 6>& c, const std::array<double, 6>& pw) {
+    return (c[0] + c[1] * pw[1]) + (c[2] * pw[2] + c[3] * pw[3]) + (c[4] * pw[4] + c[5] * pw[5]);
+  };
+  auto powers = [](double s) {
+    const double s2 = s * s, s4 = s2 * s2;
+    return std::array<double, 6>{1, s, s2, s2 * s, s4, s4 * s};
+  };
   auto at = [&](double s) {
     if (s == 1) return at_end;
-    double px = x[5], py = y[5];
-    for (std::size_t k = 5; k-- > 0;) px = px * s + x[k], py = py * s + y[k];
-    if (flat) return squared(px, py, 0.0);
-    double pz = z[5];
-    for (std::size_t k = 5; k-- > 0;) pz = pz * s + z[k];
-    return squared(px, py, pz);
+    const std::array<double, 6> pw = powers(s);
+    return squared(poly(x, pw), poly(y, pw), flat ? 0.0 : poly(z, pw));
   };
-  auto jet = [](const std::array<double, 6>& c, double s, double& v, double& v1, double& v2) {
-    v = c[5], v1 = 0, v2 = 0;
-    for (std::size_t k = 5; k-- > 0;) v2 = v2 * s + 2 * v1, v1 = v1 * s + v, v = v * s + c[k];
+  // the first and second derivatives' coefficients
+  auto derived = [](const std::array<double, 6>& c, std::array<double, 6>& c1, std::array<double, 6>& c2) {
+    for (std::size_t k = 0; k < 5; ++k) c1[k] = static_cast<double>(k + 1) * c[k + 1];
+    for (std::size_t k = 0; k < 4; ++k) c2[k] = static_cast<double>((k + 1) * (k + 2)) * c[k + 2];
+    c1[5] = c2[4] = c2[5] = 0;
   };
+  std::array<double, 6> y1, y2, z1{}, z2{};
+  derived(y, y1, y2);
+  if (!flat) derived(z, z1, z2);
   // g = y y' + z z' and g' at s
   auto newton = [&](double s, double& g, double& dg) {
-    double v, v1, v2;
-    jet(y, s, v, v1, v2);
+    const std::array<double, 6> pw = powers(s);
+    const double v = poly(y, pw), v1 = poly(y1, pw), v2 = poly(y2, pw);
     g = v * v1, dg = v1 * v1 + v * v2;
     if (flat) return;
-    jet(z, s, v, v1, v2);
-    g += v * v1, dg += v1 * v1 + v * v2;
+    const double w = poly(z, pw), w1 = poly(z1, pw), w2 = poly(z2, pw);
+    g += w * w1, dg += w1 * w1 + w * w2;
   };
   auto rising = [&](double s) {  // half the squared distance's slope at s = 0 or 1
     auto value_slope = [s](const std::array<double, 6>& c, double& v, double& v1) {
@@ -242,7 +255,7 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const S
       if (!(dg < 0)) break;
       const double next = s - g / dg;
       if (!(next > lo && next < hi)) break;
-      if (std::fabs(next - s) < kModelResolution) return Maximum{at(next), next};
+      if (std::fabs(next - s) < kNewtonSettled) return Maximum{at(next), next};
       s = next;
     }
     return brent_maximum(at, lo, hi, s0, f0, kModelResolution);
@@ -563,7 +576,7 @@ Path lines_in_chunks(const Fit& f, bool band, bool radial = false) {
   Path path;
   std::size_t pieces = 0;
   for (const Path& part : parts) pieces += part.pieces.size();
-  path.pieces.reserve(pieces);
+  base::reserve_large(path.pieces, pieces);
   for (std::size_t k = 0; k < chunks; ++k) {
     path.max_deviation = std::max(path.max_deviation, parts[k].max_deviation);
     path.pieces.insert(path.pieces.end(), parts[k].pieces.begin(), parts[k].pieces.end());

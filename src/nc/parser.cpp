@@ -7,10 +7,7 @@
 #include <cstring>
 #include <span>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
+#include "base/memory.hpp"
 #include "nc/program.hpp"
 
 namespace ncurve::nc {
@@ -632,21 +629,6 @@ struct LineScanner {
 
 std::uint16_t clamp_col(std::size_t c) { return static_cast<std::uint16_t>(std::min<std::size_t>(c, 65535)); }
 
-// Large tables are filled front to back once: 2 MB pages save most of the page faults (a third of
-// the time on a million-block program). Linux only; elsewhere a no-op.
-void advise_huge_pages(void* data, std::size_t bytes) {
-#ifdef __linux__
-  constexpr std::size_t kHuge = 2u << 20;
-  if (bytes < 2 * kHuge) return;
-  auto begin = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
-  auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHuge - 1);
-  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#else
-  (void)data;
-  (void)bytes;
-#endif
-}
-
 // Expanded programs are mostly blocks of plain words (X1.234 Y-5. F100.). Such a line is compiled
 // straight from the raw text; anything else (macros, comments, N, '/', errors) returns false and
 // goes through the general scanner and BlockParser, which give the same result for plain lines.
@@ -722,10 +704,8 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
     // page faults on long expanded programs. Later programs grow as needed.
     if (result.programs.size() == 1) {
       std::size_t lines_left = file->line_count() > line ? file->line_count() - line : 1;
-      current->blocks.reserve(lines_left + 1);
-      current->words.reserve(2 * lines_left + 4);
-      advise_huge_pages(current->blocks.data(), current->blocks.capacity() * sizeof(Block));
-      advise_huge_pages(current->words.data(), current->words.capacity() * sizeof(Word));
+      base::reserve_large(current->blocks, lines_left + 1);
+      base::reserve_large(current->words, 2 * lines_left + 4);
     }
   };
   bool started = false;  // a block has been read (a later '%' ends the file)
