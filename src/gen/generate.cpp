@@ -247,48 +247,69 @@ private:
     return kNaN;
   }
 
-  // In order: the worst point, the deviation along the contour, the path drawn.
+  // The worst point, the deviation along the contour, the path drawn: in parts of kRun moves on
+  // all cores, each part's points placed after those of the parts before it, the parts' worst
+  // points and lengths taken in order (the same figures as one pass in order).
   Stats stats(const std::vector<ContourMove>& contour, const std::vector<Measured>& measured,
               const Place& start) const {
-    Stats s;
-    s.points = contour.size() + 1;
-    auto note = [&](double d, double t) {
-      if (d > s.max_deviation) {
-        s.max_deviation = d;
-        s.worst_t = t;
-        s.worst_point = map_(curve_.point(t));
+    constexpr int kArcSamples = 16;
+    const std::size_t moves = contour.size(), parts = (moves + kRun - 1) / kRun;
+    std::vector<std::size_t> first_point(parts + 1, 1);  // the path's points before each part
+    for (std::size_t k = 0; k < parts; ++k) {
+      std::size_t points = 0;
+      for (std::size_t i = k * kRun; i < std::min(moves, (k + 1) * kRun); ++i) points += contour[i].arc ? kArcSamples : 1;
+      first_point[k + 1] = first_point[k] + points;
+    }
+    struct Worst {
+      double distance = 0, t = 0;
+      void note(double d, double at) {
+        if (d > distance) distance = d, t = at;
       }
     };
+    std::vector<Worst> worst(parts);
+    std::vector<double> length(parts, 0.0);
+    Stats s;
+    s.points = moves + 1;
     s.start_t = start.t;
-    note(distance(contour[0].start, start.jet.p), start.t);
-    s.deviation.reserve(contour.size());
-    s.path.reserve(contour.size() + 1);
-    s.path_block.reserve(contour.size());
-    s.path.push_back(contour[0].start);
-    for (std::size_t i = 0; i < contour.size(); ++i) {
-      const ContourMove& m = contour[i];
-      const Measured& at = measured[i];
-      s.path_length += m.length;
-      note(at.end_distance, at.t1);
-      note(at.worst.distance, at.worst.t);
-      s.deviation.emplace_back(at.t1, at.worst.distance);
-      const Vec3& from = m.start;
-      if (m.arc) {
-        const int samples = 16;
-        const double u0 = from[plane_.u_axis] - m.centre[plane_.u_axis];
-        const double v0 = from[plane_.v_axis] - m.centre[plane_.v_axis];
-        for (int k = 1; k < samples; ++k) {
-          double a = m.sweep * k / samples;
-          Vec3 q = from;
-          q[plane_.u_axis] = m.centre[plane_.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
-          q[plane_.v_axis] = m.centre[plane_.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
-          s.path.push_back(q);
-          s.path_block.push_back(i);
+    s.deviation.resize(moves);
+    s.path.resize(first_point.back());
+    s.path_block.resize(first_point.back() - 1);
+    s.path[0] = contour[0].start;
+    geom::for_each_on_cores(parts, [&](std::size_t k) {
+      std::size_t point = first_point[k];
+      for (std::size_t i = k * kRun; i < std::min(moves, (k + 1) * kRun); ++i) {
+        const ContourMove& m = contour[i];
+        const Measured& at = measured[i];
+        length[k] += m.length;
+        worst[k].note(at.end_distance, at.t1);
+        worst[k].note(at.worst.distance, at.worst.t);
+        s.deviation[i] = {at.t1, at.worst.distance};
+        if (m.arc) {
+          const Vec3& from = m.start;
+          const double u0 = from[plane_.u_axis] - m.centre[plane_.u_axis];
+          const double v0 = from[plane_.v_axis] - m.centre[plane_.v_axis];
+          for (int j = 1; j < kArcSamples; ++j) {
+            const double a = m.sweep * j / kArcSamples;
+            Vec3 q = from;
+            q[plane_.u_axis] = m.centre[plane_.u_axis] + u0 * std::cos(a) - v0 * std::sin(a);
+            q[plane_.v_axis] = m.centre[plane_.v_axis] + u0 * std::sin(a) + v0 * std::cos(a);
+            s.path_block[point - 1] = i;
+            s.path[point++] = q;
+          }
         }
+        s.path_block[point - 1] = i;
+        s.path[point++] = m.end;
       }
-      s.path.push_back(m.end);
-      s.path_block.push_back(i);
+    });
+    Worst all;
+    all.note(distance(contour[0].start, start.jet.p), start.t);
+    for (std::size_t k = 0; k < parts; ++k) {
+      s.path_length += length[k];
+      all.note(worst[k].distance, worst[k].t);
     }
+    s.max_deviation = all.distance;
+    s.worst_t = all.t;
+    if (all.distance > 0) s.worst_point = map_(curve_.point(all.t));
     return s;
   }
 

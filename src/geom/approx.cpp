@@ -317,25 +317,52 @@ double confirmed(OnCurve on_curve, double ta, double h, const Maximum& model, do
   return v - 0.125 * (after - before) * (after - before) / bend;  // the parabola's vertex value
 }
 
-// The curve's maximum over the quintic's humps: each one within trust of the highest confirmed
-// on the curve; NaN if one is not.
+// The same for a segment from one curve jet: the distance across the segment, its slope and
+// bend there; the maximum where the slope's tangent line crosses zero, which must lie within a
+// thousandth of the step; its value by the parabola. NaN if not (or where the segment's nearest
+// point is an end).
+double confirmed(const Curve& curve, const Placement& place, const Segment& segment, double ta, double h,
+                 const Maximum& model, double trust) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (model.at == 0 || model.at == 1) return model.value;
+  const double t = ta + h * model.at;
+  if (t - kConfirmStep * h < ta || t + kConfirmStep * h > ta + h) return kNaN;
+  const PlacedJet j = placed_jet(curve, place, t);
+  const Vec3& ab = segment.vector();
+  const double length2 = dot(ab, ab);
+  if (!(length2 > 0)) return kNaN;
+  const Vec3 r = sub(j.p, segment.start());
+  const double along = dot(r, ab) / length2;
+  if (!(along > 0 && along < 1)) return kNaN;
+  auto across = [&](const Vec3& e, double part) { return sub(e, scale(ab, part)); };
+  const Vec3 w = across(r, along), w1 = across(j.d1, dot(j.d1, ab) / length2), w2 = across(j.d2, dot(j.d2, ab) / length2);
+  const double v = norm(w);
+  if (!(std::fabs(v - model.value) <= trust) || !(v > 0)) return kNaN;
+  const double slope = dot(w, w1) / v;
+  const double bend = (dot(w1, w1) + dot(w, w2) - slope * slope) / v;
+  if (!(bend < 0) || std::fabs(slope) > -bend * kConfirmStep * h) return kNaN;
+  return v - 0.5 * slope * slope / bend;
+}
+
+// The curve's maximum over the quintic's humps (on_curve(hump): its value confirmed, or NaN):
+// each one within trust of the highest confirmed on the curve; NaN if one is not.
 template <class OnCurve>
-Maximum confirmed(OnCurve on_curve, double ta, double h, const ModelMaxima& model, double trust) {
-  Maximum out{confirmed(on_curve, ta, h, model.best, trust), model.best.at};
+Maximum confirmed(OnCurve on_curve, const ModelMaxima& model, double trust) {
+  Maximum out{on_curve(model.best), model.best.at};
   if (model.second.value >= model.best.value - trust) {
-    const double v = confirmed(on_curve, ta, h, model.second, trust);
+    const double v = on_curve(model.second);
     if (std::isnan(v) || v > out.value) out = {v, model.second.at};
   }
   return out;
 }
 
-// The maxima that model(h) finds on the quintic, confirmed on the curve; else the curve searched.
-template <class Dist, class Model>
+// The maxima found on the quintic, confirmed on the curve; else the curve searched.
+template <class Dist, class OnCurve>
 Worst confirmed_maximum(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
-                        Dist dist, double trust, Model model) {
+                        Dist dist, const ModelMaxima& model, double trust, OnCurve on_curve) {
   const double h = tb - ta;
   if (!(h > 0)) return {dist(a.p), ta};
-  const Maximum v = confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, model(h), trust);
+  const Maximum v = confirmed(on_curve, model, trust);
   if (std::isnan(v.value)) return max_distance(curve, place, ta, tb, dist);
   return {v.value, ta + h * v.at};
 }
@@ -344,14 +371,21 @@ Worst confirmed_maximum(const Curve& curve, const Placement& place, double ta, d
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
                    const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust, int samples) {
-  return confirmed_maximum(curve, place, ta, tb, a, dist, trust,
-                           [&](double h) { return on_quintic(a, b, h, dist, samples); });
+  const double h = tb - ta;
+  const ModelMaxima model = h > 0 ? on_quintic(a, b, h, dist, samples) : ModelMaxima{};
+  auto on_curve = [&](const Maximum& m) {
+    return confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, m, trust);
+  };
+  return confirmed_maximum(curve, place, ta, tb, a, dist, model, trust, on_curve);
 }
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
                    const PlacedJet& b, const Segment& segment, double trust) {
-  return confirmed_maximum(curve, place, ta, tb, a, [&](const Vec3& p) { return segment.distance(p); }, trust,
-                           [&](double h) { return on_quintic(a, b, h, segment, kLineSamples); });
+  const double h = tb - ta;
+  const ModelMaxima model = h > 0 ? on_quintic(a, b, h, segment, kLineSamples) : ModelMaxima{};
+  auto on_curve = [&](const Maximum& m) { return confirmed(curve, place, segment, ta, h, m, trust); };
+  return confirmed_maximum(curve, place, ta, tb, a, [&](const Vec3& p) { return segment.distance(p); }, model, trust,
+                           on_curve);
 }
 
 namespace {
@@ -517,8 +551,8 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
     if (std::isnan(tb)) tb = longest(on_model);
     if (on_model) {
       const Segment ab(a.at, b.at);
-      auto on_curve = [&](double t) { return ab.distance(f.place(f.curve.point(t))); };
-      double e = confirmed(on_curve, ta, tb - ta, b_model, trust).value;
+      auto on_curve = [&](const Maximum& m) { return confirmed(f.curve, f.place, ab, ta, tb - ta, m, trust); };
+      double e = confirmed(on_curve, b_model, trust).value;
       if (e <= f.tol) b_error = e;
       else tb = longest(false);  // the quintic misleads here: every trial on the curve
     }
