@@ -176,63 +176,131 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, Dist di
 // a plane through the segment), found by Newton's method from each highest sample, kept between
 // the samples either side; else a search of the distance itself. Squared distances are compared,
 // one square root per maximum.
-ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const Segment& ab, int samples) {
-  const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
-  const double length = norm(ab.vector());
-  const Vec3 along = length > 0 ? scale(ab.vector(), 1 / length) : Vec3{1, 0, 0};
-  // across: perpendicular to `along` and to the axis it has least of (a curve in a plane of axes: z = 0)
-  int least = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::fabs(along[i]) < std::fabs(along[least])) least = i;
-  Vec3 axis{0, 0, 0};
-  axis[least] = 1;
-  Vec3 across = cross(along, axis);
-  across = scale(across, 1 / norm(across));
-  const Vec3 other = cross(along, across);
-  std::array<double, 6> x, y, z;  // sum x[k] s^k ...
-  auto put = [&](std::size_t k, const Vec3& e) { x[k] = dot(along, e), y[k] = dot(across, e), z[k] = dot(other, e); };
-  put(0, sub(q.origin, ab.start()));
-  for (std::size_t k = 0; k < 5; ++k) put(k + 1, q.c[k]);
-  const bool flat = z == std::array<double, 6>{};
-  auto squared = [&](double px, double py, double pz) {
-    const double beyond = px < 0 ? px : px > length ? px - length : 0.0;
-    return py * py + pz * pz + beyond * beyond;
-  };
-  const Vec3 end = sub(b.p, ab.start());
-  const double at_end = squared(dot(along, end), dot(across, end), dot(other, end));
-  // polynomials summed over powers of s in pairs (short chains of dependent operations)
-  auto poly = [](const std::array<double, 6>& c, const std::array<double, 6>& pw) {
-    return (c[0] + c[1] * pw[1]) + (c[2] * pw[2] + c[3] * pw[3]) + (c[4] * pw[4] + c[5] * pw[5]);
-  };
-  auto powers = [](double s) {
+class SegmentQuintic {
+public:
+  using Poly = std::array<double, 6>;  // sum c[k] s^k
+
+  SegmentQuintic(const PlacedJet& a, const PlacedJet& b, double h, const Segment& ab) {
+    const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
+    length_ = norm(ab.vector());
+    const Vec3 along = length_ > 0 ? scale(ab.vector(), 1 / length_) : Vec3{1, 0, 0};
+    // across: perpendicular to `along` and to the axis it has least of (a curve in a plane of axes: z = 0)
+    int least = 0;
+    for (int i = 1; i < 3; ++i)
+      if (std::fabs(along[i]) < std::fabs(along[least])) least = i;
+    Vec3 axis{0, 0, 0};
+    axis[least] = 1;
+    Vec3 across = cross(along, axis);
+    across = scale(across, 1 / norm(across));
+    const Vec3 other = cross(along, across);
+    auto put = [&](std::size_t k, const Vec3& e) { x_[k] = dot(along, e), y_[k] = dot(across, e), z_[k] = dot(other, e); };
+    put(0, sub(q.origin, ab.start()));
+    for (std::size_t k = 0; k < 5; ++k) put(k + 1, q.c[k]);
+    flat_ = z_ == Poly{};
+    const Vec3 end = sub(b.p, ab.start());
+    at_end_ = squared(dot(along, end), dot(across, end), dot(other, end));
+    derive(y_, y1_, y2_);
+    if (!flat_) derive(z_, z1_, z2_);
+  }
+
+  // the squared distance at s
+  double at(double s) const {
+    if (s == 1) return at_end_;
+    const Poly pw = powers(s);
+    return squared(poly(x_, pw), poly(y_, pw), flat_ ? 0.0 : poly(z_, pw));
+  }
+
+  // Newton's method on g from start, within (lo, hi): the maximum it settles on, else false.
+  bool newton(double lo, double hi, double start, Maximum& found) const {
+    double s = start;
+    for (int iteration = 0; iteration < 12; ++iteration) {
+      const Poly pw = powers(s);
+      const double v = poly(y_, pw), v1 = poly(y1_, pw), v2 = poly(y2_, pw);
+      double g = v * v1, dg = v1 * v1 + v * v2;
+      if (!flat_) {
+        const double w = poly(z_, pw), w1 = poly(z1_, pw), w2 = poly(z2_, pw);
+        g += w * w1, dg += w1 * w1 + w * w2;
+      }
+      if (!(dg < 0)) return false;
+      const double next = s - g / dg;
+      if (!(next > lo && next < hi)) return false;
+      if (std::fabs(next - s) < kNewtonSettled) {
+        found = {at(next), next};
+        return true;
+      }
+      s = next;
+    }
+    return false;
+  }
+
+  // The hump that Newton's method finds from the middle (its distance); value NaN if none.
+  Maximum middle_hump() const {
+    Maximum m{std::numeric_limits<double>::quiet_NaN(), 0.5};
+    if (newton(0, 1, 0.5, m)) m.value = std::sqrt(m.value);
+    return m;
+  }
+
+  // each sample no lower than its neighbours: an end one falling away from the end is that
+  // end's maximum, else Newton's method from the vertex of the parabola through it and its
+  // neighbours (see each_sampled_maximum)
+  ModelMaxima maxima(int samples) const {
+    constexpr int kMostSamples = 16;
+    if (samples < 2 || samples > kMostSamples) throw std::invalid_argument("on_quintic: 2..16 samples");
+    constexpr double kNone = -std::numeric_limits<double>::infinity();
+    ModelMaxima m{{kNone, 0}, {kNone, 0}};
+    std::array<double, kMostSamples + 1> value;
+    const double step = 1.0 / samples;
+    auto sample = [&](int i) { return i == samples ? 1.0 : i * step; };
+    auto at_fn = [this](double s) { return at(s); };
+    for (int i = 0; i <= samples; ++i) {
+      value[i] = at(sample(i));
+      if (std::isnan(value[i])) return {{value[i], sample(i)}, {kNone, 0}};
+    }
+    for (int i = 0; i <= samples; ++i) {
+      if (!((i == 0 || value[i] > value[i - 1]) && (i == samples || value[i] >= value[i + 1]))) continue;
+      Maximum x{value[i], sample(i)};
+      const bool end_maximum = i == 0 ? !(rising(0) > 0) : i == samples && !(rising(1) < 0);
+      if (!end_maximum) {
+        const double lo = sample(std::max(0, i - 1)), hi = sample(std::min(samples, i + 1));
+        double start = x.at;
+        if (i > 0 && i < samples) {
+          const double bend = value[i - 1] - 2 * value[i] + value[i + 1];
+          if (bend < 0) start = std::clamp(x.at + 0.5 * step * (value[i - 1] - value[i + 1]) / bend, lo, hi);
+        }
+        Maximum refined;
+        if (!newton(lo, hi, start, refined)) refined = brent_maximum(at_fn, lo, hi, x.at, x.value, kModelResolution);
+        if (refined.value > x.value) x = refined;
+      }
+      if (std::isnan(x.value) || x.value > m.best.value) m.second = m.best, m.best = x;
+      else if (x.value > m.second.value) m.second = x;
+    }
+    for (Maximum* found : {&m.best, &m.second})
+      if (found->value >= 0) found->value = std::sqrt(found->value);
+    return m;
+  }
+
+private:
+  static Poly powers(double s) {
     const double s2 = s * s, s4 = s2 * s2;
-    return std::array<double, 6>{1, s, s2, s2 * s, s4, s4 * s};
-  };
-  auto at = [&](double s) {
-    if (s == 1) return at_end;
-    const std::array<double, 6> pw = powers(s);
-    return squared(poly(x, pw), poly(y, pw), flat ? 0.0 : poly(z, pw));
-  };
+    return {1, s, s2, s2 * s, s4, s4 * s};
+  }
+  // summed in pairs: short chains of dependent operations
+  static double poly(const Poly& c, const Poly& pw) {
+    return (c[0] + c[1] * pw[1]) + (c[2] * pw[2] + c[3] * pw[3]) + (c[4] * pw[4] + c[5] * pw[5]);
+  }
   // the first and second derivatives' coefficients
-  auto derived = [](const std::array<double, 6>& c, std::array<double, 6>& c1, std::array<double, 6>& c2) {
+  static void derive(const Poly& c, Poly& c1, Poly& c2) {
     for (std::size_t k = 0; k < 5; ++k) c1[k] = static_cast<double>(k + 1) * c[k + 1];
     for (std::size_t k = 0; k < 4; ++k) c2[k] = static_cast<double>((k + 1) * (k + 2)) * c[k + 2];
     c1[5] = c2[4] = c2[5] = 0;
-  };
-  std::array<double, 6> y1, y2, z1{}, z2{};
-  derived(y, y1, y2);
-  if (!flat) derived(z, z1, z2);
-  // g = y y' + z z' and g' at s
-  auto newton = [&](double s, double& g, double& dg) {
-    const std::array<double, 6> pw = powers(s);
-    const double v = poly(y, pw), v1 = poly(y1, pw), v2 = poly(y2, pw);
-    g = v * v1, dg = v1 * v1 + v * v2;
-    if (flat) return;
-    const double w = poly(z, pw), w1 = poly(z1, pw), w2 = poly(z2, pw);
-    g += w * w1, dg += w1 * w1 + w * w2;
-  };
-  auto rising = [&](double s) {  // half the squared distance's slope at s = 0 or 1
-    auto value_slope = [s](const std::array<double, 6>& c, double& v, double& v1) {
+  }
+  double squared(double px, double py, double pz) const {
+    const double beyond = px < 0 ? px : px > length_ ? px - length_ : 0.0;
+    return py * py + pz * pz + beyond * beyond;
+  }
+  // half the squared distance's slope at s = 0 or 1
+  double rising(double s) const {
+    auto value_slope = [s](const Poly& c, double& v, double& v1) {
       if (s == 0) {
         v = c[0], v1 = c[1];
       } else {
@@ -241,59 +309,20 @@ ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const S
       }
     };
     double px, px1, py, py1, pz, pz1;
-    value_slope(x, px, px1);
-    value_slope(y, py, py1);
-    value_slope(z, pz, pz1);
-    const double beyond = px < 0 ? px : px > length ? px - length : 0.0;
+    value_slope(x_, px, px1);
+    value_slope(y_, py, py1);
+    value_slope(z_, pz, pz1);
+    const double beyond = px < 0 ? px : px > length_ ? px - length_ : 0.0;
     return py * py1 + pz * pz1 + beyond * px1;
-  };
-  auto refine = [&](double lo, double hi, double s0, double f0, double start) {
-    double s = start;
-    for (int iteration = 0; iteration < 12; ++iteration) {
-      double g = 0, dg = 0;
-      newton(s, g, dg);
-      if (!(dg < 0)) break;
-      const double next = s - g / dg;
-      if (!(next > lo && next < hi)) break;
-      if (std::fabs(next - s) < kNewtonSettled) return Maximum{at(next), next};
-      s = next;
-    }
-    return brent_maximum(at, lo, hi, s0, f0, kModelResolution);
-  };
-  // each sample no lower than its neighbours: an end one falling away from the end is that
-  // end's maximum, else Newton's method from the vertex of the parabola through it and its
-  // neighbours (see each_sampled_maximum)
-  constexpr int kMostSamples = 16;
-  if (samples < 2 || samples > kMostSamples) throw std::invalid_argument("on_quintic: 2..16 samples");
-  constexpr double kNone = -std::numeric_limits<double>::infinity();
-  ModelMaxima m{{kNone, 0}, {kNone, 0}};
-  std::array<double, kMostSamples + 1> value;
-  const double step = 1.0 / samples;
-  auto sample = [&](int i) { return i == samples ? 1.0 : i * step; };
-  for (int i = 0; i <= samples; ++i) {
-    value[i] = at(sample(i));
-    if (std::isnan(value[i])) return {{value[i], sample(i)}, {kNone, 0}};
   }
-  for (int i = 0; i <= samples; ++i) {
-    if (!((i == 0 || value[i] > value[i - 1]) && (i == samples || value[i] >= value[i + 1]))) continue;
-    Maximum x{value[i], sample(i)};
-    const bool end_maximum = i == 0 ? !(rising(0) > 0) : i == samples && !(rising(1) < 0);
-    if (!end_maximum) {
-      const double lo = sample(std::max(0, i - 1)), hi = sample(std::min(samples, i + 1));
-      double start = x.at;
-      if (i > 0 && i < samples) {
-        const double bend = value[i - 1] - 2 * value[i] + value[i + 1];
-        if (bend < 0) start = std::clamp(x.at + 0.5 * step * (value[i - 1] - value[i + 1]) / bend, lo, hi);
-      }
-      const Maximum refined = refine(lo, hi, x.at, x.value, start);
-      if (refined.value > x.value) x = refined;
-    }
-    if (std::isnan(x.value) || x.value > m.best.value) m.second = m.best, m.best = x;
-    else if (x.value > m.second.value) m.second = x;
-  }
-  for (Maximum* found : {&m.best, &m.second})
-    if (found->value >= 0) found->value = std::sqrt(found->value);
-  return m;
+
+  Poly x_, y_, z_, y1_, y2_, z1_{}, z2_{};
+  double length_ = 0, at_end_ = 0;
+  bool flat_ = false;
+};
+
+ModelMaxima on_quintic(const PlacedJet& a, const PlacedJet& b, double h, const Segment& ab, int samples) {
+  return SegmentQuintic(a, b, h, ab).maxima(samples);
 }
 
 // The curve's maximum near the quintic's: the curve must agree with the quintic there within
@@ -462,13 +491,14 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       ModelMaxima m;
       Vertex end;
     };
-    auto tried_on_model = [&](double tb) {
-      Tried r{0, {}, vertex(f, tb, offset)};
-      r.m = on_quintic(a.curve, r.end.curve, tb - ta, Segment(a.at, r.end.at), kLineSamples);
+    auto tried_with = [&](double tb, const Vertex& end) {
+      Tried r{0, {}, end};
+      r.m = on_quintic(a.curve, end.curve, tb - ta, Segment(a.at, end.at), kLineSamples);
       r.e = r.m.best.value;
       if (r.e <= f.tol && tb > b_t) b = r.end, b_error = r.e, b_t = tb, b_model = r.m;
       return r;
     };
+    auto tried_on_model = [&](double tb) { return tried_with(tb, vertex(f, tb, offset)); };
     auto longest = [&](bool on_model) {
       b_t = ta;
       auto error_to = [&](double tb) {
@@ -499,17 +529,27 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       constexpr double kAbove = 0.02, kBelow = 0.04, kStep = 0.001;
       constexpr int kTrials = 3;
       b_t = ta;
-      const double h0 = std::min(t_end, ta + predicted * learned) - ta;
-      const Tried first = tried_on_model(ta + h0);
-      if (ta + h0 == t_end && first.e <= f.tol) return t_end;
-      Maximum hump{-1, 0};
-      for (const Maximum& m : {first.m.best, first.m.second})
-        if (m.at > 0 && m.at < 1 && m.value > hump.value) hump = m;
-      if (!(hump.value >= 0)) return kNaN;
-      const Quintic q = Quintic::through(a.curve.p, a.curve.d1, a.curve.d2, first.end.curve.p, first.end.curve.d1,
-                                         first.end.curve.d2, h0);
+      const double h0 = std::min(t_end, ta + predicted * learned) - ta, t0 = ta + h0;
+      const Vertex first = vertex(f, t0, offset);
+      // its hump by Newton's method from the middle; the first step goes on trial when the scan
+      // comes down to it (or at once, where that finds no hump above both ends or the step ends
+      // the curve)
+      const SegmentQuintic first_model(a.curve, first.curve, h0, Segment(a.at, first.at));
+      Maximum hump = first_model.middle_hump();
+      bool first_tried = false;
+      if (t0 == t_end || !(hump.value * hump.value > std::max(first_model.at(0), first_model.at(1)))) {
+        const Tried r = tried_with(t0, first);
+        first_tried = true;
+        if (t0 == t_end && r.e <= f.tol) return t_end;
+        hump = {-1, 0};
+        for (const Maximum& m : {r.m.best, r.m.second})
+          if (m.at > 0 && m.at < 1 && m.value > hump.value) hump = m;
+        if (!(hump.value >= 0)) return kNaN;
+      }
+      const Quintic q = Quintic::through(a.curve.p, a.curve.d1, a.curve.d2, first.curve.p, first.curve.d1,
+                                         first.curve.d2, h0);
       Vec3 normal{0, 0, 0};
-      if (offset > 0) outward(first.end.curve, normal);
+      if (offset > 0) outward(first.curve, normal);
       const Vec3 offset_vector = scale(normal, offset);
       // |AP x AB|^2 and |AB|^2 (the hump's distance from the line squared is their ratio) for the
       // step h, from a to the end aimed at (snapped, or both ends as aimed)
@@ -537,6 +577,10 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       double h_before = 0;
       for (double rel = 1 + kAbove; rel >= 1 - kBelow && trials < kTrials; rel -= kStep) {
         const double h = std::min(h_tol * rel, t_end - ta);
+        if (!first_tried && h <= h0) {
+          first_tried = true;
+          if (tried_with(t0, first).e <= f.tol) return b_t;
+        }
         if (ta + h <= b_t) return b_t;  // the first trial was longer
         double length2 = 0;
         if (h == h_before || across(h, true, length2) > limit * limit * length2) continue;
@@ -544,6 +588,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
         ++trials;
         if (tried_on_model(ta + h).e <= f.tol) return b_t;
       }
+      if (!first_tried) tried_with(t0, first);
       return b_t > ta ? b_t : kNaN;
     };
     const bool on_model = f.model_steps && !radial;
