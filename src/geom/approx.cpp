@@ -181,24 +181,38 @@ public:
   using Poly = std::array<double, 6>;  // sum c[k] s^k
 
   SegmentQuintic(const PlacedJet& a, const PlacedJet& b, double h, const Segment& ab) {
-    const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
     length_ = norm(ab.vector());
     const Vec3 along = length_ > 0 ? scale(ab.vector(), 1 / length_) : Vec3{1, 0, 0};
     // across: perpendicular to `along` and to the axis it has least of (a curve in a plane of axes: z = 0)
     int least = 0;
     for (int i = 1; i < 3; ++i)
       if (std::fabs(along[i]) < std::fabs(along[least])) least = i;
-    Vec3 axis{0, 0, 0};
-    axis[least] = 1;
-    Vec3 across = cross(along, axis);
-    across = scale(across, 1 / norm(across));
-    const Vec3 other = cross(along, across);
-    auto put = [&](std::size_t k, const Vec3& e) { x_[k] = dot(along, e), y_[k] = dot(across, e), z_[k] = dot(other, e); };
-    put(0, sub(q.origin, ab.start()));
-    for (std::size_t k = 0; k < 5; ++k) put(k + 1, q.c[k]);
+    const Vec3 start = sub(a.p, ab.start()), end = sub(b.p, ab.start());
+    const int w = least;
+    if (along[w] == 0 && start[w] == 0 && end[w] == 0 && a.d1[w] == 0 && a.d2[w] == 0 && b.d1[w] == 0 &&
+        b.d2[w] == 0) {
+      // segment and jets in the plane of the other two axes, (u, v): across is (-along v, along u)
+      const int u = (w + 1) % 3, v = (w + 2) % 3;
+      auto x = [&](const Vec3& e) { return along[u] * e[u] + along[v] * e[v]; };
+      auto y = [&](const Vec3& e) { return along[u] * e[v] - along[v] * e[u]; };
+      put(x_, x(start), Quintic::coefficients(x(end) - x(start), x(a.d1), x(a.d2), x(b.d1), x(b.d2), h));
+      put(y_, y(start), Quintic::coefficients(y(end) - y(start), y(a.d1), y(a.d2), y(b.d1), y(b.d2), h));
+      z_ = Poly{};
+      at_end_ = squared(x(end), y(end), 0.0);
+    } else {
+      Vec3 axis{0, 0, 0};
+      axis[least] = 1;
+      Vec3 across = cross(along, axis);
+      across = scale(across, 1 / norm(across));
+      const Vec3 other = cross(along, across);
+      const Quintic q = Quintic::through(a.p, a.d1, a.d2, b.p, b.d1, b.d2, h);
+      for (auto [poly, e] : {std::pair{&x_, along}, std::pair{&y_, across}, std::pair{&z_, other}}) {
+        (*poly)[0] = dot(e, start);
+        for (std::size_t k = 0; k < 5; ++k) (*poly)[k + 1] = dot(e, q.c[k]);
+      }
+      at_end_ = squared(dot(along, end), dot(across, end), dot(other, end));
+    }
     flat_ = z_ == Poly{};
-    const Vec3 end = sub(b.p, ab.start());
-    at_end_ = squared(dot(along, end), dot(across, end), dot(other, end));
     derive(y_, y1_, y2_);
     if (!flat_) derive(z_, z1_, z2_);
   }
@@ -280,6 +294,10 @@ public:
   }
 
 private:
+  static void put(Poly& p, double at_start, const std::array<double, 5>& c) {
+    p[0] = at_start;
+    for (std::size_t k = 0; k < 5; ++k) p[k + 1] = c[k];
+  }
   static Poly powers(double s) {
     const double s2 = s * s, s4 = s2 * s2;
     return {1, s, s2, s2 * s, s4, s4 * s};
@@ -427,22 +445,23 @@ double deviation(const Fit& f, double ta, double tb, const Vec3& at_ta, const Ve
 }
 
 struct Vertex {
-  Vec3 at;      // as emitted (snapped)
-  Local curve;  // the placed curve there
-  Vec3 aimed;   // before snapping
+  Vec3 at;           // as emitted (snapped)
+  Local curve;       // the placed curve there
+  Vec3 aimed;        // before snapping
+  Vec3 normal;       // the curve's outward normal there
+  double curvature;  // and its curvature
 };
 
 // Vertices: exact curve points at both ends of the range, elsewhere the curve point moved outward
 // by `offset` (a band of +-tol holds segments about 1.4 times longer than chords), then snapped.
 Vertex vertex(const Fit& f, double t, double offset) {
-  Local l = local(f, t);
-  Vec3 aimed = l.p;
-  if (offset > 0 && t > f.curve.t0() && t < f.curve.t1()) {
-    Vec3 n;
-    outward(l, n);
-    aimed = add(l.p, scale(n, offset));
-  }
-  return {f.grid.snap(aimed), l, aimed};
+  Vertex v;
+  v.curve = local(f, t);
+  v.curvature = outward(v.curve, v.normal);
+  v.aimed = v.curve.p;
+  if (offset > 0 && t > f.curve.t0() && t < f.curve.t1()) v.aimed = add(v.curve.p, scale(v.normal, offset));
+  v.at = f.grid.snap(v.aimed);
+  return v;
 }
 
 double segment_error(const Fit& f, double ta, double tb, const Vertex& a, const Vertex& b, bool radial = false) {
@@ -453,14 +472,16 @@ double segment_error(const Fit& f, double ta, double tb, const Vertex& a, const 
   return deviation(f, ta, tb, a.curve.p, b.curve.p, [&](const Vec3& p) { return ab.distance(p); });
 }
 
-// A first guess of the parameter step for a sag h where the curve is l (from its curvature).
-double step_guess(const Fit& f, const Local& l, double h) {
-  Vec3 n;
-  double k = outward(l, n);
+// A first guess of the parameter step for a sag h where the curve is l (from its curvature k).
+double step_guess(const Fit& f, const Local& l, double k, double h) {
   double speed = norm(l.d1);
   double range = f.curve.t1() - f.curve.t0();
   if (!(k > 1e-12) || !(speed > 0)) return range;
   return std::min(range, std::sqrt(8 * h / k) / speed);
+}
+double step_guess(const Fit& f, const Local& l, double h) {
+  Vec3 n;
+  return step_guess(f, l, outward(l, n), h);
 }
 
 // Steps are searched to 0.3 %: closer, the coordinate rounding decides more than the step does.
@@ -484,7 +505,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
     Vertex b{};
     double b_error = 0, b_t = ta;  // the longest segment within the tolerance tried so far
     ModelMaxima b_model{};
-    const double predicted = step_guess(f, a.curve, f.tol + offset);
+    const double predicted = step_guess(f, a.curve, a.curvature, f.tol + offset);
     // a step tried on the quintic; the longest within the tolerance kept in b
     struct Tried {
       double e;
@@ -548,9 +569,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       }
       const Quintic q = Quintic::through(a.curve.p, a.curve.d1, a.curve.d2, first.curve.p, first.curve.d1,
                                          first.curve.d2, h0);
-      Vec3 normal{0, 0, 0};
-      if (offset > 0) outward(first.curve, normal);
-      const Vec3 offset_vector = scale(normal, offset);
+      const Vec3 offset_vector = offset > 0 ? scale(first.normal, offset) : Vec3{0, 0, 0};
       // |AP x AB|^2 and |AB|^2 (the hump's distance from the line squared is their ratio) for the
       // step h, from a to the end aimed at (snapped, or both ends as aimed)
       auto across = [&](double h, bool snapped, double& length2) {

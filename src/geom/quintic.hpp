@@ -11,6 +11,15 @@ struct Quintic {
   V origin{};             // the point at s = 0
   std::array<V, 5> c{};   // coefficients of s .. s^5 (s = 0..1 over the step), about origin
 
+  // The coefficients of s .. s^5 of one coordinate, from its change dp over the step and its
+  // first and second derivatives at the start (d10, d20) and the end (d11, d21).
+  static std::array<double, 5> coefficients(double dp, double d10, double d20, double d11, double d21, double h) {
+    const double v0 = h * d10, v1 = h * d11;
+    const double a0 = h * h * d20, a1 = h * h * d21;
+    return {v0, 0.5 * a0, 10 * dp - 6 * v0 - 4 * v1 - 1.5 * a0 + 0.5 * a1,
+            -15 * dp + 8 * v0 + 7 * v1 + 1.5 * a0 - a1, 6 * dp - 3 * v0 - 3 * v1 - 0.5 * a0 + 0.5 * a1};
+  }
+
   // p, d1, d2 at the start and the end of a step h long in the curve parameter (derivatives
   // per unit of that parameter).
   static Quintic through(const V& p0, const V& d10, const V& d20, const V& p1, const V& d11, const V& d21,
@@ -18,14 +27,8 @@ struct Quintic {
     Quintic q;
     q.origin = p0;
     for (int a = 0; a < 3; ++a) {
-      const double dp = p1[a] - p0[a];
-      const double v0 = h * d10[a], v1 = h * d11[a];
-      const double a0 = h * h * d20[a], a1 = h * h * d21[a];
-      q.c[0][a] = v0;
-      q.c[1][a] = 0.5 * a0;
-      q.c[2][a] = 10 * dp - 6 * v0 - 4 * v1 - 1.5 * a0 + 0.5 * a1;
-      q.c[3][a] = -15 * dp + 8 * v0 + 7 * v1 + 1.5 * a0 - a1;
-      q.c[4][a] = 6 * dp - 3 * v0 - 3 * v1 - 0.5 * a0 + 0.5 * a1;
+      const std::array<double, 5> k = coefficients(p1[a] - p0[a], d10[a], d20[a], d11[a], d21[a], h);
+      for (int i = 0; i < 5; ++i) q.c[i][a] = k[i];
     }
     return q;
   }
