@@ -108,16 +108,31 @@ public:
 
   const AxisMap& map() const { return map_; }
 
-  // Where run k starts (run 0: the first move's start; after it: where run k-1 ends, searched
-  // over three times the curve it spans from where run k-1 starts). Reads moves up to k * kRun.
+  // Where run k starts (run 0: the first move's start; after it: where run k-1 ends, by Newton's
+  // method from as far along the curve as run k-1 is long, taken if it lies as near as the
+  // tolerance allows; else searched over three times that length from where run k-1 starts).
+  // Reads moves up to k * kRun.
   Place run_start(const std::vector<ContourMove>& contour, std::size_t k, const Place& before) const {
     double t;
     if (k == 0) {
       t = project(contour[0].start, curve_.t0(), 1e-3 + 10 * o_.tol);
     } else {
-      double reach = 10 * o_.tol + 1e-3;
-      for (std::size_t i = (k - 1) * kRun; i < k * kRun; ++i) reach += 3 * contour[i].length;
-      t = project(contour[k * kRun - 1].end, before.t, reach, 64);
+      double length = 0;
+      for (std::size_t i = (k - 1) * kRun; i < k * kRun; ++i) length += contour[i].length;
+      const Vec3& p = contour[k * kRun - 1].end;
+      const double near = 10 * o_.tol + 1e-3;
+      // the step in t that covers `length` at a speed changing as it does at the start
+      const Vec3 &d1 = before.jet.d1, &d2 = before.jet.d2;
+      const double speed = std::sqrt(d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2]);
+      const double half_gain = 0.5 * (d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2]) / speed;
+      const double reach = speed * speed + 4 * half_gain * length;
+      Place found;
+      if (speed > 0 && reach >= 0) {
+        const double step = 2 * length / (speed + std::sqrt(reach));
+        found.t = project_newton(p, before.t, std::min(curve_.t1(), before.t + step), found.jet);
+        if (!std::isnan(found.t) && distance(p, found.jet.p) <= near) return found;
+      }
+      t = project(p, before.t, 3 * length + near, 64);
     }
     return {t, geom::placed_jet(curve_, map_, t)};
   }
