@@ -1,6 +1,6 @@
 #include "gen/generate.hpp"
 #include "base/memory.hpp"
-#include "geom/parallel.hpp"
+#include "base/parallel.hpp"
 #include "geom/search.hpp"
 
 #include <fmt/format.h>
@@ -193,7 +193,7 @@ public:
       if (ahead(k)) end[k] = ahead_end[k];
       else left.push_back(k);
     }
-    geom::for_each_on_cores(left.size(), [&](std::size_t i) {
+    base::for_each_on_cores(left.size(), [&](std::size_t i) {
       end[left[i]] = measure_run(contour, left[i], start[left[i]], moves, measured);
     });
     for (std::size_t k = 1; k < runs; ++k) {
@@ -290,7 +290,7 @@ private:
     s.path.resize(first_point.back());
     s.path_block.resize(first_point.back() - 1);
     s.path[0] = contour[0].start;
-    geom::for_each_on_cores(parts, [&](std::size_t k) {
+    base::for_each_on_cores(parts, [&](std::size_t k) {
       std::size_t point = first_point[k];
       for (std::size_t i = k * kRun; i < std::min(moves, (k + 1) * kRun); ++i) {
         const ContourMove& m = contour[i];
@@ -530,7 +530,7 @@ Emitted expanded_or_arcs(const Context& c) {
   constexpr std::size_t kPart = 4096;
   std::vector<std::string> parts((pieces.size() + kPart - 1) / kPart);
   auto g_code = [](const geom::Piece& p) { return p.arc ? (p.ccw ? 3 : 2) : 1; };
-  geom::for_each_on_cores(parts.size(), [&](std::size_t k) {
+  base::for_each_on_cores(parts.size(), [&](std::size_t k) {
     std::string& text = parts[k];
     const std::size_t first = k * kPart, last = std::min(pieces.size(), first + kPart);
     text.reserve(32 * (last - first));

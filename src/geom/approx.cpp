@@ -1,6 +1,6 @@
 #include "geom/approx.hpp"
 #include "base/memory.hpp"
-#include "geom/parallel.hpp"
+#include "base/parallel.hpp"
 #include "geom/quintic.hpp"
 #include "geom/search.hpp"
 
@@ -668,7 +668,7 @@ Path lines_in_chunks(const Fit& f, bool band, bool radial = false) {
   // room for twice the prediction: pages never written cost nothing
   const auto expected = static_cast<std::size_t>(2 * c.segments) + 16;
   std::vector<Path> parts(chunks);
-  for_each_on_cores(chunks, [&](std::size_t k) {
+  base::for_each_on_cores(chunks, [&](std::size_t k) {
     parts[k] = lines_greedy(f, band, radial, cuts[k], cuts[k + 1], expected);
   });
   Path path;

@@ -1,3 +1,4 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "nc/program.hpp"
@@ -191,4 +192,104 @@ TEST(Parser, DigitsPerNumberFollowTheControl) {
   EXPECT_DOUBLE_EQ(p.words[0].value, 0.00555555555555);
   EXPECT_DOUBLE_EQ(p.words[1].value, -1.23e-12);
   EXPECT_DOUBLE_EQ(p.code[p.blocks[1].value.begin].k, 0.017453292519943);
+}
+
+namespace {
+
+void expect_same_expr(const Expr& a, const Expr& b) {
+  EXPECT_EQ(a.begin, b.begin);
+  EXPECT_EQ(a.end, b.end);
+}
+
+// Every field of two parse results, program by program.
+void expect_same(const ParseResult& a, const ParseResult& b) {
+  ASSERT_EQ(a.diagnostics.size(), b.diagnostics.size());
+  for (std::size_t i = 0; i < a.diagnostics.size(); ++i) {
+    EXPECT_EQ(a.diagnostics[i].code, b.diagnostics[i].code);
+    EXPECT_EQ(a.diagnostics[i].message, b.diagnostics[i].message);
+    EXPECT_EQ(a.diagnostics[i].span.line, b.diagnostics[i].span.line);
+    EXPECT_EQ(a.diagnostics[i].span.column, b.diagnostics[i].span.column);
+  }
+  ASSERT_EQ(a.programs.size(), b.programs.size());
+  for (std::size_t n = 0; n < a.programs.size(); ++n) {
+    const Program &p = *a.programs[n], &q = *b.programs[n];
+    SCOPED_TRACE(n);
+    EXPECT_EQ(p.number, q.number);
+    EXPECT_EQ(p.name, q.name);
+    ASSERT_EQ(p.blocks.size(), q.blocks.size());
+    for (std::size_t i = 0; i < p.blocks.size(); ++i) {
+      const Block &x = p.blocks[i], &y = q.blocks[i];
+      SCOPED_TRACE(x.line);
+      EXPECT_EQ(x.kind, y.kind);
+      EXPECT_EQ(x.block_skip, y.block_skip);
+      EXPECT_EQ(x.loop_id, y.loop_id);
+      EXPECT_EQ(x.column, y.column);
+      EXPECT_EQ(x.line, y.line);
+      EXPECT_EQ(x.sequence, y.sequence);
+      EXPECT_EQ(x.match, y.match);
+      EXPECT_EQ(x.error, y.error);
+      EXPECT_EQ(x.comment, y.comment);
+      EXPECT_EQ(x.words_begin, y.words_begin);
+      EXPECT_EQ(x.words_end, y.words_end);
+      EXPECT_EQ(x.target_var, y.target_var);
+      expect_same_expr(x.target, y.target);
+      expect_same_expr(x.value, y.value);
+      expect_same_expr(x.cond, y.cond);
+    }
+    ASSERT_EQ(p.words.size(), q.words.size());
+    for (std::size_t i = 0; i < p.words.size(); ++i) {
+      EXPECT_EQ(p.words[i].letter, q.words[i].letter);
+      EXPECT_EQ(p.words[i].literal, q.words[i].literal);
+      EXPECT_EQ(p.words[i].column, q.words[i].column);
+      EXPECT_EQ(p.words[i].value, q.words[i].value);
+      expect_same_expr(p.words[i].expr, q.words[i].expr);
+    }
+    ASSERT_EQ(p.code.size(), q.code.size());
+    for (std::size_t i = 0; i < p.code.size(); ++i) {
+      EXPECT_EQ(p.code[i].op, q.code[i].op);
+      EXPECT_EQ(p.code[i].var, q.code[i].var);
+      EXPECT_EQ(p.code[i].k, q.code[i].k);
+    }
+    EXPECT_EQ(p.comments, q.comments);
+    ASSERT_EQ(p.errors.size(), q.errors.size());
+    for (std::size_t i = 0; i < p.errors.size(); ++i) EXPECT_EQ(p.errors[i].message, q.errors[i].message);
+    EXPECT_EQ(p.sequence_index, q.sequence_index);
+  }
+}
+
+}  // namespace
+
+// A long text is read in parts on all cores: whatever line the parts are cut at (in a program,
+// in a loop, before an O number, after the '%' that ends the file), the programs, blocks, words,
+// expression code, comments, sequence numbers, loops and errors are those of one reading.
+TEST(Parser, TextReadInPartsIsReadAsInOne) {
+  std::string body;
+  for (int i = 0; i < 12; ++i) {
+    body += fmt::format("N{} G01 X{}.5 Y-{} (STEP {})\n", 10 * (i % 5), i, i * 3, i);
+    body += fmt::format("#{}=[#1+{}]*SIN[{}]\n", 100 + i, i, 15 * i);
+    if (i % 4 == 0) body += "WHILE [#1 LT 3] DO1\n#1=#1+1\n";
+    if (i % 4 == 1) body += "END1\n";
+    if (i % 5 == 2) body += "G01 X1.2.3\n";  // an error
+    if (i % 6 == 3) body += "\n  \n";
+  }
+  const std::vector<std::string> texts = {
+      "%\n\nO100 (FIRST)\n" + body + "M99\nO200\n" + body + "M30\n",
+      "(NO O NUMBER)\n" + body + body,
+      "O1\n" + body + "%\nG01 X9\n" + body,  // a '%' ends the file
+      "\n\n%\n" + body + "END1\nO3\n" + body,
+  };
+  for (const std::string& text : texts) {
+    auto file = std::make_shared<SourceFile>("t.nc", text);
+    ParseOptions whole;
+    whole.part_bytes = 0;
+    const ParseResult one = parse(file, whole);
+    ASSERT_FALSE(one.programs.empty());
+    for (std::size_t parts : {2u, 3u, 5u, 8u, 13u}) {
+      SCOPED_TRACE(parts);
+      ParseOptions in_parts;
+      in_parts.part_bytes = 1;
+      in_parts.parts = parts;
+      expect_same(one, parse(file, in_parts));
+    }
+  }
 }

@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-namespace ncurve::geom {
+namespace ncurve::base {
 
 template <class Work>
 void for_each_on_cores(std::size_t n, Work work) {
@@ -32,4 +32,4 @@ void for_each_on_cores(std::size_t n, Work work) {
     if (e) std::rethrow_exception(e);
 }
 
-}  // namespace ncurve::geom
+}  // namespace ncurve::base
