@@ -10,6 +10,12 @@
 
 namespace ncurve::base {
 
+// The cores this process may use (asked once: the library reads it from /sys each time).
+inline std::size_t cores() {
+  static const std::size_t n = std::max(1u, std::thread::hardware_concurrency());
+  return n;
+}
+
 template <class Work>
 void for_each_on_cores(std::size_t n, Work work) {
   std::vector<std::exception_ptr> errors(n);
@@ -23,9 +29,8 @@ void for_each_on_cores(std::size_t n, Work work) {
       }
     }
   };
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> helpers;
-  for (std::size_t i = 1; i < std::min(n, cores); ++i) helpers.emplace_back(run);
+  for (std::size_t i = 1; i < std::min(n, cores()); ++i) helpers.emplace_back(run);
   run();
   for (auto& t : helpers) t.join();
   for (auto& e : errors)

@@ -421,7 +421,7 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
     const geom::Curve& curve;
     const Options& o;
     std::uint32_t first, last;
-    bool spare_core = std::thread::hardware_concurrency() > 1;
+    bool spare_core = base::cores() > 1;
     std::vector<Pass> passes;
     bool between = true;
     Keep(const geom::Curve& c, const Options& options, std::uint32_t first_line, std::uint32_t last_line)

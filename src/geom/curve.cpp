@@ -1,4 +1,5 @@
 #include "geom/curve.hpp"
+#include "base/parallel.hpp"
 
 #include <fmt/format.h>
 
@@ -247,13 +248,19 @@ double Curve::curvature(double t, Vec3* normal) const {
 
 void Curve::validate() const {
   if (!(t1_ > t0_)) throw std::runtime_error(fmt::format("{}: the range {}..{} is empty", name_, t0_, t1_));
-  constexpr int kSamples = 4096;
+  constexpr int kSamples = 4096, kPart = 512;
   double typical_speed = 0;
   std::vector<double> speeds(kSamples + 1);
+  auto sample = [&](int i) { return t0_ + (t1_ - t0_) * i / kSamples; };
+  std::vector<Jet> jets(kSamples + 1);  // evaluated on all cores, then checked in order
+  base::for_each_on_cores(kSamples / kPart + 1, [&](std::size_t k) {
+    for (int i = static_cast<int>(k) * kPart; i < std::min(kSamples + 1, static_cast<int>(k + 1) * kPart); ++i)
+      jets[static_cast<std::size_t>(i)] = jet(sample(i));
+  });
   Vec3 previous{}, previous_v{};
   for (int i = 0; i <= kSamples; ++i) {
-    double t = t0_ + (t1_ - t0_) * i / kSamples;
-    Vec3 p = point(t), v = d1(t), a = d2(t);
+    const double t = sample(i);
+    const auto& [p, v, a] = jets[static_cast<std::size_t>(i)];
     for (int k = 0; k < 3; ++k) {
       if (!std::isfinite(p[k]) || !std::isfinite(v[k]) || !std::isfinite(a[k]) || std::fabs(p[k]) > 1e6)
         throw std::runtime_error(fmt::format(
@@ -280,7 +287,7 @@ void Curve::validate() const {
   typical_speed = sorted[kSamples / 2];
   for (int i = 0; i <= kSamples; ++i) {
     if (speeds[static_cast<std::size_t>(i)] <= 1e-6 * typical_speed) {
-      double t = t0_ + (t1_ - t0_) * i / kSamples;
+      const double t = sample(i);
       throw std::runtime_error(fmt::format(
           "{}: the curve stops at t = {:.6g} (zero speed: a cusp or a point where the tangent is undefined); "
           "split the range there",

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <span>
-#include <thread>
 
 #include "base/memory.hpp"
 #include "base/parallel.hpp"
@@ -889,8 +888,7 @@ void join(Program& to, Program& from) {
 std::vector<std::size_t> part_starts(const std::string& text, const ParseOptions& options) {
   std::vector<std::size_t> starts{0};
   if (options.part_bytes == 0) return starts;
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t parts = std::min(options.parts > 0 ? options.parts : cores, text.size() / options.part_bytes);
+  const std::size_t parts = std::min(options.parts > 0 ? options.parts : base::cores(), text.size() / options.part_bytes);
   for (std::size_t k = 1; k < parts; ++k) {
     const std::size_t eol = text.find('\n', text.size() * k / parts);
     if (eol == std::string::npos || eol + 1 >= text.size() || eol + 1 <= starts.back()) break;
