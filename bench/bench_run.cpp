@@ -15,7 +15,7 @@ namespace {
 std::string spiral_loop(long points) {
   return fmt::format(
       "O1000\n#101=1.\n#102=2.\n#103=0.\n#110=360./{}\nG01 F1000.\nWHILE [#103 LT 360.] DO1\n#103=#103+#110\n"
-      "#104=#101+#102*#103*3.14159265358979/180.\nG01 X[#104*COS[#103]] Y[#104*SIN[#103]]\nEND1\nM30\n",
+      "#104=#101+#102*#103*3.1415927/180.\nG01 X[#104*COS[#103]] Y[#104*SIN[#103]]\nEND1\nM30\n",
       points);
 }
 

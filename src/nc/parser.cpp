@@ -8,7 +8,6 @@
 #include <span>
 
 #include "base/memory.hpp"
-#include "base/parallel.hpp"
 #include "nc/program.hpp"
 
 namespace ncurve::nc {
@@ -689,33 +688,27 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
   return true;
 }
 
-// The lines of text[begin, end), the first of them line first_line, into result; a part after
-// the first of a file (`continuation`) puts its blocks before any O number into a program of its
-// own, to be joined to the one the part before ends in. True if a '%' ended the file.
-bool parse_lines(const std::shared_ptr<const SourceFile>& file, int max_digits, std::size_t begin, std::size_t end,
-                 std::uint32_t first_line, bool continuation, ParseResult& result) {
-  std::uint32_t line = first_line - 1;
+}  // namespace
+
+ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) {
+  const int max_digits = std::clamp(options.max_digits, 1, kMostDigits);
+  ParseResult result;
+  std::uint32_t line = 0;
   Program* current = nullptr;
-  // The first program of a part usually is all of it: reserving for the rest of the file's lines
-  // (a continuation: the part's) saves regrowth copies and page faults on long expanded programs.
-  // Later programs grow as needed.
-  const std::size_t reserve_to = continuation ? line + static_cast<std::size_t>(std::count(
-                                                           file->text().begin() + static_cast<std::ptrdiff_t>(begin),
-                                                           file->text().begin() + static_cast<std::ptrdiff_t>(end), '\n'))
-                                              : file->line_count();
   auto new_program = [&](int number) {
     result.programs.push_back(std::make_unique<Program>());
     current = result.programs.back().get();
     current->number = number;
     current->file = file;
+    // The first program of a file usually is all of it: reserving for its lines saves regrowth copies and
+    // page faults on long expanded programs. Later programs grow as needed.
     if (result.programs.size() == 1) {
-      std::size_t lines_left = reserve_to > line ? reserve_to - line : 1;
+      std::size_t lines_left = file->line_count() > line ? file->line_count() - line : 1;
       base::reserve_large(current->blocks, lines_left + 1);
       base::reserve_large(current->words, 2 * lines_left + 4);
     }
   };
-  bool started = continuation;  // a block has been read (a later '%' ends the file)
-  if (continuation) new_program(-1);
+  bool started = false;  // a block has been read (a later '%' ends the file)
 
   auto handle_block = [&](LineScanner& ls, std::uint32_t line) {
     std::span<const Ch> s(ls.buf.data(), ls.n);
@@ -734,7 +727,6 @@ bool parse_lines(const std::shared_ptr<const SourceFile>& file, int max_digits, 
     }
     if (!current) new_program(-1);
     Block& b = current->blocks.emplace_back();
-    b.words_begin = b.words_end = static_cast<std::uint32_t>(current->words.size());  // none yet, here
     b.line = line;
     b.column = s.empty() ? 1 : s[0].col;
     if (ls.has_comment) {
@@ -784,13 +776,13 @@ bool parse_lines(const std::shared_ptr<const SourceFile>& file, int max_digits, 
   };
 
   const std::string& text = file->text();
-  std::size_t pos = begin;
+  std::size_t pos = 0;
   bool done = false;
   auto scanner = std::make_unique<LineScanner>();
   LineScanner& ls = *scanner;
-  while (pos < end && !done) {
+  while (pos < text.size() && !done) {
     std::size_t eol = text.find('\n', pos);
-    if (eol == std::string::npos || eol > end) eol = end;
+    if (eol == std::string::npos) eol = text.size();
     ++line;
     std::string_view raw(text.data() + pos, eol - pos);
     pos = eol + 1;
@@ -853,84 +845,6 @@ bool parse_lines(const std::shared_ptr<const SourceFile>& file, int max_digits, 
       ls.error_col = clamp_col(comment_start + 1);
     }
     if (block_open || !ls.error.empty() || ls.has_comment) handle_block(ls, line);
-  }
-  return done;
-}
-
-// Appends program `from` (a continuation part's first) to `to`: its blocks' indices into words,
-// code, comments and errors moved past those `to` has.
-void join(Program& to, Program& from) {
-  const auto blocks = static_cast<std::int32_t>(to.blocks.size());
-  const auto words = static_cast<std::uint32_t>(to.words.size()), code = static_cast<std::uint32_t>(to.code.size());
-  const auto comments = static_cast<std::int32_t>(to.comments.size()), errors = static_cast<std::int32_t>(to.errors.size());
-  auto moved = [code](Expr e) { return e.empty() ? e : Expr{e.begin + code, e.end + code}; };
-  for (Block b : from.blocks) {
-    b.words_begin += words;
-    b.words_end += words;
-    if (b.comment >= 0) b.comment += comments;
-    if (b.error >= 0) b.error += errors;
-    b.target = moved(b.target), b.value = moved(b.value), b.cond = moved(b.cond);
-    to.blocks.push_back(b);
-  }
-  for (Word w : from.words) {
-    w.expr = moved(w.expr);
-    to.words.push_back(w);
-  }
-  to.code.insert(to.code.end(), from.code.begin(), from.code.end());
-  for (auto& c : from.comments) to.comments.push_back(std::move(c));
-  for (auto& e : from.errors) to.errors.push_back(std::move(e));
-  // the first block with a number keeps it, as in one pass
-  for (const auto& [number, block] : from.sequence_index) to.sequence_index.try_emplace(number, block + blocks);
-}
-
-// Where a text long enough is cut into parts to be read on all cores: after a newline, the parts
-// about equal.
-std::vector<std::size_t> part_starts(const std::string& text, const ParseOptions& options) {
-  std::vector<std::size_t> starts{0};
-  if (options.part_bytes == 0) return starts;
-  const std::size_t parts = std::min(options.parts > 0 ? options.parts : base::cores(), text.size() / options.part_bytes);
-  for (std::size_t k = 1; k < parts; ++k) {
-    const std::size_t eol = text.find('\n', text.size() * k / parts);
-    if (eol == std::string::npos || eol + 1 >= text.size() || eol + 1 <= starts.back()) break;
-    starts.push_back(eol + 1);
-  }
-  return starts;
-}
-
-}  // namespace
-
-ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) {
-  const int max_digits = std::clamp(options.max_digits, 1, kMostDigits);
-  const std::string& text = file->text();
-  std::vector<std::size_t> starts = part_starts(text, options);
-  const std::size_t parts = starts.size();
-  starts.push_back(text.size());
-  ParseResult result;
-  if (parts == 1) {
-    parse_lines(file, max_digits, 0, text.size(), 1, false, result);
-  } else {
-    std::vector<std::uint32_t> first_line(parts + 1, 1);
-    base::for_each_on_cores(parts, [&](std::size_t k) {
-      first_line[k + 1] = static_cast<std::uint32_t>(std::count(text.begin() + static_cast<std::ptrdiff_t>(starts[k]),
-                                                                text.begin() + static_cast<std::ptrdiff_t>(starts[k + 1]), '\n'));
-    });
-    for (std::size_t k = 1; k <= parts; ++k) first_line[k] += first_line[k - 1];
-    std::vector<ParseResult> part(parts);
-    std::vector<char> ended(parts, 0);
-    base::for_each_on_cores(parts, [&](std::size_t k) {
-      ended[k] = parse_lines(file, max_digits, starts[k], starts[k + 1], first_line[k], k > 0, part[k]);
-    });
-    // the parts after the first take it that a block came before them; else read it in one
-    if (part[0].programs.empty()) {
-      parse_lines(file, max_digits, 0, text.size(), 1, false, result);
-    } else {
-      result = std::move(part[0]);
-      for (std::size_t k = 1; k < parts && !ended[k - 1]; ++k) {
-        join(*result.programs.back(), *part[k].programs.front());
-        for (std::size_t i = 1; i < part[k].programs.size(); ++i) result.programs.push_back(std::move(part[k].programs[i]));
-        for (auto& d : part[k].diagnostics) result.diagnostics.push_back(std::move(d));
-      }
-    }
   }
   for (auto& p : result.programs) match_loops(*p, result.diagnostics);
   std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),

@@ -77,10 +77,6 @@ constexpr int kMostDigits = 15;
 // What the control accepts that differs between models.
 struct ParseOptions {
   int max_digits = kPortableDigits;
-  // A text of two parts or more this long is read in parts on all cores (part_bytes 0: in one),
-  // as many as there are cores or `parts` if set.
-  std::size_t part_bytes = std::size_t{1} << 19;
-  std::size_t parts = 0;
 };
 
 // Splits a file into programs (one per O number) and compiles each block.
