@@ -403,13 +403,14 @@ Maximum confirmed(OnCurve on_curve, const ModelMaxima& model, double trust) {
   return out;
 }
 
-// The maxima found on the quintic, confirmed on the curve; else the curve searched.
-template <class Dist, class OnCurve>
+// The maxima that model(h) finds on the quintic, confirmed on the curve (on_curve(h, hump));
+// else the curve searched.
+template <class Dist, class Model, class OnCurve>
 Worst confirmed_maximum(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
-                        Dist dist, const ModelMaxima& model, double trust, OnCurve on_curve) {
+                        Dist dist, double trust, Model model, OnCurve on_curve) {
   const double h = tb - ta;
   if (!(h > 0)) return {dist(a.p), ta};
-  const Maximum v = confirmed(on_curve, model, trust);
+  const Maximum v = confirmed([&](const Maximum& hump) { return on_curve(h, hump); }, model(h), trust);
   if (std::isnan(v.value)) return max_distance(curve, place, ta, tb, dist);
   return {v.value, ta + h * v.at};
 }
@@ -418,21 +419,18 @@ Worst confirmed_maximum(const Curve& curve, const Placement& place, double ta, d
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
                    const PlacedJet& b, const std::function<double(const Vec3&)>& dist, double trust, int samples) {
-  const double h = tb - ta;
-  const ModelMaxima model = h > 0 ? on_quintic(a, b, h, dist, samples) : ModelMaxima{};
-  auto on_curve = [&](const Maximum& m) {
+  auto on_curve = [&](double h, const Maximum& m) {
     return confirmed([&](double t) { return dist(place(curve.point(t))); }, ta, h, m, trust);
   };
-  return confirmed_maximum(curve, place, ta, tb, a, dist, model, trust, on_curve);
+  return confirmed_maximum(curve, place, ta, tb, a, dist, trust,
+                           [&](double h) { return on_quintic(a, b, h, dist, samples); }, on_curve);
 }
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
                    const PlacedJet& b, const Segment& segment, double trust) {
-  const double h = tb - ta;
-  const ModelMaxima model = h > 0 ? on_quintic(a, b, h, segment, kLineSamples) : ModelMaxima{};
-  auto on_curve = [&](const Maximum& m) { return confirmed(curve, place, segment, ta, h, m, trust); };
-  return confirmed_maximum(curve, place, ta, tb, a, [&](const Vec3& p) { return segment.distance(p); }, model, trust,
-                           on_curve);
+  auto on_curve = [&](double h, const Maximum& m) { return confirmed(curve, place, segment, ta, h, m, trust); };
+  return confirmed_maximum(curve, place, ta, tb, a, [&](const Vec3& p) { return segment.distance(p); }, trust,
+                           [&](double h) { return on_quintic(a, b, h, segment, kLineSamples); }, on_curve);
 }
 
 namespace {
@@ -512,14 +510,16 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       ModelMaxima m;
       Vertex end;
     };
-    auto tried_with = [&](double tb, const Vertex& end) {
-      Tried r{0, {}, end};
-      r.m = on_quintic(a.curve, end.curve, tb - ta, Segment(a.at, end.at), kLineSamples);
+    auto tried_with = [&](double tb, const Vertex& end, const SegmentQuintic& model) {
+      Tried r{0, model.maxima(kLineSamples), end};
       r.e = r.m.best.value;
       if (r.e <= f.tol && tb > b_t) b = r.end, b_error = r.e, b_t = tb, b_model = r.m;
       return r;
     };
-    auto tried_on_model = [&](double tb) { return tried_with(tb, vertex(f, tb, offset)); };
+    auto tried_on_model = [&](double tb) {
+      const Vertex end = vertex(f, tb, offset);
+      return tried_with(tb, end, SegmentQuintic(a.curve, end.curve, tb - ta, Segment(a.at, end.at)));
+    };
     auto longest = [&](bool on_model) {
       b_t = ta;
       auto error_to = [&](double tb) {
@@ -536,11 +536,11 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       if (tb != b_t) throw std::logic_error("lines_greedy: the step found was not the longest one measured");
       return tb;
     };
-    // The step by a scan: one trial at the guess gives the quintic over its step, from which the
-    // error of longer and shorter steps is estimated without the curve: their end vertex aimed
-    // and snapped, their hump where the first one's lies in proportion (its distance is
-    // stationary there, so the estimate is off by second-order terms; the first trial's error
-    // calibrates it). From a little beyond where the estimate without rounding meets the
+    // The step by a scan: the curve's jet at a first step, the guess, gives the quintic over it,
+    // from which the error of longer and shorter steps is estimated without the curve: their end
+    // vertex aimed and snapped, their hump where the first step's lies in proportion (its
+    // distance is stationary there, so the estimate is off by second-order terms; the first
+    // step's own error calibrates it). From a little beyond where the estimate without rounding meets the
     // tolerance, down in steps of 0.1 %, each step estimated within goes on trial until one is:
     // the rounding of the end vertex makes some steps a few per cent longer than others around
     // them, and the scan finds them. NaN where that does not settle it (no hump inside, three
@@ -559,7 +559,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       Maximum hump = first_model.middle_hump();
       bool first_tried = false;
       if (t0 == t_end || !(hump.value * hump.value > std::max(first_model.at(0), first_model.at(1)))) {
-        const Tried r = tried_with(t0, first);
+        const Tried r = tried_with(t0, first, first_model);
         first_tried = true;
         if (t0 == t_end && r.e <= f.tol) return t_end;
         hump = {-1, 0};
@@ -598,7 +598,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
         const double h = std::min(h_tol * rel, t_end - ta);
         if (!first_tried && h <= h0) {
           first_tried = true;
-          if (tried_with(t0, first).e <= f.tol) return b_t;
+          if (tried_with(t0, first, first_model).e <= f.tol) return b_t;
         }
         if (ta + h <= b_t) return b_t;  // the first trial was longer
         double length2 = 0;
@@ -607,7 +607,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
         ++trials;
         if (tried_on_model(ta + h).e <= f.tol) return b_t;
       }
-      if (!first_tried) tried_with(t0, first);
+      if (!first_tried) tried_with(t0, first, first_model);
       return b_t > ta ? b_t : kNaN;
     };
     const bool on_model = f.model_steps && !radial;
