@@ -275,13 +275,13 @@ private:
       for (std::size_t i = k * kRun; i < std::min(moves, (k + 1) * kRun); ++i) points += contour[i].arc ? kArcSamples : 1;
       first_point[k + 1] = first_point[k] + points;
     }
-    struct Worst {
+    struct Farthest {  // the largest distance noted so far and where
       double distance = 0, t = 0;
       void note(double d, double at) {
         if (d > distance) distance = d, t = at;
       }
     };
-    std::vector<Worst> worst(parts);
+    std::vector<Farthest> worst(parts);
     std::vector<double> length(parts, 0.0);
     Stats s;
     s.points = moves + 1;
@@ -316,7 +316,7 @@ private:
         s.path[point++] = m.end;
       }
     });
-    Worst all;
+    Farthest all;
     all.note(distance(contour[0].start, start.jet.p), start.t);
     for (std::size_t k = 0; k < parts; ++k) {
       s.path_length += length[k];
