@@ -1,5 +1,4 @@
 #include "geom/curve.hpp"
-#include "base/parallel.hpp"
 
 #include <fmt/format.h>
 
@@ -137,7 +136,6 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
     }
     it->value = value;
   }
-  for (const auto& p : params_) param_values_.push_back(p.value);
   const std::string* texts[3] = {&spec.x, &spec.y, &spec.z};
   const char* axis = "xyz";
   for (int a = 0; a < 3; ++a) {
@@ -170,35 +168,54 @@ void Curve::compile(nc::EvalOptions options) {
     sym_d1_[a] = simplify(derivative(sym_pos_[a], kTVar));
     sym_d2_[a] = simplify(derivative(sym_d1_[a], kTVar));
   }
-  auto list = [](const std::array<Sym, 3>& e) { return std::vector<Sym>(e.begin(), e.end()); };
-  pos_ = Tape(list(sym_pos_), options);
-  d1_ = Tape(list(sym_d1_), options);
-  d2_ = Tape(list(sym_d2_), options);
-  std::vector<Sym> all = list(sym_pos_);
-  all.insert(all.end(), sym_d1_.begin(), sym_d1_.end());
-  all.insert(all.end(), sym_d2_.begin(), sym_d2_.end());
-  jet_ = Tape(all, options);
-}
-
-// The variables the tapes read, t and the parameters at their numbers: per thread, so that one
-// curve can be evaluated on several at once.
-const double* Curve::variables(double t) const {
-  thread_local std::array<double, kVarCount> vars{};
-  vars[kTVar] = t;
-  std::copy(param_values_.begin(), param_values_.end(), vars.begin() + kFirstParamVar);
-  return vars.data();
+  // the tapes read t alone: the parameters are constants in them
+  std::map<int, double> values;
+  for (const auto& p : params_) values[p.var] = p.value;
+  auto bound = [&](const std::array<Sym, 3>& e) {
+    std::vector<Sym> out;
+    for (const Sym& s : e) out.push_back(bind(s, values, options));
+    return out;
+  };
+  const std::vector<int> t_only{kTVar};
+  pos_ = Tape(bound(sym_pos_), options, t_only);
+  d1_ = Tape(bound(sym_d1_), options, t_only);
+  d2_ = Tape(bound(sym_d2_), options, t_only);
+  std::vector<Sym> all = bound(sym_pos_);
+  for (const auto* e : {&sym_d1_, &sym_d2_})
+    for (const Sym& s : bound(*e)) all.push_back(s);
+  jet_ = Tape(all, options, t_only);
 }
 
 Vec3 Curve::eval(const Tape& tape, double t) const {
   Vec3 out;
-  tape(variables(t), out.data());
+  tape(&t, out.data());
   return out;
 }
 
 Curve::Jet Curve::jet(double t) const {
   double out[9];
-  jet_(variables(t), out);
+  jet_(&t, out);
   return {{out[0], out[1], out[2]}, {out[3], out[4], out[5]}, {out[6], out[7], out[8]}};
+}
+
+void Curve::jets(std::span<const double> t, std::span<Jet> out) const {
+  constexpr std::size_t kLanes = Tape::kLanes;
+  std::array<double, kLanes> in;
+  std::array<double, 9 * kLanes> values;
+  for (std::size_t first = 0; first < t.size(); first += kLanes) {
+    const std::size_t n = std::min(kLanes, t.size() - first);
+    std::copy_n(t.begin() + static_cast<std::ptrdiff_t>(first), n, in.begin());
+    std::fill(in.begin() + static_cast<std::ptrdiff_t>(n), in.end(), in[n - 1]);
+    jet_.lanes(in.data(), values.data());
+    for (std::size_t j = 0; j < n; ++j) {
+      Jet& e = out[first + j];
+      for (std::size_t k = 0; k < 3; ++k) {
+        e.p[k] = values[k * kLanes + j];
+        e.d1[k] = values[(3 + k) * kLanes + j];
+        e.d2[k] = values[(6 + k) * kLanes + j];
+      }
+    }
+  }
 }
 
 Curve Curve::offset(double radius, bool left, int u, int v) const {
@@ -248,43 +265,46 @@ double Curve::curvature(double t, Vec3* normal) const {
 
 void Curve::validate() const {
   if (!(t1_ > t0_)) throw std::runtime_error(fmt::format("{}: the range {}..{} is empty", name_, t0_, t1_));
-  constexpr int kSamples = 4096, kPart = 512;
-  double typical_speed = 0;
+  constexpr int kSamples = 4096, kPart = 256;
+  const double dt = (t1_ - t0_) / kSamples;
   std::vector<double> speeds(kSamples + 1);
   auto sample = [&](int i) { return t0_ + (t1_ - t0_) * i / kSamples; };
-  std::vector<Jet> jets(kSamples + 1);  // evaluated on all cores, then checked in order
-  base::for_each_on_cores(kSamples / kPart + 1, [&](std::size_t k) {
-    for (int i = static_cast<int>(k) * kPart; i < std::min(kSamples + 1, static_cast<int>(k + 1) * kPart); ++i)
-      jets[static_cast<std::size_t>(i)] = jet(sample(i));
-  });
+  std::array<double, kPart> ts;
+  std::array<Jet, kPart> part;
   Vec3 previous{}, previous_v{};
   for (int i = 0; i <= kSamples; ++i) {
-    const double t = sample(i);
-    const auto& [p, v, a] = jets[static_cast<std::size_t>(i)];
-    for (int k = 0; k < 3; ++k) {
-      if (!std::isfinite(p[k]) || !std::isfinite(v[k]) || !std::isfinite(a[k]) || std::fabs(p[k]) > 1e6)
-        throw std::runtime_error(fmt::format(
-            "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that avoids it",
-            name_, t, p[0], p[1], p[2]));
+    if (i % kPart == 0) {
+      const int n = std::min(kPart, kSamples + 1 - i);
+      for (int j = 0; j < n; ++j) ts[static_cast<std::size_t>(j)] = sample(i + j);
+      jets(std::span(ts).first(static_cast<std::size_t>(n)), part);
     }
+    const auto& [p, v, a] = part[static_cast<std::size_t>(i % kPart)];
+    // NaN or infinity in any of them makes the sum NaN or infinite
+    const double all = p[0] + p[1] + p[2] + v[0] + v[1] + v[2] + a[0] + a[1] + a[2];
+    if (!std::isfinite(all) || std::fabs(p[0]) > 1e6 || std::fabs(p[1]) > 1e6 || std::fabs(p[2]) > 1e6)
+      throw std::runtime_error(fmt::format(
+          "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that avoids it",
+          name_, sample(i), p[0], p[1], p[2]));
+    const double speed = norm(v);
+    speeds[static_cast<std::size_t>(i)] = speed;
     if (i > 0) {
-      Vec3 step{p[0] - previous[0], p[1] - previous[1], p[2] - previous[2]};
-      double jump = norm(step);
-      double expected = std::max(norm(v), speeds[i - 1]) * (t1_ - t0_) / kSamples;
+      const Vec3 step{p[0] - previous[0], p[1] - previous[1], p[2] - previous[2]};
+      const double reach = 10 * std::max(speed, speeds[static_cast<std::size_t>(i) - 1]) * dt + 1e-9;
       // a smooth curve moves along its tangent; through a pole (1/cos at 90 degrees) it jumps back
-      bool backwards = step[0] * v[0] + step[1] * v[1] + step[2] * v[2] < 0 &&
-                       step[0] * previous_v[0] + step[1] * previous_v[1] + step[2] * previous_v[2] < 0;
-      if (jump > 10 * expected + 1e-9 || backwards)
+      const bool backwards = step[0] * v[0] + step[1] * v[1] + step[2] * v[2] < 0 &&
+                             step[0] * previous_v[0] + step[1] * previous_v[1] + step[2] * previous_v[2] < 0;
+      if (step[0] * step[0] + step[1] * step[1] + step[2] * step[2] > reach * reach || backwards)
         throw std::runtime_error(fmt::format("{}: jumps between t = {:.6g} and t = {:.6g} (singular or discontinuous)",
-                                             name_, t - (t1_ - t0_) / kSamples, t));
+                                             name_, sample(i - 1), sample(i)));
     }
     previous = p;
     previous_v = v;
-    speeds[static_cast<std::size_t>(i)] = norm(v);
   }
-  std::vector<double> sorted = speeds;
-  std::nth_element(sorted.begin(), sorted.begin() + kSamples / 2, sorted.end());
-  typical_speed = sorted[kSamples / 2];
+  // the median speed, of every eighth sample
+  std::vector<double> some;
+  for (std::size_t i = 0; i < speeds.size(); i += 8) some.push_back(speeds[i]);
+  std::nth_element(some.begin(), some.begin() + static_cast<std::ptrdiff_t>(some.size() / 2), some.end());
+  const double typical_speed = some[some.size() / 2];
   for (int i = 0; i <= kSamples; ++i) {
     if (speeds[static_cast<std::size_t>(i)] <= 1e-6 * typical_speed) {
       const double t = sample(i);

@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,8 @@ public:
     Vec3 p, d1, d2;
   };
   Jet jet(double t) const;
+  // Jets at many parameters, computed several at a time (see Tape::lanes).
+  void jets(std::span<const double> t, std::span<Jet> out) const;
   // Curvature and the unit principal normal (zero where the curve is straight).
   double curvature(double t, Vec3* normal = nullptr) const;
 
@@ -82,7 +85,6 @@ public:
 
 private:
   Vec3 eval(const Tape& tape, double t) const;
-  const double* variables(double t) const;
   void compile(nc::EvalOptions options);  // derivatives and tapes from sym_pos_
 
   std::string name_;
@@ -91,7 +93,6 @@ private:
   std::array<Sym, 3> sym_pos_, sym_d1_, sym_d2_;
   Tape pos_, d1_, d2_, jet_;
   nc::EvalOptions options_;
-  std::vector<double> param_values_;  // at #101.. in order
 };
 
 // Text with names (t, parameters, PI) to macro text with #100, #101..; throws on unknown names.

@@ -240,7 +240,8 @@ Sym make(SymOp op, Sym a, Sym b) {
       if (is_k(b, 2)) return make(SymOp::mul, a, a);
       return node(op, a, b);
     default:
-      if (is_const(a) && (!b || is_const(b))) {  // fold with FANUC's own functions
+      // fold with FANUC's own functions; ASIN and ATAN's range is the control's setting (NAT), bind() folds them
+      if (is_const(a) && (!b || is_const(b)) && op != SymOp::asin && op != SymOp::atan) {
         double out = 0;
         nc::EvalFault f = b ? nc::apply_binary(to_nc(op), a->k, b->k, out, {})
                             : nc::apply_unary(to_nc(op), a->k, out, {});
@@ -302,6 +303,32 @@ Sym from_code(const std::vector<nc::Instr>& code, const std::string& origin) {
   if (stack.size() != 1)
     throw nc::Alarm(nc::Diagnostic{nc::Severity::error, "PS0114", origin + ": not one expression", nc::Span{}});
   return stack.back();
+}
+
+Sym bind(const Sym& e, const std::map<int, double>& values, nc::EvalOptions options) {
+  if (e->op == SymOp::var) {
+    auto it = values.find(e->var);
+    return it == values.end() ? e : konst(it->second);
+  }
+  if (!e->a) return e;
+  Sym a = bind(e->a, values, options);
+  Sym b = e->b ? bind(e->b, values, options) : nullptr;
+  if (a == e->a && b == e->b) return e;
+  switch (e->op) {
+    case SymOp::neg:
+    case SymOp::add:
+    case SymOp::sub:
+    case SymOp::mul:
+    case SymOp::div: return make(e->op, std::move(a), std::move(b));
+    default:
+      if (is_const(a) && (!b || is_const(b))) {
+        double out = 0;
+        nc::EvalFault f = b ? nc::apply_binary(to_nc(e->op), a->k, b->k, out, options)
+                            : nc::apply_unary(to_nc(e->op), a->k, out, options);
+        if (f == nc::EvalFault::none && std::isfinite(out)) return konst(out);
+      }
+      return make(e->op, std::move(a), std::move(b));
+  }
 }
 
 bool depends_on(const Sym& e, int var) {
@@ -624,12 +651,14 @@ struct Interned {
   std::vector<int> roots;
 };
 
-Interned intern(const std::vector<Sym>& outputs) {
+// With any_order, a+b and b+a (a*b and b*a) are one node, its operands in the order of their numbers.
+Interned intern(const std::vector<Sym>& outputs, bool any_order = false) {
   Interned in;
   std::map<NodeKey, int> ids;
   auto visit = [&](auto& self, const Sym& e) -> int {
     int a = e->a ? self(self, e->a) : -1;
     int b = e->b ? self(self, e->b) : -1;
+    if (any_order && (e->op == SymOp::add || e->op == SymOp::mul) && b < a) std::swap(a, b);
     NodeKey key{e->op, e->op == SymOp::konst ? std::bit_cast<std::uint64_t>(e->k) : 0,
                 e->op == SymOp::var ? e->var : 0, a, b};
     auto [it, fresh] = ids.try_emplace(key, static_cast<int>(in.nodes.size()));
@@ -681,9 +710,10 @@ std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next
   return rewritten;
 }
 
-Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(options) {
+Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options, const std::vector<int>& inputs)
+    : options_(options) {
   // operands first; equal subtrees share a register (its node's number)
-  const Interned in = intern(outputs);
+  const Interned in = intern(outputs, true);
   registers_ = static_cast<int>(in.nodes.size());
   auto constant = [&](int reg, double& k) {
     if (reg < 0) return false;
@@ -693,11 +723,19 @@ Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(
   };
   for (std::size_t i = 0; i < in.nodes.size(); ++i) {
     const SymNode& e = *in.nodes[i];
-    Step s{Code::call, e.op, static_cast<int>(i), in.a[i], in.b[i], e.k, e.var};
+    Step s{Code::call, e.op, false, static_cast<int>(i), in.a[i], in.b[i], e.k};
     double k = 0;
     switch (e.op) {
       case SymOp::konst: s.code = Code::konst; break;
-      case SymOp::var: s.code = Code::var; break;
+      case SymOp::var:
+        s.code = Code::var;
+        s.a = e.var;
+        if (!inputs.empty()) {
+          auto it = std::find(inputs.begin(), inputs.end(), e.var);
+          if (it == inputs.end()) throw std::invalid_argument(fmt::format("the tape reads #{}, not an input", e.var));
+          s.a = static_cast<int>(it - inputs.begin());
+        }
+        break;
       case SymOp::neg: s.code = Code::neg; break;
       case SymOp::add:
       case SymOp::mul:
@@ -745,7 +783,7 @@ Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(
       dropped[i] = true;
       continue;
     }
-    if (s.a >= 0) read[static_cast<std::size_t>(s.a)] = true;
+    if (s.a >= 0 && s.code != Code::var) read[static_cast<std::size_t>(s.a)] = true;
     if (s.b >= 0 && !s.paired) read[static_cast<std::size_t>(s.b)] = true;
   }
   std::vector<Step> kept;
@@ -754,7 +792,96 @@ Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options) : options_(
   steps_ = std::move(kept);
 }
 
-void Tape::operator()(const double* vars, double* out) const {
+namespace {
+
+// sin and cos of degrees, lane by lane without branches (so that the loop runs on vectors):
+// x = 90q + r exactly, then Taylor series in r's radians (|r| <= 45 degrees: terms to the 18th
+// power leave less than 1e-19), then the quadrant. Whole multiples of 90 degrees come out exact,
+// as from nc::sincos_deg.
+void sincos_deg_lanes(const double* __restrict x, double* __restrict s, double* __restrict c) {
+  constexpr double kRound = 0x1.8p52;  // adding and subtracting it rounds to a whole number
+  for (std::size_t j = 0; j < Tape::kLanes; ++j) {
+    const double q = (x[j] / 90 + kRound) - kRound;
+    const double r = (x[j] - q * 90) * kDeg;
+    const double q4 = q - 4 * ((q / 4 + kRound) - kRound);  // -2 .. 2
+    const double r2 = r * r;
+    double sr = 1.0 / 39916800 - r2 * (1.0 / 6227020800 - r2 * (1.0 / 1307674368000 - r2 * (1.0 / 355687428096000)));
+    double cr = 1.0 / 3628800 - r2 * (1.0 / 479001600 - r2 * (1.0 / 87178291200 - r2 * (1.0 / 20922789888000 - r2 * (1.0 / 6402373705728000))));
+    sr = r * (1 - r2 * (1.0 / 6 - r2 * (1.0 / 120 - r2 * (1.0 / 5040 - r2 * (1.0 / 362880 - r2 * sr)))));
+    cr = 1 - r2 * (0.5 - r2 * (1.0 / 24 - r2 * (1.0 / 720 - r2 * (1.0 / 40320 - r2 * cr))));
+    // quadrants in arithmetic, which runs on vectors: odd is 1 for q4 = +-1, else 0
+    const double w = std::fabs(q4), odd = w * (2 - w);
+    const double sine = odd * cr + (1 - odd) * sr, cosine = odd * sr + (1 - odd) * cr;
+    // the sine is negative for q4 = -2, -1, 2, the cosine for q4 = -2, 1, 2
+    s[j] = (q4 * (q4 - 1) > 0 ? -sine : sine) + 0.0;  // + 0: no negative zero
+    c[j] = (q4 * (q4 + 1) > 0 ? -cosine : cosine) + 0.0;
+  }
+  for (std::size_t j = 0; j < Tape::kLanes; ++j)  // beyond the rounding trick's reach, or not finite
+    if (!(std::fabs(x[j]) < 0x1p50)) nc::sincos_deg(x[j], s[j], c[j]);
+}
+
+// d[j] = f(a[j], b[j]) for every lane (the operands never share the result's register).
+template <class F>
+inline void each_lane(double* __restrict d, const double* __restrict a, const double* __restrict b, F f) {
+  for (std::size_t j = 0; j < Tape::kLanes; ++j) d[j] = f(a[j], b[j]);
+}
+
+// x / y, NaN where y is 0 as from the one-point tape (x / 0 is infinite or NaN, times 0 NaN)
+inline double quotient(double x, double y) {
+  const double zero = y == 0 ? 1.0 : 0.0;
+  return x / y * (1 - zero);
+}
+
+}  // namespace
+
+void Tape::lanes(const double* in, double* out) const {
+  constexpr std::size_t kOnStack = 64;
+  alignas(64) double on_stack[kOnStack * kLanes];
+  std::vector<double> on_heap;
+  double* r = on_stack;
+  if (static_cast<std::size_t>(registers_) > kOnStack) {
+    on_heap.resize(static_cast<std::size_t>(registers_) * kLanes);
+    r = on_heap.data();
+  }
+  auto reg = [&](int i) { return r + static_cast<std::size_t>(i) * kLanes; };
+  for (const Step& s : steps_) {
+    double* d = reg(s.dst);
+    const double* a = s.code == Code::var ? in + static_cast<std::size_t>(s.a) * kLanes : s.a >= 0 ? reg(s.a) : nullptr;
+    const double* b = s.b >= 0 && !s.paired ? reg(s.b) : nullptr;
+    const double k = s.k;
+    switch (s.code) {
+      case Code::konst: std::fill(d, d + kLanes, k); break;
+      case Code::var: std::copy(a, a + kLanes, d); break;
+      case Code::neg: each_lane(d, a, a, [](double x, double) { return -x; }); break;
+      case Code::add: each_lane(d, a, b, [](double x, double y) { return x + y; }); break;
+      case Code::sub: each_lane(d, a, b, [](double x, double y) { return x - y; }); break;
+      case Code::mul: each_lane(d, a, b, [](double x, double y) { return x * y; }); break;
+      case Code::div: each_lane(d, a, b, [](double x, double y) { return quotient(x, y); }); break;
+      case Code::add_k: each_lane(d, a, a, [k](double x, double) { return x + k; }); break;
+      case Code::sub_k: each_lane(d, a, a, [k](double x, double) { return x - k; }); break;
+      case Code::k_sub: each_lane(d, a, a, [k](double x, double) { return k - x; }); break;
+      case Code::mul_k: each_lane(d, a, a, [k](double x, double) { return x * k; }); break;
+      case Code::k_div: each_lane(d, a, a, [k](double x, double) { return quotient(k, x); }); break;
+      case Code::call:
+        if (s.paired || s.op == SymOp::sin || s.op == SymOp::cos) {
+          alignas(64) double sine[kLanes], cosine[kLanes];
+          sincos_deg_lanes(a, sine, cosine);
+          std::copy_n(s.op == SymOp::sin ? sine : cosine, kLanes, d);
+          if (s.paired) std::copy_n(s.op == SymOp::sin ? cosine : sine, kLanes, reg(s.b));
+        } else {
+          for (std::size_t j = 0; j < kLanes; ++j) {
+            const nc::EvalFault f = b ? nc::apply_binary(to_nc(s.op), a[j], b[j], d[j], options_)
+                                      : nc::apply_unary(to_nc(s.op), a[j], d[j], options_);
+            if (f != nc::EvalFault::none) d[j] = std::numeric_limits<double>::quiet_NaN();
+          }
+        }
+        break;
+    }
+  }
+  for (std::size_t i = 0; i < outputs_.size(); ++i) std::copy_n(reg(outputs_[i]), kLanes, out + i * kLanes);
+}
+
+void Tape::operator()(const double* in, double* out) const {
   constexpr int kOnStack = 256;
   double on_stack[kOnStack];
   std::vector<double> on_heap;
@@ -768,7 +895,7 @@ void Tape::operator()(const double* vars, double* out) const {
     double& d = r[s.dst];
     switch (s.code) {
       case Code::konst: d = s.k; break;
-      case Code::var: d = vars[s.var]; break;
+      case Code::var: d = in[s.a]; break;
       case Code::neg: d = -r[s.a]; break;
       case Code::add: d = r[s.a] + r[s.b]; break;
       case Code::sub: d = r[s.a] - r[s.b]; break;

@@ -2,6 +2,7 @@
 // `ncurve run`), differentiated exactly, simplified, evaluated natively and printed back as
 // FANUC macro text (trigonometry in degrees, as on the control).
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +34,10 @@ Sym make(SymOp op, Sym a, Sym b = nullptr);
 // From compiled macro code; throws nc::Alarm for what cannot be differentiated (ROUND, MOD,
 // comparisons, indirect variables ...), naming the function.
 Sym from_code(const std::vector<nc::Instr>& code, const std::string& origin);
+
+// e with the variables in `values` replaced by those constants, folded as far as they go (a
+// function of constants evaluated as the control would, with `options`).
+Sym bind(const Sym& e, const std::map<int, double>& values, nc::EvalOptions options = {});
 
 Sym derivative(const Sym& e, int var);
 // The same value in a canonical sum-of-products form: nested sums and products flattened, operands
@@ -67,23 +72,29 @@ std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next
 class Tape {
 public:
   Tape() = default;
-  explicit Tape(const std::vector<Sym>& outputs, nc::EvalOptions options = {});
+  // With `inputs`, the tape reads its variables from a dense array: in[i] is the value of
+  // #inputs[i] (a variable not among them is an error); without, in[n] is the value of #n.
+  explicit Tape(const std::vector<Sym>& outputs, nc::EvalOptions options = {}, const std::vector<int>& inputs = {});
   std::size_t outputs() const { return outputs_.size(); }
-  // vars[n] is the value of #n; out[i] of output i is NaN on a domain error or division by zero
-  // in what it depends on.
-  void operator()(const double* vars, double* out) const;
+  std::size_t steps() const { return steps_.size(); }
+  // out[i] of output i is NaN on a domain error or division by zero in what it depends on.
+  void operator()(const double* in, double* out) const;
+  // kLanes points at once, each step's arithmetic on vectors: in[k * kLanes + j] is input k in
+  // lane j, out[i * kLanes + j] output i there. Sines and cosines come from a polynomial after an
+  // exact reduction in degrees; they may differ from the one-point tape's in the last bit.
+  static constexpr std::size_t kLanes = 32;
+  void lanes(const double* in, double* out) const;
 
 private:
   // add_k: r[a] + k, k_sub: k - r[a], ... (mul_k also stands for a division by a constant)
   enum class Code : std::uint8_t { konst, var, neg, add, sub, mul, div, add_k, sub_k, k_sub, mul_k, k_div, call };
   struct Step {
     Code code;
-    SymOp op;  // call: the function
+    SymOp op;             // call: the function
+    bool paired = false;  // a sine or cosine that also writes its partner to register b
     int dst;
-    int a = -1, b = -1;  // operand registers; for sin/cos with `paired`, b is the partner's register
-    double k = 0;        // konst and the constant operand
-    int var = 0;         // var
-    bool paired = false;
+    int a = -1, b = -1;   // operand registers; var: a is the input's index
+    double k = 0;         // konst and the constant operand
   };
   std::vector<Step> steps_;
   std::vector<int> outputs_;  // registers

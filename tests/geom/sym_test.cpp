@@ -242,3 +242,98 @@ TEST(Sym, CurveJetIsPointAndDerivatives) {
     EXPECT_EQ(j.d2, c.d2(t));
   }
 }
+
+TEST(Sym, TapeLanesAgreeWithOnePointAtEveryFunction) {
+  // every step kind and function, with NaN where the one-point tape has it (domain, division by 0)
+  const char* texts[] = {"SIN[#100]*COS[#100]", "SIN[#100*7]", "COS[#100-1000]", "TAN[#100/3]", "ASIN[#100/4000]",
+                         "ACOS[#100/4000]", "ATAN[#100/50]", "ATAN[#100,30]", "SQRT[#100]", "ABS[#100-40]",
+                         "LN[#100]", "EXP[#100/900]", "POW[2,#100/900]", "2.5/#100", "#100/[#100-90]",
+                         "-[2.5-#100]*4+#100*#100"};
+  std::vector<Sym> outputs;
+  for (const char* text : texts) outputs.push_back(parse_sym(text));
+  const std::size_t n = outputs.size();
+  for (bool nat : {false, true}) {
+    nc::EvalOptions options;
+    options.atan_signed = nat;
+    options.atan_comma = true;
+    Tape one(outputs, options, {kTVar}), lanes(outputs, options, {kTVar});
+    std::vector<double> t(Tape::kLanes);
+    // whole multiples of 90 (exact sines), negative angles, far turns and an irregular spread
+    for (std::size_t j = 0; j < t.size(); ++j) t[j] = j < 12 ? 90.0 * (static_cast<double>(j) - 5) : -2000 + 1234.567 * static_cast<double>(j);
+    t[12] = 0;
+    t[13] = 90;  // #100/[#100-90] divides by 0
+    std::vector<double> out(n * Tape::kLanes);
+    lanes.lanes(t.data(), out.data());
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      std::vector<double> expect(n);
+      one(&t[j], expect.data());
+      for (std::size_t i = 0; i < n; ++i) {
+        const double got = out[i * Tape::kLanes + j];
+        if (std::isnan(expect[i])) {
+          EXPECT_TRUE(std::isnan(got)) << texts[i] << " at " << t[j];
+        } else if (std::fmod(t[j], 90) == 0 && i < 2) {
+          EXPECT_EQ(got, expect[i]) << texts[i] << " at " << t[j];  // exact on the axes
+        } else {
+          EXPECT_NEAR(got, expect[i], 1e-13 * (1 + std::fabs(expect[i]))) << texts[i] << " at " << t[j];
+        }
+      }
+    }
+  }
+}
+
+TEST(Sym, LanesSineAndCosineAreAccurateInDegrees) {
+  // against long double sine and cosine, over many turns and fractions of a degree
+  Tape trig({parse_sym("SIN[#100]"), parse_sym("COS[#100]")}, {}, {kTVar});
+  std::vector<double> t(Tape::kLanes), out(2 * Tape::kLanes);
+  double worst = 0;
+  for (int round = 0; round < 200; ++round) {
+    for (std::size_t j = 0; j < t.size(); ++j) t[j] = -36000 + 11.3137 * (round * 32.0 + static_cast<double>(j));
+    trig.lanes(t.data(), out.data());
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      const long double rad = std::fmod(static_cast<long double>(t[j]), 360.0L) * (std::numbers::pi_v<long double> / 180);
+      worst = std::max({worst, static_cast<double>(std::fabs(out[j] - std::sin(rad))),
+                        static_cast<double>(std::fabs(out[Tape::kLanes + j] - std::cos(rad)))});
+    }
+  }
+  EXPECT_LT(worst, 4e-16);
+}
+
+TEST(Sym, BindFoldsParametersAsTheControlWould) {
+  Sym e = parse_sym("#101*COS[#100]+ATAN[#102]+ASIN[#102/2]");
+  std::vector<double> vars(kVarCount, 0.0);
+  vars[kTVar] = 30;
+  vars[101] = 2;
+  vars[102] = -1;
+  for (bool nat : {false, true}) {
+    nc::EvalOptions options;
+    options.atan_signed = nat;
+    Sym bound = bind(e, {{101, 2.0}, {102, -1.0}}, options);
+    EXPECT_FALSE(depends_on(bound, 101));
+    EXPECT_FALSE(depends_on(bound, 102));
+    double free = 0, folded = 0;
+    Tape(std::vector<Sym>{e}, options)(vars.data(), &free);
+    Tape(std::vector<Sym>{bound}, options)(vars.data(), &folded);
+    EXPECT_NEAR(folded, free, 1e-12);
+    // ATAN[-1] is -45 either way; ASIN[-0.5] is 330 without NAT, -30 with it
+    EXPECT_NEAR(folded, 2 * std::cos(30 * kRad) - 45 + (nat ? -30 : 330), 1e-12);
+  }
+  // the same constants folded by make() keep ATAN and ASIN for the control's setting
+  EXPECT_EQ(make(SymOp::asin, konst(-0.5))->op, SymOp::asin);
+  EXPECT_EQ(make(SymOp::sin, konst(30))->op, SymOp::konst);
+}
+
+TEST(Sym, CurveJetsAtManyParametersAreItsJets) {
+  Curve c(*find_curve("rotor"), {});
+  std::vector<double> t;
+  for (int i = 0; i < 77; ++i) t.push_back(0.37 + 4.7 * i);  // two full batches and a part
+  std::vector<Curve::Jet> many(t.size());
+  c.jets(t, many);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const Curve::Jet one = c.jet(t[i]);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(many[i].p[k], one.p[k], 1e-12) << t[i];
+      EXPECT_NEAR(many[i].d1[k], one.d1[k], 1e-12) << t[i];
+      EXPECT_NEAR(many[i].d2[k], one.d2[k], 1e-12) << t[i];
+    }
+  }
+}
