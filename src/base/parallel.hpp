@@ -1,40 +1,22 @@
 // Work items 0..n-1 on all cores. Results must not depend on which thread ran an item; the
 // exception of the lowest item that threw is rethrown, as a loop in order would.
 #pragma once
-#include <algorithm>
-#include <atomic>
 #include <cstddef>
-#include <exception>
-#include <thread>
-#include <vector>
+#include <utility>
 
 namespace ncurve::base {
 
 // The cores this process may use (asked once: the library reads it from /sys each time).
-inline std::size_t cores() {
-  static const std::size_t n = std::max(1u, std::thread::hardware_concurrency());
-  return n;
-}
+std::size_t cores();
+
+// Items are shared between the calling thread and a pool of workers, one a core besides it,
+// started on first use and kept (starting a thread costs tens of microseconds). A call made while
+// the pool is busy (from a worker, or from another thread) runs its items on its own thread.
+void for_each_on_cores(std::size_t n, void (*work)(void* context, std::size_t item), void* context);
 
 template <class Work>
 void for_each_on_cores(std::size_t n, Work work) {
-  std::vector<std::exception_ptr> errors(n);
-  std::atomic<std::size_t> next{0};
-  auto run = [&] {
-    for (std::size_t k; (k = next++) < n;) {
-      try {
-        work(k);
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> helpers;
-  for (std::size_t i = 1; i < std::min(n, cores()); ++i) helpers.emplace_back(run);
-  run();
-  for (auto& t : helpers) t.join();
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  for_each_on_cores(n, [](void* context, std::size_t item) { (*static_cast<Work*>(context))(item); }, &work);
 }
 
 }  // namespace ncurve::base

@@ -1,5 +1,7 @@
 #include "geom/curve.hpp"
 
+#include "base/parallel.hpp"
+
 #include <fmt/format.h>
 
 #include <cctype>
@@ -265,31 +267,31 @@ double Curve::curvature(double t, Vec3* normal) const {
 
 void Curve::validate() const {
   if (!(t1_ > t0_)) throw std::runtime_error(fmt::format("{}: the range {}..{} is empty", name_, t0_, t1_));
-  constexpr int kSamples = 4096, kPart = 256;
+  constexpr int kSamples = 4096, kPart = 512;
   const double dt = (t1_ - t0_) / kSamples;
   std::vector<double> speeds(kSamples + 1);
   auto sample = [&](int i) { return t0_ + (t1_ - t0_) * i / kSamples; };
-  std::array<double, kPart> ts;
-  std::array<Jet, kPart> part;
-  Vec3 previous{}, previous_v{};
-  for (int i = 0; i <= kSamples; ++i) {
-    if (i % kPart == 0) {
-      const int n = std::min(kPart, kSamples + 1 - i);
-      for (int j = 0; j < n; ++j) ts[static_cast<std::size_t>(j)] = sample(i + j);
-      jets(std::span(ts).first(static_cast<std::size_t>(n)), part);
-    }
-    const auto& [p, v, a] = part[static_cast<std::size_t>(i % kPart)];
-    // NaN or infinity in any of them makes the sum NaN or infinite
-    const double all = p[0] + p[1] + p[2] + v[0] + v[1] + v[2] + a[0] + a[1] + a[2];
-    if (!std::isfinite(all) || std::fabs(p[0]) > 1e6 || std::fabs(p[1]) > 1e6 || std::fabs(p[2]) > 1e6)
-      throw std::runtime_error(fmt::format(
-          "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that avoids it",
-          name_, sample(i), p[0], p[1], p[2]));
-    const double speed = norm(v);
-    speeds[static_cast<std::size_t>(i)] = speed;
-    if (i > 0) {
+  // in parts on all cores; each part checks the step into its first sample too
+  base::for_each_on_cores(kSamples / kPart, [&](std::size_t k) {
+    const int first = static_cast<int>(k) * kPart, last = first + kPart;
+    std::array<double, kPart + 1> ts;
+    std::array<Jet, kPart + 1> part;
+    for (int i = first; i <= last; ++i) ts[static_cast<std::size_t>(i - first)] = sample(i);
+    jets(ts, part);
+    for (int i = first; i <= last; ++i) {
+      const auto& [p, v, a] = part[static_cast<std::size_t>(i - first)];
+      // NaN or infinity in any of them makes the sum NaN or infinite
+      const double all = p[0] + p[1] + p[2] + v[0] + v[1] + v[2] + a[0] + a[1] + a[2];
+      if (!std::isfinite(all) || std::fabs(p[0]) > 1e6 || std::fabs(p[1]) > 1e6 || std::fabs(p[2]) > 1e6)
+        throw std::runtime_error(fmt::format(
+            "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that avoids it",
+            name_, sample(i), p[0], p[1], p[2]));
+      const double speed = norm(v);
+      speeds[static_cast<std::size_t>(i)] = speed;
+      if (i == first) continue;
+      const auto& [previous, previous_v, previous_a] = part[static_cast<std::size_t>(i - 1 - first)];
       const Vec3 step{p[0] - previous[0], p[1] - previous[1], p[2] - previous[2]};
-      const double reach = 10 * std::max(speed, speeds[static_cast<std::size_t>(i) - 1]) * dt + 1e-9;
+      const double reach = 10 * std::max(speed, norm(previous_v)) * dt + 1e-9;
       // a smooth curve moves along its tangent; through a pole (1/cos at 90 degrees) it jumps back
       const bool backwards = step[0] * v[0] + step[1] * v[1] + step[2] * v[2] < 0 &&
                              step[0] * previous_v[0] + step[1] * previous_v[1] + step[2] * previous_v[2] < 0;
@@ -297,9 +299,7 @@ void Curve::validate() const {
         throw std::runtime_error(fmt::format("{}: jumps between t = {:.6g} and t = {:.6g} (singular or discontinuous)",
                                              name_, sample(i - 1), sample(i)));
     }
-    previous = p;
-    previous_v = v;
-  }
+  });
   // the median speed, of every eighth sample
   std::vector<double> some;
   for (std::size_t i = 0; i < speeds.size(); i += 8) some.push_back(speeds[i]);

@@ -1,0 +1,134 @@
+#include "base/parallel.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace ncurve::base {
+
+std::size_t cores() {
+  static const std::size_t n = std::max(1u, std::thread::hardware_concurrency());
+  return n;
+}
+
+namespace {
+
+void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#else
+  std::this_thread::yield();
+#endif
+}
+
+struct Job {
+  void (*work)(void*, std::size_t);
+  void* context;
+  std::size_t n;
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors;
+  int joined = 0, finished = 0;  // workers, under the pool's lock
+
+  void run() {
+    for (std::size_t k; (k = next++) < n;) {
+      try {
+        work(context, k);
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    }
+  }
+};
+
+class Pool {
+public:
+  Pool() {
+    for (std::size_t i = 1; i < cores(); ++i) workers_.emplace_back([this] { serve(); });
+  }
+  ~Pool() {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+      ++generation_;
+    }
+    wake_.notify_all();
+    for (auto& t : workers_) t.join();
+  }
+
+  // false if the pool is busy with another job
+  bool run(Job& job) {
+    if (busy_.exchange(true)) return false;
+    {
+      std::lock_guard lock(mutex_);
+      job_ = &job;
+      ++generation_;
+    }
+    wake_.notify_all();
+    job.run();
+    {
+      // no worker joins from now on; those that did finish before the job goes out of scope
+      std::unique_lock lock(mutex_);
+      job_ = nullptr;
+      done_.wait(lock, [&] { return job.finished == job.joined; });
+    }
+    busy_ = false;
+    return true;
+  }
+
+private:
+  void serve() {
+    std::uint64_t seen = 0;
+    for (;;) {
+      // jobs come in bursts (one generated program's phases): look for the next a while before sleeping
+      for (int spin = 0; spin < 4000 && generation_.load(std::memory_order_acquire) == seen; ++spin) relax();
+      Job* job = nullptr;
+      {
+        std::unique_lock lock(mutex_);
+        wake_.wait(lock, [&] { return generation_.load() != seen; });
+        seen = generation_;
+        if (stopping_) return;
+        job = job_;
+        if (!job) continue;  // woke after the job was done
+        ++job->joined;
+      }
+      job->run();
+      {
+        std::lock_guard lock(mutex_);
+        if (++job->finished == job->joined) done_.notify_one();
+      }
+    }
+  }
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  std::atomic<std::uint64_t> generation_{0};
+  Job* job_ = nullptr;
+  bool stopping_ = false;
+  std::atomic<bool> busy_{false};
+};
+
+}  // namespace
+
+void for_each_on_cores(std::size_t n, void (*work)(void*, std::size_t), void* context) {
+  Job job{work, context, n, {}, {}};
+  job.errors.resize(n);
+  if (n > 1 && cores() > 1) {
+    static Pool pool;
+    if (!pool.run(job)) job.run();
+  } else {
+    job.run();
+  }
+  for (auto& e : job.errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace ncurve::base
