@@ -656,11 +656,11 @@ Result generate(const geom::Curve& contour, const Options& o) {
   if (o.step_down > 0 && with_z) throw std::runtime_error("depth passes need a plane curve; this one rises in Z");
   if (o.step_down > 0 && !(o.depth > 0)) throw std::runtime_error("depth passes need a depth > 0");
   const int dec = decimals_of(o.profile.increment);
-  geom::Grid grid;
-  grid.step = {o.profile.increment, o.profile.increment, o.profile.increment};
-  if (is_lathe(o) && o.profile.diameter_x) grid.step[0] = o.profile.increment / 2;
-  if (is_lathe(o)) grid.step[1] = 0;
-  if (!is_lathe(o) && !with_z) grid.step[2] = 0;  // a plane contour's Z is a constant
+  geom::Vec3 increment{o.profile.increment, o.profile.increment, o.profile.increment};
+  if (is_lathe(o) && o.profile.diameter_x) increment[0] = o.profile.increment / 2;
+  if (is_lathe(o)) increment[1] = 0;
+  if (!is_lathe(o) && !with_z) increment[2] = 0;  // a plane contour's Z is a constant
+  const geom::Grid grid(increment);
   // the fit aims a little inside the tolerance: the round trip measures the control's own path
   Context c{curve,
             o,

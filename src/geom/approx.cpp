@@ -64,23 +64,28 @@ Arc2 arc_from_tangent(double pu, double pv, double tu, double tv, double qu, dou
 
 }  // namespace
 
+Grid::Grid(const Vec3& step) : step_(step), per_mm_{} {
+  for (int a = 0; a < 3; ++a)
+    if (step[a] > 0) per_mm_[a] = 1 / step[a];
+}
+
 Vec3 Grid::snap(const Vec3& p) const {
   // to the nearest whole number by adding and taking away 1.5 * 2^52 (exact below 2^51, ties to
   // even; IEEE arithmetic keeps it from being folded away): a library call fewer than std::round
   constexpr double kShift = 0x1.8p52;
   Vec3 out;
   for (int a = 0; a < 3; ++a) {
-    if (!(step[a] > 0)) {
+    if (!(step_[a] > 0)) {
       out[a] = p[a];
       continue;
     }
-    const double steps = p[a] / step[a];
-    out[a] = (std::fabs(steps) < 0x1p51 ? (steps + kShift) - kShift : std::round(steps)) * step[a];
+    const double steps = p[a] * per_mm_[a];
+    out[a] = (std::fabs(steps) < 0x1p51 ? (steps + kShift) - kShift : std::round(steps)) * step_[a];
   }
   return out;
 }
 
-double Grid::worst_error() const { return 0.5 * norm(step); }
+double Grid::worst_error() const { return 0.5 * norm(step_); }
 
 double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) { return Segment(a, b).distance(p); }
 

@@ -31,10 +31,16 @@ struct Placement {
 
 // Where emitted coordinates land: each axis rounds to its least increment (in internal units:
 // a lathe's diameter X rounds to half the increment as a radius).
-struct Grid {
-  Vec3 step{0.001, 0.001, 0.001};
+class Grid {
+public:
+  Grid() : Grid(Vec3{0.001, 0.001, 0.001}) {}
+  explicit Grid(const Vec3& step);  // a step of 0: the axis is not rounded
+  const Vec3& step() const { return step_; }
   Vec3 snap(const Vec3& p) const;
   double worst_error() const;  // largest distance snap() moves a point
+
+private:
+  Vec3 step_, per_mm_;  // per_mm_: 1 / step (a product is faster than a quotient)
 };
 
 // The plane of arcs: u = p[u_axis], v = p[v_axis], counter-clockwise in (u, v) is G03.
