@@ -645,10 +645,13 @@ Chunks chunk_cuts(const Fit& f, bool band) {
   const double t0 = f.curve.t0(), t1 = f.curve.t1(), h = f.tol + band_offset(f, band);
   if (!(f.chunk_segments > 0)) return {{t0, t1}};
   std::vector<double> ts(kSamples + 1), predicted(kSamples + 1, 0.0);  // segments up to ts[i]
+  for (int i = 0; i <= kSamples; ++i) ts[i] = t0 + (t1 - t0) * i / kSamples;
+  std::vector<Curve::Jet> jets(ts.size());
+  f.curve.jets(ts, jets);
   double density_before = 0;
   for (int i = 0; i <= kSamples; ++i) {
-    ts[i] = t0 + (t1 - t0) * i / kSamples;
-    const double density = 1 / step_guess(f, local(f, ts[i]), h);
+    const Curve::Jet& j = jets[static_cast<std::size_t>(i)];
+    const double density = 1 / step_guess(f, {f.place(j.p), f.place.direction(j.d1), f.place.direction(j.d2)}, h);
     if (i > 0) predicted[i] = predicted[i - 1] + 0.5 * (density + density_before) * (ts[i] - ts[i - 1]);
     density_before = density;
   }
