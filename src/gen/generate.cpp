@@ -94,14 +94,14 @@ struct Place {
   geom::PlacedJet jet{};
 };
 
-// Measures a contour in runs of kRun moves: where each run starts is searched in order over the
+// Measures a contour in runs of kRun moves (fewer in a short one): where each run starts is searched in order over the
 // curve that the run before spans, then each run is measured on its own (on all cores, or while
 // the program still runs: see Ahead), each end projected from the one before. A run's chain must
 // arrive where the next run starts, else the next run is measured again from where it did (as
 // one chain in order would).
 class Measurer {
 public:
-  static constexpr std::size_t kRun = 512;
+  static constexpr std::size_t kRun = 512, kShortRun = 32;
 
   Measurer(const geom::Curve& curve, const Options& o, bool require_end)
       : curve_(curve), o_(o), map_(axis_map(curve, o)), plane_(plane_of(o.profile)), require_end_(require_end) {}
@@ -111,15 +111,16 @@ public:
   // Where run k starts (run 0: the first move's start; after it: where run k-1 ends, by Newton's
   // method from as far along the curve as run k-1 is long, taken if it lies as near as the
   // tolerance allows; else searched over three times that length from where run k-1 starts).
-  // Reads moves up to k * kRun.
-  Place run_start(const std::vector<ContourMove>& contour, std::size_t k, const Place& before) const {
+  // Reads moves up to k * run.
+  Place run_start(const std::vector<ContourMove>& contour, std::size_t k, const Place& before,
+                  std::size_t run = kRun) const {
     double t;
     if (k == 0) {
       t = project(contour[0].start, curve_.t0(), 1e-3 + 10 * o_.tol);
     } else {
       double length = 0;
-      for (std::size_t i = (k - 1) * kRun; i < k * kRun; ++i) length += contour[i].length;
-      const Vec3& p = contour[k * kRun - 1].end;
+      for (std::size_t i = (k - 1) * run; i < k * run; ++i) length += contour[i].length;
+      const Vec3& p = contour[k * run - 1].end;
       const double near = 10 * o_.tol + 1e-3;
       // the step in t that covers `length` at a speed changing as it does at the start
       const Vec3 &d1 = before.jet.d1, &d2 = before.jet.d2;
@@ -140,11 +141,11 @@ public:
   // Run k from `from` on; `moves` is the contour's length (the last move must reach the end of
   // the curve) or more while it is not known. Writes measured[i] of its moves.
   Place measure_run(const std::vector<ContourMove>& contour, std::size_t k, Place from, std::size_t moves,
-                    std::vector<Measured>& measured) const {
+                    std::vector<Measured>& measured, std::size_t run = kRun) const {
     const double t_last = curve_.t1();
     const Vec3 curve_end = map_(curve_.point(t_last));
     double t_per_mm = 0;
-    for (std::size_t i = k * kRun; i < std::min(moves, (k + 1) * kRun); ++i) {
+    for (std::size_t i = k * run; i < std::min(moves, (k + 1) * run); ++i) {
       const ContourMove& m = contour[i];
       const geom::Piece piece = piece_of(m);
       Place to;
@@ -183,10 +184,14 @@ public:
   Stats measure(const std::vector<ContourMove>& contour, std::vector<Measured> measured = {},
                 const std::vector<Place>& ahead_start = {}, const std::vector<Place>& ahead_end = {}) const {
     if (contour.empty()) throw std::runtime_error("no contour to measure");
-    const std::size_t moves = contour.size(), runs = (moves + kRun - 1) / kRun;
+    // a short contour in shorter runs, so that it too is measured on all cores (the runs depend
+    // on its length alone, so that the figures do not depend on the machine)
+    const std::size_t moves = contour.size();
+    const std::size_t run = moves <= kRun ? std::clamp(moves / 4, kShortRun, kRun) : kRun;  // none ahead
+    const std::size_t runs = (moves + run - 1) / run;
     measured.resize(moves);
     std::vector<Place> start(runs), end(runs);
-    for (std::size_t k = 0; k < runs; ++k) start[k] = run_start(contour, k, k > 0 ? start[k - 1] : Place{});
+    for (std::size_t k = 0; k < runs; ++k) start[k] = run_start(contour, k, k > 0 ? start[k - 1] : Place{}, run);
     auto ahead = [&](std::size_t k) { return k < ahead_end.size() && ahead_start[k].t == start[k].t; };
     std::vector<std::size_t> left;
     for (std::size_t k = 0; k < runs; ++k) {
@@ -194,15 +199,15 @@ public:
       else left.push_back(k);
     }
     base::for_each_on_cores(left.size(), [&](std::size_t i) {
-      end[left[i]] = measure_run(contour, left[i], start[left[i]], moves, measured);
+      end[left[i]] = measure_run(contour, left[i], start[left[i]], moves, measured, run);
     });
     for (std::size_t k = 1; k < runs; ++k) {
       const double step = end[k - 1].t - start[k - 1].t;
       if (std::fabs(end[k - 1].t - start[k].t) <= 1e-6 * std::fabs(step)) continue;
       start[k] = end[k - 1];
-      end[k] = measure_run(contour, k, start[k], moves, measured);
+      end[k] = measure_run(contour, k, start[k], moves, measured, run);
     }
-    return stats(contour, measured, start[0]);
+    return stats(contour, measured, start[0], run);
   }
 
 private:
@@ -262,17 +267,17 @@ private:
     return kNaN;
   }
 
-  // The worst point, the deviation along the contour, the path drawn: in parts of kRun moves on
+  // The worst point, the deviation along the contour, the path drawn: in parts of `run` moves on
   // all cores, each part's points placed after those of the parts before it, the parts' worst
   // points and lengths taken in order (the same figures as one pass in order).
   Stats stats(const std::vector<ContourMove>& contour, const std::vector<Measured>& measured,
-              const Place& start) const {
+              const Place& start, std::size_t run) const {
     constexpr int kArcSamples = 16;
-    const std::size_t moves = contour.size(), parts = (moves + kRun - 1) / kRun;
+    const std::size_t moves = contour.size(), parts = (moves + run - 1) / run;
     std::vector<std::size_t> first_point(parts + 1, 1);  // the path's points before each part
     for (std::size_t k = 0; k < parts; ++k) {
       std::size_t points = 0;
-      for (std::size_t i = k * kRun; i < std::min(moves, (k + 1) * kRun); ++i) points += contour[i].arc ? kArcSamples : 1;
+      for (std::size_t i = k * run; i < std::min(moves, (k + 1) * run); ++i) points += contour[i].arc ? kArcSamples : 1;
       first_point[k + 1] = first_point[k] + points;
     }
     struct Farthest {  // the largest distance noted so far and where
@@ -292,7 +297,7 @@ private:
     s.path[0] = contour[0].start;
     base::for_each_on_cores(parts, [&](std::size_t k) {
       std::size_t point = first_point[k];
-      for (std::size_t i = k * kRun; i < std::min(moves, (k + 1) * kRun); ++i) {
+      for (std::size_t i = k * run; i < std::min(moves, (k + 1) * run); ++i) {
         const ContourMove& m = contour[i];
         const Measured& at = measured[i];
         length[k] += m.length;
