@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -87,8 +88,16 @@ private:
   void serve() {
     std::uint64_t seen = 0;
     for (;;) {
-      // jobs come in bursts (one generated program's phases): look for the next a while before sleeping
-      for (int spin = 0; spin < 4000 && generation_.load(std::memory_order_acquire) == seen; ++spin) relax();
+      // jobs come in bursts (the phases of one generated program): look for the next for a
+      // millisecond before sleeping (waking takes tens of microseconds), giving way to other threads
+      const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
+      for (int spin = 1; generation_.load(std::memory_order_acquire) == seen; ++spin) {
+        relax();
+        if (spin % 256 == 0) {
+          if (std::chrono::steady_clock::now() > until) break;
+          std::this_thread::yield();
+        }
+      }
       Job* job = nullptr;
       {
         std::unique_lock lock(mutex_);
