@@ -1,6 +1,7 @@
 #include "geom/approx.hpp"
 #include "base/memory.hpp"
 #include "base/parallel.hpp"
+#include "base/vector_clones.hpp"
 #include "geom/quintic.hpp"
 #include "geom/search.hpp"
 
@@ -490,6 +491,45 @@ double step_guess(const Fit& f, const Local& l, double h) {
 // Steps are searched to 0.3 %: closer, the coordinate rounding decides more than the step does.
 constexpr double kStepRel = 3e-3;
 
+// The scan's test of kScanBatch steps at once, its loops on vectors: over[j] is whether the hump
+// P at hump_at * s[j] on the quintic lies farther than `limit` from the line from A (`start`) to
+// B, the end at s[j] moved by `offset` and snapped: |AP x AB|^2 > limit^2 |AB|^2, computed as
+// the scan computes one step (the same operations in the same order). False if a coordinate is
+// beyond the fast rounding's reach (the scan then tests those steps one at a time).
+constexpr std::size_t kScanBatch = 8;
+NCURVE_VECTOR_CLONES bool scan_batch(const Quintic& q, const Vec3& offset, const Vec3& start, const Grid& grid,
+                                     double hump_at, double limit2, const double* s, bool* over) {
+  constexpr double kShift = 0x1.8p52;
+  double ab[3][kScanBatch], ap[3][kScanBatch], steps[kScanBatch];
+  bool in_reach = true;
+  for (int a = 0; a < 3; ++a) {
+    const double o = q.origin[a], c0 = q.c[0][a], c1 = q.c[1][a], c2 = q.c[2][a], c3 = q.c[3][a], c4 = q.c[4][a];
+    const double moved = offset[a], from = start[a], step = grid.step()[a], per_mm = grid.per_mm()[a];
+    for (std::size_t j = 0; j < kScanBatch; ++j) {
+      const double sj = s[j], sh = hump_at * sj;
+      ab[a][j] = (o + sj * (c0 + sj * (c1 + sj * (c2 + sj * (c3 + sj * c4))))) + moved;
+      ap[a][j] = (o + sh * (c0 + sh * (c1 + sh * (c2 + sh * (c3 + sh * c4))))) - from;
+    }
+    if (step > 0) {
+      for (std::size_t j = 0; j < kScanBatch; ++j) {
+        steps[j] = ab[a][j] * per_mm;
+        ab[a][j] = ((steps[j] + kShift) - kShift) * step - from;
+      }
+      for (std::size_t j = 0; j < kScanBatch; ++j) in_reach = in_reach && std::fabs(steps[j]) < 0x1p51;
+    } else {
+      for (std::size_t j = 0; j < kScanBatch; ++j) ab[a][j] -= from;
+    }
+  }
+  for (std::size_t j = 0; j < kScanBatch; ++j) {
+    const double cx = ap[1][j] * ab[2][j] - ap[2][j] * ab[1][j];
+    const double cy = ap[2][j] * ab[0][j] - ap[0][j] * ab[2][j];
+    const double cz = ap[0][j] * ab[1][j] - ap[1][j] * ab[0][j];
+    const double length2 = ab[0][j] * ab[0][j] + ab[1][j] * ab[1][j] + ab[2][j] * ab[2][j];
+    over[j] = cx * cx + cy * cy + cz * cz > limit2 * length2;
+  }
+  return in_reach;
+}
+
 double band_offset(const Fit& f, bool band) { return band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0; }
 
 // Greedy longest segments from `from` to `to` (vertices there as anywhere else in the curve),
@@ -597,17 +637,35 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       const double h_tol = h0 * std::sqrt((f.tol + offset) / (smooth + offset));
       const double limit = f.tol - calibration;  // on the estimate
       if (!(limit > 0)) return kNaN;
+      // the steps' tests, a batch at a time as the scan comes to them
+      std::array<double, kScanBatch> batch_s{};
+      std::array<bool, kScanBatch> batch_over{};
+      std::size_t batch_first = 0, batch_end = 0;  // the steps tested: [batch_first, batch_end)
+      double batch_rel = 1 + kAbove;                // the rel of step batch_end, as the scan steps it
+      bool batches = true;
+      auto over_limit = [&](std::size_t i, double h) {
+        if (batches && i >= batch_end) {
+          for (; batch_end < i; ++batch_end) batch_rel -= kStep;
+          batch_first = batch_end;
+          for (std::size_t j = 0; j < kScanBatch; ++j, ++batch_end, batch_rel -= kStep)
+            batch_s[j] = std::min(h_tol * batch_rel, t_end - ta) / h0;  // as the scan's h (past its end too)
+          batches = scan_batch(q, offset_vector, a.at, f.grid, hump.at, limit * limit, batch_s.data(), batch_over.data());
+        }
+        if (batches) return batch_over[i - batch_first];
+        double length2 = 0;
+        return across(h, true, length2) > limit * limit * length2;
+      };
       int trials = 0;
       double h_before = 0;
-      for (double rel = 1 + kAbove; rel >= 1 - kBelow && trials < kTrials; rel -= kStep) {
+      std::size_t i = 0;
+      for (double rel = 1 + kAbove; rel >= 1 - kBelow && trials < kTrials; rel -= kStep, ++i) {
         const double h = std::min(h_tol * rel, t_end - ta);
         if (!first_tried && h <= h0) {
           first_tried = true;
           if (tried_with(t0, first, first_model).e <= f.tol) return b_t;
         }
         if (ta + h <= b_t) return b_t;  // the first trial was longer
-        double length2 = 0;
-        if (h == h_before || across(h, true, length2) > limit * limit * length2) continue;
+        if (h == h_before || over_limit(i, h)) continue;
         h_before = h;
         ++trials;
         if (tried_on_model(ta + h).e <= f.tol) return b_t;

@@ -36,6 +36,7 @@ public:
   Grid() : Grid(Vec3{0.001, 0.001, 0.001}) {}
   explicit Grid(const Vec3& step);  // a step of 0: the axis is not rounded
   const Vec3& step() const { return step_; }
+  const Vec3& per_mm() const { return per_mm_; }
   Vec3 snap(const Vec3& p) const;
   double worst_error() const;  // largest distance snap() moves a point
 

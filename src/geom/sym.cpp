@@ -12,6 +12,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "base/vector_clones.hpp"
 #include "nc/diagnostic.hpp"
 #include "nc/program.hpp"
 
@@ -791,14 +792,6 @@ Tape::Tape(const std::vector<Sym>& outputs, nc::EvalOptions options, const std::
     if (!dropped[i]) kept.push_back(steps_[i]);
   steps_ = std::move(kept);
 }
-
-// The lanes' loops also compiled for AVX2 (four lanes a vector), chosen when the processor has
-// it. Without FMA: the same operations, so the same results as the baseline build.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__linux__)
-#define NCURVE_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define NCURVE_VECTOR_CLONES
-#endif
 
 namespace {
 
