@@ -94,11 +94,11 @@ struct Place {
   geom::PlacedJet jet{};
 };
 
-// Measures a contour in runs of kRun moves (fewer in a short one): where each run starts is searched in order over the
-// curve that the run before spans, then each run is measured on its own (on all cores, or while
-// the program still runs: see Ahead), each end projected from the one before. A run's chain must
-// arrive where the next run starts, else the next run is measured again from where it did (as
-// one chain in order would).
+// Measures a contour in runs of kRun moves (fewer in a short one): where each run starts is
+// searched in order over the curve that the run before spans, then each run is measured on its
+// own (on all cores, or while the program still runs: see Ahead), each end projected from the
+// one before. A run's chain must arrive where the next run starts, else the next run is measured
+// again from where it did (as one chain in order would).
 class Measurer {
 public:
   static constexpr std::size_t kRun = 512, kShortRun = 32;
