@@ -103,12 +103,18 @@ std::string number_text(double k) {
   return fixed(std::clamp(nc::kMostDigits - 1 - exponent, 0, 40));
 }
 
-// Relative error of k as printed; 1 where it takes more digits than every control reads.
-double printed_error(double k) {
-  if (k == 0) return 0;
-  const std::string text = number_text(std::fabs(k));
-  if (digit_count(text) > nc::kPortableDigits) return 1;
-  return std::fabs(std::strtod(text.c_str(), nullptr) - std::fabs(k)) / std::fabs(k);
+// |k| as number_text prints it, and the relative error of that text (1 where it takes more
+// digits than every control reads).
+struct Number {
+  std::string text;
+  double error;
+};
+Number printed(double k) {
+  Number n{number_text(std::fabs(k)), 0};
+  if (k == 0) return n;
+  if (digit_count(n.text) > nc::kPortableDigits) n.error = 1;
+  else n.error = std::fabs(std::strtod(n.text.c_str(), nullptr) - std::fabs(k)) / std::fabs(k);
+  return n;
 }
 
 struct Printed {
@@ -138,9 +144,12 @@ Printed print(const Sym& e) {
     case SymOp::konst: {
       const std::string sign = e->k < 0 ? "-" : "";
       // a small constant 8 digits cannot hold, by its reciprocal: [1./3282.8064]
-      if (printed_error(e->k) > 1e-6 && printed_error(1 / e->k) <= 1e-6)
-        return {fmt::format("{}[1./{}]", sign, number_text(std::fabs(1 / e->k))), 1};
-      return {sign + number_text(std::fabs(e->k)), 0};
+      Number k = printed(e->k);
+      if (k.error > 1e-6) {
+        const Number reciprocal = printed(1 / e->k);
+        if (reciprocal.error <= 1e-6) return {fmt::format("{}[1./{}]", sign, reciprocal.text), 1};
+      }
+      return {sign + std::move(k.text), 0};
     }
     case SymOp::var: return {fmt::format("#{}", e->var), 0};
     case SymOp::neg: {
@@ -542,9 +551,9 @@ Sym power_of(const Sym& base, int n) {
 Sym magnitude(const Term& t) {
   // a coefficient whose reciprocal prints closer or shorter divides: x/360. rather than 0.0027778*x
   const double c = std::fabs(t.coeff);
-  const double ec = printed_error(c), er = printed_error(1 / c);
-  const bool divide = !t.factors.empty() &&
-                      (er < 0.5 * ec || (er <= 2 * ec && number_text(1 / c).size() < number_text(c).size()));
+  const Number k = printed(c), reciprocal = printed(1 / c);
+  const bool divide = !t.factors.empty() && (reciprocal.error < 0.5 * k.error ||
+                                             (reciprocal.error <= 2 * k.error && reciprocal.text.size() < k.text.size()));
   // sines and cosines last: the x and y of a curve often differ only there, and the rest of
   // the product is then one shared subexpression
   std::vector<Sym> front, back;  // multiplied before and after the divisions
