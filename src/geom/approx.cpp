@@ -152,18 +152,18 @@ namespace {
 // The highest two maxima of dist over the quintic through the jets at both ends of a step h
 // long, in s = 0..1 (second: value -inf if there is one hump).
 struct ModelMaxima {
-  Maximum best, second;
+  Maximum best{-std::numeric_limits<double>::infinity(), 0}, second = best;
+  void note(const Maximum& x) {  // NaN stays the best
+    if (std::isnan(best.value)) return;
+    if (std::isnan(x.value) || x.value > best.value) second = best, best = x;
+    else if (x.value > second.value) second = x;
+  }
 };
 // f's two highest maxima over s = 0..1, each placed by refine (see each_sampled_maximum).
 template <class F, class Refine>
 ModelMaxima two_highest(F f, int samples, Refine refine) {
-  constexpr double kNone = -std::numeric_limits<double>::infinity();
-  ModelMaxima m{{kNone, 0}, {kNone, 0}};
-  each_sampled_maximum(f, 0.0, 1.0, samples, kModelResolution, [&](const Maximum& x) {
-    if (std::isnan(m.best.value)) return;
-    if (std::isnan(x.value) || x.value > m.best.value) m.second = m.best, m.best = x;
-    else if (x.value > m.second.value) m.second = x;
-  }, refine);
+  ModelMaxima m;
+  each_sampled_maximum(f, 0.0, 1.0, samples, kModelResolution, [&](const Maximum& x) { m.note(x); }, refine);
   return m;
 }
 
@@ -266,15 +266,17 @@ public:
   ModelMaxima maxima(int samples) const {
     constexpr int kMostSamples = 16;
     if (samples < 2 || samples > kMostSamples) throw std::invalid_argument("on_quintic: 2..16 samples");
-    constexpr double kNone = -std::numeric_limits<double>::infinity();
-    ModelMaxima m{{kNone, 0}, {kNone, 0}};
+    ModelMaxima m;
     std::array<double, kMostSamples + 1> value;
     const double step = 1.0 / samples;
     auto sample = [&](int i) { return i == samples ? 1.0 : i * step; };
     auto at_fn = [this](double s) { return at(s); };
     for (int i = 0; i <= samples; ++i) {
       value[i] = at(sample(i));
-      if (std::isnan(value[i])) return {{value[i], sample(i)}, {kNone, 0}};
+      if (std::isnan(value[i])) {
+        m.note({value[i], sample(i)});
+        return m;
+      }
     }
     for (int i = 0; i <= samples; ++i) {
       if (!((i == 0 || value[i] > value[i - 1]) && (i == samples || value[i] >= value[i + 1]))) continue;
@@ -291,8 +293,7 @@ public:
         if (!newton(lo, hi, start, refined)) refined = brent_maximum(at_fn, lo, hi, x.at, x.value, kModelResolution);
         if (refined.value > x.value) x = refined;
       }
-      if (std::isnan(x.value) || x.value > m.best.value) m.second = m.best, m.best = x;
-      else if (x.value > m.second.value) m.second = x;
+      m.note(x);
     }
     for (Maximum* found : {&m.best, &m.second})
       if (found->value >= 0) found->value = std::sqrt(found->value);
