@@ -73,13 +73,14 @@ struct Loop {
         if (axes[static_cast<std::size_t>(i)] == axis) return first + i;
       return -1;
     };
-    if (is_lathe(c.o)) return fmt::format("X[2*#{}] Z[#{}]", slot(0), slot(2));
     std::string out;
-    for (auto [letter, axis] : {std::pair{'X', 0}, {'Y', 1}, {'Z', 2}}) {
-      if (axis == 2 && !c.with_z) break;
+    for (const WordAxis& axis : word_axes(c.o, c.with_z)) {
       std::string w;
-      if (slot(axis) >= 0) w = fmt::format("{}[#{}]", letter, slot(axis));
-      else if (constants) w = fmt::format("{}{}", letter, number(geom::simplify(axis_sym(c.curve, c.map, axis))->k, c.dec));
+      if (slot(axis.axis) >= 0)
+        w = fmt::format("{}[{}#{}]", axis.letter, axis.diameter ? "2*" : "", slot(axis.axis));
+      else if (constants)
+        w = fmt::format("{}{}", axis.letter,
+                        number((axis.diameter ? 2 : 1) * geom::simplify(axis_sym(c.curve, c.map, axis.axis))->k, c.dec));
       if (!w.empty()) out += (out.empty() ? "" : " ") + w;
     }
     return out;

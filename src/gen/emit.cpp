@@ -187,15 +187,19 @@ MacroWords macro_words(const std::vector<std::pair<char, Sym>>& axes, int& next_
   return mw;
 }
 
+std::vector<WordAxis> word_axes(const Options& o, bool with_z) {
+  if (is_lathe(o)) return {{'X', 0, true}, {'Z', 2, false}};
+  if (with_z) return {{'X', 0, false}, {'Y', 1, false}, {'Z', 2, false}};
+  return {{'X', 0, false}, {'Y', 1, false}};
+}
+
 std::vector<std::pair<char, Sym>> point_axes(const geom::Curve& curve, const AxisMap& map, const Options& o,
                                              bool with_z) {
-  if (is_lathe(o))
-    return {{'X', geom::make(SymOp::mul, geom::konst(2), axis_sym(curve, map, 0))}, {'Z', axis_sym(curve, map, 2)}};
   std::vector<std::pair<char, Sym>> axes;
-  axes.reserve(3);
-  axes.emplace_back('X', axis_sym(curve, map, 0));
-  axes.emplace_back('Y', axis_sym(curve, map, 1));
-  if (with_z) axes.emplace_back('Z', axis_sym(curve, map, 2));
+  for (const WordAxis& w : word_axes(o, with_z)) {
+    const Sym s = axis_sym(curve, map, w.axis);
+    axes.emplace_back(w.letter, w.diameter ? geom::make(SymOp::mul, geom::konst(2), s) : s);
+  }
   return axes;
 }
 

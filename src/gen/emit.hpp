@@ -67,6 +67,15 @@ struct MacroWords {
 };
 MacroWords macro_words(const std::vector<std::pair<char, geom::Sym>>& axes, int& next_temp);
 
+// The words of a point: their letters and machine axes, lathe X as a diameter (twice the radius
+// the axis holds) and Z, mill X, Y and Z where the contour leaves its plane.
+struct WordAxis {
+  char letter;
+  int axis;
+  bool diameter;
+};
+std::vector<WordAxis> word_axes(const Options& o, bool with_z);
+
 // The axes of the curve point at #100 as the control's words.
 std::vector<std::pair<char, geom::Sym>> point_axes(const geom::Curve& curve, const AxisMap& map, const Options& o,
                                                    bool with_z);
