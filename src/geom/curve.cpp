@@ -1,6 +1,7 @@
 #include "geom/curve.hpp"
 
 #include "base/parallel.hpp"
+#include "base/vector_clones.hpp"
 
 #include <fmt/format.h>
 
@@ -265,53 +266,88 @@ double Curve::curvature(double t, Vec3* normal) const {
   return k;
 }
 
+namespace {
+
+// The checks of a batch of Tape::kLanes jets (outputs p, d1, d2 as the jet tape gives them),
+// lane by lane on vectors: where a value is not finite or too far, the squared speed, and
+// whether the step from the lane before (the previous batch's last before lane 0) leaves the
+// tangent's reach.
+struct LaneChecks {
+  static constexpr std::size_t kLanes = Tape::kLanes;
+  bool undefined[kLanes], jumps[kLanes];
+  double speed2[kLanes];
+};
+
+NCURVE_VECTOR_CLONES void check_lanes(const double* __restrict jet, const double* __restrict before, double dt,
+                                      LaneChecks& out) {
+  constexpr std::size_t n = LaneChecks::kLanes;
+  const double *x = jet, *y = jet + n, *z = jet + 2 * n, *vx = jet + 3 * n, *vy = jet + 4 * n, *vz = jet + 5 * n;
+  double px[n], py[n], pz[n], pvx[n], pvy[n], pvz[n];  // the lane before's
+  px[0] = before[0], py[0] = before[1], pz[0] = before[2], pvx[0] = before[3], pvy[0] = before[4], pvz[0] = before[5];
+  for (std::size_t j = 1; j < n; ++j)
+    px[j] = x[j - 1], py[j] = y[j - 1], pz[j] = z[j - 1], pvx[j] = vx[j - 1], pvy[j] = vy[j - 1], pvz[j] = vz[j - 1];
+  for (std::size_t j = 0; j < n; ++j) {
+    // NaN or infinity in any of them makes the sum NaN or infinite, and all - all not 0
+    const double* a = jet + 6 * n;
+    const double all = x[j] + y[j] + z[j] + vx[j] + vy[j] + vz[j] + a[j] + a[n + j] + a[2 * n + j];
+    out.undefined[j] = !(all - all == 0) | (std::fabs(x[j]) > 1e6) | (std::fabs(y[j]) > 1e6) | (std::fabs(z[j]) > 1e6);
+    const double speed2 = vx[j] * vx[j] + vy[j] * vy[j] + vz[j] * vz[j];
+    const double before2 = pvx[j] * pvx[j] + pvy[j] * pvy[j] + pvz[j] * pvz[j];
+    out.speed2[j] = speed2;
+    const double sx = x[j] - px[j], sy = y[j] - py[j], sz = z[j] - pz[j];
+    const double reach = 10 * std::sqrt(speed2 > before2 ? speed2 : before2) * dt + 1e-9;
+    // a smooth curve moves along its tangent; through a pole (1/cos at 90 degrees) it jumps back
+    const bool backwards = (sx * vx[j] + sy * vy[j] + sz * vz[j] < 0) & (sx * pvx[j] + sy * pvy[j] + sz * pvz[j] < 0);
+    out.jumps[j] = (sx * sx + sy * sy + sz * sz > reach * reach) | backwards;
+  }
+}
+
+}  // namespace
+
 void Curve::validate() const {
   if (!(t1_ > t0_)) throw std::runtime_error(fmt::format("{}: the range {}..{} is empty", name_, t0_, t1_));
   constexpr int kSamples = 4096, kPart = 512;
+  constexpr int kLanes = static_cast<int>(Tape::kLanes);
   const double dt = (t1_ - t0_) / kSamples;
-  std::vector<double> speeds(kSamples + 1);
+  std::vector<double> speed2(kSamples + 1);  // squared speeds
   auto sample = [&](int i) { return t0_ + (t1_ - t0_) * i / kSamples; };
-  // in parts on all cores; each part checks the step into its first sample too
+  // in parts on all cores, each in batches; a part checks the step into its first sample too
   base::for_each_on_cores(kSamples / kPart, [&](std::size_t k) {
     const int first = static_cast<int>(k) * kPart, last = first + kPart;
-    std::array<double, kPart + 1> ts;
-    std::array<Jet, kPart + 1> part;
-    for (int i = first; i <= last; ++i) ts[static_cast<std::size_t>(i - first)] = sample(i);
-    jets(ts, part);
-    for (int i = first; i <= last; ++i) {
-      const auto& [p, v, a] = part[static_cast<std::size_t>(i - first)];
-      // NaN or infinity in any of them makes the sum NaN or infinite
-      const double all = p[0] + p[1] + p[2] + v[0] + v[1] + v[2] + a[0] + a[1] + a[2];
-      if (!std::isfinite(all) || std::fabs(p[0]) > 1e6 || std::fabs(p[1]) > 1e6 || std::fabs(p[2]) > 1e6)
-        throw std::runtime_error(fmt::format(
-            "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that avoids it",
-            name_, sample(i), p[0], p[1], p[2]));
-      const double speed = norm(v);
-      speeds[static_cast<std::size_t>(i)] = speed;
-      if (i == first) continue;
-      const auto& [previous, previous_v, previous_a] = part[static_cast<std::size_t>(i - 1 - first)];
-      const Vec3 step{p[0] - previous[0], p[1] - previous[1], p[2] - previous[2]};
-      const double reach = 10 * std::max(speed, norm(previous_v)) * dt + 1e-9;
-      // a smooth curve moves along its tangent; through a pole (1/cos at 90 degrees) it jumps back
-      const bool backwards = step[0] * v[0] + step[1] * v[1] + step[2] * v[2] < 0 &&
-                             step[0] * previous_v[0] + step[1] * previous_v[1] + step[2] * previous_v[2] < 0;
-      if (step[0] * step[0] + step[1] * step[1] + step[2] * step[2] > reach * reach || backwards)
-        throw std::runtime_error(fmt::format("{}: jumps between t = {:.6g} and t = {:.6g} (singular or discontinuous)",
-                                             name_, sample(i - 1), sample(i)));
+    alignas(64) double ts[kLanes], jet[9 * kLanes];
+    double before[6] = {};  // p and d1 of the sample before the batch
+    LaneChecks checks;
+    for (int b = first; b <= last; b += kLanes) {
+      const int n = std::min(kLanes, last + 1 - b);
+      for (int j = 0; j < kLanes; ++j) ts[j] = sample(b + std::min(j, n - 1));
+      jet_.lanes(ts, jet);
+      check_lanes(jet, before, dt, checks);
+      for (int j = 0; j < n; ++j) {
+        const int i = b + j;
+        if (checks.undefined[j])
+          throw std::runtime_error(fmt::format(
+              "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that "
+              "avoids it",
+              name_, sample(i), jet[j], jet[kLanes + j], jet[2 * kLanes + j]));
+        if (i > first && checks.jumps[j])
+          throw std::runtime_error(fmt::format("{}: jumps between t = {:.6g} and t = {:.6g} (singular or discontinuous)",
+                                               name_, sample(i - 1), sample(i)));
+        speed2[static_cast<std::size_t>(i)] = checks.speed2[j];
+      }
+      for (int c = 0; c < 6; ++c) before[c] = jet[c * kLanes + kLanes - 1];
     }
   });
-  // the median speed, of every eighth sample
+  // the median speed, of every eighth sample (as squares: the same order)
   std::vector<double> some;
-  for (std::size_t i = 0; i < speeds.size(); i += 8) some.push_back(speeds[i]);
+  for (std::size_t i = 0; i < speed2.size(); i += 8) some.push_back(speed2[i]);
   std::nth_element(some.begin(), some.begin() + static_cast<std::ptrdiff_t>(some.size() / 2), some.end());
-  const double typical_speed = some[some.size() / 2];
+  const double typical2 = some[some.size() / 2];
   for (int i = 0; i <= kSamples; ++i) {
-    if (speeds[static_cast<std::size_t>(i)] <= 1e-6 * typical_speed) {
-      const double t = sample(i);
+    if (speed2[static_cast<std::size_t>(i)] <= 1e-12 * typical2) {
       throw std::runtime_error(fmt::format(
           "{}: the curve stops at t = {:.6g} (zero speed: a cusp or a point where the tangent is undefined); "
           "split the range there",
-          name_, t));
+          name_, sample(i)));
     }
   }
 }

@@ -337,3 +337,29 @@ TEST(Sym, CurveJetsAtManyParametersAreItsJets) {
     }
   }
 }
+
+TEST(Sym, ValidateNamesTheFirstProblemAlongTheCurve) {
+  // a pole at t = 1000 (X jumps from -inf to +inf) and Y undefined beyond t = 2500: the check runs
+  // in parts on all cores, and still names the pole, the first problem in t
+  CurveSpec spec{"two-problems", "", {}, "1/[t-1000]", "SQRT[2500-t]", "0", 0, 3000, ""};
+  Curve c(spec, {});
+  try {
+    c.validate();
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("jumps between t = 999."), std::string::npos) << what;
+  }
+  // alone, the part beyond 2500 is named where it starts
+  c.set_range(1500, 3000);
+  try {
+    c.validate();
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("not defined or singular at t = 250"), std::string::npos) << what;
+  }
+  // and without either, nothing
+  c.set_range(1500, 2400);
+  EXPECT_NO_THROW(c.validate());
+}
