@@ -52,7 +52,7 @@ struct Job {
 class Pool {
 public:
   Pool() {
-    for (std::size_t i = 1; i < cores(); ++i) workers_.emplace_back([this] { serve(); });
+    for (std::size_t i = 1; i < cores(); ++i) workers_.emplace_back([this, i] { serve(i <= kLooking); });
   }
   ~Pool() {
     {
@@ -85,17 +85,22 @@ public:
   }
 
 private:
-  void serve() {
+  // Jobs come in bursts (the phases of one generated program): the first kLooking workers look
+  // for the next for a millisecond before sleeping (waking takes tens of microseconds), giving
+  // way to other threads; the others, on a machine with many cores, sleep at once.
+  static constexpr std::size_t kLooking = 3;
+
+  void serve(bool looking) {
     std::uint64_t seen = 0;
     for (;;) {
-      // jobs come in bursts (the phases of one generated program): look for the next for a
-      // millisecond before sleeping (waking takes tens of microseconds), giving way to other threads
-      const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
-      for (int spin = 1; generation_.load(std::memory_order_acquire) == seen; ++spin) {
-        relax();
-        if (spin % 256 == 0) {
-          if (std::chrono::steady_clock::now() > until) break;
-          std::this_thread::yield();
+      if (looking) {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
+        for (int spin = 1; generation_.load(std::memory_order_acquire) == seen; ++spin) {
+          relax();
+          if (spin % 256 == 0) {
+            if (std::chrono::steady_clock::now() > until) break;
+            std::this_thread::yield();
+          }
         }
       }
       Job* job = nullptr;

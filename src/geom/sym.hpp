@@ -81,7 +81,7 @@ public:
   void operator()(const double* in, double* out) const;
   // kLanes points at once, each step's arithmetic on vectors: in[k * kLanes + j] is input k in
   // lane j, out[i * kLanes + j] output i there. Sines and cosines come from a polynomial after an
-  // exact reduction in degrees; they may differ from the one-point tape's in the last bit.
+  // exact reduction in degrees; they may differ from the one-point tape's in the last bits.
   static constexpr std::size_t kLanes = 32;
   void lanes(const double* in, double* out) const;
 
