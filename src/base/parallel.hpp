@@ -2,7 +2,6 @@
 // exception of the lowest item that threw is rethrown, as a loop in order would.
 #pragma once
 #include <cstddef>
-#include <utility>
 
 namespace ncurve::base {
 

@@ -195,6 +195,20 @@ Sym variable(int number) {
   return n;
 }
 
+namespace {
+
+// A function of constants as the control evaluates it (FANUC's own functions); null where it is
+// not one, or faults.
+Sym folded(SymOp op, const Sym& a, const Sym& b, const nc::EvalOptions& options) {
+  if (!is_const(a) || (b && !is_const(b))) return nullptr;
+  double out = 0;
+  const nc::EvalFault f = b ? nc::apply_binary(to_nc(op), a->k, b->k, out, options)
+                            : nc::apply_unary(to_nc(op), a->k, out, options);
+  return f == nc::EvalFault::none && std::isfinite(out) ? konst(out) : nullptr;
+}
+
+}  // namespace
+
 Sym make(SymOp op, Sym a, Sym b) {
   switch (op) {
     case SymOp::neg:
@@ -250,13 +264,9 @@ Sym make(SymOp op, Sym a, Sym b) {
       if (is_k(b, 2)) return make(SymOp::mul, a, a);
       return node(op, a, b);
     default:
-      // fold with FANUC's own functions; ASIN and ATAN's range is the control's setting (NAT), bind() folds them
-      if (is_const(a) && (!b || is_const(b)) && op != SymOp::asin && op != SymOp::atan) {
-        double out = 0;
-        nc::EvalFault f = b ? nc::apply_binary(to_nc(op), a->k, b->k, out, {})
-                            : nc::apply_unary(to_nc(op), a->k, out, {});
-        if (f == nc::EvalFault::none && std::isfinite(out)) return konst(out);
-      }
+      // ASIN and ATAN's range is the control's setting (NAT): bind() folds them with it
+      if (op != SymOp::asin && op != SymOp::atan)
+        if (Sym k = folded(op, a, b, {})) return k;
       return node(op, a, b);
   }
 }
@@ -331,12 +341,7 @@ Sym bind(const Sym& e, const std::map<int, double>& values, nc::EvalOptions opti
     case SymOp::mul:
     case SymOp::div: return make(e->op, std::move(a), std::move(b));
     default:
-      if (is_const(a) && (!b || is_const(b))) {
-        double out = 0;
-        nc::EvalFault f = b ? nc::apply_binary(to_nc(e->op), a->k, b->k, out, options)
-                            : nc::apply_unary(to_nc(e->op), a->k, out, options);
-        if (f == nc::EvalFault::none && std::isfinite(out)) return konst(out);
-      }
+      if (Sym k = folded(e->op, a, b, options)) return k;
       return make(e->op, std::move(a), std::move(b));
   }
 }
