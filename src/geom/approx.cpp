@@ -142,10 +142,11 @@ Worst max_distance(const Curve& curve, const Placement& place, double ta, double
   return {m.value, m.at};
 }
 
-PlacedJet placed_jet(const Curve& curve, const Placement& place, double t) {
-  Curve::Jet j = curve.jet(t);
+PlacedJet placed_jet(const Curve::Jet& j, const Placement& place) {
   return {place(j.p), place.direction(j.d1), place.direction(j.d2)};
 }
+
+PlacedJet placed_jet(const Curve& curve, const Placement& place, double t) { return placed_jet(curve.jet(t), place); }
 
 namespace {
 
@@ -265,7 +266,7 @@ public:
   // neighbours (see each_sampled_maximum)
   ModelMaxima maxima(int samples) const {
     constexpr int kMostSamples = 16;
-    if (samples < 2 || samples > kMostSamples) throw std::invalid_argument("on_quintic: 2..16 samples");
+    if (samples < 2 || samples > kMostSamples) throw std::invalid_argument("SegmentQuintic::maxima: 2..16 samples");
     ModelMaxima m;
     std::array<double, kMostSamples + 1> value;
     const double step = 1.0 / samples;
@@ -709,8 +710,7 @@ Chunks chunk_cuts(const Fit& f, bool band) {
   f.curve.jets(ts, jets);
   double density_before = 0;
   for (int i = 0; i <= kSamples; ++i) {
-    const Curve::Jet& j = jets[static_cast<std::size_t>(i)];
-    const double density = 1 / step_guess(f, {f.place(j.p), f.place.direction(j.d1), f.place.direction(j.d2)}, h);
+    const double density = 1 / step_guess(f, placed_jet(jets[static_cast<std::size_t>(i)], f.place), h);
     if (i > 0) predicted[i] = predicted[i - 1] + 0.5 * (density + density_before) * (ts[i] - ts[i - 1]);
     density_before = density;
   }

@@ -102,6 +102,7 @@ struct PlacedJet {
   Vec3 p, d1, d2;
 };
 PlacedJet placed_jet(const Curve& curve, const Placement& place, double t);
+PlacedJet placed_jet(const Curve::Jet& j, const Placement& place);
 
 // max_distance with the placed jets at ta and tb known: the maximum is placed on the quintic
 // through them and its value taken on the curve, where it must be a local maximum (the curve no
