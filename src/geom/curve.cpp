@@ -226,15 +226,21 @@ Curve Curve::offset(double radius, bool left, int u, int v) const {
   if (depends_on(sym_pos_[w], kTVar))
     throw std::runtime_error(fmt::format("{}: a tool radius offset needs a plane curve; this one leaves the plane", name_));
   // concave side closer than the radius: the offset curve would turn back (gouge)
-  constexpr int kSamples = 8192;
+  constexpr int kSamples = 8192, kBatch = 256;
   const double side = left ? 1 : -1;
   double worst = 0, worst_t = t0_;
-  for (int i = 0; i <= kSamples; ++i) {
-    double t = t0_ + (t1_ - t0_) * i / kSamples;
-    Vec3 a = d1(t), b = d2(t);
-    double speed = std::hypot(a[u], a[v]);
-    double k = side * (a[u] * b[v] - a[v] * b[u]) / (speed * speed * speed);  // > 0: turning towards the tool
-    if (k > worst) { worst = k; worst_t = t; }
+  std::array<double, kBatch> ts;
+  std::array<Jet, kBatch> batch;
+  for (int first = 0; first <= kSamples; first += kBatch) {
+    const int n = std::min(kBatch, kSamples + 1 - first);
+    for (int j = 0; j < n; ++j) ts[static_cast<std::size_t>(j)] = t0_ + (t1_ - t0_) * (first + j) / kSamples;
+    jets(std::span(ts).first(static_cast<std::size_t>(n)), batch);
+    for (int j = 0; j < n; ++j) {
+      const Vec3 &a = batch[static_cast<std::size_t>(j)].d1, &b = batch[static_cast<std::size_t>(j)].d2;
+      const double speed = std::hypot(a[u], a[v]);
+      const double k = side * (a[u] * b[v] - a[v] * b[u]) / (speed * speed * speed);  // > 0: turning towards the tool
+      if (k > worst) worst = k, worst_t = ts[static_cast<std::size_t>(j)];
+    }
   }
   if (worst * radius >= 1) {
     Vec3 p = point(worst_t);
