@@ -535,8 +535,10 @@ NCURVE_VECTOR_CLONES bool scan_batch(const Quintic& q, const Vec3& offset, const
 double band_offset(const Fit& f, bool band) { return band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0; }
 
 // Greedy longest segments from `from` to `to` (vertices there as anywhere else in the curve),
-// room made for `expected` of them.
-Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, std::size_t expected = 0) {
+// room made for `expected` of them; ended early at the first vertex at or beyond `stop`. With
+// `errors`, each segment's deviation is noted there.
+Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, std::size_t expected = 0,
+                  double stop = std::numeric_limits<double>::infinity(), std::vector<double>* errors = nullptr) {
   Path path;
   path.pieces.reserve(expected);
   const double t_end = to;
@@ -546,7 +548,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
   double ta = from;
   Vertex a = vertex(f, ta, offset);
   double learned = 1;  // the last step over its curvature prediction (the band, the rounding)
-  while (ta < t_end) {
+  while (ta < t_end && ta < stop) {
     Vertex b{};
     double b_error = 0, b_t = ta;  // the longest segment within the tolerance tried so far
     ModelMaxima b_model{};
@@ -688,10 +690,42 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
     if (tb < t_end) learned = std::clamp((tb - ta) / predicted, 0.25, 4.0);
     path.max_deviation = std::max(path.max_deviation, b_error);
     path.pieces.push_back(Piece{false, a.at, b.at, {}, false, ta, tb});
+    if (errors) errors->push_back(b_error);
     ta = tb;
     a = b;
   }
   return path;
+}
+
+// The segments predicted from the curvature (a sag of the tolerance, with the band) from the
+// start of the curve up to each of kSamples equal steps in its parameter.
+struct Prediction {
+  static constexpr int kSamples = 256;
+  std::vector<double> ts, segments;
+  double total() const { return segments.back(); }
+  // where `count` segments are predicted (0 < count < total())
+  double where(double count) const {
+    std::size_t i = 1;
+    while (segments[i] < count) ++i;
+    const double f_in = (count - segments[i - 1]) / (segments[i] - segments[i - 1]);
+    return ts[i - 1] + f_in * (ts[i] - ts[i - 1]);
+  }
+};
+Prediction predicted_segments(const Fit& f, bool band) {
+  const double t0 = f.curve.t0(), t1 = f.curve.t1(), h = f.tol + band_offset(f, band);
+  Prediction p;
+  p.ts.resize(Prediction::kSamples + 1);
+  p.segments.assign(Prediction::kSamples + 1, 0.0);
+  for (std::size_t i = 0; i < p.ts.size(); ++i) p.ts[i] = t0 + (t1 - t0) * static_cast<double>(i) / Prediction::kSamples;
+  std::vector<Curve::Jet> jets(p.ts.size());
+  f.curve.jets(p.ts, jets);
+  double density_before = 0;
+  for (std::size_t i = 0; i < p.ts.size(); ++i) {
+    const double density = 1 / step_guess(f, placed_jet(jets[i], f.place), h);
+    if (i > 0) p.segments[i] = p.segments[i - 1] + 0.5 * (density + density_before) * (p.ts[i] - p.ts[i - 1]);
+    density_before = density;
+  }
+  return p;
 }
 
 // Where a long curve is cut to be fit on several threads at once: about every
@@ -700,40 +734,110 @@ struct Chunks {
   std::vector<double> cuts;
   double segments = 0;  // predicted in each
 };
-Chunks chunk_cuts(const Fit& f, bool band) {
-  constexpr int kSamples = 256;
-  const double t0 = f.curve.t0(), t1 = f.curve.t1(), h = f.tol + band_offset(f, band);
-  if (!(f.chunk_segments > 0)) return {{t0, t1}};
-  std::vector<double> ts(kSamples + 1), predicted(kSamples + 1, 0.0);  // segments up to ts[i]
-  for (int i = 0; i <= kSamples; ++i) ts[i] = t0 + (t1 - t0) * i / kSamples;
-  std::vector<Curve::Jet> jets(ts.size());
-  f.curve.jets(ts, jets);
-  double density_before = 0;
-  for (int i = 0; i <= kSamples; ++i) {
-    const double density = 1 / step_guess(f, placed_jet(jets[static_cast<std::size_t>(i)], f.place), h);
-    if (i > 0) predicted[i] = predicted[i - 1] + 0.5 * (density + density_before) * (ts[i] - ts[i - 1]);
-    density_before = density;
-  }
-  const double total = predicted.back();
-  const int chunks = std::isfinite(total) ? std::max(1, static_cast<int>(std::min(total / f.chunk_segments, 64.0))) : 1;
+Chunks chunk_cuts(const Fit& f, const Prediction& p) {
+  const double t0 = f.curve.t0(), t1 = f.curve.t1(), total = p.total();
+  if (!(f.chunk_segments > 0) || !std::isfinite(total)) return {{t0, t1}, total};
+  const int chunks = std::max(1, static_cast<int>(std::min(total / f.chunk_segments, 64.0)));
   std::vector<double> cuts{t0};
-  for (int k = 1, i = 1; k < chunks; ++k) {
-    const double want = total * k / chunks;
-    while (predicted[i] < want) ++i;
-    const double f_in = (want - predicted[i - 1]) / (predicted[i] - predicted[i - 1]);
-    cuts.push_back(ts[i - 1] + f_in * (ts[i] - ts[i - 1]));
-  }
+  for (int k = 1; k < chunks; ++k) cuts.push_back(p.where(total * k / chunks));
   cuts.push_back(t1);
   return {cuts, total / chunks};
 }
 
+// Fewer predicted segments than this are fit from the start alone.
+constexpr double kBothWaysSegments = 16;
+
+// The greedy fit from both ends at once (on two cores where there are two), each going to its
+// first vertex past `middle`: forwards F0 = t0 .. FK, backwards B0 = t1 .. BJ. Where the longest
+// step from a point reaches no less from a later point, k plus the fewest backward steps that reach
+// back to Fk is the fewest segments for every k; so F0 .. F(K-1), one segment to the first Bj at or
+// before FK, then on to B0, is the fewest. That segment is measured; beyond the tolerance (the
+// rounding of vertices can break the rule), the forward fit goes on to the end instead. The result
+// depends on the curve alone, not on the threads.
+Path lines_both_ways(const Fit& f, bool band, bool radial, double middle, std::size_t expected) {
+  const Curve back_curve = f.curve.reversed();
+  const Fit back{back_curve, f.place, f.grid,      f.plane,        f.tol,          f.centre,
+                 f.arcs_with_r, f.r_step, f.arc_radius_limit, f.model_steps, f.chunk_segments, f.both_ways};
+  const double t0 = f.curve.t0(), t1 = f.curve.t1();
+  Path ahead, behind;
+  std::vector<double> ahead_errors, behind_errors;
+  bool behind_failed = false;  // its error would name t traced backwards: the forward fit names it
+  base::for_each_on_cores(2, [&](std::size_t k) {
+    if (k == 0) {
+      ahead = lines_greedy(f, band, radial, t0, t1, expected, middle, &ahead_errors);
+      return;
+    }
+    try {
+      behind = lines_greedy(back, band, radial, -t1, -t0, expected, -middle, &behind_errors);
+    } catch (const std::runtime_error&) {
+      behind_failed = true;
+    }
+  });
+  const std::size_t K = ahead.pieces.size();
+  const double reached = ahead.pieces.back().t1;
+  auto ahead_to_the_end = [&] {
+    if (reached < t1) {
+      Path rest = lines_greedy(f, band, radial, reached, t1);
+      ahead.max_deviation = std::max(ahead.max_deviation, rest.max_deviation);
+      ahead.pieces.insert(ahead.pieces.end(), rest.pieces.begin(), rest.pieces.end());
+    }
+    return ahead;
+  };
+  if (behind_failed || reached >= t1) return ahead_to_the_end();
+  // the vertices: F[k] = ahead's k-th, B[j] = behind's j-th (B[0] = t1), each with its point
+  std::vector<double> F{t0}, B{t1};
+  for (const Piece& p : ahead.pieces) F.push_back(p.t1);
+  for (const Piece& p : behind.pieces) B.push_back(-p.t1);
+  auto forward_point = [&](std::size_t k) { return k == 0 ? ahead.pieces[0].start : ahead.pieces[k - 1].end; };
+  auto backward_point = [&](std::size_t j) { return j == 0 ? behind.pieces[0].start : behind.pieces[j - 1].end; };
+  // the first backward vertex at or before FK, and the last forward vertex before that
+  std::size_t j = 1;
+  while (B[j] > reached) ++j;
+  std::size_t k = K - 1;
+  while (k > 0 && F[k] >= B[j]) --k;
+  // Joins of one segment fewer (each greedy step is only searched to kStepRel, and rounding breaks
+  // the rule), shortest first; then the join the rule gives.
+  struct Join {
+    std::size_t k, j;
+  };
+  std::vector<Join> joins;
+  for (std::size_t dk = 0; dk <= 2; ++dk)  // (k - 1, j), (k, j - 1), (k + 1, j - 2)
+    if (k + dk >= 1 && k + dk <= K + 1 && j >= dk && F[k + dk - 1] < B[j - dk]) joins.push_back({k + dk - 1, j - dk});
+  std::sort(joins.begin(), joins.end(), [&](const Join& a, const Join& b) { return B[a.j] - F[a.k] < B[b.j] - F[b.k]; });
+  if (F[k] < B[j]) joins.push_back({k, j});
+  const double offset = band_offset(f, band);
+  for (const Join& join : joins) {
+    const double ta = F[join.k], tb = B[join.j];
+    const double error = segment_error(f, ta, tb, vertex(f, ta, offset), vertex(f, tb, offset), radial);
+    if (!(error <= f.tol)) continue;
+    Path path;
+    path.pieces.reserve(join.k + 1 + join.j);
+    path.pieces.assign(ahead.pieces.begin(), ahead.pieces.begin() + static_cast<std::ptrdiff_t>(join.k));
+    path.pieces.push_back(Piece{false, forward_point(join.k), backward_point(join.j), {}, false, ta, tb});
+    for (std::size_t i = join.j; i-- > 0;) {
+      const Piece& p = behind.pieces[i];
+      path.pieces.push_back(Piece{false, p.end, p.start, {}, false, -p.t1, -p.t0});
+    }
+    path.max_deviation = error;
+    for (std::size_t i = 0; i < join.k; ++i) path.max_deviation = std::max(path.max_deviation, ahead_errors[i]);
+    for (std::size_t i = 0; i < join.j; ++i) path.max_deviation = std::max(path.max_deviation, behind_errors[i]);
+    return path;
+  }
+  return ahead_to_the_end();
+}
+
 Path lines_in_chunks(const Fit& f, bool band, bool radial = false) {
-  const Chunks c = chunk_cuts(f, band);
+  const Prediction prediction = predicted_segments(f, band);
+  const Chunks c = chunk_cuts(f, prediction);
   const std::vector<double>& cuts = c.cuts;
   const std::size_t chunks = cuts.size() - 1;
-  if (chunks == 1) return lines_greedy(f, band, radial, cuts[0], cuts[1]);
   // room for twice the prediction: pages never written cost nothing
-  const auto expected = static_cast<std::size_t>(2 * c.segments) + 16;
+  const auto expected = std::isfinite(c.segments) ? static_cast<std::size_t>(2 * c.segments) + 16 : 0;
+  if (chunks == 1) {
+    if (f.both_ways && prediction.total() >= kBothWaysSegments && std::isfinite(prediction.total()))
+      return lines_both_ways(f, band, radial, prediction.where(prediction.total() / 2), expected / 2 + 8);
+    return lines_greedy(f, band, radial, cuts[0], cuts[1]);
+  }
   std::vector<Path> parts(chunks);
   base::for_each_on_cores(chunks, [&](std::size_t k) {
     parts[k] = lines_greedy(f, band, radial, cuts[k], cuts[k + 1], expected);

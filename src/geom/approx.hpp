@@ -84,6 +84,10 @@ struct Fit {
   // Equal error on a long curve: cut where about this many segments are predicted, the pieces fit
   // on all cores (cuts depend on the curve alone; each join may cost a segment). 0: never cut.
   double chunk_segments = 4096;
+  // Equal error on a curve not cut: fit from both ends at once (on two cores where there are),
+  // joined where the two meet with no segment more than the fit from the start would need (see
+  // lines_both_ways); the same result on any machine. Off: from the start alone.
+  bool both_ways = true;
 };
 
 Path fit_lines(const Fit& fit, LineMethod method);

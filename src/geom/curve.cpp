@@ -189,16 +189,31 @@ void Curve::compile(nc::EvalOptions options) {
   jet_ = Tape(all, options, t_only);
 }
 
-Vec3 Curve::eval(const Tape& tape, double t) const {
+Vec3 Curve::eval(const Tape& tape, double t, double scale) const {
+  const double at = sense_ * t;
   Vec3 out;
-  tape(&t, out.data());
-  return out;
+  tape(&at, out.data());
+  return {out[0] * scale, out[1] * scale, out[2] * scale};
 }
 
 Curve::Jet Curve::jet(double t) const {
+  const double at = sense_ * t;
   double out[9];
-  jet_(&t, out);
-  return {{out[0], out[1], out[2]}, {out[3], out[4], out[5]}, {out[6], out[7], out[8]}};
+  jet_(&at, out);
+  const double s = sense_;
+  return {{out[0], out[1], out[2]}, {s * out[3], s * out[4], s * out[5]}, {out[6], out[7], out[8]}};
+}
+
+Curve Curve::reversed() const {
+  Curve out = *this;
+  out.sense_ = -sense_;
+  out.t0_ = -t1_;
+  out.t1_ = -t0_;
+  return out;
+}
+
+void Curve::forwards(const char* what) const {
+  if (sense_ < 0) throw std::logic_error(fmt::format("{}: {} of a curve traced backwards", name_, what));
 }
 
 void Curve::jets(std::span<const double> t, std::span<Jet> out) const {
@@ -207,14 +222,14 @@ void Curve::jets(std::span<const double> t, std::span<Jet> out) const {
   std::array<double, 9 * kLanes> values;
   for (std::size_t first = 0; first < t.size(); first += kLanes) {
     const std::size_t n = std::min(kLanes, t.size() - first);
-    std::copy_n(t.begin() + static_cast<std::ptrdiff_t>(first), n, in.begin());
+    for (std::size_t j = 0; j < n; ++j) in[j] = sense_ * t[first + j];
     std::fill(in.begin() + static_cast<std::ptrdiff_t>(n), in.end(), in[n - 1]);
     jet_.lanes(in.data(), values.data());
     for (std::size_t j = 0; j < n; ++j) {
       Jet& e = out[first + j];
       for (std::size_t k = 0; k < 3; ++k) {
         e.p[k] = values[k * kLanes + j];
-        e.d1[k] = values[(3 + k) * kLanes + j];
+        e.d1[k] = sense_ * values[(3 + k) * kLanes + j];
         e.d2[k] = values[(6 + k) * kLanes + j];
       }
     }
@@ -222,6 +237,7 @@ void Curve::jets(std::span<const double> t, std::span<Jet> out) const {
 }
 
 Curve Curve::offset(double radius, bool left, int u, int v) const {
+  forwards("offset");
   const int w = 3 - u - v;
   if (depends_on(sym_pos_[w], kTVar))
     throw std::runtime_error(fmt::format("{}: a tool radius offset needs a plane curve; this one leaves the plane", name_));
@@ -311,6 +327,7 @@ NCURVE_VECTOR_CLONES void check_lanes(const double* __restrict jet, const double
 }  // namespace
 
 void Curve::validate() const {
+  forwards("validate");
   if (!(t1_ > t0_)) throw std::runtime_error(fmt::format("{}: the range {}..{} is empty", name_, t0_, t1_));
   constexpr int kSamples = 4096, kPart = 512;
   constexpr int kLanes = static_cast<int>(Tape::kLanes);

@@ -47,9 +47,9 @@ public:
   double t1() const { return t1_; }
   void set_range(double t0, double t1) { t0_ = t0; t1_ = t1; }
 
-  Vec3 point(double t) const { return eval(pos_, t); }
-  Vec3 d1(double t) const { return eval(d1_, t); }
-  Vec3 d2(double t) const { return eval(d2_, t); }
+  Vec3 point(double t) const { return eval(pos_, t, 1); }
+  Vec3 d1(double t) const { return eval(d1_, t, sense_); }
+  Vec3 d2(double t) const { return eval(d2_, t, 1); }
   // Point, first and second derivative together (their common terms computed once).
   struct Jet {
     Vec3 p, d1, d2;
@@ -83,12 +83,20 @@ public:
   // gouge) or the curve leaves the plane.
   Curve offset(double radius, bool left, int u, int v) const;
 
+  // The same curve traced backwards, to fit it from its end: over [-t1, -t0], its point at t is
+  // this curve's at -t (bit for bit) and its first derivative changes sign. For evaluation only:
+  // its expressions are this curve's, and validate() and offset() refuse it.
+  Curve reversed() const;
+
 private:
-  Vec3 eval(const Tape& tape, double t) const;
+  // tape's outputs at the parameter t traced, multiplied by `scale`
+  Vec3 eval(const Tape& tape, double t, double scale) const;
   void compile(nc::EvalOptions options);  // derivatives and tapes from sym_pos_
+  void forwards(const char* what) const;  // throws std::logic_error for a curve traced backwards
 
   std::string name_;
   double t0_, t1_;
+  double sense_ = 1;  // -1: traced backwards (the tapes see -t)
   std::vector<Param> params_;
   std::array<Sym, 3> sym_pos_, sym_d1_, sym_d2_;
   Tape pos_, d1_, d2_, jet_;

@@ -2,10 +2,12 @@
 // and the equal-error fit built on it (steps on the quintic, long curves cut and fit on threads):
 // against closed forms and against the search on the curve alone.
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "base/parallel.hpp"
 #include "geom/approx.hpp"
 #include "geom/quintic.hpp"
 
@@ -162,6 +164,68 @@ TEST(Approx, LongCurvesAreFitInJoinedChunksTheSameEveryTime) {
   bool same = first.pieces.size() == one.pieces.size();
   for (std::size_t i = 0; same && i < one.pieces.size(); ++i) same = first.pieces[i].end == one.pieces[i].end;
   EXPECT_FALSE(same) << "no cut was made";
+}
+
+// Fit from both ends at once and joined where they meet: over every built-in curve at three
+// tolerances no more segments in all than the fit from the start alone, and at most one more on
+// any one (each greedy step is searched only to a fraction of a per cent, and the rounding of its
+// end decides the rest: either greedy fit may be a segment off the fewest); each piece within the
+// tolerance on the curve, end to end from t0 to t1.
+TEST(Approx, FitFromBothEndsNeedsNoMoreSegmentsThanFromTheStart) {
+  int differ = 0;
+  std::size_t both_total = 0, ahead_total = 0;
+  for (const CurveSpec& spec : catalogue()) {
+    Curve curve(spec, {});
+    for (double tol : {0.002, 0.005, 0.01}) {
+      Fit fit{curve, kSame, Grid{}, Plane{0, 1}, tol};
+      const Path both = fit_lines(fit, LineMethod::equal_error);
+      fit.both_ways = false;
+      const Path ahead = fit_lines(fit, LineMethod::equal_error);
+      const std::string what = fmt::format("{} at {}", spec.name, tol);
+      both_total += both.pieces.size();
+      ahead_total += ahead.pieces.size();
+      EXPECT_LE(both.pieces.size(), ahead.pieces.size() + 1) << what;
+      EXPECT_LE(both.max_deviation, tol) << what;
+      EXPECT_EQ(both.pieces.front().t0, curve.t0()) << what;
+      EXPECT_EQ(both.pieces.back().t1, curve.t1()) << what;
+      double worst = 0;
+      for (std::size_t i = 0; i < both.pieces.size(); ++i) {
+        const Piece& p = both.pieces[i];
+        ASSERT_LT(p.t0, p.t1) << what << " piece " << i;
+        if (i > 0) {
+          ASSERT_EQ(p.start, both.pieces[i - 1].end) << what << " piece " << i;
+          ASSERT_EQ(p.t0, both.pieces[i - 1].t1) << what << " piece " << i;
+        }
+        const Segment s(p.start, p.end);
+        worst = std::max(worst, max_distance(curve, kSame, p.t0, p.t1, [&](const Vec3& q) { return s.distance(q); }).distance);
+      }
+      EXPECT_LE(worst, tol) << what;
+      EXPECT_NEAR(both.max_deviation, worst, 1e-4 * tol) << what;
+      bool same = both.pieces.size() == ahead.pieces.size();
+      for (std::size_t i = 0; same && i < both.pieces.size(); ++i) same = both.pieces[i].end == ahead.pieces[i].end;
+      differ += !same;
+    }
+  }
+  EXPECT_LE(both_total, ahead_total);
+  EXPECT_GT(differ, 0) << "the fit from both ends was never used";
+}
+
+// The fit from both ends gives the same path when the second core is busy (its half then runs
+// after the first, on the same thread) as when it is free.
+TEST(Approx, FitFromBothEndsIsTheSameOnOneThread) {
+  Curve spiral = expression("[1+2*t/360]*COS[t]", "[1+2*t/360]*SIN[t]", 0, 720);
+  Fit fit{spiral, kSame, Grid{{0.0001, 0.0001, 0}}, Plane{0, 1}, 0.001};
+  const Path free = fit_lines(fit, LineMethod::equal_error);
+  std::vector<Path> nested(2);
+  ncurve::base::for_each_on_cores(2, [&](std::size_t k) { nested[k] = fit_lines(fit, LineMethod::equal_error); });
+  ASSERT_GT(free.pieces.size(), 100u);
+  for (const Path& p : nested) {
+    ASSERT_EQ(p.pieces.size(), free.pieces.size());
+    for (std::size_t i = 0; i < p.pieces.size(); ++i) {
+      ASSERT_EQ(p.pieces[i].end, free.pieces[i].end) << i;
+      ASSERT_EQ(p.pieces[i].t1, free.pieces[i].t1) << i;
+    }
+  }
 }
 
 TEST(Grid, SnapsToTheNearestIncrement) {

@@ -338,6 +338,38 @@ TEST(Sym, CurveJetsAtManyParametersAreItsJets) {
   }
 }
 
+TEST(Sym, CurveReversedIsTheSameCurveTracedBackwards) {
+  Curve c(*find_curve("rotor"), {});
+  c.set_range(10, 300);
+  const Curve back = c.reversed();
+  EXPECT_EQ(back.t0(), -300);
+  EXPECT_EQ(back.t1(), -10);
+  std::vector<double> t, minus_t;
+  for (int i = 0; i < 40; ++i) t.push_back(10 + 7.25 * i), minus_t.push_back(-t.back());
+  std::vector<Curve::Jet> forwards(t.size()), backwards(t.size());
+  c.jets(t, forwards);
+  back.jets(minus_t, backwards);
+  const Vec3 zero{0, 0, 0};
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const Curve::Jet j = c.jet(t[i]), b = back.jet(-t[i]);
+    ASSERT_NE(j.d1, zero);
+    const Vec3 minus_d1{-j.d1[0], -j.d1[1], -j.d1[2]};
+    EXPECT_EQ(b.p, j.p) << t[i];
+    EXPECT_EQ(b.d1, minus_d1) << t[i];
+    EXPECT_EQ(b.d2, j.d2) << t[i];
+    EXPECT_EQ(back.point(-t[i]), j.p);
+    EXPECT_EQ(back.d1(-t[i]), minus_d1);
+    EXPECT_EQ(back.d2(-t[i]), j.d2);
+    EXPECT_EQ(backwards[i].p, forwards[i].p);
+    EXPECT_EQ(backwards[i].d1, (Vec3{-forwards[i].d1[0], -forwards[i].d1[1], -forwards[i].d1[2]}));
+    EXPECT_EQ(backwards[i].d2, forwards[i].d2);
+  }
+  EXPECT_EQ(back.reversed().jet(t[3]).d1, c.jet(t[3]).d1);
+  // its expressions are the forward curve's: what would read them refuses it
+  EXPECT_THROW(back.validate(), std::logic_error);
+  EXPECT_THROW(back.offset(1, true, 0, 1), std::logic_error);
+}
+
 TEST(Sym, ValidateNamesTheFirstProblemAlongTheCurve) {
   // a pole at t = 1000 (X jumps from -inf to +inf) and Y undefined beyond t = 2500: the check runs
   // in parts on all cores, and still names the pole, the first problem in t
