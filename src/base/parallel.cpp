@@ -36,7 +36,8 @@ struct Job {
   std::size_t n;
   std::atomic<std::size_t> next{0};
   std::vector<std::exception_ptr> errors;
-  int joined = 0, finished = 0;  // workers, under the pool's lock
+  int joined = 0;                    // workers, under the pool's lock
+  std::atomic<int> finished{0};      // of those, done with it (the last use of the job)
 
   void run() {
     for (std::size_t k; (k = next++) < n;) {
@@ -74,11 +75,23 @@ public:
     }
     wake_.notify_all();
     job.run();
+    int joined = 0;
     {
       // no worker joins from now on; those that did finish before the job goes out of scope
-      std::unique_lock lock(mutex_);
+      std::lock_guard lock(mutex_);
       job_ = nullptr;
-      done_.wait(lock, [&] { return job.finished == job.joined; });
+      joined = job.joined;
+    }
+    // they are on their last item: look for a while, as the workers do, then sleep
+    auto all_done = [&] { return job.finished.load(std::memory_order_acquire) == joined; };
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
+    for (int spin = 1; !all_done(); ++spin) {
+      relax();
+      if (spin % 256 == 0 && std::chrono::steady_clock::now() > until) {
+        std::unique_lock lock(mutex_);
+        done_.wait(lock, all_done);
+        break;
+      }
     }
     busy_ = false;
     return true;
@@ -116,7 +129,8 @@ private:
       job->run();
       {
         std::lock_guard lock(mutex_);
-        if (++job->finished == job->joined) done_.notify_one();
+        const int joined = job->joined;
+        if (job->finished.fetch_add(1, std::memory_order_release) + 1 == joined) done_.notify_one();
       }
     }
   }
