@@ -533,6 +533,8 @@ NCURVE_VECTOR_CLONES bool scan_batch(const Quintic& q, const Vec3& offset, const
 }
 
 double band_offset(const Fit& f, bool band) { return band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0; }
+// how far a segment's deviation on the quintic and on the curve may differ (see confirmed)
+double trust_of(const Fit& f) { return 1e-3 * f.tol; }
 
 // Greedy longest segments from `from` to `to` (vertices there as anywhere else in the curve),
 // room made for `expected` of them; ended early at the first vertex at or beyond `stop`. With
@@ -544,7 +546,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
   const double t_end = to;
   const double span = f.curve.t1() - f.curve.t0();
   const double offset = band_offset(f, band);
-  const double trust = 1e-3 * f.tol;
+  const double trust = trust_of(f);
   double ta = from;
   Vertex a = vertex(f, ta, offset);
   double learned = 1;  // the last step over its curvature prediction (the band, the rounding)
@@ -808,7 +810,10 @@ Path lines_both_ways(const Fit& f, bool band, bool radial, double middle, std::s
   const double offset = band_offset(f, band);
   for (const Join& join : joins) {
     const double ta = F[join.k], tb = B[join.j];
-    const double error = segment_error(f, ta, tb, vertex(f, ta, offset), vertex(f, tb, offset), radial);
+    const Vertex a = vertex(f, ta, offset), b = vertex(f, tb, offset);
+    const double error =
+        radial ? segment_error(f, ta, tb, a, b, true)
+               : max_distance(f.curve, f.place, ta, tb, a.curve, b.curve, Segment(a.at, b.at), trust_of(f)).distance;
     if (!(error <= f.tol)) continue;
     Path path;
     path.pieces.reserve(join.k + 1 + join.j);
