@@ -8,6 +8,7 @@
 #include <cctype>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "nc/program.hpp"
@@ -293,35 +294,48 @@ namespace {
 // The checks of a batch of Tape::kLanes jets (outputs p, d1, d2 as the jet tape gives them),
 // lane by lane on vectors: where a value is not finite or too far, the squared speed, and
 // whether the step from the lane before (the previous batch's last before lane 0) leaves the
-// tangent's reach.
+// tangent's reach. Flags are all ones where set (vector compares give such lanes).
 struct LaneChecks {
   static constexpr std::size_t kLanes = Tape::kLanes;
-  bool undefined[kLanes], jumps[kLanes];
+  std::int64_t undefined[kLanes], jumps[kLanes];
   double speed2[kLanes];
 };
 
-NCURVE_VECTOR_CLONES void check_lanes(const double* __restrict jet, const double* __restrict before, double dt,
-                                      LaneChecks& out) {
+// lane j, the lane before's point and velocity given
+[[gnu::always_inline]] inline void check_lane(std::size_t j, const double* __restrict jet, double px, double py,
+                                              double pz, double pvx, double pvy, double pvz, double dt,
+                                              LaneChecks& out) {
   constexpr std::size_t n = LaneChecks::kLanes;
-  const double *x = jet, *y = jet + n, *z = jet + 2 * n, *vx = jet + 3 * n, *vy = jet + 4 * n, *vz = jet + 5 * n;
-  double px[n], py[n], pz[n], pvx[n], pvy[n], pvz[n];  // the lane before's
-  px[0] = before[0], py[0] = before[1], pz[0] = before[2], pvx[0] = before[3], pvy[0] = before[4], pvz[0] = before[5];
+  const double x = jet[j], y = jet[n + j], z = jet[2 * n + j];
+  const double vx = jet[3 * n + j], vy = jet[4 * n + j], vz = jet[5 * n + j];
+  // NaN or infinity in any of them makes the sum NaN or infinite, and all - all not 0
+  const double all = x + y + z + vx + vy + vz + jet[6 * n + j] + jet[7 * n + j] + jet[8 * n + j];
+  const bool undefined = !(all - all == 0) | (std::fabs(x) > 1e6) | (std::fabs(y) > 1e6) | (std::fabs(z) > 1e6);
+  const double speed2 = vx * vx + vy * vy + vz * vz;
+  const double before2 = pvx * pvx + pvy * pvy + pvz * pvz;
+  const double sx = x - px, sy = y - py, sz = z - pz;
+  // ten times the faster speed's step, at least 1e-9 mm (squared: no square root)
+  const double reach2 = 100 * (speed2 > before2 ? speed2 : before2) * dt * dt + 1e-18;
+  // a smooth curve moves along its tangent; through a pole (1/cos at 90 degrees) it jumps back
+  const bool backwards = (sx * vx + sy * vy + sz * vz < 0) & (sx * pvx + sy * pvy + sz * pvz < 0);
+  const bool jumps = (sx * sx + sy * sy + sz * sz > reach2) | backwards;
+  out.undefined[j] = -static_cast<std::int64_t>(undefined);
+  out.jumps[j] = -static_cast<std::int64_t>(jumps);
+  out.speed2[j] = speed2;
+}
+
+// All lanes; whether any is undefined or jumps (lane 0's jump counted only with `from_before`).
+NCURVE_VECTOR_CLONES bool check_lanes(const double* __restrict jet, const double* __restrict before, bool from_before,
+                                      double dt, LaneChecks& out) {
+  constexpr std::size_t n = LaneChecks::kLanes;
+  check_lane(0, jet, before[0], before[1], before[2], before[3], before[4], before[5], dt, out);
+  if (!from_before) out.jumps[0] = 0;
   for (std::size_t j = 1; j < n; ++j)
-    px[j] = x[j - 1], py[j] = y[j - 1], pz[j] = z[j - 1], pvx[j] = vx[j - 1], pvy[j] = vy[j - 1], pvz[j] = vz[j - 1];
-  for (std::size_t j = 0; j < n; ++j) {
-    // NaN or infinity in any of them makes the sum NaN or infinite, and all - all not 0
-    const double* a = jet + 6 * n;
-    const double all = x[j] + y[j] + z[j] + vx[j] + vy[j] + vz[j] + a[j] + a[n + j] + a[2 * n + j];
-    out.undefined[j] = !(all - all == 0) | (std::fabs(x[j]) > 1e6) | (std::fabs(y[j]) > 1e6) | (std::fabs(z[j]) > 1e6);
-    const double speed2 = vx[j] * vx[j] + vy[j] * vy[j] + vz[j] * vz[j];
-    const double before2 = pvx[j] * pvx[j] + pvy[j] * pvy[j] + pvz[j] * pvz[j];
-    out.speed2[j] = speed2;
-    const double sx = x[j] - px[j], sy = y[j] - py[j], sz = z[j] - pz[j];
-    const double reach = 10 * std::sqrt(speed2 > before2 ? speed2 : before2) * dt + 1e-9;
-    // a smooth curve moves along its tangent; through a pole (1/cos at 90 degrees) it jumps back
-    const bool backwards = (sx * vx[j] + sy * vy[j] + sz * vz[j] < 0) & (sx * pvx[j] + sy * pvy[j] + sz * pvz[j] < 0);
-    out.jumps[j] = (sx * sx + sy * sy + sz * sz > reach * reach) | backwards;
-  }
+    check_lane(j, jet, jet[j - 1], jet[n + j - 1], jet[2 * n + j - 1], jet[3 * n + j - 1], jet[4 * n + j - 1],
+               jet[5 * n + j - 1], dt, out);
+  std::int64_t any = 0;
+  for (std::size_t j = 0; j < n; ++j) any |= out.undefined[j] | out.jumps[j];
+  return any != 0;
 }
 
 }  // namespace
@@ -344,19 +358,21 @@ void Curve::validate() const {
       const int n = std::min(kLanes, last + 1 - b);
       for (int j = 0; j < kLanes; ++j) ts[j] = sample(b + std::min(j, n - 1));
       jet_.lanes(ts, jet);
-      check_lanes(jet, before, dt, checks);
-      for (int j = 0; j < n; ++j) {
-        const int i = b + j;
-        if (checks.undefined[j])
-          throw std::runtime_error(fmt::format(
-              "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that "
-              "avoids it",
-              name_, sample(i), jet[j], jet[kLanes + j], jet[2 * kLanes + j]));
-        if (i > first && checks.jumps[j])
-          throw std::runtime_error(fmt::format("{}: jumps between t = {:.6g} and t = {:.6g} (singular or discontinuous)",
-                                               name_, sample(i - 1), sample(i)));
-        speed2[static_cast<std::size_t>(i)] = checks.speed2[j];
+      if (check_lanes(jet, before, b > first, dt, checks)) {
+        for (int j = 0; j < n; ++j) {
+          const int i = b + j;
+          if (checks.undefined[j])
+            throw std::runtime_error(fmt::format(
+                "{}: not defined or singular at t = {:.6g} (x, y, z = {:.6g}, {:.6g}, {:.6g}): choose a range that "
+                "avoids it",
+                name_, sample(i), jet[j], jet[kLanes + j], jet[2 * kLanes + j]));
+          if (checks.jumps[j])
+            throw std::runtime_error(fmt::format(
+                "{}: jumps between t = {:.6g} and t = {:.6g} (singular or discontinuous)", name_, sample(i - 1),
+                sample(i)));
+        }
       }
+      std::copy_n(checks.speed2, n, speed2.begin() + b);
       for (int c = 0; c < 6; ++c) before[c] = jet[c * kLanes + kLanes - 1];
     }
   });
