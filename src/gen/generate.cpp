@@ -139,43 +139,62 @@ public:
   }
 
   // Run k from `from` on; `moves` is the contour's length (the last move must reach the end of
-  // the curve) or more while it is not known. Writes measured[i] of its moves.
+  // the curve) or more while it is not known. Writes measured[i] of its moves. The moves go in
+  // groups of Tape::kLanes: their ends projected on the curve together (see project_group), then
+  // each taken in order where it lies ahead of the one before and near enough (else projected
+  // alone, from there), then the lines measured together (geom::max_distances).
   Place measure_run(const std::vector<ContourMove>& contour, std::size_t k, Place from, std::size_t moves,
                     std::vector<Measured>& measured, std::size_t run = kRun) const {
+    constexpr std::size_t kGroup = geom::Tape::kLanes;
     const double t_last = curve_.t1();
     const Vec3 curve_end = map_(curve_.point(t_last));
+    const std::size_t stop = std::min(moves, (k + 1) * run);
     double t_per_mm = 0;
-    for (std::size_t i = k * run; i < std::min(moves, (k + 1) * run); ++i) {
-      const ContourMove& m = contour[i];
-      const geom::Piece piece = piece_of(m);
-      Place to;
-      if (i + 1 == moves && require_end_) {  // the contour must reach the end of the curve
-        if (distance(piece.end, curve_end) > o_.tol)
-          throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
-                                               distance(piece.end, curve_end), t_last));
-        to = {t_last, geom::placed_jet(curve_, map_, t_last)};
-      } else {
-        if (!(t_per_mm > 0)) {
-          const Vec3& d = from.jet.d1;
-          t_per_mm = 1 / std::max(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), 1e-12);
+    std::array<Place, kGroup> to;
+    std::array<bool, kGroup> projected;
+    std::vector<geom::SegmentPiece> lines;
+    std::vector<std::size_t> line_move;
+    std::vector<geom::Worst> worst;
+    lines.reserve(kGroup);
+    line_move.reserve(kGroup);
+    for (std::size_t first = k * run; first < stop; first += kGroup) {
+      const std::size_t n = std::min(kGroup, stop - first);
+      if (!(t_per_mm > 0)) t_per_mm = 1 / std::max(norm(from.jet.d1), 1e-12);
+      project_group(contour, first, n, from.t, t_per_mm, to, projected);
+      lines.clear();
+      line_move.clear();
+      for (std::size_t g = 0; g < n; ++g) {
+        const std::size_t i = first + g;
+        const ContourMove& m = contour[i];
+        const geom::Piece piece = piece_of(m);
+        Place& end = to[g];
+        if (i + 1 == moves && require_end_) {  // the contour must reach the end of the curve
+          if (distance(piece.end, curve_end) > o_.tol)
+            throw std::runtime_error(fmt::format("the contour ends {:.4f} mm from the end of the curve (t = {:.6g})",
+                                                 distance(piece.end, curve_end), t_last));
+          end = {t_last, geom::placed_jet(curve_, map_, t_last)};
+        } else if (!(projected[g] && end.t > from.t && end.t <= reach(from, m))) {
+          end.t = project_newton(piece.end, from.t, std::min(t_last, from.t + m.length * t_per_mm), end.jet);
+          if (std::isnan(end.t)) {
+            end.t = project(piece.end, from.t, 3 * m.length + 10 * o_.tol + 1e-3);
+            end.jet = geom::placed_jet(curve_, map_, end.t);
+          }
         }
-        to.t = project_newton(piece.end, from.t, std::min(t_last, from.t + m.length * t_per_mm), to.jet);
-        if (std::isnan(to.t)) {
-          to.t = project(piece.end, from.t, 3 * m.length + 10 * o_.tol + 1e-3);
-          to.jet = geom::placed_jet(curve_, map_, to.t);
+        t_per_mm = m.length > 0 ? (end.t - from.t) / m.length : 0;
+        measured[i].t1 = end.t;
+        measured[i].end_distance = distance(piece.end, end.jet.p);
+        if (piece.arc) {
+          auto d = [&](const Vec3& p) { return geom::point_arc_distance(p, piece, plane_); };
+          measured[i].worst = geom::max_distance(curve_, map_, from.t, end.t, from.jet, end.jet, d, trust(), 6);
+        } else {
+          lines.push_back({from.t, end.t, from.jet, end.jet, geom::Segment(piece.start, piece.end)});
+          line_move.push_back(i);
         }
+        from = end;
       }
-      t_per_mm = m.length > 0 ? (to.t - from.t) / m.length : 0;
-      geom::Worst worst;
-      if (piece.arc) {
-        auto d = [&](const Vec3& p) { return geom::point_arc_distance(p, piece, plane_); };
-        worst = geom::max_distance(curve_, map_, from.t, to.t, from.jet, to.jet, d, trust(), 6);
-      } else {
-        const geom::Segment segment(piece.start, piece.end);
-        worst = geom::max_distance(curve_, map_, from.t, to.t, from.jet, to.jet, segment, trust());
-      }
-      measured[i] = {to.t, distance(piece.end, to.jet.p), worst};
-      from = to;
+      worst.resize(lines.size());
+      geom::max_distances(curve_, map_, lines, trust(), worst);
+      for (std::size_t j = 0; j < lines.size(); ++j) measured[line_move[j]].worst = worst[j];
     }
     return from;
   }
@@ -246,26 +265,79 @@ private:
     // a last step this small moves the jet by its Taylor terms (the next step would be ~1e-8)
     const double settled = 1e-4 * (guess - t_from);
     double t = guess;
-    for (int i = 0; i < 8; ++i) {
+    for (int i = 0; i < kNewtonSteps; ++i) {
       j = geom::placed_jet(curve_, map_, t);
-      Vec3 r{j.p[0] - p[0], j.p[1] - p[1], j.p[2] - p[2]};
-      double slope = r[0] * j.d1[0] + r[1] * j.d1[1] + r[2] * j.d1[2];
-      double bend = j.d1[0] * j.d1[0] + j.d1[1] * j.d1[1] + j.d1[2] * j.d1[2] + r[0] * j.d2[0] + r[1] * j.d2[1] +
-                    r[2] * j.d2[2];
-      if (!(bend > 0)) return kNaN;  // not a nearest point
-      const double dt = -slope / bend;
-      if (!(t + dt > t_from && t + dt <= curve_.t1())) return kNaN;
-      if (std::fabs(dt) <= settled) {
-        for (int a = 0; a < 3; ++a) {
-          j.p[a] += dt * (j.d1[a] + 0.5 * dt * j.d2[a]);
-          j.d1[a] += dt * j.d2[a];
-        }
-        return t + dt;
+      switch (newton_step(p, t_from, settled, t, j)) {
+        case Step::settled: return t;
+        case Step::failed: return kNaN;
+        case Step::going: break;
       }
-      t += dt;
     }
     return kNaN;
   }
+
+  // One step of it at t with the jet j there: t moved (and where it settles, j moved with it).
+  static constexpr int kNewtonSteps = 8;
+  enum class Step { going, settled, failed };
+  Step newton_step(const Vec3& p, double t_from, double settled, double& t, geom::PlacedJet& j) const {
+    const Vec3 r{j.p[0] - p[0], j.p[1] - p[1], j.p[2] - p[2]};
+    const double slope = r[0] * j.d1[0] + r[1] * j.d1[1] + r[2] * j.d1[2];
+    const double bend =
+        j.d1[0] * j.d1[0] + j.d1[1] * j.d1[1] + j.d1[2] * j.d1[2] + r[0] * j.d2[0] + r[1] * j.d2[1] + r[2] * j.d2[2];
+    if (!(bend > 0)) return Step::failed;  // not a nearest point
+    const double dt = -slope / bend;
+    if (!(t + dt > t_from && t + dt <= curve_.t1())) return Step::failed;
+    t += dt;
+    if (std::fabs(dt) > settled) return Step::going;
+    for (int a = 0; a < 3; ++a) {
+      j.p[a] += dt * (j.d1[a] + 0.5 * dt * j.d2[a]);
+      j.d1[a] += dt * j.d2[a];
+    }
+    return Step::settled;
+  }
+
+  // The ends of moves first .. first + n - 1 projected by Newton's method together, each lane from
+  // where its move's length along the curve puts it (at t_per_mm from t_from), the jets of a step
+  // evaluated in one batch: projected[g] where lane g settled ahead of t_from.
+  void project_group(const std::vector<ContourMove>& contour, std::size_t first, std::size_t n, double t_from,
+                     double t_per_mm, std::array<Place, geom::Tape::kLanes>& to,
+                     std::array<bool, geom::Tape::kLanes>& projected) const {
+    constexpr std::size_t kGroup = geom::Tape::kLanes;
+    std::array<double, kGroup> settled, ts;
+    std::array<std::size_t, kGroup> lane;  // the lanes still going, in ts
+    std::array<geom::Curve::Jet, kGroup> jets;
+    std::size_t going = 0;
+    double along = t_from;
+    for (std::size_t g = 0; g < n; ++g) {
+      const double before = along;
+      along = std::min(curve_.t1(), along + contour[first + g].length * t_per_mm);
+      settled[g] = 1e-4 * (along - before);
+      to[g].t = along;
+      projected[g] = false;
+      if (settled[g] > 0) lane[going++] = g;
+    }
+    for (int step = 0; step < kNewtonSteps && going > 0; ++step) {
+      for (std::size_t l = 0; l < going; ++l) ts[l] = to[lane[l]].t;
+      curve_.jets(std::span(ts).first(going), std::span(jets).first(going));
+      std::size_t still = 0;
+      for (std::size_t l = 0; l < going; ++l) {
+        const std::size_t g = lane[l];
+        to[g].jet = geom::placed_jet(jets[l], map_);
+        switch (newton_step(contour[first + g].end, t_from, settled[g], to[g].t, to[g].jet)) {
+          case Step::settled: projected[g] = true; break;
+          case Step::failed: break;
+          case Step::going: lane[still++] = g; break;
+        }
+      }
+      going = still;
+    }
+  }
+
+  // how far along the curve the end of m may lie, from `from` (as project searches)
+  double reach(const Place& from, const ContourMove& m) const {
+    return from.t + (3 * m.length + 10 * o_.tol + 1e-3) / std::max(norm(from.jet.d1), 1e-12);
+  }
+  static double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
   // The worst point, the deviation along the contour, the path drawn: in parts of `run` moves on
   // all cores, each part's points placed after those of the parts before it, the parts' worst

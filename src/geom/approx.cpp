@@ -372,17 +372,23 @@ double confirmed(OnCurve on_curve, double ta, double h, const Maximum& model, do
   return v - 0.125 * (after - before) * (after - before) / bend;  // the parabola's vertex value
 }
 
-// The same for a segment from one curve jet: the distance across the segment, its slope and
-// bend there; the maximum where the slope's tangent line crosses zero, which must lie within a
-// thousandth of the step; its value by the parabola. NaN if not (or where the segment's nearest
+// Where a segment's hump on the model is confirmed by the curve's jet: true and its parameter t;
+// false where no jet is needed (the model's value stands at an end; too near one to bracket: NaN,
+// confirmed_without_jet).
+bool hump_on_curve(double ta, double h, const Maximum& model, double& t) {
+  t = ta + h * model.at;
+  return !(model.at == 0 || model.at == 1) && !(t - kConfirmStep * h < ta || t + kConfirmStep * h > ta + h);
+}
+double confirmed_without_jet(const Maximum& model) {
+  return model.at == 0 || model.at == 1 ? model.value : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The same for a segment from the curve's jet j there: the distance across the segment, its slope
+// and bend; the maximum where the slope's tangent line crosses zero, which must lie within a
+// thousandth of the step h; its value by the parabola. NaN if not (or where the segment's nearest
 // point is an end).
-double confirmed(const Curve& curve, const Placement& place, const Segment& segment, double ta, double h,
-                 const Maximum& model, double trust) {
+double confirmed(const PlacedJet& j, const Segment& segment, double h, const Maximum& model, double trust) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  if (model.at == 0 || model.at == 1) return model.value;
-  const double t = ta + h * model.at;
-  if (t - kConfirmStep * h < ta || t + kConfirmStep * h > ta + h) return kNaN;
-  const PlacedJet j = placed_jet(curve, place, t);
   const Vec3& ab = segment.vector();
   const double length2 = dot(ab, ab);
   if (!(length2 > 0)) return kNaN;
@@ -397,6 +403,13 @@ double confirmed(const Curve& curve, const Placement& place, const Segment& segm
   const double bend = (dot(w1, w1) + dot(w, w2) - slope * slope) / v;
   if (!(bend < 0) || std::fabs(slope) > -bend * kConfirmStep * h) return kNaN;
   return v - 0.5 * slope * slope / bend;
+}
+
+double confirmed(const Curve& curve, const Placement& place, const Segment& segment, double ta, double h,
+                 const Maximum& model, double trust) {
+  double t;
+  if (!hump_on_curve(ta, h, model, t)) return confirmed_without_jet(model);
+  return confirmed(placed_jet(curve, place, t), segment, h, model, trust);
 }
 
 // The curve's maximum over the quintic's humps (on_curve(hump): its value confirmed, or NaN):
@@ -439,6 +452,64 @@ Worst max_distance(const Curve& curve, const Placement& place, double ta, double
   auto on_curve = [&](double h, const Maximum& m) { return confirmed(curve, place, segment, ta, h, m, trust); };
   return confirmed_maximum(curve, place, ta, tb, a, [&](const Vec3& p) { return segment.distance(p); }, trust,
                            [&](double h) { return on_quintic(a, b, h, segment, kLineSamples); }, on_curve);
+}
+
+void max_distances(const Curve& curve, const Placement& place, std::span<const SegmentPiece> pieces, double trust,
+                   std::span<Worst> out) {
+  // each piece's humps on its quintic (the second where it comes within trust of the best, as
+  // confirmed() takes it), then the jets for all of them together
+  struct Hump {
+    std::size_t piece;
+    Maximum model;
+    double value;
+  };
+  std::vector<Hump> humps;
+  std::vector<double> ts;
+  std::vector<std::size_t> jet_of;  // humps[i]'s jet: jets[jet_of[i]], or none (npos)
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  humps.reserve(2 * pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const SegmentPiece& p = pieces[i];
+    const double h = p.tb - p.ta;
+    if (!(h > 0)) {
+      out[i] = {p.segment.distance(p.a.p), p.ta};
+      continue;
+    }
+    const ModelMaxima m = on_quintic(p.a, p.b, h, p.segment, kLineSamples);
+    humps.push_back({i, m.best, 0});
+    if (m.second.value >= m.best.value - trust) humps.push_back({i, m.second, 0});
+  }
+  jet_of.assign(humps.size(), kNone);
+  for (std::size_t k = 0; k < humps.size(); ++k) {
+    const SegmentPiece& p = pieces[humps[k].piece];
+    double t;
+    if (hump_on_curve(p.ta, p.tb - p.ta, humps[k].model, t)) {
+      jet_of[k] = ts.size();
+      ts.push_back(t);
+    } else {
+      humps[k].value = confirmed_without_jet(humps[k].model);
+    }
+  }
+  std::vector<Curve::Jet> jets(ts.size());
+  curve.jets(ts, jets);
+  for (std::size_t k = 0; k < humps.size(); ++k) {
+    if (jet_of[k] == kNone) continue;
+    const SegmentPiece& p = pieces[humps[k].piece];
+    humps[k].value = confirmed(placed_jet(jets[jet_of[k]], place), p.segment, p.tb - p.ta, humps[k].model, trust);
+  }
+  // the best hump, or the second where it is NaN or higher; the curve searched where NaN
+  for (std::size_t k = 0; k < humps.size();) {
+    const std::size_t i = humps[k].piece;
+    Maximum worst{humps[k].value, humps[k].model.at};
+    for (++k; k < humps.size() && humps[k].piece == i; ++k)
+      if (std::isnan(humps[k].value) || humps[k].value > worst.value) worst = {humps[k].value, humps[k].model.at};
+    const SegmentPiece& p = pieces[i];
+    if (std::isnan(worst.value)) {
+      out[i] = max_distance(curve, place, p.ta, p.tb, [&](const Vec3& q) { return p.segment.distance(q); });
+    } else {
+      out[i] = {worst.value, p.ta + (p.tb - p.ta) * worst.at};
+    }
+  }
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "geom/curve.hpp"
@@ -126,6 +127,7 @@ Worst max_distance(const Curve& curve, const Placement& place, double ta, double
 // The same for many points against one segment (its direction and length worked out once).
 class Segment {
 public:
+  Segment() : Segment(Vec3{0, 0, 0}, Vec3{0, 0, 0}) {}
   Segment(const Vec3& a, const Vec3& b) : a_(a), ab_{b[0] - a[0], b[1] - a[1], b[2] - a[2]} {
     const double len2 = ab_[0] * ab_[0] + ab_[1] * ab_[1] + ab_[2] * ab_[2];
     inv_len2_ = len2 > 0 ? 1 / len2 : 0;
@@ -144,6 +146,16 @@ private:
   Vec3 a_, ab_;
   double inv_len2_;
 };
+// max_distance to a segment for many pieces at once: the curve jets that confirm their humps are
+// evaluated together (Curve::jets), which may differ from one-point jets in the last bits.
+struct SegmentPiece {
+  double ta = 0, tb = 0;
+  PlacedJet a{}, b{};  // at ta and tb
+  Segment segment;
+};
+void max_distances(const Curve& curve, const Placement& place, std::span<const SegmentPiece> pieces, double trust,
+                   std::span<Worst> out);
+
 // Distance from p to where the ray from centre through p meets the line ab, in the plane (u, v).
 double radial_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& centre, const Plane& plane);
 // Distance to an arc in the plane from start to end about centre (radius varying linearly from
