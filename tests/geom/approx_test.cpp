@@ -108,6 +108,35 @@ TEST(Approx, SegmentDeviationByNewtonAgreesWithTheSearchOnTheCurve) {
   }
 }
 
+// Many segments at once (their confirming jets in batches) give what each gives alone, also where
+// the quintic misleads (the search on the curve) and for a piece of no length.
+TEST(Approx, SegmentDeviationsTogetherAgreeWithEachAlone) {
+  Curve spiral = expression("[5+2*t/360]*COS[t]", "[5+2*t/360]*SIN[t]", 0, 3600);
+  Curve wave = expression("t", "SIN[t]", 0, 540);
+  for (const Curve* c : {&spiral, &wave}) {
+    std::vector<SegmentPiece> pieces;
+    auto add = [&](double ta, double tb, double outward) {
+      PlacedJet ja = placed_jet(*c, kSame, ta), jb = placed_jet(*c, kSame, tb);
+      pieces.push_back({ta, tb, ja, jb, Segment(Vec3{ja.p[0] * outward, ja.p[1] * outward, 0}, Vec3{jb.p[0], jb.p[1], 0})});
+    };
+    for (double ta = 3; ta < 500; ta += 7.3) add(ta, ta + 2.5 + 0.01 * ta, 1.0001);
+    add(10, 10, 1);  // no length
+    if (c == &wave) add(0, 540, 1);  // one and a half waves: the search on the curve
+    std::vector<Worst> together(pieces.size());
+    max_distances(*c, kSame, pieces, 1e-9, together);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const SegmentPiece& p = pieces[i];
+      const Worst alone = p.tb > p.ta ? max_distance(*c, kSame, p.ta, p.tb, p.a, p.b, p.segment, 1e-9)
+                                      : Worst{p.segment.distance(p.a.p), p.ta};
+      EXPECT_NEAR(together[i].distance, alone.distance, 1e-12 + 1e-9 * alone.distance) << i;
+      EXPECT_NEAR(together[i].t, alone.t, 1e-6 * (p.tb - p.ta) + 1e-12) << i;
+    }
+    if (c == &wave) {
+      EXPECT_NEAR(together.back().distance, 1, 1e-12) << "a crest of the wave";
+    }
+  }
+}
+
 TEST(Approx, DeviationFromJetsSearchesTheCurveWhereTheQuinticMisleads) {
   // one and a half waves of a sine in one step: the ends' jets cannot see the crests (height 1)
   Curve wave = expression("t", "SIN[t]", 0, 540);
