@@ -784,20 +784,40 @@ struct Prediction {
     return ts[i - 1] + f_in * (ts[i] - ts[i - 1]);
   }
 };
+// 1 / step_guess at n points from their first and second derivatives (d[0..2][i], d[3..5][i]),
+// on vectors: the same operations as outward() and step_guess().
+NCURVE_VECTOR_CLONES void step_densities(std::size_t n, const double* const* d, double h, double range, double* out) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ax = d[0][i], ay = d[1][i], az = d[2][i], bx = d[3][i], by = d[4][i], bz = d[5][i];
+    const double s2 = ax * ax + ay * ay + az * az;
+    const double along = (bx * ax + by * ay + bz * az) / s2;
+    const double px = bx - ax * along, py = by - ay * along, pz = bz - az * along;
+    const double k = std::sqrt(px * px + py * py + pz * pz) / s2;
+    const double speed = std::sqrt(s2);
+    const double guess = std::sqrt(8 * h / k) / speed;  // in every lane, then chosen: no branch
+    out[i] = 1 / ((k > 1e-12) & (speed > 0) & (guess < range) ? guess : range);
+  }
+}
+
 Prediction predicted_segments(const Fit& f, bool band) {
+  constexpr std::size_t kPoints = Prediction::kSamples + 1;
   const double t0 = f.curve.t0(), t1 = f.curve.t1(), h = f.tol + band_offset(f, band);
   Prediction p;
-  p.ts.resize(Prediction::kSamples + 1);
-  p.segments.assign(Prediction::kSamples + 1, 0.0);
-  for (std::size_t i = 0; i < p.ts.size(); ++i) p.ts[i] = t0 + (t1 - t0) * static_cast<double>(i) / Prediction::kSamples;
-  std::vector<Curve::Jet> jets(p.ts.size());
+  p.ts.resize(kPoints);
+  p.segments.assign(kPoints, 0.0);
+  for (std::size_t i = 0; i < kPoints; ++i) p.ts[i] = t0 + (t1 - t0) * static_cast<double>(i) / Prediction::kSamples;
+  std::vector<Curve::Jet> jets(kPoints);
   f.curve.jets(p.ts, jets);
-  double density_before = 0;
-  for (std::size_t i = 0; i < p.ts.size(); ++i) {
-    const double density = 1 / step_guess(f, placed_jet(jets[i], f.place), h);
-    if (i > 0) p.segments[i] = p.segments[i - 1] + 0.5 * (density + density_before) * (p.ts[i] - p.ts[i - 1]);
-    density_before = density;
+  std::vector<double> derivatives(6 * kPoints), density(kPoints);
+  const double* d[6];
+  for (std::size_t c = 0; c < 6; ++c) d[c] = derivatives.data() + c * kPoints;
+  for (std::size_t i = 0; i < kPoints; ++i) {
+    const PlacedJet l = placed_jet(jets[i], f.place);
+    for (std::size_t a = 0; a < 3; ++a) derivatives[a * kPoints + i] = l.d1[a], derivatives[(3 + a) * kPoints + i] = l.d2[a];
   }
+  step_densities(kPoints, d, h, t1 - t0, density.data());
+  for (std::size_t i = 1; i < kPoints; ++i)
+    p.segments[i] = p.segments[i - 1] + 0.5 * (density[i] + density[i - 1]) * (p.ts[i] - p.ts[i - 1]);
   return p;
 }
 
