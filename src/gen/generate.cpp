@@ -203,10 +203,10 @@ public:
   Stats measure(const std::vector<ContourMove>& contour, std::vector<Measured> measured = {},
                 const std::vector<Place>& ahead_start = {}, const std::vector<Place>& ahead_end = {}) const {
     if (contour.empty()) throw std::runtime_error("no contour to measure");
-    // a short contour in shorter runs, so that it too is measured on all cores (the runs depend
-    // on its length alone, so that the figures do not depend on the machine)
+    // a short contour in four runs (at least kShortRun long), so that it too is measured on all
+    // cores (the runs depend on its length alone, so that the figures do not depend on the machine)
     const std::size_t moves = contour.size();
-    const std::size_t run = moves <= kRun ? std::clamp(moves / 4, kShortRun, kRun) : kRun;  // none ahead
+    const std::size_t run = moves <= kRun ? std::clamp((moves + 3) / 4, kShortRun, kRun) : kRun;  // none ahead
     const std::size_t runs = (moves + run - 1) / run;
     measured.resize(moves);
     std::vector<Place> start(runs), end(runs);
