@@ -160,7 +160,7 @@ public:
     for (std::size_t first = k * run; first < stop; first += kGroup) {
       const std::size_t n = std::min(kGroup, stop - first);
       if (!(t_per_mm > 0)) t_per_mm = 1 / std::max(norm(from.jet.d1), 1e-12);
-      project_group(contour, first, n, from.t, t_per_mm, to, projected);
+      project_group(contour, first, n, from, t_per_mm, to, projected);
       lines.clear();
       line_move.clear();
       for (std::size_t g = 0; g < n; ++g) {
@@ -297,9 +297,10 @@ private:
   }
 
   // The ends of moves first .. first + n - 1 projected by Newton's method together, each lane from
-  // where its move's length along the curve puts it (at t_per_mm from t_from), the jets of a step
-  // evaluated in one batch: projected[g] where lane g settled ahead of t_from.
-  void project_group(const std::vector<ContourMove>& contour, std::size_t first, std::size_t n, double t_from,
+  // where the moves' lengths up to it reach along the curve from `from` (its speed changing as it
+  // does there; else at t_per_mm), the jets of a step evaluated in one batch: projected[g] where
+  // lane g settled ahead of from.t.
+  void project_group(const std::vector<ContourMove>& contour, std::size_t first, std::size_t n, const Place& from,
                      double t_per_mm, std::array<Place, geom::Tape::kLanes>& to,
                      std::array<bool, geom::Tape::kLanes>& projected) const {
     constexpr std::size_t kGroup = geom::Tape::kLanes;
@@ -307,10 +308,16 @@ private:
     std::array<std::size_t, kGroup> lane;  // the lanes still going, in ts
     std::array<geom::Curve::Jet, kGroup> jets;
     std::size_t going = 0;
-    double along = t_from;
+    const double t_from = from.t;
+    const Vec3 &d1 = from.jet.d1, &d2 = from.jet.d2;
+    const double speed = norm(d1), half_gain = 0.5 * (d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2]) / speed;
+    double along = t_from, length = 0;
     for (std::size_t g = 0; g < n; ++g) {
       const double before = along;
-      along = std::min(curve_.t1(), along + contour[first + g].length * t_per_mm);
+      length += contour[first + g].length;
+      const double reach = speed * speed + 4 * half_gain * length;  // speed dt + half_gain dt^2 = length
+      const double step = speed > 0 && reach >= 0 ? 2 * length / (speed + std::sqrt(reach)) : length * t_per_mm;
+      along = std::min(curve_.t1(), t_from + step);
       settled[g] = 1e-4 * (along - before);
       to[g].t = along;
       projected[g] = false;
