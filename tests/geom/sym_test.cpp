@@ -114,7 +114,7 @@ TEST(Sym, DepthLimitedTextRunsOnTheControl) {
   std::string prog = "#100=12.5\n";
   for (const auto& [var, s] : temps) {
     EXPECT_LE(bracket_depth(s), 5);
-    prog += "#" + std::to_string(var) + "=" + to_macro(s) + "\n";
+    prog += fmt::format("#{}={}\n", var, to_macro(s));
   }
   prog += "#149=" + to_macro(limited) + "\nM30\n";
   auto r = test::run(prog);
