@@ -465,7 +465,7 @@ void max_distances(const Curve& curve, const Placement& place, std::span<const S
   };
   std::vector<Hump> humps;
   std::vector<double> ts;
-  std::vector<std::size_t> jet_of;  // humps[i]'s jet: jets[jet_of[i]], or none (npos)
+  std::vector<std::size_t> jet_of;  // humps[i]'s jet: jets[jet_of[i]], or none (kNone)
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   humps.reserve(2 * pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) {
@@ -844,9 +844,10 @@ constexpr double kBothWaysSegments = 16;
 // first vertex past `middle`: forwards F0 = t0 .. FK, backwards B0 = t1 .. BJ. Where the longest
 // step from a point reaches no less from a later point, k plus the fewest backward steps that reach
 // back to Fk is the fewest segments for every k; so F0 .. F(K-1), one segment to the first Bj at or
-// before FK, then on to B0, is the fewest. That segment is measured; beyond the tolerance (the
-// rounding of vertices can break the rule), the forward fit goes on to the end instead. The result
-// depends on the curve alone, not on the threads.
+// before FK, then on to B0, is the fewest. Neither greedy fit is exact (the rounding of vertices
+// breaks the rule, steps are searched to a fraction of a per cent), so the joins of one segment
+// fewer are tried first; a join is taken where it is within the tolerance, else the forward fit
+// goes on to the end. The result depends on the curve alone, not on the threads.
 Path lines_both_ways(const Fit& f, bool band, bool radial, double middle, std::size_t expected) {
   const Curve back_curve = f.curve.reversed();
   const Fit back{back_curve, f.place, f.grid,      f.plane,        f.tol,          f.centre,
@@ -888,8 +889,7 @@ Path lines_both_ways(const Fit& f, bool band, bool radial, double middle, std::s
   while (B[j] > reached) ++j;
   std::size_t k = K - 1;
   while (k > 0 && F[k] >= B[j]) --k;
-  // Joins of one segment fewer (each greedy step is only searched to kStepRel, and rounding breaks
-  // the rule), shortest first; then the join the rule gives.
+  // the joins of one segment fewer, shortest first, then the join the rule gives
   struct Join {
     std::size_t k, j;
   };
