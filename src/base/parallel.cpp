@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -67,6 +68,14 @@ public:
 
   // false if the pool is busy with another job
   bool run(Job& job) {
+    if (!start(job)) return false;
+    finish(job);
+    return true;
+  }
+
+  // The job offered to the workers, the caller free to go on (false if the pool is busy); the
+  // pool stays busy until finish().
+  bool start(Job& job) {
     if (busy_.exchange(true)) return false;
     {
       std::lock_guard lock(mutex_);
@@ -74,6 +83,11 @@ public:
       ++generation_;
     }
     wake_.notify_all();
+    return true;
+  }
+
+  // The caller takes the items no worker has, then waits for the workers' last.
+  void finish(Job& job) {
     job.run();
     int joined = 0;
     {
@@ -94,7 +108,11 @@ public:
       }
     }
     busy_ = false;
-    return true;
+  }
+
+  static Pool& shared() {
+    static Pool pool;
+    return pool;
   }
 
 private:
@@ -150,12 +168,39 @@ void for_each_on_cores(std::size_t n, void (*work)(void*, std::size_t), void* co
   Job job{work, context, n, {}, {}};
   job.errors.resize(n);
   if (n > 1 && cores() > 1) {
-    static Pool pool;
-    if (!pool.run(job)) job.run();
+    if (!Pool::shared().run(job)) job.run();
   } else {
     job.run();
   }
   for (auto& e : job.errors)
+    if (e) std::rethrow_exception(e);
+}
+
+struct Beside::State {
+  State(std::size_t n, void (*work)(void*, std::size_t), void* context) : job{work, context, n, {}, {}} {}
+  Job job;
+  bool started = false;  // offered to the pool (else run at once)
+  bool waited = false;
+};
+
+Beside::Beside(std::size_t n, void (*work)(void*, std::size_t), void* context)
+    : state_(std::make_unique<State>(n, work, context)) {
+  State& s = *state_;
+  s.job.errors.resize(n);
+  s.started = n > 0 && cores() > 1 && Pool::shared().start(s.job);
+  if (!s.started) s.job.run();
+}
+
+Beside::~Beside() {
+  if (state_->started && !state_->waited) Pool::shared().finish(state_->job);
+}
+
+void Beside::wait() {
+  State& s = *state_;
+  if (s.waited) return;
+  s.waited = true;
+  if (s.started) Pool::shared().finish(s.job);
+  for (auto& e : s.job.errors)
     if (e) std::rethrow_exception(e);
 }
 

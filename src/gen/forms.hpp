@@ -1,5 +1,6 @@
 // The program forms, each writing the text and the lines of its contour for the round trip.
 #pragma once
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -20,11 +21,14 @@ struct Context {
   geom::Vec3 start, end;  // snapped machine coordinates of the curve's ends
 };
 
+class Speculation;  // generate.cpp
+
 struct Emitted {
   std::string text;
   std::uint32_t first = 0, last = 0;  // the contour's lines in the text
   std::vector<std::pair<std::string, double>> parameters;  // control parameters the program needs
   std::string macro;  // cycle: the macro program alone, as a tape for the control's memory
+  std::shared_ptr<Speculation> speculation;  // expanded lines: the path measured meanwhile
 };
 
 std::string arc_words(const Context& c, const geom::Piece& p);  // I J (K) of an arc

@@ -6,9 +6,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <condition_variable>
+#include <cstring>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -199,18 +202,27 @@ public:
     return from;
   }
 
+  // The moves of a run: a short contour in four runs (at least kShortRun long), so that it too is
+  // measured on all cores (the runs depend on its length alone, so that the figures do not depend
+  // on the machine).
+  static std::size_t run_of(std::size_t moves) {
+    return moves <= kRun ? std::clamp((moves + 3) / 4, kShortRun, kRun) : kRun;
+  }
+
   // The whole contour: runs that `ahead` measured from the start found here are taken as they are.
+  // With starts_known, ahead_start are where every run starts (found for these moves already).
   Stats measure(const std::vector<ContourMove>& contour, std::vector<Measured> measured = {},
-                const std::vector<Place>& ahead_start = {}, const std::vector<Place>& ahead_end = {}) const {
+                const std::vector<Place>& ahead_start = {}, const std::vector<Place>& ahead_end = {},
+                bool starts_known = false) const {
     if (contour.empty()) throw std::runtime_error("no contour to measure");
-    // a short contour in four runs (at least kShortRun long), so that it too is measured on all
-    // cores (the runs depend on its length alone, so that the figures do not depend on the machine)
     const std::size_t moves = contour.size();
-    const std::size_t run = moves <= kRun ? std::clamp((moves + 3) / 4, kShortRun, kRun) : kRun;  // none ahead
+    const std::size_t run = run_of(moves);
     const std::size_t runs = (moves + run - 1) / run;
     measured.resize(moves);
     std::vector<Place> start(runs), end(runs);
-    for (std::size_t k = 0; k < runs; ++k) start[k] = run_start(contour, k, k > 0 ? start[k - 1] : Place{}, run);
+    if (starts_known) start = ahead_start;
+    else
+      for (std::size_t k = 0; k < runs; ++k) start[k] = run_start(contour, k, k > 0 ? start[k - 1] : Place{}, run);
     auto ahead = [&](std::size_t k) { return k < ahead_end.size() && ahead_start[k].t == start[k].t; };
     std::vector<std::size_t> left;
     for (std::size_t k = 0; k < runs; ++k) {
@@ -487,10 +499,105 @@ private:
   std::thread worker_;
 };
 
+bool bitwise_equal(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.data(), sizeof(Vec3)) == 0; }
+
 }  // namespace
+
+namespace detail {
+
+// The fit's path measured while its program is emitted, read and run: each coordinate as the
+// control will read the number written for it (machine::round_to_increment), lengths as the
+// interpreter takes them. Its runs are measured by the pool's workers meanwhile and, once the
+// moves have come, by all cores. The round trip takes them where the interpreter's moves are these
+// bit for bit (the same moves in the same runs give the same figures); else it measures its moves
+// itself.
+class Speculation {
+public:
+  Speculation(const geom::Curve& curve, const Options& o, const std::vector<geom::Piece>& pieces)
+      : measurer_(curve, o, true), moves_(as_read(pieces, machine::increments_per_mm(o.profile))),
+        run_(Measurer::run_of(moves_.size())) {
+    const std::size_t runs = (moves_.size() + run_ - 1) / run_;
+    starts_.resize(runs);
+    ends_.resize(runs);
+    measured_.resize(moves_.size());
+    beside_.emplace(runs, work_);
+  }
+
+  // The figures of `moves` if they are the ones measured.
+  std::optional<Stats> take(const std::vector<ContourMove>& moves) {
+    try {
+      beside_->wait();
+    } catch (const std::exception&) {
+      return std::nullopt;  // the round trip measures the moves again and reports it
+    }
+    if (moves.size() != moves_.size()) return std::nullopt;
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+      const ContourMove &m = moves[i], &s = moves_[i];
+      if (m.arc || !bitwise_equal(m.start, s.start) || !bitwise_equal(m.end, s.end) ||
+          std::memcmp(&m.length, &s.length, sizeof(double)) != 0)
+        return std::nullopt;
+    }
+    Stats s = measurer_.measure(moves, std::move(measured_), starts_, ends_, true);  // the same moves, the same starts
+    s.measured_beside = true;
+    return s;
+  }
+
+private:
+  static std::vector<ContourMove> as_read(const std::vector<geom::Piece>& pieces, double per_unit) {
+    auto read = [&](const Vec3& p) {
+      return Vec3{machine::round_to_increment(p[0], per_unit), machine::round_to_increment(p[1], per_unit),
+                  machine::round_to_increment(p[2], per_unit)};
+    };
+    std::vector<ContourMove> moves(pieces.size());
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      ContourMove& m = moves[i];
+      m.start = read(pieces[i].start);
+      m.end = read(pieces[i].end);
+      double sq = 0;  // as Interpreter::linear sums it
+      for (int a = 0; a < 3; ++a) sq += (m.end[a] - m.start[a]) * (m.end[a] - m.start[a]);
+      m.length = std::sqrt(sq);
+    }
+    return moves;
+  }
+
+  // run k; run 0 first finds where every run starts (in order), which the others wait for
+  void measure_run(std::size_t k) {
+    if (k == 0) {
+      struct Found {  // also where finding them throws: the others then measure from nowhere, in vain
+        std::atomic<bool>& flag;
+        ~Found() { flag.store(true, std::memory_order_release); }
+      } found{starts_found_};
+      for (std::size_t r = 0; r < starts_.size(); ++r)
+        starts_[r] = measurer_.run_start(moves_, r, r > 0 ? starts_[r - 1] : Place{}, run_);
+    } else {
+      while (!starts_found_.load(std::memory_order_acquire)) std::this_thread::yield();
+    }
+    ends_[k] = measurer_.measure_run(moves_, k, starts_[k], moves_.size(), measured_, run_);
+  }
+
+  Measurer measurer_;
+  std::vector<ContourMove> moves_;
+  std::size_t run_;
+  std::vector<Place> starts_, ends_;
+  std::atomic<bool> starts_found_{false};
+  std::vector<Measured> measured_;
+  std::function<void(std::size_t)> work_ = [this](std::size_t k) { measure_run(k); };
+  std::optional<base::Beside> beside_;  // last: waited for before the rest goes
+};
+
+// The round trip, taking the measurement of a speculation (may be null) where it fits.
+Stats round_trip(const std::string& text, const geom::Curve& curve, const Options& o, std::uint32_t first_line,
+                 std::uint32_t last_line, Speculation* speculation);
+
+}  // namespace detail
 
 Stats round_trip(const std::string& text, const geom::Curve& curve, const Options& o, std::uint32_t first_line,
                  std::uint32_t last_line) {
+  return detail::round_trip(text, curve, o, first_line, last_line, nullptr);
+}
+
+Stats detail::round_trip(const std::string& text, const geom::Curve& curve, const Options& o,
+                         std::uint32_t first_line, std::uint32_t last_line, Speculation* speculation) {
   machine::ProgramLibrary lib(o.profile.parse_options());
   lib.add_text("<generated>", text, true);
   // The contour's moves, one group per pass: a feed move outside the contour (the plunge) ends one.
@@ -546,8 +653,12 @@ Stats round_trip(const std::string& text, const geom::Curve& curve, const Option
     throw std::runtime_error("the generated program cuts its contour more than once");
   // the last pass is the finished contour
   std::vector<Stats> measured;
+  std::optional<Stats> speculated;
+  if (speculation && keep.passes.size() == 1 && !keep.passes[0].ahead) speculated = speculation->take(keep.passes[0].moves);
   for (Pass& pass : keep.passes) {
-    if (pass.ahead)
+    if (speculated)
+      measured.push_back(std::move(*speculated));
+    else if (pass.ahead)
       measured.push_back(pass.measurer->measure(pass.moves, std::move(pass.ahead->measured()), pass.ahead->starts(),
                                                 pass.ahead->ends()));
     else
@@ -585,6 +696,7 @@ namespace {
 Emitted expanded_or_arcs(const Context& c) {
   const Options& o = c.o;
   geom::Path path;
+  std::shared_ptr<Speculation> speculation;
   std::string method;
   if (o.form == Form::arcs) {
     if (c.with_z) throw std::runtime_error("arcs need a plane curve; this one rises in Z (use expanded or macro)");
@@ -592,6 +704,8 @@ Emitted expanded_or_arcs(const Context& c) {
     method = "biarcs";
   } else {
     path = geom::fit_lines(c.fit, o.lines);
+    if (!is_lathe(o) && !depth_passes(o) && path.pieces.size() <= Measurer::kRun && base::cores() > 1)
+      speculation = std::make_shared<Speculation>(c.curve, o, path.pieces);
     method = o.lines == geom::LineMethod::equal_step    ? "equal parameter step"
              : o.lines == geom::LineMethod::equal_chord ? "equal chord"
              : o.lines == geom::LineMethod::equal_error ? "equal error, tolerance band"
@@ -634,6 +748,7 @@ Emitted expanded_or_arcs(const Context& c) {
   e.last = w.line;
   end_program(w, c);
   e.text = std::move(w.text);
+  e.speculation = std::move(speculation);
   return e;
 }
 
@@ -778,7 +893,7 @@ Result generate(const geom::Curve& contour, const Options& o) {
   r.macro = std::move(e.macro);
   Options on_control = o;
   for (const auto& [key, value] : r.parameters) machine::set_parameter(on_control.profile, key, value);
-  r.stats = round_trip(r.text, curve, on_control, e.first, e.last);
+  r.stats = detail::round_trip(r.text, curve, on_control, e.first, e.last, e.speculation.get());
   r.cutter_centre = std::move(cutter_centre);
   r.within_tolerance = r.stats.max_deviation <= o.tol;
   return r;

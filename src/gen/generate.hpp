@@ -56,6 +56,9 @@ struct Stats {
   std::vector<std::size_t> path_block;  // for each point after the first, the move that reaches it
   std::vector<std::pair<double, double>> deviation;  // (t, mm)
   std::size_t passes = 1;    // depth passes measured (all within max_deviation; the rest is the last)
+  // the moves were the fit's path as the control reads it back, measured while the program was
+  // emitted and run (the same figures as measuring them afterwards)
+  bool measured_beside = false;
 };
 
 struct Result {

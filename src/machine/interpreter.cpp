@@ -46,10 +46,17 @@ bool scaled_address(char c) {  // dimension words read in least input increments
 }
 }  // namespace
 
+double increments_per_mm(const MachineProfile& p) { return std::round(1 / p.increment); }
+
+double round_to_increment(double value, double per_unit) {
+  const double steps = value * per_unit;
+  return (steps < 0 ? -std::floor(-steps + 0.5) : std::floor(steps + 0.5)) / per_unit;
+}
+
 Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options)
     : profile_(profile), library_(library), options_(std::move(options)) {
   for (char a : profile_.axes) has_axis_[axis_index(a)] = true;
-  per_unit_mm_ = std::round(1 / profile_.increment);
+  per_unit_mm_ = increments_per_mm(profile_);
   per_unit_inch_ = std::round(10 / profile_.increment);
   eval_options_.atan_signed = profile_.atan_signed;
   eval_options_.atan_comma = profile_.control == Control::fanuc_30i;
@@ -368,9 +375,8 @@ double Interpreter::as_written(double value, bool literal, bool decimal_point) c
 }
 
 double Interpreter::dimension_raw(const Cmd& c) const {
-  double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
-  double steps = as_written(c.value, c.literal, c.decimal_point) * per_unit;
-  return (steps < 0 ? -std::floor(-steps + 0.5) : std::floor(steps + 0.5)) / per_unit;
+  const double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
+  return round_to_increment(as_written(c.value, c.literal, c.decimal_point), per_unit);
 }
 
 double Interpreter::dimension(const Cmd& c) const { return inch_ ? dimension_raw(c) * 25.4 : dimension_raw(c); }

@@ -31,6 +31,12 @@ struct RunStats {
   AxisVector min{}, max{};  // of the motion end points and arc extremes, work coordinates
 };
 
+// Least input increments per mm of the profile, as the control counts them.
+double increments_per_mm(const MachineProfile& p);
+// A dimension as the control takes it: a whole number of increments (halves away from zero), with
+// per_unit increments a unit.
+double round_to_increment(double value, double per_unit);
+
 struct RunResult {
   bool ok() const { return !alarm.has_value(); }
   std::optional<nc::Diagnostic> alarm;

@@ -679,6 +679,44 @@ TEST(Gen, RoundTripMeasuredWhileTheProgramRunsIsMeasuredAfterwards) {
   EXPECT_NEAR(after.max_deviation, r.stats.max_deviation, 1e-12);
 }
 
+// An expanded program's contour is measured while the program is emitted and run, from the fit's
+// path as the control reads it back; the figures are those of the interpreter's own moves
+// measured afterwards, bit for bit.
+TEST(Gen, RoundTripMeasuredBesideTheEmittingIsTheInterpretersMovesMeasured) {
+  struct Case {
+    const char* name;
+    double tol;
+    double increment;
+    double tool_radius;
+  };
+  for (const Case& k : {Case{"spiral", 0.001, 0.0001, 0}, Case{"ellipse", 0.002, 0.001, 0},
+                        Case{"spiral", 0.005, 0.001, 0.5}}) {
+    const geom::Curve c = curve(k.name);
+    gen::Options o = options(gen::Form::expanded, k.tol);
+    o.profile.increment = k.increment;
+    o.tool_radius = k.tool_radius;
+    const gen::Result r = gen::generate(c, o);
+    const std::string what = fmt::format("{} at {}", k.name, k.tol);
+    EXPECT_TRUE(r.stats.measured_beside) << what;
+    // the contour: the feed moves at the cutting depth
+    std::vector<gen::ContourMove> moves;
+    for (const machine::Move& m : test::run(r.text, o.profile).moves)
+      if (m.kind == machine::MoveKind::line && m.start[2] == -o.depth && m.end[2] == -o.depth)
+        moves.push_back(gen::ContourMove::of(m));
+    const geom::Curve& path_curve = r.cutter_centre ? *r.cutter_centre : c;
+    const gen::Stats after = gen::measure(moves, path_curve, o, true);
+    ASSERT_EQ(after.deviation.size(), r.stats.deviation.size()) << what;
+    for (std::size_t i = 0; i < after.deviation.size(); ++i) {
+      ASSERT_EQ(after.deviation[i], r.stats.deviation[i]) << what << " move " << i;
+      ASSERT_EQ(after.path[i + 1], r.stats.path[i + 1]) << what << " move " << i;
+    }
+    EXPECT_EQ(after.max_deviation, r.stats.max_deviation) << what;
+    EXPECT_EQ(after.worst_t, r.stats.worst_t) << what;
+    EXPECT_EQ(after.path_length, r.stats.path_length) << what;
+    EXPECT_EQ(after.start_t, r.stats.start_t) << what;
+  }
+}
+
 TEST(Gen, RoundTripDeviationIsTheBruteForceDistance) {
   // The round trip's maximum deviation (Newton projections, the quintic between them, confirmed
   // on the curve) against brute force: the curve sampled densely, each sample's distance to the
