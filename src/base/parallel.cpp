@@ -31,6 +31,21 @@ void relax() {
 #endif
 }
 
+// Looks for done() for up to a millisecond, giving way to other threads now and then (waking a
+// sleeping thread takes tens of microseconds); whether it came.
+template <class Done>
+bool look_for(Done done) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
+  for (int spin = 1; !done(); ++spin) {
+    relax();
+    if (spin % 256 == 0) {
+      if (std::chrono::steady_clock::now() > until) return false;
+      std::this_thread::yield();
+    }
+  }
+  return true;
+}
+
 struct Job {
   void (*work)(void*, std::size_t);
   void* context;
@@ -98,14 +113,9 @@ public:
     }
     // they are on their last item: look for a while, as the workers do, then sleep
     auto all_done = [&] { return job.finished.load(std::memory_order_acquire) == joined; };
-    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
-    for (int spin = 1; !all_done(); ++spin) {
-      relax();
-      if (spin % 256 == 0 && std::chrono::steady_clock::now() > until) {
-        std::unique_lock lock(mutex_);
-        done_.wait(lock, all_done);
-        break;
-      }
+    if (!look_for(all_done)) {
+      std::unique_lock lock(mutex_);
+      done_.wait(lock, all_done);
     }
     busy_ = false;
   }
@@ -117,23 +127,13 @@ public:
 
 private:
   // Jobs come in bursts (the phases of one generated program): the first kLooking workers look
-  // for the next for a millisecond before sleeping (waking takes tens of microseconds), giving
-  // way to other threads; the others, on a machine with many cores, sleep at once.
+  // for the next before sleeping; the others, on a machine with many cores, sleep at once.
   static constexpr std::size_t kLooking = 3;
 
   void serve(bool looking) {
     std::uint64_t seen = 0;
     for (;;) {
-      if (looking) {
-        const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1);
-        for (int spin = 1; generation_.load(std::memory_order_acquire) == seen; ++spin) {
-          relax();
-          if (spin % 256 == 0) {
-            if (std::chrono::steady_clock::now() > until) break;
-            std::this_thread::yield();
-          }
-        }
-      }
+      if (looking) look_for([&] { return generation_.load(std::memory_order_acquire) != seen; });
       Job* job = nullptr;
       {
         std::unique_lock lock(mutex_);

@@ -125,14 +125,8 @@ public:
       for (std::size_t i = (k - 1) * run; i < k * run; ++i) length += contour[i].length;
       const Vec3& p = contour[k * run - 1].end;
       const double near = 10 * o_.tol + 1e-3;
-      // the step in t that covers `length` at a speed changing as it does at the start
-      const Vec3 &d1 = before.jet.d1, &d2 = before.jet.d2;
-      const double speed = std::sqrt(d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2]);
-      const double half_gain = 0.5 * (d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2]) / speed;
-      const double reach = speed * speed + 4 * half_gain * length;
       Place found;
-      if (speed > 0 && reach >= 0) {
-        const double step = 2 * length / (speed + std::sqrt(reach));
+      if (const double step = step_along(before.jet, length); !std::isnan(step)) {
         found.t = project_newton(p, before.t, std::min(curve_.t1(), before.t + step), found.jet);
         if (!std::isnan(found.t) && distance(p, found.jet.p) <= near) return found;
       }
@@ -179,7 +173,7 @@ public:
         } else if (!(projected[g] && end.t > from.t && end.t <= reach(from, m))) {
           end.t = project_newton(piece.end, from.t, std::min(t_last, from.t + m.length * t_per_mm), end.jet);
           if (std::isnan(end.t)) {
-            end.t = project(piece.end, from.t, 3 * m.length + 10 * o_.tol + 1e-3);
+            end.t = project(piece.end, from.t, search_reach(m));
             end.jet = geom::placed_jet(curve_, map_, end.t);
           }
         }
@@ -321,15 +315,12 @@ private:
     std::array<geom::Curve::Jet, kGroup> jets;
     std::size_t going = 0;
     const double t_from = from.t;
-    const Vec3 &d1 = from.jet.d1, &d2 = from.jet.d2;
-    const double speed = norm(d1), half_gain = 0.5 * (d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2]) / speed;
     double along = t_from, length = 0;
     for (std::size_t g = 0; g < n; ++g) {
       const double before = along;
       length += contour[first + g].length;
-      const double reach = speed * speed + 4 * half_gain * length;  // speed dt + half_gain dt^2 = length
-      const double step = speed > 0 && reach >= 0 ? 2 * length / (speed + std::sqrt(reach)) : length * t_per_mm;
-      along = std::min(curve_.t1(), t_from + step);
+      const double step = step_along(from.jet, length);
+      along = std::min(curve_.t1(), t_from + (std::isnan(step) ? length * t_per_mm : step));
       settled[g] = 1e-4 * (along - before);
       to[g].t = along;
       projected[g] = false;
@@ -354,7 +345,17 @@ private:
 
   // how far along the curve the end of m may lie, from `from` (as project searches)
   double reach(const Place& from, const ContourMove& m) const {
-    return from.t + (3 * m.length + 10 * o_.tol + 1e-3) / std::max(norm(from.jet.d1), 1e-12);
+    return from.t + search_reach(m) / std::max(norm(from.jet.d1), 1e-12);
+  }
+  // the length of curve searched for the end of m when Newton's method does not settle
+  double search_reach(const ContourMove& m) const { return 3 * m.length + 10 * o_.tol + 1e-3; }
+  // The parameter step that covers `length` from j, the speed changing as it does there
+  // (speed dt + half_gain dt^2 = length); NaN where that has no root.
+  static double step_along(const geom::PlacedJet& j, double length) {
+    const Vec3 &d1 = j.d1, &d2 = j.d2;
+    const double speed = norm(d1), half_gain = 0.5 * (d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2]) / speed;
+    const double reach = speed * speed + 4 * half_gain * length;
+    return speed > 0 && reach >= 0 ? 2 * length / (speed + std::sqrt(reach)) : std::numeric_limits<double>::quiet_NaN();
   }
   static double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
@@ -553,9 +554,7 @@ private:
       ContourMove& m = moves[i];
       m.start = read(pieces[i].start);
       m.end = read(pieces[i].end);
-      double sq = 0;  // as Interpreter::linear sums it
-      for (int a = 0; a < 3; ++a) sq += (m.end[a] - m.start[a]) * (m.end[a] - m.start[a]);
-      m.length = std::sqrt(sq);
+      m.length = machine::line_length(m.start.data(), m.end.data());
     }
     return moves;
   }

@@ -36,6 +36,8 @@ double increments_per_mm(const MachineProfile& p);
 // A dimension as the control takes it: a whole number of increments (halves away from zero), with
 // per_unit increments a unit.
 double round_to_increment(double value, double per_unit);
+// The length of a line move from `from` to `to` (X, Y and Z) as a Move gives it.
+double line_length(const double* from, const double* to);
 
 struct RunResult {
   bool ok() const { return !alarm.has_value(); }

@@ -235,9 +235,7 @@ void Interpreter::linear(MoveKind kind, const AxisVector& target) {
   m.start = pos_;
   m.end = target;
   m.plane = static_cast<std::uint8_t>(plane_);
-  double sq = 0;
-  for (int a = 0; a < 3; ++a) sq += (target[a] - pos_[a]) * (target[a] - pos_[a]);
-  m.length = std::sqrt(sq);
+  m.length = line_length(pos_.data(), target.data());
   if (kind == MoveKind::line) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
     m.feed = feed_;
