@@ -62,7 +62,7 @@ struct Loop {
   }
   // "ROUND[[e]*1000.]/1000.": where the control puts a coordinate of axis i
   std::string rounded(int i, const std::string& e) const {
-    const std::string m = number(1 / c.fit.grid.step()[static_cast<std::size_t>(axes[static_cast<std::size_t>(i)])], 6);
+    const std::string m = number(c.fit.grid.per_mm()[static_cast<std::size_t>(axes[static_cast<std::size_t>(i)])], 6);
     return fmt::format("ROUND[[{}]*{}]/{}", e, m, m);
   }
   // The words of a move to the vertex in variables first.. (lathe X as a diameter); an axis the

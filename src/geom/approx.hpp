@@ -86,8 +86,8 @@ struct Fit {
   // on all cores (cuts depend on the curve alone; each join may cost a segment). 0: never cut.
   double chunk_segments = 4096;
   // Equal error on a curve not cut: fit from both ends at once (on two cores where there are),
-  // joined where the two meet with no segment more than the fit from the start would need (see
-  // lines_both_ways); the same result on any machine. Off: from the start alone.
+  // joined where the two meet (see lines_both_ways: as few segments as the fit from the start,
+  // give or take one); the same result on any machine. Off: from the start alone.
   bool both_ways = true;
 };
 

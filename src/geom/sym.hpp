@@ -76,7 +76,6 @@ public:
   // #inputs[i] (a variable not among them is an error); without, in[n] is the value of #n.
   explicit Tape(const std::vector<Sym>& outputs, nc::EvalOptions options = {}, const std::vector<int>& inputs = {});
   std::size_t outputs() const { return outputs_.size(); }
-  std::size_t steps() const { return steps_.size(); }
   // out[i] of output i is NaN on a domain error or division by zero in what it depends on.
   void operator()(const double* in, double* out) const;
   // kLanes points at once, each step's arithmetic on vectors: in[k * kLanes + j] is input k in
