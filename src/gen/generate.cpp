@@ -836,14 +836,14 @@ void approach(Writer& w, const Context& c, const MacroWords& start) {
 }  // namespace detail
 
 Result generate(const geom::Curve& contour, const Options& o) {
-  contour.validate();
+  geom::Survey survey = contour.validate();
   AxisMap map = axis_map(contour, o);
   std::optional<geom::Curve> cutter_centre;
   if (o.tool_radius > 0) {
     geom::Plane plane = plane_of(o.profile);
     cutter_centre.emplace(contour.offset(o.tool_radius, o.side == Side::left, map.from[plane.u_axis],
                                          map.from[plane.v_axis]));
-    cutter_centre->validate();
+    survey = cutter_centre->validate();
   } else if (o.tool_radius < 0) {
     throw std::runtime_error("the tool radius must not be negative");
   }
@@ -870,6 +870,7 @@ Result generate(const geom::Curve& contour, const Options& o) {
             geom::Fit{curve, map, grid, plane_of(o.profile), o.tol * 0.999},
             grid.snap(map(curve.point(curve.t0()))),
             grid.snap(map(curve.point(curve.t1())))};
+  c.fit.survey = &survey;
   c.fit.arcs_with_r = o.profile.arcs_with_r;
   c.fit.r_step = o.profile.increment;
   c.fit.arc_radius_limit = o.profile.arc_radius_tolerance * 0.999;

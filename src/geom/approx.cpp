@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 namespace ncurve::geom {
@@ -773,7 +774,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
 // The segments predicted from the curvature (a sag of the tolerance, with the band) from the
 // start of the curve up to each of kSamples equal steps in its parameter.
 struct Prediction {
-  static constexpr int kSamples = 256;
+  static constexpr std::size_t kSamples = Survey::kSteps;
   std::vector<double> ts, segments;
   double total() const { return segments.back(); }
   // where `count` segments are predicted (0 < count < total())
@@ -806,15 +807,17 @@ Prediction predicted_segments(const Fit& f, bool band) {
   p.ts.resize(kPoints);
   p.segments.assign(kPoints, 0.0);
   for (std::size_t i = 0; i < kPoints; ++i) p.ts[i] = t0 + (t1 - t0) * static_cast<double>(i) / Prediction::kSamples;
-  std::vector<Curve::Jet> jets(kPoints);
-  f.curve.jets(p.ts, jets);
-  std::vector<double> derivatives(6 * kPoints), density(kPoints);
+  std::optional<Survey> own;
+  const Survey& survey = f.survey ? *f.survey : own.emplace(f.curve.survey());
+  // placed: the machine's axis a is the curve's coordinate place.from[a] (or none)
+  const std::vector<double> none(kPoints, 0.0);
   const double* d[6];
-  for (std::size_t c = 0; c < 6; ++c) d[c] = derivatives.data() + c * kPoints;
-  for (std::size_t i = 0; i < kPoints; ++i) {
-    const PlacedJet l = placed_jet(jets[i], f.place);
-    for (std::size_t a = 0; a < 3; ++a) derivatives[a * kPoints + i] = l.d1[a], derivatives[(3 + a) * kPoints + i] = l.d2[a];
+  for (std::size_t a = 0; a < 3; ++a) {
+    const int from = f.place.from[a];
+    d[a] = from >= 0 ? survey.d1(static_cast<std::size_t>(from)) : none.data();
+    d[3 + a] = from >= 0 ? survey.d2(static_cast<std::size_t>(from)) : none.data();
   }
+  std::vector<double> density(kPoints);
   step_densities(kPoints, d, h, t1 - t0, density.data());
   for (std::size_t i = 1; i < kPoints; ++i)
     p.segments[i] = p.segments[i - 1] + 0.5 * (density[i] + density[i - 1]) * (p.ts[i] - p.ts[i - 1]);

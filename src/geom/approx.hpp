@@ -89,6 +89,8 @@ struct Fit {
   // joined where the two meet (see lines_both_ways: as few segments as the fit from the start,
   // give or take one); the same result on any machine. Off: from the start alone.
   bool both_ways = true;
+  // The curve's survey, from its validate(): spares the prediction of equal-error steps its jets.
+  const Survey* survey = nullptr;
 };
 
 Path fit_lines(const Fit& fit, LineMethod method);

@@ -340,11 +340,27 @@ NCURVE_VECTOR_CLONES bool check_lanes(const double* __restrict jet, const double
 
 }  // namespace
 
-void Curve::validate() const {
+Survey Curve::survey() const {
+  Survey s;
+  std::array<double, Survey::kPoints> ts;
+  std::array<Jet, Survey::kPoints> jets_at;
+  for (std::size_t i = 0; i < Survey::kPoints; ++i)
+    ts[i] = t0_ + (t1_ - t0_) * static_cast<double>(i) / Survey::kSteps;
+  jets(ts, jets_at);
+  for (std::size_t i = 0; i < Survey::kPoints; ++i)
+    for (std::size_t c = 0; c < 3; ++c) s.d1(c)[i] = jets_at[i].d1[c], s.d2(c)[i] = jets_at[i].d2[c];
+  return s;
+}
+
+Survey Curve::validate() const {
   forwards("validate");
   if (!(t1_ > t0_)) throw std::runtime_error(fmt::format("{}: the range {}..{} is empty", name_, t0_, t1_));
   constexpr int kSamples = 4096, kPart = 512;
   constexpr int kLanes = static_cast<int>(Tape::kLanes);
+  // every kSurveyed-th sample is the survey's (the same t: a power of two apart); batches start on one
+  constexpr int kSurveyed = kSamples / static_cast<int>(Survey::kSteps);
+  static_assert(kSamples % Survey::kSteps == 0 && kPart % kSurveyed == 0 && kLanes % kSurveyed == 0);
+  Survey survey;
   const double dt = (t1_ - t0_) / kSamples;
   std::vector<double> speed2(kSamples + 1);  // squared speeds
   auto sample = [&](int i) { return t0_ + (t1_ - t0_) * i / kSamples; };
@@ -373,6 +389,12 @@ void Curve::validate() const {
         }
       }
       std::copy_n(checks.speed2, n, speed2.begin() + b);
+      for (int j = 0; j < n; j += kSurveyed) {
+        if (b + j == last && last < kSamples) continue;  // the next part's first, noted there
+        const auto i = static_cast<std::size_t>((b + j) / kSurveyed);
+        for (std::size_t c = 0; c < 3; ++c)
+          survey.d1(c)[i] = jet[(3 + c) * Tape::kLanes + j], survey.d2(c)[i] = jet[(6 + c) * Tape::kLanes + j];
+      }
       for (int c = 0; c < 6; ++c) before[c] = jet[c * kLanes + kLanes - 1];
     }
   });
@@ -389,6 +411,7 @@ void Curve::validate() const {
           name_, sample(i)));
     }
   }
+  return survey;
 }
 
 }  // namespace ncurve::geom

@@ -37,6 +37,17 @@ struct CurveSpec {
 const std::vector<CurveSpec>& catalogue();
 const CurveSpec* find_curve(const std::string& name);
 
+// A curve's first and second derivatives at kSteps + 1 equal steps of t over its range
+// (t0 + (t1 - t0) * i / kSteps), component by component: what a fit predicts its steps from.
+struct Survey {
+  static constexpr std::size_t kSteps = 256, kPoints = kSteps + 1;
+  std::vector<double> values = std::vector<double>(6 * kPoints);  // d1 x, y, z, d2 x, y, z: kPoints each
+  double* d1(std::size_t axis) { return values.data() + axis * kPoints; }
+  double* d2(std::size_t axis) { return values.data() + (3 + axis) * kPoints; }
+  const double* d1(std::size_t axis) const { return values.data() + axis * kPoints; }
+  const double* d2(std::size_t axis) const { return values.data() + (3 + axis) * kPoints; }
+};
+
 class Curve {
 public:
   // Compiles the spec with the given parameter values (names not in the spec are an error).
@@ -74,8 +85,10 @@ public:
   bool planar_z() const { return !depends_on(sym_pos_[2], kTVar); }  // z constant
   bool uses_y() const { return !(sym_pos_[1]->op == SymOp::konst && sym_pos_[1]->k == 0); }
 
-  // Throws std::runtime_error naming t where the curve is undefined, singular or has a cusp.
-  void validate() const;
+  // Throws std::runtime_error naming t where the curve is undefined, singular or has a cusp; else
+  // gives the survey, from jets the check computes anyway (the same as survey()'s, bit for bit).
+  Survey validate() const;
+  Survey survey() const;
 
   // The curve moved by `radius` along its normal in the plane of coordinates (u, v), to the left
   // (counter-clockwise from the tangent) or right: the exact path of a cutter's centre. Throws,

@@ -195,6 +195,35 @@ TEST(Approx, LongCurvesAreFitInJoinedChunksTheSameEveryTime) {
   EXPECT_FALSE(same) << "no cut was made";
 }
 
+// The prediction of steps from the survey validate() gives, or from the curve's own jets: the
+// same fit. On a machine's axes (a lathe's: the curve's y is X, its x is Z) it is the fit of the
+// curve with its coordinates moved there. Cut into parts of a few segments, where the prediction
+// places every cut.
+TEST(Approx, FitWithTheValidatedSurveyIsTheFitWithout) {
+  const Curve curve = expression("40*COS[t]+t/20", "15*SIN[2*t]", 0, 330);
+  const Curve moved = expression("15*SIN[2*t]", "0", 0, 330, "40*COS[t]+t/20");
+  Placement lathe;
+  lathe.from = {1, -1, 0};
+  auto fit_of = [](const Curve& c, const Placement& place, const Survey* survey) {
+    Fit fit{c, place, Grid{}, Plane{2, 0}, 0.002};
+    fit.chunk_segments = 10;
+    fit.survey = survey;
+    return fit_lines(fit, LineMethod::equal_error);
+  };
+  auto same = [](const Path& a, const Path& b) {
+    if (a.pieces.size() != b.pieces.size()) return false;
+    for (std::size_t i = 0; i < a.pieces.size(); ++i)
+      if (a.pieces[i].end != b.pieces[i].end || a.pieces[i].t1 != b.pieces[i].t1) return false;
+    return true;
+  };
+  const Survey survey = curve.validate();
+  EXPECT_TRUE(same(fit_of(curve, kSame, &survey), fit_of(curve, kSame, nullptr)));
+  const Path on_lathe = fit_of(curve, lathe, &survey);
+  EXPECT_TRUE(same(on_lathe, fit_of(curve, lathe, nullptr)));
+  EXPECT_TRUE(same(on_lathe, fit_of(moved, kSame, nullptr)));
+  EXPECT_FALSE(same(on_lathe, fit_of(curve, kSame, nullptr))) << "the placement changed nothing";
+}
+
 // Fit from both ends at once and joined where they meet: over every built-in curve at three
 // tolerances no more segments in all than the fit from the start alone, and at most one more on
 // any one (each greedy step is searched only to a fraction of a per cent, and the rounding of its

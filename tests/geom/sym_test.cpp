@@ -370,6 +370,24 @@ TEST(Sym, CurveReversedIsTheSameCurveTracedBackwards) {
   EXPECT_THROW(back.offset(1, true, 0, 1), std::logic_error);
 }
 
+TEST(Sym, ValidateGivesTheSurveyOfTheJetsItChecked) {
+  Curve c(*find_curve("rotor"), {});
+  c.set_range(10.3, 297.9);
+  const Survey checked = c.validate(), computed = c.survey();
+  EXPECT_EQ(checked.values, computed.values);
+  std::vector<double> t;
+  for (std::size_t i = 0; i < Survey::kPoints; ++i) t.push_back(10.3 + (297.9 - 10.3) * static_cast<double>(i) / 256);
+  std::vector<Curve::Jet> jets(t.size());
+  c.jets(t, jets);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    for (std::size_t a = 0; a < 3; ++a) {
+      ASSERT_EQ(checked.d1(a)[i], jets[i].d1[a]) << i;
+      ASSERT_EQ(checked.d2(a)[i], jets[i].d2[a]) << i;
+      EXPECT_NEAR(checked.d1(a)[i], c.d1(t[i])[a], 1e-9) << i;  // and one at a time
+    }
+  }
+}
+
 TEST(Sym, ValidateNamesTheFirstProblemAlongTheCurve) {
   // a pole at t = 1000 (X jumps from -inf to +inf) and Y undefined beyond t = 2500: the check runs
   // in parts on all cores, and still names the pole, the first problem in t
