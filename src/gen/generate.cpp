@@ -552,7 +552,8 @@ private:
     std::vector<ContourMove> moves(pieces.size());
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       ContourMove& m = moves[i];
-      m.start = read(pieces[i].start);
+      const bool joined = i > 0 && bitwise_equal(pieces[i].start, pieces[i - 1].end);  // read once
+      m.start = joined ? moves[i - 1].end : read(pieces[i].start);
       m.end = read(pieces[i].end);
       m.length = machine::line_length(m.start.data(), m.end.data());
     }

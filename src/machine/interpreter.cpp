@@ -48,17 +48,6 @@ bool scaled_address(char c) {  // dimension words read in least input increments
 
 double increments_per_mm(const MachineProfile& p) { return std::round(1 / p.increment); }
 
-double round_to_increment(double value, double per_unit) {
-  const double steps = value * per_unit;
-  return (steps < 0 ? -std::floor(-steps + 0.5) : std::floor(steps + 0.5)) / per_unit;
-}
-
-double line_length(const double* from, const double* to) {
-  double sq = 0;
-  for (int a = 0; a < 3; ++a) sq += (to[a] - from[a]) * (to[a] - from[a]);
-  return std::sqrt(sq);
-}
-
 Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options)
     : profile_(profile), library_(library), options_(std::move(options)) {
   for (char a : profile_.axes) has_axis_[axis_index(a)] = true;

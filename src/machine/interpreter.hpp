@@ -1,6 +1,7 @@
 // Executes a Program as a FANUC 0i/30i control would, streaming Moves to a sink.
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -34,10 +35,18 @@ struct RunStats {
 // Least input increments per mm of the profile, as the control counts them.
 double increments_per_mm(const MachineProfile& p);
 // A dimension as the control takes it: a whole number of increments (halves away from zero), with
-// per_unit increments a unit.
-double round_to_increment(double value, double per_unit);
+// per_unit increments a unit. Inline and without branches: the fit's path is read back with it too.
+inline double round_to_increment(double value, double per_unit) {
+  const double steps = value * per_unit;
+  const double whole = std::floor(std::fabs(steps) + 0.5);
+  return (steps < 0 ? -whole : whole) / per_unit;
+}
 // The length of a line move from `from` to `to` (X, Y and Z) as a Move gives it.
-double line_length(const double* from, const double* to);
+inline double line_length(const double* from, const double* to) {
+  double sq = 0;
+  for (int a = 0; a < 3; ++a) sq += (to[a] - from[a]) * (to[a] - from[a]);
+  return std::sqrt(sq);
+}
 
 struct RunResult {
   bool ok() const { return !alarm.has_value(); }
