@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 #include "nc/program.hpp"
@@ -360,15 +361,20 @@ Survey Curve::validate() const {
   // every kSurveyed-th sample is the survey's (the same t: a power of two apart); batches start on one
   constexpr int kSurveyed = kSamples / static_cast<int>(Survey::kSteps);
   static_assert(kSamples % Survey::kSteps == 0 && kPart % kSurveyed == 0 && kLanes % kSurveyed == 0);
+  constexpr int kParts = kSamples / kPart, kEighths = kSamples / 8 + 1;
+  static_assert(kLanes % 8 == 0);
   Survey survey;
   const double dt = (t1_ - t0_) / kSamples;
-  std::vector<double> speed2(kSamples + 1);  // squared speeds
+  std::array<double, kEighths> eighth_speed2;  // squared speeds of every eighth sample, for the median
+  std::array<double, kParts> least_speed2;     // each part's least
   auto sample = [&](int i) { return t0_ + (t1_ - t0_) * i / kSamples; };
   // in parts on all cores, each in batches; a part checks the step into its first sample too
-  base::for_each_on_cores(kSamples / kPart, [&](std::size_t k) {
+  base::for_each_on_cores(kParts, [&](std::size_t k) {
     const int first = static_cast<int>(k) * kPart, last = first + kPart;
+    auto own = [&](int i) { return i < last || last == kSamples; };  // the last is the next part's first
     alignas(64) double ts[kLanes], jet[9 * kLanes];
     double before[6] = {};  // p and d1 of the sample before the batch
+    double least = std::numeric_limits<double>::infinity();
     LaneChecks checks;
     for (int b = first; b <= last; b += kLanes) {
       const int n = std::min(kLanes, last + 1 - b);
@@ -388,27 +394,37 @@ Survey Curve::validate() const {
                 sample(i)));
         }
       }
-      std::copy_n(checks.speed2, n, speed2.begin() + b);
+      for (int j = 0; j < n; ++j) least = std::min(least, checks.speed2[j]);
+      for (int j = 0; j < n; j += 8)
+        if (own(b + j)) eighth_speed2[static_cast<std::size_t>((b + j) / 8)] = checks.speed2[j];
       for (int j = 0; j < n; j += kSurveyed) {
-        if (b + j == last && last < kSamples) continue;  // the next part's first, noted there
+        if (!own(b + j)) continue;
         const auto i = static_cast<std::size_t>((b + j) / kSurveyed);
         for (std::size_t c = 0; c < 3; ++c)
           survey.d1(c)[i] = jet[(3 + c) * Tape::kLanes + j], survey.d2(c)[i] = jet[(6 + c) * Tape::kLanes + j];
       }
       for (int c = 0; c < 6; ++c) before[c] = jet[c * kLanes + kLanes - 1];
     }
+    least_speed2[k] = least;
   });
-  // the median speed, of every eighth sample (as squares: the same order)
-  std::vector<double> some;
-  for (std::size_t i = 0; i < speed2.size(); i += 8) some.push_back(speed2[i]);
-  std::nth_element(some.begin(), some.begin() + static_cast<std::ptrdiff_t>(some.size() / 2), some.end());
-  const double typical2 = some[some.size() / 2];
-  for (int i = 0; i <= kSamples; ++i) {
-    if (speed2[static_cast<std::size_t>(i)] <= 1e-12 * typical2) {
-      throw std::runtime_error(fmt::format(
-          "{}: the curve stops at t = {:.6g} (zero speed: a cusp or a point where the tangent is undefined); "
-          "split the range there",
-          name_, sample(i)));
+  // stopped: slower than a millionth of the median speed (as squares: the same order)
+  constexpr auto kMiddle = static_cast<std::ptrdiff_t>(kEighths / 2);
+  std::nth_element(eighth_speed2.begin(), eighth_speed2.begin() + kMiddle, eighth_speed2.end());
+  const double stopped2 = 1e-12 * eighth_speed2[kMiddle];
+  for (int k = 0; k < kParts; ++k) {
+    if (!(least_speed2[static_cast<std::size_t>(k)] <= stopped2)) continue;
+    // the first part where it stops: its speeds again (the same jets), for the first such sample
+    std::vector<double> ts;
+    for (int i = k * kPart; i <= (k + 1) * kPart; ++i) ts.push_back(sample(i));
+    std::vector<Jet> at(ts.size());
+    jets(ts, at);
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      const Vec3& v = at[i].d1;
+      if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= stopped2)
+        throw std::runtime_error(fmt::format(
+            "{}: the curve stops at t = {:.6g} (zero speed: a cusp or a point where the tangent is undefined); "
+            "split the range there",
+            name_, ts[i]));
     }
   }
   return survey;

@@ -388,6 +388,32 @@ TEST(Sym, ValidateGivesTheSurveyOfTheJetsItChecked) {
   }
 }
 
+// A curve that stops (x ~ u^3, y ~ u^2 about the stop: a cusp) is named at the first stop in t,
+// in whichever part of the check it lies, also where two parts share the sample.
+TEST(Sym, ValidateNamesTheFirstStop) {
+  auto stops = [](const std::vector<int>& at) {
+    std::string x = "1", y = "1";
+    for (int a : at) {
+      const std::string u = fmt::format("[[t-{}]/1000]", a);
+      x += "*" + u + "*" + u + "*" + u;
+      y += "*" + u + "*" + u;
+    }
+    CurveSpec spec{"stops", "", {}, x, y, "0", 0, 4096, ""};
+    try {
+      Curve(spec, {}).validate();
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(stops({2600}).find("stops at t = 2600 "), std::string::npos) << stops({2600});
+  EXPECT_NE(stops({2560}).find("stops at t = 2560 "), std::string::npos) << stops({2560});
+  EXPECT_NE(stops({3000, 1000}).find("stops at t = 1000 "), std::string::npos) << stops({3000, 1000});
+  EXPECT_NE(stops({0}).find("stops at t = 0 "), std::string::npos) << stops({0});
+  EXPECT_NE(stops({4096}).find("stops at t = 4096 "), std::string::npos) << stops({4096});
+  EXPECT_EQ(stops({5000}), "");  // beyond the range
+}
+
 TEST(Sym, ValidateNamesTheFirstProblemAlongTheCurve) {
   // a pole at t = 1000 (X jumps from -inf to +inf) and Y undefined beyond t = 2500: the check runs
   // in parts on all cores, and still names the pole, the first problem in t
