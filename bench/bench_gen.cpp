@@ -39,7 +39,7 @@ void Expression100k(benchmark::State& state) {
   spec.z = "0"s;
   spec.params = {{"R0", 5, ""}, {"PITCH", 2, ""}};
   spec.from = 0;
-  spec.to = 360 * 100;  // 100 turns out to radius 205 mm
+  spec.to = 360 * 106;  // 106 turns out to radius 217 mm: 100,744 segments
   geom::Curve curve(spec, {});
   gen::Options o;
   o.tol = 0.0003;
