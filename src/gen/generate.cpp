@@ -359,9 +359,10 @@ private:
   }
   static double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
-  // The worst point, the deviation along the contour, the path drawn: in parts of `run` moves on
-  // all cores, each part's points placed after those of the parts before it, the parts' worst
-  // points and lengths taken in order (the same figures as one pass in order).
+  // The worst point, the deviation along the contour, the path drawn: in parts of `run` moves (on
+  // all cores where the contour is longer than a run: a short one's parts take less time than
+  // handing them over), each part's points placed after those of the parts before it, the parts'
+  // worst points and lengths taken in order (the same figures as one pass in order).
   Stats stats(const std::vector<ContourMove>& contour, const std::vector<Measured>& measured,
               const Place& start, std::size_t run) const {
     constexpr int kArcSamples = 16;
@@ -387,7 +388,7 @@ private:
     s.path.resize(first_point.back());
     s.path_block.resize(first_point.back() - 1);
     s.path[0] = contour[0].start;
-    base::for_each_on_cores(parts, [&](std::size_t k) {
+    auto part = [&](std::size_t k) {
       std::size_t point = first_point[k];
       for (std::size_t i = k * run; i < std::min(moves, (k + 1) * run); ++i) {
         const ContourMove& m = contour[i];
@@ -412,7 +413,11 @@ private:
         s.path_block[point - 1] = i;
         s.path[point++] = m.end;
       }
-    });
+    };
+    if (moves <= kRun)
+      for (std::size_t k = 0; k < parts; ++k) part(k);
+    else
+      base::for_each_on_cores(parts, part);
     Farthest all;
     all.note(distance(contour[0].start, start.jet.p), start.t);
     for (std::size_t k = 0; k < parts; ++k) {
