@@ -843,6 +843,11 @@ Chunks chunk_cuts(const Fit& f, const Prediction& p) {
 // Fewer predicted segments than this are fit from the start alone.
 constexpr double kBothWaysSegments = 16;
 
+// A join is not searched on the curve where its deviation on the quintic through its ends is over
+// this many tolerances. On a segment within the tolerance the quintic is off by about a thousandth
+// of one, and by the sixth power of the length on a longer one: a join twice as long, 0.07.
+constexpr double kJoinHopeless = 1.5;
+
 // The greedy fit from both ends at once (on two cores where there are two), each going to its
 // first vertex past `middle`: forwards F0 = t0 .. FK, backwards B0 = t1 .. BJ. Where the longest
 // step from a point reaches no less from a later point, k plus the fewest backward steps that reach
@@ -851,11 +856,6 @@ constexpr double kBothWaysSegments = 16;
 // breaks the rule, steps are searched to a fraction of a per cent), so the joins of one segment
 // fewer are tried first; a join is taken where it is within the tolerance, else the forward fit
 // goes on to the end. The result depends on the curve alone, not on the threads.
-// A join is not searched on the curve where its deviation on the quintic through its ends is over
-// this many tolerances. On a segment within the tolerance the quintic is off by about a thousandth
-// of one, and by the sixth power of the length on a longer one: a join twice as long, 0.07.
-constexpr double kJoinHopeless = 1.5;
-
 Path lines_both_ways(const Fit& f, bool band, bool radial, double middle, std::size_t expected) {
   const Curve back_curve = f.curve.reversed();
   const Fit back{back_curve, f.place, f.grid,      f.plane,        f.tol,          f.centre,
