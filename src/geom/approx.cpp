@@ -570,13 +570,17 @@ constexpr double kStepRel = 3e-3;
 // B, the end at s[j] moved by `offset` and snapped: |AP x AB|^2 > limit^2 |AB|^2, computed as
 // the scan computes one step (the same operations in the same order). False if a coordinate is
 // beyond the fast rounding's reach (the scan then tests those steps one at a time).
+// With kAxes = 2, z left out: where the quintic, the offset and the start have none, z adds zeros
+// (the same figures).
 constexpr std::size_t kScanBatch = 8;
-NCURVE_VECTOR_CLONES bool scan_batch(const Quintic& q, const Vec3& offset, const Vec3& start, const Grid& grid,
-                                     double hump_at, double limit2, const double* s, bool* over) {
+template <int kAxes>
+[[gnu::always_inline]] inline bool scan_batch_on(const Quintic& q, const Vec3& offset, const Vec3& start,
+                                                 const Grid& grid, double hump_at, double limit2, const double* s,
+                                                 bool* over) {
   constexpr double kShift = 0x1.8p52;
-  double ab[3][kScanBatch], ap[3][kScanBatch], steps[kScanBatch];
+  double ab[3][kScanBatch] = {}, ap[3][kScanBatch] = {}, steps[kScanBatch];
   bool in_reach = true;
-  for (int a = 0; a < 3; ++a) {
+  for (int a = 0; a < kAxes; ++a) {
     const double o = q.origin[a], c0 = q.c[0][a], c1 = q.c[1][a], c2 = q.c[2][a], c3 = q.c[3][a], c4 = q.c[4][a];
     const double moved = offset[a], from = start[a], step = grid.step()[a], per_mm = grid.per_mm()[a];
     for (std::size_t j = 0; j < kScanBatch; ++j) {
@@ -595,13 +599,25 @@ NCURVE_VECTOR_CLONES bool scan_batch(const Quintic& q, const Vec3& offset, const
     }
   }
   for (std::size_t j = 0; j < kScanBatch; ++j) {
-    const double cx = ap[1][j] * ab[2][j] - ap[2][j] * ab[1][j];
-    const double cy = ap[2][j] * ab[0][j] - ap[0][j] * ab[2][j];
     const double cz = ap[0][j] * ab[1][j] - ap[1][j] * ab[0][j];
-    const double length2 = ab[0][j] * ab[0][j] + ab[1][j] * ab[1][j] + ab[2][j] * ab[2][j];
-    over[j] = cx * cx + cy * cy + cz * cz > limit2 * length2;
+    if constexpr (kAxes == 2) {
+      over[j] = cz * cz > limit2 * (ab[0][j] * ab[0][j] + ab[1][j] * ab[1][j]);
+    } else {
+      const double cx = ap[1][j] * ab[2][j] - ap[2][j] * ab[1][j];
+      const double cy = ap[2][j] * ab[0][j] - ap[0][j] * ab[2][j];
+      const double length2 = ab[0][j] * ab[0][j] + ab[1][j] * ab[1][j] + ab[2][j] * ab[2][j];
+      over[j] = cx * cx + cy * cy + cz * cz > limit2 * length2;
+    }
   }
   return in_reach;
+}
+NCURVE_VECTOR_CLONES bool scan_batch(const Quintic& q, const Vec3& offset, const Vec3& start, const Grid& grid,
+                                     double hump_at, double limit2, const double* s, bool* over) {
+  return scan_batch_on<3>(q, offset, start, grid, hump_at, limit2, s, over);
+}
+NCURVE_VECTOR_CLONES bool scan_batch_xy(const Quintic& q, const Vec3& offset, const Vec3& start, const Grid& grid,
+                                        double hump_at, double limit2, const double* s, bool* over) {
+  return scan_batch_on<2>(q, offset, start, grid, hump_at, limit2, s, over);
 }
 
 double band_offset(const Fit& f, bool band) { return band ? std::max(0.0, f.tol - f.grid.worst_error()) : 0.0; }
@@ -693,6 +709,8 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
       const Quintic q = Quintic::through(a.curve.p, a.curve.d1, a.curve.d2, first.curve.p, first.curve.d1,
                                          first.curve.d2, h0);
       const Vec3 offset_vector = offset > 0 ? scale(first.normal, offset) : Vec3{0, 0, 0};
+      const bool in_xy = q.c[0][2] == 0 && q.c[1][2] == 0 && q.c[2][2] == 0 && q.c[3][2] == 0 && q.c[4][2] == 0 &&
+                         offset_vector[2] == 0 && q.origin[2] == a.at[2] && !(f.grid.step()[2] > 0);
       // |AP x AB|^2 and |AB|^2 (the hump's distance from the line squared is their ratio) for the
       // step h, from a to the end aimed at (snapped, or both ends as aimed)
       auto across = [&](double h, bool snapped, double& length2) {
@@ -727,7 +745,8 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
           batch_first = batch_end;
           for (std::size_t j = 0; j < kScanBatch; ++j, ++batch_end, batch_rel -= kStep)
             batch_s[j] = std::min(h_tol * batch_rel, t_end - ta) / h0;  // as the scan's h (past its end too)
-          batches = scan_batch(q, offset_vector, a.at, f.grid, hump.at, limit * limit, batch_s.data(), batch_over.data());
+          batches = (in_xy ? scan_batch_xy : scan_batch)(q, offset_vector, a.at, f.grid, hump.at, limit * limit,
+                                                         batch_s.data(), batch_over.data());
         }
         if (batches) return batch_over[i - batch_first];
         double length2 = 0;
