@@ -1,6 +1,7 @@
 #include "gen/generate.hpp"
 #include "base/memory.hpp"
 #include "base/parallel.hpp"
+#include "base/vector_clones.hpp"
 #include "geom/search.hpp"
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include <cctype>
 #include <cmath>
 #include <condition_variable>
+#include <cstdint>
 #include <cstring>
 #include <functional>
 #include <limits>
@@ -302,17 +304,53 @@ private:
     return Step::settled;
   }
 
+  // newton_step on every lane of a batch, on vectors (the same operations, so the same figures):
+  // p, d1[a], d2[a] the placed jet's lanes (p: 3 x kLanes), target the points projected; next the
+  // moved parameter, moved the jet moved with it (p, then d1: where it settles), state a Step.
+  NCURVE_VECTOR_CLONES static void newton_lanes(const double* __restrict p, const double* const* d1,
+                                                const double* const* d2, const double* __restrict target,
+                                                const double* __restrict t, const double* __restrict settled,
+                                                double t_from, double t_end, double* __restrict next,
+                                                double* __restrict moved, std::int64_t* __restrict state) {
+    constexpr std::size_t n = geom::Tape::kLanes;
+    const double *d1x = d1[0], *d1y = d1[1], *d1z = d1[2], *d2x = d2[0], *d2y = d2[1], *d2z = d2[2];
+    for (std::size_t j = 0; j < n; ++j) {
+      const double px = p[j], py = p[n + j], pz = p[2 * n + j];
+      const double rx = px - target[j], ry = py - target[n + j], rz = pz - target[2 * n + j];
+      const double ax = d1x[j], ay = d1y[j], az = d1z[j], bx = d2x[j], by = d2y[j], bz = d2z[j];
+      const double slope = rx * ax + ry * ay + rz * az;
+      const double bend = ax * ax + ay * ay + az * az + rx * bx + ry * by + rz * bz;
+      const double dt = -slope / bend;
+      const double moved_t = t[j] + dt;
+      const bool ahead = (bend > 0) & (moved_t > t_from) & (moved_t <= t_end);
+      const bool still = std::fabs(dt) > settled[j];
+      next[j] = moved_t;
+      state[j] = !ahead ? static_cast<std::int64_t>(Step::failed)
+                 : still ? static_cast<std::int64_t>(Step::going)
+                         : static_cast<std::int64_t>(Step::settled);
+      moved[j] = px + dt * (ax + 0.5 * dt * bx);
+      moved[n + j] = py + dt * (ay + 0.5 * dt * by);
+      moved[2 * n + j] = pz + dt * (az + 0.5 * dt * bz);
+      moved[3 * n + j] = ax + dt * bx;
+      moved[4 * n + j] = ay + dt * by;
+      moved[5 * n + j] = az + dt * bz;
+    }
+  }
+
   // The ends of moves first .. first + n - 1 projected by Newton's method together, each lane from
   // where the moves' lengths up to it reach along the curve from `from` (its speed changing as it
-  // does there; else at t_per_mm), the jets of a step evaluated in one batch: projected[g] where
-  // lane g settled ahead of from.t.
+  // does there; else at t_per_mm), the jets of a step evaluated in one batch and its steps taken
+  // on vectors (newton_lanes): projected[g] where lane g settled ahead of from.t.
   void project_group(const std::vector<ContourMove>& contour, std::size_t first, std::size_t n, const Place& from,
                      double t_per_mm, std::array<Place, geom::Tape::kLanes>& to,
                      std::array<bool, geom::Tape::kLanes>& projected) const {
     constexpr std::size_t kGroup = geom::Tape::kLanes;
-    std::array<double, kGroup> settled, ts;
-    std::array<std::size_t, kGroup> lane;  // the lanes still going, in ts
-    std::array<geom::Curve::Jet, kGroup> jets;
+    alignas(64) std::array<double, kGroup> settled{}, ts, next;
+    alignas(64) std::array<double, 3 * kGroup> target, placed_p;
+    alignas(64) std::array<double, 9 * kGroup> jets;
+    alignas(64) std::array<double, 6 * kGroup> moved;
+    alignas(64) std::array<std::int64_t, kGroup> state;
+    std::array<std::size_t, kGroup> lane;  // the lanes still going
     std::size_t going = 0;
     const double t_from = from.t;
     double along = t_from, length = 0;
@@ -325,18 +363,45 @@ private:
       to[g].t = along;
       projected[g] = false;
       if (settled[g] > 0) lane[going++] = g;
+      for (std::size_t a = 0; a < 3; ++a) target[a * kGroup + g] = contour[first + g].end[a];
     }
+    for (std::size_t g = n; g < kGroup; ++g) {  // lanes without a move: evaluated in vain
+      for (std::size_t a = 0; a < 3; ++a) target[a * kGroup + g] = target[a * kGroup + n - 1];
+    }
+    // the machine's axis a is the curve's coordinate map_.from[a] (or none), moved by map_.offset
+    static constexpr std::array<double, kGroup> kNone{};
+    const double* d1[3];
+    const double* d2[3];
     for (int step = 0; step < kNewtonSteps && going > 0; ++step) {
-      for (std::size_t l = 0; l < going; ++l) ts[l] = to[lane[l]].t;
-      curve_.jets(std::span(ts).first(going), std::span(jets).first(going));
+      for (std::size_t g = 0; g < kGroup; ++g) ts[g] = to[std::min(g, n - 1)].t;
+      curve_.jet_lanes(ts.data(), jets.data());
+      for (std::size_t a = 0; a < 3; ++a) {
+        const int c = map_.from[a];
+        const double* p = c >= 0 ? jets.data() + static_cast<std::size_t>(c) * kGroup : kNone.data();
+        for (std::size_t g = 0; g < kGroup; ++g) placed_p[a * kGroup + g] = p[g] + map_.offset[a];
+        d1[a] = c >= 0 ? jets.data() + (3 + static_cast<std::size_t>(c)) * kGroup : kNone.data();
+        d2[a] = c >= 0 ? jets.data() + (6 + static_cast<std::size_t>(c)) * kGroup : kNone.data();
+      }
+      newton_lanes(placed_p.data(), d1, d2, target.data(), ts.data(), settled.data(), t_from, curve_.t1(),
+                   next.data(), moved.data(), state.data());
       std::size_t still = 0;
       for (std::size_t l = 0; l < going; ++l) {
         const std::size_t g = lane[l];
-        to[g].jet = geom::placed_jet(jets[l], map_);
-        switch (newton_step(contour[first + g].end, t_from, settled[g], to[g].t, to[g].jet)) {
-          case Step::settled: projected[g] = true; break;
+        switch (static_cast<Step>(state[g])) {
+          case Step::settled:
+            to[g].t = next[g];
+            for (std::size_t a = 0; a < 3; ++a) {
+              to[g].jet.p[a] = moved[a * kGroup + g];
+              to[g].jet.d1[a] = moved[(3 + a) * kGroup + g];
+              to[g].jet.d2[a] = d2[a][g];
+            }
+            projected[g] = true;
+            break;
           case Step::failed: break;
-          case Step::going: lane[still++] = g; break;
+          case Step::going:
+            to[g].t = next[g];
+            lane[still++] = g;
+            break;
         }
       }
       going = still;

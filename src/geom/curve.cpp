@@ -224,18 +224,26 @@ void Curve::jets(std::span<const double> t, std::span<Jet> out) const {
   std::array<double, 9 * kLanes> values;
   for (std::size_t first = 0; first < t.size(); first += kLanes) {
     const std::size_t n = std::min(kLanes, t.size() - first);
-    for (std::size_t j = 0; j < n; ++j) in[j] = sense_ * t[first + j];
+    std::copy_n(t.begin() + static_cast<std::ptrdiff_t>(first), n, in.begin());
     std::fill(in.begin() + static_cast<std::ptrdiff_t>(n), in.end(), in[n - 1]);
-    jet_.lanes(in.data(), values.data());
+    jet_lanes(in.data(), values.data());
     for (std::size_t j = 0; j < n; ++j) {
       Jet& e = out[first + j];
       for (std::size_t k = 0; k < 3; ++k) {
         e.p[k] = values[k * kLanes + j];
-        e.d1[k] = sense_ * values[(3 + k) * kLanes + j];
+        e.d1[k] = values[(3 + k) * kLanes + j];
         e.d2[k] = values[(6 + k) * kLanes + j];
       }
     }
   }
+}
+
+void Curve::jet_lanes(const double* t, double* out) const {
+  constexpr std::size_t kLanes = Tape::kLanes;
+  std::array<double, kLanes> in;
+  for (std::size_t j = 0; j < kLanes; ++j) in[j] = sense_ * t[j];
+  jet_.lanes(in.data(), out);
+  for (std::size_t j = 3 * kLanes; j < 6 * kLanes; ++j) out[j] = sense_ * out[j];
 }
 
 Curve Curve::offset(double radius, bool left, int u, int v) const {

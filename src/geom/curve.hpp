@@ -68,6 +68,9 @@ public:
   Jet jet(double t) const;
   // Jets at many parameters, computed several at a time (see Tape::lanes).
   void jets(std::span<const double> t, std::span<Jet> out) const;
+  // Jets at Tape::kLanes parameters, as jets() computes them, in the lanes' layout: out[k * kLanes
+  // + j] is lane j's p x, y, z (k = 0..2), d1 (3..5), d2 (6..8).
+  void jet_lanes(const double* t, double* out) const;
   // Curvature and the unit principal normal (zero where the curve is straight).
   double curvature(double t, Vec3* normal = nullptr) const;
 
