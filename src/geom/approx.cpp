@@ -437,6 +437,15 @@ Worst confirmed_maximum(const Curve& curve, const Placement& place, double ta, d
   return {v.value, ta + h * v.at};
 }
 
+// The same for a segment, its quintic's maxima from model(h).
+template <class Model>
+Worst segment_maximum(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
+                      const Segment& segment, double trust, Model model) {
+  auto on_curve = [&](double h, const Maximum& m) { return confirmed(curve, place, segment, ta, h, m, trust); };
+  return confirmed_maximum(curve, place, ta, tb, a, [&](const Vec3& p) { return segment.distance(p); }, trust, model,
+                           on_curve);
+}
+
 }  // namespace
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
@@ -450,9 +459,8 @@ Worst max_distance(const Curve& curve, const Placement& place, double ta, double
 
 Worst max_distance(const Curve& curve, const Placement& place, double ta, double tb, const PlacedJet& a,
                    const PlacedJet& b, const Segment& segment, double trust) {
-  auto on_curve = [&](double h, const Maximum& m) { return confirmed(curve, place, segment, ta, h, m, trust); };
-  return confirmed_maximum(curve, place, ta, tb, a, [&](const Vec3& p) { return segment.distance(p); }, trust,
-                           [&](double h) { return on_quintic(a, b, h, segment, kLineSamples); }, on_curve);
+  return segment_maximum(curve, place, ta, tb, a, segment, trust,
+                         [&](double h) { return on_quintic(a, b, h, segment, kLineSamples); });
 }
 
 void max_distances(const Curve& curve, const Placement& place, std::span<const SegmentPiece> pieces, double trust,
@@ -929,12 +937,16 @@ Path lines_both_ways(const Fit& f, bool band, bool radial, double middle, std::s
   for (const Join& join : joins) {
     const double ta = F[join.k], tb = B[join.j];
     const Vertex a = vertex(f, ta, offset), b = vertex(f, tb, offset);
-    if (!radial && SegmentQuintic(a.curve, b.curve, tb - ta, Segment(a.at, b.at)).maxima(kLineSamples).best.value >
-                       kJoinHopeless * f.tol)
-      continue;
-    const double error =
-        radial ? segment_error(f, ta, tb, a, b, true)
-               : max_distance(f.curve, f.place, ta, tb, a.curve, b.curve, Segment(a.at, b.at), trust_of(f)).distance;
+    double error;
+    if (radial) {
+      error = segment_error(f, ta, tb, a, b, true);
+    } else {
+      const Segment segment(a.at, b.at);
+      const ModelMaxima model = on_quintic(a.curve, b.curve, tb - ta, segment, kLineSamples);
+      if (model.best.value > kJoinHopeless * f.tol) continue;
+      error = segment_maximum(f.curve, f.place, ta, tb, a.curve, segment, trust_of(f), [&](double) { return model; })
+                  .distance;
+    }
     if (!(error <= f.tol)) continue;
     Path path;
     path.pieces.reserve(join.k + 1 + join.j);
