@@ -368,7 +368,7 @@ private:
     for (std::size_t g = n; g < kGroup; ++g) {  // lanes without a move: evaluated in vain
       for (std::size_t a = 0; a < 3; ++a) target[a * kGroup + g] = target[a * kGroup + n - 1];
     }
-    // the machine's axis a is the curve's coordinate map_.from[a] (or none), moved by map_.offset
+    // placed as map_ places a jet (Placement::component, then the offset)
     static constexpr std::array<double, kGroup> kNone{};
     const double* d1[3];
     const double* d2[3];
@@ -376,11 +376,10 @@ private:
       for (std::size_t g = 0; g < kGroup; ++g) ts[g] = to[std::min(g, n - 1)].t;
       curve_.jet_lanes(ts.data(), jets.data());
       for (std::size_t a = 0; a < 3; ++a) {
-        const int c = map_.from[a];
-        const double* p = c >= 0 ? jets.data() + static_cast<std::size_t>(c) * kGroup : kNone.data();
+        const double* p = map_.component(a, jets.data(), kGroup, kNone.data());
         for (std::size_t g = 0; g < kGroup; ++g) placed_p[a * kGroup + g] = p[g] + map_.offset[a];
-        d1[a] = c >= 0 ? jets.data() + (3 + static_cast<std::size_t>(c)) * kGroup : kNone.data();
-        d2[a] = c >= 0 ? jets.data() + (6 + static_cast<std::size_t>(c)) * kGroup : kNone.data();
+        d1[a] = map_.component(a, jets.data() + 3 * kGroup, kGroup, kNone.data());
+        d2[a] = map_.component(a, jets.data() + 6 * kGroup, kGroup, kNone.data());
       }
       newton_lanes(placed_p.data(), d1, d2, target.data(), ts.data(), settled.data(), t_from, curve_.t1(),
                    next.data(), moved.data(), state.data());

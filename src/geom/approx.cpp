@@ -836,13 +836,12 @@ Prediction predicted_segments(const Fit& f, bool band) {
   for (std::size_t i = 0; i < kPoints; ++i) p.ts[i] = t0 + (t1 - t0) * static_cast<double>(i) / Prediction::kSamples;
   std::optional<Survey> own;
   const Survey& survey = f.survey ? *f.survey : own.emplace(f.curve.survey());
-  // placed: the machine's axis a is the curve's coordinate place.from[a] (or none)
+  // placed (Placement::component)
   const std::vector<double> none(kPoints, 0.0);
   const double* d[6];
   for (std::size_t a = 0; a < 3; ++a) {
-    const int from = f.place.from[a];
-    d[a] = from >= 0 ? survey.d1(static_cast<std::size_t>(from)) : none.data();
-    d[3 + a] = from >= 0 ? survey.d2(static_cast<std::size_t>(from)) : none.data();
+    d[a] = f.place.component(a, survey.d1(0), Survey::kPoints, none.data());
+    d[3 + a] = f.place.component(a, survey.d2(0), Survey::kPoints, none.data());
   }
   std::vector<double> density(kPoints);
   step_densities(kPoints, d, h, t1 - t0, density.data());

@@ -28,6 +28,11 @@ struct Placement {
     for (int a = 0; a < 3; ++a) out[a] = from[a] >= 0 ? d[from[a]] : 0.0;
     return out;
   }
+  // The same for many points held coordinate by coordinate (coordinate c's values at first + c *
+  // stride): where the machine's axis a reads them, or `none` (zeros) where the curve has none.
+  const double* component(std::size_t a, const double* first, std::size_t stride, const double* none) const {
+    return from[a] >= 0 ? first + static_cast<std::size_t>(from[a]) * stride : none;
+  }
 };
 
 // Where emitted coordinates land: each axis rounds to its least increment (in internal units:
