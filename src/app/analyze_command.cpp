@@ -13,21 +13,13 @@
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
 #include "report/motion_plots.hpp"
+#include "app/save.hpp"
 
 namespace ncurve::app {
 namespace {
 
 std::string where(const machine::Move& m) {
   return m.file ? fmt::format("{}:{}", m.file->name(), m.line) : fmt::format("line {}", m.line);
-}
-
-bool write_file(const std::string& path, const std::string& text, const char* what) {
-  std::ofstream f(path, std::ios::binary);
-  if (!f || !(f << text)) {
-    std::cerr << fmt::format("{}: error: cannot write the {}\n", path, what);
-    return false;
-  }
-  return true;
 }
 
 // --kv 30 or --kv 30,25 (X, Y), and --feed-forward, over the profile's servo settings.
@@ -72,7 +64,7 @@ int circle_command(const AnalyzeArgs& a) {
                                          mo.time_constant[0], mo.time_constant[1])
                            : "acc/dec before interpolation";
   std::string subtitle = fmt::format("Kv X {} Y {} /s, feed-forward {}, {}", sv.kv[0], sv.kv[1], sv.feed_forward, filter);
-  if (!a.plot.empty() && !write_file(a.plot, report::polar_svg(r, test, subtitle), "plot")) return 2;
+  if (!a.plot.empty() && !save(a.plot, report::polar_svg(r, test, subtitle), {a.in.program})) return 2;
   if (a.json) {
     nlohmann::json j;
     j["radius"] = test.radius;
@@ -211,14 +203,18 @@ int program_command(const AnalyzeArgs& a) {
     return 2;
   }
 
-  std::ofstream csv;
+  std::optional<io::OutputFile> blocks_file;
   if (!a.blocks.empty()) {
-    csv.open(a.blocks, std::ios::binary);
-    if (!csv) {
-      std::cerr << fmt::format("{}: error: cannot write the block table\n", a.blocks);
+    try {
+      blocks_file.emplace(a.blocks, std::vector<std::string>{a.in.program});
+    } catch (const io::OutputError& e) {
+      std::cerr << "ncurve analyze: error: " << e.what() << "\n";
       return 2;
     }
-    csv << "file,line,kind,length_mm,programmed_mm_min,cap_mm_min,limit,v_in_mm_min,v_peak_mm_min,v_out_mm_min,"
+  }
+  std::ostream* csv = blocks_file ? &blocks_file->stream() : nullptr;
+  if (csv) {
+    *csv << "file,line,kind,length_mm,programmed_mm_min,cap_mm_min,limit,v_in_mm_min,v_peak_mm_min,v_out_mm_min,"
            "start_s,seconds,wait_s,settle_s,starved\n";
   }
   std::optional<motion::ServoSim> sim;
@@ -227,8 +223,8 @@ int program_command(const AnalyzeArgs& a) {
   double cut_length = 0;
   motion::BlockTime slowest_wait{};
   motion::Planner planner(profile, [&](const motion::BlockTime& b) {
-    if (csv.is_open())
-      csv << fmt::format("{},{},{},{:.6f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.6f},{:.6f},{:.6f},{:.6f},{}\n",
+    if (csv)
+      *csv << fmt::format("{},{},{},{:.6f},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.3f},{:.6f},{:.6f},{:.6f},{:.6f},{}\n",
                          b.move.file ? b.move.file->name() : "", b.move.line, machine::to_string(b.move.kind), b.length,
                          b.programmed, b.cap, motion::to_string(b.limit), b.v_in, b.v_peak, b.v_out, b.start, b.seconds,
                          b.wait, b.settle, b.starved ? 1 : 0);
@@ -263,6 +259,14 @@ int program_command(const AnalyzeArgs& a) {
   machine::Interpreter interp(profile, *setup.lib, setup.options);
   machine::RunResult result = interp.run(tee);
   planner.finish();
+  if (blocks_file) {
+    try {
+      blocks_file->commit();
+    } catch (const io::OutputError& e) {
+      std::cerr << "ncurve analyze: error: " << e.what() << "\n";
+      return 2;
+    }
+  }
   if (sim) sim->finish(std::max(0.2, 5.0 / profile.servo.kv[0]));
   if (!result.ok()) {
     std::cerr << nc::format(*result.alarm) << "\n";
@@ -285,9 +289,9 @@ int program_command(const AnalyzeArgs& a) {
       std::cerr << "ncurve analyze: --curve: " << e.what() << "\n";
       return 1;
     }
-    if (!a.shape_csv.empty() && !write_file(a.shape_csv, shape_csv(models), "shape CSV")) return 2;
+    if (!a.shape_csv.empty() && !save(a.shape_csv, shape_csv(models), {a.in.program})) return 2;
     if (!a.shape_plot.empty() &&
-        !write_file(a.shape_plot, shape_plot(*curve, o, *shape, a.tol, a.in.program), "shape plot"))
+        !save(a.shape_plot, shape_plot(*curve, o, *shape, a.tol, a.in.program), {a.in.program}))
       return 2;
     double sq = 0;
     std::size_t worst = 0;
@@ -304,7 +308,7 @@ int program_command(const AnalyzeArgs& a) {
   if (!a.plot.empty()) {
     std::string title = fmt::format("{}: feed along the cutting path, cycle time {:.2f} s ({})", a.in.program,
                                     t.seconds, profile.name);
-    if (!write_file(a.plot, report::feed_svg(feed_samples(records), title), "plot")) return 2;
+    if (!save(a.plot, report::feed_svg(feed_samples(records), title), {a.in.program})) return 2;
   }
   if (a.json) {
     nlohmann::json j;

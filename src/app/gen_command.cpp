@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "app/curve_args.hpp"
+#include "app/save.hpp"
 #include "gen/generate.hpp"
 #include "machine/profile.hpp"
 
@@ -117,21 +118,11 @@ int gen_command(const GenArgs& a) {
     return 1;
   }
   const std::string& program = a.macro_only ? r.macro : r.text;
-  if (!a.output.empty()) {
-    std::ofstream f(a.output, std::ios::binary);
-    if (!f || !(f << program)) {
-      std::cerr << fmt::format("{}: error: cannot write the program\n", a.output);
-      return 2;
-    }
-  }
+  // "-o -" is the default: the program to standard output, the statistics to the terminal
+  const std::string output = a.output == "-" ? std::string() : a.output;
+  if (!output.empty() && !save(output, program)) return 2;
   const auto& s = r.stats;
-  if (!a.plot.empty()) {
-    std::ofstream f(a.plot, std::ios::binary);
-    if (!f || !(f << gen::plot_svg(r.cutter_centre ? *r.cutter_centre : *curve, o, s))) {
-      std::cerr << fmt::format("{}: error: cannot write the plot\n", a.plot);
-      return 2;
-    }
-  }
+  if (!a.plot.empty() && !save(a.plot, gen::plot_svg(r.cutter_centre ? *r.cutter_centre : *curve, o, s))) return 2;
   if (a.json) {
     nlohmann::json j;
     j["curve"] = curve->name();
@@ -151,12 +142,12 @@ int gen_command(const GenArgs& a) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& [key, value] : r.parameters) params[key] = value;
     j["parameters"] = params;
-    if (a.output.empty()) j["program"] = program;
+    if (output.empty()) j["program"] = program;
     if (!r.macro.empty()) j["macro"] = r.macro;
     std::cout << j.dump(2) << "\n";
   } else {
-    if (a.output.empty()) std::cout << program;
-    std::ostream& out = a.output.empty() ? std::cerr : std::cout;
+    if (output.empty()) std::cout << program;
+    std::ostream& out = output.empty() ? std::cerr : std::cout;
     out << fmt::format(
         "curve {} (t {:.6g}..{:.6g}), form {}, tolerance {} mm\n"
         "  words {}, bytes {}, blocks {}, cutter-location points {}\n"

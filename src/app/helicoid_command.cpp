@@ -12,6 +12,7 @@
 #include "geom/curve.hpp"
 #include "helicoid/report.hpp"
 #include "io/number_rows.hpp"
+#include "app/save.hpp"
 
 namespace ncurve::app {
 
@@ -69,17 +70,6 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   h->add_option("--plot", a.plot, "SVG: end profile with contacts, A(psi), plane-method error");
   a.command = h;
 }
-
-namespace {
-
-bool write_file(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  if (f && (f << text)) return true;
-  std::cerr << fmt::format("{}: error: cannot write\n", path);
-  return false;
-}
-
-}  // namespace
 
 int helicoid_command(const HelicoidArgs& a) {
   using namespace helicoid;
@@ -262,14 +252,14 @@ int helicoid_command(const HelicoidArgs& a) {
   }
   std::string table = a.json ? contacts_json(job, *search) : a.csv ? contacts_csv(job) : contacts_text(job, *search);
   if (a.output.empty()) std::cout << table;
-  else if (!write_file(a.output, table)) return 2;
+  else if (!save(a.output, table)) return 2;
   if (!a.program.empty()) {
     PassOptions o;
     o.z_end = -a.length;
     o.feed = a.feed;
-    if (!write_file(a.program, pass_program(job, *search, o))) return 2;
+    if (!save(a.program, pass_program(job, *search, o))) return 2;
   }
-  if (!a.plot.empty() && !write_file(a.plot, contacts_svg(job, *search))) return 2;
+  if (!a.plot.empty() && !save(a.plot, contacts_svg(job, *search))) return 2;
   return 0;
 }
 

@@ -5,11 +5,13 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/gen_command.hpp"
 #include "app/helicoid_command.hpp"
 #include "app/analyze_command.hpp"
 #include "app/run_setup.hpp"
+#include "io/output_file.hpp"
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
@@ -39,15 +41,20 @@ int run_command(const RunArgs& a) {
   const machine::MachineProfile& profile = setup.profile;
   machine::ProgramLibrary& lib = *setup.lib;
 
-  std::ofstream file;
-  if (!a.output.empty()) {
-    file.open(a.output, std::ios::binary);
-    if (!file) {
-      std::cerr << fmt::format("{}: error: cannot write the output file\n", a.output);
+  // "-o -" is the default: the output to standard output, an alarm to the terminal
+  const std::string output = a.output == "-" ? std::string() : a.output;
+  std::optional<io::OutputFile> file;
+  if (!output.empty()) {
+    std::vector<std::string> inputs;
+    for (const auto& f : lib.files()) inputs.push_back(f->name());
+    try {
+      file.emplace(output, inputs);
+    } catch (const io::OutputError& e) {
+      std::cerr << "ncurve run: error: " << e.what() << "\n";
       return 2;
     }
   }
-  std::ostream& out = a.output.empty() ? std::cout : file;
+  std::ostream& out = file ? file->stream() : std::cout;
 
   std::unique_ptr<machine::MoveSink> sink;
   report::GcodeWriter* gcode = nullptr;
@@ -71,7 +78,16 @@ int run_command(const RunArgs& a) {
   rep.text_problems = setup.problems;
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
   if (a.format == "summary") out << summary;
-  else if (!a.output.empty()) std::cout << summary;
+  if (file) {
+    try {
+      file->commit();
+    } catch (const io::OutputError& e) {
+      std::cerr << "ncurve run: error: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (a.format == "summary") {
+  } else if (file) std::cout << summary;
   else if (!result.ok()) std::cerr << nc::format(*result.alarm) << "\n";
   return result.ok() ? 0 : 1;
 }
