@@ -44,6 +44,16 @@ bool scaled_address(char c) {  // dimension words read in least input increments
     default: return false;
   }
 }
+
+// A number as the control shows it: at most `decimals` places, no trailing zeros.
+std::string shown_number(double v, int decimals) {
+  std::string s = fmt::format("{:.{}f}", v, std::max(decimals, 0));
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  return s == "-0" ? "0" : s;
+}
 }  // namespace
 
 double increments_per_mm(const MachineProfile& p) { return std::round(1 / p.increment); }
@@ -111,6 +121,59 @@ Value Interpreter::eval(const nc::Expr& e) {
 
 bool Interpreter::condition(const nc::Expr& e) { return eval(e).number() != 0.0; }
 
+// Programs that mix dimension words with and without a decimal point are a classic source of
+// scrapped parts. A word of a macro call (G65, G66, a custom G code) is an argument, not an axis.
+void Interpreter::warn_mixed_decimal_points() {
+  auto is_call = [&](const nc::Program& p, const nc::Block& b) {
+    for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+      const nc::Word& word = p.words[w];
+      if (word.letter != 'G' || !word.literal) continue;
+      int g = round_int(word.value * 10);
+      if (g == 650 || g == 660 || g == 661) return true;
+      for (int code : profile_.g_code_macros)
+        if (code != 0 && g == std::abs(code) * 10) return true;
+    }
+    return false;
+  };
+  const int decimals = static_cast<int>(std::lround(-std::log10(profile_.increment)));
+  for (const auto& p : library_.programs()) {
+    const nc::Word* with = nullptr;
+    const nc::Word* without = nullptr;
+    std::uint32_t without_line = 0;
+    bool without_is_argument = false;
+    for (const auto& b : p->blocks)
+      for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+        const nc::Word& word = p->words[w];
+        if (!word.literal || !scaled_address(word.letter)) continue;
+        if (word.decimal_point) with = with ? with : &word;
+        else if (word.value != 0 && !without) {
+          without = &word;
+          without_line = b.line;
+          without_is_argument = is_call(*p, b);
+        }
+      }
+    if (!with || !without) continue;
+    const std::string word = fmt::format("{}{}", without->letter, shown_number(without->value, 0));
+    const std::string what = without_is_argument
+                                 ? fmt::format("argument {} of a macro call is read as {}", word,
+                                               profile_.decimal_calculator
+                                                   ? shown_number(without->value, 0)
+                                                   : shown_number(without->value * profile_.increment, decimals))
+                                 : fmt::format("{} is read as {} mm", word,
+                                               profile_.decimal_calculator
+                                                   ? shown_number(without->value, 0)
+                                                   : shown_number(without->value * profile_.increment, decimals));
+    result_.warnings.push_back(nc::Diagnostic{
+        nc::Severity::warning, "NC2001",
+        profile_.decimal_calculator
+            ? fmt::format("words with and without a decimal point in one program; {} (calculator-type input, "
+                          "No.3401#0 = 1)", what)
+            : fmt::format("words with and without a decimal point in one program; {} ({} least input increments, "
+                          "No.3401#0 = 0)", what, shown_number(without->value, 0)),
+        nc::Span{p->file.get(), without_line, without->column, 1}});
+  }
+}
+
 RunResult Interpreter::run(MoveSink& sink) {
   sink_ = &sink;
   result_ = RunResult{};
@@ -131,34 +194,7 @@ RunResult Interpreter::run(MoveSink& sink) {
   set_origin();
   for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
 
-  // Programs that mix axis words with and without a decimal point are a classic source of scrapped parts.
-  for (const auto& p : library_.programs()) {
-    const nc::Word* with = nullptr;
-    const nc::Word* without = nullptr;
-    std::uint32_t without_line = 0;
-    for (const auto& b : p->blocks)
-      for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
-        const nc::Word& word = p->words[w];
-        if (!word.literal || !scaled_address(word.letter)) continue;
-        if (word.decimal_point) with = with ? with : &word;
-        else if (word.value != 0 && !without) {
-          without = &word;
-          without_line = b.line;
-        }
-      }
-    if (with && without) {
-      result_.warnings.push_back(nc::Diagnostic{
-          nc::Severity::warning, "NC2001",
-          profile_.decimal_calculator
-              ? fmt::format("axis words with and without a decimal point in one program; {}{} is read as {} mm "
-                            "(calculator-type input, No.3401#0 = 1)",
-                            without->letter, without->value, without->value)
-              : fmt::format("axis words with and without a decimal point in one program; {}{} is read as {} mm "
-                            "({} least input increments, No.3401#0 = 0)",
-                            without->letter, without->value, without->value * profile_.increment, without->value),
-          nc::Span{p->file.get(), without_line, without->column, 1}});
-    }
-  }
+  warn_mixed_decimal_points();
 
   try {
     for (const auto& [n, v] : options_.presets) {

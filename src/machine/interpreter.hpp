@@ -116,6 +116,7 @@ private:
   void set_coordinate_system(int g);
   void data_setting();
   void set_origin();
+  void warn_mixed_decimal_points();
   void note_extent(const AxisVector& p);
   double feed_seconds(double length, double mean_radius) const;
 

@@ -30,6 +30,18 @@ const char* kindless_unsupported(int g) {
     default: return nullptr;
   }
 }
+// PS0010 for a G code the control lacks; a whole number could be made a custom G code.
+std::string unknown_g_code(int g, const MachineProfile& p) {
+  std::string code = fmt::format("G{}{}", g / 10, g % 10 ? fmt::format(".{}", g % 10) : "");
+  std::string text = fmt::format("{} is not a G code of this control", code);
+  if (g % 10 != 0 || g / 10 < 1 || g / 10 > 9999) return text;
+  for (int i = 0; i < static_cast<int>(p.g_code_macros.size()); ++i)
+    if (p.g_code_macros[i] == 0)
+      return text + fmt::format(" (to make it a custom G code calling O{}, set parameter No.{} = {}: "
+                                "--param {}={})", 9010 + i, 6050 + i, g / 10, 6050 + i, g / 10);
+  return text;
+}
+
 }  // namespace
 
 PlaneAxes plane_axes(int plane) {
@@ -127,8 +139,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           alarm("NC9001", fmt::format("G{} (canned cycle) is not supported yet", g / 10), column);
         if (const char* what = kindless_unsupported(g))
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
-        alarm("PS0010", fmt::format("G{}{} is not a G code of this control", g / 10, g % 10 ? fmt::format(".{}", g % 10) : ""),
-              column);
+        alarm("PS0010", unknown_g_code(g, profile_), column);
       }
     }
   }

@@ -28,6 +28,34 @@ TEST(Motion, DecimalPointRule) {
   EXPECT_DOUBLE_EQ(run("G00 X10\nM30\n", isc).motions().at(0).end[0], 0.001);
 }
 
+// The warning quotes the number as the control shows it (118 increments of 0.001 mm = 0.118) and
+// calls a macro call's word an argument, not an axis word in mm.
+TEST(Motion, DecimalPointWarningShowsTheNumberAsTheControlDoes) {
+  auto r = run("G00 X1.5 Y118\nM30\n");
+  ASSERT_EQ(r.result.warnings.size(), 1u);
+  EXPECT_NE(r.result.warnings[0].message.find("Y118 is read as 0.118 mm (118 least input increments"),
+            std::string::npos) << r.result.warnings[0].message;
+  auto call = run("G65 P9000 B30\nG01 X1.5 F100.\nM30\n", machine::default_mill(), {}, {{"O9000.nc", "O9000\nM99\n"}});
+  ASSERT_EQ(call.result.warnings.size(), 1u);
+  EXPECT_NE(call.result.warnings[0].message.find("argument B30 of a macro call is read as 0.03 (30 least input"),
+            std::string::npos) << call.result.warnings[0].message;
+  EXPECT_EQ(call.result.warnings[0].message.find(" mm "), std::string::npos);
+}
+
+// An integer G code the control lacks names the parameter that would make it a custom G code.
+TEST(Motion, UnknownGCodeNamesTheCustomGCodeParameter) {
+  auto r = run("G102 X10. Y0. F100.\nM30\n");
+  EXPECT_EQ(r.alarm_code(), "PS0010");
+  EXPECT_NE(r.result.alarm->message.find("set parameter No.6050 = 102: --param 6050=102"), std::string::npos)
+      << r.result.alarm->message;
+  auto p = machine::default_mill();
+  p.g_code_macros[0] = 103;  // No.6050 taken: the next free one is named
+  auto taken = run("G102 X10. Y0. F100.\nM30\n", p);
+  EXPECT_NE(taken.result.alarm->message.find("No.6051 = 102: --param 6051=102"), std::string::npos);
+  auto fraction = run("G102.5 X10.\nM30\n");
+  EXPECT_EQ(fraction.result.alarm->message.find("--param"), std::string::npos);
+}
+
 TEST(Motion, VariableValuesAreMillimetresAndRoundToTheIncrement) {
   auto r = run("#1=10\n#2=1.23456\nG00 X#1 Y#2\nM30\n");
   auto m = r.motions().at(0);
