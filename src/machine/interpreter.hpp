@@ -208,7 +208,10 @@ private:
   AxisVector shift_{};   // G92 / G50
   std::array<AxisVector, 7> work_offsets_{};
   std::map<int, AxisVector> extended_offsets_;  // G54.1 P1..P300
-  std::map<int, double> tool_offsets_;
+  std::map<int, MillOffset> tool_offsets_;
+  double* mill_offset_field(int n);
+  double length_offset(int n) const;  // H: geometry + wear
+  double radius_offset(int n) const;  // D: geometry + wear (memory C: the D values)
   std::map<int, LatheOffset> lathe_offsets_;
   std::map<int, nc::Value> system_store_;  // writable system variables without other meaning
   double clock_base_ms_ = 0;

@@ -98,7 +98,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
         length_comp_ = g / 10;
         h_ = has('H') ? static_cast<int>(std::lround(word('H').value)) : h_;
-        tool_shift_[2] = (g == 430 ? 1 : -1) * (tool_offsets_.count(h_) ? tool_offsets_[h_] : 0.0);
+        tool_shift_[2] = (g == 430 ? 1 : -1) * length_offset(h_);
         break;
       case 490: length_comp_ = 49; tool_shift_[2] = 0; break;
       case 540: case 550: case 560: case 570: case 580: case 590:
@@ -500,7 +500,17 @@ void Interpreter::data_setting() {
     int p = integer(word('P'), "P of G10");
     if (p < 1 || p > 999) alarm("PS0030", "offset number out of range", word('P').column);
     double v = dimension(word('R'));
-    tool_offsets_[p] = incremental_ ? tool_offsets_[p] + v : v;
+    MillOffset& o = tool_offsets_[p];
+    const bool wear = l == 11 || l == 13;
+    double* field = &o.geometry;
+    switch (profile_.offset_memory) {
+      case OffsetMemory::A: field = &o.geometry; break;  // one value: every L sets it
+      case OffsetMemory::B: field = wear ? &o.wear : &o.geometry; break;
+      case OffsetMemory::C:
+        field = l == 12 ? &o.d_geometry : l == 13 ? &o.d_wear : wear ? &o.wear : &o.geometry;
+        break;
+    }
+    *field = incremental_ ? *field + v : v;
     return;
   }
   alarm("NC9001", fmt::format("G10 L{} is not supported yet (L2, L20 and L1/L10..L13 are)", l));

@@ -198,7 +198,7 @@ TEST(Motion, ReferenceReturnThroughIntermediatePoint) {
 
 TEST(Motion, ToolLengthAndOffsetsVariables) {
   auto p = machine::default_mill();
-  p.tool_offsets[3] = 120.5;
+  p.tool_offsets[3].geometry = 120.5;
   auto r = run("#100=#2003\n#2004=7.\n#101=#10004\nG43 H3 G00 Z10.\n#102=#5023\nM30\n", p);
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   EXPECT_DOUBLE_EQ(r.var(100), 120.5);
