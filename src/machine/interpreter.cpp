@@ -71,6 +71,21 @@ Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& li
   work_offsets_ = profile_.work_offsets;
   tool_offsets_ = profile_.tool_offsets;
   lathe_offsets_ = profile_.lathe_offsets;
+  CompensationSettings cs;
+  cs.startup_type_b = profile_.compensation.startup_type_b;
+  cs.blocks_without_motion = profile_.compensation.blocks_read - 2;
+  cs.interference_check = profile_.compensation.interference_check;
+  comp_.emplace(
+      cs, [this](Move& m) { deliver(m); },
+      [this](const Move& at, const std::string& code, const std::string& message) {
+        throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message,
+                                       nc::Span{at.file, at.line, 1, 1}});
+      },
+      [this](const Move& at, const std::string& code, const std::string& message) {
+        if (result_.warnings.size() < 1000)
+          result_.warnings.push_back(
+              nc::Diagnostic{nc::Severity::warning, code, message, nc::Span{at.file, at.line, 1, 1}});
+      });
 }
 
 // Innermost DO/WHILE around each block of a program, computed on its first GOTO.
@@ -217,8 +232,13 @@ RunResult Interpreter::run(MoveSink& sink) {
       }
       step();
     }
+    comp_->finish();
   } catch (const nc::Alarm& a) {
     result_.alarm = a.diagnostic;
+    try {
+      comp_->abandon();
+    } catch (const nc::Alarm&) {
+    }
   }
   sink_ = nullptr;
   return result_;
@@ -252,7 +272,13 @@ void Interpreter::step() {
   switch (b.kind) {
     case Statement::empty: ++f.pc; break;
     case Statement::assign: exec_assignment(b); ++frames_.back().pc; break;
-    case Statement::nc: ++f.pc; exec_nc(b); break;
+    case Statement::nc: {
+      ++f.pc;
+      const bool g40 = comp_side_ != 0;
+      exec_nc(b);
+      if (compensating()) end_of_block_compensation(g40 && comp_side_ == 0);
+      break;
+    }
     case Statement::go_to: jump(b, eval(b.value).number()); break;
     case Statement::if_goto:
       if (condition(b.cond)) jump(b, eval(b.value).number());

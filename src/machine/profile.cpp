@@ -215,7 +215,19 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     if (value != 0 && value != 1) throw std::runtime_error(fmt::format("parameter {} is a bit: 0 or 1", key));
     return value != 0;
   };
+  if (!std::isfinite(value) || std::fabs(value) > 1e9)
+    throw std::runtime_error(fmt::format("parameter {}: {} is not a value a parameter can hold", key, value));
   if (key == "3401#0") p.decimal_calculator = bit();
+  else if (key == "5003#0") p.compensation.startup_type_b = bit();
+  else if (key == "5008#1") p.compensation.interference_check = !bit();
+  else if (key == "19625") {
+    if (p.control != Control::fanuc_30i)
+      throw std::runtime_error("parameter 19625: the 0i reads a fixed 3 blocks ahead in cutter compensation; No.19625 "
+                               "is a 30i parameter (control = \"30i\")");
+    if (value != std::floor(value) || value < 3 || value > 8)
+      throw std::runtime_error(fmt::format("parameter 19625 is 3 .. 8 blocks, got {}", value));
+    p.compensation.blocks_read = static_cast<int>(value);
+  }
   else if (key == "6004#0") p.atan_signed = bit();
   else if (key == "3402#0") p.power_on_g01 = bit();
   else if (key == "3402#3") p.power_on_g91 = bit();
@@ -230,14 +242,16 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     } catch (...) {
       n = 0;
     }
+    if (value != std::floor(value))
+      throw std::runtime_error(fmt::format("parameter {} takes a whole number, got {}", key, value));
     const int code = static_cast<int>(value);
     if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = code;
     else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = code;
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
       throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 6001#5, "
-                      "6004#0, 6050..6059, 6071..6079, 6080..6089)",
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 5003#0, "
+                      "5008#1, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089)",
                       key));
   }
 }

@@ -30,6 +30,13 @@ struct MillOffset {
   double d_geometry = 0, d_wear = 0;  // D on memory C
 };
 
+// Cutter / tool-nose radius compensation settings of the control.
+struct CompensationProfile {
+  bool startup_type_b = false;     // No.5003#0 SUP: start-up and cancel of type B (else type A)
+  int blocks_read = 3;             // blocks read ahead in offset mode (No.19625 on 30i; 3 on 0i)
+  bool interference_check = true;  // No.5008#1 CNC = 0: the interference check is performed
+};
+
 enum class AccDec { before, after };  // acc/dec before interpolation (look-ahead) or after it (filter)
 enum class Filter { linear, exponential };
 
@@ -86,6 +93,7 @@ struct MachineProfile {
   OffsetMemory offset_memory = OffsetMemory::A;  // mill tool compensation memory
   std::map<int, MillOffset> tool_offsets;  // mill: offset number 1..999
   std::map<int, LatheOffset> lathe_offsets;  // lathe: offset number 1..64 -> geometry and wear
+  CompensationProfile compensation;
   MotionSettings motion;
   ServoSettings servo;
 
