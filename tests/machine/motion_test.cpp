@@ -229,7 +229,6 @@ TEST(Motion, DwellAndEvents) {
 }
 
 TEST(Motion, UnsupportedFeaturesStopWithADiagnostic) {
-  EXPECT_EQ(run("G41 D1 G01 X1. F100.\n").alarm_code(), "NC9001");
   EXPECT_EQ(run("G81 X1. Y1. Z-1. R1. F100.\n").alarm_code(), "NC9001");
   EXPECT_EQ(run("G07.5 X1.\n").alarm_code(), "PS0010");
 }
