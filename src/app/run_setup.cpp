@@ -61,11 +61,14 @@ void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
   cmd->add_option("--lib", in.libs,
                   "folder of macro programs (O9010.nc, ...), or `macros` for the shipped custom cycles; may be "
                   "repeated")
-      ->transform(folder_path());
+      ->transform(folder_path())
+      ->allow_extra_args(false);
   cmd->add_option("--param", in.params,
                   "set a control parameter over the profile's, e.g. --param 6050=102 (G102 calls O9010); may be "
-                  "repeated");
-  cmd->add_option("--set", in.sets, "preset a variable before the run, e.g. --set \"#100=5\"; may be repeated");
+                  "repeated")
+      ->allow_extra_args(false);
+  cmd->add_option("--set", in.sets, "preset a variable before the run, e.g. --set \"#100=5\"; may be repeated")
+      ->allow_extra_args(false);
   cmd->add_option("--max-steps", in.max_steps, "stop a program that has not ended after this many blocks")
       ->check(CLI::PositiveNumber);
 }

@@ -22,8 +22,6 @@ const char* kindless_unsupported(int g) {
     case 310: return "skip function (G31)";
     case 330: case 320: return "threading (G32/G33)";
     case 120: case 130: return "circle cutting (G12/G13)";
-    case 50: return "AI contour control (G05)";
-    case 51: return "high-speed cutting (G05.1)";
     case 70: case 71: return "cylindrical interpolation (G07.1)";
     case 121: case 131: return "polar coordinate interpolation (G12.1/G13.1)";
     default: return nullptr;
@@ -111,6 +109,9 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       case 200: inch_ = true; break;
       case 210: inch_ = false; break;
       case 800: case 670: case 690: case 150: break;  // cancels: nothing active to cancel
+      // AI contour control (G05.1 Q1/Q0, G05 P10000/P0) and look-ahead control (G08 P1/P0) change
+      // how the control accelerates, not the path: the time planner's profile stands for them
+      case 51: case 50: case 80: break;
       case 430: case 440:
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
         length_comp_ = g / 10;

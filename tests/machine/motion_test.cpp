@@ -228,6 +228,14 @@ TEST(Motion, DwellAndEvents) {
   EXPECT_EQ(r.moves[5].kind, MoveKind::program_end);
 }
 
+// Modes that change how the control accelerates, not the path, and cancels of modes not active.
+TEST(Motion, HighSpeedModesAndCancelsLeaveThePath) {
+  auto r = run("G05.1 Q1\nG08 P1\nG05 P10000\nG15 G40 G50 G69 G80\nG01 X10. F100.\nG05.1 Q0\nG05 P0\nG08 P0\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  ASSERT_EQ(r.motions().size(), 1u);
+  EXPECT_DOUBLE_EQ(r.motions()[0].end[0], 10.0);
+}
+
 TEST(Motion, UnsupportedFeaturesStopWithADiagnostic) {
   EXPECT_EQ(run("G81 X1. Y1. Z-1. R1. F100.\n").alarm_code(), "NC9001");
   EXPECT_EQ(run("G07.5 X1.\n").alarm_code(), "PS0010");
