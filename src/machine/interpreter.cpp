@@ -45,6 +45,15 @@ bool scaled_address(char c) {  // dimension words read in least input increments
   }
 }
 
+// Whether a block holds a literal G code from g_lo to g_hi (x10).
+bool block_has_g(const nc::Program& p, const nc::Block& b, int g_lo, int g_hi) {
+  for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+    const nc::Word& word = p.words[w];
+    if (word.letter == 'G' && word.literal && word.value * 10 >= g_lo && word.value * 10 <= g_hi) return true;
+  }
+  return false;
+}
+
 // A number as the control shows it: at most `decimals` places, no trailing zeros.
 std::string shown_number(double v, int decimals) {
   std::string s = fmt::format("{:.{}f}", v, std::max(decimals, 0));
@@ -160,6 +169,7 @@ void Interpreter::warn_mixed_decimal_points() {
       for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
         const nc::Word& word = p->words[w];
         if (!word.literal || !scaled_address(word.letter)) continue;
+        if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
         if (word.decimal_point) with = with ? with : &word;
         else if (word.value != 0 && !without) {
           without = &word;

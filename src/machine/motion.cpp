@@ -176,7 +176,8 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
       incremental = true;
       if (!has_axis_[a]) a = -1;
     } else if (a >= 0 && !has_axis_[a]) {
-      if (c.letter == 'A' || c.letter == 'B' || c.letter == 'C') continue;  // not an axis here: argument or unused
+      // a lathe reads C (and B) as chamfer and other words of its cycles; a mill has nothing for them
+      if (lathe && (c.letter == 'A' || c.letter == 'B' || c.letter == 'C')) continue;
       alarm("PS0009", fmt::format("address {}: this machine has no {} axis", c.letter, c.letter), c.column);
     } else if (a < 0) {
       if (c.letter == 'U' || c.letter == 'V' || c.letter == 'W' || c.letter == 'E')

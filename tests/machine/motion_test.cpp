@@ -236,6 +236,14 @@ TEST(Motion, HighSpeedModesAndCancelsLeaveThePath) {
   EXPECT_DOUBLE_EQ(r.motions()[0].end[0], 10.0);
 }
 
+// A rotary axis word on a machine without that axis is the FANUC alarm, never dropped.
+TEST(Motion, AxisWordOfAMissingRotaryAxisAlarms) {
+  auto r = run("G00 X5. A10.\nM30\n");
+  EXPECT_EQ(r.alarm_code(), "PS0009");
+  EXPECT_TRUE(r.motions().empty());
+  EXPECT_EQ(run("G01 B20. F100.\nM30\n").alarm_code(), "PS0009");
+}
+
 TEST(Motion, UnsupportedFeaturesStopWithADiagnostic) {
   EXPECT_EQ(run("G81 X1. Y1. Z-1. R1. F100.\n").alarm_code(), "NC9001");
   EXPECT_EQ(run("G07.5 X1.\n").alarm_code(), "PS0010");
