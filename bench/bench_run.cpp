@@ -32,6 +32,22 @@ std::string expanded(long points) {
   return s;
 }
 
+// 1,000,000 blocks of a closed contour of lines and arcs (100 turns of a 100 mm circle, each turn in
+// 10,000 pieces alternating G01 and G03), with or without cutter compensation (G42, 5 mm, outside).
+std::string contour(long blocks, bool compensated) {
+  std::string s = fmt::format("O1002\nG10 L11 P1 R5.\nG90 G00 X100. Y0\n{} G01 X100. Y0 D1 F2000.\n",
+                              compensated ? "G42" : "G40");
+  s.reserve(static_cast<std::size_t>(blocks) * 32);
+  const long per_turn = 10'000;
+  for (long i = 1; i <= blocks; ++i) {
+    double a = 2 * 3.14159265358979 * static_cast<double>(i % per_turn) / per_turn;
+    if (i % 2) fmt::format_to(std::back_inserter(s), "G01 X{:.4f} Y{:.4f}\n", 100 * std::cos(a), 100 * std::sin(a));
+    else fmt::format_to(std::back_inserter(s), "G03 X{:.4f} Y{:.4f} R100.\n", 100 * std::cos(a), 100 * std::sin(a));
+  }
+  s += "G40 G01 X150.\nM30\n";
+  return s;
+}
+
 RunStats run_text(const std::string& text, std::uint64_t max_steps = 1'000'000'000) {
   ProgramLibrary lib;
   lib.add_text("bench.nc", text, true);
@@ -60,6 +76,14 @@ void BM_Expanded1M(benchmark::State& state) {
   state.counters["blocks/s"] = benchmark::Counter(static_cast<double>(blocks), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_Expanded1M)->Unit(benchmark::kMillisecond);
+
+void BM_Contour1M(benchmark::State& state) {
+  std::string text = contour(1'000'000, state.range(0) != 0);
+  std::uint64_t blocks = 0;
+  for (auto _ : state) blocks += run_text(text).blocks;
+  state.counters["blocks/s"] = benchmark::Counter(static_cast<double>(blocks), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Contour1M)->Arg(0)->Arg(1)->ArgName("compensated")->Unit(benchmark::kMillisecond);
 
 void BM_G65Calls(benchmark::State& state) {
   std::string text =

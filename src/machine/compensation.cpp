@@ -20,7 +20,7 @@ V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
 V2 operator*(double k, V2 a) { return {k * a.x, k * a.y}; }
 double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
 double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
-double norm(V2 a) { return std::hypot(a.x, a.y); }
+double norm(V2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 V2 unit(V2 a) {
   double n = norm(a);
   return n > 0 ? V2{a.x / n, a.y / n} : V2{};
@@ -183,17 +183,14 @@ void RadiusCompensation::check_interference(const Elem& e, V2 from, V2 to) {
                        "offset {:g} mm on its inner side",
                        e.R, e.r));
   // the compensated arc must sweep the same way as the programmed one
-  auto angle = [&](V2 p) { return std::atan2(p.y - e.c.y, p.x - e.c.x); };
   double prog = e.move.sweep;
   if (std::fabs(prog) >= kPi) return;
-  double comp = angle(to) - angle(from);
-  while (comp > kPi) comp -= 2 * kPi;
-  while (comp <= -kPi) comp += 2 * kPi;
-  if (std::fabs(comp) > 1e-9 && (comp > 0) != (prog > 0))
+  double turn = cross(from - e.c, to - e.c);  // the short way from `from` to `to`: its sign
+  if (std::fabs(turn) > 1e-9 * e.R * e.R && (turn > 0) != (prog > 0))
     fail(e.move, "PS0041",
-           fmt::format("interference in cutter compensation: the compensated arc of this block turns against the "
-                       "programmed one; the cutter (radius {:g} mm) would gouge",
-                       e.r));
+         fmt::format("interference in cutter compensation: the compensated arc of this block turns against the "
+                     "programmed one; the cutter (radius {:g} mm) would gouge",
+                     e.r));
 }
 
 void RadiusCompensation::emit_element(const Elem& e, V2 from, V2 to, bool plain_end) {
@@ -210,8 +207,7 @@ void RadiusCompensation::emit_element(const Elem& e, V2 from, V2 to, bool plain_
   }
   m.compensated = !plain_end || e.side != 0;
   if (m.kind == MoveKind::arc) {
-    double a0 = std::atan2(from.y - e.c.y, from.x - e.c.x), a1 = std::atan2(to.y - e.c.y, to.x - e.c.x);
-    double sweep = a1 - a0;
+    double sweep = std::atan2(cross(from - e.c, to - e.c), dot(from - e.c, to - e.c));
     const double full = std::fabs(e.move.sweep) > 2 * kPi - 1e-9;
     if (e.dir > 0) {
       while (sweep <= 1e-12) sweep += 2 * kPi;
