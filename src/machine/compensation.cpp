@@ -120,16 +120,19 @@ RadiusCompensation::Corner RadiusCompensation::corner(const Elem& a, const Elem&
   const bool inner = !straight && s * cr > 0;
   const bool acute = !straight && !inner && dt < 0;
   Corner k;
-  if (joint == Joint::startup) {
-    // the start-up block has no vector at its start; at its end: type A perpendicular to the next
-    // block, type B as a corner of offset mode (intersection, or the extra vectors at an acute corner)
+  if (joint != Joint::offset) {
+    // start-up (no vector at the block's start) and cancel (none at its end): type A, and the inner
+    // side of either type, a single vector perpendicular to the block in offset mode; type B the
+    // intersection at an obtuse outer corner, and at an acute one the vector perpendicular to the
+    // first block, then a straight move to the one perpendicular to the second
     if (!settings_.startup_type_b || straight || inner) {
-      k.end_a = k.start_b = P + v2;
+      k.end_a = k.start_b = joint == Joint::startup ? P + v2 : P + v1;
       return k;
     }
-  } else if (joint == Joint::cancel) {
-    if (!settings_.startup_type_b || straight || inner) {
-      k.end_a = k.start_b = P + v1;
+    if (acute) {
+      k.end_a = P + v1;
+      k.start_b = P + v2;
+      k.inserted.push_back(k.start_b);
       return k;
     }
   } else if (straight) {
@@ -244,8 +247,9 @@ void RadiusCompensation::emit_line(const Elem& attributed_to, V2 from, V2 to) {
   m.start[pa_.q] = from.y + tip_.y;
   m.end[pa_.p] = to.x + tip_.x;
   m.end[pa_.q] = to.y + tip_.y;
-  m.programmed_end = attributed_to.move.start;
+  m.programmed_end = attributed_to.move.end;
   m.compensated = true;
+  m.corner = true;
   m.sweep = 0;
   m.center = {};
   double length = line_length(m.start.data(), m.end.data());
@@ -362,7 +366,7 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
   check_interference(a, pending_start_, k.end_a);
   emit_element(a, pending_start_, k.end_a);
   emit_after();
-  for (V2 p : k.inserted) emit_line(b, tool_plane_, p);
+  for (V2 p : k.inserted) emit_line(a, tool_plane_, p);
   if (side == 0) {
     // the cancel block goes to its programmed end without a vector
     emit_element(b, tool_plane_, b.e - tip_, true);

@@ -282,9 +282,11 @@ void Interpreter::end_of_block_compensation(bool g40) {
 }
 
 // The imaginary tool tip from the nose centre, in the G18 plane (Z, X as a radius), as the active
-// offset's tip number places it (drawn with +X up and +Z right); 0 and 9: the nose centre.
+// offset's tip number places it: the numbers follow the axes' directions (with +X up and +Z right
+// 2 6 1 / 7 0 5 / 3 8 4, an outside turning tool is 3 on either side of the spindle); 0 and 9: the
+// nose centre.
 V2 Interpreter::nose_tip() const {
-  static constexpr int kTipX[10] = {0, -1, -1, 1, 1, 0, -1, 0, 1, 0};
+  static constexpr int kTipX[10] = {0, 1, 1, -1, -1, 0, 1, 0, -1, 0};
   static constexpr int kTipZ[10] = {0, 1, -1, -1, 1, 1, 0, -1, 0, 0};
   auto it = lathe_offsets_.find(lathe_offset_);
   if (it == lathe_offsets_.end()) return {};

@@ -41,6 +41,7 @@ struct Move {
   std::uint32_t nc_blocks = 0;         // NC blocks read since the previous event, this one included
   bool compensated = false;    // a cutter / tool-nose radius compensated move: end is the tool centre (tip)
   AxisVector programmed_end{}; // compensated moves: the end point as programmed
+  bool corner = false;         // an extra move the compensation inserts at a corner
   int program = -1;            // O number of the program holding the block
   const nc::SourceFile* file = nullptr;
   std::uint32_t line = 0;      // 1-based line in file

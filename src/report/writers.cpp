@@ -33,8 +33,8 @@ void JsonlWriter::on_move(const Move& m) {
                      clean(m.start[5]), clean(m.end[3]), clean(m.end[4]), clean(m.end[5]));
   }
   if (m.compensated)
-    fmt::format_to(it, R"(,"compensated":true,"programmed_end":[{},{},{}])", clean(frame_.x(m.programmed_end[0])),
-                   clean(m.programmed_end[1]), clean(m.programmed_end[2]));
+    fmt::format_to(it, R"(,"compensated":true,"programmed_end":[{},{},{}]{})", clean(frame_.x(m.programmed_end[0])),
+                   clean(m.programmed_end[1]), clean(m.programmed_end[2]), m.corner ? R"(,"corner":true)" : "");
   if (m.kind == MoveKind::arc)
     fmt::format_to(it, R"(,"center":[{},{},{}],"plane":"G{}","direction":"{}","sweep_deg":{})",
                    clean(frame_.x(m.center[0])), clean(m.center[1]), clean(m.center[2]), m.plane,
