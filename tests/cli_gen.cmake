@@ -82,3 +82,17 @@ run_expect(0 "run the depth-pass program" ${NCURVE} run ${OUT}/gen_passes.nc)
 expect_text("${out}" "-2.0000 .. 5.0000" "Z down to the depth")
 run_expect(1 "depth passes on a helix" ${NCURVE} gen helix --tol 0.01 --step-down 1)
 expect_text("${err}" "depth passes need a plane curve" "helix rises in Z")
+
+# a curve at rest at an end of its range (zero speed at t = 0 and 180: the parabola y = 10 (1 - x^2/900)
+# traced by x = 30 cos t) is cut; a stop inside the range (a cusp) is refused with where
+run_expect(0 "gen a curve at rest at both ends" ${NCURVE} gen expr --x "a*COS(t)" --y "b*SIN(t)*SIN(t)" --t 0:180
+           --a 30 --b 10 -o ${OUT}/gen_rest.nc)
+run_expect(0 "run the curve at rest" ${NCURVE} run ${OUT}/gen_rest.nc --format csv)
+expect_text("${out}" "line,30.000000,0.000000,-1.000000," "the contour starts at x = 30")
+expect_text("${out}" "line,-30.000000,0.000000,-1.000000," "the contour ends at x = -30")
+run_expect(0 "gen a cycle for a curve at rest at its end" ${NCURVE} gen expr --x "a*COS(t)" --y "b*SIN(t)*SIN(t)"
+           --t 90:180 --a 30 --b 10 --form cycle -o ${OUT}/gen_rest_cycle.nc)
+run_expect(0 "run that cycle" ${NCURVE} run ${OUT}/gen_rest_cycle.nc --param 6059=111)
+run_expect(1 "a cusp inside the range" ${NCURVE} gen expr --x "a*COS(t)" --y "b*SIN(t)*SIN(t)" --t 90:270
+           --a 30 --b 10)
+expect_text("${err}" "the curve stops at t = 180 (zero speed" "the cusp is named")

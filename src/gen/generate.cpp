@@ -158,7 +158,7 @@ public:
     line_move.reserve(kGroup);
     for (std::size_t first = k * run; first < stop; first += kGroup) {
       const std::size_t n = std::min(kGroup, stop - first);
-      if (!(t_per_mm > 0)) t_per_mm = 1 / std::max(norm(from.jet.d1), 1e-12);
+      if (!(t_per_mm > 0)) t_per_mm = t_per_mm_at(from.jet, contour[first].length);
       project_group(contour, first, n, from, t_per_mm, to, projected);
       lines.clear();
       line_move.clear();
@@ -256,9 +256,8 @@ private:
   // (a window scaled by the local speed: the contour follows the curve in order, so a nearby turn
   // of a spiral is never taken for this one)
   double project(const Vec3& p, double t_from, double reach, int samples = 16) const {
-    const Vec3 d = curve_.d1(t_from);
-    const double speed = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    const double hi = std::min(curve_.t1(), t_from + reach / std::max(speed, 1e-12));
+    const geom::Curve::Jet j = curve_.jet(t_from);
+    const double hi = std::min(curve_.t1(), t_from + step_at_speed({j.p, j.d1, j.d2}, reach));
     auto closeness = [&](double t) {
       const Vec3 q = map_(curve_.point(t));
       return -((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
@@ -409,17 +408,34 @@ private:
 
   // how far along the curve the end of m may lie, from `from` (as project searches)
   double reach(const Place& from, const ContourMove& m) const {
-    return from.t + search_reach(m) / std::max(norm(from.jet.d1), 1e-12);
+    return from.t + step_at_speed(from.jet, search_reach(m));
   }
   // the length of curve searched for the end of m when Newton's method does not settle
   double search_reach(const ContourMove& m) const { return 3 * m.length + 10 * o_.tol + 1e-3; }
   // The parameter step that covers `length` from j, the speed changing as it does there
-  // (speed dt + half_gain dt^2 = length); NaN where that has no root.
+  // (speed dt + half_gain dt^2 = length; at rest, where the curve stops at an end of its range,
+  // the gain is all of the second derivative); NaN where that has no root.
   static double step_along(const geom::PlacedJet& j, double length) {
     const Vec3 &d1 = j.d1, &d2 = j.d2;
-    const double speed = norm(d1), half_gain = 0.5 * (d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2]) / speed;
+    const double speed = norm(d1);
+    const double half_gain = speed > 0 ? 0.5 * (d1[0] * d2[0] + d1[1] * d2[1] + d1[2] * d2[2]) / speed : 0.5 * norm(d2);
     const double reach = speed * speed + 4 * half_gain * length;
-    return speed > 0 && reach >= 0 ? 2 * length / (speed + std::sqrt(reach)) : std::numeric_limits<double>::quiet_NaN();
+    return (speed > 0 && reach >= 0) || (speed == 0 && reach > 0) ? 2 * length / (speed + std::sqrt(reach))
+                                                                  : std::numeric_limits<double>::quiet_NaN();
+  }
+  // The parameter step per mm at j, for a move of `length` from there (see step_at_speed).
+  static double t_per_mm_at(const geom::PlacedJet& j, double length) {
+    const double speed = norm(j.d1);
+    if (length > 0 && speed * speed < 1e-6 * length * norm(j.d2)) return step_at_speed(j, length) / length;
+    return 1 / std::max(speed, 1e-12);
+  }
+  // The parameter step that covers `length` at the speed of j; where the curve is at rest (it
+  // stops at an end of its range: the speed gained over the step dwarfs it) from the second
+  // derivative, s = |C''| dt^2 / 2.
+  static double step_at_speed(const geom::PlacedJet& j, double length) {
+    const double speed = norm(j.d1), bend = norm(j.d2);
+    if (speed * speed < 1e-6 * length * bend) return std::sqrt(2 * length / bend);
+    return length / std::max(speed, 1e-12);
   }
   static double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 

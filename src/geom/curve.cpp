@@ -257,6 +257,7 @@ Curve Curve::offset(double radius, bool left, int u, int v) const {
   double worst = 0, worst_t = t0_;
   std::array<double, kBatch> ts;
   std::array<Jet, kBatch> batch;
+  std::vector<double> speed2(kSamples + 1);
   for (int first = 0; first <= kSamples; first += kBatch) {
     const int n = std::min(kBatch, kSamples + 1 - first);
     for (int j = 0; j < n; ++j) ts[static_cast<std::size_t>(j)] = t0_ + (t1_ - t0_) * (first + j) / kSamples;
@@ -264,10 +265,22 @@ Curve Curve::offset(double radius, bool left, int u, int v) const {
     for (int j = 0; j < n; ++j) {
       const Vec3 &a = batch[static_cast<std::size_t>(j)].d1, &b = batch[static_cast<std::size_t>(j)].d2;
       const double speed = std::hypot(a[u], a[v]);
+      speed2[static_cast<std::size_t>(first + j)] = speed * speed;
       const double k = side * (a[u] * b[v] - a[v] * b[u]) / (speed * speed * speed);  // > 0: turning towards the tool
       if (k > worst) worst = k, worst_t = ts[static_cast<std::size_t>(j)];
     }
   }
+  // where the curve stops (at an end: validate() refuses one inside) it has no direction, and so
+  // no side to offset to (as validate() judges a stop: a millionth of the median speed)
+  const double start2 = speed2.front(), end2 = speed2.back();
+  std::nth_element(speed2.begin(), speed2.begin() + kSamples / 2, speed2.end());
+  const double stopped2 = 1e-12 * speed2[kSamples / 2];
+  for (const auto& [at, s2] : {std::pair{t0_, start2}, std::pair{t1_, end2}})
+    if (!(s2 > stopped2))
+      throw std::runtime_error(fmt::format(
+          "{}: the curve stops at t = {:.6g}, where its direction and so the side of a tool radius offset are "
+          "undefined: end the range a little inside it, or program the contour without a tool radius",
+          name_, at));
   if (worst * radius >= 1) {
     Vec3 p = point(worst_t);
     throw std::runtime_error(fmt::format(
@@ -419,16 +432,28 @@ Survey Curve::validate() const {
   constexpr auto kMiddle = static_cast<std::ptrdiff_t>(kEighths / 2);
   std::nth_element(eighth_speed2.begin(), eighth_speed2.begin() + kMiddle, eighth_speed2.end());
   const double stopped2 = 1e-12 * eighth_speed2[kMiddle];
+  // A stop at an end of the range is no cusp: the curve starts from rest or comes to rest there.
+  // The samples next to it that are as slow (a stop of higher order) are excused while the speed
+  // grows away from the end; a stop inside the range is refused.
   for (int k = 0; k < kParts; ++k) {
     if (!(least_speed2[static_cast<std::size_t>(k)] <= stopped2)) continue;
-    // the first part where it stops: its speeds again (the same jets), for the first such sample
+    // a part where it may stop: its speeds again (the same jets), for the first such sample
     std::vector<double> ts;
     for (int i = k * kPart; i <= (k + 1) * kPart; ++i) ts.push_back(sample(i));
     std::vector<Jet> at(ts.size());
     jets(ts, at);
+    std::vector<double> speed2(at.size());
     for (std::size_t i = 0; i < at.size(); ++i) {
       const Vec3& v = at[i].d1;
-      if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= stopped2)
+      speed2[i] = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    }
+    std::size_t from = 0, to = at.size();  // the samples not excused
+    if (k == 0)
+      while (from < to && speed2[from] <= stopped2 && (from == 0 || speed2[from] > speed2[from - 1])) ++from;
+    if (k == kParts - 1)
+      while (to > from && speed2[to - 1] <= stopped2 && (to == at.size() || speed2[to - 1] > speed2[to])) --to;
+    for (std::size_t i = from; i < to; ++i) {
+      if (speed2[i] <= stopped2)
         throw std::runtime_error(fmt::format(
             "{}: the curve stops at t = {:.6g} (zero speed: a cusp or a point where the tangent is undefined); "
             "split the range there",

@@ -88,7 +88,8 @@ public:
   bool planar_z() const { return !depends_on(sym_pos_[2], kTVar); }  // z constant
   bool uses_y() const { return !(sym_pos_[1]->op == SymOp::konst && sym_pos_[1]->k == 0); }
 
-  // Throws std::runtime_error naming t where the curve is undefined, singular or has a cusp; else
+  // Throws std::runtime_error naming t where the curve is undefined, singular or stops inside its
+  // range (a cusp; zero speed at t0 or t1 is allowed: it starts from or comes to rest); else
   // gives the survey, from jets the check computes anyway (the same as survey()'s, bit for bit).
   Survey validate() const;
   Survey survey() const;
