@@ -96,3 +96,67 @@ run_expect(0 "run that cycle" ${NCURVE} run ${OUT}/gen_rest_cycle.nc --param 605
 run_expect(1 "a cusp inside the range" ${NCURVE} gen expr --x "a*COS(t)" --y "b*SIN(t)*SIN(t)" --t 90:270
            --a 30 --b 10)
 expect_text("${err}" "the curve stops at t = 180 (zero speed" "the cusp is named")
+
+# every number typed is checked, with the option and what it takes; NaN and infinities are refused
+run_expect(2 "a range of t that is not a number" ${NCURVE} gen expr --x "a*COS(t)" --y "SIN(t)" --t 0:abc --a 1)
+expect_text("${err}" "--t: 'abc' is not a number (expected FROM:TO" "--t names the bad number")
+run_expect(2 "a range of t without a colon" ${NCURVE} gen expr --x "COS(t)" --y "SIN(t)" --t 0-90)
+expect_text("${err}" "--t: '0-90' has no ':'" "--t needs FROM:TO")
+run_expect(2 "an empty range of t" ${NCURVE} gen expr --x "COS(t)" --y "SIN(t)" --t 90:0)
+expect_text("${err}" "--t: the range 90:0 is empty" "--t FROM below TO")
+run_expect(2 "an empty --from/--to range" ${NCURVE} gen spiral --from 30 --to 20)
+expect_text("${err}" "--from must be below --to" "--from below --to")
+run_expect(2 "a tolerance of 0" ${NCURVE} gen spiral --tol 0)
+expect_text("${err}" "--tol: must be a length above 0 mm, got 0" "--tol 0 in mm")
+foreach(bad nan inf -inf)
+  run_expect(2 "--tol ${bad}" ${NCURVE} gen spiral --tol ${bad})
+  expect_text("${err}" "--tol: must be a length above 0 mm, got ${bad}" "--tol ${bad} refused")
+  run_expect(2 "--tool-radius ${bad}" ${NCURVE} gen spiral --tool-radius ${bad})
+  expect_text("${err}" "--tool-radius: must be a length of at least 0 mm, got ${bad}" "--tool-radius ${bad} refused")
+  run_expect(2 "--from ${bad}" ${NCURVE} gen spiral --from ${bad})
+  expect_text("${err}" "--from: must be a finite value of the curve parameter t, got ${bad}" "--from ${bad} refused")
+  run_expect(2 "curve parameter ${bad}" ${NCURVE} gen spiral --r0 ${bad})
+  expect_text("${err}" "--r0: must be a finite value of the parameter r0, got ${bad}" "--r0 ${bad} refused")
+  run_expect(2 "--t with ${bad}" ${NCURVE} gen expr --x "COS(t)" --y "SIN(t)" --t 0:${bad})
+  expect_text("${err}" "--t: TO must be a finite number, got ${bad}" "--t 0:${bad} refused")
+endforeach()
+foreach(case "--feed;0;--feed: must be a feed above 0 mm/min (mill) or mm/rev (lathe), got 0"
+              "--depth;-1;--depth: must be a length of at least 0 mm, got -1"
+              "--step-down;abc;--step-down: 'abc' is not a number (expected a length of at least 0 mm)"
+              "--clearance;0;--clearance: must be a length above 0 mm, got 0"
+              "--program-number;1.5;--program-number: must be a whole number from 1 to 9999, got 1.5"
+              "--tip;nan;--tip: must be a whole number from 0 to 9, got nan"
+              "--cycle-program;9020;--cycle-program: must be a whole number from 9010 to 9019, got 9020"
+              "--form;arc;--form: 'arc' is not a form (expanded, arcs, macro, adaptive-macro, cycle); did you mean arcs?"
+              "--r0;abc;--r0: 'abc' is not a number (expected a finite value of the parameter r0)")
+  list(GET case 0 option)
+  list(GET case 1 value)
+  list(GET case 2 message)
+  run_expect(2 "${option} ${value}" ${NCURVE} gen spiral ${option} ${value})
+  expect_text("${err}" "${message}" "${option} ${value}")
+endforeach()
+
+# names: a name in an expression needs a value, a function must be one, an unknown --NAME is an error
+run_expect(2 "a parameter without a value" ${NCURVE} gen expr --x "c*COS(t)" --y "SIN(t)" --t 0:90)
+expect_text("${err}" "expr x(t): 'c' at column 1 is a parameter without a value: give --c VALUE" "missing --c")
+run_expect(2 "a misspelt function" ${NCURVE} gen expr --x "a*COZ(t)" --y "SIN(t)" --t 0:90 --a 1)
+expect_text("${err}" "'COZ' at column 3 is not a function of the macro language; did you mean COS?" "COZ for COS")
+run_expect(2 "a parameter named like an option" ${NCURVE} gen expr --x "depth*COS(t)" --y "SIN(t)" --t 0:90)
+expect_text("${err}" "named like the option --depth" "a parameter cannot be --depth")
+run_expect(2 "an unknown option" ${NCURVE} gen spiral --tolerance 0.01)
+expect_text("${err}" "--tolerance is not an option of ncurve gen nor a parameter of spiral (r0, pitch, cx, cy); did you mean --tol?"
+            "--tolerance for --tol")
+run_expect(2 "a misspelt parameter" ${NCURVE} gen spiral --pich 3)
+expect_text("${err}" "did you mean --pitch?" "--pich for --pitch")
+run_expect(2 "an expr parameter its expressions do not use" ${NCURVE} gen expr --x "a*COS(t)" --y "SIN(t)" --t 0:90
+           --a 1 --b 2)
+expect_text("${err}" "--b is not an option of ncurve gen nor a name in the expressions (they use a)" "--b unused")
+run_expect(2 "an expr option given to a catalogue curve" ${NCURVE} gen spiral --t 0:90)
+expect_text("${err}" "--t is for expr" "--t is for expr")
+run_expect(2 "a parameter given twice" ${NCURVE} gen spiral --r0 1 --r0 2)
+expect_text("${err}" "--r0 is given twice" "--r0 twice")
+run_expect(2 "a misspelt curve" ${NCURVE} gen elipse)
+expect_text("${err}" "did you mean ellipse?" "elipse for ellipse")
+run_expect(2 "one dash" ${NCURVE} gen spiral -tol 0.01)
+expect_text("${err}" "did you mean --tol?" "-tol for --tol")
+run_expect(0 "a parameter in another case" ${NCURVE} gen spiral --R0 2 --json)

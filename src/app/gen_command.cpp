@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "app/cli_checks.hpp"
 #include "app/curve_args.hpp"
 #include "app/save.hpp"
 #include "gen/generate.hpp"
@@ -35,41 +36,42 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
   gen->allow_extras();
   gen->add_option("curve", a.curve, "curve name (see --list) or expr");
   gen->add_flag("--list", a.list, "list the curves and their parameters");
-  gen->add_option("--tol", a.tol, "shape tolerance, mm (default 0.005)")->check(CLI::PositiveNumber);
+  gen->add_option("--tol", a.tol, "shape tolerance, mm (default 0.005)")->check(positive_mm());
   gen->add_option("--form", a.form, "expanded, arcs, macro, adaptive-macro or cycle")
-      ->check(CLI::IsMember({"expanded", "arcs", "macro", "adaptive-macro", "cycle"}));
+      ->check(one_of("a form", {"expanded", "arcs", "macro", "adaptive-macro", "cycle"}));
   gen->add_option("--lines", a.lines,
                   "expanded: equal-error (default: fewest lines, tolerance band), equal-error-chord, equal-step, "
                   "equal-chord or radial-error (seed 000's shape error along the ray from the centre)")
-      ->check(CLI::IsMember({"equal-error", "equal-error-chord", "equal-step", "equal-chord", "radial-error"}));
+      ->check(one_of("a line method", {"equal-error", "equal-error-chord", "equal-step", "equal-chord", "radial-error"}));
   gen->add_option("--machine", a.machine, "machine profile (TOML); default: FANUC 3-axis mill")
       ->check(CLI::ExistingFile);
-  gen->add_option("--from", a.from, "start of the curve parameter t");
-  gen->add_option("--to", a.to, "end of the curve parameter t");
+  gen->add_option("--from", a.from, "start of the curve parameter t")->check(finite("a value of the curve parameter t"));
+  gen->add_option("--to", a.to, "end of the curve parameter t")->check(finite("a value of the curve parameter t"));
   gen->add_option("--x", a.x, "expr: x(t)");
   gen->add_option("--y", a.y, "expr: y(t)");
   gen->add_option("--z", a.z, "expr: z(t)");
   gen->add_option("--t", a.t_range, "expr: range of t as FROM:TO");
-  gen->add_option("--feed", a.feed, "feed, mm/min (mill) or mm/rev (lathe)")->check(CLI::PositiveNumber);
-  gen->add_option("--depth", a.depth, "mill: depth of a plane contour below Z0, mm");
+  gen->add_option("--feed", a.feed, "feed, mm/min (mill) or mm/rev (lathe)")
+      ->check(positive("a feed", "mm/min (mill) or mm/rev (lathe)"));
+  gen->add_option("--depth", a.depth, "mill: depth of a plane contour below Z0, mm")->check(non_negative_mm());
   gen->add_option("--step-down", a.step_down, "mill: depth per pass for a plane contour, mm (default: one pass)")
-      ->check(CLI::NonNegativeNumber);
-  gen->add_option("--clearance", a.clearance, "mill: rapid plane above Z0; lathe: retract, mm");
-  gen->add_option("--program-number", a.program_number, "O number of the program")->check(CLI::Range(1, 9999));
+      ->check(non_negative_mm());
+  gen->add_option("--clearance", a.clearance, "mill: rapid plane above Z0; lathe: retract, mm")->check(positive_mm());
+  gen->add_option("--program-number", a.program_number, "O number of the program")->check(whole(1, 9999));
   gen->add_option("--tool-radius", a.tool_radius,
                   "program the cutter centre (mill) or tool-nose centre (lathe) for this radius, mm")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_mm());
   gen->add_option("--tip", a.tip,
                   "lathe: imaginary tool nose direction 0..9 (FANUC, +X up: 2 = turning towards the chuck); the "
                   "program follows that tip, 0 the nose centre")
-      ->check(CLI::Range(0, 9));
+      ->check(whole(0, 9));
   gen->add_option("--side", a.side, "left or right of the curve looking along it (G41 / G42 side); default left")
-      ->check(CLI::IsMember({"left", "right"}));
+      ->check(one_of("a side", {"left", "right"}));
   gen->add_option("--cycle-program", a.cycle_program,
                   "cycle: the macro's program O9010..O9019 (G102..G111, No.6050..6059); default: the curve's own "
                   "(spiral 9010, ellipse 9011, parabola 9012, hyperbola 9013, involute 9014, sine 9015, cycloid 9016, "
                   "trochoid 9017, helix 9018, rotor and expr 9019)")
-      ->check(CLI::Range(9010, 9019));
+      ->check(whole(9010, 9019));
   gen->add_flag("--macro-only", a.macro_only,
                 "cycle: write only the cycle's macro program (for the control's memory), not the calling program");
   gen->add_option("--plot", a.plot, "SVG plot of the curve, the path and the deviation along it");
@@ -104,7 +106,8 @@ int gen_command(const GenArgs& a) {
     o.tip = a.tip;
     o.cycle_program = a.cycle_program;
     if (a.macro_only && o.form != gen::Form::cycle) throw std::runtime_error("--macro-only is for --form cycle");
-    curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to}, a.command->remaining(), o.profile));
+    curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to, "ncurve gen", long_options(*a.command)},
+                              a.command->remaining(), o.profile));
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 2;

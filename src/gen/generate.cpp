@@ -921,7 +921,27 @@ void approach(Writer& w, const Context& c, const MacroWords& start) {
 
 }  // namespace detail
 
+namespace {
+
+// Options a caller may have filled from anywhere: NaN or infinite values would loop or be ignored.
+void check_options(const Options& o) {
+  auto finite = [](double v, const char* what) {
+    if (!std::isfinite(v)) throw std::runtime_error(fmt::format("{} must be a finite number, not {}", what, v));
+  };
+  finite(o.tol, "the tolerance");
+  finite(o.feed, "the feed");
+  finite(o.depth, "the depth");
+  finite(o.clearance, "the clearance");
+  finite(o.step_down, "the depth per pass");
+  finite(o.tool_radius, "the tool radius");
+  if (!(o.tol > 0)) throw std::runtime_error(fmt::format("the tolerance must be above 0 mm, not {}", o.tol));
+  if (o.feed < 0) throw std::runtime_error(fmt::format("the feed must not be negative, not {}", o.feed));
+}
+
+}  // namespace
+
 Result generate(const geom::Curve& contour, const Options& o) {
+  check_options(o);
   geom::Survey survey = contour.validate();
   AxisMap map = axis_map(contour, o);
   std::optional<geom::Curve> cutter_centre;

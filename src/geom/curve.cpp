@@ -21,6 +21,9 @@ const char* const kFunctionWords[] = {"SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN
                                       "FUP", "LN",  "EXP", "POW",  "ADP",  "BIN",  "BCD",  "MOD", "AND",   "OR",
                                       "XOR"};
 
+bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return s;
@@ -84,13 +87,39 @@ const CurveSpec* find_curve(const std::string& name) {
   return nullptr;
 }
 
+const std::vector<std::string>& function_words() {
+  static const std::vector<std::string> words(std::begin(kFunctionWords), std::end(kFunctionWords));
+  return words;
+}
+
+std::vector<NameUse> names_in(const std::string& text) {
+  std::vector<NameUse> out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (!is_name_start(text[i])) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && is_name_char(text[j])) ++j;
+    const std::string word = upper(text.substr(i, j - i));
+    const bool function = std::find(std::begin(kFunctionWords), std::end(kFunctionWords), word) != std::end(kFunctionWords);
+    if (!function && word != "T" && word != "PI") {
+      std::size_t next = j;
+      while (next < text.size() && text[next] == ' ') ++next;
+      out.push_back({text.substr(i, j - i), i + 1, next < text.size() && (text[next] == '[' || text[next] == '(')});
+    }
+    i = j;
+  }
+  return out;
+}
+
 std::string substitute_names(const std::string& text, const std::vector<std::string>& params) {
   std::string out;
   for (std::size_t i = 0; i < text.size();) {
     char c = text[i];
-    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+    if (is_name_start(c)) {
       std::size_t j = i;
-      while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+      while (j < text.size() && is_name_char(text[j])) ++j;
       std::string word = upper(text.substr(i, j - i));
       bool function = false;
       for (const char* f : kFunctionWords) function = function || word == f;
@@ -106,7 +135,8 @@ std::string substitute_names(const std::string& text, const std::vector<std::str
         if (k == params.size()) {
           std::string known = "t, PI";
           for (const auto& p : params) known += ", " + p;
-          throw std::runtime_error(fmt::format("'{}' at column {} is not a function or a name ({})",
+          throw std::runtime_error(fmt::format("'{}' at column {} is not a function of the macro language nor a name "
+                                               "of this curve ({})",
                                                text.substr(i, j - i), i + 1, known));
         }
         out += fmt::format("#{}", kFirstParamVar + static_cast<int>(k));

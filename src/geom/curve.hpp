@@ -123,4 +123,15 @@ private:
 // Text with names (t, parameters, PI) to macro text with #100, #101..; throws on unknown names.
 std::string substitute_names(const std::string& text, const std::vector<std::string>& params);
 
+// The function words of the macro language a curve's text may use (SIN, COS, ...).
+const std::vector<std::string>& function_words();
+// The names in curve text other than t, PI and the function words, in order (each use): where
+// (column from 1) and whether it is called (followed by [ or (, as a function is).
+struct NameUse {
+  std::string name;
+  std::size_t column;
+  bool called;
+};
+std::vector<NameUse> names_in(const std::string& text);
+
 }  // namespace ncurve::geom
