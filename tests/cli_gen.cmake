@@ -160,3 +160,17 @@ expect_text("${err}" "did you mean ellipse?" "elipse for ellipse")
 run_expect(2 "one dash" ${NCURVE} gen spiral -tol 0.01)
 expect_text("${err}" "did you mean --tol?" "-tol for --tol")
 run_expect(0 "a parameter in another case" ${NCURVE} gen spiral --R0 2 --json)
+
+# a lathe curve without a lathe profile: a mill program, and a warning saying how to get the lathe one
+run_expect(0 "gen hyperbola on the mill" ${NCURVE} gen hyperbola -o ${OUT}/gen_hyperbola_mill.nc)
+expect_text("${err}" "warning: hyperbola is a lathe curve; without a lathe profile this is a mill program" "lathe warning")
+expect_text("${err}" "--machine profiles/fanuc-lathe.toml" "the warning says how")
+run_expect(0 "gen hyperbola on the lathe" ${NCURVE} gen hyperbola --machine ${SRC}/profiles/fanuc-lathe.toml
+           -o ${OUT}/gen_hyperbola_lathe.nc)
+string(FIND "${err}" "warning" at)
+expect_rc("${at}" -1 "no warning with a lathe profile")
+run_expect(0 "gen ellipse on the mill" ${NCURVE} gen ellipse -o ${OUT}/gen_ellipse_mill.nc)
+string(FIND "${err}" "warning" at)
+expect_rc("${at}" -1 "no warning for a mill curve")
+run_expect(0 "gen --list marks the lathe curves" ${NCURVE} gen --list)
+expect_text("${out}" "a lathe curve: --machine profiles/fanuc-lathe.toml" "--list marks the hyperbola")

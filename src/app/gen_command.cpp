@@ -22,6 +22,7 @@ std::string list_curves() {
     s += fmt::format("\n  {:<10} {}\n", c.name, c.doc);
     s += fmt::format("  {:<10} x = {}\n  {:<10} y = {}\n  {:<10} z = {}\n", "", c.x, "", c.y, "", c.z);
     s += fmt::format("  {:<10} --from {} --to {}  ({})\n", "", c.from, c.to, c.t_doc);
+    if (c.lathe) s += fmt::format("  {:<10} a lathe curve: --machine profiles/fanuc-lathe.toml\n", "");
     for (const auto& p : c.params) s += fmt::format("  {:<10} --{} {:.10g}  ({})\n", "", p.name, p.value, p.doc);
   }
   s += "\n  expr       any curve: ncurve gen expr --x \"..\" --y \"..\" [--z \"..\"] --t 0:360 [--NAME VALUE ...]\n"
@@ -113,6 +114,12 @@ int gen_command(const GenArgs& a) {
     return 2;
   }
 
+  if (const geom::CurveSpec* spec = geom::find_curve(curve->name()); spec && spec->lathe && !o.profile.lathe())
+    std::cerr << fmt::format(
+        "ncurve gen: warning: {} is a lathe curve; without a lathe profile this is a mill program (its X and Z on "
+        "the mill's X and Z, X as a radius). For the lathe program (G18, X as a diameter, feed per revolution) give "
+        "--machine profiles/fanuc-lathe.toml\n",
+        spec->name);
   gen::Result r;
   try {
     r = gen::generate(*curve, o);

@@ -56,7 +56,7 @@ const std::vector<CurveSpec>& catalogue() {
        "t = clockwise polar angle, degrees"},
       {"hyperbola", "lathe hyperbola X = a/cos t (radius), Z = b*tan t (seed 003)",
        {{"a", 100, "radius at t = 0, mm"}, {"b", 202.4, "Z scale, mm"}},
-       "A/COS[t]", "0", "B*TAN[t]", -20, 20, "t = alpha, degrees, inside (-90, 90)"},
+       "A/COS[t]", "0", "B*TAN[t]", -20, 20, "t = alpha, degrees, inside (-90, 90)", true},
       {"ellipse", "ellipse x = a cos t, y = b sin t",
        {{"a", 40, "semi-axis along X, mm"}, {"b", 20, "semi-axis along Y, mm"}},
        "A*COS[t]", "B*SIN[t]", "0", 0, 360, "t = eccentric angle, degrees"},

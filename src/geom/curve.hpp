@@ -31,6 +31,7 @@ struct CurveSpec {
   std::string x, y, z;            // expressions in t and the parameter names
   double from = 0, to = 360;      // default parameter range
   std::string t_doc = "t in degrees";
+  bool lathe = false;  // a turned profile (X a radius, Z along the axis): meant for a lathe profile
 };
 
 // The built-in curves, in the order `ncurve gen --list` shows them.
