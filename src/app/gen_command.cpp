@@ -75,6 +75,24 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
       ->check(whole(9010, 9019));
   gen->add_flag("--macro-only", a.macro_only,
                 "cycle: write only the cycle's macro program (for the control's memory), not the calling program");
+  gen->add_option("--tool", a.tool,
+                  "call this tool before the contour: mill T_ M06 and G43 H_ at the clearance; lathe T_ with the "
+                  "offset of the same number (T0101)")
+      ->check(whole(1, 9999));
+  gen->add_option("--spindle", a.spindle, "start the spindle at this speed, rev/min: S_ M03 (lathe: G97 S_ M03)")
+      ->check(whole(1, 999999));
+  gen->add_flag("--spindle-ccw", a.spindle_ccw, "turn the spindle counter-clockwise (M04 for M03)");
+  gen->add_option("--css", a.css,
+                  "lathe: constant surface speed, m/min (G96 S_ M03; ft/min in an inch program); clamp it with "
+                  "--max-rpm")
+      ->check(whole(1, 99999));
+  gen->add_option("--max-rpm", a.max_rpm, "lathe with --css: the spindle clamp, rev/min (G50 S_; G92 S_ on G-code "
+                                          "systems B and C)")
+      ->check(whole(1, 999999));
+  gen->add_flag("--coolant", a.coolant, "coolant on before the contour (M08), off at the end (M09)");
+  gen->add_flag("--inch", a.inch,
+                "write the program in inches (G20; coordinates and feeds in inches on the inch increment); the curve, "
+                "--tol and the other lengths stay in mm, --feed in mm/min or mm/rev, --css in m/min");
   gen->add_option("--plot", a.plot, "SVG plot of the curve, the path and the deviation along it");
   gen->add_option("-o,--output", a.output, "write the program here (statistics go to the terminal)");
   gen->add_flag("--json", a.json, "statistics as JSON");
@@ -106,6 +124,14 @@ int gen_command(const GenArgs& a) {
     o.side = a.side == "right" ? gen::Side::right : gen::Side::left;
     o.tip = a.tip;
     o.cycle_program = a.cycle_program;
+    o.tool = a.tool;
+    o.spindle = a.spindle;
+    o.spindle_ccw = a.spindle_ccw;
+    o.css = a.css;
+    o.max_rpm = a.max_rpm;
+    o.coolant = a.coolant;
+    o.inch = a.inch;
+    gen::check_options(o);
     if (a.macro_only && o.form != gen::Form::cycle) throw std::runtime_error("--macro-only is for --form cycle");
     curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to, "ncurve gen", long_options(*a.command)},
                               a.command->remaining(), o.profile));
@@ -120,6 +146,9 @@ int gen_command(const GenArgs& a) {
         "the mill's X and Z, X as a radius). For the lathe program (G18, X as a diameter, feed per revolution) give "
         "--machine profiles/fanuc-lathe.toml\n",
         spec->name);
+  if (o.css > 0 && o.max_rpm == 0 && o.profile.lathe())
+    std::cerr << "ncurve gen: warning: --css without --max-rpm: no spindle clamp, the spindle speeds up without "
+                 "limit as X nears 0\n";
   gen::Result r;
   try {
     r = gen::generate(*curve, o);

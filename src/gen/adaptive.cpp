@@ -282,7 +282,7 @@ Emitted adaptive_text(const Context& c, double aim) {
   w.block(fmt::format("#2={} (BAND: VERTEX OFFSET, MM)", fraction(number(offset, kDigits))));
   w.block(fmt::format("#3={} (LONGEST T STEP)", number(span / 4, kDigits)));
   w.block(fmt::format("#13={} (FIRST T STEP)", fraction(number(first, 6))));
-  w.block(modes(c.o));
+  modes_block(w, c.o);
   adaptive_start(w, 5);
   Writer to_start;
   approach(to_start, c, MacroWords{{}, l.words(var::vectors, true)});
@@ -316,7 +316,7 @@ Emitted adaptive_macro(const Context& c) {
                                          c.o.tol, rounding));
   // the estimate at the middle is within about 1 % of the true deviation: aim lower until the
   // control's own path is within the tolerance
-  return tightened(c, c.o, printed(c.fit.tol), printed, [&](double aim) { return adaptive_text(c, aim); },
+  return tightened(c, c.measured_o, printed(c.fit.tol), printed, [&](double aim) { return adaptive_text(c, aim); },
                    "adaptive macro: no aim keeps this curve within the tolerance");
 }
 

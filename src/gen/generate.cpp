@@ -789,7 +789,8 @@ Emitted expanded_or_arcs(const Context& c) {
     method = "biarcs";
   } else {
     path = geom::fit_lines(c.fit, o.lines);
-    if (!is_lathe(o) && !depth_passes(o) && path.pieces.size() <= Measurer::kRun && base::cores() > 1)
+    // (an inch program's moves are read in inches and converted: never the fit's bit for bit)
+    if (!is_lathe(o) && !depth_passes(o) && !o.inch && path.pieces.size() <= Measurer::kRun && base::cores() > 1)
       speculation = std::make_shared<Speculation>(c.curve, o, path.pieces);
     method = o.lines == geom::LineMethod::equal_step    ? "equal parameter step"
              : o.lines == geom::LineMethod::equal_chord ? "equal chord"
@@ -801,8 +802,9 @@ Emitted expanded_or_arcs(const Context& c) {
   w.text.reserve(1024 + 24 * path.pieces.size());  // "X-123.456 Y78.901" a piece, arcs longer
   w.block("%");
   w.lines(header(c.curve, o, method));
+  begin_setup(w, o, c.dec);
   begin_passes(w, o, c.dec);
-  w.block(modes(o));
+  modes_block(w, o);
   Frame fr = frame(o, c.words, c.start, c.end, c.dec, c.feed);
   w.lines(fr.before_start);
   w.lines(fr.to_depth);
@@ -846,7 +848,7 @@ Emitted equal_step_macro(const Context& c) {
   w.block(fmt::format("#112={} (SEGMENTS)", n));
   w.block("#113=[#111-#110]/#112 (T STEP)");
   w.block("#114=0 (SEGMENT COUNTER)");
-  w.block(modes(o));
+  modes_block(w, o);
   w.block("#100=#110");
   int next = kFirstTemp;
   MacroWords mp = macro_words(point_axes(c.curve, c.map, o, c.with_z), next);
@@ -864,6 +866,7 @@ namespace detail {
 void end_program(Writer& w, const Context& c) {
   w.lines(frame(c.o, c.words, c.start, c.end, c.dec, c.feed).retract);
   end_passes(w, c.o);
+  end_setup(w, c.o);
   w.block("M30");
   w.block("%");
 }
@@ -896,6 +899,7 @@ void macro_preamble(Writer& w, const Context& c, const std::string& method, cons
                     int t_start) {
   w.block("%");
   w.lines(header(c.curve, c.o, method));
+  begin_setup(w, c.o, c.dec);
   begin_passes(w, c.o, c.dec);
   w.block(fmt::format("(#100 = T OF THE {}{})", comment_text(c.curve.name()), more_variables));
   parameter_blocks(w, c.curve);
@@ -909,21 +913,18 @@ void approach(Writer& w, const Context& c, const MacroWords& start) {
     w.block(fmt::format("G00 X{} Z{}", number(2 * (c.start[0] + o.clearance), c.dec),
                         number(c.start[2] + o.clearance, c.dec)));
     for (const auto& a : start.assignments) w.block(a);
-    w.block(fmt::format("G01 {} F{}", start.words, number(c.feed, 4)));
+    w.block(fmt::format("G01 {} F{}", start.words, feed_number(o, c.feed)));
     return;
   }
   w.block(fmt::format("G00 Z{}", number(o.clearance, c.dec)));
   for (const auto& a : start.assignments) w.block(a);
   w.block(fmt::format("G00 {}", start.words));
-  if (!c.with_z) w.block(fmt::format("G01 {} F{}", plunge_z(o, -o.depth, c.dec), number(c.feed, 4)));
-  else w.block(fmt::format("G01 F{}", number(c.feed, 4)));
+  if (!c.with_z) w.block(fmt::format("G01 {} F{}", plunge_z(o, -o.depth, c.dec), feed_number(o, c.feed)));
+  else w.block(fmt::format("G01 F{}", feed_number(o, c.feed)));
 }
 
 }  // namespace detail
 
-namespace {
-
-// Options a caller may have filled from anywhere: NaN or infinite values would loop or be ignored.
 void check_options(const Options& o) {
   auto finite = [](double v, const char* what) {
     if (!std::isfinite(v)) throw std::runtime_error(fmt::format("{} must be a finite number, not {}", what, v));
@@ -936,53 +937,90 @@ void check_options(const Options& o) {
   finite(o.tool_radius, "the tool radius");
   if (!(o.tol > 0)) throw std::runtime_error(fmt::format("the tolerance must be above 0 mm, not {}", o.tol));
   if (o.feed < 0) throw std::runtime_error(fmt::format("the feed must not be negative, not {}", o.feed));
+  // the set-up
+  const bool lathe = is_lathe(o);
+  if (o.tool < 0 || o.tool > (lathe ? 64 : 9999))
+    throw std::runtime_error(fmt::format("the tool must be 1..{}{}, not {}", lathe ? 64 : 9999,
+                                         lathe ? " on a lathe (T with the offset of the same number)" : "", o.tool));
+  if (o.spindle < 0 || o.css < 0 || o.max_rpm < 0)
+    throw std::runtime_error("spindle speeds must not be negative");
+  if (o.css > 0 && !lathe) throw std::runtime_error("a constant surface speed (G96) is for the lathe; give the spindle speed");
+  if (o.css > 0 && o.spindle > 0)
+    throw std::runtime_error("give the spindle speed or a constant surface speed (G96), not both");
+  if (o.max_rpm > 0 && o.css == 0) throw std::runtime_error("the spindle clamp is for a constant surface speed (G96)");
+  if (o.spindle_ccw && o.spindle == 0 && o.css == 0) throw std::runtime_error("the spindle's direction needs its speed");
+  if (o.inch && o.form == Form::cycle)
+    throw std::runtime_error(
+        "the cycles' macros (O9010..O9019) are written in mm: for an inch program use --form adaptive-macro (the "
+        "same loop, in the program)");
 }
-
-}  // namespace
 
 Result generate(const geom::Curve& contour, const Options& o) {
   check_options(o);
   geom::Survey survey = contour.validate();
-  AxisMap map = axis_map(contour, o);
   std::optional<geom::Curve> cutter_centre;
   if (o.tool_radius > 0) {
+    const AxisMap placed = axis_map(contour, o);
     geom::Plane plane = plane_of(o.profile);
-    cutter_centre.emplace(contour.offset(o.tool_radius, o.side == Side::left, map.from[plane.u_axis],
-                                         map.from[plane.v_axis]));
+    cutter_centre.emplace(contour.offset(o.tool_radius, o.side == Side::left, placed.from[plane.u_axis],
+                                         placed.from[plane.v_axis]));
     survey = cutter_centre->validate();
   } else if (o.tool_radius < 0) {
     throw std::runtime_error("the tool radius must not be negative");
   }
-  const geom::Curve& curve = cutter_centre ? *cutter_centre : contour;
-  const bool with_z = !is_lathe(o) && !curve.planar_z();
+  const geom::Curve& measured = cutter_centre ? *cutter_centre : contour;
+  const bool with_z = !is_lathe(o) && !measured.planar_z();
   if (o.step_down < 0) throw std::runtime_error("the depth per pass must not be negative");
   if (o.step_down > 0 && is_lathe(o)) throw std::runtime_error("depth passes are for the mill");
   if (o.step_down > 0 && with_z) throw std::runtime_error("depth passes need a plane curve; this one rises in Z");
   if (o.step_down > 0 && !(o.depth > 0)) throw std::runtime_error("depth passes need a depth > 0");
-  const int dec = decimals_of(o.profile.increment);
-  geom::Vec3 increment{o.profile.increment, o.profile.increment, o.profile.increment};
-  if (is_lathe(o) && o.profile.diameter_x) increment[0] = o.profile.increment / 2;
-  if (is_lathe(o)) increment[1] = 0;
-  if (!is_lathe(o) && !with_z) increment[2] = 0;  // a plane contour's Z is a constant
+  // An inch program: the curve and the options in inches, every form written as in mm; the round
+  // trip runs it and measures in mm.
+  std::optional<geom::Curve> inches;
+  const Options inch_o = o.inch ? in_inches(o) : Options{};
+  if (o.inch) {
+    inches.emplace(measured.scaled(kMmPerInch));
+    survey = inches->survey();
+  }
+  const geom::Curve& curve = o.inch ? *inches : measured;
+  const Options& u = o.inch ? inch_o : o;  // in the program's units
+  const int dec = decimals_of(u.profile.increment);
+  geom::Vec3 increment{u.profile.increment, u.profile.increment, u.profile.increment};
+  if (is_lathe(u) && u.profile.diameter_x) increment[0] = u.profile.increment / 2;
+  if (is_lathe(u)) increment[1] = 0;
+  if (!is_lathe(u) && !with_z) increment[2] = 0;  // a plane contour's Z is a constant
   const geom::Grid grid(increment);
+  // (in mm: the fit's own messages would give inches)
+  if (o.inch && !(u.tol * 0.999 > (o.form == Form::arcs ? 2 : 1) * grid.worst_error()))
+    throw std::runtime_error(fmt::format(
+        "tolerance {} mm is too close to the coordinate rounding of an inch program ({:.6f} mm: steps of {} in){}",
+        o.tol, grid.worst_error() * kMmPerInch, u.profile.increment,
+        o.form == Form::arcs ? "; arcs need twice that" : ""));
+  // measured at the depth the program cuts at: an inch program's is rounded to its increment
+  Options measured_o = o;
+  if (o.inch && !is_lathe(o) && !with_z)
+    measured_o.depth = kMmPerInch * machine::round_to_increment(u.depth, std::round(1 / u.profile.increment));
+  const AxisMap map = axis_map(curve, u);
   // the fit aims a little inside the tolerance: the round trip measures the control's own path
   Context c{curve,
-            o,
+            u,
             map,
             with_z,
             dec,
-            feed_of(o),
-            AxisWords{o, dec, with_z},
-            geom::Fit{curve, map, grid, plane_of(o.profile), o.tol * 0.999},
+            feed_of(u),
+            AxisWords{u, dec, with_z},
+            geom::Fit{curve, map, grid, plane_of(u.profile), u.tol * 0.999},
             grid.snap(map(curve.point(curve.t0()))),
-            grid.snap(map(curve.point(curve.t1())))};
+            grid.snap(map(curve.point(curve.t1()))),
+            measured,
+            measured_o};
   c.fit.survey = &survey;
-  c.fit.arcs_with_r = o.profile.arcs_with_r;
-  c.fit.r_step = o.profile.increment;
-  c.fit.arc_radius_limit = o.profile.arc_radius_tolerance * 0.999;
+  c.fit.arcs_with_r = u.profile.arcs_with_r;
+  c.fit.r_step = u.profile.increment;
+  c.fit.arc_radius_limit = u.profile.arc_radius_tolerance * 0.999;
   for (const auto& p : curve.params()) {  // the spiral's centre; other curves: their origin
-    if (p.name == "cx") c.fit.centre[0] = p.value;
-    if (p.name == "cy") c.fit.centre[1] = p.value;
+    if (p.name == "cx") c.fit.centre[0] = in_program_units(u, p.value);
+    if (p.name == "cy") c.fit.centre[1] = in_program_units(u, p.value);
   }
   c.fit.centre = map(c.fit.centre);
   Emitted e;
@@ -997,9 +1035,9 @@ Result generate(const geom::Curve& contour, const Options& o) {
   r.text = std::move(e.text);
   r.parameters = e.parameters;
   r.macro = std::move(e.macro);
-  Options on_control = o;
+  Options on_control = measured_o;
   for (const auto& [key, value] : r.parameters) machine::set_parameter(on_control.profile, key, value);
-  r.stats = detail::round_trip(r.text, curve, on_control, e.first, e.last, e.speculation.get());
+  r.stats = detail::round_trip(r.text, measured, on_control, e.first, e.last, e.speculation.get());
   r.cutter_centre = std::move(cutter_centre);
   r.within_tolerance = r.stats.max_deviation <= o.tol;
   return r;

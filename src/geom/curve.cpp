@@ -244,8 +244,18 @@ Curve Curve::reversed() const {
   return out;
 }
 
+Curve Curve::scaled(double divisor) const {
+  forwards("scaling");
+  Curve out = *this;
+  for (Sym& s : out.sym_pos_) s = simplify(make(SymOp::div, s, konst(divisor)));
+  out.compile(options_);
+  out.scaled_ = true;
+  return out;
+}
+
 void Curve::forwards(const char* what) const {
   if (sense_ < 0) throw std::logic_error(fmt::format("{}: {} of a curve traced backwards", name_, what));
+  if (scaled_) throw std::logic_error(fmt::format("{}: {} of a scaled curve", name_, what));
 }
 
 void Curve::jets(std::span<const double> t, std::span<Jet> out) const {

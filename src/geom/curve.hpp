@@ -101,6 +101,10 @@ public:
   // gouge) or the curve leaves the plane.
   Curve offset(double radius, bool left, int u, int v) const;
 
+  // The same curve with its coordinates divided by `divisor` (25.4: in inches), derivatives and
+  // all; the same parameters. For an inch program's fit and text: validate() and offset() refuse it.
+  Curve scaled(double divisor) const;
+
   // The same curve traced backwards, to fit it from its end: over [-t1, -t0], its point at t is
   // this curve's at -t (bit for bit) and its first derivative changes sign. For evaluation only:
   // its expressions are this curve's, and validate() and offset() refuse it.
@@ -110,11 +114,12 @@ private:
   // tape's outputs at the parameter t traced, multiplied by `scale`
   Vec3 eval(const Tape& tape, double t, double scale) const;
   void compile(nc::EvalOptions options);  // derivatives and tapes from sym_pos_
-  void forwards(const char* what) const;  // throws std::logic_error for a curve traced backwards
+  void forwards(const char* what) const;  // throws std::logic_error for a curve traced backwards or scaled
 
   std::string name_;
   double t0_, t1_;
   double sense_ = 1;  // -1: traced backwards (the tapes see -t)
+  bool scaled_ = false;  // by scaled(): for evaluation only
   std::vector<Param> params_;
   std::array<Sym, 3> sym_pos_, sym_d1_, sym_d2_;
   Tape pos_, d1_, d2_, jet_;
