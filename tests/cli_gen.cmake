@@ -174,3 +174,36 @@ string(FIND "${err}" "warning" at)
 expect_rc("${at}" -1 "no warning for a mill curve")
 run_expect(0 "gen --list marks the lathe curves" ${NCURVE} gen --list)
 expect_text("${out}" "a lathe curve: --machine profiles/fanuc-lathe.toml" "--list marks the hyperbola")
+
+# the set-up: tool, spindle, coolant once before the contour, and their end; the program runs
+run_expect(0 "gen with a tool, spindle and coolant" ${NCURVE} gen ellipse --tool 3 --spindle 2400 --coolant
+           -o ${OUT}/gen_setup.nc)
+file(READ ${OUT}/gen_setup.nc setup_prog)
+expect_text("${setup_prog}" "G21 G17 G90 G94 G54\nT3 M06\nS2400 M03\nG00 G43 Z5. H3\nM08\n" "the mill set-up")
+expect_text("${setup_prog}" "\nM09\nM05\nM30\n" "the end")
+run_expect(0 "run the set-up program" ${NCURVE} run ${OUT}/gen_setup.nc --format jsonl)
+expect_text("${out}" "\"kind\":\"tool_change\"" "the tool change runs")
+expect_text("${out}" "\"kind\":\"coolant\"" "the coolant runs")
+run_expect(0 "gen a lathe set-up" ${NCURVE} gen hyperbola --machine ${SRC}/profiles/fanuc-lathe.toml --tool 2 --css 180
+           --max-rpm 3000 --spindle-ccw -o ${OUT}/gen_lathe_setup.nc)
+file(READ ${OUT}/gen_lathe_setup.nc setup_prog)
+expect_text("${setup_prog}" "G21 G18 G99\nT0202\nG50 S3000\nG96 S180 M04\n" "the lathe set-up")
+run_expect(0 "run the lathe set-up" ${NCURVE} run ${OUT}/gen_lathe_setup.nc --machine ${SRC}/profiles/fanuc-lathe.toml)
+run_expect(0 "css without a clamp" ${NCURVE} gen hyperbola --machine ${SRC}/profiles/fanuc-lathe.toml --css 180
+           -o ${OUT}/gen_lathe_css.nc)
+expect_text("${err}" "warning: --css without --max-rpm" "an unclamped surface speed is warned of")
+run_expect(2 "css on a mill" ${NCURVE} gen ellipse --css 180)
+expect_text("${err}" "a constant surface speed (G96) is for the lathe" "css is for the lathe")
+run_expect(2 "a clamp without css" ${NCURVE} gen ellipse --max-rpm 3000)
+expect_text("${err}" "the spindle clamp is for a constant surface speed" "max-rpm needs css")
+run_expect(2 "a tool 0" ${NCURVE} gen ellipse --tool 0)
+expect_text("${err}" "--tool: must be a whole number from 1 to 9999, got 0" "tool range")
+
+# inch: G20, coordinates and feeds in inches; the control reads them back in mm
+run_expect(0 "gen in inches" ${NCURVE} gen ellipse --inch -o ${OUT}/gen_inch.nc)
+file(READ ${OUT}/gen_inch.nc inch_prog)
+expect_text("${inch_prog}" "G20 G17 G90 G94 G54\nG00 Z0.1969\nX1.5748 Y0.\nG01 Z-0.0394 F7.874\n" "inch words")
+run_expect(0 "run the inch program" ${NCURVE} run ${OUT}/gen_inch.nc --format csv)
+expect_text("${out}" "line,39.999920,0.000000,-1.000760," "1.5748 in and -0.0394 in in mm")
+run_expect(2 "a cycle in inches" ${NCURVE} gen ellipse --inch --form cycle)
+expect_text("${err}" "the cycles' macros (O9010..O9019) are written in mm" "no inch cycles")

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "gen/generate.hpp"
+#include "gen/path_distance.hpp"
 #include "support/run_program.hpp"
 
 using namespace ncurve;
@@ -27,29 +28,6 @@ geom::Curve parabola_arc(double from, double to, double lift = 0) {
 double arc_length_from_top(double x) {
   const double u = 2 * kB * x / (kA * kA);
   return kA * kA / (4 * kB) * (u * std::sqrt(1 + u * u) + std::asinh(u));
-}
-
-double point_segment(double px, double py, double ax, double ay, double bx, double by) {
-  const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
-  const double s = len2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0, 1.0) : 0.0;
-  return std::hypot(px - ax - s * dx, py - ay - s * dy);
-}
-
-// Distance from (px, py) to a move in the plane (u, v) of its axes: a segment, or an arc about its
-// centre, its radius going from the start's to the end's with the angle (as a control draws an arc
-// whose ends lie at slightly different radii): across the arc where p's angle lies within the
-// sweep, else to the nearer end.
-double point_move(double px, double py, const machine::Move& m, int u, int v) {
-  if (m.kind != machine::MoveKind::arc) return point_segment(px, py, m.start[u], m.start[v], m.end[u], m.end[v]);
-  const double cu = m.center[u], cv = m.center[v];
-  const double rs = std::hypot(m.start[u] - cu, m.start[v] - cv), re = std::hypot(m.end[u] - cu, m.end[v] - cv);
-  const double a0 = std::atan2(m.start[v] - cv, m.start[u] - cu), ap = std::atan2(py - cv, px - cu);
-  double along = m.sweep < 0 ? a0 - ap : ap - a0;  // from the start in the sweep's sense
-  along = std::fmod(along + 4 * std::numbers::pi, 2 * std::numbers::pi);
-  const double ends = std::min(std::hypot(px - m.start[u], py - m.start[v]), std::hypot(px - m.end[u], py - m.end[v]));
-  if (along > std::fabs(m.sweep)) return ends;
-  const double r = rs + (re - rs) * along / std::fabs(m.sweep);
-  return std::min(ends, std::fabs(std::hypot(px - cu, py - cv) - r));
 }
 
 }  // namespace
@@ -84,17 +62,12 @@ TEST(GenEndStop, EveryFormFitsACurveAtRestAtEitherEnd) {
         const auto ran = test::run(r.text, o.profile);
         ASSERT_TRUE(ran.result.ok()) << r.text;
         const int u = lathe ? 2 : 0, v = lathe ? 0 : 1;  // the machine axes of the curve's x and y
-        std::vector<machine::Move> feed;
-        for (const auto& m : ran.motions())
-          if (m.kind == machine::MoveKind::line || m.kind == machine::MoveKind::arc) feed.push_back(m);
-        double worst = 0;
+        std::vector<std::pair<double, double>> points;
         for (int i = 0; i <= 2000; ++i) {
           const double t = (range.from + (range.to - range.from) * i / 2000.0) * std::numbers::pi / 180;
-          const double x = kA * std::cos(t), y = kB * std::sin(t) * std::sin(t) + lift;
-          double nearest = INFINITY;
-          for (const auto& m : feed) nearest = std::min(nearest, point_move(x, y, m, u, v));
-          worst = std::max(worst, nearest);
+          points.emplace_back(kA * std::cos(t), kB * std::sin(t) * std::sin(t) + lift);
         }
+        const double worst = test::farthest(points, test::feed_moves(ran.moves), u, v);
         EXPECT_LE(worst, tol + 1e-6);
         EXPECT_GT(worst, tol / 4);  // the tolerance is used, not a needlessly fine step
       }
