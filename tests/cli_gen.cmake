@@ -82,3 +82,128 @@ run_expect(0 "run the depth-pass program" ${NCURVE} run ${OUT}/gen_passes.nc)
 expect_text("${out}" "-2.0000 .. 5.0000" "Z down to the depth")
 run_expect(1 "depth passes on a helix" ${NCURVE} gen helix --tol 0.01 --step-down 1)
 expect_text("${err}" "depth passes need a plane curve" "helix rises in Z")
+
+# a curve at rest at an end of its range (zero speed at t = 0 and 180: the parabola y = 10 (1 - x^2/900)
+# traced by x = 30 cos t) is cut; a stop inside the range (a cusp) is refused with where
+run_expect(0 "gen a curve at rest at both ends" ${NCURVE} gen expr --x "a*COS(t)" --y "b*SIN(t)*SIN(t)" --t 0:180
+           --a 30 --b 10 -o ${OUT}/gen_rest.nc)
+run_expect(0 "run the curve at rest" ${NCURVE} run ${OUT}/gen_rest.nc --format csv)
+expect_text("${out}" "line,30.000000,0.000000,-1.000000," "the contour starts at x = 30")
+expect_text("${out}" "line,-30.000000,0.000000,-1.000000," "the contour ends at x = -30")
+run_expect(0 "gen a cycle for a curve at rest at its end" ${NCURVE} gen expr --x "a*COS(t)" --y "b*SIN(t)*SIN(t)"
+           --t 90:180 --a 30 --b 10 --form cycle -o ${OUT}/gen_rest_cycle.nc)
+run_expect(0 "run that cycle" ${NCURVE} run ${OUT}/gen_rest_cycle.nc --param 6059=111)
+run_expect(1 "a cusp inside the range" ${NCURVE} gen expr --x "a*COS(t)" --y "b*SIN(t)*SIN(t)" --t 90:270
+           --a 30 --b 10)
+expect_text("${err}" "the curve stops at t = 180 (zero speed" "the cusp is named")
+
+# every number typed is checked, with the option and what it takes; NaN and infinities are refused
+run_expect(2 "a range of t that is not a number" ${NCURVE} gen expr --x "a*COS(t)" --y "SIN(t)" --t 0:abc --a 1)
+expect_text("${err}" "--t: 'abc' is not a number (expected FROM:TO" "--t names the bad number")
+run_expect(2 "a range of t without a colon" ${NCURVE} gen expr --x "COS(t)" --y "SIN(t)" --t 0-90)
+expect_text("${err}" "--t: '0-90' has no ':'" "--t needs FROM:TO")
+run_expect(2 "an empty range of t" ${NCURVE} gen expr --x "COS(t)" --y "SIN(t)" --t 90:0)
+expect_text("${err}" "--t: the range 90:0 is empty" "--t FROM below TO")
+run_expect(2 "an empty --from/--to range" ${NCURVE} gen spiral --from 30 --to 20)
+expect_text("${err}" "--from must be below --to" "--from below --to")
+run_expect(2 "a tolerance of 0" ${NCURVE} gen spiral --tol 0)
+expect_text("${err}" "--tol: must be a length above 0 mm, got 0" "--tol 0 in mm")
+foreach(bad nan inf -inf)
+  run_expect(2 "--tol ${bad}" ${NCURVE} gen spiral --tol ${bad})
+  expect_text("${err}" "--tol: must be a length above 0 mm, got ${bad}" "--tol ${bad} refused")
+  run_expect(2 "--tool-radius ${bad}" ${NCURVE} gen spiral --tool-radius ${bad})
+  expect_text("${err}" "--tool-radius: must be a length of at least 0 mm, got ${bad}" "--tool-radius ${bad} refused")
+  run_expect(2 "--from ${bad}" ${NCURVE} gen spiral --from ${bad})
+  expect_text("${err}" "--from: must be a finite value of the curve parameter t, got ${bad}" "--from ${bad} refused")
+  run_expect(2 "curve parameter ${bad}" ${NCURVE} gen spiral --r0 ${bad})
+  expect_text("${err}" "--r0: must be a finite value of the parameter r0, got ${bad}" "--r0 ${bad} refused")
+  run_expect(2 "--t with ${bad}" ${NCURVE} gen expr --x "COS(t)" --y "SIN(t)" --t 0:${bad})
+  expect_text("${err}" "--t: TO must be a finite number, got ${bad}" "--t 0:${bad} refused")
+endforeach()
+foreach(case "--feed;0;--feed: must be a feed above 0 mm/min (mill) or mm/rev (lathe), got 0"
+              "--depth;-1;--depth: must be a length of at least 0 mm, got -1"
+              "--step-down;abc;--step-down: 'abc' is not a number (expected a length of at least 0 mm)"
+              "--clearance;0;--clearance: must be a length above 0 mm, got 0"
+              "--program-number;1.5;--program-number: must be a whole number from 1 to 9999, got 1.5"
+              "--tip;nan;--tip: must be a whole number from 0 to 9, got nan"
+              "--cycle-program;9020;--cycle-program: must be a whole number from 9010 to 9019, got 9020"
+              "--form;arc;--form: 'arc' is not a form (expanded, arcs, macro, adaptive-macro, cycle); did you mean arcs?"
+              "--r0;abc;--r0: 'abc' is not a number (expected a finite value of the parameter r0)")
+  list(GET case 0 option)
+  list(GET case 1 value)
+  list(GET case 2 message)
+  run_expect(2 "${option} ${value}" ${NCURVE} gen spiral ${option} ${value})
+  expect_text("${err}" "${message}" "${option} ${value}")
+endforeach()
+
+# names: a name in an expression needs a value, a function must be one, an unknown --NAME is an error
+run_expect(2 "a parameter without a value" ${NCURVE} gen expr --x "c*COS(t)" --y "SIN(t)" --t 0:90)
+expect_text("${err}" "expr x(t): 'c' at column 1 is a parameter without a value: give --c VALUE" "missing --c")
+run_expect(2 "a misspelt function" ${NCURVE} gen expr --x "a*COZ(t)" --y "SIN(t)" --t 0:90 --a 1)
+expect_text("${err}" "'COZ' at column 3 is not a function of the macro language; did you mean COS?" "COZ for COS")
+run_expect(2 "a parameter named like an option" ${NCURVE} gen expr --x "depth*COS(t)" --y "SIN(t)" --t 0:90)
+expect_text("${err}" "named like the option --depth" "a parameter cannot be --depth")
+run_expect(2 "an unknown option" ${NCURVE} gen spiral --tolerance 0.01)
+expect_text("${err}" "--tolerance is not an option of ncurve gen nor a parameter of spiral (r0, pitch, cx, cy); did you mean --tol?"
+            "--tolerance for --tol")
+run_expect(2 "a misspelt parameter" ${NCURVE} gen spiral --pich 3)
+expect_text("${err}" "did you mean --pitch?" "--pich for --pitch")
+run_expect(2 "an expr parameter its expressions do not use" ${NCURVE} gen expr --x "a*COS(t)" --y "SIN(t)" --t 0:90
+           --a 1 --b 2)
+expect_text("${err}" "--b is not an option of ncurve gen nor a name in the expressions (they use a)" "--b unused")
+run_expect(2 "an expr option given to a catalogue curve" ${NCURVE} gen spiral --t 0:90)
+expect_text("${err}" "--t is for expr" "--t is for expr")
+run_expect(2 "a parameter given twice" ${NCURVE} gen spiral --r0 1 --r0 2)
+expect_text("${err}" "--r0 is given twice" "--r0 twice")
+run_expect(2 "a misspelt curve" ${NCURVE} gen elipse)
+expect_text("${err}" "did you mean ellipse?" "elipse for ellipse")
+run_expect(2 "one dash" ${NCURVE} gen spiral -tol 0.01)
+expect_text("${err}" "did you mean --tol?" "-tol for --tol")
+run_expect(0 "a parameter in another case" ${NCURVE} gen spiral --R0 2 --json)
+
+# a lathe curve without a lathe profile: a mill program, and a warning saying how to get the lathe one
+run_expect(0 "gen hyperbola on the mill" ${NCURVE} gen hyperbola -o ${OUT}/gen_hyperbola_mill.nc)
+expect_text("${err}" "warning: hyperbola is a lathe curve; without a lathe profile this is a mill program" "lathe warning")
+expect_text("${err}" "--machine profiles/fanuc-lathe.toml" "the warning says how")
+run_expect(0 "gen hyperbola on the lathe" ${NCURVE} gen hyperbola --machine ${SRC}/profiles/fanuc-lathe.toml
+           -o ${OUT}/gen_hyperbola_lathe.nc)
+string(FIND "${err}" "warning" at)
+expect_rc("${at}" -1 "no warning with a lathe profile")
+run_expect(0 "gen ellipse on the mill" ${NCURVE} gen ellipse -o ${OUT}/gen_ellipse_mill.nc)
+string(FIND "${err}" "warning" at)
+expect_rc("${at}" -1 "no warning for a mill curve")
+run_expect(0 "gen --list marks the lathe curves" ${NCURVE} gen --list)
+expect_text("${out}" "a lathe curve: --machine profiles/fanuc-lathe.toml" "--list marks the hyperbola")
+
+# the set-up: tool, spindle, coolant once before the contour, and their end; the program runs
+run_expect(0 "gen with a tool, spindle and coolant" ${NCURVE} gen ellipse --tool 3 --spindle 2400 --coolant
+           -o ${OUT}/gen_setup.nc)
+file(READ ${OUT}/gen_setup.nc setup_prog)
+expect_text("${setup_prog}" "G21 G17 G90 G94 G54\nT3 M06\nS2400 M03\nG00 G43 Z5. H3\nM08\n" "the mill set-up")
+expect_text("${setup_prog}" "\nM09\nM05\nM30\n" "the end")
+run_expect(0 "run the set-up program" ${NCURVE} run ${OUT}/gen_setup.nc --format jsonl)
+expect_text("${out}" "\"kind\":\"tool_change\"" "the tool change runs")
+expect_text("${out}" "\"kind\":\"coolant\"" "the coolant runs")
+run_expect(0 "gen a lathe set-up" ${NCURVE} gen hyperbola --machine ${SRC}/profiles/fanuc-lathe.toml --tool 2 --css 180
+           --max-rpm 3000 --spindle-ccw -o ${OUT}/gen_lathe_setup.nc)
+file(READ ${OUT}/gen_lathe_setup.nc setup_prog)
+expect_text("${setup_prog}" "G21 G18 G99\nT0202\nG50 S3000\nG96 S180 M04\n" "the lathe set-up")
+run_expect(0 "run the lathe set-up" ${NCURVE} run ${OUT}/gen_lathe_setup.nc --machine ${SRC}/profiles/fanuc-lathe.toml)
+run_expect(0 "css without a clamp" ${NCURVE} gen hyperbola --machine ${SRC}/profiles/fanuc-lathe.toml --css 180
+           -o ${OUT}/gen_lathe_css.nc)
+expect_text("${err}" "warning: --css without --max-rpm" "an unclamped surface speed is warned of")
+run_expect(2 "css on a mill" ${NCURVE} gen ellipse --css 180)
+expect_text("${err}" "a constant surface speed (G96) is for the lathe" "css is for the lathe")
+run_expect(2 "a clamp without css" ${NCURVE} gen ellipse --max-rpm 3000)
+expect_text("${err}" "the spindle clamp is for a constant surface speed" "max-rpm needs css")
+run_expect(2 "a tool 0" ${NCURVE} gen ellipse --tool 0)
+expect_text("${err}" "--tool: must be a whole number from 1 to 9999, got 0" "tool range")
+
+# inch: G20, coordinates and feeds in inches; the control reads them back in mm
+run_expect(0 "gen in inches" ${NCURVE} gen ellipse --inch -o ${OUT}/gen_inch.nc)
+file(READ ${OUT}/gen_inch.nc inch_prog)
+expect_text("${inch_prog}" "G20 G17 G90 G94 G54\nG00 Z0.1969\nX1.5748 Y0.\nG01 Z-0.0394 F7.874\n" "inch words")
+run_expect(0 "run the inch program" ${NCURVE} run ${OUT}/gen_inch.nc --format csv)
+expect_text("${out}" "line,39.999920,0.000000,-1.000760," "1.5748 in and -0.0394 in in mm")
+run_expect(2 "a cycle in inches" ${NCURVE} gen ellipse --inch --form cycle)
+expect_text("${err}" "the cycles' macros (O9010..O9019) are written in mm" "no inch cycles")

@@ -14,9 +14,15 @@ struct CurveArgs {
   std::string name;  // catalogue name or "expr"
   std::string x, y, z, t_range;
   std::optional<double> from, to;
+  // for messages: the command ("ncurve gen") and its long options (to suggest for a misspelt one);
+  // empty: the extras are curve parameters only
+  std::string command;
+  std::vector<std::string> options;
 };
 
-// extras: the --NAME VALUE pairs the option parser left over. Throws std::runtime_error.
+// extras: the --NAME VALUE pairs the option parser left over: each must name a parameter of the
+// curve (for expr: a name its expressions use, each of which needs a value) and give a finite
+// number. Throws std::runtime_error saying what is wrong and, where one is near, what was meant.
 geom::Curve build_curve(const CurveArgs& a, const std::vector<std::string>& extras,
                         const machine::MachineProfile& profile);
 

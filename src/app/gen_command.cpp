@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "app/cli_checks.hpp"
 #include "app/curve_args.hpp"
 #include "app/save.hpp"
 #include "gen/generate.hpp"
@@ -21,6 +22,7 @@ std::string list_curves() {
     s += fmt::format("\n  {:<10} {}\n", c.name, c.doc);
     s += fmt::format("  {:<10} x = {}\n  {:<10} y = {}\n  {:<10} z = {}\n", "", c.x, "", c.y, "", c.z);
     s += fmt::format("  {:<10} --from {} --to {}  ({})\n", "", c.from, c.to, c.t_doc);
+    if (c.lathe) s += fmt::format("  {:<10} a lathe curve: --machine profiles/fanuc-lathe.toml\n", "");
     for (const auto& p : c.params) s += fmt::format("  {:<10} --{} {:.10g}  ({})\n", "", p.name, p.value, p.doc);
   }
   s += "\n  expr       any curve: ncurve gen expr --x \"..\" --y \"..\" [--z \"..\"] --t 0:360 [--NAME VALUE ...]\n"
@@ -35,43 +37,62 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
   gen->allow_extras();
   gen->add_option("curve", a.curve, "curve name (see --list) or expr");
   gen->add_flag("--list", a.list, "list the curves and their parameters");
-  gen->add_option("--tol", a.tol, "shape tolerance, mm (default 0.005)")->check(CLI::PositiveNumber);
+  gen->add_option("--tol", a.tol, "shape tolerance, mm (default 0.005)")->check(positive_mm());
   gen->add_option("--form", a.form, "expanded, arcs, macro, adaptive-macro or cycle")
-      ->check(CLI::IsMember({"expanded", "arcs", "macro", "adaptive-macro", "cycle"}));
+      ->check(one_of("a form", {"expanded", "arcs", "macro", "adaptive-macro", "cycle"}));
   gen->add_option("--lines", a.lines,
                   "expanded: equal-error (default: fewest lines, tolerance band), equal-error-chord, equal-step, "
                   "equal-chord or radial-error (seed 000's shape error along the ray from the centre)")
-      ->check(CLI::IsMember({"equal-error", "equal-error-chord", "equal-step", "equal-chord", "radial-error"}));
+      ->check(one_of("a line method", {"equal-error", "equal-error-chord", "equal-step", "equal-chord", "radial-error"}));
   gen->add_option("--machine", a.machine, "machine profile (TOML); default: FANUC 3-axis mill")
       ->check(CLI::ExistingFile);
-  gen->add_option("--from", a.from, "start of the curve parameter t");
-  gen->add_option("--to", a.to, "end of the curve parameter t");
+  gen->add_option("--from", a.from, "start of the curve parameter t")->check(finite("a value of the curve parameter t"));
+  gen->add_option("--to", a.to, "end of the curve parameter t")->check(finite("a value of the curve parameter t"));
   gen->add_option("--x", a.x, "expr: x(t)");
   gen->add_option("--y", a.y, "expr: y(t)");
   gen->add_option("--z", a.z, "expr: z(t)");
   gen->add_option("--t", a.t_range, "expr: range of t as FROM:TO");
-  gen->add_option("--feed", a.feed, "feed, mm/min (mill) or mm/rev (lathe)")->check(CLI::PositiveNumber);
-  gen->add_option("--depth", a.depth, "mill: depth of a plane contour below Z0, mm");
+  gen->add_option("--feed", a.feed, "feed, mm/min (mill) or mm/rev (lathe)")
+      ->check(positive("a feed", "mm/min (mill) or mm/rev (lathe)"));
+  gen->add_option("--depth", a.depth, "mill: depth of a plane contour below Z0, mm")->check(non_negative_mm());
   gen->add_option("--step-down", a.step_down, "mill: depth per pass for a plane contour, mm (default: one pass)")
-      ->check(CLI::NonNegativeNumber);
-  gen->add_option("--clearance", a.clearance, "mill: rapid plane above Z0; lathe: retract, mm");
-  gen->add_option("--program-number", a.program_number, "O number of the program")->check(CLI::Range(1, 9999));
+      ->check(non_negative_mm());
+  gen->add_option("--clearance", a.clearance, "mill: rapid plane above Z0; lathe: retract, mm")->check(positive_mm());
+  gen->add_option("--program-number", a.program_number, "O number of the program")->check(whole(1, 9999));
   gen->add_option("--tool-radius", a.tool_radius,
                   "program the cutter centre (mill) or tool-nose centre (lathe) for this radius, mm")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_mm());
   gen->add_option("--tip", a.tip,
                   "lathe: imaginary tool nose direction 0..9 (FANUC, +X up: 2 = turning towards the chuck); the "
                   "program follows that tip, 0 the nose centre")
-      ->check(CLI::Range(0, 9));
+      ->check(whole(0, 9));
   gen->add_option("--side", a.side, "left or right of the curve looking along it (G41 / G42 side); default left")
-      ->check(CLI::IsMember({"left", "right"}));
+      ->check(one_of("a side", {"left", "right"}));
   gen->add_option("--cycle-program", a.cycle_program,
                   "cycle: the macro's program O9010..O9019 (G102..G111, No.6050..6059); default: the curve's own "
                   "(spiral 9010, ellipse 9011, parabola 9012, hyperbola 9013, involute 9014, sine 9015, cycloid 9016, "
                   "trochoid 9017, helix 9018, rotor and expr 9019)")
-      ->check(CLI::Range(9010, 9019));
+      ->check(whole(9010, 9019));
   gen->add_flag("--macro-only", a.macro_only,
                 "cycle: write only the cycle's macro program (for the control's memory), not the calling program");
+  gen->add_option("--tool", a.tool,
+                  "call this tool before the contour: mill T_ M06 and G43 H_ at the clearance; lathe T_ with the "
+                  "offset of the same number (T0101)")
+      ->check(whole(1, 9999));
+  gen->add_option("--spindle", a.spindle, "start the spindle at this speed, rev/min: S_ M03 (lathe: G97 S_ M03)")
+      ->check(whole(1, 999999));
+  gen->add_flag("--spindle-ccw", a.spindle_ccw, "turn the spindle counter-clockwise (M04 for M03)");
+  gen->add_option("--css", a.css,
+                  "lathe: constant surface speed, m/min (G96 S_ M03; ft/min in an inch program); clamp it with "
+                  "--max-rpm")
+      ->check(whole(1, 99999));
+  gen->add_option("--max-rpm", a.max_rpm, "lathe with --css: the spindle clamp, rev/min (G50 S_; G92 S_ on G-code "
+                                          "systems B and C)")
+      ->check(whole(1, 999999));
+  gen->add_flag("--coolant", a.coolant, "coolant on before the contour (M08), off at the end (M09)");
+  gen->add_flag("--inch", a.inch,
+                "write the program in inches (G20; coordinates and feeds in inches on the inch increment); the curve, "
+                "--tol and the other lengths stay in mm, --feed in mm/min or mm/rev, --css in m/min");
   gen->add_option("--plot", a.plot, "SVG plot of the curve, the path and the deviation along it");
   gen->add_option("-o,--output", a.output, "write the program here (statistics go to the terminal)");
   gen->add_flag("--json", a.json, "statistics as JSON");
@@ -103,13 +124,31 @@ int gen_command(const GenArgs& a) {
     o.side = a.side == "right" ? gen::Side::right : gen::Side::left;
     o.tip = a.tip;
     o.cycle_program = a.cycle_program;
+    o.tool = a.tool;
+    o.spindle = a.spindle;
+    o.spindle_ccw = a.spindle_ccw;
+    o.css = a.css;
+    o.max_rpm = a.max_rpm;
+    o.coolant = a.coolant;
+    o.inch = a.inch;
+    gen::check_options(o);
     if (a.macro_only && o.form != gen::Form::cycle) throw std::runtime_error("--macro-only is for --form cycle");
-    curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to}, a.command->remaining(), o.profile));
+    curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to, "ncurve gen", long_options(*a.command)},
+                              a.command->remaining(), o.profile));
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 2;
   }
 
+  if (const geom::CurveSpec* spec = geom::find_curve(curve->name()); spec && spec->lathe && !o.profile.lathe())
+    std::cerr << fmt::format(
+        "ncurve gen: warning: {} is a lathe curve; without a lathe profile this is a mill program (its X and Z on "
+        "the mill's X and Z, X as a radius). For the lathe program (G18, X as a diameter, feed per revolution) give "
+        "--machine profiles/fanuc-lathe.toml\n",
+        spec->name);
+  if (o.css > 0 && o.max_rpm == 0 && o.profile.lathe())
+    std::cerr << "ncurve gen: warning: --css without --max-rpm: no spindle clamp, the spindle speeds up without "
+                 "limit as X nears 0\n";
   gen::Result r;
   try {
     r = gen::generate(*curve, o);

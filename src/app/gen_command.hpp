@@ -29,6 +29,14 @@ struct GenArgs {
   std::string plot;
   std::string output;
   bool json = false;
+  // set-up and units (gen::Options)
+  int tool = 0;
+  int spindle = 0;
+  bool spindle_ccw = false;
+  int css = 0;
+  int max_rpm = 0;
+  bool coolant = false;
+  bool inch = false;
   CLI::App* command = nullptr;
 };
 

@@ -268,9 +268,13 @@ Emitted adaptive_text(const Context& c, double aim) {
   // the first step from the curvature at the start (a chord of a quarter of the curve at most)
   const double least_k = std::pow(nominal / (0.25 * curve_length(c)), 2);
   const double span = c.curve.t1() - c.curve.t0();
-  const geom::Vec3 d1 = c.curve.d1(c.curve.t0());
-  const double speed = std::hypot(d1[0], d1[1], d1[2]);
-  const double first = std::min(span, nominal / std::sqrt(std::max(c.curve.curvature(c.curve.t0()), least_k)) / speed);
+  const geom::Curve::Jet at = c.curve.jet(c.curve.t0());
+  const double speed = std::hypot(at.d1[0], at.d1[1], at.d1[2]), bend = std::hypot(at.d2[0], at.d2[1], at.d2[2]);
+  double first;
+  if (speed * speed < 1e-6 * nominal * bend)  // at rest (the curve stops at its start): a chord from rest
+    first = std::min(span, std::sqrt(2 * nominal / std::sqrt(least_k) / bend));
+  else
+    first = std::min(span, nominal / std::sqrt(std::max(c.curve.curvature(c.curve.t0()), least_k)) / speed);
 
   Writer w;
   macro_preamble(w, c, "", fmt::format(", #{}.. JET THERE, #5 T AT VERTEX #{}..", var::jet, var::vectors), 5);
@@ -278,7 +282,7 @@ Emitted adaptive_text(const Context& c, double aim) {
   w.block(fmt::format("#2={} (BAND: VERTEX OFFSET, MM)", fraction(number(offset, kDigits))));
   w.block(fmt::format("#3={} (LONGEST T STEP)", number(span / 4, kDigits)));
   w.block(fmt::format("#13={} (FIRST T STEP)", fraction(number(first, 6))));
-  w.block(modes(c.o));
+  modes_block(w, c.o);
   adaptive_start(w, 5);
   Writer to_start;
   approach(to_start, c, MacroWords{{}, l.words(var::vectors, true)});
@@ -312,7 +316,7 @@ Emitted adaptive_macro(const Context& c) {
                                          c.o.tol, rounding));
   // the estimate at the middle is within about 1 % of the true deviation: aim lower until the
   // control's own path is within the tolerance
-  return tightened(c, c.o, printed(c.fit.tol), printed, [&](double aim) { return adaptive_text(c, aim); },
+  return tightened(c, c.measured_o, printed(c.fit.tol), printed, [&](double aim) { return adaptive_text(c, aim); },
                    "adaptive macro: no aim keeps this curve within the tolerance");
 }
 

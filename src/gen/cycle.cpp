@@ -30,8 +30,9 @@ std::string cycle_text(const Context& c, double chord_error, std::uint32_t& firs
   w.lines(header(c.curve, o, "G102 spiral cycle, chord error argument T"));
   w.block("(PARAMETER SETTING: NO.6050 = 102, G102 CALLS O9010)");
   w.block("(O9010 FOLLOWS THIS PROGRAM; NCURVE MACROS/O9010.NC)");
+  begin_setup(w, o, c.dec);
   begin_passes(w, o, c.dec);
-  w.block(modes(o));
+  modes_block(w, o);
   Frame fr = frame(o, c.words, c.start, c.end, c.dec, c.feed);
   w.lines(fr.before_start);
   w.lines(fr.to_depth);
@@ -39,9 +40,10 @@ std::string cycle_text(const Context& c, double chord_error, std::uint32_t& firs
   w.block(fmt::format("G102 X{} Y{} I{} J{} Q{} T{}{} F{}", number(c.end[0], c.dec), number(c.end[1], c.dec),
                       number(centre[0] - c.start[0], c.dec), number(centre[1] - c.start[1], c.dec),
                       number(param(c.curve, "pitch"), 6), number(chord_error, 6), clockwise ? " D2" : "",
-                      number(c.feed, 4)));
+                      feed_number(o, c.feed)));
   w.lines(fr.retract);
   end_passes(w, o);
+  end_setup(w, o);
   w.block("M30");
   first = w.line + 1;
   std::string macro = o9010_text();  // one tape: the macro's own % lines go
@@ -149,18 +151,20 @@ std::string curve_cycle_text(const Context& c, const Slot& slot, double toleranc
   w.lines(header(c.curve, o, fmt::format("G{} cycle, tolerance argument T", slot.g)));
   w.block(fmt::format("(PARAMETER SETTING: NO.{} = {}, G{} CALLS O{})", slot.parameter, slot.g, slot.g, slot.program));
   w.block(fmt::format("(O{} FOLLOWS THIS PROGRAM)", slot.program));
+  begin_setup(w, o, c.dec);
   begin_passes(w, o, c.dec);
-  w.block(modes(o));
+  modes_block(w, o);
   Frame fr = frame(o, c.words, c.start, c.end, c.dec, c.feed);
   w.lines(fr.before_start);
   w.lines(fr.to_depth);
   std::string call = fmt::format("G{}", slot.g);
   for (const auto& [p, l] : argument_letters(c.curve)) call += fmt::format(" {}{}", l, number(p->value, 9));
   call += fmt::format(" S{} E{} T{} F{}", number(c.curve.t0(), 9), number(c.curve.t1(), 9), number(tolerance, 6),
-                      number(c.feed, 4));
+                      feed_number(o, c.feed));
   w.block(call);
   w.lines(fr.retract);
   end_passes(w, o);
+  end_setup(w, o);
   w.block("M30");
   std::uint32_t contour = 0;
   macro = curve_macro(c, slot, w.line + 1, contour);
@@ -188,7 +192,7 @@ Emitted cycle(const Context& c) {
   if (spiral && c.o.cycle_program && c.o.cycle_program != 9010)
     throw std::runtime_error("the spiral's cycle is G102 in O9010");
   const Slot slot = slot_of(c);
-  Options with_cycle = c.o;
+  Options with_cycle = c.measured_o;
   with_cycle.profile.g_code_macros[static_cast<std::size_t>(slot.program - 9010)] = slot.g;
   // the largest T argument (in millionths) whose cycle the round trip finds within the tolerance
   const std::string failure =

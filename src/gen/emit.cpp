@@ -120,21 +120,75 @@ std::string AxisWords::operator()(const Vec3& p) const {
 std::string header(const geom::Curve& curve, const Options& o, const std::string& method) {
   std::string params;
   for (const auto& p : curve.params()) params += fmt::format(" {}={:.10g}", p.name, p.value);
+  // lengths in mm, as given (an inch program's options hold them in inches)
+  auto mm = [&](double v) { return o.inch ? fmt::format("{:.10g}", v * kMmPerInch) : fmt::format("{}", v); };
   std::string text =
       fmt::format("O{:04d} (NCURVE {} {})\n(CURVE {}{} T={:.10g}..{:.10g})\n(TOLERANCE {} MM, FORM {}{})\n",
                   o.program_number, comment_text(curve.name()), comment_text(to_string(o.form)),
-                  comment_text(curve.name()), comment_text(params), curve.t0(), curve.t1(), o.tol,
+                  comment_text(curve.name()), comment_text(params), curve.t0(), curve.t1(), mm(o.tol),
                   comment_text(to_string(o.form)), method.empty() ? "" : ", " + comment_text(method));
   if (o.tool_radius > 0)
-    text += fmt::format("(CUTTER CENTRE PATH: TOOL RADIUS {} MM, {} OF THE CURVE)\n", o.tool_radius,
+    text += fmt::format("(CUTTER CENTRE PATH: TOOL RADIUS {} MM, {} OF THE CURVE)\n", mm(o.tool_radius),
                         o.side == Side::left ? "LEFT" : "RIGHT");
+  if (o.inch) text += "(INCH PROGRAM: COORDINATES AND FEEDS IN INCHES; THE CURVE IS IN MM)\n";
   return text;
 }
 
 std::string modes(const Options& o) {
-  if (is_lathe(o)) return o.profile.gcode_system == 'A' ? "G21 G18 G99" : "G21 G18 G90 G95";
-  return "G21 G17 G90 G94 G54";
+  const char* units = o.inch ? "G20" : "G21";
+  if (is_lathe(o)) return fmt::format("{} G18 {}", units, o.profile.gcode_system == 'A' ? "G99" : "G90 G95");
+  return fmt::format("{} G17 G90 G94 G54", units);
 }
+
+void modes_block(Writer& w, const Options& o) {
+  if (!w.modes_written) w.block(modes(o));
+}
+
+std::string feed_number(const Options& o, double feed) { return number(feed, o.inch && is_lathe(o) ? 6 : 4); }
+
+bool has_setup(const Options& o) { return o.tool > 0 || o.spindle > 0 || o.css > 0 || o.coolant; }
+
+void begin_setup(Writer& w, const Options& o, int dec) {
+  if (!has_setup(o)) return;
+  w.block(modes(o));
+  w.modes_written = true;
+  const bool lathe = is_lathe(o);
+  if (o.tool > 0) w.block(lathe ? fmt::format("T{:02d}{:02d}", o.tool, o.tool) : fmt::format("T{} M06", o.tool));
+  const char* rotation = o.spindle_ccw ? "M04" : "M03";
+  if (o.css > 0) {
+    if (o.max_rpm > 0) w.block(fmt::format("{} S{}", o.profile.gcode_system == 'A' ? "G50" : "G92", o.max_rpm));
+    // m/min, or feet a minute in an inch program
+    const long speed = o.inch ? std::lround(o.css / 0.3048) : o.css;
+    w.block(fmt::format("G96 S{} {}", speed, rotation));
+  } else if (o.spindle > 0) {
+    w.block(fmt::format("{}S{} {}", lathe ? "G97 " : "", o.spindle, rotation));
+  }
+  if (o.tool > 0 && !lathe) w.block(fmt::format("G00 G43 Z{} H{}", number(o.clearance, dec), o.tool));
+  if (o.coolant) w.block("M08");
+}
+
+void end_setup(Writer& w, const Options& o) {
+  if (o.coolant) w.block("M09");
+  if (o.spindle > 0 || o.css > 0) w.block("M05");
+}
+
+Options in_inches(const Options& o) {
+  Options u = o;
+  u.inch = true;
+  u.tol = o.tol / kMmPerInch;
+  u.feed = feed_of(o) / kMmPerInch;
+  u.depth = o.depth / kMmPerInch;
+  u.clearance = o.clearance / kMmPerInch;
+  u.step_down = o.step_down / kMmPerInch;
+  u.tool_radius = o.tool_radius / kMmPerInch;
+  // the inch input increment, in inches, is a tenth of the metric one in mm (IS-B 0.001 mm, 0.0001 in)
+  u.profile.increment = o.profile.increment / 10;
+  // the control checks an arc's end radius in mm against No.3410 (see machine/motion.cpp)
+  u.profile.arc_radius_tolerance = o.profile.arc_radius_tolerance / kMmPerInch;
+  return u;
+}
+
+double in_program_units(const Options& o, double mm) { return o.inch ? mm / kMmPerInch : mm; }
 
 bool depth_passes(const Options& o) { return o.step_down > 0 && !is_lathe(o); }
 
@@ -160,13 +214,13 @@ Frame frame(const Options& o, const AxisWords& words, const Vec3& start, const V
   if (is_lathe(o)) {
     f.before_start = fmt::format("G00 X{} Z{}", number(2 * (start[0] + o.clearance), dec),
                                  number(start[2] + o.clearance, dec));
-    f.to_depth = fmt::format("G01 {} F{}", words(start), number(feed, 4));
+    f.to_depth = fmt::format("G01 {} F{}", words(start), feed_number(o, feed));
     f.retract = fmt::format("G00 X{}", number(2 * (end[0] + o.clearance), dec));
     return f;
   }
   f.before_start = fmt::format("G00 Z{}\nX{} Y{}", number(o.clearance, dec), number(start[0], dec),
                                number(start[1], dec));
-  f.to_depth = fmt::format("G01 {} F{}", plunge_z(o, start[2], dec), number(feed, 4));
+  f.to_depth = fmt::format("G01 {} F{}", plunge_z(o, start[2], dec), feed_number(o, feed));
   f.retract = fmt::format("G00 Z{}", number(o.clearance, dec));
   return f;
 }

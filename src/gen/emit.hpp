@@ -16,6 +16,7 @@ constexpr int kFirstTemp = 150;  // macro temporaries #150..
 struct Writer {
   std::string text;
   std::uint32_t line = 0;
+  bool modes_written = false;  // by the set-up (see begin_setup)
   void block(std::string_view b);
   void lines(const std::string& text);  // each non-empty line a block
 };
@@ -38,6 +39,23 @@ struct AxisWords {
 
 std::string header(const geom::Curve& curve, const Options& o, const std::string& method);
 std::string modes(const Options& o);
+// The modes line, unless the set-up wrote it already.
+void modes_block(Writer& w, const Options& o);
+std::string feed_number(const Options& o, double feed);  // F's digits: 4, 6 for inches per revolution
+
+// The set-up (tool, spindle, coolant: Options::tool ..), after the header and before any depth-pass
+// loop, so that it is done once: the modes line first (the forms then leave theirs out). And its
+// end before M30: coolant off, spindle stop.
+bool has_setup(const Options& o);
+void begin_setup(Writer& w, const Options& o, int decimals);
+void end_setup(Writer& w, const Options& o);
+
+// An inch program's options (Options::inch): the lengths in inches, the machine's increment that of
+// its inch input; every form then writes them as it writes millimetres.
+constexpr double kMmPerInch = 25.4;
+Options in_inches(const Options& o);
+// A length in mm as a program in these options' units writes it (the header's figures stay in mm).
+double in_program_units(const Options& o, double mm);
 
 // Depth passes (mill, plane curve, Options::step_down > 0): a WHILE loop (DO3) around the whole
 // pass from its variables to the retract, #199 the pass's depth; the plunge feeds to Z#199.

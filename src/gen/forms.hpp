@@ -19,6 +19,10 @@ struct Context {
   AxisWords words;
   geom::Fit fit;
   geom::Vec3 start, end;  // snapped machine coordinates of the curve's ends
+  // what the round trip measures against: the curve and options in mm (the same as curve and o
+  // but in an inch program, whose curve and options are in inches)
+  const geom::Curve& measured_curve;
+  const Options& measured_o;
 };
 
 class Speculation;  // generate.cpp
@@ -48,13 +52,14 @@ Emitted close_loop(Writer& w, const Context& c, const MacroWords& move);
 void end_program(Writer& w, const Context& c);
 
 // The program text(value) for the largest value, from `value` down in 1 % steps (each rounded
-// by `round`), whose round trip under `on_control` is within the tolerance; else `failure`.
+// by `round`), whose round trip under `on_control` (options in mm) is within the tolerance; else
+// `failure`.
 template <class Round, class Text>
 Emitted tightened(const Context& c, const Options& on_control, double value, Round round, Text text,
                   const std::string& failure) {
   for (int attempt = 0; attempt < 40 && value > 0; ++attempt, value = round(value * 0.99)) {
     Emitted e = text(value);
-    if (round_trip(e.text, c.curve, on_control, e.first, e.last).max_deviation <= c.o.tol) return e;
+    if (round_trip(e.text, c.measured_curve, on_control, e.first, e.last).max_deviation <= on_control.tol) return e;
   }
   throw std::runtime_error(failure);
 }

@@ -35,6 +35,21 @@ struct Options {
   // program is the path of that imaginary tip. 0 or 9: the nose centre.
   int tip = 0;
   int cycle_program = 0;  // cycle: O9010..O9019 (G102..G111, No.6050..6059); 0: the curve's own
+  // The program's set-up, once before the contour, and its end (none by default). tool > 0: the
+  // tool called (mill: T M06, then G00 G43 Z at the clearance H tool; lathe: T with the offset of
+  // the same number, T0101); spindle: rev/min, M03 (M04 with spindle_ccw), G97 on a lathe; css:
+  // lathe, constant surface speed in m/min (G96), clamped by max_rpm (G50 S, G92 S on systems B
+  // and C); coolant: M08 after the set-up, M09 at the end. A spindle started is stopped (M05).
+  int tool = 0;
+  int spindle = 0;
+  bool spindle_ccw = false;
+  int css = 0;
+  int max_rpm = 0;
+  bool coolant = false;
+  // G20: every coordinate and feed of the program in inches, on the inch increment (IS-B
+  // 0.0001 in, IS-C 0.00001 in). The curve, the tolerance and these options stay in mm (css in
+  // m/min, written as ft/min); the round trip runs the inch program and measures in mm.
+  bool inch = false;
 };
 
 // How the curve sits on the machine.
@@ -69,6 +84,10 @@ struct Result {
   Stats stats;
   bool within_tolerance = false;
 };
+
+// Throws std::runtime_error for options that are not finite, out of range or do not go together
+// (a constant surface speed on a mill, a cycle in inches ...); generate() checks them first.
+void check_options(const Options& o);
 
 // Throws std::runtime_error for curves or options that cannot be generated.
 Result generate(const geom::Curve& curve, const Options& o);

@@ -1120,12 +1120,29 @@ std::vector<double> inflections(const Curve& curve, const Placement& place, cons
 
 namespace {
 
+// The direction of travel at t in the plane, unnormalised. Where the curve stops (at an end of
+// its range: validate() refuses a stop inside) the velocity is no guide: the tangent's limit is
+// along the second derivative there (C'(t + s) ~ C''(t) s), else along the chord to a point a
+// millionth of the range inside (a stop of higher order).
+std::array<double, 2> travel(const Fit& f, double t, const Local& l) {
+  const int u = f.plane.u_axis, v = f.plane.v_axis;
+  const double span = f.curve.t1() - f.curve.t0();
+  const double speed = std::hypot(l.d1[u], l.d1[v]), bend = std::hypot(l.d2[u], l.d2[v]);
+  if (speed > 1e-6 * bend * span) return {l.d1[u], l.d1[v]};
+  const double inward = t < 0.5 * (f.curve.t0() + f.curve.t1()) ? 1 : -1;  // into the range
+  if (bend > 0) return {inward * l.d2[u], inward * l.d2[v]};
+  const Vec3 q = f.place(f.curve.point(t + inward * 1e-6 * span));
+  return {inward * (q[u] - l.p[u]), inward * (q[v] - l.p[v])};
+}
+
 // Biarc from (P0, T0) to (P1, T1) with equal control lengths; the two arcs (or lines) as pieces.
 bool biarc(const Fit& f, double ta, double tb, std::vector<Piece>& out) {
   const int u = f.plane.u_axis, v = f.plane.v_axis;
   Local la = local(f, ta), lb = local(f, tb);
   Vec3 p0 = la.p, p1 = lb.p;
-  double t0u = la.d1[u], t0v = la.d1[v], t1u = lb.d1[u], t1v = lb.d1[v];
+  const auto [t0u_, t0v_] = travel(f, ta, la);
+  const auto [t1u_, t1v_] = travel(f, tb, lb);
+  double t0u = t0u_, t0v = t0v_, t1u = t1u_, t1v = t1v_;
   double n0 = std::hypot(t0u, t0v), n1 = std::hypot(t1u, t1v);
   if (!(n0 > 0) || !(n1 > 0)) return false;
   t0u /= n0; t0v /= n0; t1u /= n1; t1v /= n1;

@@ -21,6 +21,9 @@ const char* const kFunctionWords[] = {"SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN
                                       "FUP", "LN",  "EXP", "POW",  "ADP",  "BIN",  "BCD",  "MOD", "AND",   "OR",
                                       "XOR"};
 
+bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return s;
@@ -53,7 +56,7 @@ const std::vector<CurveSpec>& catalogue() {
        "t = clockwise polar angle, degrees"},
       {"hyperbola", "lathe hyperbola X = a/cos t (radius), Z = b*tan t (seed 003)",
        {{"a", 100, "radius at t = 0, mm"}, {"b", 202.4, "Z scale, mm"}},
-       "A/COS[t]", "0", "B*TAN[t]", -20, 20, "t = alpha, degrees, inside (-90, 90)"},
+       "A/COS[t]", "0", "B*TAN[t]", -20, 20, "t = alpha, degrees, inside (-90, 90)", true},
       {"ellipse", "ellipse x = a cos t, y = b sin t",
        {{"a", 40, "semi-axis along X, mm"}, {"b", 20, "semi-axis along Y, mm"}},
        "A*COS[t]", "B*SIN[t]", "0", 0, 360, "t = eccentric angle, degrees"},
@@ -84,13 +87,39 @@ const CurveSpec* find_curve(const std::string& name) {
   return nullptr;
 }
 
+const std::vector<std::string>& function_words() {
+  static const std::vector<std::string> words(std::begin(kFunctionWords), std::end(kFunctionWords));
+  return words;
+}
+
+std::vector<NameUse> names_in(const std::string& text) {
+  std::vector<NameUse> out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (!is_name_start(text[i])) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && is_name_char(text[j])) ++j;
+    const std::string word = upper(text.substr(i, j - i));
+    const bool function = std::find(std::begin(kFunctionWords), std::end(kFunctionWords), word) != std::end(kFunctionWords);
+    if (!function && word != "T" && word != "PI") {
+      std::size_t next = j;
+      while (next < text.size() && text[next] == ' ') ++next;
+      out.push_back({text.substr(i, j - i), i + 1, next < text.size() && (text[next] == '[' || text[next] == '(')});
+    }
+    i = j;
+  }
+  return out;
+}
+
 std::string substitute_names(const std::string& text, const std::vector<std::string>& params) {
   std::string out;
   for (std::size_t i = 0; i < text.size();) {
     char c = text[i];
-    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+    if (is_name_start(c)) {
       std::size_t j = i;
-      while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+      while (j < text.size() && is_name_char(text[j])) ++j;
       std::string word = upper(text.substr(i, j - i));
       bool function = false;
       for (const char* f : kFunctionWords) function = function || word == f;
@@ -106,7 +135,8 @@ std::string substitute_names(const std::string& text, const std::vector<std::str
         if (k == params.size()) {
           std::string known = "t, PI";
           for (const auto& p : params) known += ", " + p;
-          throw std::runtime_error(fmt::format("'{}' at column {} is not a function or a name ({})",
+          throw std::runtime_error(fmt::format("'{}' at column {} is not a function of the macro language nor a name "
+                                               "of this curve ({})",
                                                text.substr(i, j - i), i + 1, known));
         }
         out += fmt::format("#{}", kFirstParamVar + static_cast<int>(k));
@@ -214,8 +244,18 @@ Curve Curve::reversed() const {
   return out;
 }
 
+Curve Curve::scaled(double divisor) const {
+  forwards("scaling");
+  Curve out = *this;
+  for (Sym& s : out.sym_pos_) s = simplify(make(SymOp::div, s, konst(divisor)));
+  out.compile(options_);
+  out.scaled_ = true;
+  return out;
+}
+
 void Curve::forwards(const char* what) const {
   if (sense_ < 0) throw std::logic_error(fmt::format("{}: {} of a curve traced backwards", name_, what));
+  if (scaled_) throw std::logic_error(fmt::format("{}: {} of a scaled curve", name_, what));
 }
 
 void Curve::jets(std::span<const double> t, std::span<Jet> out) const {
@@ -257,6 +297,7 @@ Curve Curve::offset(double radius, bool left, int u, int v) const {
   double worst = 0, worst_t = t0_;
   std::array<double, kBatch> ts;
   std::array<Jet, kBatch> batch;
+  std::vector<double> speed2(kSamples + 1);
   for (int first = 0; first <= kSamples; first += kBatch) {
     const int n = std::min(kBatch, kSamples + 1 - first);
     for (int j = 0; j < n; ++j) ts[static_cast<std::size_t>(j)] = t0_ + (t1_ - t0_) * (first + j) / kSamples;
@@ -264,10 +305,22 @@ Curve Curve::offset(double radius, bool left, int u, int v) const {
     for (int j = 0; j < n; ++j) {
       const Vec3 &a = batch[static_cast<std::size_t>(j)].d1, &b = batch[static_cast<std::size_t>(j)].d2;
       const double speed = std::hypot(a[u], a[v]);
+      speed2[static_cast<std::size_t>(first + j)] = speed * speed;
       const double k = side * (a[u] * b[v] - a[v] * b[u]) / (speed * speed * speed);  // > 0: turning towards the tool
       if (k > worst) worst = k, worst_t = ts[static_cast<std::size_t>(j)];
     }
   }
+  // where the curve stops (at an end: validate() refuses one inside) it has no direction, and so
+  // no side to offset to (as validate() judges a stop: a millionth of the median speed)
+  const double start2 = speed2.front(), end2 = speed2.back();
+  std::nth_element(speed2.begin(), speed2.begin() + kSamples / 2, speed2.end());
+  const double stopped2 = 1e-12 * speed2[kSamples / 2];
+  for (const auto& [at, s2] : {std::pair{t0_, start2}, std::pair{t1_, end2}})
+    if (!(s2 > stopped2))
+      throw std::runtime_error(fmt::format(
+          "{}: the curve stops at t = {:.6g}, where its direction and so the side of a tool radius offset are "
+          "undefined: end the range a little inside it, or program the contour without a tool radius",
+          name_, at));
   if (worst * radius >= 1) {
     Vec3 p = point(worst_t);
     throw std::runtime_error(fmt::format(
@@ -419,16 +472,28 @@ Survey Curve::validate() const {
   constexpr auto kMiddle = static_cast<std::ptrdiff_t>(kEighths / 2);
   std::nth_element(eighth_speed2.begin(), eighth_speed2.begin() + kMiddle, eighth_speed2.end());
   const double stopped2 = 1e-12 * eighth_speed2[kMiddle];
+  // A stop at an end of the range is no cusp: the curve starts from rest or comes to rest there.
+  // The samples next to it that are as slow (a stop of higher order) are excused while the speed
+  // grows away from the end; a stop inside the range is refused.
   for (int k = 0; k < kParts; ++k) {
     if (!(least_speed2[static_cast<std::size_t>(k)] <= stopped2)) continue;
-    // the first part where it stops: its speeds again (the same jets), for the first such sample
+    // a part where it may stop: its speeds again (the same jets), for the first such sample
     std::vector<double> ts;
     for (int i = k * kPart; i <= (k + 1) * kPart; ++i) ts.push_back(sample(i));
     std::vector<Jet> at(ts.size());
     jets(ts, at);
+    std::vector<double> speed2(at.size());
     for (std::size_t i = 0; i < at.size(); ++i) {
       const Vec3& v = at[i].d1;
-      if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= stopped2)
+      speed2[i] = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    }
+    std::size_t from = 0, to = at.size();  // the samples not excused
+    if (k == 0)
+      while (from < to && speed2[from] <= stopped2 && (from == 0 || speed2[from] > speed2[from - 1])) ++from;
+    if (k == kParts - 1)
+      while (to > from && speed2[to - 1] <= stopped2 && (to == at.size() || speed2[to - 1] > speed2[to])) --to;
+    for (std::size_t i = from; i < to; ++i) {
+      if (speed2[i] <= stopped2)
         throw std::runtime_error(fmt::format(
             "{}: the curve stops at t = {:.6g} (zero speed: a cusp or a point where the tangent is undefined); "
             "split the range there",

@@ -31,6 +31,7 @@ struct CurveSpec {
   std::string x, y, z;            // expressions in t and the parameter names
   double from = 0, to = 360;      // default parameter range
   std::string t_doc = "t in degrees";
+  bool lathe = false;  // a turned profile (X a radius, Z along the axis): meant for a lathe profile
 };
 
 // The built-in curves, in the order `ncurve gen --list` shows them.
@@ -88,7 +89,8 @@ public:
   bool planar_z() const { return !depends_on(sym_pos_[2], kTVar); }  // z constant
   bool uses_y() const { return !(sym_pos_[1]->op == SymOp::konst && sym_pos_[1]->k == 0); }
 
-  // Throws std::runtime_error naming t where the curve is undefined, singular or has a cusp; else
+  // Throws std::runtime_error naming t where the curve is undefined, singular or stops inside its
+  // range (a cusp; zero speed at t0 or t1 is allowed: it starts from or comes to rest); else
   // gives the survey, from jets the check computes anyway (the same as survey()'s, bit for bit).
   Survey validate() const;
   Survey survey() const;
@@ -99,6 +101,10 @@ public:
   // gouge) or the curve leaves the plane.
   Curve offset(double radius, bool left, int u, int v) const;
 
+  // The same curve with its coordinates divided by `divisor` (25.4: in inches), derivatives and
+  // all; the same parameters. For an inch program's fit and text: validate() and offset() refuse it.
+  Curve scaled(double divisor) const;
+
   // The same curve traced backwards, to fit it from its end: over [-t1, -t0], its point at t is
   // this curve's at -t (bit for bit) and its first derivative changes sign. For evaluation only:
   // its expressions are this curve's, and validate() and offset() refuse it.
@@ -108,11 +114,12 @@ private:
   // tape's outputs at the parameter t traced, multiplied by `scale`
   Vec3 eval(const Tape& tape, double t, double scale) const;
   void compile(nc::EvalOptions options);  // derivatives and tapes from sym_pos_
-  void forwards(const char* what) const;  // throws std::logic_error for a curve traced backwards
+  void forwards(const char* what) const;  // throws std::logic_error for a curve traced backwards or scaled
 
   std::string name_;
   double t0_, t1_;
   double sense_ = 1;  // -1: traced backwards (the tapes see -t)
+  bool scaled_ = false;  // by scaled(): for evaluation only
   std::vector<Param> params_;
   std::array<Sym, 3> sym_pos_, sym_d1_, sym_d2_;
   Tape pos_, d1_, d2_, jet_;
@@ -121,5 +128,16 @@ private:
 
 // Text with names (t, parameters, PI) to macro text with #100, #101..; throws on unknown names.
 std::string substitute_names(const std::string& text, const std::vector<std::string>& params);
+
+// The function words of the macro language a curve's text may use (SIN, COS, ...).
+const std::vector<std::string>& function_words();
+// The names in curve text other than t, PI and the function words, in order (each use): where
+// (column from 1) and whether it is called (followed by [ or (, as a function is).
+struct NameUse {
+  std::string name;
+  std::size_t column;
+  bool called;
+};
+std::vector<NameUse> names_in(const std::string& text);
 
 }  // namespace ncurve::geom

@@ -388,15 +388,17 @@ TEST(Sym, ValidateGivesTheSurveyOfTheJetsItChecked) {
   }
 }
 
-// A curve that stops (x ~ u^3, y ~ u^2 about the stop: a cusp) is named at the first stop in t,
-// in whichever part of the check it lies, also where two parts share the sample.
-TEST(Sym, ValidateNamesTheFirstStop) {
-  auto stops = [](const std::vector<int>& at) {
+// A curve that stops inside its range (x ~ u^3, y ~ u^2 about the stop: a cusp) is named at the
+// first stop in t, in whichever part of the check it lies, also where two parts share the sample;
+// a stop at an end of the range is no cusp (the curve starts from rest or comes to rest), also
+// one of higher order (x ~ u^4, y ~ u^3: the samples next to it are as slow).
+TEST(Sym, ValidateNamesTheFirstStopInside) {
+  auto stops = [](const std::vector<int>& at, int order = 2) {
     std::string x = "1", y = "1";
     for (int a : at) {
       const std::string u = fmt::format("[[t-{}]/1000]", a);
-      x += "*" + u + "*" + u + "*" + u;
-      y += "*" + u + "*" + u;
+      for (int k = 0; k <= order; ++k) x += "*" + u;
+      for (int k = 0; k < order; ++k) y += "*" + u;
     }
     CurveSpec spec{"stops", "", {}, x, y, "0", 0, 4096, ""};
     try {
@@ -409,8 +411,23 @@ TEST(Sym, ValidateNamesTheFirstStop) {
   EXPECT_NE(stops({2600}).find("stops at t = 2600 "), std::string::npos) << stops({2600});
   EXPECT_NE(stops({2560}).find("stops at t = 2560 "), std::string::npos) << stops({2560});
   EXPECT_NE(stops({3000, 1000}).find("stops at t = 1000 "), std::string::npos) << stops({3000, 1000});
-  EXPECT_NE(stops({0}).find("stops at t = 0 "), std::string::npos) << stops({0});
-  EXPECT_NE(stops({4096}).find("stops at t = 4096 "), std::string::npos) << stops({4096});
+  EXPECT_EQ(stops({0}), "");
+  EXPECT_EQ(stops({4096}), "");
+  EXPECT_EQ(stops({0}, 3), "");
+  EXPECT_EQ(stops({4096}, 3), "");
+  EXPECT_NE(stops({1}).find("stops at t = 1 "), std::string::npos) << stops({1});  // a sample inside
+  EXPECT_NE(stops({4095}).find("stops at t = 4095 "), std::string::npos) << stops({4095});
+  // at rest at both ends: x = cos, y = sin^2 of 180 t / 4096 (a parabola there and back: a stop
+  // inside at t = 4096, where it turns, over 0..8192)
+  CurveSpec both{"both", "", {}, "COS[t*180/4096]", "SIN[t*180/4096]*SIN[t*180/4096]", "0", 0, 4096, ""};
+  EXPECT_NO_THROW(Curve(both, {}).validate());
+  both.to = 8192;
+  try {
+    Curve(both, {}).validate();
+    ADD_FAILURE() << "no error for the turn at t = 4096";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("stops at t = 4096 "), std::string::npos) << e.what();
+  }
   EXPECT_EQ(stops({5000}), "");  // beyond the range
 }
 
