@@ -10,6 +10,7 @@
 #include "app/cli_checks.hpp"
 #include "app/curve_args.hpp"
 #include "app/save.hpp"
+#include "app/shipped.hpp"
 #include "gen/generate.hpp"
 #include "machine/profile.hpp"
 
@@ -42,10 +43,12 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
       ->check(one_of("a form", {"expanded", "arcs", "macro", "adaptive-macro", "cycle"}));
   gen->add_option("--lines", a.lines,
                   "expanded: equal-error (default: fewest lines, tolerance band), equal-error-chord, equal-step, "
-                  "equal-chord or radial-error (seed 000's shape error along the ray from the centre)")
+                  "equal-chord or radial-error (the spiral paper's shape error along the ray from the centre)")
       ->check(one_of("a line method", {"equal-error", "equal-error-chord", "equal-step", "equal-chord", "radial-error"}));
-  gen->add_option("--machine", a.machine, "machine profile (TOML); default: FANUC 3-axis mill")
-      ->check(CLI::ExistingFile);
+  gen->add_option("--machine", a.machine,
+                  "machine profile (TOML file, or a shipped one by name: fanuc-mill, fanuc-lathe, ...); default: "
+                  "FANUC 3-axis mill")
+      ->transform(profile_path());
   gen->add_option("--from", a.from, "start of the curve parameter t")->check(finite("a value of the curve parameter t"));
   gen->add_option("--to", a.to, "end of the curve parameter t")->check(finite("a value of the curve parameter t"));
   gen->add_option("--x", a.x, "expr: x(t)");
