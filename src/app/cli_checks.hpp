@@ -5,6 +5,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -127,7 +128,8 @@ inline CLI::Validator one_of(std::string what, std::vector<std::string> choices)
         if (auto near = nearest_name(text, choices)) out += fmt::format("; did you mean {}?", *near);
         return out;
       },
-      "", "one of");
+      // the choices in the option's type name, as CLI::IsMember shows them (help, completion)
+      fmt::format("{{{}}}", fmt::join(choices, ",")), "one of");
 }
 
 // The long option names of a command (without the leading --), for suggestions.

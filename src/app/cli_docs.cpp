@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "app/cli_checks.hpp"
 #include "app/shipped.hpp"
 
 namespace ncurve::app {
@@ -180,30 +181,12 @@ std::string man_page(const CLI::App& app, const std::string& version) {
 }
 
 std::string nearest(const std::string& word, const std::vector<std::string>& candidates) {
-  auto distance = [](const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-      std::size_t diag = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= b.size(); ++j) {
-        std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        diag = up;
-      }
-    }
-    return row[b.size()];
-  };
   std::string best;
   std::size_t best_d = std::string::npos;
   for (const auto& c : candidates) {
-    std::size_t d = distance(word, c);
-    // a prefix of a candidate ("ana" for "analyze") is meant as much as a near miss
-    if (c.rfind(word, 0) == 0 && word.size() >= 2) d = std::min<std::size_t>(d, 1);
-    if (d < best_d) {
-      best_d = d;
-      best = c;
-    }
+    std::size_t d = edit_distance(word, c);
+    if (c.rfind(word, 0) == 0 && word.size() >= 2) d = std::min<std::size_t>(d, 1);  // "ana" for "analyze"
+    if (d < best_d) best_d = d, best = c;
   }
   return best_d <= std::max<std::size_t>(1, word.size() / 3) ? best : std::string();
 }

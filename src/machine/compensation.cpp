@@ -358,7 +358,7 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
     k = corner(a, b, joint);
   }
   if (!k.inserted.empty() && std::isnan(k.inserted.front().x))
-    fail(b.move, "PS0033",
+    fail(a.move, "PS0033",
            fmt::format("no intersection for cutter compensation: the offset paths of this block and the one before "
                        "(radius {:g} mm) do not meet at their inner corner",
                        a.r));
