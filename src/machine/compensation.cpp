@@ -362,8 +362,9 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
            fmt::format("no intersection for cutter compensation: the offset paths of this block and the one before "
                        "(radius {:g} mm) do not meet at their inner corner",
                        a.r));
+  // the start-up block runs from no vector to its end vector: the check is for offset mode
+  if (joint != Joint::startup) check_interference(a, pending_start_, k.end_a);
   if (joint == Joint::startup) startup_pending_ = false;
-  check_interference(a, pending_start_, k.end_a);
   emit_element(a, pending_start_, k.end_a);
   emit_after();
   for (V2 p : k.inserted) emit_line(a, tool_plane_, p);
