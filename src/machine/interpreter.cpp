@@ -285,8 +285,9 @@ void Interpreter::step() {
     case Statement::nc: {
       ++f.pc;
       const bool g40 = comp_side_ != 0;
+      macro_call_block_ = false;
       exec_nc(b);
-      if (compensating()) end_of_block_compensation(g40 && comp_side_ == 0);
+      if (compensating() && !macro_call_block_) end_of_block_compensation(g40 && comp_side_ == 0);
       break;
     }
     case Statement::go_to: jump(b, eval(b.value).number()); break;
@@ -372,6 +373,7 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column) {
 
 void Interpreter::call_macro(int number, const std::vector<Arg>& args, int repeat, bool custom, bool modal,
                              std::uint16_t column) {
+  macro_call_block_ = true;  // a macro statement, as FANUC counts them (not a block without motion)
   Frame f;
   f.kind = Frame::macro;
   f.custom = custom || (frames_.back().custom);

@@ -211,6 +211,7 @@ private:
   int comp_side_ = 0;                  // +1 G41, -1 G42, 0 G40
   bool comp_suspended_ = false;        // G28/G30/G53 in offset mode: moves without the vector
   bool block_plane_motion_ = false;    // the block moved in the offset plane
+  bool macro_call_block_ = false;      // the block called a macro (G65, G66, custom G/M code)
   std::optional<V2> cancel_direction_;  // I J K of a G40 block
 
   // positions (work coordinates, mm; lathe X as a radius)
