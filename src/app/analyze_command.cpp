@@ -13,6 +13,7 @@
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
 #include "report/motion_plots.hpp"
+#include "app/cli_units.hpp"
 #include "app/save.hpp"
 
 namespace ncurve::app {
@@ -419,9 +420,11 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
   cmd->add_flag("--servo", a.servo, "simulate the servo loops and report the contour error");
   cmd->add_option("--blocks", a.blocks, "write each motion's timing and feed to this CSV file");
   cmd->add_option("--plot", a.plot, "SVG: feed reached against programmed along the path");
-  cmd->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's")->delimiter(',');
+  cmd->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's (KX[,KZ] on a lathe)")
+      ->delimiter(',')
+      ->check(units::gain_per_s());
   cmd->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1 over the profile's")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(units::ratio(units::at_least(0), units::at_most(1)));
   cmd->allow_extras();
   cmd->add_option("--curve", a.curve.name,
                   "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "
@@ -430,19 +433,21 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
                   "--curve: write each contour block's deviation and seed 000's models to this CSV file");
   cmd->add_option("--shape-plot", a.shape_plot, "--curve: SVG of the path coloured by its deviation from the curve");
   cmd->add_option("--tol", a.tol, "--curve: shape tolerance, mm; blocks beyond it are counted and marked")
-      ->check(CLI::PositiveNumber);
+      ->check(units::length_mm(units::above(0)));
   cmd->add_option("--x", a.curve.x, "--curve expr: x(t)");
   cmd->add_option("--y", a.curve.y, "--curve expr: y(t)");
   cmd->add_option("--z", a.curve.z, "--curve expr: z(t)");
   cmd->add_option("--t", a.curve.t_range, "--curve expr: range of t as FROM:TO");
-  cmd->add_option("--from", a.curve.from, "start of the curve parameter t");
-  cmd->add_option("--to", a.curve.to, "end of the curve parameter t");
+  cmd->add_option("--from", a.curve.from, "start of the curve parameter t")->check(units::number("a number", ""));
+  cmd->add_option("--to", a.curve.to, "end of the curve parameter t")->check(units::number("a number", ""));
   CLI::App* circle = cmd->add_subcommand("circle", "ISO 230-4 circular test on the machine model");
-  circle->add_option("--radius", a.radius, "radius, mm")->required()->check(CLI::PositiveNumber);
-  circle->add_option("--feed", a.feed, "feed, mm/min")->required()->check(CLI::PositiveNumber);
-  circle->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's")->delimiter(',');
+  circle->add_option("--radius", a.radius, "radius, mm")->required()->check(units::length_mm(units::above(0)));
+  circle->add_option("--feed", a.feed, "feed, mm/min")->required()->check(units::feed_mm_min());
+  circle->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's (KX[,KZ] on a lathe)")
+      ->delimiter(',')
+      ->check(units::gain_per_s());
   circle->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(units::ratio(units::at_least(0), units::at_most(1)));
   circle->add_option("--machine", a.in.machine, "machine profile (TOML)")->check(CLI::ExistingFile);
   circle->add_flag("--cw", a.clockwise, "clockwise (G02); default counter-clockwise");
   circle->add_flag("--json", a.json, "results as JSON");
