@@ -66,8 +66,9 @@ inline std::optional<std::string> measure(std::vector<machine::Move> contour, co
                        "parameters",
                        curve.name(), distance, where(m));
   };
-  const report::ContourSpan span = report::contour_span(contour, nearest, floor);
-  if (span.lost) return lost(span.distance, contour.front());
+  // the measurement takes the contour to start within this of the curve's start
+  const double near = std::max(floor, 1e-3 + 10 * r.o.tol);
+  const report::ContourSpan span = report::contour_span(contour, curve, nearest.map(), near);
   r.approach = span.first;
   r.departure = contour.size() - span.last;
   r.contour.assign(contour.begin() + static_cast<std::ptrdiff_t>(span.first),
@@ -80,11 +81,9 @@ inline std::optional<std::string> measure(std::vector<machine::Move> contour, co
   std::vector<double> end_t;
   for (const auto& d : r.stats.deviation) end_t.push_back(d.first);
   if (auto off = report::farthest_off_curve(r.contour, nearest, r.stats.start_t, end_t, floor)) {
-    const machine::Move* m = &r.contour.front();
-    for (const auto& c : r.contour)
-      if (c.line == off->line) m = &c;
+    const machine::Move* m = &r.contour[off->move];
     const double anywhere = nearest.distance(off->at);
-    if (report::off_curve(anywhere, m->length, floor)) return lost(anywhere, *m);
+    if (report::off_curve(anywhere, off->longer, floor)) return lost(anywhere, *m);
     // near the curve, but not where the curve runs in order from its start to its end
     return fmt::format("the path does not follow the curve {} in order of t from {:g} to {:g}: at {} it is {:.4g} mm "
                        "from where the curve runs by then (it skips part of the curve or runs backwards); check "

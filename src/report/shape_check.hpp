@@ -1,7 +1,7 @@
-// Whether a program's contour follows the curve it is compared with, before its shape error is
-// measured: the moves that approach the curve from off it and leave it again are set aside, and
-// a contour whose corners lie far from the curve (the wrong curve, or wrong parameters) is named
-// as such instead of being measured into absurd figures.
+// Whether a program's contour follows the curve it is compared with: the moves that approach the
+// curve's start and leave its end are set aside, and a contour whose corners lie far from the
+// curve (the wrong curve, or wrong parameters) is named as such instead of being measured into
+// absurd figures.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -73,46 +73,40 @@ inline bool off_curve(double distance, double longer_move, double floor) {
   return distance > std::max(0.5 * longer_move, floor);
 }
 
-// Feed moves set aside at each end: those that approach the curve from off it (their start off
-// the curve) and those that leave it (their end off it), at most `most` at each end.
+// Feed moves set aside at each end: those before the first that starts at the curve's start
+// (within `near`), and those after the last that ends at the curve's end, looked for among the
+// first and last `most` moves (an approach, a plunge, a departure). None is set aside at an end
+// where no move starts (ends) there: the measurement then shows how far off the contour is.
 struct ContourSpan {
   std::size_t first = 0, last = 0;  // the contour proper: moves [first, last)
-  // no move of the first `most` starts on the curve: the contour does not follow it; where the
-  // first move starts and how far that is from the curve
-  bool lost = false;
-  double distance = 0;
-  std::uint32_t line = 0;
 };
 
-inline ContourSpan contour_span(const std::vector<machine::Move>& moves, const CurveNearest& curve, double floor,
-                                std::size_t most = 8) {
+inline ContourSpan contour_span(const std::vector<machine::Move>& moves, const geom::Curve& curve,
+                                const geom::Placement& map, double near, std::size_t most = 8) {
+  auto distance = [](const geom::Vec3& a, const geom::Vec3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); };
+  const geom::Vec3 start = map(curve.point(curve.t0())), end = map(curve.point(curve.t1()));
   ContourSpan s;
   s.last = moves.size();
-  while (s.first < moves.size() && s.first < most) {
-    const machine::Move& m = moves[s.first];
-    const double d = curve.distance(xyz(m.start));
-    if (!off_curve(d, m.length, floor)) break;
-    if (s.first == 0) s.distance = d, s.line = m.line;
-    ++s.first;
-  }
-  if (s.first == moves.size() || (s.first == most && s.first > 0)) {
-    s.lost = true;
-    return s;
-  }
-  while (s.last > s.first + 1 && moves.size() - s.last < most) {
-    const machine::Move& m = moves[s.last - 1];
-    if (!off_curve(curve.distance(xyz(m.end)), m.length, floor)) break;
-    --s.last;
-  }
+  for (std::size_t i = 0; i < moves.size() && i < most; ++i)
+    if (distance(xyz(moves[i].start), start) <= near) {
+      s.first = i;
+      break;
+    }
+  for (std::size_t i = moves.size(); i > s.first + 1 && moves.size() - i < most; --i)
+    if (distance(xyz(moves[i - 1].end), end) <= near) {
+      s.last = i;
+      break;
+    }
   return s;
 }
 
 // The contour's corner farthest off the curve, by the curve parameters a measurement found
-// nearest to them (the start's, then each move's end): its distance and the line of its move.
+// nearest to them (the start's, then each move's end).
 struct OffCurve {
   double distance = 0;
-  std::uint32_t line = 0;
-  geom::Vec3 at{};  // the corner
+  std::size_t move = 0;  // the move ending at the corner (the first move for its start)
+  double longer = 0;     // the longer of the corner's two moves, mm
+  geom::Vec3 at{};       // the corner
 };
 
 inline std::optional<OffCurve> farthest_off_curve(const std::vector<machine::Move>& contour, const CurveNearest& curve,
@@ -129,7 +123,7 @@ inline std::optional<OffCurve> farthest_off_curve(const std::vector<machine::Mov
     if (k > 0) longer = contour[k - 1].length;
     if (k < contour.size()) longer = std::max(longer, contour[k].length);
     if (off_curve(d, longer, floor) && (!worst || d > worst->distance))
-      worst = OffCurve{d, contour[k == 0 ? 0 : k - 1].line, p};
+      worst = OffCurve{d, k == 0 ? 0 : k - 1, longer, p};
   }
   return worst;
 }

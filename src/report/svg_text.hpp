@@ -49,12 +49,14 @@ inline std::string xml_escape(std::string_view text) {
       if ((next & 0xC0u) != 0x80u) ok = false;
       else code = (code << 6) | (next & 0x3Fu);
     }
-    // overlong forms, surrogates, beyond U+10FFFF, and the two non-characters XML refuses
+    // overlong forms, surrogates and beyond U+10FFFF are not UTF-8
     if (ok && ((more == 2 && code < 0x800) || (more == 3 && (code < 0x10000 || code > 0x10FFFF)) ||
-               (code >= 0xD800 && code <= 0xDFFF) || code == 0xFFFE || code == 0xFFFF))
+               (code >= 0xD800 && code <= 0xDFFF)))
       ok = false;
     if (ok) {
-      out.append(text.substr(i, more + 1));
+      // the two non-characters XML refuses, whole
+      if (code == 0xFFFE || code == 0xFFFF) out += kReplacement;
+      else out.append(text.substr(i, more + 1));
       i += more + 1;
     } else {
       out += kReplacement;  // this byte alone; what follows is read afresh
