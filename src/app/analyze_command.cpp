@@ -77,7 +77,8 @@ int circle_command(const AnalyzeArgs& a) {
                         mo.filter == machine::Filter::linear ? "linear" : "exponential", plane.p_name,
                         mo.time_constant[plane.p], plane.q_name, mo.time_constant[plane.q])
           : "acc/dec before interpolation";
-  const std::string subtitle = fmt::format("{}, feed-forward {}, {}", gains(profile), sv.feed_forward, filter);
+  const std::string subtitle =
+      fmt::format("{}: {}, feed-forward {}, {}", profile.name, gains(profile), sv.feed_forward, filter);
   const std::string held = r.feed_reached < test.feed
                                ? fmt::format(" (held to {:.6g} mm/min on this arc: figures at that feed)", r.feed_reached)
                                : "";
@@ -107,7 +108,7 @@ int circle_command(const AnalyzeArgs& a) {
                         {"harmonic_angle", r.harmonic_angle},
                         {"seed002_error", r.seed002_error},
                         {"seed002_angle", r.seed002_angle}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // a name that is not UTF-8 gets U+FFFD
     return 0;
   }
   const char P = plane.p_name, Q = plane.q_name;
@@ -322,7 +323,7 @@ int program_command(const AnalyzeArgs& a) {
       j["rapid_contour_error"] = contour_json(sim->rapids());
     }
     if (shape) shape::add_json(j, *curve, *shape, a.tol);
-    std::cout << j.dump(2) << "\n";
+    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
   std::cout << fmt::format(

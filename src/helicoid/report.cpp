@@ -105,7 +105,7 @@ std::string contacts_json(const Job& job, const ContactSearch& search) {
                      {"Z_mm", c.z}});
     if (steps.size() <= job.cusps.size()) steps.back()["cusp_mm"] = job.cusps[steps.size() - 1];
   }
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";  // a name that is not UTF-8 gets U+FFFD
 }
 
 std::string contacts_text(const Job& job, const ContactSearch& search) {
