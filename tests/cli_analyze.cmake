@@ -254,3 +254,15 @@ run_expect(0 "circle plot of an oddly named machine" ${NCURVE} analyze circle --
 expect_xml("${weird}-circle.svg" "circle plot")
 file(READ "${weird}-circle.svg" svg)
 expect_text("${svg}" "mill &lt;5 &amp; &apos;fast&apos;&gt; &quot;A&quot;" "circle plot machine name")
+
+# the radial model measures along rays from the curve's origin; the parabola y = x^2/40 passes
+# through it, where a ray runs along the blocks: the model is said not to apply, not printed in km
+run_expect(0 "parabola program" ${NCURVE} gen parabola --tol 0.01 -o ${OUT}/parabola.nc)
+run_expect(0 "parabola models" ${NCURVE} analyze ${OUT}/parabola.nc --curve parabola --json)
+string(JSON joshi GET "${out}" shape_models joshi_radial applies)
+string(JSON yang GET "${out}" shape_models yang_chord_height applies)
+if(joshi OR NOT yang)
+  message(SEND_ERROR "parabola: the radial model applies (${joshi}) or the chord height does not (${yang})")
+endif()
+run_expect(0 "parabola models text" ${NCURVE} analyze ${OUT}/parabola.nc --curve parabola)
+expect_text("${out}" "radial shape error, Joshi eqs 8-11      does not apply here: off by" "radial model")
