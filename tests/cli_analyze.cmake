@@ -266,3 +266,7 @@ if(joshi OR NOT yang)
 endif()
 run_expect(0 "parabola models text" ${NCURVE} analyze ${OUT}/parabola.nc --curve parabola)
 expect_text("${out}" "radial shape error, Joshi eqs 8-11      does not apply here: off by" "radial model")
+# a curve undefined on part of its range (the square root of a negative number below t = 100)
+run_expect(1 "undefined curve" ${NCURVE} analyze ${SRC}/examples/spiral.nc --curve expr --x "SQRT[t-100]" --y 0
+           --t 0:360)
+expect_text("${err}" "the curve expr is undefined at t = 0; check --curve and its parameters" "undefined curve")

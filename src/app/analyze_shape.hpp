@@ -60,6 +60,8 @@ inline std::optional<std::string> measure(std::vector<machine::Move> contour, co
   if (!contour.empty()) r.o.depth = -contour.front().start[2];
   if (contour.empty()) return fmt::format("the program has no feed moves to compare with the curve {}", curve.name());
   const report::CurveNearest nearest(curve, gen::axis_map(curve, r.o));
+  if (auto t = nearest.undefined_at())
+    return fmt::format("the curve {} is undefined at t = {:g}; check --curve and its parameters", curve.name(), *t);
   const double floor = std::max(r.o.tol, 10 * profile.increment);
   auto lost = [&](double distance, const machine::Move& m) {
     return fmt::format("the path does not follow the curve {}: it is {:.4g} mm away at {}; check --curve and its "

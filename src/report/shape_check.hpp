@@ -50,6 +50,13 @@ public:
     return std::sqrt(std::min({best_sq, fc, fd}));
   }
 
+  // The first sample where the curve is undefined (a coordinate not a finite number), if any.
+  std::optional<double> undefined_at() const {
+    for (std::size_t k = 0; k < points_.size(); ++k)
+      if (!std::isfinite(points_[k][0] + points_[k][1] + points_[k][2])) return t_[k];
+    return std::nullopt;
+  }
+
   const geom::Placement& map() const { return map_; }
   const geom::Curve& curve() const { return curve_; }
 
