@@ -16,7 +16,7 @@ geom::Curve circle(double radius) {
   spec.name = "circle";
   spec.x = std::to_string(radius) + "*COS[t]";
   spec.y = std::to_string(radius) + "*SIN[t]";
-  spec.z = "0";
+  spec.z = std::string(1, '0');  // (assigning the literal trips a false -Wrestrict in GCC 12)
   spec.from = 0, spec.to = 360;
   return geom::Curve(spec, {});
 }
