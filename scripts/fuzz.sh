@@ -5,6 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
+source scripts/packages.sh
+ensure_packages "${tool_packages[@]}" "${fuzz_packages[@]}"
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNCURVE_FUZZ=ON \
   -DNCURVE_TESTS=OFF -DNCURVE_BENCH=OFF >/dev/null
 cmake --build build-fuzz --target fuzz_run fuzz_curve fuzz_rows

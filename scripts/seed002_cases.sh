@@ -1,5 +1,5 @@
 #!/bin/sh
-# Seed 002's six circular-interpolation cases through `ncurve analyze circle` (README table).
+# Seed 002's six circular-interpolation cases through `ncurve analyze circle` (docs/papers.md).
 # Kv = 1.01 (m/min)/mm = 16.83 /s on X and Y; accelerations in m/s^2 as mm/s^2 x 1000; R 120 mm.
 set -e
 ncurve=${NCURVE:-./build/ncurve}

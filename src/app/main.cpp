@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -11,6 +12,8 @@
 #include "app/helicoid_command.hpp"
 #include "app/analyze_command.hpp"
 #include "app/run_setup.hpp"
+#include "app/cli_docs.hpp"
+#include "app/shipped.hpp"
 #include "io/output_file.hpp"
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
@@ -21,6 +24,12 @@
 namespace {
 
 using namespace ncurve;
+
+std::string version_text() {
+  auto dir = app::shipped_dir();
+  return fmt::format("ncurve {}\nprofiles, macros, examples: {}", NCURVE_VERSION,
+                     dir ? *dir : std::string("not found beside the binary"));
+}
 
 struct RunArgs {
   app::RunInputs in;
@@ -61,7 +70,7 @@ int run_command(const RunArgs& a) {
   if (a.format == "jsonl") sink = std::make_unique<report::JsonlWriter>(out, profile);
   else if (a.format == "csv") sink = std::make_unique<report::CsvWriter>(out, profile, a.arc_tol);
   else if (a.format == "gcode") {
-    auto g = std::make_unique<report::GcodeWriter>(out, profile, a.in.program);
+    auto g = std::make_unique<report::GcodeWriter>(out, profile, a.in.program == "-" ? "<stdin>" : a.in.program);
     gcode = g.get();
     sink = std::move(g);
   } else sink = std::make_unique<machine::NullSink>();
@@ -71,7 +80,7 @@ int run_command(const RunArgs& a) {
   if (gcode) gcode->finish();
 
   report::RunReport rep;
-  rep.source = a.in.program;
+  rep.source = a.in.program == "-" ? "<stdin>" : a.in.program;
   rep.profile = &profile;
   rep.result = &result;
   rep.stats = report::source_stats(lib, lib.main()->file.get());
@@ -94,9 +103,10 @@ int run_command(const RunArgs& a) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int ncurve_main(int argc, char** argv) {
   CLI::App app{"ncurve: run, generate and analyse FANUC Custom Macro B programs for non-circular curves"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", version_text());
   RunArgs a;
   CLI::App* run = app.add_subcommand("run", "execute a part program as a FANUC control would and report the tool path");
   app::add_run_inputs(run, a.in, true);
@@ -112,15 +122,55 @@ int main(int argc, char** argv) {
   app::add_helicoid_command(app, h);
   app::AnalyzeArgs an;
   app::add_analyze_command(app, an);
+  CLI::App* completion = app.add_subcommand("completion", "print the bash completion script: source <(ncurve completion)");
+  CLI::App* man = app.add_subcommand("man", "print the manual page (roff)")->group("");
+
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> known;
+    for (const auto* c : app.get_subcommands([](const CLI::App*) { return true; })) known.push_back(c->get_name());
+    if (std::find(known.begin(), known.end(), argv[1]) == known.end()) {
+      std::string near = app::nearest(argv[1], known);
+      std::cerr << fmt::format("ncurve: '{}' is not a command{}; the commands are run, gen, analyze, helicoid and "
+                               "completion (ncurve --help)\n",
+                               argv[1], near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near));
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  if (completion->parsed()) {
+    std::cout << app::bash_completion(app);
+    return 0;
+  }
+  if (man->parsed()) {
+    std::cout << app::man_page(app, NCURVE_VERSION);
+    return 0;
+  }
   if (run->parsed()) return run_command(a);
   if (g.command->parsed()) return app::gen_command(g);
   if (h.command->parsed()) return app::helicoid_command(h);
   if (an.command->parsed()) return app::analyze_command(an);
   return 2;
+}
+
+int main(int argc, char** argv) {
+  int status = 2;
+  try {
+    status = ncurve_main(argc, argv);
+    io::check_stdout();
+  } catch (const io::OutputError& e) {
+    std::cerr << "ncurve: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ncurve: error: out of memory (the machine ran out of memory for this job; try a smaller one)\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "ncurve: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return status;
 }

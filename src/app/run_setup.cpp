@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <iostream>
+#include <sstream>
 #include <stdexcept>
+
+#include "app/shipped.hpp"
 
 namespace ncurve::app {
 namespace {
@@ -47,16 +51,24 @@ void apply_parameters(machine::MachineProfile& profile, const std::vector<std::s
 }
 
 void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
-  auto* program = cmd->add_option("program", in.program, "part program (.nc)")->check(CLI::ExistingFile);
+  auto* program = cmd->add_option("program", in.program, "part program (.nc); - reads it from standard input")
+                      ->check(input_file());
   if (program_required) program->required();
-  cmd->add_option("--machine", in.machine, "machine profile (TOML); default: FANUC 3-axis mill, factory parameters")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--lib", in.libs, "folder of macro programs (O9010.nc, ...); may be repeated")
-      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--machine", in.machine,
+                  "machine profile (TOML file, or a shipped one by name: fanuc-mill, fanuc-lathe, ...); default: "
+                  "FANUC 3-axis mill, factory parameters")
+      ->transform(profile_path());
+  cmd->add_option("--lib", in.libs,
+                  "folder of macro programs (O9010.nc, ...), or `macros` for the shipped custom cycles; may be "
+                  "repeated")
+      ->transform(folder_path())
+      ->allow_extra_args(false);
   cmd->add_option("--param", in.params,
                   "set a control parameter over the profile's, e.g. --param 6050=102 (G102 calls O9010); may be "
-                  "repeated");
-  cmd->add_option("--set", in.sets, "preset a variable before the run, e.g. --set \"#100=5\"; may be repeated");
+                  "repeated")
+      ->allow_extra_args(false);
+  cmd->add_option("--set", in.sets, "preset a variable before the run, e.g. --set \"#100=5\"; may be repeated")
+      ->allow_extra_args(false);
   cmd->add_option("--max-steps", in.max_steps, "stop a program that has not ended after this many blocks")
       ->check(CLI::PositiveNumber);
 }
@@ -68,7 +80,14 @@ RunSetup prepare_run(const RunInputs& in) {
   if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
   apply_parameters(s.profile, in.params);
   s.lib = std::make_unique<machine::ProgramLibrary>(s.profile.parse_options());
-  s.problems = s.lib->add_file(in.program, true);
+  if (in.program == "-") {
+    std::ostringstream text;
+    text << std::cin.rdbuf();
+    if (std::cin.bad()) throw std::runtime_error("cannot read the program from standard input");
+    s.problems = s.lib->add_text("<stdin>", text.str(), true);
+  } else {
+    s.problems = s.lib->add_file(in.program, true);
+  }
   for (const auto& dir : in.libs) {
     auto more = s.lib->add_folder(dir);
     s.problems.insert(s.problems.end(), more.begin(), more.end());

@@ -44,6 +44,25 @@ bool scaled_address(char c) {  // dimension words read in least input increments
     default: return false;
   }
 }
+
+// Whether a block holds a literal G code from g_lo to g_hi (x10).
+bool block_has_g(const nc::Program& p, const nc::Block& b, int g_lo, int g_hi) {
+  for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+    const nc::Word& word = p.words[w];
+    if (word.letter == 'G' && word.literal && word.value * 10 >= g_lo && word.value * 10 <= g_hi) return true;
+  }
+  return false;
+}
+
+// A number as the control shows it: at most `decimals` places, no trailing zeros.
+std::string shown_number(double v, int decimals) {
+  std::string s = fmt::format("{:.{}f}", v, std::max(decimals, 0));
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  return s == "-0" ? "0" : s;
+}
 }  // namespace
 
 double increments_per_mm(const MachineProfile& p) { return std::round(1 / p.increment); }
@@ -61,6 +80,21 @@ Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& li
   work_offsets_ = profile_.work_offsets;
   tool_offsets_ = profile_.tool_offsets;
   lathe_offsets_ = profile_.lathe_offsets;
+  CompensationSettings cs;
+  cs.startup_type_b = profile_.compensation.startup_type_b;
+  cs.blocks_without_motion = profile_.compensation.blocks_read - 2;
+  cs.interference_check = profile_.compensation.interference_check;
+  comp_.emplace(
+      cs, [this](Move& m) { deliver(m); },
+      [this](const Move& at, const std::string& code, const std::string& message) {
+        throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message,
+                                       nc::Span{at.file, at.line, 1, 1}});
+      },
+      [this](const Move& at, const std::string& code, const std::string& message) {
+        if (result_.warnings.size() < 1000)
+          result_.warnings.push_back(
+              nc::Diagnostic{nc::Severity::warning, code, message, nc::Span{at.file, at.line, 1, 1}});
+      });
 }
 
 // Innermost DO/WHILE around each block of a program, computed on its first GOTO.
@@ -111,6 +145,60 @@ Value Interpreter::eval(const nc::Expr& e) {
 
 bool Interpreter::condition(const nc::Expr& e) { return eval(e).number() != 0.0; }
 
+// Programs that mix dimension words with and without a decimal point are a classic source of
+// scrapped parts. A word of a macro call (G65, G66, a custom G code) is an argument, not an axis.
+void Interpreter::warn_mixed_decimal_points() {
+  auto is_call = [&](const nc::Program& p, const nc::Block& b) {
+    for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+      const nc::Word& word = p.words[w];
+      if (word.letter != 'G' || !word.literal) continue;
+      int g = round_int(word.value * 10);
+      if (g == 650 || g == 660 || g == 661) return true;
+      for (int code : profile_.g_code_macros)
+        if (code != 0 && g == std::abs(code) * 10) return true;
+    }
+    return false;
+  };
+  const int decimals = static_cast<int>(std::lround(-std::log10(profile_.increment)));
+  for (const auto& p : library_.programs()) {
+    const nc::Word* with = nullptr;
+    const nc::Word* without = nullptr;
+    std::uint32_t without_line = 0;
+    bool without_is_argument = false;
+    for (const auto& b : p->blocks)
+      for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+        const nc::Word& word = p->words[w];
+        if (!word.literal || !scaled_address(word.letter)) continue;
+        if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
+        if (word.decimal_point) with = with ? with : &word;
+        else if (word.value != 0 && !without) {
+          without = &word;
+          without_line = b.line;
+          without_is_argument = is_call(*p, b);
+        }
+      }
+    if (!with || !without) continue;
+    const std::string word = fmt::format("{}{}", without->letter, shown_number(without->value, 0));
+    const std::string what = without_is_argument
+                                 ? fmt::format("argument {} of a macro call is read as {}", word,
+                                               profile_.decimal_calculator
+                                                   ? shown_number(without->value, 0)
+                                                   : shown_number(without->value * profile_.increment, decimals))
+                                 : fmt::format("{} is read as {} mm", word,
+                                               profile_.decimal_calculator
+                                                   ? shown_number(without->value, 0)
+                                                   : shown_number(without->value * profile_.increment, decimals));
+    result_.warnings.push_back(nc::Diagnostic{
+        nc::Severity::warning, "NC2001",
+        profile_.decimal_calculator
+            ? fmt::format("words with and without a decimal point in one program; {} (calculator-type input, "
+                          "No.3401#0 = 1)", what)
+            : fmt::format("words with and without a decimal point in one program; {} ({} least input increments, "
+                          "No.3401#0 = 0)", what, shown_number(without->value, 0)),
+        nc::Span{p->file.get(), without_line, without->column, 1}});
+  }
+}
+
 RunResult Interpreter::run(MoveSink& sink) {
   sink_ = &sink;
   result_ = RunResult{};
@@ -131,34 +219,7 @@ RunResult Interpreter::run(MoveSink& sink) {
   set_origin();
   for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
 
-  // Programs that mix axis words with and without a decimal point are a classic source of scrapped parts.
-  for (const auto& p : library_.programs()) {
-    const nc::Word* with = nullptr;
-    const nc::Word* without = nullptr;
-    std::uint32_t without_line = 0;
-    for (const auto& b : p->blocks)
-      for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
-        const nc::Word& word = p->words[w];
-        if (!word.literal || !scaled_address(word.letter)) continue;
-        if (word.decimal_point) with = with ? with : &word;
-        else if (word.value != 0 && !without) {
-          without = &word;
-          without_line = b.line;
-        }
-      }
-    if (with && without) {
-      result_.warnings.push_back(nc::Diagnostic{
-          nc::Severity::warning, "NC2001",
-          profile_.decimal_calculator
-              ? fmt::format("axis words with and without a decimal point in one program; {}{} is read as {} mm "
-                            "(calculator-type input, No.3401#0 = 1)",
-                            without->letter, without->value, without->value)
-              : fmt::format("axis words with and without a decimal point in one program; {}{} is read as {} mm "
-                            "({} least input increments, No.3401#0 = 0)",
-                            without->letter, without->value, without->value * profile_.increment, without->value),
-          nc::Span{p->file.get(), without_line, without->column, 1}});
-    }
-  }
+  warn_mixed_decimal_points();
 
   try {
     for (const auto& [n, v] : options_.presets) {
@@ -181,8 +242,13 @@ RunResult Interpreter::run(MoveSink& sink) {
       }
       step();
     }
+    comp_->finish();
   } catch (const nc::Alarm& a) {
     result_.alarm = a.diagnostic;
+    try {
+      comp_->abandon();
+    } catch (const nc::Alarm&) {
+    }
   }
   sink_ = nullptr;
   return result_;
@@ -216,7 +282,13 @@ void Interpreter::step() {
   switch (b.kind) {
     case Statement::empty: ++f.pc; break;
     case Statement::assign: exec_assignment(b); ++frames_.back().pc; break;
-    case Statement::nc: ++f.pc; exec_nc(b); break;
+    case Statement::nc: {
+      ++f.pc;
+      const bool g40 = comp_side_ != 0;
+      exec_nc(b);
+      if (compensating()) end_of_block_compensation(g40 && comp_side_ == 0);
+      break;
+    }
     case Statement::go_to: jump(b, eval(b.value).number()); break;
     case Statement::if_goto:
       if (condition(b.cond)) jump(b, eval(b.value).number());

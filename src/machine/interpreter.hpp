@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "machine/compensation.hpp"
 #include "machine/library.hpp"
 #include "machine/move.hpp"
 #include "machine/profile.hpp"
@@ -109,6 +110,10 @@ private:
   void linear(MoveKind kind, const AxisVector& target);
   void arc(const AxisVector& target, bool clockwise);
   void emit(Move& m);
+  void deliver(Move& m);  // stats and the sink: the moves as the tool makes them
+  bool compensating() const;
+  void end_of_block_compensation(bool g40);
+  V2 nose_tip() const;
   void emit_event(MoveKind kind, int code);
   void dwell();
   void reference_return(int g);
@@ -116,6 +121,7 @@ private:
   void set_coordinate_system(int g);
   void data_setting();
   void set_origin();
+  void warn_mixed_decimal_points();
   void note_extent(const AxisVector& p);
   double feed_seconds(double length, double mean_radius) const;
 
@@ -200,6 +206,13 @@ private:
   AxisVector tool_shift_{};  // machine = work + origin + tool shift (G43/G44 on Z; lathe T offset on X, Z)
   int lathe_offset_ = 0;     // active lathe offset number (T code's last two digits)
 
+  // cutter / tool-nose radius compensation
+  std::optional<RadiusCompensation> comp_;
+  int comp_side_ = 0;                  // +1 G41, -1 G42, 0 G40
+  bool comp_suspended_ = false;        // G28/G30/G53 in offset mode: moves without the vector
+  bool block_plane_motion_ = false;    // the block moved in the offset plane
+  std::optional<V2> cancel_direction_;  // I J K of a G40 block
+
   // positions (work coordinates, mm; lathe X as a radius)
   AxisVector pos_{};
   AxisVector origin_{};  // machine = work + origin
@@ -207,7 +220,10 @@ private:
   AxisVector shift_{};   // G92 / G50
   std::array<AxisVector, 7> work_offsets_{};
   std::map<int, AxisVector> extended_offsets_;  // G54.1 P1..P300
-  std::map<int, double> tool_offsets_;
+  std::map<int, MillOffset> tool_offsets_;
+  double* mill_offset_field(int n);
+  double length_offset(int n) const;  // H: geometry + wear
+  double radius_offset(int n) const;  // D: geometry + wear (memory C: the D values)
   std::map<int, LatheOffset> lathe_offsets_;
   std::map<int, nc::Value> system_store_;  // writable system variables without other meaning
   double clock_base_ms_ = 0;

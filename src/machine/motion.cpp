@@ -15,7 +15,6 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 
 const char* kindless_unsupported(int g) {
   switch (g) {
-    case 410: case 420: return "cutter radius compensation (G41/G42)";
     case 150: case 160: return "polar coordinates (G15/G16)";
     case 680: return "coordinate rotation (G68)";
     case 510: return "scaling (G51)";
@@ -23,13 +22,23 @@ const char* kindless_unsupported(int g) {
     case 310: return "skip function (G31)";
     case 330: case 320: return "threading (G32/G33)";
     case 120: case 130: return "circle cutting (G12/G13)";
-    case 50: return "AI contour control (G05)";
-    case 51: return "high-speed cutting (G05.1)";
     case 70: case 71: return "cylindrical interpolation (G07.1)";
     case 121: case 131: return "polar coordinate interpolation (G12.1/G13.1)";
     default: return nullptr;
   }
 }
+// PS0010 for a G code the control lacks; a whole number could be made a custom G code.
+std::string unknown_g_code(int g, const MachineProfile& p) {
+  std::string code = fmt::format("G{}{}", g / 10, g % 10 ? fmt::format(".{}", g % 10) : "");
+  std::string text = fmt::format("{} is not a G code of this control", code);
+  if (g % 10 != 0 || g / 10 < 1 || g / 10 > 9999) return text;
+  for (int i = 0; i < static_cast<int>(p.g_code_macros.size()); ++i)
+    if (p.g_code_macros[i] == 0)
+      return text + fmt::format(" (to make it a custom G code calling O{}, set parameter No.{} = {}: "
+                                "--param {}={})", 9010 + i, 6050 + i, g / 10, 6050 + i, g / 10);
+  return text;
+}
+
 }  // namespace
 
 PlaneAxes plane_axes(int plane) {
@@ -78,15 +87,36 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       case 0: case 10: case 20: case 30: motion_ = g / 10; break;
       case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
-      case 170: case 180: case 190: plane_ = g / 10; break;
+      case 170: case 180: case 190:
+        if (g / 10 != plane_ && compensating())
+          alarm("PS0037", fmt::format("the plane cannot change (G{}) while cutter compensation is active: cancel it "
+                                      "with G40 first",
+                                      g / 10),
+                column);
+        plane_ = g / 10;
+        break;
+      case 400:
+        if (comp_side_ != 0 || comp_->offset_mode()) {
+          comp_side_ = 0;
+          const PlaneAxes pa = plane_axes(plane_);
+          if (has(pa.ip) || has(pa.iq))
+            cancel_direction_ = V2{has(pa.ip) ? dimension(word(pa.ip)) : 0.0, has(pa.iq) ? dimension(word(pa.iq)) : 0.0};
+        }
+        break;
+      case 410: case 420:
+        comp_side_ = g == 410 ? 1 : -1;
+        break;
       case 200: inch_ = true; break;
       case 210: inch_ = false; break;
-      case 400: case 800: case 670: case 690: break;  // cancels: nothing active to cancel
+      case 800: case 670: case 690: case 150: break;  // cancels: nothing active to cancel
+      // AI contour control (G05.1 Q1/Q0, G05 P10000/P0) and look-ahead control (G08 P1/P0) change
+      // how the control accelerates, not the path: the time planner's profile stands for them
+      case 51: case 50: case 80: break;
       case 430: case 440:
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
         length_comp_ = g / 10;
         h_ = has('H') ? static_cast<int>(std::lround(word('H').value)) : h_;
-        tool_shift_[2] = (g == 430 ? 1 : -1) * (tool_offsets_.count(h_) ? tool_offsets_[h_] : 0.0);
+        tool_shift_[2] = (g == 430 ? 1 : -1) * length_offset(h_);
         break;
       case 490: length_comp_ = 49; tool_shift_[2] = 0; break;
       case 540: case 550: case 560: case 570: case 580: case 590:
@@ -127,8 +157,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           alarm("NC9001", fmt::format("G{} (canned cycle) is not supported yet", g / 10), column);
         if (const char* what = kindless_unsupported(g))
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
-        alarm("PS0010", fmt::format("G{}{} is not a G code of this control", g / 10, g % 10 ? fmt::format(".{}", g % 10) : ""),
-              column);
+        alarm("PS0010", unknown_g_code(g, profile_), column);
       }
     }
   }
@@ -147,7 +176,8 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
       incremental = true;
       if (!has_axis_[a]) a = -1;
     } else if (a >= 0 && !has_axis_[a]) {
-      if (c.letter == 'A' || c.letter == 'B' || c.letter == 'C') continue;  // not an axis here: argument or unused
+      // a lathe reads C (and B) as chamfer and other words of its cycles; a mill has nothing for them
+      if (lathe && (c.letter == 'A' || c.letter == 'B' || c.letter == 'C')) continue;
       alarm("PS0009", fmt::format("address {}: this machine has no {} axis", c.letter, c.letter), c.column);
     } else if (a < 0) {
       if (c.letter == 'U' || c.letter == 'V' || c.letter == 'W' || c.letter == 'E')
@@ -195,6 +225,30 @@ void Interpreter::emit(Move& m) {
   m.macro_statements = statements_since_;
   m.nc_blocks = nc_blocks_since_;
   statements_since_ = nc_blocks_since_ = 0;
+  if (!compensating()) return deliver(m);
+  const PlaneAxes pa = plane_axes(plane_);
+  const bool in_plane = m.kind == MoveKind::arc ? m.plane == plane_
+                        : m.is_motion() && (m.start[pa.p] != m.end[pa.p] || m.start[pa.q] != m.end[pa.q]);
+  if (!in_plane) return comp_->other(m);
+  block_plane_motion_ = true;
+  int side = comp_suspended_ ? 0 : comp_side_;
+  double radius = 0;
+  if (profile_.lathe()) {
+    auto it = lathe_offsets_.find(lathe_offset_);
+    if (it != lathe_offsets_.end()) radius = it->second.r + it->second.r_wear;
+    comp_->set_tip(nose_tip());
+  } else {
+    radius = radius_offset(d_);
+  }
+  if (radius < 0) {  // a negative offset puts the tool on the other side
+    radius = -radius;
+    side = -side;
+  }
+  std::optional<V2> cancel = side == 0 ? cancel_direction_ : std::nullopt;
+  comp_->element(m, side, radius, cancel);
+}
+
+void Interpreter::deliver(Move& m) {
   RunStats& s = result_.stats;
   ++s.by_kind[static_cast<int>(m.kind)];
   if (m.is_motion()) {
@@ -206,6 +260,38 @@ void Interpreter::emit(Move& m) {
   }
   s.seconds += m.seconds;
   sink_->on_move(m);
+}
+
+bool Interpreter::compensating() const {
+  return comp_side_ != 0 || comp_->offset_mode() || comp_->tool_position().has_value();
+}
+
+// After each NC block in offset mode: a G40 without motion in the plane ends the offset at the last
+// move's end; any other block without such motion is one the read-ahead must look past.
+void Interpreter::end_of_block_compensation(bool g40) {
+  if (!block_plane_motion_) {
+    Move at;
+    at.file = prog_ ? prog_->file.get() : nullptr;
+    at.line = block_ ? block_->line : 0;
+    at.program = prog_ ? prog_->number : -1;
+    if (g40) comp_->cancel_without_motion();
+    else comp_->block_without_motion(at);
+  }
+  block_plane_motion_ = false;
+  cancel_direction_.reset();
+}
+
+// The imaginary tool tip from the nose centre, in the G18 plane (Z, X as a radius), as the active
+// offset's tip number places it (drawn with +X up and +Z right); 0 and 9: the nose centre.
+V2 Interpreter::nose_tip() const {
+  static constexpr int kTipX[10] = {0, -1, -1, 1, 1, 0, -1, 0, 1, 0};
+  static constexpr int kTipZ[10] = {0, 1, -1, -1, 1, 1, 0, -1, 0, 0};
+  auto it = lathe_offsets_.find(lathe_offset_);
+  if (it == lathe_offsets_.end()) return {};
+  int tip = static_cast<int>(it->second.tip);
+  if (tip < 0 || tip > 9) return {};
+  double r = it->second.r + it->second.r_wear;
+  return {kTipZ[tip] * r, kTipX[tip] * r};
 }
 
 void Interpreter::emit_event(MoveKind kind, int code) {
@@ -370,6 +456,12 @@ void Interpreter::reference_return(int g) {
   AxisVector mid = pos_;
   bool any = axis_target(mid);
   if (!any) return;
+  // in offset mode the vector is cancelled at the intermediate point and restored at the next move
+  comp_suspended_ = true;
+  struct Restore {
+    bool& flag;
+    ~Restore() { flag = false; }
+  } restore{comp_suspended_};
   linear(MoveKind::rapid, mid);
   AxisVector ref = pos_;
   for (const Cmd& c : cmds_) {
@@ -394,7 +486,9 @@ void Interpreter::machine_coordinate_move() {
   for (int a = 0; a < kAxes; ++a) target[a] = given[a] - origin_[a] - tool_shift_[a];
   for (int a = 0; a < kAxes; ++a)
     if (given[a] == machine[a]) target[a] = pos_[a];
+  comp_suspended_ = true;  // G53 in offset mode: the vector is cancelled, restored at the next move
   linear(MoveKind::rapid, target);
+  comp_suspended_ = false;
 }
 
 void Interpreter::set_coordinate_system(int g) {
@@ -489,7 +583,17 @@ void Interpreter::data_setting() {
     int p = integer(word('P'), "P of G10");
     if (p < 1 || p > 999) alarm("PS0030", "offset number out of range", word('P').column);
     double v = dimension(word('R'));
-    tool_offsets_[p] = incremental_ ? tool_offsets_[p] + v : v;
+    MillOffset& o = tool_offsets_[p];
+    const bool wear = l == 11 || l == 13;
+    double* field = &o.geometry;
+    switch (profile_.offset_memory) {
+      case OffsetMemory::A: field = &o.geometry; break;  // one value: every L sets it
+      case OffsetMemory::B: field = wear ? &o.wear : &o.geometry; break;
+      case OffsetMemory::C:
+        field = l == 12 ? &o.d_geometry : l == 13 ? &o.d_wear : wear ? &o.wear : &o.geometry;
+        break;
+    }
+    *field = incremental_ ? *field + v : v;
     return;
   }
   alarm("NC9001", fmt::format("G10 L{} is not supported yet (L2, L20 and L1/L10..L13 are)", l));

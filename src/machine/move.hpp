@@ -39,6 +39,8 @@ struct Move {
   bool exact_stop = false;     // G61 modal or G09 in the block: the feed comes to zero at the block end
   std::uint32_t macro_statements = 0;  // macro statements executed since the previous event (for the time planner)
   std::uint32_t nc_blocks = 0;         // NC blocks read since the previous event, this one included
+  bool compensated = false;    // a cutter / tool-nose radius compensated move: end is the tool centre (tip)
+  AxisVector programmed_end{}; // compensated moves: the end point as programmed
   int program = -1;            // O number of the program holding the block
   const nc::SourceFile* file = nullptr;
   std::uint32_t line = 0;      // 1-based line in file

@@ -113,6 +113,11 @@ void machine_table(MachineProfile& p, const toml::table& t, const std::string& o
       std::string v = text(origin, node, key);
       if (v != "IJK" && v != "R") fail(origin, node, "arc_words must be \"IJK\" (centre offsets) or \"R\" (radius)");
       p.arcs_with_r = v == "R";
+    } else if (key == "offset_memory") {
+      std::string v = text(origin, node, key);
+      if (v != "A" && v != "B" && v != "C")
+        fail(origin, node, "offset_memory must be \"A\", \"B\" or \"C\" (tool compensation memory)");
+      p.offset_memory = v == "A" ? OffsetMemory::A : v == "B" ? OffsetMemory::B : OffsetMemory::C;
     } else if (key == "diameter_programming") p.diameter_x = flag(origin, node, key);
     else if (key == "block_skip") p.block_skip = flag(origin, node, key);
     else if (key == "macro_call_nesting") p.macro_nesting = static_cast<int>(number(origin, node, key));
@@ -210,7 +215,19 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     if (value != 0 && value != 1) throw std::runtime_error(fmt::format("parameter {} is a bit: 0 or 1", key));
     return value != 0;
   };
+  if (!std::isfinite(value) || std::fabs(value) > 1e9)
+    throw std::runtime_error(fmt::format("parameter {}: {} is not a value a parameter can hold", key, value));
   if (key == "3401#0") p.decimal_calculator = bit();
+  else if (key == "5003#0") p.compensation.startup_type_b = bit();
+  else if (key == "5008#1") p.compensation.interference_check = !bit();
+  else if (key == "19625") {
+    if (p.control != Control::fanuc_30i)
+      throw std::runtime_error("parameter 19625: the 0i reads a fixed 3 blocks ahead in cutter compensation; No.19625 "
+                               "is a 30i parameter (control = \"30i\")");
+    if (value != std::floor(value) || value < 3 || value > 8)
+      throw std::runtime_error(fmt::format("parameter 19625 is 3 .. 8 blocks, got {}", value));
+    p.compensation.blocks_read = static_cast<int>(value);
+  }
   else if (key == "6004#0") p.atan_signed = bit();
   else if (key == "3402#0") p.power_on_g01 = bit();
   else if (key == "3402#3") p.power_on_g91 = bit();
@@ -225,14 +242,16 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     } catch (...) {
       n = 0;
     }
+    if (value != std::floor(value))
+      throw std::runtime_error(fmt::format("parameter {} takes a whole number, got {}", key, value));
     const int code = static_cast<int>(value);
     if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = code;
     else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = code;
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
       throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 6001#5, "
-                      "6004#0, 6050..6059, 6071..6079, 6080..6089)",
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 5003#0, "
+                      "5008#1, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089)",
                       key));
   }
 }
@@ -290,12 +309,16 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
       for (const auto& [tk, tn] : *t) {
         std::string s(tk.str());
         int n = 0;
+        std::size_t used = 0;
         try {
-          n = std::stoi(s);
+          n = std::stoi(s, &used);
         } catch (...) {
         }
-        if (const toml::table* set = tn.as_table()) {  // lathe: { x = .., z = .., r = .., tip = .., x_wear = .. }
-          if (!p.lathe()) fail(origin, tn, "a table of geometry and wear is a lathe offset: set type = \"lathe\" first");
+        if (used != s.size() || s.empty())
+          fail(origin, tn, fmt::format("tool offset '{}' is not a whole offset number", s));
+        const toml::table* set = tn.as_table();
+        if (p.lathe()) {  // { x = .., z = .., r = .., tip = .., x_wear = .. }
+          if (!set) fail(origin, tn, "a lathe offset is a table: { x = .., z = .., r = .., tip = .., x_wear = .. }");
           if (n < 1 || n > 64) fail(origin, tn, "lathe offset numbers are 1 .. 64");
           LatheOffset& o = p.lathe_offsets[n];
           for (const auto& [fk, fn] : *set) {
@@ -312,9 +335,33 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
           }
           continue;
         }
-        if (p.lathe()) fail(origin, tn, "a lathe offset is a table: { x = .., z = .., r = .., tip = .., x_wear = .. }");
         if (n < 1 || n > 999) fail(origin, tn, "tool offset numbers are 1 .. 999");
-        p.tool_offsets[n] = number(origin, tn, s);
+        MillOffset& o = p.tool_offsets[n];
+        if (!set) {  // one value: the geometry of H and D alike
+          o.geometry = o.d_geometry = number(origin, tn, s);
+          continue;
+        }
+        if (set->contains("x") || set->contains("z"))
+          fail(origin, tn, "a table of x and z is a lathe offset: set type = \"lathe\" first");
+        for (const auto& [fk, fn] : *set) {
+          std::string f(fk.str());
+          double v = number(origin, fn, f);
+          if (f == "length") o.geometry = v;
+          else if (f == "length_wear") o.wear = v;
+          else if (f == "radius") o.d_geometry = v;
+          else if (f == "radius_wear") o.d_wear = v;
+          else fail(origin, fn, fmt::format("unknown mill offset field '{}' (length, length_wear, radius, radius_wear)", f));
+        }
+        if (p.offset_memory != OffsetMemory::C && (set->contains("radius") || set->contains("radius_wear")) &&
+            (set->contains("length") || set->contains("length_wear")))
+          fail(origin, tn, "offset memory A and B hold one value for H and D: give length or radius, not both "
+                           "(offset_memory = \"C\" separates them)");
+        if (p.offset_memory != OffsetMemory::C) {
+          if (set->contains("radius")) o.geometry = o.d_geometry;
+          if (set->contains("radius_wear")) o.wear = o.d_wear;
+        }
+        if (p.offset_memory == OffsetMemory::A && o.wear != 0)
+          fail(origin, tn, "offset memory A has no wear values (offset_memory = \"B\" or \"C\")");
       }
     } else {
       fail(origin, node, fmt::format("unknown table [{}]", key));

@@ -22,6 +22,21 @@ struct LatheOffset {
   double x_wear = 0, z_wear = 0, r_wear = 0, tip = 0, x = 0, z = 0, r = 0;
 };
 
+// One mill offset number. Memory A holds one value, used by H and D; memory B a geometry and a
+// wear, both used by H and D; memory C separate geometry and wear for H (length) and D (radius).
+enum class OffsetMemory { A, B, C };
+struct MillOffset {
+  double geometry = 0, wear = 0;      // H, and D on memory A and B
+  double d_geometry = 0, d_wear = 0;  // D on memory C
+};
+
+// Cutter / tool-nose radius compensation settings of the control.
+struct CompensationProfile {
+  bool startup_type_b = false;     // No.5003#0 SUP: start-up and cancel of type B (else type A)
+  int blocks_read = 3;             // blocks read ahead in offset mode (No.19625 on 30i; 3 on 0i)
+  bool interference_check = true;  // No.5008#1 CNC = 0: the interference check is performed
+};
+
 enum class AccDec { before, after };  // acc/dec before interpolation (look-ahead) or after it (filter)
 enum class Filter { linear, exponential };
 
@@ -75,8 +90,10 @@ struct MachineProfile {
   double spindle_speed_for_time = 1000;  // rev/min assumed for feed per revolution when no S is active
   std::array<AxisVector, 7> work_offsets{};  // [0] external (#5201..), [1..6] G54..G59
   std::array<AxisVector, 4> reference_points{};  // machine coordinates of reference points 1..4
-  std::map<int, double> tool_offsets;  // mill, memory A: offset number -> value (#2001.., #10001..)
+  OffsetMemory offset_memory = OffsetMemory::A;  // mill tool compensation memory
+  std::map<int, MillOffset> tool_offsets;  // mill: offset number 1..999
   std::map<int, LatheOffset> lathe_offsets;  // lathe: offset number 1..64 -> geometry and wear
+  CompensationProfile compensation;
   MotionSettings motion;
   ServoSettings servo;
 

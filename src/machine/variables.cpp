@@ -67,6 +67,42 @@ void Interpreter::write_var(int n, Value v, std::uint16_t column) {
   write_system(n, v, column);
 }
 
+// Mill offsets by memory type. A: #2001..#2200 and #10001..#10999, one value a number. B: wear
+// there, geometry at #2201..#2400 and #11001..#11999. C: those for H, and D wear at #12001..
+// #12999, D geometry at #13001..#13999.
+double* Interpreter::mill_offset_field(int n) {
+  int k = 0, kind = 0;  // kind: 0 H/shared wear (geometry on A), 1 geometry, 2 D wear, 3 D geometry
+  if (n >= 2001 && n <= 2200) k = n - 2000;
+  else if (n >= 10001 && n <= 10999) k = n - 10000;
+  else if (n >= 2201 && n <= 2400) k = n - 2200, kind = 1;
+  else if (n >= 11001 && n <= 11999) k = n - 11000, kind = 1;
+  else if (n >= 12001 && n <= 12999) k = n - 12000, kind = 2;
+  else if (n >= 13001 && n <= 13999) k = n - 13000, kind = 3;
+  else return nullptr;
+  const OffsetMemory mem = profile_.offset_memory;
+  if (mem == OffsetMemory::A && kind != 0) return nullptr;
+  if (mem == OffsetMemory::B && kind >= 2) return nullptr;
+  MillOffset& o = tool_offsets_[k];
+  switch (kind) {
+    case 0: return mem == OffsetMemory::A ? &o.geometry : &o.wear;
+    case 1: return &o.geometry;
+    case 2: return &o.d_wear;
+    default: return &o.d_geometry;
+  }
+}
+
+double Interpreter::length_offset(int n) const {
+  auto it = tool_offsets_.find(n);
+  return it == tool_offsets_.end() ? 0.0 : it->second.geometry + it->second.wear;
+}
+
+double Interpreter::radius_offset(int n) const {
+  auto it = tool_offsets_.find(n);
+  if (it == tool_offsets_.end()) return 0.0;
+  const MillOffset& o = it->second;
+  return profile_.offset_memory == OffsetMemory::C ? o.d_geometry + o.d_wear : o.geometry + o.wear;
+}
+
 // FANUC T series, 64 offset sets: #2001 X wear, #2101 Z wear, #2201 R wear, #2301 tip,
 // #2701 X geometry, #2801 Z geometry, #2901 R geometry (+ offset number - 1).
 double* Interpreter::lathe_offset_field(int n) {
@@ -95,10 +131,8 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
   }
   if (profile_.lathe()) {
     if (const double* field = lathe_offset_field(n)) return Value::of(*field);
-  } else if ((n >= 2001 && n <= 2200) || (n >= 10001 && n <= 10999)) {
-    int k = n >= 10001 ? n - 10000 : n - 2000;
-    auto it = tool_offsets_.find(k);
-    return Value::of(it == tool_offsets_.end() ? 0.0 : it->second);
+  } else if (const double* field = mill_offset_field(n)) {
+    return Value::of(*field);
   }
   switch (n) {
     case 3000: case 3006: return Value{};
@@ -192,8 +226,8 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
       *field = v.number();
       return;
     }
-  } else if ((n >= 2001 && n <= 2200) || (n >= 10001 && n <= 10999)) {
-    tool_offsets_[n >= 10001 ? n - 10000 : n - 2000] = v.number();
+  } else if (double* field = mill_offset_field(n)) {
+    *field = v.number();
     return;
   }
   switch (n) {

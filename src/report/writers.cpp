@@ -33,6 +33,9 @@ void JsonlWriter::on_move(const Move& m) {
       fmt::format_to(it, R"(,"start_abc":[{},{},{}],"end_abc":[{},{},{}])", clean(m.start[3]), clean(m.start[4]),
                      clean(m.start[5]), clean(m.end[3]), clean(m.end[4]), clean(m.end[5]));
   }
+  if (m.compensated)
+    fmt::format_to(it, R"(,"compensated":true,"programmed_end":[{},{},{}])", clean(frame_.x(m.programmed_end[0])),
+                   clean(m.programmed_end[1]), clean(m.programmed_end[2]));
   if (m.kind == MoveKind::arc)
     fmt::format_to(it, R"(,"center":[{},{},{}],"plane":"G{}","direction":"{}","sweep_deg":{})",
                    clean(frame_.x(m.center[0])), clean(m.center[1]), clean(m.center[2]), m.plane,

@@ -28,6 +28,34 @@ TEST(Motion, DecimalPointRule) {
   EXPECT_DOUBLE_EQ(run("G00 X10\nM30\n", isc).motions().at(0).end[0], 0.001);
 }
 
+// The warning quotes the number as the control shows it (118 increments of 0.001 mm = 0.118) and
+// calls a macro call's word an argument, not an axis word in mm.
+TEST(Motion, DecimalPointWarningShowsTheNumberAsTheControlDoes) {
+  auto r = run("G00 X1.5 Y118\nM30\n");
+  ASSERT_EQ(r.result.warnings.size(), 1u);
+  EXPECT_NE(r.result.warnings[0].message.find("Y118 is read as 0.118 mm (118 least input increments"),
+            std::string::npos) << r.result.warnings[0].message;
+  auto call = run("G65 P9000 B30\nG01 X1.5 F100.\nM30\n", machine::default_mill(), {}, {{"O9000.nc", "O9000\nM99\n"}});
+  ASSERT_EQ(call.result.warnings.size(), 1u);
+  EXPECT_NE(call.result.warnings[0].message.find("argument B30 of a macro call is read as 0.03 (30 least input"),
+            std::string::npos) << call.result.warnings[0].message;
+  EXPECT_EQ(call.result.warnings[0].message.find(" mm "), std::string::npos);
+}
+
+// An integer G code the control lacks names the parameter that would make it a custom G code.
+TEST(Motion, UnknownGCodeNamesTheCustomGCodeParameter) {
+  auto r = run("G102 X10. Y0. F100.\nM30\n");
+  EXPECT_EQ(r.alarm_code(), "PS0010");
+  EXPECT_NE(r.result.alarm->message.find("set parameter No.6050 = 102: --param 6050=102"), std::string::npos)
+      << r.result.alarm->message;
+  auto p = machine::default_mill();
+  p.g_code_macros[0] = 103;  // No.6050 taken: the next free one is named
+  auto taken = run("G102 X10. Y0. F100.\nM30\n", p);
+  EXPECT_NE(taken.result.alarm->message.find("No.6051 = 102: --param 6051=102"), std::string::npos);
+  auto fraction = run("G102.5 X10.\nM30\n");
+  EXPECT_EQ(fraction.result.alarm->message.find("--param"), std::string::npos);
+}
+
 TEST(Motion, VariableValuesAreMillimetresAndRoundToTheIncrement) {
   auto r = run("#1=10\n#2=1.23456\nG00 X#1 Y#2\nM30\n");
   auto m = r.motions().at(0);
@@ -170,7 +198,7 @@ TEST(Motion, ReferenceReturnThroughIntermediatePoint) {
 
 TEST(Motion, ToolLengthAndOffsetsVariables) {
   auto p = machine::default_mill();
-  p.tool_offsets[3] = 120.5;
+  p.tool_offsets[3].geometry = 120.5;
   auto r = run("#100=#2003\n#2004=7.\n#101=#10004\nG43 H3 G00 Z10.\n#102=#5023\nM30\n", p);
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   EXPECT_DOUBLE_EQ(r.var(100), 120.5);
@@ -200,8 +228,23 @@ TEST(Motion, DwellAndEvents) {
   EXPECT_EQ(r.moves[5].kind, MoveKind::program_end);
 }
 
+// Modes that change how the control accelerates, not the path, and cancels of modes not active.
+TEST(Motion, HighSpeedModesAndCancelsLeaveThePath) {
+  auto r = run("G05.1 Q1\nG08 P1\nG05 P10000\nG15 G40 G50 G69 G80\nG01 X10. F100.\nG05.1 Q0\nG05 P0\nG08 P0\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  ASSERT_EQ(r.motions().size(), 1u);
+  EXPECT_DOUBLE_EQ(r.motions()[0].end[0], 10.0);
+}
+
+// A rotary axis word on a machine without that axis is the FANUC alarm, never dropped.
+TEST(Motion, AxisWordOfAMissingRotaryAxisAlarms) {
+  auto r = run("G00 X5. A10.\nM30\n");
+  EXPECT_EQ(r.alarm_code(), "PS0009");
+  EXPECT_TRUE(r.motions().empty());
+  EXPECT_EQ(run("G01 B20. F100.\nM30\n").alarm_code(), "PS0009");
+}
+
 TEST(Motion, UnsupportedFeaturesStopWithADiagnostic) {
-  EXPECT_EQ(run("G41 D1 G01 X1. F100.\n").alarm_code(), "NC9001");
   EXPECT_EQ(run("G81 X1. Y1. Z-1. R1. F100.\n").alarm_code(), "NC9001");
   EXPECT_EQ(run("G07.5 X1.\n").alarm_code(), "PS0010");
 }

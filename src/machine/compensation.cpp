@@ -1,0 +1,473 @@
+#include "machine/compensation.hpp"
+
+#include "machine/interpreter.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace ncurve::machine {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kEps = 1e-9;
+
+V2 operator+(V2 a, V2 b) { return {a.x + b.x, a.y + b.y}; }
+V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
+V2 operator*(double k, V2 a) { return {k * a.x, k * a.y}; }
+double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
+double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
+double norm(V2 a) { return std::hypot(a.x, a.y); }
+V2 unit(V2 a) {
+  double n = norm(a);
+  return n > 0 ? V2{a.x / n, a.y / n} : V2{};
+}
+V2 perp(V2 a) { return {-a.y, a.x}; }  // a turned +90 degrees: the left normal of a direction
+
+// Points of the line a + u d on the circle (c, R).
+std::vector<V2> line_circle(V2 a, V2 d, V2 c, double R) {
+  V2 f = a - c;
+  double A = dot(d, d), B = 2 * dot(f, d), C = dot(f, f) - R * R;
+  double disc = B * B - 4 * A * C;
+  if (disc < -1e-12 * std::max(1.0, R * R) || A == 0) return {};
+  double root = std::sqrt(std::max(0.0, disc));
+  return {a + ((-B - root) / (2 * A)) * d, a + ((-B + root) / (2 * A)) * d};
+}
+
+std::vector<V2> circle_circle(V2 c1, double r1, V2 c2, double r2) {
+  V2 d = c2 - c1;
+  double D = norm(d);
+  if (D < kEps || D > r1 + r2 + 1e-9 || D < std::fabs(r1 - r2) - 1e-9) return {};
+  double a = (r1 * r1 - r2 * r2 + D * D) / (2 * D);
+  double h = std::sqrt(std::max(0.0, r1 * r1 - a * a));
+  V2 u = (1 / D) * d;
+  V2 m = c1 + a * u;
+  return {m + h * perp(u), m - h * perp(u)};
+}
+
+V2 plane_point(const AxisVector& v, const PlaneAxes& pa) { return {v[pa.p], v[pa.q]}; }
+
+}  // namespace
+
+V2 RadiusCompensation::Elem::tangent_at(V2 p) const {
+  if (!arc) return unit(e - s);
+  return static_cast<double>(dir) * unit(perp(p - c));
+}
+
+RadiusCompensation::Elem RadiusCompensation::make(const Move& m, int side, double radius) const {
+  Elem el;
+  el.move = m;
+  el.arc = m.kind == MoveKind::arc;
+  el.s = plane_point(m.start, pa_);
+  el.e = plane_point(m.end, pa_);
+  el.side = side;
+  el.r = radius;
+  if (el.arc) {
+    el.c = {m.center[pa_.p], m.center[pa_.q]};
+    el.R = norm(el.s - el.c);
+    el.dir = m.sweep >= 0 ? 1 : -1;
+  }
+  return el;
+}
+
+// The offset curves of a and b (a on side_a by ra, b on side_b by rb) meet nearest `near`.
+std::optional<V2> RadiusCompensation::intersect(const Elem& a, int side_a, double ra, const Elem& b, int side_b,
+                                                double rb, V2 near) const {
+  auto offset_line = [](const Elem& el, int side, double r) {
+    V2 d = el.t_start();
+    return std::pair<V2, V2>{el.s + (side * r) * perp(d), d};
+  };
+  auto offset_radius = [](const Elem& el, int side, double r) { return el.R - side * el.dir * r; };
+  std::vector<V2> candidates;
+  if (!a.arc && !b.arc) {
+    auto [p1, d1] = offset_line(a, side_a, ra);
+    auto [p2, d2] = offset_line(b, side_b, rb);
+    double den = cross(d1, d2);
+    if (std::fabs(den) < 1e-12) return std::nullopt;
+    double u = cross(p2 - p1, d2) / den;
+    return p1 + u * d1;
+  }
+  if (!a.arc || !b.arc) {
+    const bool a_line = !a.arc;
+    const Elem& ln = a_line ? a : b;
+    const Elem& ci = a_line ? b : a;
+    auto [p, d] = offset_line(ln, a_line ? side_a : side_b, a_line ? ra : rb);
+    double R = offset_radius(ci, a_line ? side_b : side_a, a_line ? rb : ra);
+    if (R <= 0) return std::nullopt;
+    candidates = line_circle(p, d, ci.c, R);
+  } else {
+    double R1 = offset_radius(a, side_a, ra), R2 = offset_radius(b, side_b, rb);
+    if (R1 <= 0 || R2 <= 0) return std::nullopt;
+    candidates = circle_circle(a.c, R1, b.c, R2);
+  }
+  if (candidates.empty()) return std::nullopt;
+  return *std::min_element(candidates.begin(), candidates.end(),
+                           [&](V2 x, V2 y) { return norm(x - near) < norm(y - near); });
+}
+
+RadiusCompensation::Corner RadiusCompensation::corner(const Elem& a, const Elem& b, Joint joint) const {
+  const V2 P = a.e;
+  const V2 t1 = a.t_end(), t2 = b.t_start();
+  // The side and radius of the corner: the offset element's (the first in offset mode).
+  const int s = joint == Joint::startup ? b.side : a.side;
+  const double r = joint == Joint::startup ? b.r : a.r;
+  const V2 v1 = (s * r) * perp(t1), v2 = (s * r) * perp(t2);
+  const double cr = cross(t1, t2), dt = dot(t1, t2);
+  const bool straight = std::fabs(cr) < 1e-9 && dt > 0;
+  const bool inner = !straight && s * cr > 0;
+  const bool acute = !straight && !inner && dt < 0;
+  Corner k;
+  if (joint == Joint::startup) {
+    // the start-up block has no vector at its start; at its end: type A perpendicular to the next
+    // block, type B as a corner of offset mode (intersection, or the extra vectors at an acute corner)
+    if (!settings_.startup_type_b || straight || inner) {
+      k.end_a = k.start_b = P + v2;
+      return k;
+    }
+  } else if (joint == Joint::cancel) {
+    if (!settings_.startup_type_b || straight || inner) {
+      k.end_a = k.start_b = P + v1;
+      return k;
+    }
+  } else if (straight) {
+    k.end_a = k.start_b = P + v1;
+    return k;
+  }
+  if (!acute) {
+    // inner corners, and outer corners of 90 degrees and more: the offset paths' intersection
+    auto x = intersect(a, s, r, b, s, r, P + 0.5 * (v1 + v2));
+    if (x) {
+      k.end_a = k.start_b = *x;
+      return k;
+    }
+    if (inner) {
+      k.end_a = k.start_b = P + v1;  // flagged by the caller: no intersection
+      k.inserted.push_back({std::nan(""), std::nan("")});
+      return k;
+    }
+  }
+  // outer acute corner (or an outer corner whose offset paths do not meet): the first path goes on
+  // by r along its tangent, the second starts r before its start along its own
+  V2 ext1 = P + v1 + r * t1;
+  V2 ext2 = P + v2 - r * t2;
+  k.end_a = a.arc ? P + v1 : ext1;
+  if (a.arc) k.inserted.push_back(ext1);
+  if (b.arc) {
+    k.inserted.push_back(ext2);
+    k.start_b = P + v2;
+  } else {
+    k.start_b = ext2;
+  }
+  k.inserted.push_back(k.start_b);
+  return k;
+}
+
+void RadiusCompensation::check_interference(const Elem& e, V2 from, V2 to) {
+  if (!settings_.interference_check || e.side == 0) return;
+  if (!e.arc) {
+    V2 prog = e.e - e.s, comp = to - from;
+    if (norm(prog) > kEps && norm(comp) > kEps && dot(prog, comp) < 0)
+      fail(e.move, "PS0041",
+             fmt::format("interference in cutter compensation: the compensated path of this block runs against "
+                         "the programmed one ({:.4f} mm back); the cutter (radius {:g} mm) would gouge",
+                         norm(comp), e.r));
+    return;
+  }
+  double R_off = e.R - e.side * e.dir * e.r;
+  if (R_off <= kEps)
+    fail(e.move, "PS0041",
+           fmt::format("interference in cutter compensation: the arc's radius {:.4f} mm is not larger than the "
+                       "offset {:g} mm on its inner side",
+                       e.R, e.r));
+  // the compensated arc must sweep the same way as the programmed one
+  auto angle = [&](V2 p) { return std::atan2(p.y - e.c.y, p.x - e.c.x); };
+  double prog = e.move.sweep;
+  if (std::fabs(prog) >= kPi) return;
+  double comp = angle(to) - angle(from);
+  while (comp > kPi) comp -= 2 * kPi;
+  while (comp <= -kPi) comp += 2 * kPi;
+  if (std::fabs(comp) > 1e-9 && (comp > 0) != (prog > 0))
+    fail(e.move, "PS0041",
+           fmt::format("interference in cutter compensation: the compensated arc of this block turns against the "
+                       "programmed one; the cutter (radius {:g} mm) would gouge",
+                       e.r));
+}
+
+void RadiusCompensation::emit_element(const Elem& e, V2 from, V2 to, bool plain_end) {
+  Move m = e.move;
+  m.start = tool_full_;
+  m.start[pa_.p] = from.x + tip_.x;
+  m.start[pa_.q] = from.y + tip_.y;
+  m.programmed_end = e.move.end;
+  m.end[pa_.p] = to.x + tip_.x;
+  m.end[pa_.q] = to.y + tip_.y;
+  if (m.kind == MoveKind::arc) {
+    m.center[pa_.p] = e.c.x + tip_.x;
+    m.center[pa_.q] = e.c.y + tip_.y;
+  }
+  m.compensated = !plain_end || e.side != 0;
+  if (m.kind == MoveKind::arc) {
+    double a0 = std::atan2(from.y - e.c.y, from.x - e.c.x), a1 = std::atan2(to.y - e.c.y, to.x - e.c.x);
+    double sweep = a1 - a0;
+    const double full = std::fabs(e.move.sweep) > 2 * kPi - 1e-9;
+    if (e.dir > 0) {
+      while (sweep <= 1e-12) sweep += 2 * kPi;
+      if (!full && sweep > 2 * kPi - 1e-9) sweep -= 2 * kPi;
+    } else {
+      while (sweep >= -1e-12) sweep -= 2 * kPi;
+      if (!full && sweep < -2 * kPi + 1e-9) sweep += 2 * kPi;
+    }
+    if (full) sweep = e.dir > 0 ? 2 * kPi : -2 * kPi;
+    m.sweep = sweep;
+    double rs = norm(from - e.c), re = norm(to - e.c);
+    double planar = std::fabs(sweep) * (rs + re) / 2;
+    double dn = m.end[pa_.n] - m.start[pa_.n];
+    double length = std::hypot(planar, dn);
+    if (e.move.length > 0) m.seconds = e.move.seconds * length / e.move.length;
+    m.length = length;
+  } else {
+    double length = line_length(m.start.data(), m.end.data());
+    if (e.move.length > 0) m.seconds = e.move.seconds * length / e.move.length;
+    m.length = length;
+  }
+  tool_full_ = m.end;
+  tool_plane_ = to;
+  deliver_(m);
+}
+
+void RadiusCompensation::emit_line(const Elem& attributed_to, V2 from, V2 to) {
+  if (norm(to - from) < kEps) return;
+  Move m = attributed_to.move;
+  m.kind = attributed_to.move.kind == MoveKind::rapid ? MoveKind::rapid : MoveKind::line;
+  m.start = tool_full_;
+  m.end = tool_full_;
+  m.start[pa_.p] = from.x + tip_.x;
+  m.start[pa_.q] = from.y + tip_.y;
+  m.end[pa_.p] = to.x + tip_.x;
+  m.end[pa_.q] = to.y + tip_.y;
+  m.programmed_end = attributed_to.move.start;
+  m.compensated = true;
+  m.sweep = 0;
+  m.center = {};
+  double length = line_length(m.start.data(), m.end.data());
+  m.seconds = attributed_to.move.length > 0 ? attributed_to.move.seconds * length / attributed_to.move.length : 0;
+  m.length = length;
+  m.macro_statements = 0;
+  m.nc_blocks = 0;
+  tool_full_ = m.end;
+  tool_plane_ = to;
+  deliver_(m);
+}
+
+void RadiusCompensation::emit_after() {
+  while (!after_.empty()) {
+    Move m = after_.front();
+    after_.pop_front();
+    // a move off the plane (a Z move) or an event happens where the tool centre is
+    m.start[pa_.p] = tool_plane_.x + tip_.x;
+    m.start[pa_.q] = tool_plane_.y + tip_.y;
+    for (int a = 0; a < kAxes; ++a)
+      if (a != pa_.p && a != pa_.q) m.start[a] = tool_full_[a];
+    if (m.is_motion()) {
+      m.programmed_end = m.end;
+      m.end[pa_.p] = tool_plane_.x + tip_.x;
+      m.end[pa_.q] = tool_plane_.y + tip_.y;
+      m.length = line_length(m.start.data(), m.end.data());
+      m.compensated = true;
+    } else {
+      m.end = m.start;
+    }
+    tool_full_ = m.end;
+    deliver_(m);
+  }
+  blocks_after_ = 0;
+}
+
+void RadiusCompensation::element(const Move& programmed, int side, double radius, std::optional<V2> cancel_direction) {
+  if (!pending_ && !offset_mode_) {
+    if (side == 0) {  // no offset: the move goes from where the tool is
+      Move m = programmed;
+      if (tool_) {
+        m.start = *tool_;
+        if (m.kind != MoveKind::arc) m.length = line_length(m.start.data(), m.end.data());
+        tool_.reset();
+      }
+      deliver_(m);
+      return;
+    }
+    pa_ = plane_axes(programmed.plane);
+    Elem e = make(programmed, side, radius);
+    if (e.arc)
+      fail(programmed, "PS0034",
+             "cutter compensation cannot start in a G02/G03 block: start it with G00 or G01 (start-up block)");
+    tool_full_ = tool_ ? *tool_ : programmed.start;
+    tool_.reset();
+    tool_plane_ = plane_point(tool_full_, pa_) - tip_;
+    pending_ = e;
+    pending_start_ = tool_plane_;
+    offset_mode_ = true;
+    startup_pending_ = true;
+    return;
+  }
+  Elem b = make(programmed, side, radius);
+  b.cancel_direction = cancel_direction;
+  if (side == 0 && b.arc)
+    fail(programmed, "PS0034",
+           "cutter compensation cannot be cancelled in a G02/G03 block: cancel it with G00 or G01");
+  if (!pending_) {  // offset mode with the last element already ended (read-ahead lost)
+    if (lost_) warn_lost(b);
+    pending_ = b;
+    pending_start_ = tool_plane_;
+    if (side == 0) {
+      emit_element(b, tool_plane_, b.e - tip_, true);
+      pending_.reset();
+      offset_mode_ = false;
+    }
+    return;
+  }
+  Elem& a = *pending_;
+  Joint joint = startup_pending_ ? Joint::startup : side == 0 ? Joint::cancel : Joint::offset;
+  Corner k;
+  if (side == 0 && cancel_direction) {
+    // G40 with I J: the vector at the end of the last block points as if the next block ran along (I, J)
+    Elem ghost = a;
+    ghost.arc = false;
+    ghost.s = a.e;
+    ghost.e = a.e + *cancel_direction;
+    ghost.side = a.side;
+    ghost.r = a.r;
+    k = corner(a, ghost, Joint::offset);
+    k.inserted.clear();
+    k.start_b = k.end_a;
+  } else if (joint == Joint::offset && a.side != 0 && side != a.side) {
+    // G41 <-> G42: the vector at the end of the first block on its side meets the second block's
+    // offset path on the new side where they intersect, else both end perpendicular
+    auto x = intersect(a, a.side, a.r, b, b.side, b.r, a.e);
+    V2 v1 = (a.side * a.r) * perp(a.t_end()), v2 = (b.side * b.r) * perp(b.t_start());
+    if (x && norm(*x - a.e) <= 2 * std::max(a.r, b.r) + kEps) {
+      k.end_a = k.start_b = *x;
+    } else {
+      k.end_a = a.e + v1;
+      k.start_b = a.e + v2;
+      k.inserted.push_back(k.start_b);
+    }
+  } else {
+    k = corner(a, b, joint);
+  }
+  if (!k.inserted.empty() && std::isnan(k.inserted.front().x))
+    fail(b.move, "PS0033",
+           fmt::format("no intersection for cutter compensation: the offset paths of this block and the one before "
+                       "(radius {:g} mm) do not meet at their inner corner",
+                       a.r));
+  if (joint == Joint::startup) startup_pending_ = false;
+  check_interference(a, pending_start_, k.end_a);
+  emit_element(a, pending_start_, k.end_a);
+  emit_after();
+  for (V2 p : k.inserted) emit_line(b, tool_plane_, p);
+  if (side == 0) {
+    // the cancel block goes to its programmed end without a vector
+    emit_element(b, tool_plane_, b.e - tip_, true);
+    pending_.reset();
+    offset_mode_ = false;
+    return;
+  }
+  pending_ = b;
+  pending_start_ = k.start_b;
+}
+
+void RadiusCompensation::fail(const Move& at, const std::string& code, const std::string& message) {
+  // the tool stops at the end of the block before: what is still buffered is not executed
+  pending_.reset();
+  after_.clear();
+  offset_mode_ = false;
+  alarm_(at, code, message);
+  throw std::logic_error("the alarm callback returned");
+}
+
+void RadiusCompensation::other(const Move& m) {
+  if (pending_) {
+    after_.push_back(m);
+    return;
+  }
+  Move x = m;
+  if (offset_mode_ || tool_) {
+    const AxisVector& at = tool_ ? *tool_ : tool_full_;
+    x.start[pa_.p] = at[pa_.p];
+    x.start[pa_.q] = at[pa_.q];
+    if (!x.is_motion()) {
+      x.end = x.start;
+    } else {
+      x.programmed_end = x.end;
+      x.end[pa_.p] = at[pa_.p];
+      x.end[pa_.q] = at[pa_.q];
+      x.compensated = true;
+      x.length = line_length(x.start.data(), x.end.data());
+    }
+    if (tool_) tool_ = x.end;
+    else tool_full_ = x.end;
+  }
+  deliver_(x);
+}
+
+void RadiusCompensation::block_without_motion(const Move& at) {
+  if (!pending_) return;
+  if (++blocks_after_ <= settings_.blocks_without_motion) return;
+  // the read-ahead cannot see past these blocks: the last element ends with its perpendicular vector
+  Elem& a = *pending_;
+  V2 end = a.e + (a.side * a.r) * perp(a.t_end());
+  check_interference(a, pending_start_, end);
+  emit_element(a, pending_start_, end);
+  lost_ = Lost{a, at, blocks_after_};
+  pending_.reset();
+  emit_after();
+}
+
+// The read-ahead was lost before `next`: the tool starts it from the perpendicular vector at the end of
+// the block before, where it should start on next's offset path. How far off, across next's path:
+// less than the radius is an overcut, more an undercut.
+void RadiusCompensation::warn_lost(const Elem& next) {
+  const Lost l = *lost_;
+  lost_.reset();
+  double across = next.arc ? std::fabs(norm(tool_plane_ - next.c) - next.R)
+                           : std::fabs(cross(tool_plane_ - next.s, next.t_start()));
+  double error = across - next.r;
+  std::string effect = std::fabs(error) < 1e-6 ? "no overcut or undercut"
+                       : error < 0          ? fmt::format("an overcut of {:.4f} mm", -error)
+                                            : fmt::format("an undercut of {:.4f} mm", error);
+  warn_(l.at, "NC2101",
+        fmt::format("cutter compensation: {} blocks without motion in the offset plane after line {} are more than "
+                    "the control reads ahead past ({}); the vector at the end of line {} is left perpendicular and "
+                    "line {} starts from there: {} at its start",
+                    l.blocks, l.element.move.line, settings_.blocks_without_motion, l.element.move.line,
+                    next.move.line, effect));
+}
+
+void RadiusCompensation::cancel_without_motion() {
+  if (!pending_ && !offset_mode_) return;
+  if (pending_) {
+    Elem& a = *pending_;
+    V2 end = a.e + (a.side * a.r) * perp(a.t_end());
+    check_interference(a, pending_start_, end);
+    emit_element(a, pending_start_, end);
+    emit_after();
+    pending_.reset();
+  }
+  offset_mode_ = false;
+  startup_pending_ = false;
+  tool_ = tool_full_;
+}
+
+void RadiusCompensation::finish() {
+  if (pending_) {
+    Elem a = *pending_;
+    pending_.reset();
+    V2 end = a.e + (a.side * a.r) * perp(a.t_end());
+    emit_element(a, pending_start_, end);
+  }
+  emit_after();
+}
+
+}  // namespace ncurve::machine
