@@ -208,7 +208,7 @@ endif()
 foreach(case "--radius;nan;--radius: must be a length above 0 mm, got nan"
              "--feed;inf;--feed: must be a feed above 0 mm/min, got inf"
              "--feed-forward;nan;--feed-forward: must be a number from 0 to 1, got nan"
-             "--kv;30,nan;--kv: must be a gain in 1/s above 0, got nan")
+             "--kv;30,nan;--kv: must be a gain above 0 /s, got nan")
   list(GET case 0 option)
   list(GET case 1 value)
   list(GET case 2 message)

@@ -66,8 +66,7 @@ inline CLI::Validator number(const std::string& what, const std::string& unit, s
     if (ok) return {};
     return fmt::format("{}, got {}", rule, input.empty() ? "nothing" : input);
   };
-  const std::string description = unit.empty() ? (range.empty() ? "NUMBER" : "NUMBER " + range)
-                                                : fmt::format("{} {}", unit, range);
+  const std::string description = !range.empty() ? range : unit.empty() ? "NUMBER" : unit;
   return CLI::Validator(check, description, "");
 }
 
@@ -83,8 +82,8 @@ inline CLI::Validator angle_deg(std::optional<Bound> lo = std::nullopt, std::opt
 inline CLI::Validator feed_mm_min(Bound lo = above(0), std::optional<Bound> hi = std::nullopt) {
   return number("a feed", "mm/min", lo, hi);
 }
-// Position loop gains in 1/s, above 0.
-inline CLI::Validator gain_per_s() { return number("a gain in 1/s", "", above(0)); }
+// Position loop gains in 1/s ("/s" as the text output writes them), above 0.
+inline CLI::Validator gain_per_s() { return number("a gain", "/s", above(0)); }
 // A plain ratio such as the velocity feed-forward coefficient.
 inline CLI::Validator ratio(Bound lo, Bound hi) { return number("a number", "", lo, hi); }
 // A whole number from `lo` (a count of lobes, say).
