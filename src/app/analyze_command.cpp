@@ -265,7 +265,13 @@ int program_command(const AnalyzeArgs& a) {
       return 2;
     }
   }
-  if (sim) sim->finish(std::max(0.2, 5.0 / profile.servo.kv[0]));
+  if (sim) {  // settle for five time constants of the slowest loop
+    double slowest = INFINITY;
+    for (char axis : profile.axes)
+      if (int k = machine::axis_index(axis); k >= 0 && k < 3)
+        slowest = std::min(slowest, profile.servo.kv[static_cast<std::size_t>(k)]);
+    sim->finish(std::max(0.2, 5.0 / slowest));
+  }
   if (!result.ok()) {
     std::cerr << nc::format(*result.alarm) << "\n";
     return 1;
