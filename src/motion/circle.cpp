@@ -78,6 +78,7 @@ CircleResult circle_test(const machine::MachineProfile& profile, const CircleTes
     throw std::runtime_error(fmt::format("{} turns of R {:g} mm at {:g} mm/min take {:.3g} s, more than the {:g} s "
                                          "simulated at most: raise the feed or lower the radius",
                                          test.turns, R, r.feed_reached, end, test.most_seconds));
+  if (r.feed_reached >= test.feed * (1 - 1e-9)) r.feed_reached = test.feed;  // length / time rounds
   const double V = r.feed_reached / 60, w = V / R;
 
   const int measured = test.turns / 2;
