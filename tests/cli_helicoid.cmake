@@ -93,3 +93,43 @@ expect_text("${err}" "leave out --cutter-diameter" "two cutters")
 file(WRITE ${OUT}/bad_points.csv "x,y\n40,0\n0,40\n-40,zero\n")
 run_expect(2 "bad point profile" ${NCURVE} helicoid --profile-csv ${OUT}/bad_points.csv --lead 500)
 expect_text("${err}" "bad_points.csv:4:5: 'zero' is not a number" "point profile error")
+
+# numeric options: NaN, infinities and bad ranges refused in the option's unit
+run_expect(2 "step nan" ${NCURVE} helicoid --example seed004 --step nan)
+expect_text("${err}" "--step: must be an angle above 0 degrees, got nan" "step nan")
+run_expect(2 "lead nan" ${NCURVE} helicoid --example seed004 --lead nan)
+expect_text("${err}" "--lead: must be a length of 0 mm or more, got nan" "lead nan")
+run_expect(2 "included angle 180" ${NCURVE} helicoid --example seed004 --included-angle 180)
+expect_text("${err}" "--included-angle: must be an angle above 0 and below 180 degrees, got 180" "included angle")
+run_expect(2 "lobes 2.5" ${NCURVE} helicoid --example seed004 --lobes 2.5)
+expect_text("${err}" "--lobes: must be a whole number of 1 or more, got 2.5" "lobes")
+run_expect(2 "feed overflow" ${NCURVE} helicoid --example seed004 --feed 1e999 --program ${OUT}/never.nc)
+expect_text("${err}" "--feed: must be a feed from 0.001 to 99999 mm/min, got 1e999" "feed overflow")
+run_expect(2 "u nan" ${NCURVE} helicoid --profile-x "40*COS[u]" --profile-y "30*SIN[u]" --u nan:360 --lead 500)
+expect_text("${err}" "--u 'nan:360': give FROM:TO in degrees" "u range")
+run_expect(2 "psi backwards" ${NCURVE} helicoid --example seed004 --from 10 --to 5)
+expect_text("${err}" "--to (5 deg) is before --from (10 deg)" "psi backwards")
+run_expect(2 "psi steps beyond count" ${NCURVE} helicoid --example seed004 --step 1e-300)
+expect_text("${err}" "raise --step" "too many steps")
+
+# the plot escapes its title: a profile file named with & < > " ' and a Latin-1 byte (not UTF-8)
+# gives well-formed SVG showing the name escaped, and JSON with the byte replaced
+string(ASCII 233 latin1)
+string(ASCII 239 191 189 replacement)  # U+FFFD in UTF-8
+set(weird "${OUT}/p&<b>\"q'${latin1}")
+file(COPY_FILE ${SRC}/examples/rotor-points.csv "${weird}.csv")
+run_expect(0 "plot of an oddly named profile" ${NCURVE} helicoid --profile-csv "${weird}.csv" --lead 860 --lobes 5
+           --cutter-diameter 252 --corner-radius 1.2 --included-angle 35 --start-distance 177.7 --step 12 --json
+           --plot "${weird}.svg")
+expect_text("${out}" "q'${replacement}.csv" "profile name in JSON")
+if(NOT PYTHON3)
+  message(SEND_ERROR "python3 was not found, so the helicoid plot cannot be checked as XML (install python3)")
+else()
+  execute_process(COMMAND ${PYTHON3} -c "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])" "${weird}.svg"
+                  RESULT_VARIABLE rc ERROR_VARIABLE e)
+  if(NOT rc EQUAL 0)
+    message(SEND_ERROR "helicoid plot of an oddly named profile is not well-formed XML: ${e}")
+  endif()
+endif()
+file(READ "${weird}.svg" svg)
+expect_text("${svg}" "p&amp;&lt;b&gt;&quot;q&apos;${replacement}.csv" "helicoid plot title")

@@ -13,6 +13,8 @@
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
 #include "report/motion_plots.hpp"
+#include "app/analyze_shape.hpp"
+#include "app/cli_units.hpp"
 #include "app/save.hpp"
 
 namespace ncurve::app {
@@ -22,24 +24,28 @@ std::string where(const machine::Move& m) {
   return m.file ? fmt::format("{}:{}", m.file->name(), m.line) : fmt::format("line {}", m.line);
 }
 
-// --kv 30 or --kv 30,25 (X, Y), and --feed-forward, over the profile's servo settings.
+// --kv 30 or --kv 30,25 over the profile's servo settings: the gains of its first two axes (X and
+// Y on a mill, X and Z on a lathe), one value for both; and --feed-forward.
 void apply_servo_options(machine::MachineProfile& p, const AnalyzeArgs& a) {
   if (a.feed_forward) p.servo.feed_forward = *a.feed_forward;
   const std::vector<std::string>& kv = a.kv;
   if (kv.empty()) return;
-  if (kv.size() > 2) throw std::runtime_error("--kv takes KX or KX,KY");
-  for (std::size_t i = 0; i < kv.size(); ++i) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-      v = std::stod(kv[i], &used);
-    } catch (const std::logic_error&) {
-      used = 0;
-    }
-    if (used != kv[i].size() || !(v > 0)) throw std::runtime_error(fmt::format("--kv: '{}' is not a gain in 1/s", kv[i]));
-    p.servo.kv[i] = v;
-    if (kv.size() == 1) p.servo.kv[1] = v;
+  if (kv.size() > 2 || kv.size() > p.axes.size())
+    throw std::runtime_error(fmt::format("--kv takes one gain per axis of {}, at most two", p.axes));
+  for (std::size_t i = 0; i < 2 && i < p.axes.size(); ++i) {
+    const std::string& text = kv[std::min(i, kv.size() - 1)];
+    const std::optional<double> v = units::finite_number(text);
+    if (!v || !(*v > 0)) throw std::runtime_error(fmt::format("--kv: '{}' is not a gain in 1/s", text));
+    p.servo.kv[static_cast<std::size_t>(machine::axis_index(p.axes[i]))] = *v;
   }
+}
+
+// "Kv X 30 Y 30 /s" over the profile's first two axes.
+std::string gains(const machine::MachineProfile& p) {
+  std::string s = "Kv";
+  for (std::size_t i = 0; i < 2 && i < p.axes.size(); ++i)
+    s += fmt::format(" {} {:g}", p.axes[i], p.servo.kv[static_cast<std::size_t>(machine::axis_index(p.axes[i]))]);
+  return s + " /s";
 }
 
 int circle_command(const AnalyzeArgs& a) {
@@ -55,26 +61,45 @@ int circle_command(const AnalyzeArgs& a) {
   test.radius = a.radius;
   test.feed = a.feed;
   test.clockwise = a.clockwise;
-  motion::CircleResult r = motion::circle_test(profile, test);
+  motion::CircleResult r;
+  try {
+    r = motion::circle_test(profile, test);
+  } catch (const std::exception& e) {
+    std::cerr << "ncurve analyze circle: " << e.what() << "\n";
+    return 2;
+  }
+  const motion::CirclePlane plane = motion::circle_plane(profile);
   const auto& sv = profile.servo;
   const auto& mo = profile.motion;
-  std::string filter = mo.acc_dec == machine::AccDec::after
-                           ? fmt::format("{} acc/dec after interpolation T {} / {} s",
-                                         mo.filter == machine::Filter::linear ? "linear" : "exponential",
-                                         mo.time_constant[0], mo.time_constant[1])
-                           : "acc/dec before interpolation";
-  std::string subtitle = fmt::format("Kv X {} Y {} /s, feed-forward {}, {}", sv.kv[0], sv.kv[1], sv.feed_forward, filter);
-  if (!a.plot.empty() && !save(a.plot, report::polar_svg(r, test, subtitle), {a.in.program})) return 2;
+  const std::string filter =
+      mo.acc_dec == machine::AccDec::after
+          ? fmt::format("{} acc/dec after interpolation T {} {:g} {} {:g} s",
+                        mo.filter == machine::Filter::linear ? "linear" : "exponential", plane.p_name,
+                        mo.time_constant[plane.p], plane.q_name, mo.time_constant[plane.q])
+          : "acc/dec before interpolation";
+  const std::string subtitle =
+      fmt::format("{}: {}, feed-forward {}, {}", profile.name, gains(profile), sv.feed_forward, filter);
+  const std::string held = r.feed_reached < test.feed
+                               ? fmt::format(" (held to {:.6g} mm/min on this arc: figures at that feed)", r.feed_reached)
+                               : "";
+  if (!a.plot.empty() && !save(a.plot, report::polar_svg(r, test, plane, subtitle), {a.in.program})) return 2;
   if (a.json) {
     nlohmann::json j;
     j["radius"] = test.radius;
     j["feed"] = test.feed;
+    j["feed_reached"] = r.feed_reached;
     j["direction"] = test.clockwise ? "cw" : "ccw";
-    j["kv"] = {sv.kv[0], sv.kv[1]};
+    j["plane"] = std::string{plane.p_name, plane.q_name};
+    j["axes"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i) j["axes"].push_back(std::string(1, profile.axes[i]));
+    j["kv"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i)
+      j["kv"].push_back(sv.kv[static_cast<std::size_t>(machine::axis_index(profile.axes[i]))]);
     j["feed_forward"] = sv.feed_forward;
     j["radius_reduction"] = r.radius_reduction;
     j["roundness"] = r.roundness;
     j["max_deviation_angle"] = r.max_deviation_angle;
+    j["angle_meaningful"] = r.angle_meaningful;
     j["max_contour_error"] = r.max_contour_error;
     j["closed_form"] = {{"fanuc_radius_reduction", r.fanuc_radius_reduction},
                         {"first_order_roundness", r.first_order_roundness},
@@ -83,21 +108,29 @@ int circle_command(const AnalyzeArgs& a) {
                         {"harmonic_angle", r.harmonic_angle},
                         {"seed002_error", r.seed002_error},
                         {"seed002_angle", r.seed002_angle}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // a name that is not UTF-8 gets U+FFFD
     return 0;
   }
+  const char P = plane.p_name, Q = plane.q_name;
+  const std::string angle =
+      r.angle_meaningful
+          ? fmt::format("  smallest radius at  {:.1f} deg from +{} towards +{}  (linear model: {:.1f} deg)\n",
+                        r.max_deviation_angle, P, Q, r.harmonic_angle)
+          : fmt::format("  smallest radius at  no particular angle: {} and {} respond alike (equal gains{}), so the "
+                        "circle only shrinks\n",
+                        P, Q, mo.acc_dec == machine::AccDec::after ? " and filters" : "");
   std::cout << fmt::format(
-      "circular test: R {} mm, F {} mm/min, {}\n  {}\n"
+      "circular test: R {} mm, F {} mm/min{}, {} in the {}{} plane\n  {}\n"
       "  radius reduction    {:.6f} mm   (FANUC closed form V^2/2R (T terms + (1-a^2)/Kv^2): {:.6f}; linear model: {:.6f})\n"
-      "  roundness           {:.6f} mm   (first order V |tau_x - tau_y|: {:.6f}; linear model: {:.6f})\n"
-      "  smallest radius at  {:.1f} deg  (linear model: {:.1f} deg)\n"
+      "  roundness           {:.6f} mm   (first order V |tau_{} - tau_{}|: {:.6f}; linear model: {:.6f})\n"
+      "{}"
       "  contour error, whole run (start and stop included): {:.6f} mm\n"
-      "  seed 002's formula  e = V^2/2 cos a sin a (cos a/a_y + sin a/a_x): {:.6f} mm at {:.1f} deg "
-      "(a_x {} a_y {} mm/s^2)\n",
-      test.radius, test.feed, test.clockwise ? "clockwise" : "counter-clockwise", subtitle, r.radius_reduction,
-      r.fanuc_radius_reduction, r.harmonic_radius_reduction, r.roundness, r.first_order_roundness, r.harmonic_roundness,
-      r.max_deviation_angle, r.harmonic_angle, r.max_contour_error, r.seed002_error, r.seed002_angle,
-      mo.acceleration[0], mo.acceleration[1]);
+      "  seed 002's formula  e = V^2/2 cos a sin a (cos a/a_{} + sin a/a_{}): {:.6f} mm at {:.1f} deg from +{} "
+      "(a_{} {} a_{} {} mm/s^2)\n",
+      test.radius, test.feed, held, test.clockwise ? "clockwise" : "counter-clockwise", P, Q, subtitle,
+      r.radius_reduction, r.fanuc_radius_reduction, r.harmonic_radius_reduction, r.roundness, P, Q,
+      r.first_order_roundness, r.harmonic_roundness, angle, r.max_contour_error, Q, P, r.seed002_error,
+      r.seed002_angle, P, P, mo.acceleration[plane.p], Q, mo.acceleration[plane.q]);
   return 0;
 }
 
@@ -138,41 +171,6 @@ std::vector<report::FeedSample> feed_samples(const std::vector<BlockRecord>& blo
   for (std::size_t k = 0; k <= bins; ++k)
     if (used[k]) out.push_back(bin[k]);
   return out;
-}
-
-std::string shape_csv(const gen::ShapeModels& m) {
-  auto number = [](double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string(); };
-  std::string out = "line,kind,t0,t1,deviation_mm,chord_mm,arc_mm,radius_mm,yang_mm,joshi_mm,narayan_arc_mm,khan_arc_mm\n";
-  for (const auto& b : m.blocks)
-    out += fmt::format("{},{},{:.12g},{:.12g},{:.9g},{},{:.9g},{},{},{},{},{}\n", b.line, b.arc_move ? "arc" : "line",
-                       b.t0, b.t1, b.deviation, number(b.chord), b.arc, number(b.radius), number(b.yang),
-                       number(b.joshi), number(b.narayan), number(b.khan));
-  return out;
-}
-
-std::string shape_plot(const geom::Curve& curve, const gen::Options& o, const gen::Stats& s, double tol,
-                       const std::string& program) {
-  const geom::Plane plane = gen::plane_of(o.profile);
-  const int u = plane.u_axis, v = plane.v_axis;
-  std::vector<report::DeviationSegment> path;
-  for (std::size_t i = 0; i + 1 < s.path.size() && i < s.path_block.size(); ++i) {
-    const std::size_t block = s.path_block[i];
-    path.push_back({s.path[i][u], s.path[i][v], s.path[i + 1][u], s.path[i + 1][v], s.deviation[block].second, block});
-  }
-  const gen::AxisMap map = gen::axis_map(curve, o);
-  std::vector<std::array<double, 2>> nominal;
-  const int samples = 2000;
-  for (int k = 0; k <= samples; ++k) {
-    geom::Vec3 p = map(curve.point(curve.t0() + (curve.t1() - curve.t0()) * k / samples));
-    nominal.push_back({p[u], p[v]});
-  }
-  const std::string axes = o.profile.axes;
-  auto name = [&](int axis) { return axis < static_cast<int>(axes.size()) ? axes[static_cast<std::size_t>(axis)] : '?'; };
-  return report::deviation_svg(path, nominal, tol,
-                               fmt::format("{}: shape error against {}", program, curve.name()),
-                               fmt::format("largest {:.2f} µm at t = {:.6g} · {} contour blocks, {:.3f} mm",
-                                           s.max_deviation * 1000, s.worst_t, s.deviation.size(), s.path_length),
-                               name(u), name(v));
 }
 
 int program_command(const AnalyzeArgs& a) {
@@ -267,41 +265,27 @@ int program_command(const AnalyzeArgs& a) {
       return 2;
     }
   }
-  if (sim) sim->finish(std::max(0.2, 5.0 / profile.servo.kv[0]));
+  if (sim) {  // settle for five time constants of the slowest loop
+    double slowest = INFINITY;
+    for (char axis : profile.axes)
+      if (int k = machine::axis_index(axis); k >= 0 && k < 3)
+        slowest = std::min(slowest, profile.servo.kv[static_cast<std::size_t>(k)]);
+    sim->finish(std::max(0.2, 5.0 / slowest));
+  }
   if (!result.ok()) {
     std::cerr << nc::format(*result.alarm) << "\n";
     return 1;
   }
-  std::optional<gen::Stats> shape;
-  gen::ShapeModels models;
-  double shape_rms = 0;        // of the blocks' largest deviations
-  std::uint32_t shape_line = 0;  // the block where the deviation peaks
-  std::size_t beyond_tol = 0;
+  std::optional<shape::Report> shape;
   if (curve) {
-    gen::Options o;
-    o.profile = profile;
-    o.tol = a.tol > 0 ? a.tol : 0.01;
-    if (!contour.empty()) o.depth = -contour.front().start[2];
-    try {
-      shape = gen::measure(contour, *curve, o, false);
-      models = gen::shape_models(contour, *curve, o, *shape);
-    } catch (const std::exception& e) {
-      std::cerr << "ncurve analyze: --curve: " << e.what() << "\n";
+    shape.emplace();
+    if (auto why = shape::measure(std::move(contour), *curve, profile, a.tol, *shape)) {
+      std::cerr << "ncurve analyze: " << *why << "\n";
       return 1;
     }
-    if (!a.shape_csv.empty() && !save(a.shape_csv, shape_csv(models), {a.in.program})) return 2;
-    if (!a.shape_plot.empty() &&
-        !save(a.shape_plot, shape_plot(*curve, o, *shape, a.tol, a.in.program), {a.in.program}))
+    if (!a.shape_csv.empty() && !save(a.shape_csv, shape::csv(shape->models), {a.in.program})) return 2;
+    if (!a.shape_plot.empty() && !save(a.shape_plot, shape::plot(*curve, *shape, a.tol, a.in.program), {a.in.program}))
       return 2;
-    double sq = 0;
-    std::size_t worst = 0;
-    for (std::size_t i = 0; i < shape->deviation.size(); ++i) {
-      sq += shape->deviation[i].second * shape->deviation[i].second;
-      beyond_tol += a.tol > 0 && shape->deviation[i].second > a.tol;
-      if (shape->deviation[i].second > shape->deviation[worst].second) worst = i;
-    }
-    shape_rms = shape->deviation.empty() ? 0 : std::sqrt(sq / shape->deviation.size());
-    if (worst < contour.size()) shape_line = contour[worst].line;
   }
   const motion::PlanTotals& t = planner.totals();
   const double mean_feed = t.feed_motion_seconds > 0 ? t.feed_length / t.feed_motion_seconds * 60 : 0;
@@ -328,36 +312,24 @@ int program_command(const AnalyzeArgs& a) {
     j["mean_feed_mm_min"] = mean_feed;
     j["macro_statements"] = t.macro_statements;
     j["nc_blocks"] = t.nc_blocks;
+    j["axes"] = nlohmann::json::array();
+    for (char axis : profile.axes) j["axes"].push_back(std::string(1, axis));
+    j["x_diameter"] = report::OutputFrame(profile).x_diameter;
     if (sim) {
-      const auto& s = sim->stats();
-      j["contour_error"] = {{"max_mm", s.max_error}, {"rms_mm", s.rms}, {"t_s", s.max_t}, {"line", s.max_line},
-                            {"at", {s.max_actual[0], s.max_actual[1], s.max_actual[2]}}};
-    }
-    if (shape) {
-      j["shape_error"] = {{"curve", curve->name()},
-                          {"max_mm", shape->max_deviation},
-                          {"t", shape->worst_t},
-                          {"at", shape->worst_point},
-                          {"line", shape_line},
-                          {"blocks", shape->deviation.size()},
-                          {"rms_block_max_mm", shape_rms},
-                          {"path_length_mm", shape->path_length}};
-      if (a.tol > 0) j["shape_error"]["tolerance_mm"] = a.tol, j["shape_error"]["blocks_beyond_tolerance"] = beyond_tol;
-      auto model = [](const gen::ModelError& e) {
-        return nlohmann::json{{"max_mm", e.max}, {"max_error_mm", e.max_error}, {"max_relative_error", e.max_relative},
-                              {"line", e.line}, {"block", e.block}};
+      auto contour_json = [&](const motion::ContourStats& s) {
+        return nlohmann::json{{"max_mm", s.max_error},
+                              {"rms_mm", s.rms},
+                              {"t_s", s.max_t},
+                              {"line", s.max_line},
+                              {"file", s.max_file ? s.max_file->name() : ""},
+                              {"at", shape::position_json(profile, s.max_actual)},
+                              {"samples", s.ticks}};
       };
-      j["shape_models"] = {{"line_blocks", models.lines},
-                           {"centre", models.centre},
-                           {"yang_chord_height", model(models.yang)},
-                           {"joshi_radial", model(models.joshi)},
-                           {"arc_length_mm", models.arc_length},
-                           {"narayan_arc", model(models.narayan)},
-                           {"khan_arc", model(models.khan)},
-                           {"narayan_length_mm", models.narayan_length},
-                           {"khan_length_mm", models.khan_length}};
+      j["contour_error"] = contour_json(sim->cutting());
+      j["rapid_contour_error"] = contour_json(sim->rapids());
     }
-    std::cout << j.dump(2) << "\n";
+    if (shape) shape::add_json(j, *curve, *shape, a.tol);
+    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
   std::cout << fmt::format(
@@ -373,38 +345,17 @@ int program_command(const AnalyzeArgs& a) {
   if (slowest_wait.wait > 0)
     std::cout << fmt::format("  longest wait      {:.4f} s before {} (the control was still reading or computing)\n",
                              slowest_wait.wait, where(slowest_wait.move));
-  if (shape) {
-    std::cout << fmt::format(
-        "  shape error       max {:.6f} mm from {} at t = {:.6g} (X {:.4f} Y {:.4f} Z {:.4f}), block at line {}; {} "
-        "contour blocks, {:.3f} mm\n",
-        shape->max_deviation, curve->name(), shape->worst_t, shape->worst_point[0], shape->worst_point[1],
-        shape->worst_point[2], shape_line, shape->deviation.size(),
-        shape->path_length);
-    if (a.tol > 0)
-      std::cout << fmt::format("  tolerance         {} mm: {} blocks beyond it\n", a.tol, beyond_tol);
-    if (models.lines > 0) {
-      const double um = 1000;
-      std::cout << fmt::format(
-          "  seed 000's models over {} line blocks (centre X {:.4f} Y {:.4f} for the radial ones):\n"
-          "    chord height, Yang a = sqrt(8Rh - 4h^2)  max {:.3f} um, off the measured by up to {:.3f} um "
-          "({:.1f} %)\n"
-          "    radial shape error, Joshi eqs 8-11      max {:.3f} um, off the measured by up to {:.3f} um "
-          "({:.1f} %)\n"
-          "    arc length {:.4f} mm: Narayan {:.4f} mm (blocks off by up to {:.3f} %), Khan pi/(2 sqrt 2) chord "
-          "{:.4f} mm (up to {:.3f} %)\n",
-          models.lines, models.centre[0], models.centre[1], models.yang.max * um, models.yang.max_error * um,
-          100 * models.yang.max_relative, models.joshi.max * um, models.joshi.max_error * um,
-          100 * models.joshi.max_relative, models.arc_length, models.narayan_length, 100 * models.narayan.max_relative,
-          models.khan_length, 100 * models.khan.max_relative);
-    }
-  }
+  if (shape) std::cout << shape::text(*curve, *shape, a.tol);
   if (sim) {
-    const auto& s = sim->stats();
-    std::cout << fmt::format(
-        "  contour error     max {:.6f} mm at t = {:.3f} s ({}), rms {:.6f} mm (servo Kv X {} Y {} /s, feed-forward "
-        "{})\n",
-        s.max_error, s.max_t, s.max_file ? fmt::format("{}:{}", s.max_file->name(), s.max_line) : "at rest", s.rms,
-        profile.servo.kv[0], profile.servo.kv[1], profile.servo.feed_forward);
+    auto contour = [&](const char* label, const motion::ContourStats& s, const char* none) {
+      if (s.ticks == 0) return fmt::format("  {} none ({})\n", label, none);
+      return fmt::format("  {} max {:.6f} mm at t = {:.3f} s ({}), at {}; rms {:.6f} mm\n", label, s.max_error, s.max_t,
+                         s.max_file ? fmt::format("{}:{}", s.max_file->name(), s.max_line) : "at rest",
+                         shape::position(profile, s.max_actual), s.rms);
+    };
+    std::cout << contour("contour error, cutting", sim->cutting(), "no feed moves")
+              << contour("contour error, rapids ", sim->rapids(), "no rapid moves")
+              << fmt::format("  servo             {}, feed-forward {}\n", gains(profile), profile.servo.feed_forward);
   }
   return 0;
 }
@@ -419,9 +370,11 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
   cmd->add_flag("--servo", a.servo, "simulate the servo loops and report the contour error");
   cmd->add_option("--blocks", a.blocks, "write each motion's timing and feed to this CSV file");
   cmd->add_option("--plot", a.plot, "SVG: feed reached against programmed along the path");
-  cmd->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's")->delimiter(',');
+  cmd->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's (KX[,KZ] on a lathe)")
+      ->delimiter(',')
+      ->check(units::gain_per_s());
   cmd->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1 over the profile's")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(units::ratio(units::at_least(0), units::at_most(1)));
   cmd->allow_extras();
   cmd->add_option("--curve", a.curve.name,
                   "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "
@@ -430,19 +383,21 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
                   "--curve: write each contour block's deviation and seed 000's models to this CSV file");
   cmd->add_option("--shape-plot", a.shape_plot, "--curve: SVG of the path coloured by its deviation from the curve");
   cmd->add_option("--tol", a.tol, "--curve: shape tolerance, mm; blocks beyond it are counted and marked")
-      ->check(CLI::PositiveNumber);
+      ->check(units::length_mm(units::above(0)));
   cmd->add_option("--x", a.curve.x, "--curve expr: x(t)");
   cmd->add_option("--y", a.curve.y, "--curve expr: y(t)");
   cmd->add_option("--z", a.curve.z, "--curve expr: z(t)");
   cmd->add_option("--t", a.curve.t_range, "--curve expr: range of t as FROM:TO");
-  cmd->add_option("--from", a.curve.from, "start of the curve parameter t");
-  cmd->add_option("--to", a.curve.to, "end of the curve parameter t");
+  cmd->add_option("--from", a.curve.from, "start of the curve parameter t")->check(units::number("a number", ""));
+  cmd->add_option("--to", a.curve.to, "end of the curve parameter t")->check(units::number("a number", ""));
   CLI::App* circle = cmd->add_subcommand("circle", "ISO 230-4 circular test on the machine model");
-  circle->add_option("--radius", a.radius, "radius, mm")->required()->check(CLI::PositiveNumber);
-  circle->add_option("--feed", a.feed, "feed, mm/min")->required()->check(CLI::PositiveNumber);
-  circle->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's")->delimiter(',');
+  circle->add_option("--radius", a.radius, "radius, mm")->required()->check(units::length_mm(units::above(0)));
+  circle->add_option("--feed", a.feed, "feed, mm/min")->required()->check(units::feed_mm_min());
+  circle->add_option("--kv", a.kv, "position loop gain KX[,KY] in 1/s over the profile's (KX[,KZ] on a lathe)")
+      ->delimiter(',')
+      ->check(units::gain_per_s());
   circle->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(units::ratio(units::at_least(0), units::at_most(1)));
   circle->add_option("--machine", a.in.machine, "machine profile (TOML)")->check(CLI::ExistingFile);
   circle->add_flag("--cw", a.clockwise, "clockwise (G02); default counter-clockwise");
   circle->add_flag("--json", a.json, "results as JSON");

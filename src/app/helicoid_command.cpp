@@ -12,6 +12,7 @@
 #include "geom/curve.hpp"
 #include "helicoid/report.hpp"
 #include "io/number_rows.hpp"
+#include "app/cli_units.hpp"
 #include "app/save.hpp"
 
 namespace ncurve::app {
@@ -28,35 +29,44 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
                  "runs through them, the first point turned to face +X")
       ->check(CLI::ExistingFile);
   h->add_option("--u", a.u_range, "range of u closing the profile once, FROM:TO (default 0:360)");
-  h->add_option("--lead", a.lead, "lead, mm per turn (0: straight, no twist)");
+  h->add_option("--lead", a.lead, "lead, mm per turn (0: straight, no twist)")->check(units::length_mm(units::at_least(0)));
   h->add_option("--hand", a.hand, "right or left")->check(CLI::IsMember({"right", "left"}));
-  h->add_option("--lobes", a.lobes, "number of lobes (A repeats every 360/lobes degrees)")->check(CLI::PositiveNumber);
-  h->add_option("--cutter-diameter", a.cutter_diameter, "disc cutter outside diameter, mm")->check(CLI::PositiveNumber);
-  h->add_option("--corner-radius", a.corner_radius, "insert corner radius, mm")->check(CLI::NonNegativeNumber);
-  h->add_option("--included-angle", a.included_angle, "insert included angle, degrees (symmetric V)");
+  h->add_option("--lobes", a.lobes, "number of lobes (A repeats every 360/lobes degrees)")->check(units::whole_number(1));
+  h->add_option("--cutter-diameter", a.cutter_diameter, "disc cutter outside diameter, mm")
+      ->check(units::length_mm(units::above(0)));
+  h->add_option("--corner-radius", a.corner_radius, "insert corner radius, mm")->check(units::length_mm(units::at_least(0)));
+  h->add_option("--included-angle", a.included_angle, "insert included angle, degrees (symmetric V)")
+      ->check(units::angle_deg(units::above(0), units::below(180)));
   h->add_option("--cutter-profile", a.cutter_profile,
                  "general cutter axial profile: vertices rho,w[,radius] (mm) from the -w side over the rim to the +w "
                  "side; a radius makes the piece to the next vertex an arc (> 0 convex, < 0 concave)")
       ->check(CLI::ExistingFile);
-  h->add_option("--flank-depth", a.flank_depth, "radial depth of the insert's flanks, mm (default: profile depth + 3)");
-  h->add_option("--ref-radius", a.ref_radius, "radius at which the cutter follows the helix, mm (default: mean radius)");
-  h->add_option("--crossing-angle", a.crossing_angle, "angle between cutter and workpiece axes, degrees (overrides --ref-radius)");
-  h->add_option("--start-distance", a.start_distance, "centre distance the search starts from, mm (must be clear)");
+  h->add_option("--flank-depth", a.flank_depth, "radial depth of the insert's flanks, mm (default: profile depth + 3)")
+      ->check(units::length_mm(units::above(0)));
+  h->add_option("--ref-radius", a.ref_radius, "radius at which the cutter follows the helix, mm (default: mean radius)")
+      ->check(units::length_mm(units::above(0)));
+  h->add_option("--crossing-angle", a.crossing_angle, "angle between cutter and workpiece axes, degrees (overrides --ref-radius)")
+      ->check(units::angle_deg(units::above(0), units::below(180)));
+  h->add_option("--start-distance", a.start_distance, "centre distance the search starts from, mm (must be clear)")
+      ->check(units::length_mm(units::above(0)));
   h->add_option("--final-motion", a.final_motion,
                  "x: the cutter comes in along -X (seed 004); z- or z+: at --centre-distance it travels along Z")
       ->check(CLI::IsMember({"x", "z-", "z+"}));
   h->add_option("--centre-distance", a.centre_distance,
                  "final motion along Z: the fixed centre distance, mm, or FROM:TO:STEP for one row per distance at psi "
                  "= --from");
-  h->add_option("--start-z", a.start_z, "final motion along Z: where the cutter starts, clear of the workpiece, mm");
-  h->add_option("--step", a.step, "psi step, degrees")->check(CLI::PositiveNumber);
-  h->add_option("--from", a.from, "first psi, degrees (default 0)");
-  h->add_option("--to", a.to, "last psi, degrees (default 360/lobes)");
+  h->add_option("--start-z", a.start_z, "final motion along Z: where the cutter starts, clear of the workpiece, mm")
+      ->check(units::length_mm());
+  h->add_option("--step", a.step, "psi step, degrees")->check(units::angle_deg(units::above(0)));
+  h->add_option("--from", a.from, "first psi, degrees (default 0)")->check(units::angle_deg());
+  h->add_option("--to", a.to, "last psi, degrees (default 360/lobes)")->check(units::angle_deg());
   h->add_option("--method", a.method, "robust (default), nine-point or brute")
       ->check(CLI::IsMember({"robust", "nine-point", "brute"}));
-  h->add_option("--alpha-step", a.alpha_step, "lattice step around the cutter axis, degrees")->check(CLI::PositiveNumber);
-  h->add_option("--s-step", a.s_step, "lattice step along the cutter profile, mm")->check(CLI::PositiveNumber);
-  h->add_option("--alpha-range", a.alpha_range, "lattice half range around the cutter axis, degrees");
+  h->add_option("--alpha-step", a.alpha_step, "lattice step around the cutter axis, degrees")
+      ->check(units::angle_deg(units::above(0)));
+  h->add_option("--s-step", a.s_step, "lattice step along the cutter profile, mm")->check(units::length_mm(units::above(0)));
+  h->add_option("--alpha-range", a.alpha_range, "lattice half range around the cutter axis, degrees")
+      ->check(units::angle_deg(units::above(0), units::below(90)));
   h->add_flag("--csv", a.csv, "contacts as CSV");
   h->add_flag("--json", a.json, "contacts as JSON");
   h->add_flag("--no-check", a.no_check, "skip the interference check over the whole cutter");
@@ -64,9 +74,12 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   h->add_option("--program", a.program, "write a 4-axis FANUC program (X, Z, A): one helical pass per step (or see --program-tol)");
   h->add_option("--program-tol", a.program_tol,
                  "program: the fewest of the steps' passes whose cusps stay within this, mm")
-      ->check(CLI::PositiveNumber);
-  h->add_option("--length", a.length, "program: pass length along Z, mm")->check(CLI::PositiveNumber);
-  h->add_option("--feed", a.feed, "program: feed along the pass, mm/min")->check(CLI::PositiveNumber);
+      ->check(units::length_mm(units::above(0)));
+  // the program's Z (3 decimals) and F (6 figures) as words a FANUC control reads
+  h->add_option("--length", a.length, "program: pass length along Z, mm")
+      ->check(units::length_mm(units::above(0), units::at_most(99999)));
+  h->add_option("--feed", a.feed, "program: feed along the pass, mm/min")
+      ->check(units::feed_mm_min(units::at_least(0.001), units::at_most(99999)));
   h->add_option("--plot", a.plot, "SVG: end profile with contacts, A(psi), plane-method error");
   a.command = h;
 }
@@ -101,9 +114,10 @@ int helicoid_command(const HelicoidArgs& a) {
       spec.from = 0, spec.to = 360;
       if (!a.u_range.empty()) {
         auto colon = a.u_range.find(':');
-        if (colon == std::string::npos) throw std::runtime_error("--u needs FROM:TO");
-        spec.from = std::stod(a.u_range.substr(0, colon));
-        spec.to = std::stod(a.u_range.substr(colon + 1));
+        auto from = units::finite_number(a.u_range.substr(0, colon));
+        auto to = colon == std::string::npos ? std::nullopt : units::finite_number(a.u_range.substr(colon + 1));
+        if (!from || !to) throw std::runtime_error(fmt::format("--u '{}': give FROM:TO in degrees", a.u_range));
+        spec.from = *from, spec.to = *to;
       }
       // The expression language names the parameter t; accept u for the profile.
       auto rename = [](std::string e) {
@@ -171,7 +185,13 @@ int helicoid_command(const HelicoidArgs& a) {
       throw std::runtime_error(fmt::format("the start centre distance {} mm cuts into the workpiece",
                                            search->setting().start_distance));
     double from = a.from.value_or(0), to = a.to.value_or(360.0 / work.lobes);
-    int n = static_cast<int>(std::floor((to - from) / a.step + 1e-9));
+    if (to < from) throw std::runtime_error(fmt::format("--to ({:g} deg) is before --from ({:g} deg)", to, from));
+    const double steps = std::floor((to - from) / a.step + 1e-9);
+    constexpr double kMostSteps = 1e6;
+    if (steps > kMostSteps)
+      throw std::runtime_error(fmt::format("psi from {:g} to {:g} deg in steps of {:g} deg is {:.3g} steps, more than {:.0f}: "
+                                           "raise --step", from, to, a.step, steps, kMostSteps));
+    const int n = static_cast<int>(steps);
     for (int i = 0; i <= n; ++i) psis.push_back(from + i * a.step);
     if ((a.final_motion != "x") == a.centre_distance.empty() || (a.final_motion == "x" && a.start_z))
       throw std::runtime_error("--centre-distance and --start-z go with --final-motion z- or z+, and z- and z+ need "

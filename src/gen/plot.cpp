@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gen/generate.hpp"
+#include "report/svg_text.hpp"
 
 namespace ncurve::gen {
 namespace {
@@ -55,7 +56,8 @@ std::string plot_svg(const geom::Curve& curve, const Options& o, const Stats& s)
   svg += fmt::format(
       "<text x=\"{}\" y=\"20\">{} {}, tolerance {} mm: curve (grey), path (red, {} points), max deviation {:.4f} mm "
       "at t = {:.6g}</text>\n",
-      kMargin, curve.name(), to_string(o.form), o.tol, s.path.size(), s.max_deviation, s.worst_t);
+      kMargin, report::xml_escape(curve.name()), report::xml_escape(to_string(o.form)), o.tol, s.path.size(),
+      s.max_deviation, s.worst_t);
   svg += fmt::format("<text x=\"{}\" y=\"{}\">{} {:.3f} .. {:.3f} mm, {} {:.3f} .. {:.3f} mm{}</text>\n", kMargin,
                      kShapeHeight - 15, names[0], box.u0, box.u1, names[1], box.v0, box.v1,
                      o.profile.lathe() ? " (X as a radius)" : "");

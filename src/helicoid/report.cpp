@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "report/svg_text.hpp"
+
 namespace ncurve::helicoid {
 
 namespace {
@@ -103,7 +105,7 @@ std::string contacts_json(const Job& job, const ContactSearch& search) {
                      {"Z_mm", c.z}});
     if (steps.size() <= job.cusps.size()) steps.back()["cusp_mm"] = job.cusps[steps.size() - 1];
   }
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";  // a name that is not UTF-8 gets U+FFFD
 }
 
 std::string contacts_text(const Job& job, const ContactSearch& search) {
@@ -178,7 +180,7 @@ std::string contacts_svg(const Job& job, const ContactSearch& search) {
   std::string s = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" font-family=\"sans-serif\" font-size=\"12\">\n"
       "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"{}\" y=\"20\" font-size=\"14\">{}</text>\n",
-      W, H, pad, job.title);
+      W, H, pad, report::xml_escape(job.title));
   // Left: the end profile (phase 0) with each contact turned back to it.
   double R = profile.r_max() * 1.1, cx = pad + 160, cy = H / 2 + 10, k = 160 / R;
   std::string path;

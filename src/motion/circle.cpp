@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
@@ -27,34 +30,64 @@ double axis_delay(const machine::MachineProfile& profile, int axis) {
   return d;
 }
 
+CirclePlane circle_plane(const machine::MachineProfile& profile) {
+  if (profile.lathe()) return {2, 0, 'Z', 'X'};
+  return {};
+}
+
+bool axes_alike(const machine::MachineProfile& profile, int p, int q) {
+  if (profile.servo.kv[p] != profile.servo.kv[q]) return false;
+  return profile.motion.acc_dec == machine::AccDec::before ||
+         profile.motion.time_constant[p] == profile.motion.time_constant[q];
+}
+
 CircleResult circle_test(const machine::MachineProfile& profile, const CircleTest& test) {
   CircleResult r;
-  const double R = test.radius, V = test.feed / 60, w = V / R;
+  const CirclePlane plane = circle_plane(profile);
+  const int P = plane.p, Q = plane.q;
+  const double R = test.radius;
   const double sign = test.clockwise ? -1 : 1;
 
-  // the circle as the interpreter would give it: full turns from (R, 0)
+  // the circle as the interpreter would give it: full turns from R along +p
   std::vector<machine::Move> moves;
   for (int k = 0; k < test.turns; ++k) {
     machine::Move m;
     m.kind = machine::MoveKind::arc;
+    m.plane = profile.lathe() ? 18 : 17;
     m.clockwise = test.clockwise;
-    m.start[0] = m.end[0] = R;
+    m.start[P] = m.end[P] = R;
     m.sweep = sign * 2 * kPi;
     m.length = 2 * kPi * R;
     m.feed = test.feed;
-    m.seconds = m.length / V;
+    m.seconds = m.length / (test.feed / 60);
     m.nc_blocks = 1;
     m.line = static_cast<std::uint32_t>(k + 1);
     moves.push_back(m);
   }
+  // the feed the control allows on the arc, and how long the run takes, before simulating it
+  double end = 0;
+  {
+    Planner plan(profile, [&](const BlockTime& b) {
+      r.feed_reached = b.cap;
+      end = b.start + b.seconds + b.settle;
+    });
+    for (const auto& m : moves) plan.on_move(m);
+    plan.finish();
+  }
+  if (!(end <= test.most_seconds))
+    throw std::runtime_error(fmt::format("{} turns of R {:g} mm at {:g} mm/min take {:.3g} s, more than the {:g} s "
+                                         "simulated at most: raise the feed or lower the radius",
+                                         test.turns, R, r.feed_reached, end, test.most_seconds));
+  if (r.feed_reached >= test.feed * (1 - 1e-9)) r.feed_reached = test.feed;  // length / time rounds
+  const double V = r.feed_reached / 60, w = V / R;
 
   const int measured = test.turns / 2;
   double min_dev = 1e300, max_dev = -1e300, sum = 0;
   std::size_t n = 0;
   ServoSim sim(profile, [&](const Tick& t) {
     if (!t.block || t.block->move.line != static_cast<std::uint32_t>(measured + 1)) return;
-    double rad = std::hypot(t.actual[0], t.actual[1]) - R;
-    double ang = deg(std::atan2(t.actual[1], t.actual[0]));
+    double rad = std::hypot(t.actual[P], t.actual[Q]) - R;
+    double ang = deg(std::atan2(t.actual[Q], t.actual[P]));
     r.polar.emplace_back(ang, rad);
     sum += rad;
     ++n;
@@ -73,10 +106,11 @@ CircleResult circle_test(const machine::MachineProfile& profile, const CircleTes
     r.roundness = max_dev - min_dev;
   }
   r.max_contour_error = sim.stats().max_error;
+  r.angle_meaningful = !axes_alike(profile, P, Q);
 
   // closed forms
   double terms = 0;
-  for (int a = 0; a < 2; ++a) {
+  for (int a : {P, Q}) {
     double t = (1 - profile.servo.feed_forward * profile.servo.feed_forward) / (profile.servo.kv[a] * profile.servo.kv[a]);
     if (profile.motion.acc_dec == machine::AccDec::after) {
       double T = profile.motion.time_constant[a];
@@ -85,15 +119,15 @@ CircleResult circle_test(const machine::MachineProfile& profile, const CircleTes
     terms += t / 2;
   }
   r.fanuc_radius_reduction = V * V / (2 * R) * terms;
-  r.first_order_roundness = V * std::fabs(axis_delay(profile, 0) - axis_delay(profile, 1));
+  r.first_order_roundness = V * std::fabs(axis_delay(profile, P) - axis_delay(profile, Q));
 
-  const auto gx = axis_response(profile, 0, w), gy = axis_response(profile, 1, w);
+  const auto gp = axis_response(profile, P, w), gq = axis_response(profile, Q, w);
   double hmin = 1e300, hmax = -1e300, hsum = 0;
   const int samples = 7200;
   for (int i = 0; i < samples; ++i) {
     double th = 2 * kPi * i / samples;
     std::complex<double> e = std::polar(1.0, th);
-    double x = R * (gx * e).real(), y = R * sign * (gy * std::complex<double>(0, -1) * e).real();
+    double x = R * (gp * e).real(), y = R * sign * (gq * std::complex<double>(0, -1) * e).real();
     double dev = std::hypot(x, y) - R;
     hsum += dev;
     hmax = std::max(hmax, dev);
@@ -105,10 +139,10 @@ CircleResult circle_test(const machine::MachineProfile& profile, const CircleTes
   r.harmonic_radius_reduction = -hsum / samples;
   r.harmonic_roundness = hmax - hmin;
 
-  const double ax = profile.motion.acceleration[0], ay = profile.motion.acceleration[1];
+  const double ap = profile.motion.acceleration[P], aq = profile.motion.acceleration[Q];
   for (int i = 0; i <= 9000; ++i) {
     double a = i * kPi / 2 / 9000;
-    double e = V * V / 2 * std::cos(a) * std::sin(a) * (std::cos(a) / ay + std::sin(a) / ax);
+    double e = V * V / 2 * std::cos(a) * std::sin(a) * (std::cos(a) / aq + std::sin(a) / ap);
     if (e > r.seed002_error) {
       r.seed002_error = e;
       r.seed002_angle = a * 180 / kPi;

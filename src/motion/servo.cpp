@@ -133,16 +133,10 @@ void ServoSim::step_to(double t_end, const Segment* seg) {
       best = std::min(best, distance_to(*it, tick.actual));
     }
     tick.contour_error = best;
-    stats_.ticks++;
-    sum_sq_ += best * best;
-    if (best > stats_.max_error) {
-      stats_.max_error = best;
-      stats_.max_t = t_;
-      stats_.max_actual = tick.actual;
-      if (seg) {
-        stats_.max_line = seg->block.move.line;
-        stats_.max_file = seg->block.move.file;
-      }
+    const BlockTime* owner = seg ? &seg->block : last_ ? &*last_ : nullptr;
+    if (owner) {
+      stats_.add(tick, owner);
+      (owner->move.kind == MoveKind::rapid ? rapids_ : cutting_).add(tick, owner);
     }
     if (on_tick_) on_tick_(tick);
   }
@@ -161,6 +155,7 @@ void ServoSim::on_block(const BlockTime& b) {
   step_to(b.start, nullptr);
   window_.push_back({b, path_length_});
   step_to(b.start + b.seconds, &window_.back());
+  last_ = b;
   held_ = xyz(b.move.end);
   path_length_ += b.length;
   // keep what the actual position may still be near: a few following-error lengths back
@@ -172,7 +167,19 @@ void ServoSim::on_block(const BlockTime& b) {
 
 void ServoSim::finish(double settle_seconds) {
   step_to(t_ + settle_seconds, nullptr);
-  stats_.rms = stats_.ticks ? std::sqrt(sum_sq_ / stats_.ticks) : 0;
+  for (ContourStats* s : {&stats_, &cutting_, &rapids_}) s->close();
+}
+
+void ContourStats::add(const Tick& t, const BlockTime* block) {
+  ++ticks;
+  sum_sq += t.contour_error * t.contour_error;
+  if (t.contour_error > max_error || ticks == 1) {
+    max_error = t.contour_error;
+    max_t = t.t;
+    max_actual = t.actual;
+    max_line = block ? block->move.line : 0;
+    max_file = block ? block->move.file : nullptr;
+  }
 }
 
 }  // namespace ncurve::motion

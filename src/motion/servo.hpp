@@ -4,7 +4,9 @@
 #pragma once
 #include <array>
 #include <complex>
+#include <cmath>
 #include <deque>
+#include <optional>
 #include <functional>
 
 #include "motion/planner.hpp"
@@ -26,8 +28,11 @@ struct ContourStats {
   double max_error = 0, rms = 0;
   double max_t = 0;
   Point max_actual{};
-  std::uint32_t max_line = 0;
+  std::uint32_t max_line = 0;  // the block the error peaks in (0: before any block)
   const nc::SourceFile* max_file = nullptr;
+  double sum_sq = 0;
+  void add(const Tick& t, const BlockTime* block);  // block: the one the tick belongs to
+  void close() { rms = ticks ? std::sqrt(sum_sq / static_cast<double>(ticks)) : 0; }
 };
 
 class ServoSim {
@@ -36,7 +41,12 @@ public:
   explicit ServoSim(const machine::MachineProfile& profile, Callback on_tick = {});
   void on_block(const BlockTime& b);  // in plan order, e.g. from Planner's callback
   void finish(double settle_seconds);  // runs on with the command at rest for this long; sets the RMS
+  // Every tick from the first block on; the contour error while cutting (lines and arcs at feed);
+  // and while positioning (rapids). A tick belongs to the block being interpolated, or at rest to
+  // the block that moved last (the axes are still catching up with its end).
   const ContourStats& stats() const { return stats_; }
+  const ContourStats& cutting() const { return cutting_; }
+  const ContourStats& rapids() const { return rapids_; }
 
 private:
   struct Segment {
@@ -49,8 +59,8 @@ private:
 
   machine::MachineProfile profile_;
   Callback on_tick_;
-  ContourStats stats_;
-  double sum_sq_ = 0;
+  ContourStats stats_, cutting_, rapids_;
+  std::optional<BlockTime> last_;  // the block that moved last
   std::deque<Segment> window_;  // recent blocks, for the contour error
   double path_length_ = 0;
   double t_ = 0;

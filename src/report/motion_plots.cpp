@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "report/svg_text.hpp"
+
 namespace ncurve::report {
 
 namespace {
@@ -16,17 +18,6 @@ std::string header(double w, double h) {
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
       "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n",
       w, h);
-}
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
 }
 
 // A round step for about n ticks over span.
@@ -40,7 +31,7 @@ double nice_step(double span, int n) {
 
 std::string feed_svg(const std::vector<FeedSample>& samples, const std::string& title) {
   std::string s = header(kW, kH);
-  s += fmt::format("<text x=\"{}\" y=\"24\" font-size=\"15\">{}</text>\n", kM, escape(title));
+  s += fmt::format("<text x=\"{}\" y=\"24\" font-size=\"15\">{}</text>\n", kM, xml_escape(title));
   double len = samples.empty() ? 1 : std::max(samples.back().path, 1e-9);
   double vmax = 1;
   for (const auto& p : samples) vmax = std::max({vmax, p.programmed, p.reached});
@@ -90,12 +81,12 @@ std::string heat(double f) {
 }  // namespace
 
 std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::vector<std::array<double, 2>>& nominal,
-                          double tolerance, const std::string& title, const std::string& subtitle, char u_name,
-                          char v_name) {
+                          double tolerance, const std::string& title, const std::string& subtitle,
+                          const std::string& u_name, const std::string& v_name) {
   const double plot = 640, top = 60, left = 60, bar_x = left + plot + 40;
   std::string s = header(bar_x + 140, top + plot + 60);
-  s += fmt::format("<text x=\"{}\" y=\"24\" font-size=\"15\">{}</text>\n", left, escape(title));
-  s += fmt::format("<text x=\"{}\" y=\"44\">{}</text>\n", left, escape(subtitle));
+  s += fmt::format("<text x=\"{}\" y=\"24\" font-size=\"15\">{}</text>\n", left, xml_escape(title));
+  s += fmt::format("<text x=\"{}\" y=\"44\">{}</text>\n", left, xml_escape(subtitle));
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY, worst = 0;
   auto grow = [&](double x, double y) {
     x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
@@ -120,9 +111,9 @@ std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::
                      "y=\"{1:.1f}\" text-anchor=\"end\" dy=\"3\" font-size=\"10\">{4:g}</text>\n",
                      left, Y(y), left + plot, left - 4, y);
   s += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}, mm (grid {:g} mm, equal scales)</text>\n",
-                   left + plot / 2, top + plot + 32, u_name, g);
+                   left + plot / 2, top + plot + 32, xml_escape(u_name), g);
   s += fmt::format("<text x=\"20\" y=\"{0}\" transform=\"rotate(-90 20 {0})\" text-anchor=\"middle\">{1}, mm</text>\n",
-                   top + plot / 2, v_name);
+                   top + plot / 2, xml_escape(v_name));
   std::string pts;
   for (const auto& p : nominal) pts += fmt::format("{:.2f},{:.2f} ", X(p[0]), Y(p[1]));
   s += fmt::format("<polyline fill=\"none\" stroke=\"#bbb\" stroke-width=\"5\" stroke-linecap=\"round\" points=\"{}\"/>\n", pts);
@@ -159,12 +150,13 @@ std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::
   return s + "</svg>\n";
 }
 
-std::string polar_svg(const motion::CircleResult& r, const motion::CircleTest& test, const std::string& subtitle) {
+std::string polar_svg(const motion::CircleResult& r, const motion::CircleTest& test, const motion::CirclePlane& plane,
+                      const std::string& subtitle) {
   const double size = 640, c = size / 2, R0 = 200;
-  std::string s = header(size, size + 40);
-  s += fmt::format("<text x=\"20\" y=\"24\" font-size=\"15\">Circular test: R {} mm, F {} mm/min, {}</text>\n",
-                   test.radius, test.feed, test.clockwise ? "CW" : "CCW");
-  s += fmt::format("<text x=\"20\" y=\"44\">{}</text>\n", escape(subtitle));
+  std::string s = header(size, size + 60);
+  s += fmt::format("<text x=\"20\" y=\"24\" font-size=\"15\">Circular test: R {} mm, F {} mm/min, {}, {}{} plane</text>\n",
+                   test.radius, test.feed, test.clockwise ? "CW" : "CCW", plane.p_name, plane.q_name);
+  s += fmt::format("<text x=\"20\" y=\"44\">{}</text>\n", xml_escape(subtitle));
   double span = 0;
   for (const auto& [a, d] : r.polar) span = std::max(span, std::fabs(d));
   span = std::max(span, 1e-6);
@@ -181,10 +173,12 @@ std::string polar_svg(const motion::CircleResult& r, const motion::CircleTest& t
   }
   for (int a = 0; a < 360; a += 45) {
     double t = a * std::numbers::pi / 180;
+    // the two axes' directions named at 0 and 90 degrees
+    const std::string axis = a == 0 ? fmt::format(" +{}", plane.p_name) : a == 90 ? fmt::format(" +{}", plane.q_name) : "";
     s += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#eee\"/><text x=\"{:.1f}\" "
-                     "y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"10\">{}°</text>\n",
+                     "y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"10\">{}°{}</text>\n",
                      c, cy, c + 290 * std::cos(t), cy - 290 * std::sin(t), c + 300 * std::cos(t),
-                     cy - 300 * std::sin(t) + 4, a);
+                     cy - 300 * std::sin(t) + 4, a, axis);
   }
   std::string pts;
   std::size_t stride = std::max<std::size_t>(1, r.polar.size() / 3600);
@@ -194,10 +188,21 @@ std::string polar_svg(const motion::CircleResult& r, const motion::CircleTest& t
     pts += fmt::format("{:.1f},{:.1f} ", c + rr * std::cos(t), cy - rr * std::sin(t));
   }
   s += fmt::format("<polygon fill=\"none\" stroke=\"#1565c0\" stroke-width=\"1.5\" points=\"{}\"/>\n", pts);
-  s += fmt::format(
-      "<text x=\"20\" y=\"{}\">radius reduction {:.4f} mm · roundness {:.4f} mm · smallest radius at {:.1f}° · grey "
-      "circle = nominal R, rings every {:g} µm</text>\n",
-      size + 30, r.radius_reduction, r.roundness, r.max_deviation_angle, ring * 1000);
+  std::string angle;
+  if (r.angle_meaningful) {
+    // the smallest radius marked by a ray from the centre
+    const double t = r.max_deviation_angle * std::numbers::pi / 180;
+    s += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"#d32f2f\" stroke-dasharray=\"5 3\"/>\n",
+                     c, cy, c + 280 * std::cos(t), cy - 280 * std::sin(t));
+    angle = fmt::format("smallest radius at {:.1f}° (red)", r.max_deviation_angle);
+  } else {
+    angle = fmt::format("{} and {} respond alike: the circle only shrinks, its smallest radius has no particular angle",
+                        plane.p_name, plane.q_name);
+  }
+  s += fmt::format("<text x=\"20\" y=\"{}\">radius reduction {:.4f} mm · roundness {:.4f} mm · grey circle = nominal R, "
+                   "rings every {:g} µm</text>\n",
+                   size + 30, r.radius_reduction, r.roundness, ring * 1000);
+  s += fmt::format("<text x=\"20\" y=\"{}\">{}</text>\n", size + 50, xml_escape(angle));
   return s + "</svg>\n";
 }
 

@@ -29,10 +29,12 @@ struct DeviationSegment {
 // The path coloured by deviation (a scale in micrometres beside it) over the nominal curve in grey;
 // with tolerance > 0, blocks beyond it are drawn thicker and counted. Axis names label the plane.
 std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::vector<std::array<double, 2>>& nominal,
-                          double tolerance, const std::string& title, const std::string& subtitle, char u_name,
-                          char v_name);
+                          double tolerance, const std::string& title, const std::string& subtitle,
+                          const std::string& u_name, const std::string& v_name);
 
-// Radial deviation against angle, magnified about the nominal circle, with rings in micrometres.
-std::string polar_svg(const motion::CircleResult& r, const motion::CircleTest& test, const std::string& subtitle);
+// Radial deviation against angle, magnified about the nominal circle, with rings in micrometres;
+// the smallest radius marked by a ray when its angle means something, else said to mean nothing.
+std::string polar_svg(const motion::CircleResult& r, const motion::CircleTest& test, const motion::CirclePlane& plane,
+                      const std::string& subtitle);
 
 }  // namespace ncurve::report

@@ -118,7 +118,7 @@ std::string summary_json(const RunReport& r) {
   for (const auto& d : r.text_problems) j["text_problems"].push_back(diagnostic_json(d));
   j["alarm"] = res.alarm ? diagnostic_json(*res.alarm) : nlohmann::json(nullptr);
   j["ok"] = res.ok();
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // a name that is not UTF-8 gets U+FFFD
 }
 
 }  // namespace ncurve::report

@@ -17,7 +17,8 @@ static double clean(double v) { return v == 0 ? 0.0 : v; }  // no "-0"
 void JsonlWriter::on_move(const Move& m) {
   if (m.file != last_file_) {
     last_file_ = m.file;
-    file_json_ = nlohmann::json(m.file ? m.file->name() : std::string()).dump();
+    file_json_ = nlohmann::json(m.file ? m.file->name() : std::string())
+                     .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);  // not UTF-8: U+FFFD
   }
   fmt::memory_buffer b;
   auto it = std::back_inserter(b);

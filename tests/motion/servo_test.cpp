@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "motion/circle.hpp"
 #include "motion/servo.hpp"
@@ -109,4 +110,84 @@ TEST(Servo, StraightLinesLagAlongThePathButCornersCutInside) {
   EXPECT_EQ(corner.max_line, 2u);
   auto stopped = run_contour("G61\nG01 X50. F3000.\nY50.\nM30\n");
   EXPECT_LT(stopped.max_error, 0.05 * corner.max_error);
+}
+
+namespace {
+// Plans and simulates a program on `p`, returning the simulator after it has settled.
+std::unique_ptr<motion::ServoSim> simulate(const std::string& text, const machine::MachineProfile& p) {
+  auto r = test::run(text, p);
+  EXPECT_TRUE(r.result.ok());
+  auto sim = std::make_unique<motion::ServoSim>(p);
+  motion::Planner planner(p, [&](const motion::BlockTime& b) { sim->on_block(b); });
+  for (const auto& m : r.moves) planner.on_move(m);
+  planner.finish();
+  sim->finish(0.5);
+  return sim;
+}
+}  // namespace
+
+TEST(Servo, CuttingAndRapidContourErrorsAreApart) {
+  // A straight move at 45 degrees with Kv X 30, Y 20: each axis lags by its speed / Kv, so the
+  // machine runs beside the line by V/2 (1/Ky - 1/Kx) once at speed (cutting F1000: 0.138889 mm;
+  // the rapid back, each axis at 15000 mm/min, V = 15000 sqrt 2: 2.946278 mm).
+  auto p = machine::default_mill();
+  p.servo.kv[1] = 20;
+  auto sim = simulate("G92 X0 Y0 Z0\nG90 G01 X50. Y50. F1000.\nG00 X-450. Y-450.\nM30\n", p);
+  const double gap = 1 / 20.0 - 1 / 30.0;
+  EXPECT_NEAR(sim->cutting().max_error, 1000 / 60.0 / 2 * gap, 1e-6);
+  EXPECT_EQ(sim->cutting().max_line, 2u);
+  EXPECT_NEAR(sim->rapids().max_error, 15000 * std::sqrt(2.0) / 60 / 2 * gap, 1e-6);
+  EXPECT_EQ(sim->rapids().max_line, 3u);
+  EXPECT_EQ(sim->stats().max_error, sim->rapids().max_error);
+  EXPECT_EQ(sim->stats().ticks, sim->cutting().ticks + sim->rapids().ticks);
+  // a program of rapids alone has no cutting samples
+  auto rapids = simulate("G92 X0 Y0 Z0\nG00 X10.\nM30\n", p);
+  EXPECT_EQ(rapids->cutting().ticks, 0u);
+  EXPECT_GT(rapids->rapids().ticks, 0u);
+}
+
+TEST(Servo, CircleAngleMeansNothingWhenTheAxesRespondAlike) {
+  auto p = machine::default_mill();
+  EXPECT_FALSE(circle(p, 50, 5000).angle_meaningful);  // equal gains: the circle only shrinks
+  p.servo.kv[1] = 25;
+  EXPECT_TRUE(circle(p, 50, 5000).angle_meaningful);
+  p.servo.kv[1] = 30;  // equal gains, unequal filters after interpolation: an ellipse again
+  p.motion.acc_dec = machine::AccDec::after;
+  p.motion.time_constant = {0.02, 0.03, 0.03, 0, 0, 0};
+  auto r = circle(p, 50, 5000);
+  EXPECT_TRUE(r.angle_meaningful);
+  EXPECT_NEAR(r.roundness, 5000 / 60.0 * (0.03 - 0.02) / 2, 0.02 * r.roundness);  // V |Tx - Ty| / 2 (linear)
+  p.motion.time_constant = {0.03, 0.03, 0.01, 0, 0, 0};  // Z differs, but the circle is in X Y
+  EXPECT_FALSE(circle(p, 50, 5000).angle_meaningful);
+}
+
+TEST(Servo, LatheCircleIsInTheZXPlane) {
+  auto p = machine::default_lathe();
+  p.servo.kv = {30, 30, 25, 30, 30, 30};  // Z lags more than X
+  auto r = circle(p, 50, 5000);
+  const auto plane = motion::circle_plane(p);
+  EXPECT_EQ(plane.p, 2);
+  EXPECT_EQ(plane.q, 0);
+  EXPECT_TRUE(r.angle_meaningful);
+  // the first axis (Z) lagging: the ellipse's smallest radius at 135 degrees from +Z towards +X,
+  // as X lagging puts it at 135 degrees on a mill; roundness V (1/25 - 1/30)
+  EXPECT_LT(angle_gap(r.max_deviation_angle, 135), 3);
+  EXPECT_NEAR(r.roundness, 5000 / 60.0 * (1 / 25.0 - 1 / 30.0), 0.01 * r.roundness);
+  p.servo.kv[2] = 30;
+  p.servo.kv[1] = 10;  // Y is not an axis of the lathe's circle
+  EXPECT_FALSE(circle(p, 50, 5000).angle_meaningful);
+}
+
+TEST(Servo, CircleFiguresAreAtTheFeedTheControlAllows) {
+  auto p = machine::default_mill();  // cutting feed at most 10000 mm/min
+  auto r = circle(p, 50, 20000);
+  EXPECT_EQ(r.feed_reached, 10000);
+  const double V = 10000 / 60.0;
+  EXPECT_NEAR(r.radius_reduction, V * V / (2 * 50 * 30.0 * 30.0), 0.01 * r.radius_reduction);
+  EXPECT_NEAR(r.fanuc_radius_reduction, V * V / (2 * 50 * 30.0 * 30.0), 1e-12);
+  // three turns of R 1000 km at 1 mm/min: refused rather than simulated for years
+  motion::CircleTest t;
+  t.radius = 1e6;
+  t.feed = 1;
+  EXPECT_THROW(motion::circle_test(p, t), std::runtime_error);
 }

@@ -119,3 +119,20 @@ TEST(Writers, SummaryJsonHasTheCounts) {
   EXPECT_NE(j.find(R"("source_words": 7)"), std::string::npos) << j;  // O1 G00 X G01 X F M30
   EXPECT_NE(j.find(R"("ok": true)"), std::string::npos);
 }
+
+TEST(Writers, JsonOfAFileNameThatIsNotUtf8) {
+  // a Latin-1 file name (bytes that are not UTF-8) is written with U+FFFD, not refused by the JSON
+  const std::string name = "caf\xE9.nc", written = "caf\xEF\xBF\xBD.nc";
+  machine::ProgramLibrary lib;
+  lib.add_text(name, "O1\nG01 X20. F100.\nM30\n", true);
+  auto p = machine::default_mill();
+  machine::Interpreter in(p, lib);
+  std::ostringstream lines;
+  report::JsonlWriter jsonl(lines, p);
+  auto r = in.run(jsonl);
+  EXPECT_NE(lines.str().find("\"file\":\"" + written + "\""), std::string::npos) << lines.str();
+  report::RunReport rep{name, &p, &r, report::source_stats(lib, lib.main()->file.get()), {}};
+  std::string j;
+  EXPECT_NO_THROW(j = report::summary_json(rep));
+  EXPECT_NE(j.find("\"source\": \"" + written + "\""), std::string::npos) << j;
+}
