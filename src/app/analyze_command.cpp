@@ -16,6 +16,7 @@
 #include "app/analyze_shape.hpp"
 #include "app/cli_units.hpp"
 #include "app/save.hpp"
+#include "app/shipped.hpp"
 
 namespace ncurve::app {
 namespace {
@@ -125,7 +126,7 @@ int circle_command(const AnalyzeArgs& a) {
       "  roundness           {:.6f} mm   (first order V |tau_{} - tau_{}|: {:.6f}; linear model: {:.6f})\n"
       "{}"
       "  contour error, whole run (start and stop included): {:.6f} mm\n"
-      "  seed 002's formula  e = V^2/2 cos a sin a (cos a/a_{} + sin a/a_{}): {:.6f} mm at {:.1f} deg from +{} "
+      "  circular-interpolation paper's formula  e = V^2/2 cos a sin a (cos a/a_{} + sin a/a_{}): {:.6f} mm at {:.1f} deg from +{} "
       "(a_{} {} a_{} {} mm/s^2)\n",
       test.radius, test.feed, held, test.clockwise ? "clockwise" : "counter-clockwise", P, Q, subtitle,
       r.radius_reduction, r.fanuc_radius_reduction, r.harmonic_radius_reduction, r.roundness, P, Q,
@@ -380,7 +381,7 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
                   "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "
                   "or expr");
   cmd->add_option("--shape-csv", a.shape_csv,
-                  "--curve: write each contour block's deviation and seed 000's models to this CSV file");
+                  "--curve: write each contour block's deviation and the spiral paper's chord models to this CSV file");
   cmd->add_option("--shape-plot", a.shape_plot, "--curve: SVG of the path coloured by its deviation from the curve");
   cmd->add_option("--tol", a.tol, "--curve: shape tolerance, mm; blocks beyond it are counted and marked")
       ->check(units::length_mm(units::above(0)));
@@ -398,7 +399,8 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
       ->check(units::gain_per_s());
   circle->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1")
       ->check(units::ratio(units::at_least(0), units::at_most(1)));
-  circle->add_option("--machine", a.in.machine, "machine profile (TOML)")->check(CLI::ExistingFile);
+  circle->add_option("--machine", a.in.machine, "machine profile (TOML file, or a shipped one by name)")
+      ->transform(profile_path());
   circle->add_flag("--cw", a.clockwise, "clockwise (G02); default counter-clockwise");
   circle->add_flag("--json", a.json, "results as JSON");
   circle->add_option("--plot", a.plot, "SVG: polar deviation diagram");

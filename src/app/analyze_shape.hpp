@@ -203,7 +203,7 @@ inline std::string text(const geom::Curve& curve, const Report& r, double tol) {
                        "({:.4g} mm)",
                        e.max_error, e.line, r.size);
   };
-  out += fmt::format("  seed 000's models over {} line blocks (centre {} for the radial ones):\n", m.lines,
+  out += fmt::format("  the spiral paper's chord models over {} line blocks (centre {} for the radial ones):\n", m.lines,
                      position(profile, m.centre));
   out += "    chord height, Yang a = sqrt(8Rh - 4h^2)  " +
          figure(m.yang, fmt::format("max {:.3f} um, off the measured by up to {:.3f} um ({:.1f} %)", m.yang.max * um,

@@ -18,10 +18,10 @@
 namespace ncurve::app {
 
 void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
-  CLI::App* h = app.add_subcommand("helicoid", "disc-cutter locations for a helical surface (seed 004)");
-  h->add_option("--example", a.example, "seed004: the screw-drill rotor of seed 004 with its cutter")
+  CLI::App* h = app.add_subcommand("helicoid", "disc-cutter locations for a helical surface (the helicoid paper's method)");
+  h->add_option("--example", a.example, "seed004: the screw-drill rotor of the helicoid paper with its cutter")
       ->check(CLI::IsMember({"seed004"}));
-  h->add_option("--profile", a.profile, "end profile: rotor (seed 004) or a closed curve of `ncurve gen --list`");
+  h->add_option("--profile", a.profile, "end profile: rotor (the helicoid paper's) or a closed curve of `ncurve gen --list`");
   h->add_option("--profile-x", a.profile_x, "end profile x(u), macro expression in u (degrees)");
   h->add_option("--profile-y", a.profile_y, "end profile y(u)");
   h->add_option("--profile-csv", a.profile_csv,
@@ -50,7 +50,7 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   h->add_option("--start-distance", a.start_distance, "centre distance the search starts from, mm (must be clear)")
       ->check(units::length_mm(units::above(0)));
   h->add_option("--final-motion", a.final_motion,
-                 "x: the cutter comes in along -X (seed 004); z- or z+: at --centre-distance it travels along Z")
+                 "x: the cutter comes in along -X (as in the helicoid paper); z- or z+: at --centre-distance it travels along Z")
       ->check(CLI::IsMember({"x", "z-", "z+"}));
   h->add_option("--centre-distance", a.centre_distance,
                  "final motion along Z: the fixed centre distance, mm, or FROM:TO:STEP for one row per distance at psi "
