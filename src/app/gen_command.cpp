@@ -66,7 +66,7 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
                   "program the cutter centre (mill) or tool-nose centre (lathe) for this radius, mm")
       ->check(non_negative_mm());
   gen->add_option("--tip", a.tip,
-                  "lathe: imaginary tool nose direction 0..9 (FANUC, +X up: 2 = turning towards the chuck); the "
+                  "lathe: imaginary tool nose direction 0..9 (FANUC: 3 = outside turning towards the chuck); the "
                   "program follows that tip, 0 the nose centre")
       ->check(whole(0, 9));
   gen->add_option("--side", a.side, "left or right of the curve looking along it (G41 / G42 side); default left")

@@ -1,5 +1,7 @@
 #include "gen/generate.hpp"
 
+#include "machine/compensation.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -56,11 +58,11 @@ AxisMap axis_map(const geom::Curve& curve, const Options& o) {
     if (uses_y && uses_z) throw std::runtime_error("a lathe cuts plane profiles: the curve uses y and z");
     if (uses_y) m.from = {1, -1, 0};  // profile drawn in x, y: Z along x, X (radius) along y
     else m.from = {0, -1, 2};
-    // The imaginary tool tip sits a nose radius from the nose centre along X and Z.
-    static constexpr int kTipX[10] = {0, -1, -1, 1, 1, 0, -1, 0, 1, 0};
-    static constexpr int kTipZ[10] = {0, 1, -1, -1, 1, 1, 0, -1, 0, 0};
+    // The imaginary tool tip sits a nose radius from the nose centre along X and Z, as the
+    // control's tool-nose compensation places it.
     if (o.tip < 0 || o.tip > 9) throw std::runtime_error("the imaginary tool nose direction is 0..9");
-    if (o.tool_radius > 0) m.offset = {kTipX[o.tip] * o.tool_radius, 0, kTipZ[o.tip] * o.tool_radius};
+    const machine::TipDirection d = machine::tip_direction(o.tip);
+    if (o.tool_radius > 0) m.offset = {d.x * o.tool_radius, 0, d.z * o.tool_radius};
     return m;
   }
   if (!uses_z) {

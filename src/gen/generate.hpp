@@ -30,9 +30,9 @@ struct Options {
   int program_number = 1000;
   double tool_radius = 0;   // > 0: the program is the cutter-centre path, offset to `side`
   Side side = Side::left;
-  // lathe with a tool radius: the imaginary tool nose direction (FANUC 0..9, drawn with +X up
-  // and +Z right: 1 (-X,+Z), 2 (-X,-Z), 3 (+X,-Z), 4 (+X,+Z), 5 +Z, 6 -X, 7 -Z, 8 +X); the
-  // program is the path of that imaginary tip. 0 or 9: the nose centre.
+  // lathe with a tool radius: the imaginary tool nose direction (FANUC 0..9, the tip from the nose
+  // centre: 1 (+X,+Z), 2 (+X,-Z), 3 (-X,-Z), 4 (-X,+Z), 5 +Z, 6 +X, 7 -Z, 8 -X; machine::
+  // tip_direction); the program is the path of that imaginary tip. 0 or 9: the nose centre.
   int tip = 0;
   int cycle_program = 0;  // cycle: O9010..O9019 (G102..G111, No.6050..6059); 0: the curve's own
   // The program's set-up, once before the contour, and its end (none by default). tool > 0: the

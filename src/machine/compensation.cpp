@@ -52,6 +52,13 @@ V2 plane_point(const AxisVector& v, const PlaneAxes& pa) { return {v[pa.p], v[pa
 
 }  // namespace
 
+TipDirection tip_direction(int tip) {
+  static constexpr int kX[10] = {0, 1, 1, -1, -1, 0, 1, 0, -1, 0};
+  static constexpr int kZ[10] = {0, 1, -1, -1, 1, 1, 0, -1, 0, 0};
+  if (tip < 0 || tip > 9) return {};
+  return {kX[tip], kZ[tip]};
+}
+
 V2 RadiusCompensation::Elem::tangent_at(V2 p) const {
   if (!arc) return unit(e - s);
   return static_cast<double>(dir) * unit(perp(p - c));

@@ -281,19 +281,14 @@ void Interpreter::end_of_block_compensation(bool g40) {
   cancel_direction_.reset();
 }
 
-// The imaginary tool tip from the nose centre, in the G18 plane (Z, X as a radius), as the active
-// offset's tip number places it: the numbers follow the axes' directions (with +X up and +Z right
-// 2 6 1 / 7 0 5 / 3 8 4, an outside turning tool is 3 on either side of the spindle); 0 and 9: the
-// nose centre.
+// The imaginary tool tip from the nose centre, in the G18 plane (Z, X as a radius), for the
+// active offset set's tip number and nose radius.
 V2 Interpreter::nose_tip() const {
-  static constexpr int kTipX[10] = {0, 1, 1, -1, -1, 0, 1, 0, -1, 0};
-  static constexpr int kTipZ[10] = {0, 1, -1, -1, 1, 1, 0, -1, 0, 0};
   auto it = lathe_offsets_.find(lathe_offset_);
   if (it == lathe_offsets_.end()) return {};
-  int tip = static_cast<int>(it->second.tip);
-  if (tip < 0 || tip > 9) return {};
-  double r = it->second.r + it->second.r_wear;
-  return {kTipZ[tip] * r, kTipX[tip] * r};
+  const TipDirection d = tip_direction(static_cast<int>(it->second.tip));
+  const double r = it->second.r + it->second.r_wear;
+  return {d.z * r, d.x * r};
 }
 
 void Interpreter::emit_event(MoveKind kind, int code) {

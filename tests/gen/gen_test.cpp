@@ -495,7 +495,8 @@ TEST(Gen, DepthPassesRepeatTheContourStepDownApart) {
 }
 
 // Lathe tool-nose radius: a ball of radius 20 turned to the centre with a 0.8 mm nose. The
-// program follows the imaginary tip (FANUC direction 2: -X, -Z of the nose centre), so the
+// program follows the imaginary tip (FANUC direction 2: +X, -Z of the nose centre; 3: -X, -Z; the
+// manuals' arrangement 2 6 1 / 7 0 5 / 3 8 4 with +X up and +Z right), so the
 // nose centre, one radius back, is 20 + 0.8 from the ball's centre outside (20 - 0.8 inside).
 TEST(Gen, LatheNoseRadiusProgramsTheImaginaryTip) {
   const double R = 20, r = 0.8, tol = 0.005;
@@ -513,7 +514,7 @@ TEST(Gen, LatheNoseRadiusProgramsTheImaginaryTip) {
       ASSERT_TRUE(result.within_tolerance) << tip;
       auto ran = test::run(result.text, o.profile);
       ASSERT_TRUE(ran.result.ok()) << tip;
-      const double vx = tip == 2 ? -1 : tip == 3 ? 1 : 0, vz = tip == 0 ? 0 : -1;
+      const double vx = tip == 2 ? 1 : tip == 3 ? -1 : 0, vz = tip == 0 ? 0 : -1;
       std::size_t checked = 0;
       for (const auto& m : ran.motions()) {
         if (m.kind != machine::MoveKind::line || m.line < 10) continue;
