@@ -118,3 +118,16 @@ execute_process(COMMAND ${inst} run g102.nc --machine fanuc-mill --lib macros --
 expect_rc("${rc}" 0 "installed run of G102 with --lib macros: ${out}${err}")
 run_expect(2 "a profile name one letter off" ${inst} run ${work}/prefix/share/ncurve/examples/spiral.nc --machine fanuc-lath)
 expect_text("${err}" "did you mean fanuc-lathe?" "profile name one letter off")
+
+# run's numbers are checked in their units, NaN included; parameters must be finite
+run_expect(2 "--arc-tol 0" ${NCURVE} run ${SRC}/examples/spiral.nc --arc-tol 0)
+expect_text("${err}" "--arc-tol: must be a length above 0 mm, got 0" "--arc-tol 0")
+run_expect(2 "--arc-tol nan" ${NCURVE} run ${SRC}/examples/spiral.nc --arc-tol nan)
+expect_text("${err}" "got nan" "--arc-tol nan")
+run_expect(2 "--max-steps 0" ${NCURVE} run ${SRC}/examples/spiral.nc --max-steps 0)
+expect_text("${err}" "--max-steps: must be a whole number" "--max-steps 0")
+run_expect(2 "--param nan" ${NCURVE} run ${SRC}/examples/spiral.nc --param 6050=nan)
+expect_text("${err}" "not a value a parameter can hold" "--param 6050=nan")
+# a G code the control lacks names the parameter that would make it a custom G code
+run_expect(1 "G102 without its parameter" ${NCURVE} run ${SRC}/examples/custom-cycle.nc --lib macros)
+expect_text("${out}${err}" "--param 6050=102" "G102 names No.6050")

@@ -12,6 +12,7 @@
 #include "app/helicoid_command.hpp"
 #include "app/analyze_command.hpp"
 #include "app/run_setup.hpp"
+#include "app/cli_checks.hpp"
 #include "app/cli_docs.hpp"
 #include "app/shipped.hpp"
 #include "io/output_file.hpp"
@@ -113,7 +114,7 @@ int ncurve_main(int argc, char** argv) {
   run->add_option("--format", a.format, "output: summary (default), jsonl, csv or gcode")
       ->check(CLI::IsMember({"summary", "jsonl", "csv", "gcode"}));
   run->add_option("--arc-tol", a.arc_tol, "csv: chord error allowed when arcs are written as points, mm")
-      ->check(CLI::PositiveNumber);
+      ->check(app::positive_mm());
   run->add_option("-o,--output", a.output, "write the output to this file (the summary then goes to the terminal)");
   run->add_flag("--json", a.json, "summary as JSON");
   app::GenArgs g;

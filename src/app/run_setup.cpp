@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/cli_checks.hpp"
 #include "app/shipped.hpp"
 
 namespace ncurve::app {
@@ -70,7 +71,7 @@ void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
   cmd->add_option("--set", in.sets, "preset a variable before the run, e.g. --set \"#100=5\"; may be repeated")
       ->allow_extra_args(false);
   cmd->add_option("--max-steps", in.max_steps, "stop a program that has not ended after this many blocks")
-      ->check(CLI::PositiveNumber);
+      ->check(whole(1, 1'000'000'000'000'000L));
 }
 
 RunSetup prepare_run(const RunInputs& in) {
