@@ -70,6 +70,8 @@ void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
       ->allow_extra_args(false);
   cmd->add_option("--set", in.sets, "preset a variable before the run, e.g. --set \"#100=5\"; may be repeated")
       ->allow_extra_args(false);
+  cmd->add_flag("--nose-centre", in.nose_centre,
+               "lathe: write the tool-nose centre's path, not the imaginary tip's that the control commands");
   cmd->add_option("--max-steps", in.max_steps, "stop a program that has not ended after this many blocks")
       ->check(whole(1, 1'000'000'000'000'000L));
 }
@@ -77,6 +79,7 @@ void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
 RunSetup prepare_run(const RunInputs& in) {
   RunSetup s;
   s.options.max_steps = in.max_steps;
+  s.options.nose_centre = in.nose_centre;
   for (const auto& v : in.sets) s.options.presets.push_back(parse_set(v));
   if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
   apply_parameters(s.profile, in.params);

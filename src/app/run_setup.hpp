@@ -20,6 +20,7 @@ struct RunInputs {
   std::vector<std::string> sets;    // "#100=5"
   std::vector<std::string> params;  // "6050=102"
   std::uint64_t max_steps = machine::RunOptions{}.max_steps;
+  bool nose_centre = false;
 };
 
 struct RunSetup {

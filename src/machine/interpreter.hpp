@@ -20,6 +20,7 @@ namespace ncurve::machine {
 struct RunOptions {
   std::uint64_t max_steps = 200'000'000;          // executed blocks before a runaway program is stopped
   std::vector<std::pair<int, double>> presets;  // --set "#100=5"
+  bool nose_centre = false;  // lathe: write the tool-nose centre's path, not the imaginary tip's
 };
 
 struct RunStats {

@@ -249,6 +249,12 @@ void Interpreter::emit(Move& m) {
 }
 
 void Interpreter::deliver(Move& m) {
+  if (options_.nose_centre && profile_.lathe() && m.is_motion()) {
+    const V2 tip = nose_tip();  // (Z, X): the imaginary tip from the nose centre
+    m.start[2] -= tip.x, m.start[0] -= tip.y;
+    m.end[2] -= tip.x, m.end[0] -= tip.y;
+    if (m.kind == MoveKind::arc) m.center[2] -= tip.x, m.center[0] -= tip.y;
+  }
   RunStats& s = result_.stats;
   ++s.by_kind[static_cast<int>(m.kind)];
   if (m.is_motion()) {

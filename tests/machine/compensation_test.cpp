@@ -265,3 +265,24 @@ TEST(Compensation, RandomContoursKeepTheRadius) {
   }
   EXPECT_GT(checked, 1000) << alarms << " contours alarmed";
 }
+
+// --nose-centre writes the nose centre: the start-up of an outside chamfer with tip 3 (G42, nose
+// 0.8) ends with the centre on the chamfer's offset, perpendicular to it at its start (Z0, X16 dia):
+// Z 0.8 sin 45 = 0.5657, X 16 + 2 * 0.8 cos 45 = 17.1314 (diameter); the tip is 0.8 less in Z and
+// 2 * 0.8 less in X.
+TEST(Compensation, NoseCentreOrTip) {
+  auto p = machine::default_lathe();
+  p.lathe_offsets[1].r = 0.8;
+  p.lathe_offsets[1].tip = 3;
+  const std::string prog = "T0101\nG99 G40 G00 X16. Z5.\nG42 G01 Z0. F0.1\nX20. Z-2.\nZ-15.\nG40 G00 X40. Z5.\nM30\n";
+  machine::RunOptions centre;
+  centre.nose_centre = true;
+  auto c = run(prog, p, centre);
+  ASSERT_TRUE(c.result.ok()) << nc::format(*c.result.alarm);
+  const double s = std::sqrt(0.5);
+  EXPECT_NEAR(c.motions()[1].end[2], 0.8 * s, 1e-9);
+  EXPECT_NEAR(2 * c.motions()[1].end[0], 16 + 2 * 0.8 * s, 1e-9);
+  auto t = run(prog, p);
+  EXPECT_NEAR(t.motions()[1].end[2], 0.8 * s - 0.8, 1e-9);
+  EXPECT_NEAR(2 * t.motions()[1].end[0], 16 + 2 * 0.8 * s - 2 * 0.8, 1e-9);
+}
