@@ -131,3 +131,15 @@ expect_text("${err}" "not a value a parameter can hold" "--param 6050=nan")
 # a G code the control lacks names the parameter that would make it a custom G code
 run_expect(1 "G102 without its parameter" ${NCURVE} run ${SRC}/examples/custom-cycle.nc --lib macros)
 expect_text("${out}${err}" "--param 6050=102" "G102 names No.6050")
+
+# a run cut off by an alarm says so at the end of every path format, and the G code has no M30
+run_expect(1 "gcode of an alarm" ${NCURVE} run ${SRC}/examples/alarm.nc --format gcode)
+expect_text("${out}" "(ALARM MC3001 AT " "gcode marks the alarm")
+if(out MATCHES "M30")
+  message(SEND_ERROR "a cut-off expansion ends with M30:\n${out}")
+endif()
+run_expect(1 "csv of an alarm" ${NCURVE} run ${SRC}/examples/alarm.nc --format csv)
+expect_text("${out}" "\n9,alarm:MC3001,,,,\n" "csv marks the alarm")
+run_expect(1 "jsonl of an alarm" ${NCURVE} run ${SRC}/examples/alarm.nc --format jsonl)
+expect_text("${out}" "\"kind\":\"alarm\"" "jsonl marks the alarm")
+expect_text("${out}" "\"alarm\":\"MC3001\"" "jsonl names the alarm")

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <cctype>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -149,9 +150,42 @@ void GcodeWriter::on_move(const Move& m) {
   out_ << line << '\n';
 }
 
+void GcodeWriter::stopped(const nc::Diagnostic& alarm) {
+  // a comment holds no parentheses and, read by a control, printable upper-case text
+  std::string text = fmt::format("ALARM {} AT {}:{}: {} - THE RUN STOPPED HERE", alarm.code,
+                                 alarm.span.file ? alarm.span.file->name() : "", alarm.span.line, alarm.message);
+  for (char& c : text) {
+    if (c == '(') c = '[';
+    else if (c == ')') c = ']';
+    else if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+    else c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  out_ << "(" << text << ")\n";
+  stopped_ = true;
+}
+
 void GcodeWriter::finish() {
-  if (!ended_) out_ << "M30\n";
+  if (!ended_ && !stopped_) out_ << "M30\n";
   out_ << "%\n";
+}
+
+void CsvWriter::stopped(const nc::Diagnostic& alarm) {
+  if (!started_) {
+    out_ << "line,kind,x,y,z,f\n";
+    started_ = true;
+  }
+  out_ << alarm.span.line << ",alarm:" << alarm.code << ",,,,\n";
+}
+
+void JsonlWriter::stopped(const nc::Diagnostic& alarm) {
+  nlohmann::json j;
+  j["kind"] = "alarm";
+  j["file"] = alarm.span.file ? alarm.span.file->name() : std::string();
+  j["line"] = alarm.span.line;
+  j["column"] = alarm.span.column;
+  j["alarm"] = alarm.code;
+  j["message"] = alarm.message;
+  out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 }  // namespace ncurve::report

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "machine/move.hpp"
+#include "nc/diagnostic.hpp"
 #include "machine/profile.hpp"
 
 namespace ncurve::report {
@@ -19,6 +20,8 @@ class JsonlWriter final : public machine::MoveSink {
 public:
   JsonlWriter(std::ostream& out, const machine::MachineProfile& profile) : out_(out), frame_(profile) {}
   void on_move(const machine::Move& m) override;
+  // The run stopped on an alarm: a last record {"kind":"alarm", ...} says so.
+  void stopped(const nc::Diagnostic& alarm);
 
 private:
   std::ostream& out_;
@@ -32,6 +35,8 @@ class CsvWriter final : public machine::MoveSink {
 public:
   CsvWriter(std::ostream& out, const machine::MachineProfile& profile, double arc_tolerance);
   void on_move(const machine::Move& m) override;
+  // The run stopped on an alarm: a last row of kind "alarm:CODE" at the alarm's line.
+  void stopped(const nc::Diagnostic& alarm);
 
 private:
   void row(std::uint32_t line, const char* kind, double x, double y, double z, double f);
@@ -46,6 +51,8 @@ class GcodeWriter final : public machine::MoveSink {
 public:
   GcodeWriter(std::ostream& out, const machine::MachineProfile& profile, const std::string& source_name);
   void on_move(const machine::Move& m) override;
+  // The run stopped on an alarm: a comment naming it ends the program, without M30.
+  void stopped(const nc::Diagnostic& alarm);
   void finish();
 
 private:
@@ -59,6 +66,7 @@ private:
   bool per_rev_ = false;
   bool per_rev_known_ = false;
   bool ended_ = false;
+  bool stopped_ = false;
 };
 
 // Points of an arc move (excluding its start), spaced so the chord error is within tolerance.
