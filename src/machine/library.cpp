@@ -22,6 +22,10 @@ int number_from_file_name(const std::string& path) {
 }  // namespace
 
 std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, std::string text, bool is_main) {
+  // A UTF-8 byte-order mark is no part of the program; CR alone ends a line as LF and CRLF do.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
   auto file = std::make_shared<const nc::SourceFile>(name, std::move(text));
   files_.push_back(file);
   nc::ParseResult r = nc::parse(file, options_);

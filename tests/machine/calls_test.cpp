@@ -151,3 +151,17 @@ TEST(Calls, MovesInsideTheModalMacroDoNotCallItAgain) {
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   EXPECT_EQ(r.var(100), 1.0);
 }
+
+// Line ends of every kind and a byte-order mark: CR alone, LF and CRLF end a block; a UTF-8 BOM is
+// not part of the first block.
+TEST(Calls, LineEndsAndByteOrderMark) {
+  for (const char* text : {"\xEF\xBB\xBFG90 G01 X1. F100.\rY2.\rM30\r", "G90 G01 X1. F100.\r\nY2.\r\nM30\r\n",
+                           "G90 G01 X1. F100.\nY2.\nM30\n"}) {
+    auto r = ncurve::test::run(text);
+    ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+    auto ms = r.motions();
+    ASSERT_EQ(ms.size(), 2u);
+    EXPECT_DOUBLE_EQ(ms[1].end[1], 2.0);
+    EXPECT_EQ(ms[1].line, 2u);
+  }
+}
