@@ -17,6 +17,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kSettled = 1e-7;  // of a lattice cell: a shorter Newton step is not taken
+constexpr int kRefineSteps = 12;   // Newton steps of the refinement at most (it usually takes 2 or 3)
 
 EndProfile offset_profile(const EndProfile& base, double distance) {
   auto eval = [base, distance](double u, Vec2& p, Vec2& d) {
@@ -315,8 +316,15 @@ public:
     return at;
   }
 
-  // The lattice minimum refined off the lattice: Newton on the exact gradient with the Hessian
-  // of the 3x3 stencil, each step kept only if the distance falls.
+  // The lattice minimum refined off the lattice: Newton on the exact gradient, each step kept only
+  // if the distance falls. The model's Hessian starts as the 3x3 stencil's and is corrected after
+  // every step by the secant (BFGS) update from the exact gradients at the step's ends. The
+  // stencil is a cell wide: where it straddles the joint of two elements of the cutter profile
+  // (the corner and a flank meet tangent, but with different curvatures) it averages their
+  // curvatures, and Newton with it alone only creeps towards a contact near the joint (by a
+  // factor 0.63 a step at seed 004's 70 deg insert, psi = 20 deg, still 1e-4 off after 12
+  // steps: a normal angle of 0.002 deg). The secant update learns the curvature where the
+  // contact is, and Newton converges in a few steps.
   struct Refined {
     double alpha, s, d;
     ContactSearch::Distance at;
@@ -336,7 +344,7 @@ public:
     auto at = eval(a, s);
     double det = haa * hss - has * has;
     bool newton = std::isfinite(det) && det > 0 && haa > 0;
-    for (int it = 0; it < 12 && at.hit; ++it) {
+    for (int it = 0; it < kRefineSteps && at.hit; ++it) {
       double da, ds;
       if (newton) {
         da = -(hss * at.d_alpha - has * at.d_s) / det;
@@ -352,12 +360,26 @@ public:
       // Settled: a Newton step this short moves the contact by less than the noise of d shows.
       if (newton && std::abs(da) < kSettled * ha && std::abs(ds) < kSettled * hs) break;
       bool improved = false;
+      const std::array<double, 3> h_prev{haa, hss, has};
       for (int half = 0; half < 6; ++half) {
         double na = std::clamp(a + da, -cs_.na_ * ha, cs_.na_ * ha);
         double ns = std::clamp(s + ds, 0.0, cs_.cutter_.length());
         auto trial = eval(na, ns);
         if (trial.d <= at.d) {
           improved = std::abs(na - a) > 1e-11 || std::abs(ns - s) > 1e-11;
+          if (newton && trial.hit) {  // BFGS: the model takes the curvature the step met
+            const double sa = na - a, ss = ns - s, ya = trial.d_alpha - at.d_alpha, ys = trial.d_s - at.d_s;
+            const double ba = haa * sa + has * ss, bs = has * sa + hss * ss;
+            const double sy = sa * ya + ss * ys, sbs = sa * ba + ss * bs;
+            if (sy > 0 && sbs > 0 && std::isfinite(sy + sbs)) {
+              haa += ya * ya / sy - ba * ba / sbs;
+              hss += ys * ys / sy - bs * bs / sbs;
+              has += ya * ys / sy - ba * bs / sbs;
+              const double next_det = haa * hss - has * has;
+              if (next_det > 0 && haa > 0 && std::isfinite(next_det)) det = next_det;
+              else haa = h_prev[0], hss = h_prev[1], has = h_prev[2];  // rounding: keep the last model
+            }
+          }
           a = na, s = ns, at = trial;
           break;
         }
