@@ -222,6 +222,28 @@ double ContactSearch::plane_distance(double psi) const {
   return hit.x + cutter_.outer_radius() - corner_radius_;
 }
 
+double ContactSearch::edge_normal_angle(const DiscCutter::Vertex& v, double alpha, const Vec3& n_work) const {
+  // The workpiece's inward normal in the frame of the cutter's meridian at alpha: radial, axial
+  // (the plane of the profile) and the rest (along the circle).
+  const double ca = std::cos(alpha * kDeg), sa = std::sin(alpha * kDeg);
+  const Vec3 radial{-ca, sa * e2_[1], sa * e2_[2]}, p{-n_work[0], -n_work[1], -n_work[2]};
+  const Vec2 q{p[0] * radial[0] + p[1] * radial[1] + p[2] * radial[2], p[0] * axis_[0] + p[1] * axis_[1] + p[2] * axis_[2]};
+  auto turn = [](Vec2 a, Vec2 b) { return std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y); };
+  // The nearest normal of the fan from `before` to `after` (turning left): q's own direction
+  // within it, else the nearer end.
+  Vec2 u = v.before;
+  const double sweep = turn(v.before, v.after), at = turn(v.before, q);
+  if (std::hypot(q.x, q.y) > 0 && at >= 0 && at <= sweep) {
+    const double len = std::hypot(q.x, q.y);
+    u = {q.x / len, q.y / len};
+  } else if (q.x * v.after.x + q.y * v.after.y > q.x * v.before.x + q.y * v.before.y) {
+    u = v.after;
+  }
+  const double dot = p[0] * (u.x * radial[0] + u.y * axis_[0]) + p[1] * (u.x * radial[1] + u.y * axis_[1]) +
+                     p[2] * (u.x * radial[2] + u.y * axis_[2]);
+  return std::acos(std::clamp(dot, -1.0, 1.0)) / kDeg;
+}
+
 // One phase's search on the lattice: cached evaluations, the nine-point walk, refinement.
 class StepSearch {
 public:
@@ -380,7 +402,46 @@ public:
       }
       if (!improved || (std::abs(da) < 1e-9 * ha && std::abs(ds) < 1e-9 * hs)) break;
     }
+    // On an edge of the cutter (a convex joint without a common tangent) the distance has a kink
+    // across the joint, over which Newton only hops from side to side: near one, the smallest
+    // distance along the edge itself is taken where it is lower.
+    for (const auto& v : cs_.cutter_.vertices()) {
+      if (std::abs(s - v.s) > 2 * hs && std::abs(this->s(c) - v.s) > 2 * hs) continue;
+      auto edge = edge_minimum(v.s, a);
+      if (edge.at.hit && edge.d <= at.d) a = edge.alpha, s = edge.s, at = edge.at;
+    }
     return {a, s, at.d, at};
+  }
+
+  // The smallest distance along the circle of the cutter at arc length sv: Newton on the exact
+  // d_alpha from a0, its curvature from secants, each step kept only if the distance falls.
+  Refined edge_minimum(double sv, double a0) {
+    const double ha = cs_.lattice_.alpha_step, limit = cs_.na_ * ha;
+    double a = std::clamp(a0, -limit, limit), curvature = 0;
+    auto at = eval(a, sv);
+    for (int it = 0; it < 2 * kRefineSteps && at.hit; ++it) {
+      if (!(curvature > 0)) {
+        const double b = a + ha <= limit ? a + ha : a - ha;
+        auto there = eval(b, sv);
+        curvature = there.hit ? (there.d_alpha - at.d_alpha) / (b - a) : 0;
+        if (!(curvature > 0 && std::isfinite(curvature))) break;
+        if (there.d < at.d) a = b, at = there;
+      }
+      double delta = std::clamp(-at.d_alpha / curvature, -2 * ha, 2 * ha);
+      if (std::abs(delta) < kSettled * ha) break;
+      bool fell = false;
+      for (int half = 0; half < 6 && !fell; ++half, delta /= 2) {
+        const double next = std::clamp(a + delta, -limit, limit);
+        if (next == a) break;
+        auto there = eval(next, sv);
+        if (!there.hit || there.d > at.d) continue;
+        const double c = (there.d_alpha - at.d_alpha) / (next - a);
+        if (c > 0 && std::isfinite(c)) curvature = c;
+        a = next, at = there, fell = true;
+      }
+      if (!fell) break;
+    }
+    return {a, sv, at.d, at};
   }
 
   ContactSearch::Distance eval(double a, double s) {
@@ -839,6 +900,11 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
     c.r = std::hypot(at.x_hit, at.q[1]);
     double dot = -(at.n_cutter[0] * at.n_work[0] + at.n_cutter[1] * at.n_work[1] + at.n_cutter[2] * at.n_work[2]);
     c.normal_angle = std::acos(std::clamp(dot, -1.0, 1.0)) / kDeg;
+    for (const auto& v : cutter_.vertices())
+      if (refined.s == v.s) {  // on an edge: named by the elements meeting there
+        c.normal_angle = edge_normal_angle(v, refined.alpha, at.n_work);
+        c.region = cutter_.elements()[v.element - 1].region + "/" + cutter_.elements()[v.element].region;
+      }
     c.evaluations = step.evaluations();
     c.plane_A = plane_distance(psi);
     out.push_back(c);
@@ -911,8 +977,17 @@ double ContactSearch::deepest_penetration(double psi, double A, std::int64_t* ev
     double d;
   };
   std::vector<Low> low;
+  // every 8th row, and the rows either side of each edge (there the distance rises steeply both
+  // ways: 8 rows off, a sharp tip is farther than any start is looked for)
+  std::vector<int> rows;
+  for (int j = 0; j <= ns_; j += kStride) rows.push_back(j);
+  for (const auto& v : cutter_.vertices())
+    for (double j : {std::floor(v.s / lattice_.s_step), std::ceil(v.s / lattice_.s_step)})
+      rows.push_back(std::clamp(static_cast<int>(j), 0, ns_));
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
   for (int i = -(na_ / kStride) * kStride; i <= na_; i += kStride)
-    for (int j = 0; j <= ns_; j += kStride) {
+    for (int j : rows) {
       StepSearch::Node n{i, j};
       if (step.lower_bound(n) >= contact + 0.05) continue;
       double d = step.value(n);

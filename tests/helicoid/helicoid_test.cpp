@@ -455,6 +455,48 @@ TEST(Helicoid, WideningTheSearchKeepsTheContacts) {
   }
 }
 
+// A V insert without a corner radius touches with its tip, an edge of the cutter where the two
+// flanks' normals fan out: the rotor's normal lies in the fan (the command's check measures the
+// angle to the nearest normal of it), the contact lies on the edge itself (Newton across the
+// kink only hopped from side to side, 1.2 um short at psi = 24 deg), and the interference check
+// sees the tip (every 8th row alone never came within 0.05 mm of it).
+TEST(Helicoid, SharpTipTouchesWithItsEdge) {
+  Workpiece work{EndProfile::seed004_rotor(), 860, 1, 5};
+  Lattice lattice;
+  lattice.alpha_max = 44.4;
+  ContactSearch cs(work, DiscCutter::v_insert(252, 0, 35, 18), Setting{helix_angle(860, 43), 177.7}, lattice);
+  ASSERT_EQ(cs.cutter().vertices().size(), 1u);
+  const double tip = cs.cutter().vertices()[0].s;
+  auto contacts = cs.run(range(0, 72, 6), Method::robust);
+  expect_contacts_pass_the_checks(cs, contacts, [](std::size_t) { return true; }, "sharp");
+  EXPECT_NEAR(contacts[0].A, 161.5, 1e-9);  // the tip on the root
+  EXPECT_NEAR(contacts[6].A, 176.5, 1e-9);  // and on the crest
+  expect_symmetric(contacts, 72, "sharp");
+  for (const auto& c : contacts) {
+    EXPECT_EQ(c.s, tip) << c.psi;
+    EXPECT_EQ(c.region, "flank-/flank+") << c.psi;
+    EXPECT_GT(cs.deepest_penetration(c.psi, c.A - 1e-3), 0.9e-3) << c.psi;  // a micrometre closer it cuts
+  }
+  auto brute = cs.run({24, 60}, Method::brute);
+  EXPECT_NEAR(brute[0].A, contacts[4].A, 1e-9);
+  EXPECT_NEAR(brute[1].A, contacts[10].A, 1e-9);
+  // A cutter file of lines: a flat rim 2 mm wide between two edges. It cannot reach the bottom of
+  // the root, where its edges touch the root's sides first; the crest it touches in the middle.
+  auto rim = DiscCutter::from_text("108,-14\n126,-1\n126,1\n108,14\n", "rim.csv");
+  ASSERT_EQ(rim.vertices().size(), 2u);
+  ContactSearch flat(work, rim, Setting{helix_angle(860, 43), 177.7}, lattice);
+  auto on_rim = flat.run(range(0, 72, 6), Method::robust);
+  expect_contacts_pass_the_checks(flat, on_rim, [](std::size_t) { return true; }, "rim");
+  EXPECT_GT(on_rim[0].A, 161.5 + 0.01);
+  EXPECT_TRUE(on_rim[0].region == "line1/line2" || on_rim[0].region == "line2/line3") << on_rim[0].region;
+  EXPECT_NEAR(on_rim[6].A, 176.5, 1e-9);
+  EXPECT_EQ(on_rim[6].region, "line2");
+  expect_symmetric(on_rim, 72, "rim", false);  // the edges' names do not mirror
+  auto rim_brute = flat.run({0, 18}, Method::brute);
+  EXPECT_NEAR(rim_brute[0].A, on_rim[0].A, 1e-9);
+  EXPECT_NEAR(rim_brute[1].A, on_rim[3].A, 1e-9);
+}
+
 TEST(Helicoid, PlainNinePointIsCaughtWhereTheContactJumps) {
   auto cs = seed_search(70);
   auto psis = range(0, 72, 1);
