@@ -51,12 +51,13 @@ struct Contact {
   double psi = 0;         // workpiece phase, degrees
   double A = 0;           // centre distance, mm
   double alpha = 0, s = 0;  // cutter point: angle about its axis (deg), arc length on its profile (mm)
-  std::string region;     // cutter profile element ("corner", "flank-", "flank+")
+  std::string region;     // cutter profile element ("corner", "flank-", "flank+"; "flank-/flank+" on the edge between two)
   Vec3 cutter_point{};    // world frame, mm
   Vec3 work_point{};      // the contact on the workpiece, world frame at phase psi
   double u = 0;           // profile parameter of the contact, degrees
   double r = 0;           // its radius from the workpiece axis, mm
-  double normal_angle = 0;  // between the surfaces' normals at the contact, degrees (0 = meshing)
+  double normal_angle = 0;  // between the surfaces' normals at the contact, degrees (0 = meshing; on
+                            // an edge of the cutter, to the nearest of its normals there)
   std::int64_t evaluations = 0;  // directed-distance evaluations of the search
   double plane_A = 0;     // plane-programming centre distance (offset end profile), mm
   double z = 0;           // cutter centre's Z at the contact (0 when the final motion is X), mm
@@ -103,6 +104,12 @@ public:
   // Plane programming (the method seed 004 improves on): the end profile offset by the corner
   // radius, the cutter's corner centre placed on it along X.
   double plane_distance(double psi) const;
+
+  // At a contact on an edge of the cutter (a convex joint without a common tangent, at angle
+  // alpha about its axis), the angle between the workpiece's normal and the nearest of the
+  // cutter's normals there (those fanning from the normal before the joint to the one after):
+  // 0 where the workpiece's tangent plane supports the edge. Degrees.
+  double edge_normal_angle(const DiscCutter::Vertex& v, double alpha, const Vec3& n_work) const;
 
   // Every cutter point at least `tol` clear of the workpiece at centre distance A? Returns the
   // deepest penetration found (<= 0 when clear) by a scan of the whole cutter with local descent.

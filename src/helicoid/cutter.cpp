@@ -38,6 +38,11 @@ DiscCutter::DiscCutter(std::vector<ProfileElement> elements) : elements_(std::mo
     ends_.push_back(at_element(i, 0));
     ends_.push_back(at_element(i, elements_[i].length()));
   }
+  for (std::size_t i = 1; i < elements_.size(); ++i) {
+    // travelled with the material on the left, a convex corner turns left (towards the material)
+    const Vec2 a = ends_[2 * i - 1].tangent, b = ends_[2 * i].tangent;
+    if (a.x * b.y - a.y * b.x > 1e-9) vertices_.push_back({starts_[i], ends_[2 * i - 1].normal, ends_[2 * i].normal, i});
+  }
 }
 
 DiscCutter DiscCutter::v_insert(double diameter, double corner_radius, double included_angle, double flank_depth) {

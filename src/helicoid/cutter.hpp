@@ -50,11 +50,22 @@ public:
   const std::string& region(double s) const { return elements_[at(s).element].region; }
   double corner_middle() const;  // arc length of the outermost point
 
+  // A convex joint without a common tangent (the tip of a V without a corner radius, a vertex
+  // between two lines of a cutter file): an edge of the cutter, whose normals fan from the one
+  // before to the one after; a surface touching the edge has its normal in that fan.
+  struct Vertex {
+    double s;               // arc length
+    Vec2 before, after;     // outward unit normals of the elements meeting there
+    std::size_t element;    // the element after it
+  };
+  const std::vector<Vertex>& vertices() const { return vertices_; }
+
 private:
   Point at_element(std::size_t i, double local) const;
   std::vector<ProfileElement> elements_;
   std::vector<double> starts_;
   std::vector<Point> ends_;  // each element's first and last point
+  std::vector<Vertex> vertices_;
   double total_ = 0, outer_ = 0;
 };
 

@@ -3,9 +3,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <numbers>
+#include <string>
 
 #include "geom/curve.hpp"
 #include "helicoid/contact.hpp"
@@ -25,6 +28,61 @@ std::vector<double> range(double from, double to, double step) {
   std::vector<double> v;
   for (int i = 0; from + i * step <= to + 1e-9; ++i) v.push_back(from + i * step);
   return v;
+}
+
+// What `ncurve helicoid --example seed004 [--included-angle DEG] [--hand left] [--ref-radius R]
+// [--flank-depth F] [--alpha-range DEG]` searches: the seed's rotor and insert, flanks 3 mm
+// deeper than the rotor's profile (15 mm), the swing at the reference radius (by default the mean
+// of root and crest, 43 mm), the default lattice over the cutter's reach plus 2 degrees, and the
+// start distance 177.7 mm.
+ContactSearch cli_search(double included_angle, int hand = 1, double ref_radius = 43, double flank_depth = 18,
+                         double alpha_range = 0) {
+  Workpiece work{EndProfile::seed004_rotor(), 860, hand, 5};
+  const double outer = 126, depth = 15;
+  Lattice lattice;
+  lattice.alpha_max = alpha_range > 0 ? alpha_range
+                                      : std::min(89.0, std::acos(std::max(-1.0, (outer - depth - flank_depth) / outer)) / kDeg + 2);
+  return ContactSearch(work, DiscCutter::v_insert(2 * outer, 1.2, included_angle, flank_depth),
+                       Setting{helix_angle(860, ref_radius), 177.7}, lattice);
+}
+
+// The checks `ncurve helicoid` makes: parallel normals at every contact (it stops at 1e-3 deg,
+// here 1e-4), and no interference (1e-6 mm) at the contacts `checked` says.
+void expect_contacts_pass_the_checks(const ContactSearch& cs, const std::vector<Contact>& contacts,
+                                     const std::function<bool(std::size_t)>& checked, const std::string& what) {
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const auto& c = contacts[i];
+    EXPECT_LT(c.normal_angle, 1e-4) << what << " psi " << c.psi << " " << c.region << " s " << c.s;
+    if (checked(i)) {
+      EXPECT_LT(cs.deepest_penetration(c.psi, c.A), 1e-6) << what << " psi " << c.psi;
+    }
+  }
+}
+
+// The indices either side of each change of the cutter element that touches.
+std::vector<std::size_t> around_the_jumps(const std::vector<Contact>& contacts) {
+  std::vector<std::size_t> at;
+  for (std::size_t i = 1; i < contacts.size(); ++i)
+    if (contacts[i].region != contacts[i - 1].region) at.push_back(i - 1), at.push_back(i);
+  return at;
+}
+
+// Turned half a turn about the X axis (the line from the rotor's axis to the cutter's centre),
+// rotor and cutter are themselves again (the rotor's profile is symmetric about its root, the
+// insert about its mid plane, with its flanks swapped), whatever the hand and the swing: A(psi) =
+// A(period - psi), the contact on the other flank.
+void expect_symmetric(const std::vector<Contact>& contacts, double period, const std::string& what, bool regions = true) {
+  auto mirror = [](const std::string& region) {
+    return region == "flank+" ? std::string("flank-") : region == "flank-" ? std::string("flank+") : region;
+  };
+  for (const auto& c : contacts)
+    for (const auto& m : contacts)
+      if (std::abs(c.psi + m.psi - period) < 1e-9) {
+        EXPECT_NEAR(c.A, m.A, 1e-6) << what << " psi " << c.psi;
+        if (regions) {
+          EXPECT_EQ(c.region, mirror(m.region)) << what << " psi " << c.psi;
+        }
+      }
 }
 
 TEST(Helicoid, NativeRotorIsTheCatalogueCurve) {
@@ -282,6 +340,161 @@ TEST(Helicoid, RobustSearchNeedsFewerThanThirtyEvaluationsPerStep) {
   std::int64_t evaluations = 0;
   for (const auto& c : contacts) evaluations += c.evaluations;
   EXPECT_LT(static_cast<double>(evaluations) / static_cast<double>(contacts.size()), 30.0);
+}
+
+// What users run: `ncurve helicoid --example seed004 [--hand left]` at its default 1 deg steps over
+// a lobe, the robust search, every contact checked as the command checks it.
+TEST(Helicoid, DefaultsPassTheChecksAtEveryDegreeSeedInsert) {
+  std::vector<Contact> right;
+  for (int hand : {1, -1}) {
+    auto cs = cli_search(35, hand);
+    auto contacts = cs.run(range(0, 72, 1), Method::robust);
+    const std::string what = hand > 0 ? "right" : "left";
+    expect_contacts_pass_the_checks(cs, contacts, [](std::size_t) { return true; }, what);
+    EXPECT_NEAR(contacts[0].A, 161.5, 1e-6) << what;   // root
+    EXPECT_NEAR(contacts[36].A, 176.5, 1e-6) << what;  // crest
+    expect_symmetric(contacts, 72, what);
+    for (const auto& c : contacts) EXPECT_EQ(c.region, "corner") << what << " psi " << c.psi;
+    if (hand > 0) right = contacts;
+    else
+      for (std::size_t i = 0; i < contacts.size(); ++i) EXPECT_NEAR(contacts[i].A, right[i].A, 1e-6) << contacts[i].psi;
+  }
+}
+
+// `ncurve helicoid --example seed004 --included-angle 70`: the contact jumps from the corner to
+// flank+ at psi = 17 deg, slides back over the joint to the corner at 20 deg (where a refinement
+// with the stencil's Hessian stopped 0.002 deg from parallel normals), and the mirror image at 53
+// and 56 deg.
+TEST(Helicoid, DefaultsPassTheChecksAtEveryDegreeWideInsert) {
+  std::vector<Contact> right;
+  for (int hand : {1, -1}) {
+    auto cs = cli_search(70, hand);
+    auto contacts = cs.run(range(0, 72, 1), Method::robust);
+    const std::string what = hand > 0 ? "right" : "left";
+    expect_contacts_pass_the_checks(cs, contacts, [](std::size_t) { return true; }, what);
+    EXPECT_NEAR(contacts[0].A, 161.5, 1e-6) << what;
+    EXPECT_NEAR(contacts[36].A, 176.5, 1e-6) << what;
+    expect_symmetric(contacts, 72, what);
+    EXPECT_EQ(around_the_jumps(contacts).size(), 8u) << what;  // 4 jumps
+    const std::string out = hand > 0 ? "flank+" : "flank-";  // the left hand is the mirror image
+    EXPECT_EQ(contacts[16].region, "corner") << what;
+    EXPECT_EQ(contacts[17].region, out) << what;
+    EXPECT_EQ(contacts[20].region, "corner") << what;
+    if (hand > 0) right = contacts;
+    else
+      for (std::size_t i = 0; i < contacts.size(); ++i) EXPECT_NEAR(contacts[i].A, right[i].A, 1e-6) << contacts[i].psi;
+  }
+}
+
+// Brute force on the default lattice (0.7 s a phase) at the phases either side of the first two
+// jumps; the last two are their mirror images (checked above).
+TEST(Helicoid, WideInsertRobustIsBruteAroundTheJumps) {
+  auto cs = cli_search(70);
+  auto robust = cs.run(range(0, 36, 1), Method::robust);
+  auto at = around_the_jumps(robust);
+  ASSERT_EQ(at.size(), 4u);
+  std::vector<double> psis;
+  for (auto i : at) psis.push_back(robust[i].psi);
+  auto brute = cs.run(psis, Method::brute);
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    EXPECT_NEAR(robust[at[k]].A, brute[k].A, 1e-6) << psis[k];
+    EXPECT_EQ(robust[at[k]].region, brute[k].region) << psis[k];
+    EXPECT_LT(brute[k].normal_angle, 1e-4) << psis[k];
+  }
+}
+
+// Other settings of the swing (--ref-radius at the root, near the crest) and both hands, with
+// both inserts: the jumps move (at a 36 mm reference the contact leaves the corner at 15 deg,
+// 3 mm up the flank, where a flank trace resting on the corner's shoulder never looked), and
+// the contacts stay symmetric and pass the checks around every jump.
+TEST(Helicoid, OtherReferenceRadiiAndHandsPassTheChecks) {
+  for (double angle : {35.0, 70.0})
+    for (int hand : {1, -1})
+      for (double ref : {36.0, 50.0}) {
+        auto cs = cli_search(angle, hand, ref);
+        auto contacts = cs.run(range(0, 72, 1), Method::robust);
+        const std::string what = fmt::format("{} deg, hand {}, ref {}", angle, hand, ref);
+        auto at = around_the_jumps(contacts);
+        expect_contacts_pass_the_checks(
+            cs, contacts, [&](std::size_t i) { return i == 0 || i == 36 || std::find(at.begin(), at.end(), i) != at.end(); },
+            what);
+        EXPECT_NEAR(contacts[0].A, 161.5, 1e-6) << what;
+        EXPECT_NEAR(contacts[36].A, 176.5, 1e-6) << what;
+        expect_symmetric(contacts, 72, what);
+        EXPECT_EQ(at.empty(), angle < 60) << what;
+      }
+}
+
+// Quarter-degree steps (as for `--step 0.25 --program-tol`): the traces' predictions are finer, the
+// rates per step smaller; the contacts are those of the 1 deg run where they meet.
+TEST(Helicoid, QuarterDegreeStepsWideInsert) {
+  auto cs = cli_search(70);
+  auto fine = cs.run(range(0, 72, 0.25), Method::robust);
+  auto coarse = cs.run(range(0, 72, 1), Method::robust);
+  auto at = around_the_jumps(fine);
+  expect_contacts_pass_the_checks(
+      cs, fine, [&](std::size_t i) { return std::find(at.begin(), at.end(), i) != at.end(); }, "0.25 deg");
+  expect_symmetric(fine, 72, "0.25 deg");
+  for (std::size_t i = 0; i < coarse.size(); ++i) EXPECT_NEAR(fine[4 * i].A, coarse[i].A, 1e-6) << coarse[i].psi;
+}
+
+// Widening the searched region (--alpha-range, --flank-depth) must leave every contact where it
+// is: it used to move the contact at psi = 20 deg further from parallel normals (0.12 deg with
+// 25 mm flanks).
+TEST(Helicoid, WideningTheSearchKeepsTheContacts) {
+  auto psis = range(0, 72, 1);
+  auto cs = cli_search(70);
+  auto reference = cs.run(psis, Method::robust);
+  auto wide_alpha = cli_search(70, 1, 43, 18, 60).run(psis, Method::robust);
+  auto deep_flanks = cli_search(70, 1, 43, 25).run(psis, Method::robust);
+  for (std::size_t i = 0; i < psis.size(); ++i) {
+    EXPECT_NEAR(wide_alpha[i].A, reference[i].A, 1e-6) << psis[i];
+    EXPECT_NEAR(deep_flanks[i].A, reference[i].A, 1e-6) << psis[i];
+    EXPECT_LT(wide_alpha[i].normal_angle, 1e-4) << psis[i];
+    EXPECT_LT(deep_flanks[i].normal_angle, 1e-4) << psis[i];
+  }
+}
+
+// A V insert without a corner radius touches with its tip, an edge of the cutter where the two
+// flanks' normals fan out: the rotor's normal lies in the fan (the command's check measures the
+// angle to the nearest normal of it), the contact lies on the edge itself (Newton across the
+// kink only hopped from side to side, 1.2 um short at psi = 24 deg), and the interference check
+// sees the tip (every 8th row alone never came within 0.05 mm of it).
+TEST(Helicoid, SharpTipTouchesWithItsEdge) {
+  Workpiece work{EndProfile::seed004_rotor(), 860, 1, 5};
+  Lattice lattice;
+  lattice.alpha_max = 44.4;
+  ContactSearch cs(work, DiscCutter::v_insert(252, 0, 35, 18), Setting{helix_angle(860, 43), 177.7}, lattice);
+  ASSERT_EQ(cs.cutter().vertices().size(), 1u);
+  const double tip = cs.cutter().vertices()[0].s;
+  auto contacts = cs.run(range(0, 72, 6), Method::robust);
+  expect_contacts_pass_the_checks(cs, contacts, [](std::size_t) { return true; }, "sharp");
+  EXPECT_NEAR(contacts[0].A, 161.5, 1e-9);  // the tip on the root
+  EXPECT_NEAR(contacts[6].A, 176.5, 1e-9);  // and on the crest
+  expect_symmetric(contacts, 72, "sharp");
+  for (const auto& c : contacts) {
+    EXPECT_EQ(c.s, tip) << c.psi;
+    EXPECT_EQ(c.region, "flank-/flank+") << c.psi;
+    EXPECT_GT(cs.deepest_penetration(c.psi, c.A - 1e-3), 0.9e-3) << c.psi;  // a micrometre closer it cuts
+  }
+  auto brute = cs.run({24, 60}, Method::brute);
+  EXPECT_NEAR(brute[0].A, contacts[4].A, 1e-9);
+  EXPECT_NEAR(brute[1].A, contacts[10].A, 1e-9);
+  // A cutter file of lines: a flat rim 2 mm wide between two edges. It cannot reach the bottom of
+  // the root, where its edges touch the root's sides first; the crest it touches in the middle.
+  auto rim = DiscCutter::from_text("108,-14\n126,-1\n126,1\n108,14\n", "rim.csv");
+  ASSERT_EQ(rim.vertices().size(), 2u);
+  ContactSearch flat(work, rim, Setting{helix_angle(860, 43), 177.7}, lattice);
+  auto on_rim = flat.run(range(0, 72, 6), Method::robust);
+  expect_contacts_pass_the_checks(flat, on_rim, [](std::size_t) { return true; }, "rim");
+  EXPECT_GT(on_rim[0].A, 161.5 + 0.01);
+  EXPECT_TRUE(on_rim[0].region == "line1/line2" || on_rim[0].region == "line2/line3") << on_rim[0].region;
+  EXPECT_NEAR(on_rim[6].A, 176.5, 1e-9);
+  EXPECT_EQ(on_rim[6].region, "line2");
+  expect_symmetric(on_rim, 72, "rim", false);  // the edges' names do not mirror
+  auto rim_brute = flat.run({0, 18}, Method::brute);
+  EXPECT_NEAR(rim_brute[0].A, on_rim[0].A, 1e-9);
+  EXPECT_NEAR(rim_brute[1].A, on_rim[3].A, 1e-9);
 }
 
 TEST(Helicoid, PlainNinePointIsCaughtWhereTheContactJumps) {
