@@ -68,31 +68,24 @@ std::string find_folder(const std::string& name) {
   throw std::runtime_error(fmt::format("no folder '{}'", name));
 }
 
-CLI::Validator profile_path() {
+namespace {
+// A transform that replaces the value by what `find` makes of it, or fails with find's message.
+CLI::Validator resolving(std::string (*find)(const std::string&), const char* type, const char* name) {
   return CLI::Validator(
-      [](std::string& value) -> std::string {
+      [find](std::string& value) -> std::string {
         try {
-          value = find_profile(value);
+          value = find(value);
           return {};
         } catch (const std::runtime_error& e) {
           return e.what();
         }
       },
-      "PROFILE", "profile");
+      type, name);
 }
+}  // namespace
 
-CLI::Validator folder_path() {
-  return CLI::Validator(
-      [](std::string& value) -> std::string {
-        try {
-          value = find_folder(value);
-          return {};
-        } catch (const std::runtime_error& e) {
-          return e.what();
-        }
-      },
-      "DIR", "folder");
-}
+CLI::Validator profile_path() { return resolving(find_profile, "PROFILE", "profile"); }
+CLI::Validator folder_path() { return resolving(find_folder, "DIR", "folder"); }
 
 CLI::Validator input_file() {
   return CLI::Validator(
