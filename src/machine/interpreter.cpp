@@ -594,6 +594,8 @@ void Interpreter::exec_nc(const Block& b) {
         default: break;
       }
     }
+  } else if (cycle_ != 0) {
+    moved = canned_cycle_block();
   } else {
     AxisVector target = pos_;
     bool axes = axis_target(target);
@@ -609,6 +611,7 @@ void Interpreter::exec_nc(const Block& b) {
     if (c.letter != 'M') continue;
     int m = integer(c, "M");
     last_m_ = m;
+    if (m == 29) rigid_tapping_ = true;  // rigid tapping: the next G84/G74 is not simulated
     switch (m) {
       case 98: {
         if (!has('P')) alarm("PS0076", "M98 needs P (the subprogram number)", b.column);

@@ -126,6 +126,12 @@ private:
   void note_extent(const AxisVector& p);
   double feed_seconds(double length, double mean_radius) const;
 
+  // drilling canned cycles (canned_cycles.cpp)
+  void select_canned_cycle(int g, std::uint16_t column);
+  void cancel_canned_cycle();
+  bool canned_cycle_block();  // a block in cycle mode: stores the data, drills when it has axis words
+  void drill_hole(const AxisVector& hole, double r_level, double z_level);
+
   // variables (variables.cpp)
  public:
   nc::Value read_var(int n, std::uint16_t column);
@@ -200,6 +206,14 @@ private:
   bool modal_call_ = false;
   int modal_program_ = 0;
   int modal_repeat_ = 1;
+  // drilling canned cycle (group 09): 0 = G80, else 73, 74, 81..89; data kept while it is active
+  int cycle_ = 0;
+  bool cycle_return_initial_ = true;  // G98 (power-on), G99: return to the R point level
+  double cycle_initial_z_ = 0;        // Z where the cycle mode started
+  std::optional<double> cycle_r_, cycle_z_;  // mm as written (G91: R from the initial level, Z from R)
+  double cycle_q_ = 0, cycle_p_ = 0;  // peck depth (mm), dwell (s)
+  bool cycle_has_q_ = false;
+  bool rigid_tapping_ = false;        // M29 given since the last G80
   std::vector<Arg> modal_args_;
   void select_lathe_offset(int number, std::uint16_t column);
   double* lathe_offset_field(int n);

@@ -78,13 +78,24 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
   const bool lathe = profile_.lathe();
   const bool system_a = lathe && profile_.gcode_system == 'A';
   exact_stop_once_ = false;
+  bool group01 = false;
+  struct CancelCycle {  // after the block's codes: G00..G03 with G81 in one block cancel it too
+    Interpreter* self;
+    bool& group01;
+    ~CancelCycle() {
+      if (group01 && self->cycle_ != 0) self->cancel_canned_cycle();
+    }
+  } cancel_cycle{this, group01};
   for (std::size_t i = 0; i < g_codes_.size(); ++i) {
     int g = g_codes_[i];
     std::uint16_t column = 0;
     for (const Cmd& c : cmds_)
       if (c.letter == 'G' && std::lround(c.value * 10) == g) column = c.column;
     switch (g) {
-      case 0: case 10: case 20: case 30: motion_ = g / 10; break;
+      case 0: case 10: case 20: case 30:
+        motion_ = g / 10;
+        group01 = true;  // a group 01 code ends a drilling canned cycle
+        break;
       case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 170: case 180: case 190:
@@ -108,7 +119,10 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         break;
       case 200: inch_ = true; break;
       case 210: inch_ = false; break;
-      case 800: case 670: case 690: case 150: break;  // cancels: nothing active to cancel
+      case 800:
+        if (!lathe) cancel_canned_cycle();
+        break;
+      case 670: case 690: case 150: break;  // cancels: nothing active to cancel
       // AI contour control (G05.1 Q1/Q0, G05 P10000/P0) and look-ahead control (G08 P1/P0) change
       // how the control accelerates, not the path: the time planner's profile stands for them
       case 51: case 50: case 80: break;
@@ -149,12 +163,17 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           if (g == 940) { feed_per_rev_ = false; break; }
           if (g == 950) { feed_per_rev_ = true; break; }
           if (g == 920) { one_shot.push_back(g); break; }
-          if (g == 980 || g == 990) break;  // canned cycle return level
+          if (g == 980 || g == 990) {  // canned cycle return level: initial level, point R
+            cycle_return_initial_ = g == 980;
+            break;
+          }
         }
         if (lathe && g >= 700 && g <= 760)
           alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
-        if (!lathe && ((g >= 730 && g <= 890 && g != 800) || g == 740))
-          alarm("NC9001", fmt::format("G{} (canned cycle) is not supported yet", g / 10), column);
+        if (!lathe && g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890))) {
+          select_canned_cycle(g, column);
+          break;
+        }
         if (const char* what = kindless_unsupported(g))
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
         alarm("PS0010", unknown_g_code(g, profile_), column);

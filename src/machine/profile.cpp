@@ -233,6 +233,11 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   else if (key == "3402#3") p.power_on_g91 = bit();
   else if (key == "6001#5") p.t_code_calls_o9000 = bit();
   else if (key == "3410") p.arc_radius_tolerance = value * p.increment;
+  else if (key == "5114" || key == "5115") {
+    if (value < 0 || value != std::floor(value))
+      throw std::runtime_error(fmt::format("parameter {} is a whole number of increments, 0 or more", key));
+    (key == "5114" ? p.peck_retract : p.peck_clearance) = value * p.increment;
+  }
   else {
     int n = 0;
     try {
@@ -251,7 +256,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else
       throw std::runtime_error(
           fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 5003#0, "
-                      "5008#1, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089)",
+                      "5008#1, 5114, 5115, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089)",
                       key));
   }
 }

@@ -81,6 +81,8 @@ struct MachineProfile {
   int subprogram_nesting = 10;      // M98 calls: 10 on 0i, 15 on 30i
   int number_digits = 8;            // digits in one number (word or constant), leading zeros counted
   double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
+  double peck_retract = 0;    // No.5114, mm: G73's retraction d after each peck
+  double peck_clearance = 0;  // No.5115, mm: G83's clearance d above the previous peck's depth
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   std::array<int, 10> g_code_macros{};  // No.6050..6059: G code that calls O9010..O9019
   std::array<int, 10> m_code_macros{};  // No.6080..6089: M code that calls O9020..O9029

@@ -12,7 +12,8 @@ using nc::Value;
 
 namespace {
 int gcode_for_group(int group, int motion, int plane, bool incremental, bool feed_per_rev, bool inch, bool css,
-                    int length_comp, bool modal_call, int work_index, int exact_stop, bool lathe_a) {
+                    int length_comp, bool modal_call, int work_index, int exact_stop, bool lathe_a, int cycle,
+                    bool return_initial) {
   switch (group) {
     case 1: return motion;
     case 2: return plane;
@@ -22,8 +23,8 @@ int gcode_for_group(int group, int motion, int plane, bool incremental, bool fee
     case 6: return inch ? 20 : 21;
     case 7: return 40;
     case 8: return length_comp;
-    case 9: return 80;
-    case 10: return 98;
+    case 9: return cycle == 0 ? 80 : cycle;
+    case 10: return return_initial ? 98 : 99;
     case 11: return 50;
     case 12: return modal_call ? 66 : 67;
     case 13: return css ? 96 : 97;
@@ -157,7 +158,8 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     bool lathe_a = profile_.lathe() && profile_.gcode_system == 'A';
     if (n == 4014 && work_index_ > 6) return Value::of(54.1);
     return Value::of(gcode_for_group(n - 4000, motion_, plane_, incremental_, feed_per_rev_, inch_, css_,
-                                     length_comp_, modal_call_, work_index_, exact_stop_code_, lathe_a));
+                                     length_comp_, modal_call_, work_index_, exact_stop_code_, lathe_a, cycle_,
+                                     cycle_return_initial_));
   }
   if (n >= 4101 && n <= 4130) {
     switch (n - 4100) {

@@ -1,0 +1,189 @@
+// Drilling canned cycles (G73, G74, G81..G86, G89, G80, G98/G99) against moves worked out by hand from
+// the FANUC 30i-B / 0i-MF operator's manual: position at the current level, rapid to R, the cycle's
+// motions to Z, return to the initial level (G98) or R (G99); G91 R from the initial level, Z from R.
+#include <gtest/gtest.h>
+#include <fmt/format.h>
+
+#include <string>
+#include <vector>
+
+#include "support/run_program.hpp"
+
+using namespace ncurve;
+using ncurve::test::run;
+using machine::MoveKind;
+
+namespace {
+struct Want {
+  std::uint32_t line;
+  MoveKind kind;
+  double x, y, z;
+};
+
+std::string listing(const std::vector<machine::Move>& got) {
+  std::string s;
+  for (const auto& m : got)
+    s += fmt::format("{} {} {:.4f} {:.4f} {:.4f}\n", m.line, machine::to_string(m.kind), m.end[0], m.end[1], m.end[2]);
+  return s;
+}
+
+// Every move (motions, dwells and spindle events) from the first on line `from`.
+void expect_moves(const test::Ran& r, std::uint32_t from, const std::vector<Want>& want) {
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  std::vector<machine::Move> got;
+  for (const auto& m : r.moves)
+    if (m.line >= from && (m.is_motion() || m.kind == MoveKind::dwell || m.kind == MoveKind::spindle))
+      got.push_back(m);
+  ASSERT_EQ(got.size(), want.size()) << listing(got);
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    SCOPED_TRACE(fmt::format("move {}\n{}", i, listing(got)));
+    EXPECT_EQ(got[i].line, want[i].line);
+    EXPECT_EQ(machine::to_string(got[i].kind), machine::to_string(want[i].kind));
+    EXPECT_NEAR(got[i].end[0], want[i].x, 1e-9);
+    EXPECT_NEAR(got[i].end[1], want[i].y, 1e-9);
+    EXPECT_NEAR(got[i].end[2], want[i].z, 1e-9);
+  }
+}
+constexpr auto R = MoveKind::rapid;
+constexpr auto L = MoveKind::line;
+constexpr auto D = MoveKind::dwell;
+constexpr auto S = MoveKind::spindle;
+}  // namespace
+
+TEST(CannedCycles, G81G98ReturnsToTheInitialLevel) {
+  auto r = run("G90 G17 G00 X0. Y0. Z50.\nG98 G81 X10. Y20. Z-5. R2. F100.\nX30.\nG80\nM30\n");
+  expect_moves(r, 2, {{2, R, 10, 20, 50}, {2, R, 10, 20, 2}, {2, L, 10, 20, -5}, {2, R, 10, 20, 50},
+                      {3, R, 30, 20, 50}, {3, R, 30, 20, 2}, {3, L, 30, 20, -5}, {3, R, 30, 20, 50}});
+}
+
+TEST(CannedCycles, G81G99ReturnsToPointR) {
+  auto r = run("G90 G17 G00 X0. Y0. Z50.\nG99 G81 X10. Y20. Z-5. R2. F100.\nX30.\nG80\nM30\n");
+  expect_moves(r, 2, {{2, R, 10, 20, 50}, {2, R, 10, 20, 2}, {2, L, 10, 20, -5}, {2, R, 10, 20, 2},
+                      {3, R, 30, 20, 2}, {3, L, 30, 20, -5}, {3, R, 30, 20, 2}});
+  // the hole position at the return level is the end point
+  EXPECT_DOUBLE_EQ(r.var(5001), 30);
+  EXPECT_DOUBLE_EQ(r.var(5003), 2);
+}
+
+// G91: R from the initial level (20 - 18 = 2), Z from R (2 - 7 = -5); K3 steps X by 10 each time.
+TEST(CannedCycles, G91RepeatsStepByTheIncrement) {
+  auto r = run("G90 G00 X0. Y0. Z20.\nG91 G99 G81 X10. Z-7. R-18. K3 F100.\nM30\n");
+  expect_moves(r, 2, {{2, R, 10, 0, 20}, {2, R, 10, 0, 2}, {2, L, 10, 0, -5}, {2, R, 10, 0, 2},
+                      {2, R, 20, 0, 2}, {2, L, 20, 0, -5}, {2, R, 20, 0, 2},
+                      {2, R, 30, 0, 2}, {2, L, 30, 0, -5}, {2, R, 30, 0, 2}});
+}
+
+TEST(CannedCycles, K0StoresTheDataAndDrillsNothing) {
+  auto r = run("G90 G00 X0. Y0. Z20.\nG98 G81 X10. Z-5. R2. K0 F100.\nX20.\nM30\n");
+  expect_moves(r, 2, {{3, R, 20, 0, 20}, {3, R, 20, 0, 2}, {3, L, 20, 0, -5}, {3, R, 20, 0, 20}});
+}
+
+// G83 Z-10 Q3 from R2 with d = No.5115 = 0.5: 2 -> -1 -> 2 -> -0.5 -> -4 -> 2 -> -3.5 -> -7 -> 2 -> -6.5 -> -10.
+TEST(CannedCycles, G83PecksBackToR) {
+  auto p = machine::default_mill();
+  machine::set_parameter(p, "5115", 500);
+  auto r = run("G90 G00 X0. Y0. Z10.\nG98 G83 X5. Z-10. R2. Q3. F100.\nM30\n", p);
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 2}, {2, L, 5, 0, -1}, {2, R, 5, 0, 2}, {2, R, 5, 0, -0.5},
+                      {2, L, 5, 0, -4}, {2, R, 5, 0, 2}, {2, R, 5, 0, -3.5}, {2, L, 5, 0, -7}, {2, R, 5, 0, 2},
+                      {2, R, 5, 0, -6.5}, {2, L, 5, 0, -10}, {2, R, 5, 0, 10}});
+}
+
+// G73 Z-7 Q3 from R1 with d = No.5114 = 0.4: 1 -> -2 -> -1.6 -> -5 -> -4.6 -> -7, back to R (G99).
+TEST(CannedCycles, G73RetractsByD) {
+  auto p = machine::default_mill();
+  machine::set_parameter(p, "5114", 400);
+  auto r = run("G90 G00 X0. Y0. Z10.\nG99 G73 X5. Z-7. R1. Q3. F100.\nM30\n", p);
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -2}, {2, R, 5, 0, -1.6}, {2, L, 5, 0, -5},
+                      {2, R, 5, 0, -4.6}, {2, L, 5, 0, -7}, {2, R, 5, 0, 1}});
+  EXPECT_DOUBLE_EQ(p.peck_retract, 0.4);
+}
+
+TEST(CannedCycles, G82AndG89DwellAtTheBottom) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG98 G82 X5. Z-3. R1. P500 F100.\nG89 X8. P250\nM30\n");
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -3}, {2, D, 5, 0, -3}, {2, R, 5, 0, 10},
+                      {3, R, 8, 0, 10}, {3, R, 8, 0, 1}, {3, L, 8, 0, -3}, {3, D, 8, 0, -3}, {3, L, 8, 0, 1},
+                      {3, R, 8, 0, 10}});
+  std::vector<double> dwells;
+  for (const auto& m : r.moves)
+    if (m.kind == MoveKind::dwell) dwells.push_back(m.seconds);
+  ASSERT_EQ(dwells.size(), 2u);
+  EXPECT_DOUBLE_EQ(dwells[0], 0.5);
+  EXPECT_DOUBLE_EQ(dwells[1], 0.25);
+}
+
+TEST(CannedCycles, G85FeedsOutToR) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG99 G85 X5. Z-3. R1. F100.\nM30\n");
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -3}, {2, L, 5, 0, 1}});
+}
+
+TEST(CannedCycles, G86StopsTheSpindleAtTheBottom) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG98 G86 X5. Z-3. R1. F100.\nM30\n");
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -3}, {2, S, 5, 0, -3}, {2, R, 5, 0, 10},
+                      {2, S, 5, 0, 10}});
+  std::vector<int> codes;
+  for (const auto& m : r.moves)
+    if (m.kind == MoveKind::spindle) codes.push_back(m.code);
+  EXPECT_EQ(codes, (std::vector<int>{5, 3}));
+}
+
+TEST(CannedCycles, G84ReversesTheSpindleToBackOut) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG98 G84 X5. Z-3. R1. P300 F100.\nM30\n");
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -3}, {2, D, 5, 0, -3}, {2, S, 5, 0, -3},
+                      {2, L, 5, 0, 1}, {2, S, 5, 0, 1}, {2, R, 5, 0, 10}});
+  std::vector<int> codes;
+  for (const auto& m : r.moves)
+    if (m.kind == MoveKind::spindle) codes.push_back(m.code);
+  EXPECT_EQ(codes, (std::vector<int>{4, 3}));
+  auto left = run("G90 G00 X0. Y0. Z10.\nG98 G74 X5. Z-3. R1. F100.\nM30\n");
+  codes.clear();
+  for (const auto& m : left.moves)
+    if (m.kind == MoveKind::spindle) codes.push_back(m.code);
+  EXPECT_EQ(codes, (std::vector<int>{3, 4}));
+}
+
+TEST(CannedCycles, G80AndG01Cancel) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG99 G81 X5. Z-3. R1. F100.\nG80 X20.\nG81 X30. Z-3. R1.\nG01 X40.\nX50.\nM30\n");
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -3}, {2, R, 5, 0, 1},
+                      {3, R, 20, 0, 1},
+                      {4, R, 30, 0, 1}, {4, L, 30, 0, -3}, {4, R, 30, 0, 1},
+                      {5, L, 40, 0, 1}, {6, L, 50, 0, 1}});
+  // after G80 the data are gone: a new cycle needs Z again
+  auto again = run("G90 G00 X0. Y0. Z10.\nG81 X5. Z-3. R1. F100.\nG80\nG81 X10. R1.\nM30\n");
+  EXPECT_EQ(again.alarm_code(), "PS0045");
+}
+
+// R, F and P alone change the kept data but drill nothing; Z is an axis word and drills where the tool is.
+TEST(CannedCycles, ABlockWithoutAxisWordsDoesNotDrill) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG98 G81 X5. Z-3. R1. F100.\nR2.\nF200.\nX8.\nZ-4.\nM30\n");
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -3}, {2, R, 5, 0, 10},
+                      {5, R, 8, 0, 10}, {5, R, 8, 0, 2}, {5, L, 8, 0, -3}, {5, R, 8, 0, 10},
+                      {6, R, 8, 0, 2}, {6, L, 8, 0, -4}, {6, R, 8, 0, 10}});
+  EXPECT_DOUBLE_EQ(r.motions().at(7).feed, 200);
+}
+
+TEST(CannedCycles, MissingDataAlarms) {
+  EXPECT_EQ(run("G00 Z10.\nG81 X5. R2. F100.\nM30\n").alarm_code(), "PS0045");
+  EXPECT_EQ(run("G00 Z10.\nG81 X5. Z-2. F100.\nM30\n").alarm_code(), "PS0045");
+  auto q = run("G00 Z10.\nG83 X5. Z-10. R2. F100.\nM30\n");
+  EXPECT_EQ(q.alarm_code(), "PS0045");
+  EXPECT_EQ(q.alarm_line(), 2u);
+  EXPECT_EQ(run("G00 Z10.\nG73 X5. Z-10. R2. Q0 F100.\nM30\n").alarm_code(), "PS0045");
+}
+
+TEST(CannedCycles, UnsupportedStopWithNC9001) {
+  for (const char* text : {"G00 Z10.\nG76 X5. Z-3. R1. Q1. F100.\nM30\n", "G00 Z10.\nG87 X5. Z-3. R1. F100.\nM30\n",
+                           "G00 Z10.\nG88 X5. Z-3. R1. F100.\nM30\n", "G00 Z10.\nG18 G81 X5. Z-3. R1. F100.\nM30\n",
+                           "G00 Z10.\nM29 S500\nG84 X5. Z-3. R1. F100.\nM30\n"}) {
+    auto r = run(text);
+    EXPECT_EQ(r.alarm_code(), "NC9001") << text;
+  }
+}
+
+TEST(CannedCycles, ModalInformation) {
+  auto r = run("G00 Z10.\nG99 G83 Z-3. R1. Q1. F100.\n#100=#4009\n#101=#4010\nG98 G80\n#102=#4009\n#103=#4010\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_DOUBLE_EQ(r.var(100), 83);
+  EXPECT_DOUBLE_EQ(r.var(101), 99);
+  EXPECT_DOUBLE_EQ(r.var(102), 80);
+  EXPECT_DOUBLE_EQ(r.var(103), 98);
+}
