@@ -80,16 +80,6 @@ std::string roff(std::string s) {
   return out;
 }
 
-std::string shipped_profile_names() {
-  std::vector<std::string> n;
-  if (auto dir = shipped_dir()) {
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(*dir) / "profiles", ec))
-      if (e.path().extension() == ".toml") n.push_back(e.path().stem().string());
-  }
-  std::sort(n.begin(), n.end());
-  return fmt::format("{}", fmt::join(n, " "));
-}
 
 }  // namespace
 
@@ -103,7 +93,7 @@ std::string bash_completion(const CLI::App& app) {
   for (const auto* c : commands(app)) top += " " + c->get_name();
   s += fmt::format("  if [ \"$COMP_CWORD\" -eq 1 ]; then\n    COMPREPLY=($(compgen -W \"{}\" -- \"$cur\"))\n"
                    "    return\n  fi\n  case \"${{COMP_WORDS[1]}}\" in\n", top);
-  const std::string profiles = shipped_profile_names();
+  const std::string profiles = fmt::format("{}", fmt::join(shipped_profiles(), " "));
   for (const auto* c : commands(app)) {
     std::string all = "--help -h";
     std::string cases;

@@ -78,11 +78,7 @@ int run_command(const RunArgs& a) {
 
   machine::Interpreter interp(profile, lib, setup.options);
   machine::RunResult result = interp.run(*sink);
-  if (result.alarm) {  // a cut-off path says so at its end
-    if (auto* w = dynamic_cast<report::JsonlWriter*>(sink.get())) w->stopped(*result.alarm);
-    if (auto* w = dynamic_cast<report::CsvWriter*>(sink.get())) w->stopped(*result.alarm);
-    if (gcode) gcode->stopped(*result.alarm);
-  }
+  if (result.alarm) sink->stopped(*result.alarm);  // a cut-off path says so at its end
   if (gcode) gcode->finish();
 
   report::RunReport rep;

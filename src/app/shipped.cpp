@@ -18,17 +18,6 @@ bool holds_shipped_files(const fs::path& dir) {
   return fs::is_directory(dir / "profiles", ec) && fs::is_directory(dir / "macros", ec);
 }
 
-std::vector<std::string> shipped_profiles() {
-  std::vector<std::string> names;
-  if (auto dir = shipped_dir()) {
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(fs::path(*dir) / "profiles", ec))
-      if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 }  // namespace
 
 std::optional<std::string> shipped_dir() {
@@ -39,6 +28,17 @@ std::optional<std::string> shipped_dir() {
   for (const fs::path& dir : {bin.parent_path() / "share" / "ncurve", bin.parent_path()})
     if (holds_shipped_files(dir)) return fs::weakly_canonical(dir, ec).string();
   return std::nullopt;
+}
+
+std::vector<std::string> shipped_profiles() {
+  std::vector<std::string> names;
+  if (auto dir = shipped_dir()) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(fs::path(*dir) / "profiles", ec))
+      if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 std::string find_profile(const std::string& name) {

@@ -5,11 +5,14 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ncurve::app {
 
 // The folder holding profiles/ and macros/, if there is one.
 std::optional<std::string> shipped_dir();
+// The names of the shipped profiles (file stems), sorted; none without a shipped folder.
+std::vector<std::string> shipped_profiles();
 // A profile path as given, or a shipped profile by name ("fanuc-lathe", "fanuc-lathe.toml").
 // Throws std::runtime_error naming the shipped profiles when neither exists.
 std::string find_profile(const std::string& name);
