@@ -53,6 +53,8 @@ class MoveSink {
 public:
   virtual ~MoveSink() = default;
   virtual void on_move(const Move& m) = 0;
+  // The run stopped on this alarm after the last move: a writer marks its output as cut off.
+  virtual void stopped(const nc::Diagnostic&) {}
 };
 
 class NullSink final : public MoveSink {

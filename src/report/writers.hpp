@@ -21,7 +21,7 @@ public:
   JsonlWriter(std::ostream& out, const machine::MachineProfile& profile) : out_(out), frame_(profile) {}
   void on_move(const machine::Move& m) override;
   // The run stopped on an alarm: a last record {"kind":"alarm", ...} says so.
-  void stopped(const nc::Diagnostic& alarm);
+  void stopped(const nc::Diagnostic& alarm) override;
 
 private:
   std::ostream& out_;
@@ -36,7 +36,7 @@ public:
   CsvWriter(std::ostream& out, const machine::MachineProfile& profile, double arc_tolerance);
   void on_move(const machine::Move& m) override;
   // The run stopped on an alarm: a last row of kind "alarm:CODE" at the alarm's line.
-  void stopped(const nc::Diagnostic& alarm);
+  void stopped(const nc::Diagnostic& alarm) override;
 
 private:
   void row(std::uint32_t line, const char* kind, double x, double y, double z, double f);
@@ -52,7 +52,7 @@ public:
   GcodeWriter(std::ostream& out, const machine::MachineProfile& profile, const std::string& source_name);
   void on_move(const machine::Move& m) override;
   // The run stopped on an alarm: a comment naming it ends the program, without M30.
-  void stopped(const nc::Diagnostic& alarm);
+  void stopped(const nc::Diagnostic& alarm) override;
   void finish();
 
 private:
