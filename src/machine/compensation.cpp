@@ -269,26 +269,28 @@ void RadiusCompensation::emit_line(const Elem& attributed_to, V2 from, V2 to) {
   deliver_(m);
 }
 
+// A move off the plane (a Z move) or an event happens where the tool is, `at` (put-out coordinates).
+void RadiusCompensation::deliver_at(Move m, const AxisVector& at) {
+  m.start = at;
+  if (m.is_motion()) {
+    m.programmed_end = m.end;
+    m.end[pa_.p] = at[pa_.p];
+    m.end[pa_.q] = at[pa_.q];
+    m.length = line_length(m.start.data(), m.end.data());
+    m.compensated = true;
+  } else {
+    m.end = m.start;
+  }
+  if (tool_) tool_ = m.end;
+  else tool_full_ = m.end;
+  deliver_(m);
+}
+
 void RadiusCompensation::emit_after() {
   while (!after_.empty()) {
     Move m = after_.front();
     after_.pop_front();
-    // a move off the plane (a Z move) or an event happens where the tool centre is
-    m.start[pa_.p] = tool_plane_.x + tip_.x;
-    m.start[pa_.q] = tool_plane_.y + tip_.y;
-    for (int a = 0; a < kAxes; ++a)
-      if (a != pa_.p && a != pa_.q) m.start[a] = tool_full_[a];
-    if (m.is_motion()) {
-      m.programmed_end = m.end;
-      m.end[pa_.p] = tool_plane_.x + tip_.x;
-      m.end[pa_.q] = tool_plane_.y + tip_.y;
-      m.length = line_length(m.start.data(), m.end.data());
-      m.compensated = true;
-    } else {
-      m.end = m.start;
-    }
-    tool_full_ = m.end;
-    deliver_(m);
+    deliver_at(m, tool_full_);
   }
   blocks_after_ = 0;
 }
@@ -344,8 +346,6 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
     ghost.arc = false;
     ghost.s = a.e;
     ghost.e = a.e + *cancel_direction;
-    ghost.side = a.side;
-    ghost.r = a.r;
     k = corner(a, ghost, Joint::offset);
     k.inserted.clear();
     k.start_b = k.end_a;
@@ -396,28 +396,12 @@ void RadiusCompensation::fail(const Move& at, const std::string& code, const std
 }
 
 void RadiusCompensation::other(const Move& m) {
-  if (pending_) {
-    after_.push_back(m);
-    return;
+  if (pending_) after_.push_back(m);
+  else if (offset_mode_ || tool_) deliver_at(m, tool_ ? *tool_ : tool_full_);
+  else {
+    Move x = m;
+    deliver_(x);
   }
-  Move x = m;
-  if (offset_mode_ || tool_) {
-    const AxisVector& at = tool_ ? *tool_ : tool_full_;
-    x.start[pa_.p] = at[pa_.p];
-    x.start[pa_.q] = at[pa_.q];
-    if (!x.is_motion()) {
-      x.end = x.start;
-    } else {
-      x.programmed_end = x.end;
-      x.end[pa_.p] = at[pa_.p];
-      x.end[pa_.q] = at[pa_.q];
-      x.compensated = true;
-      x.length = line_length(x.start.data(), x.end.data());
-    }
-    if (tool_) tool_ = x.end;
-    else tool_full_ = x.end;
-  }
-  deliver_(x);
 }
 
 void RadiusCompensation::block_without_motion(const Move& at) {

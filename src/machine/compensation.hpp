@@ -95,6 +95,7 @@ private:
   void emit_element(const Elem& e, V2 from, V2 to, bool plain_end = false);
   void emit_line(const Elem& attributed_to, V2 from, V2 to);
   void emit_after();
+  void deliver_at(Move m, const AxisVector& at);
   void check_interference(const Elem& e, V2 from, V2 to);
   void warn_lost(const Elem& next);
   [[noreturn]] void fail(const Move& at, const std::string& code, const std::string& message);

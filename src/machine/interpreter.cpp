@@ -179,15 +179,11 @@ void Interpreter::warn_mixed_decimal_points() {
       }
     if (!with || !without) continue;
     const std::string word = fmt::format("{}{}", without->letter, shown_number(without->value, 0));
-    const std::string what = without_is_argument
-                                 ? fmt::format("argument {} of a macro call is read as {}", word,
-                                               profile_.decimal_calculator
-                                                   ? shown_number(without->value, 0)
-                                                   : shown_number(without->value * profile_.increment, decimals))
-                                 : fmt::format("{} is read as {} mm", word,
-                                               profile_.decimal_calculator
-                                                   ? shown_number(without->value, 0)
-                                                   : shown_number(without->value * profile_.increment, decimals));
+    const std::string read_as = profile_.decimal_calculator
+                                    ? shown_number(without->value, 0)
+                                    : shown_number(without->value * profile_.increment, decimals);
+    const std::string what = without_is_argument ? fmt::format("argument {} of a macro call is read as {}", word, read_as)
+                                                 : fmt::format("{} is read as {} mm", word, read_as);
     result_.warnings.push_back(nc::Diagnostic{
         nc::Severity::warning, "NC2001",
         profile_.decimal_calculator

@@ -115,6 +115,7 @@ private:
   bool compensating() const;
   void end_of_block_compensation(bool g40);
   V2 nose_tip() const;
+  double nose_radius() const;
   void emit_event(MoveKind kind, int code);
   void dwell();
   void reference_return(int g);

@@ -253,8 +253,7 @@ void Interpreter::emit(Move& m) {
   int side = comp_suspended_ ? 0 : comp_side_;
   double radius = 0;
   if (profile_.lathe()) {
-    auto it = lathe_offsets_.find(lathe_offset_);
-    if (it != lathe_offsets_.end()) radius = it->second.r + it->second.r_wear;
+    radius = nose_radius();
     comp_->set_tip(nose_tip());
   } else {
     radius = radius_offset(d_);
@@ -312,8 +311,14 @@ V2 Interpreter::nose_tip() const {
   auto it = lathe_offsets_.find(lathe_offset_);
   if (it == lathe_offsets_.end()) return {};
   const TipDirection d = tip_direction(static_cast<int>(it->second.tip));
-  const double r = it->second.r + it->second.r_wear;
+  const double r = nose_radius();
   return {d.z * r, d.x * r};
+}
+
+// The active offset set's nose radius, geometry plus wear.
+double Interpreter::nose_radius() const {
+  auto it = lathe_offsets_.find(lathe_offset_);
+  return it == lathe_offsets_.end() ? 0.0 : it->second.r + it->second.r_wear;
 }
 
 void Interpreter::emit_event(MoveKind kind, int code) {
