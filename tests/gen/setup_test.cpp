@@ -99,9 +99,10 @@ TEST(GenSetup, MillToolSpindleAndCoolantOnceInEveryForm) {
       ASSERT_EQ(coolant.size(), 2u);
       EXPECT_EQ(coolant[0].code, 8);
       EXPECT_EQ(coolant[1].code, 9);
-      for (const auto& m : ran.motions()) {
-        if (m.kind != machine::MoveKind::rapid) EXPECT_EQ(m.spindle, 2400);
-      }
+      for (const auto& m : ran.motions())
+        if (m.kind != machine::MoveKind::rapid) {
+          EXPECT_EQ(m.spindle, 2400);
+        }
     }
   }
 }
