@@ -176,6 +176,11 @@ RadiusCompensation::Corner RadiusCompensation::corner(const Elem& a, const Elem&
 }
 
 void RadiusCompensation::check_interference(const Elem& e, V2 from, V2 to) {
+  if (e.arc && e.side != 0 && (norm(from - e.c) < 1e-6 || norm(to - e.c) < 1e-6))
+    fail(e.move, "PS0038",
+         fmt::format("interference in circular block: the compensated arc would {} on its centre (arc radius "
+                     "{:.4f} mm, offset {:g} mm on its inner side)",
+                     norm(from - e.c) < 1e-6 ? "start" : "end", e.R, e.r));
   if (!settings_.interference_check || e.side == 0) return;
   if (!e.arc) {
     V2 prog = e.e - e.s, comp = to - from;
@@ -244,7 +249,7 @@ void RadiusCompensation::emit_element(const Elem& e, V2 from, V2 to, bool plain_
   deliver_(m);
 }
 
-void RadiusCompensation::emit_line(const Elem& attributed_to, V2 from, V2 to) {
+void RadiusCompensation::emit_line(const Elem& attributed_to, V2 from, V2 to, bool corner) {
   if (norm(to - from) < kEps) return;
   Move m = attributed_to.move;
   m.kind = attributed_to.move.kind == MoveKind::rapid ? MoveKind::rapid : MoveKind::line;
@@ -256,7 +261,7 @@ void RadiusCompensation::emit_line(const Elem& attributed_to, V2 from, V2 to) {
   m.end[pa_.q] = to.y + tip_.y;
   m.programmed_end = attributed_to.move.end;
   m.compensated = true;
-  m.corner = true;
+  m.corner = corner;
   m.sweep = 0;
   m.center = {};
   double length = line_length(m.start.data(), m.end.data());
@@ -326,6 +331,19 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
   if (side == 0 && b.arc)
     fail(programmed, "PS0034",
            "cutter compensation cannot be cancelled in a G02/G03 block: cancel it with G00 or G01");
+  if (!pending_ && shift_) {  // type C: the start-up block shifts the tool, then b runs in offset mode
+    const Elem by = make(*shift_, side, radius);
+    shift_.reset();
+    if (side != 0) {
+      const V2 start = b.s + (b.side * b.r) * perp(b.t_start());
+      emit_line(by, tool_plane_, start, false);
+      emit_after();
+      pending_ = b;
+      pending_start_ = start;
+      return;
+    }
+    emit_after();
+  }
   if (!pending_) {  // offset mode with the last element already ended (read-ahead lost)
     if (lost_) warn_lost(b);
     pending_ = b;
@@ -389,6 +407,7 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
 void RadiusCompensation::fail(const Move& at, const std::string& code, const std::string& message) {
   // the tool stops at the end of the block before: what is still buffered is not executed
   pending_.reset();
+  shift_.reset();
   after_.clear();
   offset_mode_ = false;
   alarm_(at, code, message);
@@ -396,7 +415,7 @@ void RadiusCompensation::fail(const Move& at, const std::string& code, const std
 }
 
 void RadiusCompensation::other(const Move& m) {
-  if (pending_) after_.push_back(m);
+  if (pending_ || shift_) after_.push_back(m);
   else if (offset_mode_ || tool_) deliver_at(m, tool_ ? *tool_ : tool_full_);
   else {
     Move x = m;
@@ -437,22 +456,71 @@ void RadiusCompensation::warn_lost(const Elem& next) {
                     next.move.line, effect));
 }
 
-void RadiusCompensation::cancel_without_motion() {
-  if (!pending_ && !offset_mode_) return;
+// The pending element ends with its vector perpendicular at its end; what was read after it goes out.
+void RadiusCompensation::end_perpendicular() {
   if (pending_) {
     Elem& a = *pending_;
     V2 end = a.e + (a.side * a.r) * perp(a.t_end());
     check_interference(a, pending_start_, end);
     emit_element(a, pending_start_, end);
-    emit_after();
     pending_.reset();
   }
+  emit_after();
+}
+
+void RadiusCompensation::startup_without_motion(const Move& at) {
+  if (!settings_.startup_type_c || offset_mode() || shift_) return;
+  pa_ = plane_axes(at.plane);
+  tool_full_ = tool_ ? *tool_ : at.start;
+  tool_.reset();
+  tool_plane_ = plane_point(tool_full_, pa_) - tip_;
+  shift_ = at;
+  offset_mode_ = true;
+  lost_.reset();
+}
+
+void RadiusCompensation::cancel_without_motion(const Move& at) {
+  if (!pending_ && !offset_mode_) return;
+  const bool tool_moved = !shift_;
+  shift_.reset();
+  end_perpendicular();
   offset_mode_ = false;
   startup_pending_ = false;
-  tool_ = tool_full_;
+  lost_.reset();
+  if (!tool_moved) return;  // type C before its shift: the tool never left the programmed point
+  if (settings_.startup_type_c) {
+    Elem by = make(at, 0, 0);
+    emit_line(by, tool_plane_, plane_point(at.end, pa_) - tip_, false);
+  } else {
+    tool_ = tool_full_;
+  }
+}
+
+void RadiusCompensation::move_frame(const AxisVector& delta) {
+  auto moved = [&](AxisVector v) {
+    for (int a = 0; a < kAxes; ++a) v[a] += delta[a];
+    return v;
+  };
+  if (shift_) {  // type C waiting for its next move: nothing has moved yet
+    emit_after();
+    shift_->start = moved(shift_->start);
+    shift_->end = moved(shift_->end);
+    tool_full_ = moved(tool_full_);
+    tool_plane_ = plane_point(tool_full_, pa_) - tip_;
+    return;
+  }
+  if (offset_mode_ || pending_) {
+    end_perpendicular();
+    offset_mode_ = false;
+    startup_pending_ = false;
+    lost_.reset();
+    tool_ = tool_full_;
+  }
+  if (tool_) tool_ = moved(*tool_);
 }
 
 void RadiusCompensation::finish() {
+  shift_.reset();
   if (pending_) {
     Elem a = *pending_;
     pending_.reset();

@@ -15,6 +15,7 @@ namespace ncurve::machine {
 
 struct CompensationSettings {
   bool startup_type_b = false;  // No.5003#0 SUP: start-up and cancel of type B (intersection), else type A
+  bool startup_type_c = false;  // No.5003#1 SUV: a G41/G42 or G40 block without motion shifts the tool itself
   int blocks_without_motion = 1;  // blocks without motion in the plane the read-ahead passes over
   bool interference_check = true;  // No.5008#1 CNC = 0
   double corner_vector_limit = 0;  // No.5010, mm: an outer-corner vector shorter than this is left out
@@ -51,9 +52,18 @@ public:
   void other(const Move& m);
   // An NC block without motion in the plane, which the read-ahead must pass to find the next move.
   void block_without_motion(const Move& at);
-  // G40 without motion in the plane: the vector ends perpendicular at the last move's end and the
-  // next move starts from there.
-  void cancel_without_motion();
+  // G41/G42 from cancel mode in a block without motion in the plane (`at`: that block, its modal
+  // motion kind and feed). Type C: the tool shifts by the vector perpendicular to the next move at
+  // its start, in this block; types A and B: nothing until the next move starts up.
+  void startup_without_motion(const Move& at);
+  // G40 without motion in the plane (`at`: that block): the vector ends perpendicular at the last
+  // move's end; type C moves back to the programmed point in this block, types A and B start the
+  // next move from there.
+  void cancel_without_motion(const Move& at);
+  // The work coordinate system moved by `delta` (G92, G52, G54..G59) in offset mode: the last move
+  // ends with its perpendicular vector, the tool keeps its place in the new coordinates and the next
+  // move starts up from there.
+  void move_frame(const AxisVector& delta);
   // Program end or an alarm: the last move ends with its perpendicular vector; everything goes out.
   void finish();
   // After an alarm elsewhere: the moves read so far go out as at program end.
@@ -67,6 +77,8 @@ public:
   bool offset_mode() const { return pending_.has_value() || offset_mode_; }
   // Where the tool centre is, if it differs from the programmed position after a cancel.
   const std::optional<AxisVector>& tool_position() const { return tool_; }
+  // Where the tool (centre, or imaginary tip) is after the last move put out, in offset mode.
+  const AxisVector& tool_now() const { return tool_ ? *tool_ : tool_full_; }
 
 private:
   struct Elem {
@@ -93,7 +105,8 @@ private:
   Corner corner(const Elem& a, const Elem& b, Joint joint) const;
   std::optional<V2> intersect(const Elem& a, int side_a, double ra, const Elem& b, int side_b, double rb, V2 near) const;
   void emit_element(const Elem& e, V2 from, V2 to, bool plain_end = false);
-  void emit_line(const Elem& attributed_to, V2 from, V2 to);
+  void emit_line(const Elem& attributed_to, V2 from, V2 to, bool corner = true);
+  void end_perpendicular();
   void emit_after();
   void deliver_at(Move m, const AxisVector& at);
   void check_interference(const Elem& e, V2 from, V2 to);
@@ -116,6 +129,7 @@ private:
   std::deque<Move> after_;       // moves and events read after it
   int blocks_after_ = 0;         // NC blocks without motion in the plane after it
   bool startup_pending_ = false;  // the pending element is the start-up block
+  std::optional<Move> shift_;     // type C: the start-up block without motion, waiting for the next move
   std::optional<Lost> lost_;       // the read-ahead was lost: warned at the next element
   V2 tool_plane_;                 // the tool centre in the plane after the last emitted move
   AxisVector tool_full_{};        // and on every axis

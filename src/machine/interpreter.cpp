@@ -82,6 +82,7 @@ Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& li
   lathe_offsets_ = profile_.lathe_offsets;
   CompensationSettings cs;
   cs.startup_type_b = profile_.compensation.startup_type_b;
+  cs.startup_type_c = profile_.compensation.startup_type_c;
   cs.blocks_without_motion = profile_.compensation.blocks_read - 2;
   cs.interference_check = profile_.compensation.interference_check;
   comp_.emplace(
@@ -281,9 +282,11 @@ void Interpreter::step() {
     case Statement::nc: {
       ++f.pc;
       const bool g40 = comp_side_ != 0;
+      const bool from_cancel = comp_side_ == 0 && !comp_->offset_mode();
       macro_call_block_ = false;
       exec_nc(b);
-      if (compensating() && !macro_call_block_) end_of_block_compensation(g40 && comp_side_ == 0);
+      if (compensating() && !macro_call_block_)
+        end_of_block_compensation(g40 && comp_side_ == 0, from_cancel && comp_side_ != 0);
       break;
     }
     case Statement::go_to: jump(b, eval(b.value).number()); break;

@@ -113,7 +113,7 @@ private:
   void emit(Move& m);
   void deliver(Move& m);  // stats and the sink: the moves as the tool makes them
   bool compensating() const;
-  void end_of_block_compensation(bool g40);
+  void end_of_block_compensation(bool g40, bool g41);
   V2 nose_tip() const;
   double nose_radius() const;
   void emit_event(MoveKind kind, int code);

@@ -68,10 +68,13 @@ const char* to_string(MoveKind k) {
 void Interpreter::set_origin() {
   AxisVector old = origin_;
   const AxisVector& work = work_index_ <= 6 ? work_offsets_[work_index_] : extended_offsets_[work_index_ - 6];
+  AxisVector delta{};
   for (int a = 0; a < kAxes; ++a) {
     origin_[a] = work_offsets_[0][a] + work[a] + local_[a] + shift_[a];
-    pos_[a] += old[a] - origin_[a];
+    delta[a] = old[a] - origin_[a];
+    pos_[a] += delta[a];
   }
+  if (comp_) comp_->move_frame(delta);
 }
 
 void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
@@ -290,15 +293,23 @@ bool Interpreter::compensating() const {
   return comp_side_ != 0 || comp_->offset_mode() || comp_->tool_position().has_value();
 }
 
-// After each NC block in offset mode: a G40 without motion in the plane ends the offset at the last
-// move's end; any other block without such motion is one the read-ahead must look past.
-void Interpreter::end_of_block_compensation(bool g40) {
+// After each NC block in offset mode: a G40 (or G41/G42 from cancel mode) without motion in the
+// plane ends (starts) the offset by the start-up type's rule; any other block without such motion
+// is one the read-ahead must look past.
+void Interpreter::end_of_block_compensation(bool g40, bool g41) {
   if (!block_plane_motion_) {
     Move at;
+    at.kind = motion_ == 0 ? MoveKind::rapid : MoveKind::line;
+    at.plane = static_cast<std::uint8_t>(plane_);
+    at.start = at.end = pos_;
+    at.feed = feed_;
+    at.feed_per_rev = feed_per_rev_;
+    at.spindle = speed_;
     at.file = prog_ ? prog_->file.get() : nullptr;
     at.line = block_ ? block_->line : 0;
     at.program = prog_ ? prog_->number : -1;
-    if (g40) comp_->cancel_without_motion();
+    if (g40) comp_->cancel_without_motion(at);
+    else if (g41) comp_->startup_without_motion(at);
     else comp_->block_without_motion(at);
   }
   block_plane_motion_ = false;
@@ -543,11 +554,14 @@ void Interpreter::set_coordinate_system(int g) {
   if (g == 500 && !has('X') && !has('Z') && !has('U') && !has('W')) return;
   // G92 (G50 on a system A lathe): the current point gets the given coordinates
   if (!axis_target(given)) return;
+  AxisVector delta{};
   for (int a = 0; a < kAxes; ++a) {
     shift_[a] += pos_[a] - given[a];
     origin_[a] += pos_[a] - given[a];
+    delta[a] = given[a] - pos_[a];
   }
   pos_ = given;
+  comp_->move_frame(delta);
 }
 
 // Lathe offsets shift the tool tip: the path in work coordinates stays as programmed, the machine

@@ -219,7 +219,8 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     throw std::runtime_error(fmt::format("parameter {}: {} is not a value a parameter can hold", key, value));
   if (key == "3401#0") p.decimal_calculator = bit();
   else if (key == "5003#0") p.compensation.startup_type_b = bit();
-  else if (key == "5008#1") p.compensation.interference_check = !bit();
+  else if (key == "5003#1") p.compensation.startup_type_c = bit();
+  else if (key == "5008#1" || key == "5008#3") p.compensation.interference_check = !bit();
   else if (key == "19625") {
     if (p.control != Control::fanuc_30i)
       throw std::runtime_error("parameter 19625: the 0i reads a fixed 3 blocks ahead in cutter compensation; No.19625 "
@@ -256,7 +257,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else
       throw std::runtime_error(
           fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 5003#0, "
-                      "5008#1, 5114, 5115, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089)",
+                      "5003#1, 5008#1, 5008#3, 5114, 5115, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089)",
                       key));
   }
 }

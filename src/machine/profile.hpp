@@ -33,6 +33,7 @@ struct MillOffset {
 // Cutter / tool-nose radius compensation settings of the control.
 struct CompensationProfile {
   bool startup_type_b = false;     // No.5003#0 SUP: start-up and cancel of type B (else type A)
+  bool startup_type_c = false;     // No.5003#1 SUV: type C for G41/G42 and G40 in blocks without motion
   int blocks_read = 3;             // blocks read ahead in offset mode (No.19625 on 30i; 3 on 0i)
   bool interference_check = true;  // No.5008#1 CNC = 0: the interference check is performed
 };

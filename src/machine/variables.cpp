@@ -179,10 +179,15 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     int block = (n - 5001) / 20;  // 0: end point, 1: machine, 2: current, 3: skip, 4: tool length, 5: servo
     int a = axis_order((n - 5001) % 20);
     if (a < 0) alarm("PS0115", fmt::format("#{}: the machine has no such axis", n), column);
+    // the current position (#5021.., #5041..) includes the cutter compensation: the tool centre (the
+    // imaginary tip on a lathe) after the last move put out
+    const bool offset = comp_ && (comp_->offset_mode() || comp_->tool_position());
+    const double now = offset ? comp_->tool_now()[a] : pos_[a];
     switch (block) {
-      case 0: case 2: return Value::of(program_units(a, pos_[a]));
+      case 0: return Value::of(program_units(a, pos_[a]));
+      case 2: return Value::of(program_units(a, now));
       case 1: {
-        double m = pos_[a] + origin_[a] + tool_shift_[a];
+        double m = now + origin_[a] + tool_shift_[a];
         return Value::of(program_units(a, m));
       }
       case 3: return Value::of(program_units(a, pos_[a]));

@@ -286,3 +286,59 @@ TEST(Compensation, NoseCentreOrTip) {
   EXPECT_NEAR(t.motions()[1].end[2], 0.8 * s - 0.8, 1e-9);
   EXPECT_NEAR(2 * t.motions()[1].end[0], 16 + 2 * 0.8 * s - 2 * 0.8, 1e-9);
 }
+
+// #5041.. (current position) includes the compensation: after the start-up block (type A, vector
+// perpendicular to X40.'s direction +X: (0,40) + (0,5)) while X40. waits for its end vector;
+// #5001.. is the programmed end point of the last block read.
+TEST(Compensation, CurrentPositionReadsTheToolCentre) {
+  auto r = run("G10 L11 P1 R5.\nG90 G17 G00 X0 Y-10.\nG41 G01 Y40. D1 F100.\nX40.\n#100=#5041\n#101=#5042\n"
+               "#102=#5001\n#103=#5002\n#104=#5021\nY0\nG40 X60.\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_NEAR(r.var(100), 0.0, 1e-9);
+  EXPECT_NEAR(r.var(101), 45.0, 1e-9);
+  EXPECT_NEAR(r.var(102), 40.0, 1e-9);
+  EXPECT_NEAR(r.var(103), 40.0, 1e-9);
+  EXPECT_NEAR(r.var(104), 0.0, 1e-9);  // machine = work here: no offsets
+}
+
+// G92 in offset mode: the block before ends perpendicular ((0,40) + (-5,0)), the tool keeps its place
+// in the new coordinates ((-5,40) + (100,60)), and the next move starts up again (type A: vector
+// perpendicular to Y60.'s direction -Y, i.e. +X, at (140,100)).
+TEST(Compensation, CoordinateSystemSettingStartsUpAgain) {
+  auto r = run("G10 L11 P1 R5.\nG90 G17 G00 X0 Y-10.\nG41 G01 Y40. D1 F100.\nG92 X100. Y100.\nG01 X140.\nY60.\n"
+               "G40 X160.\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  auto ms = r.motions();
+  ASSERT_EQ(ms.size(), 5u);
+  expect_end(ms[1], -5, 40, "perpendicular before G92");
+  expect_end(ms[2], 145, 100, "start-up again in the new system");
+  expect_end(ms[3], 145, 60, "last block before cancel");
+  expect_end(ms[4], 160, 60, "cancel");
+}
+
+// Type C (No.5003#1): G41 alone shifts the tool in its own block, perpendicular to the next move;
+// an M code read between comes after the shift; a cancel block with motion follows SUP (type A).
+TEST(Compensation, TypeCShiftsInTheStartUpBlock) {
+  auto profile = machine::default_mill();
+  profile.compensation.startup_type_c = true;
+  auto r = run("G10 L11 P1 R5.\nG90 G17 G00 X0 Y-10.\nG41 D1\nM08\nG01 Y40. F100.\nG40 X0 Y60.\nM30\n", profile);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  std::vector<machine::Move> ms;
+  for (const auto& m : r.moves)
+    if (m.is_motion() || m.kind == MoveKind::coolant) ms.push_back(m);
+  ASSERT_EQ(ms.size(), 5u);
+  EXPECT_EQ(ms[1].kind, MoveKind::rapid);
+  EXPECT_EQ(ms[1].line, 3u);
+  expect_end(ms[1], -5, -10, "the shift of the G41 block");
+  EXPECT_EQ(ms[2].kind, MoveKind::coolant);
+  expect_end(ms[2], -5, -10, "M08 where the tool is");
+  expect_end(ms[3], -5, 40, "cancel type A: perpendicular to the last block");
+  expect_end(ms[4], 0, 60, "cancel block");
+  // G41 then G40, both without motion: nothing moves
+  auto q = run("G10 L11 P1 R5.\nG90 G17 G00 X0 Y-10.\nG41 D1\nG40\nG01 X10. F100.\nM30\n", profile);
+  ASSERT_TRUE(q.result.ok()) << nc::format(*q.result.alarm);
+  auto mq = q.motions();
+  ASSERT_EQ(mq.size(), 2u);
+  EXPECT_EQ(mq[1].start[0], 0.0);
+  expect_end(mq[1], 10, -10, "no offset left");
+}
