@@ -108,11 +108,17 @@ bool Interpreter::canned_cycle_block() {
   AxisVector step{};
   for (int a = 0; a < kAxes; ++a) step[a] = hole[a] - base[a];
   for (int k = 0; k < repeat; ++k) {
-    if (k > 0 && incremental_)
+    if (k > 0 && incremental_ && xf_on_) {  // G16, G51.1, G51, G68: the incremental command again
+      hole = pos_;
+      axis_target(hole);
+      hole[2] = pos_[2];
+    } else if (k > 0 && incremental_) {
       for (int a = 0; a < kAxes; ++a)
         if (a != 2) hole[a] += step[a];
-    const double r_level = incremental_ ? cycle_initial_z_ + *cycle_r_ : *cycle_r_;
-    const double z_level = incremental_ ? r_level + *cycle_z_ : *cycle_z_;
+    }
+    double r_level = incremental_ ? cycle_initial_z_ + *cycle_r_ : *cycle_r_;
+    double z_level = incremental_ ? r_level + *cycle_z_ : *cycle_z_;
+    if (xf_on_ && xf_.active()) transformed_cycle_levels(r_level, z_level);
     drill_hole(hole, r_level, z_level);
   }
   return true;

@@ -13,6 +13,7 @@
 #include "machine/library.hpp"
 #include "machine/move.hpp"
 #include "machine/profile.hpp"
+#include "machine/transforms.hpp"
 #include "nc/program.hpp"
 
 namespace ncurve::machine {
@@ -132,6 +133,28 @@ private:
   void cancel_canned_cycle();
   bool canned_cycle_block();  // a block in cycle mode: stores the data, drills when it has axis words
   void drill_hole(const AxisVector& hole, double r_level, double z_level);
+
+  // ---- coordinate transforms of a mill (transform_modes.cpp): G15/G16 polar coordinate command,
+  // G50.1/G51.1 programmable mirror image, G50/G51 scaling, G68/G69 coordinate system rotation ----
+  void check_code_in_transform(int g, std::uint16_t column) const;  // codes the modes forbid
+  void transform_codes(std::vector<int>& one_shot);  // the block's transform codes, after its other G codes
+  bool transformed_axis_target(AxisVector& target);  // axis_target in G16 or a transform mode
+  bool transform_arc_words();  // R or I J K of an arc under a transform; true when G02 and G03 swap
+  void transformed_cycle_levels(double& r_level, double& z_level) const;  // canned cycle R and Z
+  V2 transformed_plane_vector(V2 v) const;  // G40 I J
+  std::optional<double> transform_modal(int n) const;  // #4011, #4016, #4017, #4022 on a mill
+  AxisVector program_position() const;  // #5001..: the end point before the transforms
+  Transforms xf_;
+  bool polar_ = false;         // G16
+  bool xf_on_ = false;         // G16 or a transform is active
+  bool xf_hook_ = false;       // xf_on_, or the first move after a cancel is still to be checked
+  bool xf_cancelled_ = false;  // G69, G50 or G50.1 given: the next move should be absolute
+  int xf_rotation_plane_ = 17;
+  double xf_rotation_deg_ = 0;  // the G68 angle as programmed (RIN: an incremental R adds to it)
+  bool xf_arc_ = false;         // the arc in hand takes xf_arc_r_ / xf_arc_offset_
+  double xf_arc_r_ = 0;
+  V2 xf_arc_offset_{};
+  // ---- end of coordinate transforms ----
 
   // variables (variables.cpp)
  public:

@@ -82,6 +82,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
   const bool system_a = lathe && profile_.gcode_system == 'A';
   exact_stop_once_ = false;
   bool group01 = false;
+  bool transform = false;  // a G15/G16, G50/G51, G50.1/G51.1, G68/G69 of a mill: transform_codes
   struct CancelCycle {  // after the block's codes: G00..G03 with G81 in one block cancel it too
     Interpreter* self;
     bool& group01;
@@ -94,6 +95,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
     std::uint16_t column = 0;
     for (const Cmd& c : cmds_)
       if (c.letter == 'G' && std::lround(c.value * 10) == g) column = c.column;
+    if (xf_on_) check_code_in_transform(g, column);
     switch (g) {
       case 0: case 10: case 20: case 30:
         motion_ = g / 10;
@@ -115,6 +117,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           const PlaneAxes pa = plane_axes(plane_);
           if (has(pa.ip) || has(pa.iq))
             cancel_direction_ = V2{has(pa.ip) ? dimension(word(pa.ip)) : 0.0, has(pa.iq) ? dimension(word(pa.iq)) : 0.0};
+          if (cancel_direction_ && xf_on_) cancel_direction_ = transformed_plane_vector(*cancel_direction_);
         }
         break;
       case 410: case 420:
@@ -125,7 +128,16 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       case 800:
         if (!lathe) cancel_canned_cycle();
         break;
-      case 670: case 690: case 150: break;  // cancels: nothing active to cancel
+      case 670: break;
+      case 150: case 160: case 501: case 510: case 511: case 680: case 690:
+        if (!lathe) {
+          transform = true;
+          break;
+        }
+        if (g == 150 || g == 690) break;  // cancels: nothing active to cancel
+        if (const char* what = kindless_unsupported(g))
+          alarm("NC9001", fmt::format("{} is not supported yet", what), column);
+        alarm("PS0010", unknown_g_code(g, profile_), column);
       // AI contour control (G05.1 Q1/Q0, G05 P10000/P0) and look-ahead control (G08 P1/P0) change
       // how the control accelerates, not the path: the time planner's profile stands for them
       case 51: case 50: case 80: break;
@@ -153,6 +165,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       case 970: css_ = false; break;
       case 500:
         if (lathe && profile_.gcode_system == 'A') one_shot.push_back(g);  // coordinate system setting / max spindle
+        else if (!lathe) transform = true;                                 // scaling cancel
         break;
       default: {
         if (system_a) {
@@ -183,10 +196,12 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       }
     }
   }
+  if (transform) transform_codes(one_shot);
 }
 
 // Reads axis words into target (work coordinates, mm). Returns whether any axis word was given.
 bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
+  if (xf_hook_ && !force_absolute) return transformed_axis_target(target);  // G16, G51.1, G51, G68
   const bool lathe = profile_.lathe();
   const bool system_a = lathe && profile_.gcode_system == 'A';
   bool any = false;
@@ -216,12 +231,15 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
 }
 
 void Interpreter::motion(const AxisVector& target) {
+  bool swap = false;  // a mirror image reverses arcs: G02 and G03 swap
+  if (xf_hook_ && motion_ >= 2) swap = transform_arc_words();
   switch (motion_) {
     case 0: linear(MoveKind::rapid, target); break;
     case 1: linear(MoveKind::line, target); break;
-    case 2: arc(target, true); break;
-    case 3: arc(target, false); break;
+    case 2: arc(target, !swap); break;
+    case 3: arc(target, swap); break;
   }
+  xf_arc_ = false;
 }
 
 void Interpreter::note_extent(const AxisVector& p) {
@@ -254,6 +272,7 @@ void Interpreter::emit(Move& m) {
   if (!in_plane) return comp_->other(m);
   block_plane_motion_ = true;
   int side = comp_suspended_ ? 0 : comp_side_;
+  if (xf_on_ && xf_.reverses(pa.p, pa.q)) side = -side;  // a mirror image swaps G41 and G42
   double radius = 0;
   if (profile_.lathe()) {
     radius = nose_radius();
@@ -385,7 +404,7 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
   double cp, cq;
   bool full = false;
   if (has('R')) {
-    double r = dimension(word('R'));
+    double r = xf_arc_ ? xf_arc_r_ : dimension(word('R'));  // scaled under G51
     double dx = ep - sp, dy = eq - sq;
     double d = std::hypot(dx, dy);
     if (d < tol) {
@@ -413,8 +432,8 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
       (void)axis;
       return v;
     };
-    off_p = offset(pa.ip, pa.p);
-    off_q = offset(pa.iq, pa.q);
+    off_p = xf_arc_ ? xf_arc_offset_.x : offset(pa.ip, pa.p);  // transformed under G51.1/G51/G68
+    off_q = xf_arc_ ? xf_arc_offset_.y : offset(pa.iq, pa.q);
     cp = sp + off_p;
     cq = sq + off_q;
     full = std::hypot(ep - sp, eq - sq) < tol;

@@ -239,6 +239,19 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
       throw std::runtime_error(fmt::format("parameter {} is a whole number of increments, 0 or more", key));
     (key == "5114" ? p.peck_retract : p.peck_clearance) = value * p.increment;
   }
+  else if (key == "5400#0") p.rotation_angle_by_g90_g91 = bit();
+  else if (key == "5400#6") p.scaling_per_axis = bit();
+  else if (key == "5400#7") p.scaling_unit_coarse = bit();
+  else if (key == "5410") {
+    if (value != std::floor(value) || std::fabs(value) > 360000)
+      throw std::runtime_error(fmt::format("parameter 5410 is -360000 .. 360000 (0.001 degree), got {}", value));
+    p.rotation_default_deg = value * 0.001;
+  } else if (key == "5411" || key == "5421") {
+    if (value != std::floor(value) || std::fabs(value) > 999999)
+      throw std::runtime_error(
+          fmt::format("parameter {} is a magnification of -999999 .. 999999 units, got {}", key, value));
+    (key == "5411" ? p.scaling_default : p.scaling_axis_default) = static_cast<int>(value);
+  }
   else {
     int n = 0;
     try {
@@ -257,7 +270,8 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else
       throw std::runtime_error(
           fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 5003#0, "
-                      "5003#1, 5008#1, 5008#3, 5114, 5115, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089)",
+                      "5003#1, 5008#1, 5008#3, 5114, 5115, 5400#0, 5400#6, 5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, "
+                      "6050..6059, 6071..6079, 6080..6089)",
                       key));
   }
 }

@@ -85,6 +85,13 @@ struct MachineProfile {
   double peck_retract = 0;    // No.5114, mm: G73's retraction d after each peck
   double peck_clearance = 0;  // No.5115, mm: G83's clearance d above the previous peck's depth
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
+  // coordinate transforms of a mill (G68, G51): parameters No.5400, 5410, 5411, 5421
+  bool rotation_angle_by_g90_g91 = false;  // No.5400#0 RIN: G68 R follows G90/G91 (0: always absolute)
+  bool scaling_per_axis = false;           // No.5400#6 XSC: G51 takes I J K per axis (0: P for all axes)
+  bool scaling_unit_coarse = false;        // No.5400#7 SCR: P I J K count 0.001 (0: 0.00001)
+  double rotation_default_deg = 0;         // No.5410 (0.001 deg): the angle of a G68 without R
+  int scaling_default = 0;                 // No.5411: the magnification of a G51 without P
+  int scaling_axis_default = 0;            // No.5421: the magnification of an axis without I, J or K
   std::array<int, 10> g_code_macros{};  // No.6050..6059: G code that calls O9010..O9019
   std::array<int, 10> m_code_macros{};  // No.6080..6089: M code that calls O9020..O9029
   std::array<int, 9> m_code_subprograms{};  // No.6071..6079: M code that calls O9001..O9009

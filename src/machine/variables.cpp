@@ -157,6 +157,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
   if (n >= 4001 && n <= 4022) {
     bool lathe_a = profile_.lathe() && profile_.gcode_system == 'A';
     if (n == 4014 && work_index_ > 6) return Value::of(54.1);
+    if (const auto g = transform_modal(n)) return Value::of(*g);  // G15/G16, G50/G51, G50.1/G51.1, G68/G69
     return Value::of(gcode_for_group(n - 4000, motion_, plane_, incremental_, feed_per_rev_, inch_, css_,
                                      length_comp_, modal_call_, work_index_, exact_stop_code_, lathe_a, cycle_,
                                      cycle_return_initial_));
@@ -184,7 +185,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     const bool offset = comp_ && (comp_->offset_mode() || comp_->tool_position());
     const double now = offset ? comp_->tool_now()[a] : pos_[a];
     switch (block) {
-      case 0: return Value::of(program_units(a, pos_[a]));
+      case 0: return Value::of(program_units(a, xf_on_ ? program_position()[a] : pos_[a]));  // before transforms
       case 2: return Value::of(program_units(a, now));
       case 1: {
         double m = now + origin_[a] + tool_shift_[a];
