@@ -46,10 +46,10 @@ void set_axis_parameter(MachineProfile& p, const std::string& key, const std::st
   if (a < 0 || p.axes.find(axis[0]) == std::string::npos)
     throw std::runtime_error(fmt::format("parameter {}.{}: this machine has no {} axis (axes {})", key, axis, axis, p.axes));
   RotaryAxis& r = p.rotary[a];
-  if (key == "1260") {
-    if (!(value > 0) || value != std::floor(value))
-      throw std::runtime_error(fmt::format("parameter 1260.{} is the travel of one turn in increments, more than 0", axis));
-    r.per_turn = value * p.increment;
+  if (key == "1260") {  // 0 (a linear axis's entry in an array) leaves 360 deg
+    if (value < 0 || value != std::floor(value))
+      throw std::runtime_error(fmt::format("parameter 1260.{} is the travel of one turn in increments (0: 360 deg)", axis));
+    r.per_turn = value > 0 ? value * p.increment : 360;
     return;
   }
   if (value != 0 && value != 1) throw std::runtime_error(fmt::format("parameter {}.{} is a bit: 0 or 1", key, axis));
