@@ -1,11 +1,12 @@
-// Drilling canned cycles of a FANUC mill (group 09): G73, G74, G81..G86, G89, G80, with G98/G99.
-// FANUC 30i-B / 0i-MF operator's manual, "Canned cycle for drilling": the hole position X Y in the G17
-// plane, R and Z along Z, data kept while the cycle mode lasts, K repeats.
+// Drilling canned cycles of a FANUC mill (group 09): a cycle block's data, the drilling axis, the
+// hole positions and repeats, and the motions of G73, G81..G83, G85, G86 and G89. FANUC 30i-B /
+// 0i-MF operator's manual, "Canned cycle for drilling". G76, G87, G88: boring_cycles.cpp; G84, G74
+// and rigid tapping: tapping_cycles.cpp.
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "machine/interpreter.hpp"
+#include "machine/drilling.hpp"
 
 namespace ncurve::machine {
 
@@ -29,30 +30,39 @@ const char* cycle_name(int g) {
 }
 }  // namespace
 
-// G73..G89 in a block (x10 codes). G76, G87 and G88 are not simulated.
-void Interpreter::select_canned_cycle(int g, std::uint16_t column) {
+// G73..G89 in a block (x10 codes).
+void Interpreter::select_canned_cycle(int g, std::uint16_t) {
   const int code = g / 10;
-  if (code == 76 || code == 87 || code == 88)
-    alarm("NC9001", fmt::format("G{} ({}) is not supported yet", code, cycle_name(code)), column);
-  if (cycle_ == 0) cycle_initial_z_ = pos_[2];  // the initial level: Z where the cycle mode starts
+  if (cycle_ == 0) {  // the initial level: where the tool is when the cycle mode starts
+    cycle_initial_ = pos_;
+    cycle_axis_ = -1;
+  }
+  if (code != 84 && code != 74) rigid_tapping_ = false;  // another cycle ends the rigid mode
   cycle_ = code;
 }
 
-// G80 and the group 01 codes: the cycle ends and its data (R, Z, Q, P) are cleared.
+// G80 and the group 01 codes: the cycle ends and its data (R, Z, Q, P) are cleared. Ending rigid
+// tapping clears its S as if S0 were given.
 void Interpreter::cancel_canned_cycle() {
+  if (rigid_tapping_) speed_ = 0;
   cycle_ = 0;
+  cycle_axis_ = -1;
   cycle_r_.reset();
   cycle_z_.reset();
   cycle_q_ = cycle_p_ = 0;
   cycle_has_q_ = false;
-  rigid_tapping_ = false;
+  rigid_tapping_ = rigid_pending_ = false;
 }
 
 bool Interpreter::canned_cycle_block() {
   const int g = cycle_;
+  // No.5101#0 FXY = 0: Z drills whatever the plane; 1: the normal of G17/G18/G19 (the basic axis:
+  // ncurve's mills have no parallel axes U V W that could name another)
+  const int ax = profile_.drilling.axis_by_plane ? plane_axes(plane_).n : 2;
+  const char axis_letter = "XYZ"[ax];
   if (has('R')) cycle_r_ = dimension(word('R'));
-  if (has('Z')) cycle_z_ = dimension(word('Z'));
-  if (has('Q') && (g == 73 || g == 83)) {
+  if (has(axis_letter)) cycle_z_ = dimension(word(axis_letter));
+  if (has('Q') && (g == 73 || g == 83 || g == 76 || g == 87 || g == 84 || g == 74)) {
     cycle_q_ = std::fabs(dimension(word('Q')));  // "be sure to specify a positive value": the sign is ignored
     cycle_has_q_ = true;
   }
@@ -61,22 +71,26 @@ bool Interpreter::canned_cycle_block() {
     if (ms < 0) alarm("PS0011", "negative dwell time", word('P').column);
     cycle_p_ = ms / 1000.0;
   }
+  const char repeat_letter = profile_.drilling.repeat_address;
+  const char other = repeat_letter == 'K' ? 'L' : 'K';
+  if (has(other))
+    alarm("PS0009", fmt::format("address {} in a canned cycle: this control counts repeats with {} (the profile's "
+                                "cycle_repeat = \"{}\")", other, repeat_letter, repeat_letter),
+          word(other).column);
   int repeat = 1;
-  if (has('K')) {
-    repeat = integer(word('K'), "K of a canned cycle (repeats)");
+  if (has(repeat_letter)) {
+    repeat = integer(word(repeat_letter), "the repeat count of a canned cycle");
     if (repeat < 0 || repeat > 9999)
-      alarm("PS0045", fmt::format("K{} of a canned cycle: the repeat count is 0 to 9999 (the manual names no "
-                                  "alarm for it; ncurve stops here)", repeat),
-            word('K').column);
+      alarm("PS0045", fmt::format("{}{} of a canned cycle: the repeat count is 0 to 9999 (the manual names no "
+                                  "alarm for it; ncurve stops here)", repeat_letter, repeat),
+            word(repeat_letter).column);
   }
-  for (const Cmd& c : cmds_)
-    if (c.letter == 'M' && std::lround(c.value) == 29) rigid_tapping_ = true;
 
-  AxisVector base = pos_;
+  const AxisVector base = pos_;
   AxisVector hole = pos_;
-  const bool axes = axis_target(hole);
-  if (!axes) return false;  // data only: no hole
-  hole[2] = pos_[2];        // Z is the hole bottom, not a move
+  if (!axis_target(hole)) return false;  // data only: no hole
+  if (rolls_) roll_over(hole);
+  hole[ax] = pos_[ax];             // the drilling axis word is the hole bottom, not a move
   if (repeat == 0) return false;  // K0: the data are stored, no hole is drilled
 
   const std::uint16_t gcol = [&] {
@@ -84,19 +98,15 @@ bool Interpreter::canned_cycle_block() {
       if (c.letter == 'G') return c.column;
     return std::uint16_t{0};
   }();
-  if (plane_ != 17)
-    alarm("NC9001", fmt::format("G{} ({}) in the G{} plane is not supported yet (G17 only: holes along Z)", g,
-                                cycle_name(g), plane_),
+  if (cycle_axis_ >= 0 && cycle_axis_ != ax)
+    alarm("NC9002", fmt::format("the drilling axis changed from {} to {} in cycle mode (G{} with No.5101#0 FXY = 1): "
+                                "the manual asks to cancel the canned cycle (G80) before the drilling axis changes "
+                                "and names no alarm; ncurve stops here",
+                                "XYZ"[cycle_axis_], axis_letter, plane_),
           gcol);
-  if (compensating())
-    alarm("NC9001", fmt::format("G{} ({}) under cutter compensation is not supported yet: cancel it with G40 first",
-                                g, cycle_name(g)),
-          gcol);
-  if ((g == 84 || g == 74) && rigid_tapping_)
-    alarm("NC9001", fmt::format("rigid tapping (M29 with G{}) is not supported yet", g), gcol);
   if (!cycle_z_)
-    alarm("PS0045", fmt::format("address Z not found (G{}): a hole needs its bottom point Z (the manual names no "
-                                "alarm for it; ncurve stops here)", g),
+    alarm("PS0045", fmt::format("address {} not found (G{}): a hole needs its bottom point {} (the manual names no "
+                                "alarm for it; ncurve stops here)", axis_letter, g, axis_letter),
           gcol);
   if (!cycle_r_)
     alarm("PS0045", fmt::format("address R not found (G{}): a hole needs its point R (the manual names no alarm "
@@ -104,106 +114,121 @@ bool Interpreter::canned_cycle_block() {
           gcol);
   if ((g == 73 || g == 83) && (!cycle_has_q_ || cycle_q_ <= 0))
     alarm("PS0045", fmt::format("address Q not found (G73/G83): G{} needs Q, the depth of each cut, not 0", g), gcol);
+  const bool rigid = (g == 84 || g == 74) && (rigid_tapping_ || profile_.drilling.g84_rigid);
+  if (rigid) rigid_tapping_check(gcol);
 
+  cycle_axis_ = ax;
+  Hole h;
+  h.axis = ax;
+  h.initial = cycle_initial_[ax];
+  h.r = incremental_ ? h.initial + *cycle_r_ : *cycle_r_;
+  h.z = incremental_ ? h.r + *cycle_z_ : *cycle_z_;
+  h.back = cycle_return_initial_ ? h.initial : h.r;
+  h.rigid = rigid;
+  // Under cutter compensation the cycle's moves are made at the programmed points, the vector
+  // cancelled as for G28, and the next move restores it.
+  struct Restore {
+    bool& flag;
+    bool was;
+    ~Restore() { flag = was; }
+  } restore{comp_suspended_, comp_suspended_};
+  if (compensating()) comp_suspended_ = true;
   AxisVector step{};
-  for (int a = 0; a < kAxes; ++a) step[a] = hole[a] - base[a];
+  for (int a = 0; a < kAxes; ++a) step[a] = incremental_ ? hole[a] - base[a] : 0;
   for (int k = 0; k < repeat; ++k) {
     if (k > 0 && incremental_ && xf_on_) {  // G16, G51.1, G51, G68: the incremental command again
       hole = pos_;
       axis_target(hole);
-      hole[2] = pos_[2];
-    } else if (k > 0 && incremental_) {
+      hole[ax] = pos_[ax];
+    } else if (k > 0) {  // G91: each repeat moves by the increment again; G90: the same hole
       for (int a = 0; a < kAxes; ++a)
-        if (a != 2) hole[a] += step[a];
+        if (a != ax) hole[a] = pos_[a] + step[a];
     }
-    double r_level = incremental_ ? cycle_initial_z_ + *cycle_r_ : *cycle_r_;
-    double z_level = incremental_ ? r_level + *cycle_z_ : *cycle_z_;
-    if (xf_on_ && xf_.active()) transformed_cycle_levels(r_level, z_level);
-    drill_hole(hole, r_level, z_level);
+    Hole at = h;
+    at.at = hole;
+    if (xf_on_ && xf_.active()) {
+      transformed_cycle_levels(ax, at.r, at.z);
+      at.back = cycle_return_initial_ ? at.initial : at.r;
+    }
+    drill_hole(at);
   }
   return true;
 }
 
+void Interpreter::cycle_move(const Hole& h, MoveKind kind, double level) {
+  AxisVector t = pos_;
+  t[h.axis] = level;
+  if (t[h.axis] != pos_[h.axis]) linear(kind, t);
+}
+
+void Interpreter::cycle_dwell() {
+  Move m;
+  m.kind = MoveKind::dwell;
+  m.start = m.end = pos_;
+  m.seconds = cycle_p_;
+  emit(m);
+}
+
 // One hole: position at the current level, rapid to R, the cycle's motions, return to the initial
 // level (G98) or to R (G99).
-void Interpreter::drill_hole(const AxisVector& hole, double r_level, double z_level) {
+void Interpreter::drill_hole(const Hole& h) {
   const int g = cycle_;
-  const double initial = cycle_initial_z_;
-  const double back = cycle_return_initial_ ? initial : r_level;
-  auto go = [&](MoveKind kind, double z) {
-    AxisVector t = pos_;
-    t[2] = z;
-    if (t[2] != pos_[2]) linear(kind, t);
-  };
-  auto pause = [&] {
-    Move m;
-    m.kind = MoveKind::dwell;
-    m.start = m.end = pos_;
-    m.seconds = cycle_p_;
-    emit(m);
-  };
-  AxisVector at = hole;
-  at[2] = pos_[2];
+  AxisVector at = h.at;
+  at[h.axis] = pos_[h.axis];
   if (at != pos_) linear(MoveKind::rapid, at);
-  go(MoveKind::rapid, r_level);
-  const double dir = z_level < r_level ? -1.0 : 1.0;  // into the hole
+  if (g == 76 || g == 87 || g == 88) return boring_hole(h);
+  if (g == 84 || g == 74) return tapping_hole(h);
+  cycle_move(h, MoveKind::rapid, h.r);
+  const double dir = h.into();
   switch (g) {
     case 81:
-      go(MoveKind::line, z_level);
-      go(MoveKind::rapid, back);
+      cycle_move(h, MoveKind::line, h.z);
+      cycle_move(h, MoveKind::rapid, h.back);
       break;
     case 82:
-      go(MoveKind::line, z_level);
-      pause();
-      go(MoveKind::rapid, back);
+      cycle_move(h, MoveKind::line, h.z);
+      cycle_dwell();
+      cycle_move(h, MoveKind::rapid, h.back);
       break;
     case 73: case 83: {
       const double q = cycle_q_;
       const double d = g == 73 ? profile_.peck_retract : profile_.peck_clearance;
-      double depth = r_level;  // reached so far
+      double depth = h.r;  // reached so far
       for (;;) {
         double next = depth + dir * q;
-        if ((next - z_level) * dir >= 0) next = z_level;
-        go(MoveKind::line, next);
+        if ((next - h.z) * dir >= 0) next = h.z;
+        cycle_move(h, MoveKind::line, next);
         depth = next;
-        if (depth == z_level) break;
+        if (depth == h.z) break;
         if (g == 73) {
-          go(MoveKind::rapid, depth - dir * d);  // back by d to break the chip
+          cycle_move(h, MoveKind::rapid, depth - dir * d);  // back by d to break the chip
         } else {
-          go(MoveKind::rapid, r_level);          // out to R, then down to d short of the last depth
-          go(MoveKind::rapid, depth - dir * d);
+          cycle_move(h, MoveKind::rapid, h.r);  // out to R, then down to d short of the last depth
+          cycle_move(h, MoveKind::rapid, depth - dir * d);
         }
       }
-      go(MoveKind::rapid, back);
+      cycle_move(h, MoveKind::rapid, h.back);
       break;
     }
     case 85:
-      go(MoveKind::line, z_level);
-      go(MoveKind::line, r_level);
-      go(MoveKind::rapid, back);
+      cycle_move(h, MoveKind::line, h.z);
+      cycle_move(h, MoveKind::line, h.r);
+      cycle_move(h, MoveKind::rapid, h.back);
       break;
     case 89:
-      go(MoveKind::line, z_level);
-      pause();
-      go(MoveKind::line, r_level);
-      go(MoveKind::rapid, back);
+      cycle_move(h, MoveKind::line, h.z);
+      cycle_dwell();
+      cycle_move(h, MoveKind::line, h.r);
+      cycle_move(h, MoveKind::rapid, h.back);
       break;
-    case 86:
-      go(MoveKind::line, z_level);
+    case 86:  // the spindle stops at the bottom and starts again at the return level
+      cycle_move(h, MoveKind::line, h.z);
       emit_event(MoveKind::spindle, 5);
-      go(MoveKind::rapid, back);
+      cycle_move(h, MoveKind::rapid, h.back);
       emit_event(MoveKind::spindle, 3);
       break;
-    case 84: case 74:  // G84 taps with the spindle clockwise and backs out counter-clockwise; G74 the reverse
-      go(MoveKind::line, z_level);
-      if (cycle_p_ > 0) pause();
-      emit_event(MoveKind::spindle, g == 84 ? 4 : 3);
-      go(MoveKind::line, r_level);
-      emit_event(MoveKind::spindle, g == 84 ? 3 : 4);
-      go(MoveKind::rapid, back);
-      break;
     default:
-      alarm("NC9001", fmt::format("G{} (canned cycle) is not supported yet", g));
+      alarm("NC9001", fmt::format("G{} ({}) is not supported yet", g, cycle_name(g)));
   }
 }
 

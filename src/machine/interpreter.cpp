@@ -70,6 +70,7 @@ double increments_per_mm(const MachineProfile& p) { return std::round(1 / p.incr
 Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options)
     : profile_(profile), library_(library), options_(std::move(options)) {
   for (char a : profile_.axes) has_axis_[axis_index(a)] = true;
+  init_rotary();
   per_unit_mm_ = increments_per_mm(profile_);
   per_unit_inch_ = std::round(10 / profile_.increment);
   eval_options_.atan_signed = profile_.atan_signed;
@@ -552,6 +553,7 @@ void Interpreter::exec_nc(const Block& b) {
 
   std::vector<int> one_shot;
   handle_g_codes(one_shot);
+  if (rigid_pending_ || std::ranges::find(m_codes_, 29) != m_codes_.end()) rigid_tapping_words();
 
   if (has('F')) {
     double f = word('F').value;
@@ -600,6 +602,7 @@ void Interpreter::exec_nc(const Block& b) {
     bool axes = axis_target(target);
     bool full_circle_ijk = (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K'));
     if (axes || full_circle_ijk) {
+      if (rolls_) roll_over(target);
       motion(target);
       moved = true;
     }
@@ -610,7 +613,6 @@ void Interpreter::exec_nc(const Block& b) {
     if (c.letter != 'M') continue;
     int m = integer(c, "M");
     last_m_ = m;
-    if (m == 29) rigid_tapping_ = true;  // rigid tapping: the next G84/G74 is not simulated
     switch (m) {
       case 98: {
         if (!has('P')) alarm("PS0076", "M98 needs P (the subprogram number)", b.column);

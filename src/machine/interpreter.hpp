@@ -128,11 +128,25 @@ private:
   void note_extent(const AxisVector& p);
   double feed_seconds(double length, double mean_radius) const;
 
-  // drilling canned cycles (canned_cycles.cpp)
+  // drilling canned cycles (canned_cycles.cpp, boring_cycles.cpp, tapping_cycles.cpp)
+  struct Hole;
   void select_canned_cycle(int g, std::uint16_t column);
   void cancel_canned_cycle();
   bool canned_cycle_block();  // a block in cycle mode: stores the data, drills when it has axis words
-  void drill_hole(const AxisVector& hole, double r_level, double z_level);
+  void drill_hole(const Hole& h);
+  void cycle_move(const Hole& h, MoveKind kind, double level);  // along the drilling axis
+  void cycle_dwell();
+  void boring_hole(const Hole& h);   // G76, G87, G88
+  void tapping_hole(const Hole& h);  // G84, G74, conventional and rigid
+  void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
+  void rigid_tapping_check(std::uint16_t column) const;
+
+  // rotary axes (rotary.cpp)
+  void init_rotary();
+  double angle(const Cmd& c) const;  // a rotary axis word, degrees
+  void roll_over(AxisVector& target) const;  // absolute commands of roll-over axes: the turn they make
+  void wrap_rotary();                        // positions of roll-over axes back within one turn
+  double combined_length(const AxisVector& from, const AxisVector& to, double linear) const;
 
   // ---- coordinate transforms of a mill (transform_modes.cpp): G15/G16 polar coordinate command,
   // G50.1/G51.1 programmable mirror image, G50/G51 scaling, G68/G69 coordinate system rotation ----
@@ -140,7 +154,7 @@ private:
   void transform_codes(std::vector<int>& one_shot);  // the block's transform codes, after its other G codes
   bool transformed_axis_target(AxisVector& target);  // axis_target in G16 or a transform mode
   bool transform_arc_words();  // R or I J K of an arc under a transform; true when G02 and G03 swap
-  void transformed_cycle_levels(double& r_level, double& z_level) const;  // canned cycle R and Z
+  void transformed_cycle_levels(int axis, double& r_level, double& z_level) const;  // canned cycle R and Z
   V2 transformed_plane_vector(V2 v) const;  // G40 I J
   std::optional<double> transform_modal(int n) const;  // #4011, #4016, #4017, #4022 on a mill
   AxisVector program_position() const;  // #5001..: the end point before the transforms
@@ -230,14 +244,22 @@ private:
   bool modal_call_ = false;
   int modal_program_ = 0;
   int modal_repeat_ = 1;
-  // drilling canned cycle (group 09): 0 = G80, else 73, 74, 81..89; data kept while it is active
+  // drilling canned cycle (group 09): 0 = G80, else 73, 74, 76, 81..89; data kept while it is active
   int cycle_ = 0;
   bool cycle_return_initial_ = true;  // G98 (power-on), G99: return to the R point level
-  double cycle_initial_z_ = 0;        // Z where the cycle mode started
+  AxisVector cycle_initial_{};        // where the cycle mode started: the initial level along the drilling axis
+  int cycle_axis_ = -1;               // the drilling axis of the cycle mode, -1 before its first hole
   std::optional<double> cycle_r_, cycle_z_;  // mm as written (G91: R from the initial level, Z from R)
-  double cycle_q_ = 0, cycle_p_ = 0;  // peck depth (mm), dwell (s)
+  double cycle_q_ = 0, cycle_p_ = 0;  // peck depth or shift (mm), dwell (s)
   bool cycle_has_q_ = false;
-  bool rigid_tapping_ = false;        // M29 given since the last G80
+  bool rigid_tapping_ = false;        // rigid mode: M29 (or No.5200#0) with G84/G74, until the cycle ends
+  bool rigid_pending_ = false;        // M29 given, its G84/G74 not yet
+  // rotary axes with roll-over (No.1008#0): absolute words of this block and their values
+  bool rolls_ = false;                // the profile has a roll-over axis
+  bool extra_axes_ = false;           // the profile has an A, B or C axis
+  std::array<bool, kAxes> rotary_{};
+  std::array<bool, kAxes> roll_word_{};
+  AxisVector roll_value_{};
   std::vector<Arg> modal_args_;
   void select_lathe_offset(int number, std::uint16_t column);
   double* lathe_offset_field(int n);

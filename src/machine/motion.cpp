@@ -104,6 +104,8 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 170: case 180: case 190:
+        if (g / 10 != plane_ && (rigid_tapping_ || rigid_pending_))
+          alarm("PS0206", fmt::format("the plane cannot change (G{}) in rigid tapping mode (after M29)", g / 10), column);
         if (g / 10 != plane_ && compensating())
           alarm("PS0037", fmt::format("the plane cannot change (G{}) while cutter compensation is active: cancel it "
                                       "with G40 first",
@@ -205,6 +207,7 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
   const bool lathe = profile_.lathe();
   const bool system_a = lathe && profile_.gcode_system == 'A';
   bool any = false;
+  if (rolls_) roll_word_.fill(false);
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
     bool incremental = incremental_ && !force_absolute;
@@ -222,9 +225,10 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
       continue;
     }
     if (a < 0) continue;
-    double v = dimension(c);
+    double v = rotary_[a] ? angle(c) : dimension(c);
     if (a == 0 && lathe && profile_.diameter_x) v /= 2;
     target[a] = incremental ? target[a] + v : v;
+    if (rolls_ && !incremental && rotary_[a] && profile_.rotary[a].roll_over) roll_word_[a] = true, roll_value_[a] = v;
     any = true;
   }
   return any;
@@ -382,7 +386,8 @@ void Interpreter::linear(MoveKind kind, const AxisVector& target) {
   if (kind == MoveKind::line) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
     m.feed = feed_;
-    m.seconds = feed_seconds(m.length, (pos_[0] + target[0]) / 2);
+    const double fed = extra_axes_ ? combined_length(pos_, target, m.length) : m.length;  // F on every axis
+    m.seconds = feed_seconds(fed, (pos_[0] + target[0]) / 2);
   } else {  // rapid axes move independently: the slowest axis sets the time
     double slowest = 0;
     for (int a = 0; a < kAxes; ++a)
@@ -391,6 +396,7 @@ void Interpreter::linear(MoveKind kind, const AxisVector& target) {
     m.seconds = slowest * 60.0;
   }
   pos_ = target;
+  if (rolls_) wrap_rotary();
   emit(m);
 }
 
@@ -483,6 +489,7 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
     }
   }
   pos_ = target;
+  if (rolls_) wrap_rotary();
   emit(m);
 }
 
@@ -513,6 +520,7 @@ void Interpreter::reference_return(int g) {
   AxisVector mid = pos_;
   bool any = axis_target(mid);
   if (!any) return;
+  if (rolls_) roll_over(mid);
   // in offset mode the vector is cancelled at the intermediate point and restored at the next move
   comp_suspended_ = true;
   struct Restore {

@@ -36,6 +36,34 @@ MachineProfile default_lathe() {
 
 namespace {
 
+bool is_axis_parameter(const std::string& key) {
+  return key == "1006#0" || key == "1008#0" || key == "1008#1" || key == "1008#2" || key == "1260";
+}
+
+// No.1006#0, No.1008#0..#2, No.1260 of one axis ("1008#0.A").
+void set_axis_parameter(MachineProfile& p, const std::string& key, const std::string& axis, double value) {
+  const int a = axis.size() == 1 ? axis_index(axis[0]) : -1;
+  if (a < 0 || p.axes.find(axis[0]) == std::string::npos)
+    throw std::runtime_error(fmt::format("parameter {}.{}: this machine has no {} axis (axes {})", key, axis, axis, p.axes));
+  RotaryAxis& r = p.rotary[a];
+  if (key == "1260") {  // 0 (a linear axis's entry in an array) leaves 360 deg
+    if (value < 0 || value != std::floor(value))
+      throw std::runtime_error(fmt::format("parameter 1260.{} is the travel of one turn in increments (0: 360 deg)", axis));
+    r.per_turn = value > 0 ? value * p.increment : 360;
+    return;
+  }
+  if (value != 0 && value != 1) throw std::runtime_error(fmt::format("parameter {}.{} is a bit: 0 or 1", key, axis));
+  const bool on = value != 0;
+  if (key == "1006#0") {
+    if (on && a < 3)
+      throw std::runtime_error(fmt::format("parameter 1006#0.{}: ncurve takes X, Y and Z as linear axes; A, B or C "
+                                           "may be rotary", axis));
+    r.rotary = on;
+  } else if (key == "1008#0") r.roll_over = on;
+  else if (key == "1008#1") r.by_sign = on;
+  else r.relative_roll_over = on;
+}
+
 [[noreturn]] void fail(const std::string& origin, const toml::node& node, const std::string& what) {
   const auto& src = node.source();
   throw std::runtime_error(fmt::format("{}:{}:{}: error: {}", origin, src.begin.line, src.begin.column, what));
@@ -118,6 +146,10 @@ void machine_table(MachineProfile& p, const toml::table& t, const std::string& o
       if (v != "A" && v != "B" && v != "C")
         fail(origin, node, "offset_memory must be \"A\", \"B\" or \"C\" (tool compensation memory)");
       p.offset_memory = v == "A" ? OffsetMemory::A : v == "B" ? OffsetMemory::B : OffsetMemory::C;
+    } else if (key == "cycle_repeat") {
+      std::string v = text(origin, node, key);
+      if (v != "K" && v != "L") fail(origin, node, "cycle_repeat must be \"K\" or \"L\" (the address of a canned cycle's repeats)");
+      p.drilling.repeat_address = v[0];
     } else if (key == "diameter_programming") p.diameter_x = flag(origin, node, key);
     else if (key == "block_skip") p.block_skip = flag(origin, node, key);
     else if (key == "macro_call_nesting") p.macro_nesting = static_cast<int>(number(origin, node, key));
@@ -134,6 +166,22 @@ void machine_table(MachineProfile& p, const toml::table& t, const std::string& o
 void parameters_table(MachineProfile& p, const toml::table& t, const std::string& origin) {
   for (const auto& [k, node] : t) {
     std::string key(k.str());
+    if (const toml::array* arr = node.as_array()) {  // an axis-type parameter: one value per axis
+      if (!is_axis_parameter(key))
+        fail(origin, node, fmt::format("parameter {} has one value, not one per axis", key));
+      if (arr->size() != p.axes.size())
+        fail(origin, node, fmt::format("'{}' must be an array of {} values, one per axis {}", key, p.axes.size(), p.axes));
+      for (std::size_t i = 0; i < p.axes.size(); ++i) {
+        const toml::node& v = *arr->get(i);
+        double value = key.find('#') != std::string::npos ? (flag(origin, v, key) ? 1.0 : 0.0) : number(origin, v, key);
+        try {
+          set_parameter(p, fmt::format("{}.{}", key, p.axes[i]), value);
+        } catch (const std::runtime_error& e) {
+          fail(origin, v, e.what());
+        }
+      }
+      continue;
+    }
     double value = key.find('#') != std::string::npos ? (flag(origin, node, key) ? 1.0 : 0.0)
                                                        : number(origin, node, key);
     try {
@@ -217,7 +265,26 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   };
   if (!std::isfinite(value) || std::fabs(value) > 1e9)
     throw std::runtime_error(fmt::format("parameter {}: {} is not a value a parameter can hold", key, value));
-  if (key == "3401#0") p.decimal_calculator = bit();
+  if (const auto dot = key.find('.'); dot != std::string::npos && is_axis_parameter(key.substr(0, dot)))
+    return set_axis_parameter(p, key.substr(0, dot), key.substr(dot + 1), value);
+  if (is_axis_parameter(key))
+    throw std::runtime_error(fmt::format("parameter {} is set per axis: write {}.A (for the A axis), or in a "
+                                         "profile an array with one value per axis",
+                                         key, key));
+  if (key == "5101#0") p.drilling.axis_by_plane = bit();
+  else if (key == "5101#4" || key == "5101#5") {
+    const int mask = key == "5101#4" ? 1 : 2;
+    p.drilling.shift_direction = bit() ? (p.drilling.shift_direction | mask) : (p.drilling.shift_direction & ~mask);
+  }
+  else if (key == "5101#6") p.drilling.tap_without_m05 = bit();
+  else if (key == "5200#0") p.drilling.g84_rigid = bit();
+  else if (key == "5200#5") p.drilling.peck_to_r = bit();
+  else if (key == "5213") {
+    if (value < 0 || value != std::floor(value))
+      throw std::runtime_error("parameter 5213 is a whole number of increments, 0 or more");
+    p.drilling.rigid_return = value * p.increment;
+  }
+  else if (key == "3401#0") p.decimal_calculator = bit();
   else if (key == "5003#0") p.compensation.startup_type_b = bit();
   else if (key == "5003#1") p.compensation.startup_type_c = bit();
   else if (key == "5008#1" || key == "5008#3") p.compensation.interference_check = !bit();
@@ -270,8 +337,9 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else
       throw std::runtime_error(
           fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 5003#0, "
-                      "5003#1, 5008#1, 5008#3, 5114, 5115, 5400#0, 5400#6, 5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, "
-                      "6050..6059, 6071..6079, 6080..6089)",
+                      "5003#1, 5008#1, 5008#3, 5101#0, 5101#4, 5101#5, 5101#6, 5114, 5115, 5200#0, 5200#5, 5213, "
+                      "5400#0, 5400#6, 5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, "
+                      "6080..6089; per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260)",
                       key));
   }
 }

@@ -62,6 +62,26 @@ struct ServoSettings {
   double period = 0.001;                  // s, servo/interpolation period
 };
 
+// A rotary axis (No.1006#0 ROTx = 1): degrees, no inch/metric conversion, and its roll-over (No.1008).
+struct RotaryAxis {
+  bool rotary = false;
+  bool roll_over = false;           // No.1008#0 ROAx: absolute positions kept within one turn
+  bool by_sign = false;             // No.1008#1 RABx: absolute commands turn the way of their sign (else the shorter way)
+  bool relative_roll_over = false;  // No.1008#2 RRLx: relative coordinates within one turn (display only)
+  double per_turn = 360;            // No.1260, degrees per turn
+};
+
+// Drilling canned cycle parameters of a mill (No.5101, No.5200, No.5213).
+struct DrillingSettings {
+  bool axis_by_plane = false;    // No.5101#0 FXY: 0 = the drilling axis is always Z, 1 = the plane's normal
+  int shift_direction = 0;       // No.5101#4 RD1 + 2 * #5 RD2: G76/G87 shift (G17: +X, -X, +Y, -Y)
+  bool tap_without_m05 = false;  // No.5101#6 M5T: 0 = M05 before the spindle reverses in G84/G74
+  bool g84_rigid = false;        // No.5200#0 G84: G84/G74 are rigid tapping without M29
+  bool peck_to_r = false;        // No.5200#5 PCP: 1 = peck rigid tapping returns to R (else high-speed, back by d)
+  double rigid_return = 0;       // No.5213, mm: d of peck rigid tapping
+  char repeat_address = 'K';     // repeats of a hole: K (0i, 16i, 30i) or L (controls whose format uses L)
+};
+
 struct MachineProfile {
   std::string name = "FANUC 0i-MF 3-axis mill, factory parameters";
   MachineType type = MachineType::mill;
@@ -84,6 +104,8 @@ struct MachineProfile {
   double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
   double peck_retract = 0;    // No.5114, mm: G73's retraction d after each peck
   double peck_clearance = 0;  // No.5115, mm: G83's clearance d above the previous peck's depth
+  DrillingSettings drilling;
+  std::array<RotaryAxis, kAxes> rotary{};  // by axis_index; only A, B, C may be rotary
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   // coordinate transforms of a mill (G68, G51): parameters No.5400, 5410, 5411, 5421
   bool rotation_angle_by_g90_g91 = false;  // No.5400#0 RIN: G68 R follows G90/G91 (0: always absolute)
@@ -116,7 +138,8 @@ MachineProfile default_lathe();
 
 // Reads a TOML profile; throws std::runtime_error naming file:line:column on a bad or unknown key.
 MachineProfile load_profile(const std::string& path);
-// Sets a FANUC parameter by its number ("6050", "3401#0"); throws for ones ncurve does not use.
+// Sets a FANUC parameter by its number ("6050", "3401#0"; per axis "1008#0.A"); throws for ones
+// ncurve does not use.
 void set_parameter(MachineProfile& p, const std::string& key, double value);
 MachineProfile parse_profile(const std::string& toml_text, const std::string& origin);
 

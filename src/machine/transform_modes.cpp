@@ -272,13 +272,13 @@ bool Interpreter::transform_arc_words() {
 
 // Canned cycle point R and Z (along Z, G17) under mirror or scaling: the programmed levels mapped
 // as Z coordinates. Q and the peck distances d are not scaled (the manual).
-void Interpreter::transformed_cycle_levels(double& r_level, double& z_level) const {
+void Interpreter::transformed_cycle_levels(int axis, double& r_level, double& z_level) const {
   auto z_of = [&](double z, bool forward) {
     AxisVector v{};
-    v[2] = z;
-    return (forward ? xf_.apply(v) : xf_.invert(v))[2];
+    v[axis] = z;
+    return (forward ? xf_.apply(v) : xf_.invert(v))[axis];
   };
-  const double initial = z_of(cycle_initial_z_, false);
+  const double initial = z_of(cycle_initial_[axis], false);
   const double r = incremental_ ? initial + *cycle_r_ : *cycle_r_;
   const double z = incremental_ ? r + *cycle_z_ : *cycle_z_;
   r_level = z_of(r, true);

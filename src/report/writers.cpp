@@ -7,6 +7,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <string_view>
 
 namespace ncurve::report {
 
@@ -53,13 +54,21 @@ void JsonlWriter::on_move(const Move& m) {
 
 CsvWriter::CsvWriter(std::ostream& out, const machine::MachineProfile& profile, double arc_tolerance)
     : out_(out), frame_(profile), arc_tolerance_(arc_tolerance) {
-  out_ << "line,kind,x,y,z,f\n";
+  out_ << "line,kind,x,y,z,f";
+  for (char a : std::string_view("ABC"))
+    if (profile.axes.find(a) != std::string::npos) {
+      extra_.push_back(machine::axis_index(a));
+      out_ << ',' << static_cast<char>(std::tolower(a));
+    }
+  out_ << '\n';
 }
 
-void CsvWriter::row(std::uint32_t line, const char* kind, double x, double y, double z, double f) {
+void CsvWriter::row(std::uint32_t line, const char* kind, const machine::AxisVector& p, double f) {
   fmt::memory_buffer b;
-  fmt::format_to(std::back_inserter(b), "{},{},{:.6f},{:.6f},{:.6f},{}\n", line, kind, clean(frame_.x(x)), clean(y),
-                 clean(z), f);
+  auto it = std::back_inserter(b);
+  fmt::format_to(it, "{},{},{:.6f},{:.6f},{:.6f},{}", line, kind, clean(frame_.x(p[0])), clean(p[1]), clean(p[2]), f);
+  for (int a : extra_) fmt::format_to(it, ",{:.6f}", clean(p[a]));
+  b.push_back('\n');
   out_.write(b.data(), static_cast<std::streamsize>(b.size()));
 }
 
@@ -67,14 +76,14 @@ void CsvWriter::on_move(const Move& m) {
   if (!m.is_motion() && m.kind != MoveKind::dwell) return;
   const char* kind = machine::to_string(m.kind);
   if (!started_) {
-    row(m.line, kind, m.start[0], m.start[1], m.start[2], m.feed);
+    row(m.line, kind, m.start, m.feed);
     started_ = true;
   }
   if (m.kind == MoveKind::arc) {
-    arc_points(m, arc_tolerance_, [&](const machine::AxisVector& p) { row(m.line, kind, p[0], p[1], p[2], m.feed); });
+    arc_points(m, arc_tolerance_, [&](const machine::AxisVector& p) { row(m.line, kind, p, m.feed); });
     return;
   }
-  row(m.line, kind, m.end[0], m.end[1], m.end[2], m.feed);
+  row(m.line, kind, m.end, m.feed);
 }
 
 GcodeWriter::GcodeWriter(std::ostream& out, const machine::MachineProfile& profile, const std::string& source_name)
@@ -94,11 +103,17 @@ std::string GcodeWriter::num(double v) const {
 void GcodeWriter::on_move(const Move& m) {
   std::string line;
   const bool lathe = profile_.lathe();
+  if (m.is_motion()) {  // a roll-over axis starts a move within one turn: carry the turns it made
+    if (moved_)
+      for (int a = 3; a < machine::kAxes; ++a) turns_[a] += last_end_[a] - m.start[a];
+    last_end_ = m.end;
+    moved_ = true;
+  }
   auto axes = [&](const machine::AxisVector& p) {
     std::string s;
     for (char a : profile_.axes) {
       int k = machine::axis_index(a);
-      s += fmt::format(" {}{}", a, num(k == 0 ? frame_.x(p[k]) : p[k]));
+      s += fmt::format(" {}{}", a, num(k == 0 ? frame_.x(p[k]) : p[k] + turns_[k]));
     }
     return s;
   };
@@ -137,7 +152,8 @@ void GcodeWriter::on_move(const Move& m) {
     case MoveKind::dwell: line = fmt::format("G04 P{}", static_cast<long>(std::lround(m.seconds * 1000))); break;
     case MoveKind::tool_change: line = lathe ? fmt::format("T{:04}", m.code) : fmt::format("T{} M06", m.code); break;
     case MoveKind::spindle:
-      line = m.code == 5 ? "M05" : fmt::format("S{} M{:02}", std::lround(m.spindle), m.code);
+      line = m.code == 5 || m.code == 19 ? fmt::format("M{:02}", m.code)
+                                         : fmt::format("S{} M{:02}", std::lround(m.spindle), m.code);
       break;
     case MoveKind::coolant: case MoveKind::program_stop: case MoveKind::m_code:
       line = fmt::format("M{:02}", m.code);
@@ -169,12 +185,8 @@ void GcodeWriter::finish() {
   out_ << "%\n";
 }
 
-void CsvWriter::stopped(const nc::Diagnostic& alarm) {
-  if (!started_) {
-    out_ << "line,kind,x,y,z,f\n";
-    started_ = true;
-  }
-  out_ << alarm.span.line << ",alarm:" << alarm.code << ",,,,\n";
+void CsvWriter::stopped(const nc::Diagnostic& alarm) {  // the header is out already (constructor)
+  out_ << alarm.span.line << ",alarm:" << alarm.code << ",,,," << std::string(extra_.size(), ',') << "\n";
 }
 
 void JsonlWriter::stopped(const nc::Diagnostic& alarm) {

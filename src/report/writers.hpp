@@ -2,6 +2,7 @@
 #pragma once
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
@@ -39,11 +40,12 @@ public:
   void stopped(const nc::Diagnostic& alarm) override;
 
 private:
-  void row(std::uint32_t line, const char* kind, double x, double y, double z, double f);
+  void row(std::uint32_t line, const char* kind, const machine::AxisVector& p, double f);
   std::ostream& out_;
   OutputFrame frame_;
   double arc_tolerance_;
   bool started_ = false;
+  std::vector<int> extra_;  // A, B, C of the profile: columns a, b, c after f
 };
 
 // The program the macro stands for: every move as a plain G00/G01/G02/G03 block, absolute, in mm.
@@ -67,6 +69,9 @@ private:
   bool per_rev_known_ = false;
   bool ended_ = false;
   bool stopped_ = false;
+  machine::AxisVector turns_{};    // added to A, B, C: roll-over axes written as continuous angles
+  machine::AxisVector last_end_{};
+  bool moved_ = false;
 };
 
 // Points of an arc move (excluding its start), spaced so the chord error is within tolerance.

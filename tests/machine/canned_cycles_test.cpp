@@ -1,4 +1,4 @@
-// Drilling canned cycles (G73, G74, G81..G86, G89, G80, G98/G99) against moves worked out by hand from
+// Drilling canned cycles (G73, G74, G76, G81..G89, G80, G98/G99, rigid tapping) against moves worked out by hand from
 // the FANUC 30i-B / 0i-MF operator's manual: position at the current level, rapid to R, the cycle's
 // motions to Z, return to the initial level (G98) or R (G99); G91 R from the initial level, Z from R.
 #include <gtest/gtest.h>
@@ -126,19 +126,111 @@ TEST(CannedCycles, G86StopsTheSpindleAtTheBottom) {
   EXPECT_EQ(codes, (std::vector<int>{5, 3}));
 }
 
-TEST(CannedCycles, G84ReversesTheSpindleToBackOut) {
-  auto r = run("G90 G00 X0. Y0. Z10.\nG98 G84 X5. Z-3. R1. P300 F100.\nM30\n");
-  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -3}, {2, D, 5, 0, -3}, {2, S, 5, 0, -3},
-                      {2, L, 5, 0, 1}, {2, S, 5, 0, 1}, {2, R, 5, 0, 10}});
+namespace {
+// Codes of the spindle events of a run, in order.
+std::vector<int> spindle_codes(const test::Ran& r) {
   std::vector<int> codes;
   for (const auto& m : r.moves)
     if (m.kind == MoveKind::spindle) codes.push_back(m.code);
-  EXPECT_EQ(codes, (std::vector<int>{4, 3}));
+  return codes;
+}
+}  // namespace
+
+// G84: dwell P at Z, M05 (No.5101#6 M5T = 0), M04, feed out to R, dwell P, M05, M03, rapid back.
+TEST(CannedCycles, G84ReversesTheSpindleToBackOut) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG98 G84 X5. Z-3. R1. P300 F100.\nM30\n");
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, L, 5, 0, -3}, {2, D, 5, 0, -3}, {2, S, 5, 0, -3},
+                      {2, S, 5, 0, -3}, {2, L, 5, 0, 1}, {2, D, 5, 0, 1}, {2, S, 5, 0, 1}, {2, S, 5, 0, 1},
+                      {2, R, 5, 0, 10}});
+  EXPECT_EQ(spindle_codes(r), (std::vector<int>{5, 4, 5, 3}));
   auto left = run("G90 G00 X0. Y0. Z10.\nG98 G74 X5. Z-3. R1. F100.\nM30\n");
-  codes.clear();
-  for (const auto& m : left.moves)
-    if (m.kind == MoveKind::spindle) codes.push_back(m.code);
-  EXPECT_EQ(codes, (std::vector<int>{3, 4}));
+  EXPECT_EQ(spindle_codes(left), (std::vector<int>{5, 3, 5, 4}));
+  auto m5t = machine::default_mill();
+  machine::set_parameter(m5t, "5101#6", 1);  // M5T = 1: no M05 before the reversal
+  EXPECT_EQ(spindle_codes(run("G90 G00 X0. Y0. Z10.\nG98 G84 X5. Z-3. R1. F100.\nM30\n", m5t)),
+            (std::vector<int>{4, 3}));
+}
+
+// No.5200#0 = 1: G84 taps rigidly without M29; the moves are feeds at F with the spindle synchronised.
+TEST(CannedCycles, G84IsRigidWithParameter5200Bit0) {
+  auto p = machine::default_mill();
+  machine::set_parameter(p, "5200#0", 1);
+  auto r = run("G90 G00 X0. Y0. Z10. S500\nG99 G84 X5. Z-3. R1. F750.\nM30\n", p);
+  expect_moves(r, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 1}, {2, S, 5, 0, 1}, {2, L, 5, 0, -3}, {2, S, 5, 0, -3},
+                      {2, S, 5, 0, -3}, {2, L, 5, 0, 1}, {2, S, 5, 0, 1}});
+  EXPECT_EQ(spindle_codes(r), (std::vector<int>{3, 5, 4, 5}));
+  for (const auto& m : r.motions()) {
+    if (m.kind == MoveKind::line) {
+      EXPECT_DOUBLE_EQ(m.feed, 750);
+    }
+  }
+  // without the parameter the same block is a tapping cycle with a floating holder
+  EXPECT_EQ(spindle_codes(run("G90 G00 X0. Y0. Z10. S500\nG99 G84 X5. Z-3. R1. F750.\nM30\n")),
+            (std::vector<int>{5, 4, 5, 3}));
+}
+
+// Ending rigid tapping clears its S (as S0): the next rigid tapping needs S again (PS0200). F0 is PS0201.
+TEST(CannedCycles, RigidTappingNeedsSAndF) {
+  auto r = run("G90 G00 Z10.\nM29 S500\nG84 X5. Z-3. R1. F100.\nG80\nM29\nG84 X8. Z-3. R1.\nM30\n");
+  EXPECT_EQ(r.alarm_code(), "PS0200");
+  EXPECT_EQ(r.alarm_line(), 6u);
+  EXPECT_EQ(run("G90 G00 Z10.\nM29 S500\nG84 X5. Z-3. R1.\nM30\n").alarm_code(), "PS0201");
+  // a block without axis words between M29 and G84 is allowed
+  EXPECT_TRUE(run("G90 G00 Z10. F100.\nM29 S500\nG04 P10\nG84 X5. Z-3. R1.\nM30\n").result.ok());
+}
+
+// No.5101#0 FXY = 0 (factory): Z drills whatever the plane.
+TEST(CannedCycles, FactoryFxyDrillsAlongZInEveryPlane) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG19 G98 G81 X5. Y2. Z-3. R1. F100.\nM30\n");
+  expect_moves(r, 2, {{2, R, 5, 2, 10}, {2, R, 5, 2, 1}, {2, L, 5, 2, -3}, {2, R, 5, 2, 10}});
+}
+
+// G18 with FXY = 1: Y drills, X Z position; the Y word is the bottom.
+TEST(CannedCycles, G18DrillsAlongYWithFxy) {
+  auto p = machine::default_mill();
+  machine::set_parameter(p, "5101#0", 1);
+  auto r = run("G90 G18 G00 X0. Y20. Z0.\nG99 G81 X5. Z-4. Y-3. R2. F100.\nM30\n", p);
+  expect_moves(r, 2, {{2, R, 5, 20, -4}, {2, R, 5, 2, -4}, {2, L, 5, -3, -4}, {2, R, 5, 2, -4}});
+  // G76 in G18: RD2 RD1 = 0 0 shifts +Z
+  auto b = run("G90 G18 G00 X0. Y20. Z0.\nG98 G76 X5. Z-4. Y-3. R2. Q0.5 F100.\nM30\n", p);
+  expect_moves(b, 2, {{2, R, 5, 20, -4}, {2, R, 5, 2, -4}, {2, L, 5, -3, -4}, {2, S, 5, -3, -4},
+                      {2, R, 5, -3, -3.5}, {2, R, 5, 20, -3.5}, {2, R, 5, 20, -4}, {2, S, 5, 20, -4}});
+}
+
+// A cycle under G41: the holes are drilled at the programmed points (the vector cancelled as for
+// G28), and the next move after G80 starts the offset again.
+TEST(CannedCycles, CutterCompensationIsSuspendedInACycle) {
+  auto r = run("G10 L11 P1 R5.\nG90 G17 G00 X0. Y0. Z10.\nG41 G01 X20. Y0. D1 F100.\nG98 G81 X30. Y10. Z-3. R1.\n"
+               "G80\nG01 X40. Y0.\nG40 X50.\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  bool drilled = false;
+  for (const auto& m : r.moves)
+    if (m.line == 4 && m.kind == MoveKind::line) {
+      EXPECT_NEAR(m.end[0], 30, 1e-9);
+      EXPECT_NEAR(m.end[1], 10, 1e-9);
+      EXPECT_NEAR(m.end[2], -3, 1e-9);
+      drilled = true;
+    }
+  EXPECT_TRUE(drilled);
+}
+
+// A profile whose control counts repeats with L (cycle_repeat = "L"); K is then an alarm.
+TEST(CannedCycles, RepeatsWithL) {
+  auto p = machine::parse_profile("[machine]\ncycle_repeat = \"L\"\n", "l.toml");
+  auto r = run("G90 G00 X0. Y0. Z20.\nG91 G99 G81 X10. Z-7. R-18. L2 F100.\nM30\n", p);
+  expect_moves(r, 2, {{2, R, 10, 0, 20}, {2, R, 10, 0, 2}, {2, L, 10, 0, -5}, {2, R, 10, 0, 2},
+                      {2, R, 20, 0, 2}, {2, L, 20, 0, -5}, {2, R, 20, 0, 2}});
+  EXPECT_EQ(run("G90 G00 Z20.\nG91 G99 G81 X10. Z-7. R-18. K2 F100.\nM30\n", p).alarm_code(), "PS0009");
+}
+
+// G91 K2 with G76: the shift and its return at each hole, the hole stepping by the increment.
+TEST(CannedCycles, G76RepeatsShiftAtEachHole) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG91 G99 G76 X10. Z-5. R-8. Q1. K2 F100.\nM30\n");
+  expect_moves(r, 2, {{2, R, 10, 0, 10}, {2, R, 10, 0, 2}, {2, L, 10, 0, -3}, {2, S, 10, 0, -3},
+                      {2, R, 11, 0, -3}, {2, R, 11, 0, 2}, {2, R, 10, 0, 2}, {2, S, 10, 0, 2},
+                      {2, R, 20, 0, 2}, {2, L, 20, 0, -3}, {2, S, 20, 0, -3}, {2, R, 21, 0, -3},
+                      {2, R, 21, 0, 2}, {2, R, 20, 0, 2}, {2, S, 20, 0, 2}});
+  EXPECT_EQ(spindle_codes(r), (std::vector<int>{19, 3, 19, 3}));
 }
 
 TEST(CannedCycles, G80AndG01Cancel) {
@@ -168,15 +260,6 @@ TEST(CannedCycles, MissingDataAlarms) {
   EXPECT_EQ(q.alarm_code(), "PS0045");
   EXPECT_EQ(q.alarm_line(), 2u);
   EXPECT_EQ(run("G00 Z10.\nG73 X5. Z-10. R2. Q0 F100.\nM30\n").alarm_code(), "PS0045");
-}
-
-TEST(CannedCycles, UnsupportedStopWithNC9001) {
-  for (const char* text : {"G00 Z10.\nG76 X5. Z-3. R1. Q1. F100.\nM30\n", "G00 Z10.\nG87 X5. Z-3. R1. F100.\nM30\n",
-                           "G00 Z10.\nG88 X5. Z-3. R1. F100.\nM30\n", "G00 Z10.\nG18 G81 X5. Z-3. R1. F100.\nM30\n",
-                           "G00 Z10.\nM29 S500\nG84 X5. Z-3. R1. F100.\nM30\n"}) {
-    auto r = run(text);
-    EXPECT_EQ(r.alarm_code(), "NC9001") << text;
-  }
 }
 
 TEST(CannedCycles, ModalInformation) {

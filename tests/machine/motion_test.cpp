@@ -245,7 +245,7 @@ TEST(Motion, AxisWordOfAMissingRotaryAxisAlarms) {
 }
 
 TEST(Motion, UnsupportedFeaturesStopWithADiagnostic) {
-  EXPECT_EQ(run("G76 X1. Y1. Z-1. R1. Q1. F100.\n").alarm_code(), "NC9001");  // fine boring
+  EXPECT_EQ(run("G12.1\n").alarm_code(), "NC9001");  // polar coordinate interpolation
   EXPECT_EQ(run("G07.5 X1.\n").alarm_code(), "PS0010");
 }
 

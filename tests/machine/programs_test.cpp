@@ -26,7 +26,11 @@ struct Expected {
   bool arc = false;
   double cx = 0, cy = 0, cz = 0;
   std::string dir;
+  std::vector<std::pair<int, double>> rotary;  // "A=90" after x y z: A, B or C at the end
+  double value = 0;                           // events: the M code (spindle, program_stop) or the dwell in s
 };
+
+bool is_event(const std::string& kind) { return kind == "spindle" || kind == "dwell" || kind == "program_stop"; }
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -50,13 +54,29 @@ void check_program(const fs::path& expected_file) {
     rest = m.suffix();
   }
   std::vector<Expected> want;
+  bool events = false;  // the file lists spindle events, dwells and stops too
   std::istringstream lines(slurp(expected_file));
   for (std::string l; std::getline(lines, l);) {
     if (l.empty() || l[0] == '#') continue;
     std::istringstream row(l);
     Expected e;
-    row >> e.line >> e.kind >> e.x >> e.y >> e.z;
-    if (row >> e.cx >> e.cy >> e.cz >> e.dir) e.arc = true;
+    row >> e.line >> e.kind;
+    if (is_event(e.kind)) {  // "12 spindle 19", "12 dwell 0.5"
+      row >> e.value;
+      events = true;
+      want.push_back(e);
+      continue;
+    }
+    row >> e.x >> e.y >> e.z;
+    std::vector<std::string> rest;
+    for (std::string t; row >> t;) {
+      if (t.size() > 2 && t[1] == '=' && machine::axis_index(t[0]) >= 3) e.rotary.emplace_back(machine::axis_index(t[0]), std::stod(t.substr(2)));
+      else rest.push_back(t);
+    }
+    if (rest.size() == 4) {
+      e.cx = std::stod(rest[0]), e.cy = std::stod(rest[1]), e.cz = std::stod(rest[2]), e.dir = rest[3];
+      e.arc = true;
+    }
     want.push_back(e);
   }
   machine::ProgramLibrary lib(profile.parse_options());
@@ -67,12 +87,14 @@ void check_program(const fs::path& expected_file) {
   ASSERT_TRUE(result.ok()) << nc::format(*result.alarm);
   std::vector<machine::Move> got;
   for (const auto& mv : sink.moves)
-    if (mv.is_motion()) got.push_back(mv);
+    if (mv.is_motion() || (events && is_event(machine::to_string(mv.kind)))) got.push_back(mv);
   const double xs = profile.lathe() && profile.diameter_x ? 2 : 1;
   std::string listing;
   for (const auto& mv : got)
-    listing += fmt::format("{} {} {:.4f} {:.4f} {:.4f}\n", mv.line, machine::to_string(mv.kind), mv.end[0] * xs,
-                           mv.end[1], mv.end[2]);
+    listing += mv.is_motion() ? fmt::format("{} {} {:.4f} {:.4f} {:.4f} A={:.4f}\n", mv.line, machine::to_string(mv.kind),
+                                            mv.end[0] * xs, mv.end[1], mv.end[2], mv.end[3])
+                              : fmt::format("{} {} {}\n", mv.line, machine::to_string(mv.kind),
+                                            mv.kind == machine::MoveKind::dwell ? mv.seconds : mv.code);
   ASSERT_EQ(got.size(), want.size()) << listing;
   for (std::size_t i = 0; i < want.size(); ++i) {
     const auto& e = want[i];
@@ -80,6 +102,11 @@ void check_program(const fs::path& expected_file) {
     SCOPED_TRACE(fmt::format("move {} (expected line {} {})\n{}", i, e.line, e.kind, listing));
     EXPECT_EQ(g.line, e.line);
     EXPECT_EQ(machine::to_string(g.kind), e.kind);
+    if (is_event(e.kind)) {
+      EXPECT_NEAR(g.kind == machine::MoveKind::dwell ? g.seconds : g.code, e.value, 1e-9);
+      continue;
+    }
+    for (auto [axis, v] : e.rotary) EXPECT_NEAR(g.end[axis], v, 6e-4) << "axis " << "XYZABC"[axis];
     EXPECT_NEAR(g.end[0] * xs, e.x, 6e-4);
     EXPECT_NEAR(g.end[1], e.y, 6e-4);
     EXPECT_NEAR(g.end[2], e.z, 6e-4);

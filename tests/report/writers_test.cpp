@@ -136,3 +136,22 @@ TEST(Writers, JsonOfAFileNameThatIsNotUtf8) {
   EXPECT_NO_THROW(j = report::summary_json(rep));
   EXPECT_NE(j.find("\"source\": \"" + written + "\""), std::string::npos) << j;
 }
+
+// A profile with A gets an `a` column after f; roll-over axes go into the G code as continuous angles.
+TEST(Writers, RotaryAxesInEveryFormat) {
+  auto p = machine::parse_profile("[machine]\naxes = [\"X\", \"Y\", \"Z\", \"A\"]\n[parameters]\n"
+                                  "\"1006#0\" = [0, 0, 0, 1]\n\"1008#0\" = [0, 0, 0, 1]\n",
+                                  "r.toml");
+  const std::string program = "G90 G00 A0.\nG91 A380.\nG90 A-30.\nM30\n";
+  std::string csv = write(program, "csv", p);
+  // A 0 -> 380 (the position is then 20) -> -30 = 330 the shorter way: 20 - 50 = -30
+  EXPECT_EQ(csv, "line,kind,x,y,z,f,a\n1,rapid,0.000000,0.000000,0.000000,0,0.000000\n"
+                 "1,rapid,0.000000,0.000000,0.000000,0,0.000000\n2,rapid,0.000000,0.000000,0.000000,0,380.000000\n"
+                 "3,rapid,0.000000,0.000000,0.000000,0,-30.000000\n");
+  std::string g = write(program, "gcode", p);
+  EXPECT_NE(g.find("G00 X0. Y0. Z0. A380.\nG00 X0. Y0. Z0. A330.\n"), std::string::npos) << g;
+  std::string j = write(program, "jsonl", p);
+  EXPECT_NE(j.find(R"("end_abc":[380,0,0])"), std::string::npos) << j;
+  // the 3-axis header stays as it was
+  EXPECT_EQ(write("G00 X1.\nM30\n", "csv", machine::default_mill()).substr(0, 18), "line,kind,x,y,z,f\n");
+}
