@@ -162,7 +162,7 @@ TEST(Compensation, RandomContoursKeepTheRadius) {
   std::mt19937 rng(20261124);
   std::uniform_real_distribution<double> u(0, 1);
   int checked = 0, alarms = 0;
-  for (int trial = 0; trial < 1500; ++trial) {
+  for (int trial = 0; trial < 3000; ++trial) {
     const int n = 5 + static_cast<int>(u(rng) * 8);
     const double tool = std::round((0.5 + 2.5 * u(rng)) * 1000) / 1000;
     const bool left = u(rng) < 0.5;
