@@ -85,6 +85,23 @@ void BM_Contour1M(benchmark::State& state) {
 }
 BENCHMARK(BM_Contour1M)->Arg(0)->Arg(1)->ArgName("compensated")->Unit(benchmark::kMillisecond);
 
+// 100,000 holes of a G81 drilling cycle on a 1 mm grid, one X Y block a hole.
+std::string drilling(long holes) {
+  std::string s = "O1003\nG90 G00 X0 Y0 Z10.\nG99 G81 X0 Y0 Z-5. R2. F300.\n";
+  s.reserve(static_cast<std::size_t>(holes) * 16);
+  for (long i = 1; i < holes; ++i) fmt::format_to(std::back_inserter(s), "X{} Y{}\n", i % 1000, i / 1000);
+  s += "G80\nM30\n";
+  return s;
+}
+
+void BM_G81Holes100k(benchmark::State& state) {
+  std::string text = drilling(100'000);
+  std::uint64_t moves = 0;
+  for (auto _ : state) moves += run_text(text).motions;
+  state.counters["moves/s"] = benchmark::Counter(static_cast<double>(moves), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_G81Holes100k)->Unit(benchmark::kMillisecond);
+
 void BM_G65Calls(benchmark::State& state) {
   std::string text =
       "O1002\n#1=0\nWHILE [#1 LT 100000] DO1\nG65 P9100 A#1 B2. X[#1*0.001]\n#1=#1+1\nEND1\nM30\n"
