@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 #include "machine/drilling.hpp"
 
@@ -62,14 +63,14 @@ bool Interpreter::canned_cycle_block() {
   const char axis_letter = "XYZ"[ax];
   if (has('R')) cycle_r_ = dimension(word('R'));
   if (has(axis_letter)) cycle_z_ = dimension(word(axis_letter));
-  if (has('Q') && (g == 73 || g == 83 || g == 76 || g == 87 || g == 84 || g == 74)) {
-    cycle_q_ = std::fabs(dimension(word('Q')));  // "be sure to specify a positive value": the sign is ignored
-    cycle_has_q_ = true;
-  }
+  // Q and P are kept only from a block that drills (or stores its data with K0)
+  std::optional<double> q, p;
+  if (has('Q') && (g == 73 || g == 83 || g == 76 || g == 87 || g == 84 || g == 74))
+    q = std::fabs(dimension(word('Q')));  // "be sure to specify a positive value": the sign is ignored
   if (has('P')) {
     const int ms = integer(word('P'), "P of a canned cycle (dwell, milliseconds)");
     if (ms < 0) alarm("PS0011", "negative dwell time", word('P').column);
-    cycle_p_ = ms / 1000.0;
+    p = ms / 1000.0;
   }
   const char repeat_letter = profile_.drilling.repeat_address;
   const char other = repeat_letter == 'K' ? 'L' : 'K';
@@ -88,7 +89,12 @@ bool Interpreter::canned_cycle_block() {
 
   const AxisVector base = pos_;
   AxisVector hole = pos_;
-  if (!axis_target(hole)) return false;  // data only: no hole
+  const bool positioned = axis_target(hole);
+  if (positioned || repeat == 0) {
+    if (q) cycle_q_ = *q, cycle_has_q_ = true;
+    if (p) cycle_p_ = *p;
+  }
+  if (!positioned) return false;  // data only: no hole
   if (rolls_) roll_over(hole);
   hole[ax] = pos_[ax];             // the drilling axis word is the hole bottom, not a move
   if (repeat == 0) return false;  // K0: the data are stored, no hole is drilled

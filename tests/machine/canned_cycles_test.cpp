@@ -270,3 +270,16 @@ TEST(CannedCycles, ModalInformation) {
   EXPECT_DOUBLE_EQ(r.var(102), 80);
   EXPECT_DOUBLE_EQ(r.var(103), 98);
 }
+
+// Q and P are stored only from a block that drills: P1000 alone on line 3 is not kept, so the hole of
+// line 4 dwells the 500 ms of line 2 (FANUC: "specify Q and P in a block that performs drilling").
+TEST(CannedCycles, QAndPOnlyFromADrillingBlock) {
+  auto r = run("G90 G00 X0. Y0. Z10.\nG99 G82 X5. Z-5. R2. P500 F100.\nP1000\nX10.\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  std::vector<double> dwells;
+  for (const auto& m : r.moves)
+    if (m.kind == MoveKind::dwell) dwells.push_back(m.seconds);
+  ASSERT_EQ(dwells.size(), 2u);
+  EXPECT_DOUBLE_EQ(dwells[0], 0.5);
+  EXPECT_DOUBLE_EQ(dwells[1], 0.5);
+}
