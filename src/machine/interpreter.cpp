@@ -283,7 +283,7 @@ void Interpreter::step() {
       const bool g40 = comp_side_ != 0;
       macro_call_block_ = false;
       exec_nc(b);
-      if (compensating() && !macro_call_block_) end_of_block_compensation(g40 && comp_side_ == 0);
+      if (compensating() && !macro_call_block_ && !shape_moves_) end_of_block_compensation(g40 && comp_side_ == 0);
       break;
     }
     case Statement::go_to: jump(b, eval(b.value).number()); break;
@@ -587,6 +587,7 @@ void Interpreter::exec_nc(const Block& b) {
         case 530: machine_coordinate_move(); moved = true; break;
         case 100: data_setting(); break;
         case 520: case 920: case 500: set_coordinate_system(g); break;
+        case 700: case 710: case 720: case 730: case 740: case 750: moved = repetitive_cycle(g) || moved; break;
         default: break;
       }
     }

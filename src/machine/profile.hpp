@@ -83,6 +83,16 @@ struct MachineProfile {
   double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
   double peck_retract = 0;    // No.5114, mm: G73's retraction d after each peck
   double peck_clearance = 0;  // No.5115, mm: G83's clearance d above the previous peck's depth
+  // lathe multiple repetitive cycles (G70..G75), docs/lathe-cycles-mrc.md
+  bool mrc_one_block = false;   // No.0001#1 FCV: Series 10/11 format, one block per G71..G75
+  double mrc_depth = 0;         // No.5132, mm: Δd of G71/G72
+  double mrc_escape = 0;        // No.5133, mm: e of G71/G72
+  double mrc_relief_x = 0;      // No.5135, mm (radius): Δi of G73
+  double mrc_relief_z = 0;      // No.5136, mm: Δk of G73
+  double mrc_divisions = 0;     // No.5137: d of G73
+  double mrc_return = 0;        // No.5139, mm: e of G74/G75
+  bool mrc_no_finish_type1 = false;  // No.5105#1 RF1: G71/G72 type I make no last pass along the shape
+  bool mrc_no_finish_type2 = false;  // No.5105#2 RF2: likewise type II
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   std::array<int, 10> g_code_macros{};  // No.6050..6059: G code that calls O9010..O9019
   std::array<int, 10> m_code_macros{};  // No.6080..6089: M code that calls O9020..O9029
