@@ -126,6 +126,7 @@ Interpreter::ShapeRange Interpreter::shape_range(int g) {
 // and feed modes, F S T and M codes other than calls and ends.
 void Interpreter::check_shape_block(const nc::Block& b, bool first, int g) {
   if (b.kind != nc::Statement::nc || (b.block_skip && profile_.block_skip)) return;
+  block_ = &b;  // an alarm names this block
   const std::string code = written(g, profile_.gcode_system);
   bool move_code = false, arc_code = false;
   for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
