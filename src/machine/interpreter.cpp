@@ -286,7 +286,7 @@ void Interpreter::step() {
       const bool from_cancel = comp_side_ == 0 && !comp_->offset_mode();
       macro_call_block_ = false;
       exec_nc(b);
-      if (compensating() && !macro_call_block_)
+      if (compensating() && !macro_call_block_ && !shape_moves_)
         end_of_block_compensation(g40 && comp_side_ == 0, from_cancel && comp_side_ != 0);
       break;
     }
@@ -592,6 +592,7 @@ void Interpreter::exec_nc(const Block& b) {
         case 530: machine_coordinate_move(); moved = true; break;
         case 100: data_setting(); break;
         case 520: case 920: case 500: set_coordinate_system(g); break;
+        case 700: case 710: case 720: case 730: case 740: case 750: moved = repetitive_cycle(g) || moved; break;
         default: break;
       }
     }

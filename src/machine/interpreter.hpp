@@ -18,6 +18,10 @@
 
 namespace ncurve::machine {
 
+namespace mrc {
+struct Step;
+}
+
 struct RunOptions {
   std::uint64_t max_steps = 200'000'000;          // executed blocks before a runaway program is stopped
   std::vector<std::pair<int, double>> presets;  // --set "#100=5"
@@ -170,6 +174,24 @@ private:
   V2 xf_arc_offset_{};
   // ---- end of coordinate transforms ----
 
+  // ---- lathe multiple repetitive cycles G70..G75 (lathe_repetitive.cpp) ----
+  struct ShapeRange {
+    std::int32_t first = 0, last = 0;  // block indexes of N(ns) and N(nf) in prog_
+    int ns = 0, nf = 0;
+  };
+  int repetitive_code(int g) const;  // the cycle a lathe G code names (x10, as in system A), else 0
+  bool repetitive_cycle(int g);      // one G70..G75 block; whether the tool moved
+  ShapeRange shape_range(int g);
+  std::vector<Move> walk_shape(const ShapeRange& r, int g, bool keep);
+  void check_shape_block(const nc::Block& b, bool first, int g);
+  void finishing_cycle(const ShapeRange& r);
+  bool stock_removal_cycle(int g);
+  bool pattern_repeating_cycle();
+  bool peck_cycle(int g);
+  void emit_cycle_path(const std::vector<mrc::Step>& path, bool transposed);
+  double increments(const Cmd& c) const;  // P/Q of G74/G75: least input increments, in mm
+  // ---- end of the multiple repetitive cycles ----
+
   // variables (variables.cpp)
  public:
   nc::Value read_var(int n, std::uint16_t column);
@@ -290,6 +312,14 @@ private:
   std::map<int, nc::Value> system_store_;  // writable system variables without other meaning
   double clock_base_ms_ = 0;
   double parts_done_ = 0, parts_required_ = 0;
+
+  // lathe multiple repetitive cycles: modal data (after profile_, which sets them)
+  std::vector<Move>* shape_moves_ = nullptr;  // reading a shape: emit() keeps its motions here
+  double mrc_depth_ = profile_.mrc_depth;      // Δd of G71/G72 (No.5132), modal
+  double mrc_escape_ = profile_.mrc_escape;    // e of G71/G72 (No.5133)
+  double mrc_relief_x_ = profile_.mrc_relief_x, mrc_relief_z_ = profile_.mrc_relief_z;  // G73 Δi Δk (No.5135/5136)
+  double mrc_divisions_ = profile_.mrc_divisions;  // G73 d (No.5137)
+  double mrc_return_ = profile_.mrc_return;    // e of G74/G75 (No.5139)
 };
 
 }  // namespace ncurve::machine

@@ -186,6 +186,10 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
             break;
           }
         }
+        if (lathe) {  // G70..G75 (G72..G77 in system C): lathe_repetitive.cpp
+          if (const int r = repetitive_code(g); r >= 700 && r <= 750) { one_shot.push_back(r); break; }
+          if (profile_.gcode_system == 'C' && (g == 700 || g == 710)) { inch_ = g == 700; break; }
+        }
         if (lathe && g >= 700 && g <= 760)
           alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
         if (!lathe && g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890))) {
@@ -269,6 +273,10 @@ void Interpreter::emit(Move& m) {
   m.macro_statements = statements_since_;
   m.nc_blocks = nc_blocks_since_;
   statements_since_ = nc_blocks_since_ = 0;
+  if (shape_moves_) {  // a cycle reading its shape: the motions are kept, not made
+    if (m.is_motion()) shape_moves_->push_back(m);
+    return;
+  }
   if (!compensating()) return deliver(m);
   const PlaneAxes pa = plane_axes(plane_);
   const bool in_plane = m.kind == MoveKind::arc ? m.plane == plane_

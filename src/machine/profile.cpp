@@ -297,6 +297,20 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     p.compensation.blocks_read = static_cast<int>(value);
   }
   else if (key == "6004#0") p.atan_signed = bit();
+  else if (key == "0001#1" || key == "1#1") p.mrc_one_block = bit();
+  else if (key == "5105#1") p.mrc_no_finish_type1 = bit();
+  else if (key == "5105#2") p.mrc_no_finish_type2 = bit();
+  else if (key == "5132" || key == "5133" || key == "5135" || key == "5136" || key == "5139") {
+    if (value < 0) throw std::runtime_error(fmt::format("parameter {} is a length in mm, 0 or more", key));
+    double& field = key == "5132" ? p.mrc_depth : key == "5133" ? p.mrc_escape : key == "5135" ? p.mrc_relief_x
+                  : key == "5136" ? p.mrc_relief_z : p.mrc_return;
+    field = value;
+  }
+  else if (key == "5137") {
+    if (value < 0 || value != std::floor(value))
+      throw std::runtime_error("parameter 5137 is a whole number of divisions, 0 or more");
+    p.mrc_divisions = value;
+  }
   else if (key == "3402#0") p.power_on_g01 = bit();
   else if (key == "3402#3") p.power_on_g91 = bit();
   else if (key == "6001#5") p.t_code_calls_o9000 = bit();
@@ -336,10 +350,11 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
       throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 5003#0, "
-                      "5003#1, 5008#1, 5008#3, 5101#0, 5101#4, 5101#5, 5101#6, 5114, 5115, 5200#0, 5200#5, 5213, "
-                      "5400#0, 5400#6, 5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, "
-                      "6080..6089; per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260)",
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3410, "
+                      "5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#4, 5101#5, 5101#6, 5105#1, 5105#2, 5114, 5115, "
+                      "5132, 5133, 5135..5137, 5139, 5200#0, 5200#5, 5213, 5400#0, 5400#6, 5400#7, 5410, 5411, 5421, "
+                      "6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; per axis 1006#0, 1008#0, 1008#1, "
+                      "1008#2, 1260)",
                       key));
   }
 }

@@ -106,6 +106,16 @@ struct MachineProfile {
   double peck_clearance = 0;  // No.5115, mm: G83's clearance d above the previous peck's depth
   DrillingSettings drilling;
   std::array<RotaryAxis, kAxes> rotary{};  // by axis_index; only A, B, C may be rotary
+  // lathe multiple repetitive cycles (G70..G75), docs/lathe-cycles-mrc.md
+  bool mrc_one_block = false;   // No.0001#1 FCV: Series 10/11 format, one block per G71..G75
+  double mrc_depth = 0;         // No.5132, mm: Δd of G71/G72
+  double mrc_escape = 0;        // No.5133, mm: e of G71/G72
+  double mrc_relief_x = 0;      // No.5135, mm (radius): Δi of G73
+  double mrc_relief_z = 0;      // No.5136, mm: Δk of G73
+  double mrc_divisions = 0;     // No.5137: d of G73
+  double mrc_return = 0;        // No.5139, mm: e of G74/G75
+  bool mrc_no_finish_type1 = false;  // No.5105#1 RF1: G71/G72 type I make no last pass along the shape
+  bool mrc_no_finish_type2 = false;  // No.5105#2 RF2: likewise type II
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   // coordinate transforms of a mill (G68, G51): parameters No.5400, 5410, 5411, 5421
   bool rotation_angle_by_g90_g91 = false;  // No.5400#0 RIN: G68 R follows G90/G91 (0: always absolute)
