@@ -452,6 +452,20 @@ void RadiusCompensation::cancel_without_motion() {
   tool_ = tool_full_;
 }
 
+void RadiusCompensation::cancel_at_end() {
+  if (!pending_ && !offset_mode_) return;
+  if (pending_) {
+    Elem a = *pending_;
+    pending_.reset();
+    if (!startup_pending_) check_interference(a, pending_start_, a.e - tip_);
+    emit_element(a, pending_start_, a.e - tip_, true);
+    emit_after();
+  }
+  offset_mode_ = false;
+  startup_pending_ = false;
+  tool_ = tool_full_;  // where the tool is (the programmed point, or a vector left by a lost read-ahead)
+}
+
 void RadiusCompensation::finish() {
   if (pending_) {
     Elem a = *pending_;

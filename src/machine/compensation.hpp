@@ -54,6 +54,9 @@ public:
   // G40 without motion in the plane: the vector ends perpendicular at the last move's end and the
   // next move starts from there.
   void cancel_without_motion();
+  // A lathe canned cycle's start point (G90/G92/G94/G76): the last move ends there without a vector;
+  // the cycle's moves start up afresh.
+  void cancel_at_end();
   // Program end or an alarm: the last move ends with its perpendicular vector; everything goes out.
   void finish();
   // After an alarm elsewhere: the moves read so far go out as at program end.

@@ -208,6 +208,26 @@ void servo_table(MachineProfile& p, const toml::table& t, const std::string& ori
   }
 }
 
+// The lathe threading parameters, each checked against the range the parameter manual gives.
+void set_threading_parameter(MachineProfile& p, const std::string& key, double value) {
+  auto whole = [&](double lo, double hi, const char* what) {
+    if (value != std::floor(value) || value < lo || value > hi)
+      throw std::runtime_error(fmt::format("parameter {} ({}) is a whole number from {} to {}", key, what, lo, hi));
+    return static_cast<int>(value);
+  };
+  if (key == "5130") p.thread_chamfer = whole(0, 127, "thread chamfer in 0.1 leads");
+  else if (key == "5131") p.thread_chamfer_angle = whole(0, 89, "thread chamfer angle, 0 = 45 degrees");
+  else if (key == "5140") p.g76_min_depth = whole(0, 999999999, "G76 minimum depth of cut, increments") * p.increment;
+  else if (key == "5141") p.g76_allowance = whole(0, 999999999, "G76 finishing allowance, increments") * p.increment;
+  else if (key == "5142") p.g76_finish_count = whole(1, 99, "G76 finishing passes");
+  else {
+    const int a = whole(0, 80, "G76 tool nose angle");
+    if (a != 0 && a != 29 && a != 30 && a != 55 && a != 60 && a != 80)
+      throw std::runtime_error(fmt::format("parameter 5143 (G76 tool nose angle) is 0, 29, 30, 55, 60 or 80, got {}", a));
+    p.g76_tool_angle = a;
+  }
+}
+
 }  // namespace
 
 void set_parameter(MachineProfile& p, const std::string& key, double value) {
@@ -238,6 +258,10 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
       throw std::runtime_error(fmt::format("parameter {} is a whole number of increments, 0 or more", key));
     (key == "5114" ? p.peck_retract : p.peck_clearance) = value * p.increment;
   }
+  else if (key == "0001#1") p.series10_format = bit();
+  else if (key == "5130" || key == "5131" || key == "5140" || key == "5141" || key == "5142" || key == "5143") {
+    set_threading_parameter(p, key, value);
+  }
   else {
     int n = 0;
     try {
@@ -255,8 +279,9 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
       throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 3401#0, 3402#0, 3402#3, 3410, 5003#0, "
-                      "5008#1, 5114, 5115, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089)",
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3410, "
+                      "5003#0, 5008#1, 5114, 5115, 5130, 5131, 5140..5143, 6001#5, 6004#0, 19625, 6050..6059, "
+                      "6071..6079, 6080..6089)",
                       key));
   }
 }

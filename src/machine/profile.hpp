@@ -83,6 +83,14 @@ struct MachineProfile {
   double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
   double peck_retract = 0;    // No.5114, mm: G73's retraction d after each peck
   double peck_clearance = 0;  // No.5115, mm: G83's clearance d above the previous peck's depth
+  // lathe threading (docs/lathe-cycles.md); a G76 first block rewrites the G76 values
+  int thread_chamfer = 0;        // No.5130: chamfer (pull-out) of G92/G76 in 0.1 leads, 0..127
+  int thread_chamfer_angle = 0;  // No.5131: its angle to the thread axis, 1..89 degrees; 0 = 45
+  double g76_min_depth = 0;      // No.5140, mm: G76 minimum depth of cut (dmin)
+  double g76_allowance = 0;      // No.5141, mm: G76 finishing allowance (d)
+  int g76_finish_count = 1;      // No.5142: G76 finishing passes (m), 1..99
+  int g76_tool_angle = 0;        // No.5143: G76 tool nose angle (a): 0, 29, 30, 55, 60 or 80 degrees
+  bool series10_format = false;  // No.0001#1 FCV: Series 10/11 program format (one-block G76)
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   std::array<int, 10> g_code_macros{};  // No.6050..6059: G code that calls O9010..O9019
   std::array<int, 10> m_code_macros{};  // No.6080..6089: M code that calls O9020..O9029
