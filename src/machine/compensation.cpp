@@ -519,6 +519,22 @@ void RadiusCompensation::move_frame(const AxisVector& delta) {
   if (tool_) tool_ = moved(*tool_);
 }
 
+void RadiusCompensation::cancel_at_end() {
+  if (!pending_ && !offset_mode_) return;
+  shift_.reset();
+  if (pending_) {
+    Elem a = *pending_;
+    pending_.reset();
+    if (!startup_pending_) check_interference(a, pending_start_, a.e - tip_);
+    emit_element(a, pending_start_, a.e - tip_, true);
+  }
+  emit_after();
+  lost_.reset();
+  offset_mode_ = false;
+  startup_pending_ = false;
+  tool_ = tool_full_;  // where the tool is (the programmed point, or a vector left by a lost read-ahead)
+}
+
 void RadiusCompensation::finish() {
   shift_.reset();
   if (pending_) {

@@ -64,6 +64,9 @@ public:
   // ends with its perpendicular vector, the tool keeps its place in the new coordinates and the next
   // move starts up from there.
   void move_frame(const AxisVector& delta);
+  // A lathe canned cycle's start point (G90/G92/G94/G76): the last move ends there without a vector;
+  // the cycle's moves start up afresh.
+  void cancel_at_end();
   // Program end or an alarm: the last move ends with its perpendicular vector; everything goes out.
   void finish();
   // After an alarm elsewhere: the moves read so far go out as at program end.

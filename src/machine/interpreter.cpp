@@ -172,6 +172,7 @@ void Interpreter::warn_mixed_decimal_points() {
         const nc::Word& word = p->words[w];
         if (!word.literal || !scaled_address(word.letter)) continue;
         if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
+        if (word.letter == 'Q' && profile_.lathe()) continue;  // and a start angle (G32, G92), a depth in increments (G76)
         if (word.decimal_point) with = with ? with : &word;
         else if (word.value != 0 && !without) {
           without = &word;
@@ -565,7 +566,7 @@ void Interpreter::exec_nc(const Block& b) {
     (limit ? max_spindle_ : speed_) = word('S').value;
   }
   if (has('H')) h_ = integer(word('H'), "H");
-  if (has('D')) d_ = integer(word('D'), "D");
+  if (has('D') && !(profile_.lathe() && profile_.series10_format)) d_ = integer(word('D'), "D");  // else a cycle's depth
   if (has('T')) {
     int t = integer(word('T'), "T");
     if (profile_.t_code_calls_o9000 && !here.custom) {
@@ -585,8 +586,10 @@ void Interpreter::exec_nc(const Block& b) {
 
   bool moved = false;
   if (!one_shot.empty()) {
+    if (std::ranges::any_of(one_shot, [](int g) { return g != 40; })) end_lathe_cycle_data();
     for (int g : one_shot) {
       switch (g) {
+        case 760: multiple_threading_cycle(); moved = true; break;  // G76 on a lathe (threading.cpp)
         case 40: dwell(); break;
         case 280: case 300: reference_return(g); moved = true; break;
         case 530: machine_coordinate_move(); moved = true; break;

@@ -192,6 +192,22 @@ private:
   double increments(const Cmd& c) const;  // P/Q of G74/G75: least input increments, in mm
   // ---- end of the multiple repetitive cycles ----
 
+  // ---- lathe single cutting cycles and threading (lathe_cycles.cpp, threading.cpp) ----
+  // G32 G90 G92 G94 G76 (G33 G77 G78 G79 G76 on systems B/C): group 01 keeps the code as written
+  bool select_lathe_motion(int g, std::vector<int>& one_shot);  // handle_g_codes: false if g is none of them
+  void lathe_motion(const AxisVector& target);  // a block with axis words in G32/G90/G92/G94 mode
+  void end_lathe_cycle_data() { lathe_cycle_ = {}; }  // one-shot codes but G04 clear X, Z, R
+  void single_cycle(const AxisVector& target);      // G90/G92/G94
+  void cycle_compensation_start(int side);         // the cycle's own start-up under G41/G42
+  void thread_block(const AxisVector& target);     // G32
+  void multiple_threading_cycle();                 // G76 (group 00)
+  void g76_passes(const AxisVector& end, double taper, double height, double first_depth, double angle);
+  void thread_pass(const AxisVector& end, double out_x, double lead, double angle);  // cut, chamfer at the end
+  void thread_cut(const AxisVector& to, double lead, double angle);
+  double thread_start_angle();                     // Q in 0.001 deg, degrees
+  double increments(const Cmd& c, const char* what) const;  // a length written in least increments, mm
+  // ---- end of lathe cycles ----
+
   // variables (variables.cpp)
  public:
   nc::Value read_var(int n, std::uint16_t column);
@@ -320,6 +336,18 @@ private:
   double mrc_relief_x_ = profile_.mrc_relief_x, mrc_relief_z_ = profile_.mrc_relief_z;  // G73 Δi Δk (No.5135/5136)
   double mrc_divisions_ = profile_.mrc_divisions;  // G73 d (No.5137)
   double mrc_return_ = profile_.mrc_return;    // e of G74/G75 (No.5139)
+  // ---- lathe cycles' state (after profile_, which initialises it) ----
+  struct LatheCycle {             // X(U), Z(W), R: modal while G90/G92/G94 lasts
+    std::optional<double> x, z;   // cutting end point, work coordinates (X a radius)
+    double r = 0;                 // taper: X radius (G90/G92) or Z (G94) at the cut's start less its end
+  };
+  LatheCycle lathe_cycle_;
+  std::uint64_t thread_block_ = 0;  // RunStats::blocks at the last G32 cut: the next block continues it
+  int thread_chamfer_ = profile_.thread_chamfer;  // G76 P(m)(r)(a), Q(dmin), R(d) rewrite these
+  int g76_finish_count_ = profile_.g76_finish_count;
+  int g76_tool_angle_ = profile_.g76_tool_angle;
+  double g76_min_depth_ = profile_.g76_min_depth;
+  double g76_allowance_ = profile_.g76_allowance;
 };
 
 }  // namespace ncurve::machine

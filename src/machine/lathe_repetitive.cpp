@@ -70,7 +70,7 @@ bool Interpreter::repetitive_cycle(int g) {
   if (shape_moves_) alarm("PS0066", fmt::format("{} cannot be commanded inside a finishing shape", code), column);
   if (g == 740 || g == 750) return peck_cycle(g);
   const bool p = has('P'), q = has('Q');
-  if (!p && !q && g != 700 && !profile_.mrc_one_block) {  // the first block of the two-block format
+  if (!p && !q && g != 700 && !profile_.series10_format) {  // the first block of the two-block format
     if (g == 730) {
       if (has('U')) mrc_relief_x_ = dimension(word('U'));
       if (has('W')) mrc_relief_z_ = dimension(word('W'));
@@ -230,10 +230,10 @@ bool Interpreter::stock_removal_cycle(int g) {
   const std::string code = written(g, profile_.gcode_system);
   const double diameter = profile_.diameter_x ? 2.0 : 1.0;
   const double du = has('U') ? dimension(word('U')) / diameter : 0.0, dw = has('W') ? dimension(word('W')) : 0.0;
-  if (profile_.mrc_one_block && has('D')) mrc_depth_ = std::fabs(as_written(word('D').value, true, false)) * (inch_ ? 25.4 : 1);
+  if (profile_.series10_format && has('D')) mrc_depth_ = std::fabs(as_written(word('D').value, true, false)) * (inch_ ? 25.4 : 1);
   if (!(mrc_depth_ > 0))
     alarm("PS0062", fmt::format("{}: the depth of cut Δd is {} (give it by {} in the first block, or No.5132)", code,
-                                mrc_depth_, profile_.mrc_one_block ? 'D' : facing ? 'W' : 'U'));
+                                mrc_depth_, profile_.series10_format ? 'D' : facing ? 'W' : 'U'));
   if (mrc_escape_ < 0) alarm("PS0062", fmt::format("{}: the escaping amount e is negative", code));
   const ShapeRange range = shape_range(g);
   const std::uint16_t pcol = word('P').column;
@@ -284,14 +284,14 @@ bool Interpreter::pattern_repeating_cycle() {
   const std::string code = written(730, profile_.gcode_system);
   const double diameter = profile_.diameter_x ? 2.0 : 1.0;
   const double du = has('U') ? dimension(word('U')) / diameter : 0.0, dw = has('W') ? dimension(word('W')) : 0.0;
-  if (profile_.mrc_one_block) {
+  if (profile_.series10_format) {
     if (has('I')) mrc_relief_x_ = dimension(word('I'));
     if (has('K')) mrc_relief_z_ = dimension(word('K'));
     if (has('D')) mrc_divisions_ = word('D').value;
   }
   if (!(mrc_divisions_ >= 1) || mrc_divisions_ != std::floor(mrc_divisions_) || mrc_divisions_ > 99999)
     alarm("PS0062", fmt::format("{}: the number of divisions d is {} (a whole number from 1; {} in the first block, "
-                                "or No.5137)", code, mrc_divisions_, profile_.mrc_one_block ? 'D' : 'R'));
+                                "or No.5137)", code, mrc_divisions_, profile_.series10_format ? 'D' : 'R'));
   const ShapeRange range = shape_range(730);
   const AxisVector start = pos_;
   const std::vector<Move> moves = walk_shape(range, 730, true);
@@ -309,7 +309,7 @@ bool Interpreter::pattern_repeating_cycle() {
 // G74 (pecks along Z, steps along X) and G75 (pecks along X, steps along Z).
 bool Interpreter::peck_cycle(int g) {
   const std::string code = written(g, profile_.gcode_system);
-  const bool one_block = profile_.mrc_one_block;
+  const bool one_block = profile_.series10_format;
   const bool target = has('X') || has('Z') || (profile_.gcode_system == 'A' && (has('U') || has('W')));
   if (!target) {  // G74 R(e): the return amount
     if (!one_block && has('R')) mrc_return_ = dimension(word('R'));

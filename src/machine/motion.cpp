@@ -170,11 +170,10 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         else if (!lathe) transform = true;                                 // scaling cancel
         break;
       default: {
+        if (lathe && select_lathe_motion(g, one_shot)) break;  // lathe_cycles.cpp
         if (system_a) {
           if (g == 980) { feed_per_rev_ = false; break; }
           if (g == 990) { feed_per_rev_ = true; break; }
-          if (g == 900 || g == 920 || g == 940)
-            alarm("NC9001", fmt::format("G{} (turning canned cycle) is not supported yet", g / 10), column);
         } else {
           if (g == 900) { incremental_ = false; break; }
           if (g == 910) { incremental_ = true; break; }
@@ -246,6 +245,7 @@ void Interpreter::motion(const AxisVector& target) {
     case 1: linear(MoveKind::line, target); break;
     case 2: arc(target, !swap); break;
     case 3: arc(target, swap); break;
+    default: lathe_motion(target); break;  // G32/G90/G92/G94 (lathe_cycles.cpp)
   }
   xf_arc_ = false;
 }
@@ -267,7 +267,7 @@ void Interpreter::emit(Move& m) {
   m.program = prog_ ? prog_->number : -1;
   m.file = prog_ ? prog_->file.get() : nullptr;
   m.line = block_ ? block_->line : 0;
-  m.feed_per_rev = feed_per_rev_;
+  m.feed_per_rev = feed_per_rev_ || m.threading;
   m.spindle = speed_;
   m.exact_stop = exact_stop_ || exact_stop_once_;
   m.macro_statements = statements_since_;

@@ -27,6 +27,7 @@ struct Move {
   std::uint8_t plane = 17;     // 17 XY, 18 ZX, 19 YZ
   bool clockwise = false;      // arcs: G02
   bool feed_per_rev = false;   // F in mm/rev
+  bool threading = false;      // a thread cut (G32/G92/G76): feed is the lead in mm/rev, held at 100 % (no override)
   AxisVector start{};          // work coordinates, mm (lathe X as a radius), degrees for rotary axes
   AxisVector end{};
   std::array<double, 3> center{};  // arcs: centre, work coordinates X Y Z
@@ -39,6 +40,8 @@ struct Move {
   bool exact_stop = false;     // G61 modal or G09 in the block: the feed comes to zero at the block end
   std::uint32_t macro_statements = 0;  // macro statements executed since the previous event (for the time planner)
   std::uint32_t nc_blocks = 0;         // NC blocks read since the previous event, this one included
+  std::int32_t thread_start = -1;      // threading: spindle angle (Q, 0.001 deg) after the one-rotation signal;
+                                       // -1: the cut continues the one before
   bool compensated = false;    // a cutter / tool-nose radius compensated move: end is the tool centre (tip)
   AxisVector programmed_end{}; // compensated moves: the end point as programmed
   bool corner = false;         // an extra move the compensation inserts at a corner

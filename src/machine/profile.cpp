@@ -256,6 +256,26 @@ void servo_table(MachineProfile& p, const toml::table& t, const std::string& ori
   }
 }
 
+// The lathe threading parameters, each checked against the range the parameter manual gives.
+void set_threading_parameter(MachineProfile& p, const std::string& key, double value) {
+  auto whole = [&](double lo, double hi, const char* what) {
+    if (value != std::floor(value) || value < lo || value > hi)
+      throw std::runtime_error(fmt::format("parameter {} ({}) is a whole number from {} to {}", key, what, lo, hi));
+    return static_cast<int>(value);
+  };
+  if (key == "5130") p.thread_chamfer = whole(0, 127, "thread chamfer in 0.1 leads");
+  else if (key == "5131") p.thread_chamfer_angle = whole(0, 89, "thread chamfer angle, 0 = 45 degrees");
+  else if (key == "5140") p.g76_min_depth = whole(0, 999999999, "G76 minimum depth of cut, increments") * p.increment;
+  else if (key == "5141") p.g76_allowance = whole(0, 999999999, "G76 finishing allowance, increments") * p.increment;
+  else if (key == "5142") p.g76_finish_count = whole(1, 99, "G76 finishing passes");
+  else {
+    const int a = whole(0, 80, "G76 tool nose angle");
+    if (a != 0 && a != 29 && a != 30 && a != 55 && a != 60 && a != 80)
+      throw std::runtime_error(fmt::format("parameter 5143 (G76 tool nose angle) is 0, 29, 30, 55, 60 or 80, got {}", a));
+    p.g76_tool_angle = a;
+  }
+}
+
 }  // namespace
 
 void set_parameter(MachineProfile& p, const std::string& key, double value) {
@@ -297,7 +317,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     p.compensation.blocks_read = static_cast<int>(value);
   }
   else if (key == "6004#0") p.atan_signed = bit();
-  else if (key == "0001#1" || key == "1#1") p.mrc_one_block = bit();
+  else if (key == "0001#1" || key == "1#1") p.series10_format = bit();
   else if (key == "5105#1") p.mrc_no_finish_type1 = bit();
   else if (key == "5105#2") p.mrc_no_finish_type2 = bit();
   else if (key == "5132" || key == "5133" || key == "5135" || key == "5136" || key == "5139") {
@@ -332,6 +352,8 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
       throw std::runtime_error(
           fmt::format("parameter {} is a magnification of -999999 .. 999999 units, got {}", key, value));
     (key == "5411" ? p.scaling_default : p.scaling_axis_default) = static_cast<int>(value);
+  } else if (key == "5130" || key == "5131" || key == "5140" || key == "5141" || key == "5142" || key == "5143") {
+    set_threading_parameter(p, key, value);
   }
   else {
     int n = 0;
@@ -352,9 +374,9 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
       throw std::runtime_error(
           fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3410, "
                       "5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#4, 5101#5, 5101#6, 5105#1, 5105#2, 5114, 5115, "
-                      "5132, 5133, 5135..5137, 5139, 5200#0, 5200#5, 5213, 5400#0, 5400#6, 5400#7, 5410, 5411, 5421, "
-                      "6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; per axis 1006#0, 1008#0, 1008#1, "
-                      "1008#2, 1260)",
+                      "5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, 5400#6, "
+                      "5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; per axis "
+                      "1006#0, 1008#0, 1008#1, 1008#2, 1260)",
                       key));
   }
 }

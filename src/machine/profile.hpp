@@ -107,7 +107,6 @@ struct MachineProfile {
   DrillingSettings drilling;
   std::array<RotaryAxis, kAxes> rotary{};  // by axis_index; only A, B, C may be rotary
   // lathe multiple repetitive cycles (G70..G75), docs/lathe-cycles-mrc.md
-  bool mrc_one_block = false;   // No.0001#1 FCV: Series 10/11 format, one block per G71..G75
   double mrc_depth = 0;         // No.5132, mm: Δd of G71/G72
   double mrc_escape = 0;        // No.5133, mm: e of G71/G72
   double mrc_relief_x = 0;      // No.5135, mm (radius): Δi of G73
@@ -116,6 +115,14 @@ struct MachineProfile {
   double mrc_return = 0;        // No.5139, mm: e of G74/G75
   bool mrc_no_finish_type1 = false;  // No.5105#1 RF1: G71/G72 type I make no last pass along the shape
   bool mrc_no_finish_type2 = false;  // No.5105#2 RF2: likewise type II
+  // lathe threading (docs/lathe-cycles.md); a G76 first block rewrites the G76 values
+  int thread_chamfer = 0;        // No.5130: chamfer (pull-out) of G92/G76 in 0.1 leads, 0..127
+  int thread_chamfer_angle = 0;  // No.5131: its angle to the thread axis, 1..89 degrees; 0 = 45
+  double g76_min_depth = 0;      // No.5140, mm: G76 minimum depth of cut (dmin)
+  double g76_allowance = 0;      // No.5141, mm: G76 finishing allowance (d)
+  int g76_finish_count = 1;      // No.5142: G76 finishing passes (m), 1..99
+  int g76_tool_angle = 0;        // No.5143: G76 tool nose angle (a): 0, 29, 30, 55, 60 or 80 degrees
+  bool series10_format = false;  // No.0001#1 FCV: Series 10/11 program format (one-block G71..G76)
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   // coordinate transforms of a mill (G68, G51): parameters No.5400, 5410, 5411, 5421
   bool rotation_angle_by_g90_g91 = false;  // No.5400#0 RIN: G68 R follows G90/G91 (0: always absolute)

@@ -44,6 +44,10 @@ void JsonlWriter::on_move(const Move& m) {
                    m.clockwise ? "G02" : "G03", m.sweep * 180 / std::numbers::pi);
   if (m.kind == MoveKind::line || m.kind == MoveKind::arc)
     fmt::format_to(it, R"(,"f":{},"feed_unit":"{}")", m.feed, m.feed_per_rev ? "mm/rev" : "mm/min");
+  if (m.threading) {
+    fmt::format_to(it, R"(,"threading":true)");
+    if (m.thread_start >= 0) fmt::format_to(it, R"(,"thread_start_deg":{})", m.thread_start / 1000.0);
+  }
   if (m.is_motion()) fmt::format_to(it, R"(,"length":{})", m.length);
   if (m.kind == MoveKind::dwell || m.is_motion()) fmt::format_to(it, R"(,"seconds":{})", m.seconds);
   if (!m.is_motion() && m.kind != MoveKind::dwell) fmt::format_to(it, R"(,"code":{})", m.code);
@@ -135,6 +139,12 @@ void GcodeWriter::on_move(const Move& m) {
       motion_ = 0;
       break;
     case MoveKind::line: {
+      if (m.threading) {  // G32 (G33 on systems B/C): F is the lead whatever the feed mode; Q the start angle
+        line = (profile_.gcode_system == 'A' ? "G32" : "G33") + axes(m.end) + feed_word();
+        if (m.thread_start > 0) line += fmt::format(" Q{}", m.thread_start);
+        motion_ = 32;
+        break;
+      }
       line = feed_mode() + "G01" + axes(m.end) + feed_word();
       break;
     }

@@ -261,7 +261,7 @@ TEST(Motion, LatheDiameterAndIncrementalAddresses) {
   EXPECT_DOUBLE_EQ(r.var(100), 80.0);  // diameter in the variable
   EXPECT_DOUBLE_EQ(r.var(101), -5.0);
   EXPECT_EQ(run("G00 Y1.\n", p).alarm_code(), "PS0009");
-  EXPECT_EQ(run("G90 X1. Z1.\n", p).alarm_code(), "NC9001");  // system A: G90 is a turning cycle
+  EXPECT_EQ(run("G90 X1. Z1.\n", p).alarm_code(), "PS0011");  // system A: G90 is a turning cycle, cut at F (none)
 }
 
 TEST(Motion, LatheArcInZX) {

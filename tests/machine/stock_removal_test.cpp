@@ -248,7 +248,7 @@ void expect_same_path(const std::vector<ncurve::machine::Move>& a, const std::ve
 
 TEST(RepetitiveCycles, OneBlockFormatGivesTheDepthByD) {
   auto one = ncurve::machine::default_lathe();
-  one.mrc_one_block = true;  // No.0001#1 FCV
+  one.series10_format = true;  // No.0001#1 FCV
   one.mrc_escape = 0.5;      // No.5133: e has no word in this format
   const auto a = motions_of(kTwoBlock, ncurve::machine::default_lathe());
   const auto b = motions_of("G99 G00 X40. Z2.\nG71 P10 Q20 U0.4 W0.1 D2000 F0.2\nN10 G00 X20.\nG01 Z-10.\nN20 X42.\nM30\n", one);

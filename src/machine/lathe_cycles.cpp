@@ -1,0 +1,131 @@
+// Lathe single cutting cycles of group 01: G90 outer/inner diameter cutting, G94 end face cutting and
+// G92 threading (G77, G79, G78 on G-code systems B and C), as the FANUC 0i-TF / 30i-B lathe operator's
+// manuals describe them: four moves from the start point A and back to it, X(U) Z(W) R modal.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "machine/interpreter.hpp"
+
+namespace ncurve::machine {
+
+namespace {
+// The code's meaning as system A writes it (32, 90, 92, 94, 76), or 0. g is x10, as handle_g_codes has it.
+int system_a_code(int g, bool system_a) {
+  if (system_a) {
+    switch (g) {
+      case 320: return 32;
+      case 900: return 90;
+      case 920: return 92;
+      case 940: return 94;
+      case 760: return 76;
+      default: return 0;
+    }
+  }
+  switch (g) {
+    case 330: return 32;
+    case 770: return 90;
+    case 780: return 92;
+    case 790: return 94;
+    case 760: return 76;
+    default: return 0;
+  }
+}
+
+bool single_cycle_code(int code) { return code == 90 || code == 92 || code == 94; }
+
+const char* cycle_name(int code) {
+  switch (code) {
+    case 90: return "outer/inner diameter cutting cycle";
+    case 92: return "threading cycle";
+    case 94: return "end face cutting cycle";
+    default: return "threading";
+  }
+}
+}  // namespace
+
+bool Interpreter::select_lathe_motion(int g, std::vector<int>& one_shot) {
+  const bool system_a = profile_.gcode_system == 'A';
+  const int code = system_a_code(g, system_a);
+  if (code == 0) return false;
+  if (code == 76) {  // group 00: runs in place of the block's motion
+    one_shot.push_back(760);
+    return true;
+  }
+  // X, Z, R stay while G90/G92/G94 follow one another; any other group 01 code clears them
+  if (!single_cycle_code(code) || !single_cycle_code(system_a_code(motion_ * 10, system_a))) end_lathe_cycle_data();
+  motion_ = g / 10;
+  return true;
+}
+
+void Interpreter::lathe_motion(const AxisVector& target) {
+  const int code = system_a_code(motion_ * 10, profile_.gcode_system == 'A');
+  if (code == 32) thread_block(target);
+  else if (single_cycle_code(code)) single_cycle(target);
+}
+
+// One cycle from A (the current position) to the cutting end point E:
+//   G90: (1) rapid X to E.x + R, (2) feed to E, (3) feed X back to A.x, (4) rapid Z back to A.z
+//   G94: (1) rapid Z to E.z + R, (2) feed to E, (3) feed Z back to A.z, (4) rapid X back to A.x
+//   G92: as G90 with (2) a thread cut ending in the No.5130 chamfer and (3) at rapid traverse
+void Interpreter::single_cycle(const AxisVector& target) {
+  const bool system_a = profile_.gcode_system == 'A';
+  const int code = system_a_code(motion_ * 10, system_a);
+  const int written = motion_;
+  if (plane_ != 18)
+    alarm("NC9001", fmt::format("G{} ({}) in the G{} plane is not supported yet (G18 only)", written,
+                                cycle_name(code), plane_));
+  for (int a = 0; a < kAxes; ++a)
+    if (a != 0 && a != 2 && target[a] != pos_[a])
+      alarm("NC9001", fmt::format("G{} ({}) with a move of an axis other than X and Z is not supported yet", written,
+                                  cycle_name(code)));
+  AxisVector end = target;
+  if (has('X') || (system_a && has('U'))) lathe_cycle_.x = end[0];
+  else if (lathe_cycle_.x) end[0] = *lathe_cycle_.x;
+  if (has('Z') || (system_a && has('W'))) lathe_cycle_.z = end[2];
+  else if (lathe_cycle_.z) end[2] = *lathe_cycle_.z;
+  if (has('R')) lathe_cycle_.r = dimension(word('R'));
+  const double r = lathe_cycle_.r;
+  const double angle = code == 92 ? thread_start_angle() : 0;
+
+  const AxisVector a = pos_;
+  AxisVector p1 = a, p3 = end;
+  if (code == 94) {
+    p1[2] = end[2] + r;
+    p3[2] = a[2];
+  } else {
+    p1[0] = end[0] + r;
+    p3[0] = a[0];
+  }
+  // Tool-nose radius compensation: the vector is cancelled at A, the cycle starts up its own offset
+  // on the side the cutting pattern gives (whatever G41/G42 says) and cancels it on the return to A.
+  // G92 is threaded without compensation.
+  const int programmed_side = comp_side_;
+  struct Restore {
+    int& side;
+    int value;
+    ~Restore() { side = value; }
+  } restore{comp_side_, programmed_side};
+  if (compensating()) {
+    comp_->cancel_at_end();
+    int side = 0;
+    if (programmed_side != 0 && code != 92) {
+      // A's side of the cut (1)->(2) in the G18 plane (Z, X): left is G41
+      const double dp = end[2] - p1[2], dq = end[0] - p1[0];
+      const double cross = dp * (a[0] - p1[0]) - dq * (a[2] - p1[2]);
+      side = cross > 0 ? 1 : cross < 0 ? -1 : programmed_side;
+    }
+    comp_side_ = side;
+  }
+  auto go = [&](MoveKind kind, const AxisVector& to) {
+    if (to != pos_) linear(kind, to);
+  };
+  go(MoveKind::rapid, p1);
+  if (code == 92) thread_pass(end, a[0], feed_, angle);
+  else go(MoveKind::line, end);
+  go(code == 92 ? MoveKind::rapid : MoveKind::line, p3);
+  comp_side_ = 0;  // the return to A cancels the cycle's offset
+  go(MoveKind::rapid, a);
+}
+
+}  // namespace ncurve::machine

@@ -1,0 +1,207 @@
+// Lathe threading: G32 (G33 on G-code systems B and C) thread cuts, the pass of the G92 threading
+// cycle with its chamfer, and the G76 multiple threading cycle, as the FANUC 0i-TF / 30i-B lathe
+// operator's manuals describe them. A thread cut is fed per revolution at the lead F, the feed held
+// at 100 %; each is marked (Move::threading) with the spindle angle it starts at.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "machine/interpreter.hpp"
+
+namespace ncurve::machine {
+
+namespace {
+bool valid_tool_angle(int a) { return a == 0 || a == 29 || a == 30 || a == 55 || a == 60 || a == 80; }
+constexpr double kDeg = std::numbers::pi / 180;
+}  // namespace
+
+double Interpreter::increments(const Cmd& c, const char* what) const {
+  const double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
+  return integer(c, what) / per_unit * (inch_ ? 25.4 : 1.0);
+}
+
+double Interpreter::thread_start_angle() {
+  if (!has('Q')) return 0;
+  const Cmd& q = word('Q');
+  const int v = integer(q, "Q (threading start angle, 0.001 degree)");
+  if (v < 0 || v > 360000)
+    alarm("PS0003",
+          fmt::format("Q{} (threading start angle) is outside 0..360000 (0.001 degree; the manual names no alarm "
+                      "for it, ncurve stops here)",
+                      v),
+          q.column);
+  return v / 1000.0;
+}
+
+// One thread cut from the current position: a line fed at the lead per spindle revolution. The lead
+// is along the longer axis (Z for a taper of 45 degrees or less), which sets the time.
+void Interpreter::thread_cut(const AxisVector& to, double lead, double angle) {
+  if (lead <= 0) alarm("PS0011", "thread lead is zero: give F (the lead, mm per revolution) in the threading block");
+  Move m;
+  m.kind = MoveKind::line;
+  m.start = pos_;
+  m.end = to;
+  m.plane = static_cast<std::uint8_t>(plane_);
+  m.length = line_length(pos_.data(), to.data());
+  m.feed = lead;
+  m.threading = true;
+  m.thread_start = angle < 0 ? -1 : static_cast<std::int32_t>(std::lround(angle * 1000));
+  double along = 0;
+  for (int a = 0; a < 3; ++a) along = std::max(along, std::fabs(to[a] - pos_[a]));
+  double rpm = speed_ > 0 ? speed_ : profile_.spindle_speed_for_time;
+  if (css_ && speed_ > 0) {
+    rpm = 1000.0 * speed_ / (2 * std::numbers::pi * std::max(std::fabs((pos_[0] + to[0]) / 2), 0.5));
+    if (max_spindle_ > 0) rpm = std::min(rpm, max_spindle_);
+  }
+  m.seconds = along / (lead * rpm) * 60.0;
+  pos_ = to;
+  emit(m);
+}
+
+// The thread cut of a G92 or G76 pass, to `end`. With a chamfer r (No.5130 or G76's P, in 0.1 leads)
+// the tool leaves the thread r before the end point's Z and reaches it r * tan(No.5131, 45 degrees
+// when 0) out, toward the retract level out_x.
+void Interpreter::thread_pass(const AxisVector& end, double out_x, double lead, double angle) {
+  const double dz = std::fabs(end[2] - pos_[2]);
+  const double run = std::min(thread_chamfer_ * 0.1 * lead, dz);
+  if (run <= 0) return thread_cut(end, lead, angle);
+  const AxisVector from = pos_;
+  AxisVector chamfer = end;
+  for (int a = 0; a < kAxes; ++a) chamfer[a] = end[a] - (end[a] - from[a]) * run / dz;
+  const double theta = (profile_.thread_chamfer_angle == 0 ? 45 : profile_.thread_chamfer_angle) * kDeg;
+  const double out = out_x > end[0] ? 1.0 : out_x < end[0] ? -1.0 : 0.0;
+  AxisVector pulled = end;
+  pulled[0] = chamfer[0] + out * run * std::tan(theta);
+  if (chamfer != pos_) {
+    thread_cut(chamfer, lead, angle);
+    angle = -1;
+  }
+  thread_cut(pulled, lead, angle);
+}
+
+// G32 X(U) Z(W) F Q: one cut; a G32 block right after another continues its thread (no wait for the
+// spindle's one-rotation signal, Q not read).
+void Interpreter::thread_block(const AxisVector& target) {
+  if (compensating())
+    alarm("NC9001", fmt::format("threading (G{}) under tool-nose radius compensation is not supported yet: cancel "
+                                "it with G40 before the thread",
+                                motion_));
+  const bool continues = thread_block_ != 0 && thread_block_ + 1 == result_.stats.blocks;
+  double angle = thread_start_angle();
+  if (continues) angle = -1;
+  thread_cut(target, feed_, angle);
+  thread_block_ = result_.stats.blocks;
+}
+
+// G76. FANUC 0i format (No.0001#1 FCV = 0): G76 P(m)(r)(a) Q(dmin) R(d); then
+// G76 X(U) Z(W) R(i) P(k) Q(dd) F(L). Series 10/11 format (FCV = 1): G76 X(U) Z(W) I(i) K(k) D(dd)
+// F(L) A(a) P(1) Q(start angle), m, r, dmin and d from the parameters.
+void Interpreter::multiple_threading_cycle() {
+  const bool system_a = profile_.gcode_system == 'A';
+  const bool axes = has('X') || has('Z') || (system_a && (has('U') || has('W')));
+  const bool fcv = profile_.series10_format;
+  if (!fcv && !axes) {  // the first block: modal data that rewrite No.5142, 5130, 5143, 5140, 5141
+    if (has('P')) {
+      const Cmd& p = word('P');
+      const int v = integer(p, "P of G76 (m r a: finishing passes, chamfer, tool angle, two digits each)");
+      if (v < 0 || v > 999999)
+        alarm("PS0062", fmt::format("P{} of G76 is not six digits m r a (finishing passes, chamfer in 0.1 leads, "
+                                    "tool angle)", v), p.column);
+      if (!valid_tool_angle(v % 100))
+        alarm("PS0062", fmt::format("tool nose angle a = {} in G76 P{:06}: it must be 80, 60, 55, 30, 29 or 0",
+                                    v % 100, v), p.column);
+      g76_finish_count_ = v / 10000;
+      thread_chamfer_ = v / 100 % 100;
+      g76_tool_angle_ = v % 100;
+    }
+    if (has('Q')) g76_min_depth_ = std::fabs(increments(word('Q'), "Q of G76 (minimum depth of cut, increments)"));
+    if (has('R')) g76_allowance_ = std::fabs(dimension(word('R')));
+    return;
+  }
+  if (!axes) return;  // Series 10/11 format without an end point: nothing to cut
+  AxisVector end = pos_;
+  axis_target(end);
+  double taper = 0, height = 0, first = 0, angle = 0;
+  if (!fcv) {
+    if (has('R')) taper = dimension(word('R'));
+    if (has('P')) height = increments(word('P'), "P of G76 (thread height k, increments)");
+    if (has('Q')) first = increments(word('Q'), "Q of G76 (depth of the first cut, increments)");
+  } else {
+    if (has('I')) taper = dimension(word('I'));
+    if (has('K')) height = dimension(word('K'));
+    if (has('D')) first = dimension(word('D'));
+    if (has('A')) {
+      const int a = integer(word('A'), "A of G76 (tool nose angle)");
+      if (!valid_tool_angle(a))
+        alarm("PS0062", fmt::format("tool nose angle A{} in G76: it must be 80, 60, 55, 30, 29 or 0", a),
+              word('A').column);
+      g76_tool_angle_ = a;
+    }
+    if (has('P') && integer(word('P'), "P of G76 (cutting method)") != 1)
+      alarm("NC9001", fmt::format("G76 P{} (cutting method) is not supported yet: P1, single edge at a constant "
+                                  "cutting amount, is", word('P').value), word('P').column);
+    angle = thread_start_angle();
+  }
+  const char* k_word = fcv ? "K" : "P";
+  const char* d_word = fcv ? "D" : "Q";
+  if (height <= 0 || first <= 0)
+    alarm("PS0062", fmt::format("G76 needs a thread height {}(k) and a depth of the first cut {}(dd) above zero "
+                                "(k = {:g} mm, dd = {:g} mm)", k_word, d_word, height, first));
+  if (g76_min_depth_ > height)
+    alarm("PS0062", fmt::format("the minimum depth of cut of G76 ({:g} mm: Q of the first block or No.5140) is "
+                                "greater than the thread height {}(k) ({:g} mm)", g76_min_depth_, k_word, height));
+  g76_passes(end, taper, height, first, angle);
+}
+
+// The passes of G76 from A (the current position) to the thread's end point `end` at full depth:
+// pass n cuts to dd*sqrt(n) below the crest, at least dmin deeper than the pass before, until the
+// depth k - d; then m finishing passes at k. Each pass starts along the flank of the tool angle a
+// (single edge cutting), cuts with the chamfer, rapids out to A's X and back to A's Z.
+void Interpreter::g76_passes(const AxisVector& end, double taper, double height, double first, double angle) {
+  const AxisVector a = pos_;
+  const double out = a[0] > end[0] ? 1.0 : a[0] < end[0] ? -1.0 : 0.0;   // from the root toward the crest
+  const double back = end[2] > a[2] ? -1.0 : end[2] < a[2] ? 1.0 : 0.0;  // against the cutting direction
+  const double flank = std::tan(g76_tool_angle_ / 2.0 * kDeg);
+  const double rough_end = height - g76_allowance_;
+  std::vector<double> depths;
+  for (double last = 0, n = 1; rough_end > last; ++n) {
+    double d = std::max(first * std::sqrt(n), last + g76_min_depth_);
+    if (d >= rough_end) d = rough_end;
+    depths.push_back(d);
+    last = d;
+    if (depths.size() > 100000)
+      alarm("NC9000", fmt::format("G76 would make more than 100000 passes (first depth {:g} mm, thread height {:g} "
+                                  "mm): give a larger first depth of cut or a minimum depth of cut (Q of the first "
+                                  "block, No.5140)", first, height));
+  }
+  for (int k = 0; k < std::max(g76_finish_count_, 1); ++k) depths.push_back(height);
+
+  const int programmed_side = comp_side_;
+  struct Restore {
+    int& side;
+    int value;
+    ~Restore() { side = value; }
+  } restore{comp_side_, programmed_side};
+  if (compensating()) {  // threading is not compensated: the vector is cancelled at A
+    comp_->cancel_at_end();
+    comp_side_ = 0;
+  }
+  for (double d : depths) {
+    const double x = out * (height - d), z = back * (height - d) * flank;
+    AxisVector from = a, to = end;
+    from[0] = end[0] + taper + x;
+    from[2] = a[2] + z;
+    to[0] += x;
+    to[2] += z;
+    if (from != pos_) linear(MoveKind::rapid, from);
+    thread_pass(to, a[0], feed_, angle);
+    AxisVector up = pos_;
+    up[0] = a[0];
+    if (up != pos_) linear(MoveKind::rapid, up);
+    if (a != pos_) linear(MoveKind::rapid, a);
+  }
+}
+
+}  // namespace ncurve::machine
