@@ -77,8 +77,12 @@ def ncurve_moves(ncurve, path):
 
 def linuxcnc_moves(rs274, path, work):
     table = os.path.join(work, "tool.tbl")
+    # rs274 maps its tool table to $HOME/.tool.mmap: a private HOME keeps concurrent runs apart
     out = subprocess.run([rs274, "-g", "-t", table, path, os.path.join(work, "canon.txt")],
-                         stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=30)
+                         stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=30,
+                         env=dict(os.environ, HOME=os.path.abspath(work)))
+    if out.returncode != 0:
+        raise RuntimeError(f"rs274 exited {out.returncode}: {out.stderr}")
     text = open(os.path.join(work, "canon.txt")).read()
     moves = []
     for m in re.finditer(r"(STRAIGHT_FEED|ARC_FEED)\(([^)]*)\)", text):

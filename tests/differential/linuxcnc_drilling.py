@@ -101,8 +101,11 @@ def ncurve_moves(ncurve, path):
 
 def linuxcnc_moves(rs274, path, work):
     canon = os.path.join(work, "canon.txt")
+    # rs274 maps its tool table to $HOME/.tool.mmap: a private HOME keeps concurrent runs apart
     out = subprocess.run([rs274, "-g", path, canon], stdin=subprocess.DEVNULL, capture_output=True, text=True,
-                         timeout=30)
+                         timeout=30, env=dict(os.environ, HOME=os.path.abspath(work)))
+    if out.returncode != 0:
+        raise RuntimeError(f"rs274 exited {out.returncode}: {out.stderr}")
     text = open(canon).read()
     moves, at = [], (0.0, 0.0, 0.0)
     for m in re.finditer(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)", text):
