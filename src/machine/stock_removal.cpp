@@ -241,7 +241,11 @@ int first_reversal(const Shape& s, int axis) {
   int dir = 0;
   for (int i = 0; i < static_cast<int>(s.size()); ++i) {
     const Element& e = s[i];
-    if (!turns(e, axis).empty()) return i;  // an arc that turns inside itself
+    for (double t : turns(e, axis)) {  // an arc that turns inside itself, by more than the tolerance
+      auto along = [&](P2 p) { return axis == 0 ? p.x : p.z; };
+      const double at = along(point_at(e, t));
+      if (std::min(std::fabs(at - along(e.start)), std::fabs(at - along(e.end))) > kTol) return i;
+    }
     const int here = sign(rate(e, axis, 0.5), 1e-12);
     if (here == 0) continue;
     if (dir != 0 && here != dir) return i;

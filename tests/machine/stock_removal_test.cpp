@@ -179,6 +179,20 @@ TEST(StockRemoval, MonotoneChecks) {
   // a half circle turns in X inside itself
   Shape arc{Element{{10, 0}, {10, -10}, true, {10, -5}, -std::acos(-1.0), false}};
   EXPECT_EQ(first_reversal(arc, 0), 0);
+  // a corner arc that leaves the face along X: its turning point in Z lies 6e-9 mm past Z0 through
+  // rounding of the centre (a real program's G03 X3.87 Z-.0542 R.082 from X3.7157 Z0, inch), not a
+  // turn back
+  const double in = 25.4;
+  const P2 c{1.8578562380150385 * in, -0.08199999976272664 * in};
+  const P2 a0{3.7157 / 2 * in, 0}, a1{3.87 / 2 * in, -0.0542 * in};
+  const double th0 = std::atan2(a0.x - c.x, a0.z - c.z), th1 = std::atan2(a1.x - c.x, a1.z - c.z);
+  Shape corner{Element{a0, a1, true, c, th1 - th0, false}, line(a1, {3.9967 / 2 * in, -0.2301 * in})};
+  EXPECT_EQ(first_reversal(corner, 1), -1);
+  // the same arc carried on 5 degrees further back past its top does turn back
+  const double back = th0 - 5 * std::acos(-1.0) / 180;
+  const P2 b0{c.x + 0.082 * in * std::sin(back), c.z + 0.082 * in * std::cos(back)};
+  Shape bulge{Element{b0, a1, true, c, th1 - back, false}};
+  EXPECT_EQ(first_reversal(bulge, 1), 0);
 }
 
 TEST(StockRemoval, TransposedTwiceIsTheSame) {
