@@ -191,6 +191,10 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         }
         if (lathe && g >= 700 && g <= 760)
           alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
+        if (lathe && (g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890))
+          alarm("NC9001", fmt::format("G{} (lathe canned cycle for {} drilling) is not supported yet", g / 10,
+                                      g <= 850 ? "face" : "side"),
+                column);
         if (!lathe && g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890))) {
           select_canned_cycle(g, column);
           break;
