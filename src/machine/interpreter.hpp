@@ -183,6 +183,7 @@ private:
   bool repetitive_cycle(int g);      // one G70..G75 block; whether the tool moved
   ShapeRange shape_range(int g);
   std::vector<Move> walk_shape(const ShapeRange& r, int g, bool keep);
+  std::vector<Move> nose_compensated(const std::vector<Move>& shape);  // G71..G73 under G41/G42
   void check_shape_block(const nc::Block& b, bool first, int g);
   void finishing_cycle(const ShapeRange& r);
   bool stock_removal_cycle(int g);

@@ -90,11 +90,14 @@ bool Interpreter::repetitive_cycle(int g) {
     finishing_cycle(shape_range(g));
     return true;
   }
-  if (comp_side_ != 0 || comp_->offset_mode())
-    alarm("NC9001", fmt::format("{} ({}) with tool-nose radius compensation in force is not supported yet: cancel it "
-                                "with G40 before the cycle, or give the shape with the nose radius allowed for",
-                                code, cycle_name(g)),
-          column);
+  // Under tool-nose radius compensation the vector is cancelled at the start point, the roughing
+  // follows the compensated shape and its moves are made as computed; the next move starts up again.
+  const int programmed_side = comp_side_;
+  struct Restore {
+    int& side;
+    int value;
+    ~Restore() { side = value; }
+  } restore{comp_side_, programmed_side};
   return g == 730 ? pattern_repeating_cycle() : stock_removal_cycle(g);
 }
 
@@ -266,6 +269,7 @@ bool Interpreter::stock_removal_cycle(int g) {
                fmt::format("{}: the finishing shape is not monotone along {} (this block turns back): type I needs "
                            "it; give both {} and {} in the first block (N{}) for type II",
                            code, facing ? 'Z' : 'X', facing ? 'Z' : 'X', facing ? 'X' : 'Z', range.ns));
+  if (comp_side_ != 0 || comp_->offset_mode()) shape = shape_of(nose_compensated(moves), 1);
   mrc::Roughing r;
   r.start = p2(start);
   r.shape = mrc::translated(shape, {du, dw});
@@ -277,6 +281,35 @@ bool Interpreter::stock_removal_cycle(int g) {
   r.finish_pass = pockets ? !profile_.mrc_no_finish_type2 : !profile_.mrc_no_finish_type1;
   emit_cycle_path(mrc::stock_removal(r), facing);
   return true;
+}
+
+// The shape as the imaginary tip follows it under tool-nose radius compensation: the first block
+// starts up from the cycle's start point (type A), every corner as in offset mode, the last block
+// ends with its vector perpendicular. The compensation in force is cancelled at the start point and
+// stays off for the cycle's own moves.
+std::vector<Move> Interpreter::nose_compensated(const std::vector<Move>& shape) {
+  int side = comp_side_;
+  comp_->cancel_at_end();
+  comp_side_ = 0;
+  double radius = nose_radius();
+  if (radius < 0) radius = -radius, side = -side;
+  std::vector<Move> out;
+  if (side == 0 || radius == 0) return shape;
+  RadiusCompensation nose(
+      CompensationSettings{}, [&](Move& m) { out.push_back(m); },
+      [](const Move& at, const std::string& code, const std::string& message) {
+        throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{at.file, at.line, 1, 1}});
+      },
+      [this](const Move& at, const std::string& code, const std::string& message) {
+        if (result_.warnings.size() < 1000)
+          result_.warnings.push_back(
+              nc::Diagnostic{nc::Severity::warning, code, message, nc::Span{at.file, at.line, 1, 1}});
+      });
+  nose.set_tip(nose_tip());
+  for (const Move& m : shape)
+    if (m.is_motion()) nose.element(m, side, radius);
+  nose.finish();
+  return out;
 }
 
 // G73: the shape repeated d times, moved by the relief falling to the finishing allowance.
@@ -298,7 +331,7 @@ bool Interpreter::pattern_repeating_cycle() {
   if (moves.empty()) alarm("PS0065", fmt::format("{}: the shape N{}..N{} makes no move", code, range.ns, range.nf));
   mrc::Pattern p;
   p.start = p2(start);
-  p.shape = shape_of(moves, 0);
+  p.shape = shape_of(comp_side_ != 0 || comp_->offset_mode() ? nose_compensated(moves) : moves, 0);
   p.relief = {mrc_relief_x_, mrc_relief_z_};
   p.allowance = {du, dw};
   p.count = static_cast<int>(mrc_divisions_);

@@ -306,3 +306,29 @@ TEST(RepetitiveCycles, ShapeAfterTheCycleIsNotRunAgain) {
   ASSERT_TRUE(r.result.ok());
   for (const auto& m : r.motions()) EXPECT_TRUE(m.line == 1 || m.line == 3) << m.line;
 }
+
+// G71 under G42 roughs the shape as the imaginary tip follows it. Tip 3, r = 0.8: the diameters
+// and the face come out as programmed; on the taper from (X radius 10, Z2) to (20, -10) the nose
+// centre runs r along its normal (10, 12)/|(10, 12)| (Z, X), so the tip (centre - (r, r)) runs on
+// Z = 14 - 1.2 X - 0.63795 r (worked by hand): the pass at X30 (radius 15) ends at Z-4.51036
+// instead of the uncompensated Z-4.
+TEST(RepetitiveCycles, RoughingUnderNoseRadiusCompensationFollowsTheTipPath) {
+  auto p = ncurve::machine::default_lathe();
+  p.lathe_offsets[1] = ncurve::machine::LatheOffset{0, 0, 0, 3, 0, 0, 0.8};
+  const std::string shape = "G71 U2. R0.5\nG71 P10 Q40 U0 W0 F0.2\nN10 G00 X20.\nN20 G01 X40. Z-10.\nN30 Z-20.\nN40 X60.\n";
+  auto end_of_pass = [](const ncurve::test::Ran& r, double x_radius) {
+    for (const auto& m : r.moves)
+      if (m.kind == ncurve::machine::MoveKind::line && m.line == 5 && std::fabs(m.start[0] - x_radius) < 1e-9 &&
+          std::fabs(m.end[0] - x_radius) < 1e-9)
+        return m.end[2];
+    return 1e300;
+  };
+  auto comp = ncurve::test::run("T0101\nG99 G00 X62. Z2.\nG42 G00 X62. Z2.\n" + shape + "G40 G00 X80.\nM30\n", p);
+  ASSERT_TRUE(comp.result.ok()) << ncurve::nc::format(*comp.result.alarm);
+  auto plain = ncurve::test::run("T0101\nG99 G00 X62. Z2.\nG40 G00 X62. Z2.\n" + shape + "G00 X80.\nM30\n", p);
+  ASSERT_TRUE(plain.result.ok()) << ncurve::nc::format(*plain.result.alarm);
+  EXPECT_NEAR(end_of_pass(plain, 15), -4, 1e-9);
+  EXPECT_NEAR(end_of_pass(comp, 15), 14 - 1.2 * 15 - 0.63795 * 0.8, 2e-5);
+  EXPECT_NEAR(end_of_pass(plain, 29), -20, 1e-9);
+  EXPECT_NEAR(end_of_pass(comp, 29), -20, 1e-9);
+}
