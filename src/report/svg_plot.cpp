@@ -54,11 +54,43 @@ void Page::text(double x, double y, std::string_view t, std::string_view anchor,
                        xml_escape(t));
 }
 
+namespace {
+// `text` in lines no wider than `width` at this font size, broken at spaces (a word longer than
+// the width has a line of its own).
+std::vector<std::string> wrap(std::string_view text, double width, double size) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    std::size_t end = text.find(' ', at);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(at, end - at);
+    if (!line.empty() && text_width(line, size) + text_width(word, size) + size * 0.3 > width) {
+      lines.push_back(line);
+      line.clear();
+    }
+    if (!line.empty()) line += ' ';
+    line += word;
+    at = end + 1;
+  }
+  if (!line.empty() || lines.empty()) lines.push_back(line);
+  return lines;
+}
+}  // namespace
+
 double Page::heading(std::string_view title, std::string_view subtitle) {
-  text(16, 22, title, "start", 15);
-  if (subtitle.empty()) return 32;
-  text(16, 42, subtitle, "start", 12, "fill=\"#444\"");
-  return 52;
+  double y = 22;
+  for (const auto& line : wrap(title, width_ - 32, 15)) {
+    text(16, y, line, "start", 15);
+    y += 19;
+  }
+  if (subtitle.empty()) return y + 10 - 19;
+  y += 1;
+  for (const auto& line : wrap(subtitle, width_ - 32, 12)) {
+    text(16, y, line, "start", 12, "fill=\"#444\"");
+    y += 16;
+  }
+  return y + 10 - 16;
 }
 
 std::string Page::str() const {
