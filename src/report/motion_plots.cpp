@@ -107,7 +107,7 @@ std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::
                      bar_x - 4, y, bar_x + 22, y, bar_x + 24, y - 8);
   }
   page.add(s);
-  page.text(bar_x - 6, f.top + 8, "deviation of each block", "start", 11);
+  page.text(W - 8, f.top + 8, "deviation of each block", "end", 11);
   page.text(16, H - 10, fmt::format("largest deviation {:.2f} µm{} · grey: the nominal curve · {} blocks", worst * 1000,
                                     tolerance > 0 ? fmt::format(" · tolerance {:g} µm, {} blocks beyond it (thick)",
                                                                 tolerance * 1000, over)

@@ -143,14 +143,19 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
                                                        motions_, by_kind[0], by_kind[1], by_kind[2],
                                                        lathe_ ? "; lathe: Z across, X up" : ""));
   // the legend and notes at the bottom
-  std::vector<std::string> notes;
+  std::vector<std::string> notes;  // lines, the alarm's last
   if (left_out_)
     notes.push_back(fmt::format("only the first {} elements are drawn: {} more moves were left out (limit of the plot)",
                                 limit_, left_out_));
-  if (alarm_)
-    notes.push_back(fmt::format("the run stopped on alarm {} at {}line {}: {}", alarm_->code,
-                                alarm_->span.file ? alarm_->span.file->name() + " " : std::string(), alarm_->span.line,
-                                alarm_->message));
+  std::size_t alarm_lines = 0;
+  if (alarm_) {
+    auto lines = plot::wrap(fmt::format("the run stopped on alarm {} at {}line {}: {}", alarm_->code,
+                                        alarm_->span.file ? alarm_->span.file->name() + " " : std::string(),
+                                        alarm_->span.line, alarm_->message),
+                            W - 32, 12);
+    alarm_lines = lines.size();
+    notes.insert(notes.end(), lines.begin(), lines.end());
+  }
   const double bottom = 36 + 18 * static_cast<double>(notes.size());
   const double cols = single ? 1 : 2, rows = single ? 1 : 2;
   const double cw = (W - 16) / cols, ch = (H - top - bottom) / rows;
@@ -270,8 +275,9 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
       {"rapid (G00)", kRapid, "6 4", 1.5}, {"feed (G01)", kFeed, "", 1.5}, {"arc (G02/G03)", kArc, "", 1.5}, {"start", "#000", "", 1.5, false, true}};
   if (alarm_) legend.push_back({"alarm", kAlarm, "", 2.5, true});
   y += plot::draw_legend(page, 16, y, W - 32, legend);
-  for (const auto& n : notes) {
-    page.text(16, y + 12, n, "start", 12, fmt::format("class=\"note\" fill=\"{}\"", alarm_ && &n == &notes.back() ? kAlarm : "#444"));
+  for (std::size_t i = 0; i < notes.size(); ++i) {
+    const bool alarm = i + alarm_lines >= notes.size();
+    page.text(16, y + 12, notes[i], "start", 12, fmt::format("class=\"note\" fill=\"{}\"", alarm ? kAlarm : "#444"));
     y += 18;
   }
   return page.str();

@@ -54,9 +54,6 @@ void Page::text(double x, double y, std::string_view t, std::string_view anchor,
                        xml_escape(t));
 }
 
-namespace {
-// `text` in lines no wider than `width` at this font size, broken at spaces (a word longer than
-// the width has a line of its own).
 std::vector<std::string> wrap(std::string_view text, double width, double size) {
   std::vector<std::string> lines;
   std::string line;
@@ -76,7 +73,6 @@ std::vector<std::string> wrap(std::string_view text, double width, double size) 
   if (!line.empty() || lines.empty()) lines.push_back(line);
   return lines;
 }
-}  // namespace
 
 double Page::heading(std::string_view title, std::string_view subtitle) {
   double y = 22;

@@ -16,6 +16,10 @@ std::string tick_label(double value, double step);
 // Width in pixels of text in the sans-serif font at this size (an upper estimate, so margins hold).
 double text_width(std::string_view text, double font_size);
 
+// `text` in lines no wider than `width` at this font size, broken at spaces (a word longer than
+// the width has a line of its own).
+std::vector<std::string> wrap(std::string_view text, double width, double font_size);
+
 // An SVG page: the header, a white background and the elements appended to it.
 class Page {
 public:

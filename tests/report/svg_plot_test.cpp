@@ -1,4 +1,5 @@
 // The shared plotting layer (round ticks, labels, panels) and run --plot's drawing of known programs.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -187,8 +188,8 @@ TEST(PathPlot, LatheInRadiusSaysSo) {
 
 TEST(PathPlot, MemoryStaysBounded) {
   std::string program = "G01 F100.\n";
-  for (int i = 1; i <= 1000; ++i) program += "X" + std::to_string(i) + ".\n";  // collinear: one element
-  for (int i = 1; i <= 100; ++i) program += "Y" + std::to_string(i % 2) + ".\n";  // a zigzag: 100 elements
+  for (int i = 1; i <= 1000; ++i) program += fmt::format("X{}.\n", i);  // collinear: one element
+  for (int i = 1; i <= 100; ++i) program += fmt::format("Y{}.\n", i % 2);  // a zigzag: 100 elements
   program += "M30\n";
   machine::ProgramLibrary lib;
   lib.add_text("p.nc", program, true);
