@@ -45,6 +45,7 @@ void PathPlot::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
   ++motions_;
   const Vec a = xyz(m.start), b = xyz(m.end);
+  for (int k = 0; k < 3; ++k) lo_[k] = std::min({lo_[k], a[k], b[k]}), hi_[k] = std::max({hi_[k], a[k], b[k]});
   last_ = b;
   moved_ = true;
   if (m.kind != MoveKind::arc && !elements_.empty()) {  // a straight continuation of the same kind
@@ -55,12 +56,101 @@ void PathPlot::on_move(const machine::Move& m) {
     }
   }
   if (a == b && m.kind != MoveKind::arc) return;  // a move of rotary axes only: nothing to draw
+  if (elements_.size() >= limit_ && !given_up_) compact();
   if (elements_.size() >= limit_) {
     ++left_out_;
     return;
   }
   Element e{m.kind, m.plane, a, b, m.center, m.sweep};
   elements_.push_back(e);
+}
+
+namespace {
+
+double distance_to_segment(const Vec& p, const Vec& a, const Vec& b) {
+  const Vec d{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  const double t = dd > 0 ? std::clamp((w[0] * d[0] + w[1] * d[1] + w[2] * d[2]) / dd, 0.0, 1.0) : 0.0;
+  return std::hypot(w[0] - t * d[0], w[1] - t * d[1], w[2] - t * d[2]);
+}
+
+}  // namespace
+
+// The drawing is at most about 1,300 px across the path's extent: a 4000th of its diagonal is
+// under half a pixel. The moves added since the last pass are simplified at the current level (a
+// power of two in mm); if that does not halve the elements, everything is, at the next level up,
+// until a 250th of the diagonal. Each pass keeps only programmed points, each dropped one within
+// the level of the lines before: a point is off by at most the sum of the levels used, which is
+// under twice the last.
+void PathPlot::compact() {
+  const double diag = std::hypot(hi_[0] - lo_[0], hi_[1] - lo_[1], hi_[2] - lo_[2]);
+  auto use = [&](double level, std::size_t from) {
+    const std::size_t before = elements_.size();
+    simplify(level, from);
+    if (elements_.size() < before && level > last_tol_) tol_ += level, last_tol_ = level;
+  };
+  double level = std::max(last_tol_, std::exp2(std::ceil(std::log2(std::max(diag, 1e-9) / 4000))));
+  use(level, fresh_);
+  while (elements_.size() > limit_ / 2) {
+    level *= 2;
+    if (level > diag / 250) break;
+    use(level, 0);
+  }
+  fresh_ = elements_.size();
+  given_up_ = elements_.size() >= limit_;
+}
+
+// From element `from` on, runs of connected straight moves of one kind become fewer lines, every dropped corner within
+// tol of the line that replaces it (greedily, a window of at most 512 corners); arcs shorter than
+// tol become lines.
+void PathPlot::simplify(double tol, std::size_t from) {
+  constexpr std::size_t kWindow = 512;
+  std::vector<Element> out(elements_.begin(), elements_.begin() + static_cast<std::ptrdiff_t>(from));
+  out.reserve(elements_.size());
+  std::vector<Vec> run;
+  for (std::size_t i = from; i < elements_.size();) {
+    Element e = elements_[i];
+    if (e.kind == MoveKind::arc) {
+      const auto pq = machine::plane_axes(e.plane);
+      const double r = std::hypot(e.a[pq.p] - e.c[pq.p], e.a[pq.q] - e.c[pq.q]);
+      if (r * std::fabs(e.sweep) < tol) e.kind = MoveKind::line;
+    }
+    if (e.kind == MoveKind::arc) {
+      out.push_back(e);
+      ++i;
+      continue;
+    }
+    // the run: e and the straight elements of its kind joined to it
+    run.assign({e.a, e.b});
+    std::size_t j = i + 1;
+    for (; j < elements_.size(); ++j) {
+      const Element& n = elements_[j];
+      bool straight = n.kind == e.kind;
+      if (n.kind == MoveKind::arc && e.kind == MoveKind::line) {
+        const auto pq = machine::plane_axes(n.plane);
+        straight = std::hypot(n.a[pq.p] - n.c[pq.p], n.a[pq.q] - n.c[pq.q]) * std::fabs(n.sweep) < tol;
+      }
+      if (!straight || n.a != run.back()) break;
+      run.push_back(n.b);
+    }
+    std::size_t anchor = 0;
+    while (anchor + 1 < run.size()) {
+      std::size_t end = anchor + 1;
+      while (end + 1 < run.size() && end + 1 - anchor <= kWindow) {
+        bool fits = true;
+        for (std::size_t k = anchor + 1; k <= end && fits; ++k)
+          fits = distance_to_segment(run[k], run[anchor], run[end + 1]) <= tol;
+        if (!fits) break;
+        ++end;
+      }
+      Element s = e;
+      s.a = run[anchor], s.b = run[end];
+      out.push_back(s);
+      anchor = end;
+    }
+    i = j;
+  }
+  elements_ = std::move(out);
 }
 
 void PathPlot::stopped(const nc::Diagnostic& alarm) {
@@ -144,6 +234,9 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
                                                        lathe_ ? "; lathe: Z across, X up" : ""));
   // the legend and notes at the bottom
   std::vector<std::string> notes;  // lines, the alarm's last
+  if (tol_ > 0)
+    notes.push_back(fmt::format("short moves drawn simplified, within {:.3g} {} of the path, to keep the drawing small",
+                                o.inch ? tol_ / 25.4 : tol_, o.inch ? "in" : "mm"));
   if (left_out_)
     notes.push_back(fmt::format("only the first {} elements are drawn: {} more moves were left out (limit of the plot)",
                                 limit_, left_out_));

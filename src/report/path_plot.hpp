@@ -1,7 +1,10 @@
 // ncurve run --plot: the tool path as an SVG drawing, collected from the move stream in bounded
-// memory (collinear moves merged, at most a fixed number of elements kept, the rest counted).
+// memory: collinear moves merged; when the elements reach their limit, runs of short moves are
+// simplified within a fraction of a pixel of the drawing; past what that can save, the rest is
+// counted, not drawn.
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -37,13 +40,22 @@ public:
     double sweep = 0;
   };
   const std::vector<Element>& elements() const { return elements_; }
+  // How far the simplification may have moved the drawn path, mm (0: not simplified).
+  double simplified_within() const { return tol_; }
 
 private:
+  void compact();
+  void simplify(double tol, std::size_t from);
   bool lathe_, x_diameter_;
   int machine_plane_;
   std::size_t limit_;
   std::vector<Element> elements_;
   std::uint64_t motions_ = 0, left_out_ = 0;
+  double tol_ = 0;       // the bound of the simplification's error so far
+  double last_tol_ = 0;  // the highest level a pass has simplified at
+  std::size_t fresh_ = 0;  // elements from here on were added since the last pass
+  bool given_up_ = false;  // simplifying no longer saves enough: further moves are counted only
+  std::array<double, 3> lo_{INFINITY, INFINITY, INFINITY}, hi_{-INFINITY, -INFINITY, -INFINITY};
   bool moved_ = false;
   std::array<double, 3> last_{};
   std::optional<nc::Diagnostic> alarm_;

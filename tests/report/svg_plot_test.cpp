@@ -2,6 +2,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <regex>
 #include <string>
 #include <vector>
@@ -189,7 +192,8 @@ TEST(PathPlot, LatheInRadiusSaysSo) {
 TEST(PathPlot, MemoryStaysBounded) {
   std::string program = "G01 F100.\n";
   for (int i = 1; i <= 1000; ++i) program += fmt::format("X{}.\n", i);  // collinear: one element
-  for (int i = 1; i <= 100; ++i) program += fmt::format("Y{}.\n", i % 2);  // a zigzag: 100 elements
+  // a zigzag of 500 mm: 100 elements, too wide for any simplification (at most 1/250 of the extent)
+  for (int i = 1; i <= 100; ++i) program += fmt::format("Y{}.\n", 500 * (i % 2));
   program += "M30\n";
   machine::ProgramLibrary lib;
   lib.add_text("p.nc", program, true);
@@ -202,5 +206,42 @@ TEST(PathPlot, MemoryStaysBounded) {
   report::PathPlotOptions o;
   auto notes = texts(plot.svg(o), "note");
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_NE(notes[0].find("only the first 20 elements are drawn: 81 more moves"), std::string::npos);
+  EXPECT_NE(notes.back().find("only the first 20 elements are drawn: 81 more moves"), std::string::npos);
+}
+
+// 2000 chords of 0.18 degrees on a circle of radius 100 mm (sag 0.12 um), limit 100: simplified,
+// the drawing keeps every programmed point within the bound it reports, under twice the largest
+// tolerance, 1/250 of the extent's diagonal (2 x 200 sqrt 2 / 250 = 2.26 mm), and the note says so.
+TEST(PathPlot, DenseRunsAreSimplifiedWithinTheirTolerance) {
+  std::string program = "G00 X100. Y0.\nG01 F100.\n";
+  std::vector<std::array<double, 2>> points;
+  for (int i = 1; i <= 2000; ++i) {
+    const double t = i * 0.18 * 3.14159265358979 / 180;
+    points.push_back({std::round(100000 * std::cos(t)) / 1000, std::round(100000 * std::sin(t)) / 1000});
+    program += fmt::format("X{:.3f} Y{:.3f}\n", points.back()[0], points.back()[1]);
+  }
+  program += "M30\n";
+  machine::ProgramLibrary lib;
+  lib.add_text("p.nc", program, true);
+  auto profile = machine::default_mill();
+  report::PathPlot plot(profile, 100);
+  machine::Interpreter in(profile, lib);
+  ASSERT_TRUE(in.run(plot).ok());
+  const double tol = plot.simplified_within();
+  EXPECT_GT(tol, 0);
+  EXPECT_LE(tol, 2 * 200 * std::sqrt(2.0) / 250);
+  EXPECT_LE(plot.elements().size(), 100u);
+  for (const auto& p : points) {
+    double best = INFINITY;
+    for (const auto& e : plot.elements()) {
+      if (e.kind != machine::MoveKind::line) continue;
+      const double dx = e.b[0] - e.a[0], dy = e.b[1] - e.a[1], dd = dx * dx + dy * dy;
+      const double t = dd > 0 ? std::clamp(((p[0] - e.a[0]) * dx + (p[1] - e.a[1]) * dy) / dd, 0.0, 1.0) : 0;
+      best = std::min(best, std::hypot(p[0] - e.a[0] - t * dx, p[1] - e.a[1] - t * dy));
+    }
+    ASSERT_LE(best, tol + 1e-9) << p[0] << "," << p[1];
+  }
+  auto notes = texts(plot.svg({}), "note");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("simplified"), std::string::npos);
 }
