@@ -100,9 +100,10 @@ void PathPlot::compact() {
   given_up_ = elements_.size() >= limit_;
 }
 
-// From element `from` on, runs of connected straight moves of one kind become fewer lines, every dropped corner within
-// tol of the line that replaces it (greedily, a window of at most 512 corners); arcs shorter than
-// tol become lines.
+// From element `from` on, runs of connected straight moves of one kind become fewer lines, every
+// dropped corner within tol of the line that replaces it; arcs shorter than tol become lines. Each
+// line reaches as far as a doubling then halving search finds (at most 512 corners), so the work
+// is about n log n.
 void PathPlot::simplify(double tol, std::size_t from) {
   constexpr std::size_t kWindow = 512;
   std::vector<Element> out(elements_.begin(), elements_.begin() + static_cast<std::ptrdiff_t>(from));
@@ -135,13 +136,24 @@ void PathPlot::simplify(double tol, std::size_t from) {
     }
     std::size_t anchor = 0;
     while (anchor + 1 < run.size()) {
-      std::size_t end = anchor + 1;
-      while (end + 1 < run.size() && end + 1 - anchor <= kWindow) {
-        bool fits = true;
-        for (std::size_t k = anchor + 1; k <= end && fits; ++k)
-          fits = distance_to_segment(run[k], run[anchor], run[end + 1]) <= tol;
-        if (!fits) break;
-        ++end;
+      auto fits = [&](std::size_t end) {
+        for (std::size_t k = anchor + 1; k < end; ++k)
+          if (distance_to_segment(run[k], run[anchor], run[end]) > tol) return false;
+        return true;
+      };
+      const std::size_t last = std::min(run.size() - 1, anchor + kWindow);
+      std::size_t end = anchor + 1, bad = last + 1;
+      for (std::size_t step = 1; end < last; step *= 2) {
+        const std::size_t c = std::min(last, end + step);
+        if (!fits(c)) {
+          bad = c;
+          break;
+        }
+        end = c;
+      }
+      while (bad - end > 1) {
+        const std::size_t mid = (end + bad) / 2;
+        (fits(mid) ? end : bad) = mid;
       }
       Element s = e;
       s.a = run[anchor], s.b = run[end];
