@@ -290,7 +290,9 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
     const std::string x_name = lathe_ ? fmt::format("X ({})", x_diameter_ ? "diameter" : "radius") : "X";
     const double x_scale = x_diameter_ ? 2 * unit : unit;
     switch (view) {
-      case PlotView::xy: panel.title = "XY (top)", panel.u.label = "X", panel.v.label = "Y"; break;
+      case PlotView::xy:
+        panel.title = "XY (top)", panel.u.label = x_name, panel.v.label = "Y", panel.u.scale = x_scale;
+        break;
       case PlotView::yz: panel.title = "YZ (side)", panel.u.label = "Y", panel.v.label = "Z"; break;
       case PlotView::xz:
         if (lathe_) {
