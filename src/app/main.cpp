@@ -11,6 +11,7 @@
 #include "app/gen_command.hpp"
 #include "app/helicoid_command.hpp"
 #include "app/analyze_command.hpp"
+#include "app/run_plot.hpp"
 #include "app/run_setup.hpp"
 #include "app/cli_checks.hpp"
 #include "app/cli_docs.hpp"
@@ -19,6 +20,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
+#include "report/path_plot.hpp"
 #include "report/summary.hpp"
 #include "report/writers.hpp"
 
@@ -38,6 +40,8 @@ struct RunArgs {
   double arc_tol = 0.001;
   std::string output;
   bool json = false;
+  std::string plot;  // --plot F.svg
+  std::string view;  // --view xy|xz|yz|iso
 };
 
 int run_command(const RunArgs& a) {
@@ -53,6 +57,12 @@ int run_command(const RunArgs& a) {
 
   // "-o -" is the default: the output to standard output, an alarm to the terminal
   const std::string output = a.output == "-" ? std::string() : a.output;
+  const bool plot_out = a.plot == "-" && output.empty();  // the drawing takes standard output
+  if (plot_out && a.format != "summary") {
+    std::cerr << "ncurve run: --plot - and --format " << a.format
+              << " both write to standard output; write one of them to a file (-o FILE)\n";
+    return 2;
+  }
   std::optional<io::OutputFile> file;
   if (!output.empty()) {
     std::vector<std::string> inputs;
@@ -76,9 +86,16 @@ int run_command(const RunArgs& a) {
     sink = std::move(g);
   } else sink = std::make_unique<machine::NullSink>();
 
+  std::optional<report::PathPlot> plot;
+  std::optional<report::TeeSink> tee;
+  if (!a.plot.empty()) {
+    plot.emplace(profile);
+    tee.emplace(*sink, *plot);
+  }
+  machine::MoveSink& target = tee ? static_cast<machine::MoveSink&>(*tee) : *sink;
   machine::Interpreter interp(profile, lib, setup.options);
-  machine::RunResult result = interp.run(*sink);
-  if (result.alarm) sink->stopped(*result.alarm);  // a cut-off path says so at its end
+  machine::RunResult result = interp.run(target);
+  if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
   if (gcode) gcode->finish();
 
   report::RunReport rep;
@@ -88,7 +105,8 @@ int run_command(const RunArgs& a) {
   rep.stats = report::source_stats(lib, lib.main()->file.get());
   rep.text_problems = setup.problems;
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
-  if (a.format == "summary") out << summary;
+  if (plot && !app::save_plot(a.plot, a.view, *plot, interp, rep.source, lib)) return 2;
+  if (a.format == "summary") (plot_out ? std::cerr : out) << summary;
   if (file) {
     try {
       file->commit();
@@ -118,6 +136,7 @@ int ncurve_main(int argc, char** argv) {
       ->check(app::positive_mm());
   run->add_option("-o,--output", a.output, "write the output to this file (the summary then goes to the terminal)");
   run->add_flag("--json", a.json, "summary as JSON");
+  app::add_plot_options(run, a.plot, a.view);
   app::GenArgs g;
   app::add_gen_command(app, g);
   app::HelicoidArgs h;

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "report/svg_text.hpp"
+#include "report/svg_plot.hpp"
 
 namespace ncurve::helicoid {
 
@@ -175,57 +175,70 @@ std::string pass_program(const Job& job, const ContactSearch& search, const Pass
 }
 
 std::string contacts_svg(const Job& job, const ContactSearch& search) {
+  namespace plot = report::plot;
   const auto& profile = search.workpiece().profile;
-  constexpr double W = 900, H = 420, pad = 50;
-  std::string s = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"{}\" y=\"20\" font-size=\"14\">{}</text>\n",
-      W, H, pad, report::xml_escape(job.title));
-  // Left: the end profile (phase 0) with each contact turned back to it.
-  double R = profile.r_max() * 1.1, cx = pad + 160, cy = H / 2 + 10, k = 160 / R;
-  std::string path;
+  constexpr double W = 1000, H = 520;
+  plot::Page page(W, H);
+  const double top = page.heading(job.title);
+  // Left: the end profile (phase 0) with each contact turned back to it, equal scales.
+  std::vector<Vec2> outline;
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (int i = 0; i <= 720; ++i) {
     Vec2 p = profile.point(profile.u0() + profile.period() * i / 720);
-    path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", cx + k * p.x, cy - k * p.y);
+    outline.push_back(p);
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   }
-  s += fmt::format("<path d=\"{}Z\" fill=\"#eef\" stroke=\"#336\"/>\n", path);
+  plot::Panel end;
+  end.x = 8, end.y = top, end.w = 440, end.h = H - top - 30;
+  end.title = "end profile with the contacts";
+  end.u = {x0, x1, "x, mm", 1, 6};
+  end.v = {y0, y1, "y, mm", 1, 6};
+  end.equal = true;
+  const plot::Frame f = plot::draw_panel(page, end);
+  std::string path;
+  for (std::size_t i = 0; i < outline.size(); ++i)
+    path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", f.x(outline[i].x), f.y(outline[i].y));
+  std::string s = fmt::format("<path d=\"{}Z\" fill=\"#eef\" stroke=\"#336\"/>\n", path);
   for (const auto& c : job.contacts) {
     Vec2 p = profile.point(c.u);
-    s += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"{}\"/>\n", cx + k * p.x, cy - k * p.y,
+    s += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"{}\"/>\n", f.x(p.x), f.y(p.y),
                      c.region == "corner" ? "#c00" : "#080");
   }
-  s += fmt::format("<text x=\"{}\" y=\"{}\">end profile (mm, scale {:.2f} px/mm); contacts: red corner, green flank</text>\n",
-                   pad, H - 12, k);
+  page.add(s);
+  plot::draw_legend(page, 16, H - 26, 430,
+                    {{"contact on the corner", "#c00", "", 1.5, false, true}, {"on the flank", "#080", "", 1.5, false, true}});
   // Right: A(psi) and the plane method's error.
   if (job.contacts.size() >= 2) {
-    double x0 = 420, x1 = W - pad, top = 50, mid = 230, bottom = H - 40;
-    double p0 = job.contacts.front().psi, p1 = job.contacts.back().psi;
-    double a_lo = 1e300, a_hi = -1e300, e_max = 1e-6;
+    const double p0 = job.contacts.front().psi, p1 = job.contacts.back().psi;
+    double a_lo = 1e300, a_hi = -1e300, e_lo = 0, e_hi = 0;
     for (const auto& c : job.contacts) {
       a_lo = std::min(a_lo, c.A), a_hi = std::max(a_hi, c.A);
-      e_max = std::max(e_max, std::abs(plane_error(c)));
+      e_lo = std::min(e_lo, plane_error(c) * 1000), e_hi = std::max(e_hi, plane_error(c) * 1000);
     }
-    auto X = [&](double psi) { return x0 + (x1 - x0) * (psi - p0) / (p1 - p0); };
+    const double half = (H - top - 10) / 2;
+    plot::Panel a;
+    a.x = 460, a.y = top, a.w = W - 468, a.h = half;
+    a.title = "centre distance A(psi)";
+    a.u = {p0, p1, "psi, degrees", 1, 8};
+    a.v = {a_lo, a_hi, "A, mm", 1, 5};
+    const plot::Frame fa = plot::draw_panel(page, a);
+    plot::Panel e = a;
+    e.y = top + half + 6;
+    e.title = "plane method A minus true A";
+    e.v = {e_lo, e_hi, "error, µm", 1, 5};
+    const plot::Frame fe = plot::draw_panel(page, e);
     std::string a_path, e_path;
     for (std::size_t i = 0; i < job.contacts.size(); ++i) {
       const auto& c = job.contacts[i];
-      double ya = mid - 10 - (mid - 10 - top) * (c.A - a_lo) / std::max(a_hi - a_lo, 1e-9);
-      double ye = (mid + 20 + bottom) / 2 - (bottom - mid - 20) / 2 * plane_error(c) / e_max;
-      a_path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", X(c.psi), ya);
-      e_path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", X(c.psi), ye);
+      a_path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", fa.x(c.psi), fa.y(c.A));
+      e_path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", fe.x(c.psi), fe.y(plane_error(c) * 1000));
     }
-    s += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#c00\"/>\n", a_path);
-    s += fmt::format("<text x=\"{}\" y=\"{}\">A(psi): {:.4f} .. {:.4f} mm over psi {:g} .. {:g} deg</text>\n", x0,
-                     top - 8, a_lo, a_hi, p0, p1);
-    double zero = (mid + 20 + bottom) / 2;
-    s += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"#999\"/>\n", x0, zero, x1, zero);
-    s += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#06c\"/>\n", e_path);
-    s += fmt::format("<text x=\"{}\" y=\"{}\">plane method A minus true A: +-{:.1f} um full scale</text>\n", x0,
-                     mid + 14, e_max * 1000);
-    s += fmt::format("<text x=\"{}\" y=\"{}\">psi, degrees</text>\n", (x0 + x1) / 2, H - 12);
+    page.add(fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#c00\"/>\n", a_path));
+    page.add(fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#999\"/>\n", fe.left,
+                         fe.y(0), fe.left + fe.width));
+    page.add(fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#06c\"/>\n", e_path));
   }
-  s += "</svg>\n";
-  return s;
+  return page.str();
 }
 
 }  // namespace ncurve::helicoid

@@ -1,0 +1,34 @@
+// ncurve run --plot / --view: the options and the writing of the drawing.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "app/save.hpp"
+#include "machine/interpreter.hpp"
+#include "machine/library.hpp"
+#include "report/path_plot.hpp"
+
+namespace ncurve::app {
+
+inline void add_plot_options(CLI::App* run, std::string& plot, std::string& view) {
+  run->add_option("--plot", plot,
+                  "draw the tool path as SVG to this file (- for standard output): the machine plane, the two other "
+                  "projections and an isometric view (a lathe: the ZX plane)");
+  run->add_option("--view", view, "--plot: one view only: xy, xz, yz or iso")
+      ->check(CLI::IsMember({"xy", "xz", "yz", "iso"}));
+}
+
+// Writes the drawing; false, with the reason printed, if it failed.
+inline bool save_plot(const std::string& path, const std::string& view, const report::PathPlot& plot,
+                      machine::Interpreter& interp, const std::string& source, const machine::ProgramLibrary& lib) {
+  report::PathPlotOptions o;
+  if (!view.empty()) o.views = {*report::plot_view(view)};
+  o.title = source;
+  o.inch = interp.variable(4006).number() == 20;  // the program's units as it ended (G20/G21)
+  std::vector<std::string> inputs;
+  for (const auto& f : lib.files()) inputs.push_back(f->name());
+  return save(path, plot.svg(o), inputs);
+}
+
+}  // namespace ncurve::app

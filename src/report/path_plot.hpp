@@ -1,0 +1,87 @@
+// ncurve run --plot: the tool path as an SVG drawing, collected from the move stream in bounded
+// memory: collinear moves merged; when the elements reach their limit, runs of short moves are
+// simplified within a fraction of a pixel of the drawing; past what that can save, the rest is
+// counted, not drawn.
+#pragma once
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "machine/move.hpp"
+#include "nc/diagnostic.hpp"
+
+namespace ncurve::report {
+
+enum class PlotView : std::uint8_t { xy, xz, yz, iso };
+// "xy", "xz", "yz" or "iso"; nullopt for anything else.
+std::optional<PlotView> plot_view(const std::string& name);
+
+struct PathPlotOptions {
+  std::vector<PlotView> views;  // empty: the machine plane, the two other projections and iso (lathe: ZX)
+  std::string title;
+  bool inch = false;            // axes in inches (the program ended under G20)
+};
+
+class PathPlot final : public machine::MoveSink {
+public:
+  static constexpr std::size_t kDefaultLimit = 50'000;
+  explicit PathPlot(const machine::MachineProfile& profile, std::size_t max_elements = kDefaultLimit);
+  void on_move(const machine::Move& m) override;
+  void stopped(const nc::Diagnostic& alarm) override;
+  std::string svg(const PathPlotOptions& options) const;
+
+  struct Element {
+    machine::MoveKind kind;       // rapid, line or arc
+    std::uint8_t plane = 17;
+    std::array<double, 3> a{}, b{}, c{};  // start, end, arc centre (X Y Z, X as a radius)
+    double sweep = 0;
+  };
+  const std::vector<Element>& elements() const { return elements_; }
+  // How far the simplification may have moved the drawn path, mm (0: not simplified).
+  double simplified_within() const { return tol_; }
+
+private:
+  void compact();
+  void simplify(double tol, std::size_t from);
+  bool lathe_, x_diameter_;
+  int machine_plane_;
+  std::size_t limit_;
+  std::vector<Element> elements_;
+  std::uint64_t motions_ = 0, left_out_ = 0;
+  double tol_ = 0;       // the bound of the simplification's error so far
+  double last_tol_ = 0;  // the highest level a pass has simplified at
+  std::size_t fresh_ = 0;  // elements from here on were added since the last pass
+  bool given_up_ = false;  // simplifying no longer saves enough: further moves are counted only
+  std::array<double, 3> lo_{INFINITY, INFINITY, INFINITY}, hi_{-INFINITY, -INFINITY, -INFINITY};
+  bool moved_ = false;
+  std::array<double, 3> last_{};
+  std::optional<nc::Diagnostic> alarm_;
+  std::array<double, 3> alarm_at_{};
+};
+
+}  // namespace ncurve::report
+
+namespace ncurve::report {
+
+// Passes every move and the alarm to two sinks.
+class TeeSink final : public machine::MoveSink {
+public:
+  TeeSink(machine::MoveSink& first, machine::MoveSink& second) : first_(first), second_(second) {}
+  void on_move(const machine::Move& m) override {
+    first_.on_move(m);
+    second_.on_move(m);
+  }
+  void stopped(const nc::Diagnostic& alarm) override {
+    first_.stopped(alarm);
+    second_.stopped(alarm);
+  }
+
+private:
+  machine::MoveSink& first_;
+  machine::MoveSink& second_;
+};
+
+}  // namespace ncurve::report

@@ -1,0 +1,89 @@
+// The plotting layer every SVG of ncurve is drawn with: a page, panels with axes whose round tick
+// steps and labels size the margins (so nothing is clipped), legends, and text always escaped.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ncurve::report::plot {
+
+// A round step (1, 2 or 5 times a power of ten) giving about n intervals over span.
+double nice_step(double span, int n);
+// The multiples of a nice step for about n intervals that lie within [lo, hi] (hi >= lo).
+std::vector<double> nice_ticks(double lo, double hi, int n);
+// A tick value written with as many decimals as the step needs, no "-0".
+std::string tick_label(double value, double step);
+// Width in pixels of text in the sans-serif font at this size (an upper estimate, so margins hold).
+double text_width(std::string_view text, double font_size);
+
+// `text` in lines no wider than `width` at this font size, broken at spaces (a word longer than
+// the width has a line of its own).
+std::vector<std::string> wrap(std::string_view text, double width, double font_size);
+
+// An SVG page: the header, a white background and the elements appended to it.
+class Page {
+public:
+  Page(double width, double height);
+  double width() const { return width_; }
+  double height() const { return height_; }
+  // Raw markup (the caller has escaped its text).
+  void add(std::string_view markup) { body_ += markup; }
+  // Escaped text at (x, y); anchor "start", "middle" or "end"; extra attributes as markup.
+  void text(double x, double y, std::string_view text, std::string_view anchor = "start", double size = 12,
+            std::string_view extra = "");
+  // A title and an optional subtitle at the top left; returns the height they take.
+  double heading(std::string_view title, std::string_view subtitle = "");
+  std::string str() const;
+
+private:
+  double width_, height_;
+  std::string body_;
+};
+
+// One axis of a panel: its data range and name; shown values are data * scale (a lathe's X as a
+// diameter: 2, inches: 1 / 25.4), ticks round in shown units.
+struct Axis {
+  double lo = 0, hi = 1;
+  std::string label;
+  double scale = 1;
+  int ticks = 6;
+};
+
+// Where a panel's data lands on the page.
+struct Frame {
+  double left = 0, top = 0, width = 1, height = 1;  // plotting area, px
+  double u0 = 0, u1 = 1, v0 = 0, v1 = 1;           // data at its edges
+  double x(double u) const { return left + (u - u0) / (u1 - u0) * width; }
+  double y(double v) const { return top + height - (v - v0) / (v1 - v0) * height; }
+  double px_per_unit() const { return width / (u1 - u0); }
+};
+
+// A panel in the box (x, y, w, h) of the page: an optional title above, axes with ticks, grid and
+// labels, margins from the labels' sizes. With equal scales one data unit is as long on both axes
+// (the ranges grow to fill the box, centred). Without ticks only the area and title are laid out.
+struct Panel {
+  double x = 0, y = 0, w = 400, h = 300;
+  std::string title;
+  Axis u, v;
+  bool equal = false;
+  bool grid = true;
+  bool ticks = true;
+};
+Frame draw_panel(Page& page, const Panel& panel);
+
+// Legend entries: a line sample (stroke, dash, width) or a marker, and its text.
+struct LegendEntry {
+  std::string label;
+  std::string stroke = "#000";
+  std::string dash;      // stroke-dasharray, empty: solid
+  double width = 1.5;
+  bool cross = false;    // a cross marker instead of a line
+  bool dot = false;      // a dot instead of a line
+};
+// A legend in rows from (x, y) within max_width; returns the height it took.
+double draw_legend(Page& page, double x, double y, double max_width, const std::vector<LegendEntry>& entries);
+
+// A cross of size s at (x, y).
+std::string cross(double x, double y, double s, std::string_view colour, double width = 2);
+
+}  // namespace ncurve::report::plot

@@ -1,0 +1,74 @@
+# ncurve run --plot / --view, and the plots of gen, analyze and helicoid on the shared layer: each
+# SVG parses and has nothing off its page (tests/plot_check.py), with the axes expected.
+include(${CMAKE_CURRENT_LIST_DIR}/cli_helpers.cmake)
+set(CHECK ${CMAKE_CURRENT_LIST_DIR}/plot_check.py)
+if(NOT PYTHON3)
+  message(FATAL_ERROR "python3 was not found, so the plots cannot be checked (install python3)")
+endif()
+
+# checks FILE with plot_check.py; its report (class counts and classed texts) in `report`
+function(check_plot file what)
+  execute_process(COMMAND ${PYTHON3} ${CHECK} ${file} OUTPUT_VARIABLE o ERROR_VARIABLE e RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(SEND_ERROR "${what}: ${file}: ${e}")
+  endif()
+  set(report "${o}" PARENT_SCOPE)
+endfunction()
+
+# four views of a mill program in inches: axes in inches
+run_expect(0 "run --plot" ${NCURVE} run ${SRC}/examples/inch.nc --plot ${OUT}/plot_inch.svg)
+expect_text("${out}" "moves" "run --plot keeps the summary")
+check_plot(${OUT}/plot_inch.svg "run --plot")
+expect_text("${report}" "view=4" "four views")
+expect_text("${report}" "text label-u: X, in" "inch axes")
+expect_text("${report}" "text label-v: Y, in" "inch axes")
+
+# one view; the drawing on standard output, the summary then on the terminal
+run_expect(0 "run --plot - --view xz" ${NCURVE} run ${SRC}/examples/spiral.nc --plot - --view xz)
+expect_text("${out}" "<svg" "plot on standard output")
+expect_text("${err}" "moves" "summary on the terminal")
+file(WRITE ${OUT}/plot_stdout.svg "${out}")
+check_plot(${OUT}/plot_stdout.svg "run --plot -")
+expect_text("${report}" "view=1" "one view")
+expect_text("${report}" "text label-v: Z, mm" "XZ view")
+run_expect(2 "two outputs on standard output" ${NCURVE} run ${SRC}/examples/spiral.nc --plot - --format csv)
+expect_text("${err}" "both write to standard output" "two outputs on standard output")
+run_expect(2 "bad view" ${NCURVE} run ${SRC}/examples/spiral.nc --plot ${OUT}/x.svg --view top)
+
+# the alarm marked: exit 1 as without --plot, the drawing written
+run_expect(1 "run --plot of an alarm" ${NCURVE} run ${SRC}/examples/alarm.nc --plot ${OUT}/plot_alarm.svg)
+check_plot(${OUT}/plot_alarm.svg "alarm plot")
+expect_text("${report}" "text alarm: MC3001 line 9" "alarm marker")
+expect_text("${report}" "DEPTH #100 NOT SET" "alarm message")
+
+# a lathe: Z across, X up as a diameter
+run_expect(0 "lathe plot" ${NCURVE} run ${SRC}/examples/lathe-hyperbola.nc --machine fanuc-lathe --plot ${OUT}/plot_lathe.svg)
+check_plot(${OUT}/plot_lathe.svg "lathe plot")
+expect_text("${report}" "text label-u: Z, mm" "lathe Z across")
+expect_text("${report}" "text label-v: X (diameter), mm" "lathe X up")
+
+# written whole or not at all
+file(REMOVE ${OUT}/no-such-dir/p.svg)
+run_expect(2 "plot to a missing folder" ${NCURVE} run ${SRC}/examples/spiral.nc --plot ${OUT}/no-such-dir/p.svg)
+
+# the other commands' plots, now with axes
+run_expect(0 "gen --plot" ${NCURVE} gen sine --form arcs --plot ${OUT}/plot_gen.svg -o ${OUT}/plot_gen.nc)
+check_plot(${OUT}/plot_gen.svg "gen --plot")
+expect_text("${report}" "text label-u: X, mm" "gen plot axes")
+expect_text("${report}" "text label-u: curve parameter t" "gen deviation axis")
+expect_text("${report}" "text tick-u: 80" "gen plot ticks")
+run_expect(0 "analyze --plot" ${NCURVE} analyze ${SRC}/examples/spiral.nc --plot ${OUT}/plot_feed.svg --curve spiral
+           --r0 1 --pitch 12.566370614359172 --shape-plot ${OUT}/plot_shape.svg --tol 0.005)
+check_plot(${OUT}/plot_feed.svg "analyze --plot")
+expect_text("${report}" "text label-v: feed, mm/min" "feed plot axes")
+check_plot(${OUT}/plot_shape.svg "analyze --shape-plot")
+expect_text("${report}" "text label-v: Y, mm" "shape plot axes")
+foreach(kv "25,30" "25,25" "2,40")
+  run_expect(0 "circle plot ${kv}" ${NCURVE} analyze circle --radius 50 --feed 5000 --kv ${kv} --plot ${OUT}/plot_circle.svg)
+  check_plot(${OUT}/plot_circle.svg "circle plot ${kv}")
+  expect_text("${report}" "text ring: 0 µm" "circle plot rings")
+endforeach()
+run_expect(0 "helicoid --plot" ${NCURVE} helicoid --example seed004 --csv -o ${OUT}/plot_rotor.csv --plot ${OUT}/plot_rotor.svg)
+check_plot(${OUT}/plot_rotor.svg "helicoid --plot")
+expect_text("${report}" "text label-u: psi, degrees" "helicoid plot axes")
+expect_text("${report}" "text label-v: error, µm" "helicoid plot axes")

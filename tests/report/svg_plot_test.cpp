@@ -1,0 +1,247 @@
+// The shared plotting layer (round ticks, labels, panels) and run --plot's drawing of known programs.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "machine/interpreter.hpp"
+#include "machine/library.hpp"
+#include "report/path_plot.hpp"
+#include "report/svg_plot.hpp"
+
+using namespace ncurve;
+using report::plot::nice_step;
+using report::plot::nice_ticks;
+using report::plot::tick_label;
+
+namespace {
+
+std::size_t count(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+// The texts of the elements of this class, in order.
+std::vector<std::string> texts(const std::string& svg, const std::string& cls) {
+  std::vector<std::string> out;
+  std::regex re("class=\"" + cls + "\"[^>]*>([^<]*)<");
+  for (std::sregex_iterator it(svg.begin(), svg.end(), re), end; it != end; ++it) out.push_back((*it)[1]);
+  return out;
+}
+
+struct Drawn {
+  std::string svg;
+  bool ok = true;
+};
+
+Drawn draw(const std::string& program, const machine::MachineProfile& profile, std::vector<report::PlotView> views,
+           std::size_t limit = report::PathPlot::kDefaultLimit) {
+  machine::ProgramLibrary lib;
+  lib.add_text("p.nc", program, true);
+  report::PathPlot plot(profile, limit);
+  machine::Interpreter in(profile, lib);
+  auto r = in.run(plot);
+  if (r.alarm) plot.stopped(*r.alarm);
+  report::PathPlotOptions o;
+  o.views = std::move(views);
+  o.title = "p.nc";
+  return {plot.svg(o), r.ok()};
+}
+
+}  // namespace
+
+// Ranges worked by hand: span / n rounded up to 1, 2 or 5 times a power of ten.
+TEST(PlotLayer, NiceTicksOnHandWorkedRanges) {
+  // 10 / 5 = 2 -> 2: 0, 2, ..., 10
+  EXPECT_EQ(nice_ticks(0, 10, 5), (std::vector<double>{0, 2, 4, 6, 8, 10}));
+  // 15.9 / 6 = 2.65 -> 5; multiples of 5 in [-3.7, 12.2]
+  EXPECT_EQ(nice_ticks(-3.7, 12.2, 6), (std::vector<double>{0, 5, 10}));
+  // 0.074 / 4 = 0.0185 -> 0.02
+  auto small = nice_ticks(0.013, 0.087, 4);
+  ASSERT_EQ(small.size(), 4u);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(small[i], 0.02 * (i + 1), 1e-12);
+  // 700 / 7 = 100 exactly: the step is 100, not 200
+  EXPECT_DOUBLE_EQ(nice_step(700, 7), 100);
+  // 94.5 / 8 = 11.8 -> 20; 64.8 / 8 = 8.1 -> 10; 3 / 8 = 0.375 -> 0.5
+  EXPECT_DOUBLE_EQ(nice_step(94.5, 8), 20);
+  EXPECT_DOUBLE_EQ(nice_step(64.8, 8), 10);
+  EXPECT_DOUBLE_EQ(nice_step(3, 8), 0.5);
+  EXPECT_EQ(nice_ticks(-1.2, -0.1, 4), (std::vector<double>{-1.0, -0.5}));  // 1.1 / 4 = 0.275 -> 0.5
+  EXPECT_TRUE(nice_ticks(5, 1, 4).empty());
+}
+
+TEST(PlotLayer, TickLabelsCarryTheStepsDecimals) {
+  EXPECT_EQ(tick_label(0.1 + 0.2, 0.1), "0.3");
+  EXPECT_EQ(tick_label(1500, 500), "1500");
+  EXPECT_EQ(tick_label(-1e-17, 0.5), "0.0");  // no "-0"
+  EXPECT_EQ(tick_label(0.025, 0.005), "0.025");
+}
+
+TEST(PlotLayer, PanelLabelsAreEscapedAndInsideThePage) {
+  report::plot::Page page(400, 300);
+  report::plot::Panel p;
+  p.x = 0, p.y = 0, p.w = 400, p.h = 300;
+  p.u = {0, 1000, "a<b & c", 1, 6};
+  p.v = {-123456, 0, "v", 1, 6};
+  auto f = report::plot::draw_panel(page, p);
+  const std::string svg = page.str();
+  EXPECT_NE(svg.find("a&lt;b &amp; c"), std::string::npos);
+  // the longest v label, "-120000", fits left of the frame
+  EXPECT_GT(f.left, report::plot::text_width("-120000", 11));
+  EXPECT_LE(f.left + f.width, 400);
+  EXPECT_LE(f.top + f.height, 300 - 11);
+}
+
+// G17 mill program; the moves (from X0 Y0 Z0):
+//   rapids: Z5, Z1 (back along the same line: not merged), Z5 at the end          -> 3
+//   feeds:  Z-1; X40 and X60 (collinear, merged into one); Y40                   -> 3
+//   arcs:   G03 to X80 Y20 about (60,20); G02 to X60 Y60 about (80,60)             -> 2
+// In the XY view both arcs face the viewer: SVG arcs ("A"); in XZ they are sampled lines.
+// Extents X 0..80, Y 0..60, padded 4 %: the XY panel (about 880 x 600 px) has the scale of
+// Y's 64.8 mm over 600 px, so X spans about 95 mm: X step 94.5 / 8 -> 20 (ticks 0..80), Y step
+// 64.8 / 8 -> 10 (ticks 0..60).
+const char* kMill = R"(G21 G17 G90
+G00 X0 Y0 Z5.
+G00 Z1.
+G01 Z-1. F100.
+G01 X40.
+G01 X60.
+G03 X80. Y20. R20.
+G01 Y40.
+G02 X60. Y60. R20.
+G00 Z5.
+M30
+)";
+
+TEST(PathPlot, CountsEachKindOfElement) {
+  auto d = draw(kMill, machine::default_mill(), {report::PlotView::xy});
+  ASSERT_TRUE(d.ok);
+  EXPECT_EQ(count(d.svg, "class=\"rapid\""), 3u);
+  EXPECT_EQ(count(d.svg, "class=\"feed\""), 3u);
+  EXPECT_EQ(count(d.svg, "class=\"arc\""), 2u);
+  std::regex arc_path("class=\"arc\" d=\"M[-0-9.,]+A");
+  EXPECT_EQ(std::distance(std::sregex_iterator(d.svg.begin(), d.svg.end(), arc_path), std::sregex_iterator()), 2);
+  EXPECT_NE(d.svg.find("stroke-dasharray=\"6 4\""), std::string::npos);  // rapids dashed
+  EXPECT_EQ(count(d.svg, "class=\"marker\""), 0u);                      // no alarm
+}
+
+TEST(PathPlot, AxesOfTheMillPlane) {
+  auto d = draw(kMill, machine::default_mill(), {report::PlotView::xy});
+  EXPECT_EQ(texts(d.svg, "tick-u"), (std::vector<std::string>{"0", "20", "40", "60", "80"}));
+  EXPECT_EQ(texts(d.svg, "tick-v"), (std::vector<std::string>{"0", "10", "20", "30", "40", "50", "60"}));
+  EXPECT_EQ(texts(d.svg, "label-u"), (std::vector<std::string>{"X, mm"}));
+  EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"Y, mm"}));
+}
+
+TEST(PathPlot, ArcsOutOfTheirPlaneAreSampled) {
+  auto d = draw(kMill, machine::default_mill(), {report::PlotView::xz});
+  EXPECT_EQ(count(d.svg, "class=\"arc\""), 2u);
+  std::regex arc_path("class=\"arc\" d=\"M[^\"]*A");
+  EXPECT_FALSE(std::regex_search(d.svg, arc_path));
+  EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"Z, mm"}));
+}
+
+TEST(PathPlot, FourViewsByDefault) {
+  auto d = draw(kMill, machine::default_mill(), {});
+  EXPECT_EQ(count(d.svg, "class=\"view\""), 4u);
+  EXPECT_EQ(count(d.svg, "class=\"arc\""), 8u);
+  EXPECT_NE(d.svg.find(">isometric<"), std::string::npos);
+  EXPECT_EQ(texts(d.svg, "label-u"), (std::vector<std::string>{"X, mm", "X, mm", "Y, mm"}));
+}
+
+TEST(PathPlot, TheAlarmBlockIsMarked) {
+  auto d = draw("G00 X10. Y5.\nG01 X20. F100.\n#3000=7 (NO DEPTH)\nG01 X30.\nM30\n", machine::default_mill(),
+                {report::PlotView::xy});
+  ASSERT_FALSE(d.ok);
+  EXPECT_EQ(count(d.svg, "class=\"marker\""), 2u);  // on the path and in the legend
+  EXPECT_EQ(texts(d.svg, "alarm"), (std::vector<std::string>{"MC3007 line 3"}));
+  auto notes = texts(d.svg, "note");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("MC3007"), std::string::npos);
+  EXPECT_NE(notes[0].find("NO DEPTH"), std::string::npos);
+  EXPECT_EQ(count(d.svg, "class=\"feed\""), 1u);  // X30 was never reached
+}
+
+// Lathe (X as a diameter): from X0 Z0, rapid to X40 (radius 20) Z5, turn to Z-30, face to X60,
+// rapid to X80 Z5. Z -30..5 across, X radius 0..40 up, shown as diameters 0..80: padded 4 %, the
+// diameter axis spans 86.4 -> step 20 (0..80); the Z axis widens to the panel's aspect, about
+// 63 mm -> step 10 (-40..10).
+TEST(PathPlot, LatheDrawsZAcrossAndXUpAsDiameter) {
+  auto d = draw("G00 X40. Z5.\nG01 Z-30. F0.2\nG01 X60.\nG00 X80. Z5.\nM30\n", machine::default_lathe(), {});
+  ASSERT_TRUE(d.ok);
+  EXPECT_EQ(count(d.svg, "class=\"view\""), 1u);
+  EXPECT_EQ(texts(d.svg, "label-u"), (std::vector<std::string>{"Z, mm"}));
+  EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"X (diameter), mm"}));
+  EXPECT_EQ(texts(d.svg, "tick-v"), (std::vector<std::string>{"0", "20", "40", "60", "80"}));
+  EXPECT_EQ(texts(d.svg, "tick-u"), (std::vector<std::string>{"-40", "-30", "-20", "-10", "0", "10"}));
+}
+
+TEST(PathPlot, LatheInRadiusSaysSo) {
+  auto p = machine::default_lathe();
+  p.diameter_x = false;
+  auto d = draw("G00 X40. Z5.\nG01 Z-30. F0.2\nM30\n", p, {});
+  EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"X (radius), mm"}));
+}
+
+TEST(PathPlot, MemoryStaysBounded) {
+  std::string program = "G01 F100.\n";
+  for (int i = 1; i <= 1000; ++i) program += fmt::format("X{}.\n", i);  // collinear: one element
+  // a zigzag of 500 mm: 100 elements, too wide for any simplification (at most 1/250 of the extent)
+  for (int i = 1; i <= 100; ++i) program += fmt::format("Y{}.\n", 500 * (i % 2));
+  program += "M30\n";
+  machine::ProgramLibrary lib;
+  lib.add_text("p.nc", program, true);
+  auto profile = machine::default_mill();
+  report::PathPlot plot(profile, 20);
+  machine::Interpreter in(profile, lib);
+  ASSERT_TRUE(in.run(plot).ok());
+  EXPECT_EQ(plot.elements().size(), 20u);
+  EXPECT_DOUBLE_EQ(plot.elements()[0].b[0], 1000);
+  report::PathPlotOptions o;
+  auto notes = texts(plot.svg(o), "note");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes.back().find("only the first 20 elements are drawn: 81 more moves"), std::string::npos);
+}
+
+// 2000 chords of 0.18 degrees on a circle of radius 100 mm (sag 0.12 um), limit 100: simplified,
+// the drawing keeps every programmed point within the bound it reports, under twice the largest
+// tolerance, 1/250 of the extent's diagonal (2 x 200 sqrt 2 / 250 = 2.26 mm), and the note says so.
+TEST(PathPlot, DenseRunsAreSimplifiedWithinTheirTolerance) {
+  std::string program = "G00 X100. Y0.\nG01 F100.\n";
+  std::vector<std::array<double, 2>> points;
+  for (int i = 1; i <= 2000; ++i) {
+    const double t = i * 0.18 * 3.14159265358979 / 180;
+    points.push_back({std::round(100000 * std::cos(t)) / 1000, std::round(100000 * std::sin(t)) / 1000});
+    program += fmt::format("X{:.3f} Y{:.3f}\n", points.back()[0], points.back()[1]);
+  }
+  program += "M30\n";
+  machine::ProgramLibrary lib;
+  lib.add_text("p.nc", program, true);
+  auto profile = machine::default_mill();
+  report::PathPlot plot(profile, 100);
+  machine::Interpreter in(profile, lib);
+  ASSERT_TRUE(in.run(plot).ok());
+  const double tol = plot.simplified_within();
+  EXPECT_GT(tol, 0);
+  EXPECT_LE(tol, 2 * 200 * std::sqrt(2.0) / 250);
+  EXPECT_LE(plot.elements().size(), 100u);
+  for (const auto& p : points) {
+    double best = INFINITY;
+    for (const auto& e : plot.elements()) {
+      if (e.kind != machine::MoveKind::line) continue;
+      const double dx = e.b[0] - e.a[0], dy = e.b[1] - e.a[1], dd = dx * dx + dy * dy;
+      const double t = dd > 0 ? std::clamp(((p[0] - e.a[0]) * dx + (p[1] - e.a[1]) * dy) / dd, 0.0, 1.0) : 0;
+      best = std::min(best, std::hypot(p[0] - e.a[0] - t * dx, p[1] - e.a[1] - t * dy));
+    }
+    ASSERT_LE(best, tol + 1e-9) << p[0] << "," << p[1];
+  }
+  auto notes = texts(plot.svg({}), "note");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("simplified"), std::string::npos);
+}
