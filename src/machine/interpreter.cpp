@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include "machine/profile_hints.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -216,12 +218,14 @@ RunResult Interpreter::run(MoveSink& sink) {
   plane_ = profile_.power_on_plane;
   incremental_ = profile_.power_on_g91;
   feed_per_rev_ = profile_.power_on_feed_per_rev;
+  look_ahead_ = profile_.motion.look_ahead_at_power_on;
   set_origin();
   for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
 
   reached_.clear();
   for (const auto& p : library_.programs())  // the main file's; a library program's when it is called
     if (p->file == main->file) warn_mixed_decimal_points(*p);
+  for (nc::Diagnostic& d : profile_hints(library_, profile_)) result_.warnings.push_back(std::move(d));
 
   try {
     for (const auto& [n, v] : options_.presets) {

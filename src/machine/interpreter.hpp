@@ -145,6 +145,10 @@ private:
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
 
+  // AI contour control / look-ahead modes (high_speed.cpp)
+  void high_speed_mode(int g, std::uint16_t column);
+  bool look_ahead_ = true;  // G05.1 Q1, G08 P1, G05 P10000 (G61.1: exact_stop_code_ 611)
+
   // rotary axes (rotary.cpp)
   void init_rotary();
   double angle(const Cmd& c) const;  // a rotary axis word, degrees

@@ -48,7 +48,7 @@ void JsonlWriter::on_move(const Move& m) {
     fmt::format_to(it, R"(,"threading":true)");
     if (m.thread_start >= 0) fmt::format_to(it, R"(,"thread_start_deg":{})", m.thread_start / 1000.0);
   }
-  if (m.is_motion()) fmt::format_to(it, R"(,"length":{})", m.length);
+  if (m.is_motion()) fmt::format_to(it, R"(,"length":{},"lookahead":{})", m.length, m.lookahead);
   if (m.kind == MoveKind::dwell || m.is_motion()) fmt::format_to(it, R"(,"seconds":{})", m.seconds);
   if (!m.is_motion() && m.kind != MoveKind::dwell) fmt::format_to(it, R"(,"code":{})", m.code);
   b.push_back('}');
