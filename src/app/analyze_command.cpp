@@ -309,6 +309,7 @@ int program_command(const AnalyzeArgs& a) {
     j["stops"] = t.stops;
     j["waits"] = t.waits;
     j["starved_blocks"] = t.starved;
+    j["motions_without_lookahead"] = t.without_lookahead;
     j["feed_length_mm"] = t.feed_length;
     j["mean_feed_mm_min"] = mean_feed;
     j["macro_statements"] = t.macro_statements;
@@ -343,6 +344,9 @@ int program_command(const AnalyzeArgs& a) {
       a.in.program, profile.name, t.seconds, t.motion_seconds, t.wait_seconds, t.settle_seconds, t.dwell_seconds,
       t.programmed_seconds, t.motions, t.stops, t.waits, t.starved, profile.motion.block_time * 1000, t.feed_length,
       mean_feed, t.macro_statements, profile.motion.macro_time * 1000, t.nc_blocks, profile.motion.block_time * 1000);
+  if (t.without_lookahead > 0)
+    std::cout << fmt::format("  look-ahead off    {} motions (G05.1 Q0, G08 P0, G05 P0): each slows to a stop at its end\n",
+                             t.without_lookahead);
   if (slowest_wait.wait > 0)
     std::cout << fmt::format("  longest wait      {:.4f} s before {} (the control was still reading or computing)\n",
                              slowest_wait.wait, where(slowest_wait.move));

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include "machine/profile_hints.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -149,7 +151,7 @@ bool Interpreter::condition(const nc::Expr& e) { return eval(e).number() != 0.0;
 
 // Programs that mix dimension words with and without a decimal point are a classic source of
 // scrapped parts. A word of a macro call (G65, G66, a custom G code) is an argument, not an axis.
-void Interpreter::warn_mixed_decimal_points() {
+void Interpreter::warn_mixed_decimal_points(const nc::Program& program) {
   auto is_call = [&](const nc::Program& p, const nc::Block& b) {
     for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
       const nc::Word& word = p.words[w];
@@ -162,7 +164,8 @@ void Interpreter::warn_mixed_decimal_points() {
     return false;
   };
   const int decimals = static_cast<int>(std::lround(-std::log10(profile_.increment)));
-  for (const auto& p : library_.programs()) {
+  {
+    const nc::Program* p = &program;
     const nc::Word* with = nullptr;
     const nc::Word* without = nullptr;
     std::uint32_t without_line = 0;
@@ -180,7 +183,7 @@ void Interpreter::warn_mixed_decimal_points() {
           without_is_argument = is_call(*p, b);
         }
       }
-    if (!with || !without) continue;
+    if (!with || !without) return;
     const std::string word = fmt::format("{}{}", without->letter, shown_number(without->value, 0));
     const std::string read_as = profile_.decimal_calculator
                                     ? shown_number(without->value, 0)
@@ -215,10 +218,14 @@ RunResult Interpreter::run(MoveSink& sink) {
   plane_ = profile_.power_on_plane;
   incremental_ = profile_.power_on_g91;
   feed_per_rev_ = profile_.power_on_feed_per_rev;
+  look_ahead_ = profile_.motion.look_ahead_at_power_on;
   set_origin();
   for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
 
-  warn_mixed_decimal_points();
+  reached_.clear();
+  for (const auto& p : library_.programs())  // the main file's; a library program's when it is called
+    if (p->file == main->file) warn_mixed_decimal_points(*p);
+  for (nc::Diagnostic& d : profile_hints(library_, profile_)) result_.warnings.push_back(std::move(d));
 
   try {
     for (const auto& [n, v] : options_.presets) {
@@ -244,6 +251,7 @@ RunResult Interpreter::run(MoveSink& sink) {
     comp_->finish();
   } catch (const nc::Alarm& a) {
     result_.alarm = a.diagnostic;
+    add_call_stack(*result_.alarm);
     try {
       comp_->abandon();
     } catch (const nc::Alarm&) {
@@ -350,12 +358,35 @@ void Interpreter::jump(const Block& b, double sequence) {
 
 // ---- calls ----
 
+// The calling blocks of an alarm raised at the block in hand, innermost first.
+void Interpreter::add_call_stack(nc::Diagnostic& d) const {
+  if (frames_.size() < 2 || !prog_ || !block_ || d.span.file != prog_->file.get() || d.span.line != block_->line)
+    return;
+  for (std::size_t i = frames_.size() - 1; i >= 1; --i) {
+    const Frame& f = frames_[i];
+    if (!f.caller || !f.call_block) break;
+    d.called_from.push_back(f.caller->span_of(*f.call_block));
+  }
+}
+
 void Interpreter::call_program(int number, Frame frame, std::uint16_t column) {
   const nc::Program* p = library_.find(number);
-  if (!p)
+  if (!p) {
+    if (const ProgramLibrary::Unread* u = library_.unread(number))
+      alarm("PS0078", fmt::format("program O{:04} not found: it is in {} at line {}, after the '%' of line {} that "
+                                  "ends the file, and the control reads nothing after that '%'",
+                                  number, u->file->name(), u->where.line, u->where.end_line),
+            column);
     alarm("PS0078", fmt::format("program O{:04} not found (in this file or the --lib folders)", number), column);
+  }
+  if (p->file != library_.main()->file && std::ranges::find(reached_, p) == reached_.end()) {
+    reached_.push_back(p);
+    warn_mixed_decimal_points(*p);
+  }
   frame.prog = p;
   frame.pc = 0;
+  frame.caller = prog_;
+  frame.call_block = block_;
   if (frame.kind == Frame::subprogram) {
     if (sub_depth_ >= profile_.subprogram_nesting)
       alarm("PS0077", fmt::format("subprogram calls nested more than {} deep", profile_.subprogram_nesting), column);

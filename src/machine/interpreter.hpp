@@ -128,7 +128,7 @@ private:
   void set_coordinate_system(int g);
   void data_setting();
   void set_origin();
-  void warn_mixed_decimal_points();
+  void warn_mixed_decimal_points(const nc::Program& p);
   void note_extent(const AxisVector& p);
   double feed_seconds(double length, double mean_radius) const;
 
@@ -144,6 +144,10 @@ private:
   void tapping_hole(const Hole& h);  // G84, G74, conventional and rigid
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
+
+  // AI contour control / look-ahead modes (high_speed.cpp)
+  void high_speed_mode(int g, std::uint16_t column);
+  bool look_ahead_ = true;  // G05.1 Q1, G08 P1, G05 P10000 (G61.1: exact_stop_code_ 611)
 
   // rotary axes (rotary.cpp)
   void init_rotary();
@@ -232,7 +236,11 @@ private:
     bool modal = false;      // called by G66
     int repeat = 0;          // calls still to come (L)
     std::array<nc::Value, 33> initial{};  // locals on entry, for repeated macro calls
+    const nc::Program* caller = nullptr;    // the calling block, for the call stack of an alarm
+    const nc::Block* call_block = nullptr;
   };
+  void add_call_stack(nc::Diagnostic& d) const;
+  std::vector<const nc::Program*> reached_;  // programs of other files entered so far (their warnings given)
 
   const MachineProfile profile_;
   std::array<bool, kAxes> has_axis_{};  // the profile's axes, by axis_index

@@ -38,6 +38,8 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, st
     programs_.push_back(std::move(p));
   }
   if (is_main && !main_) throw std::runtime_error(fmt::format("{}: error: the file holds no program", name));
+  for (const nc::UnreadProgram& u : r.after_end) unread_.try_emplace(u.number, Unread{file.get(), u});
+  if (!is_main) return {};
   return std::move(r.diagnostics);
 }
 
@@ -75,6 +77,11 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_folder(const std::string& dir) {
 const nc::Program* ProgramLibrary::find(int number) const {
   auto it = by_number_.find(number);
   return it == by_number_.end() ? nullptr : it->second;
+}
+
+const ProgramLibrary::Unread* ProgramLibrary::unread(int number) const {
+  auto it = unread_.find(number);
+  return it == unread_.end() ? nullptr : &it->second;
 }
 
 }  // namespace ncurve::machine

@@ -13,13 +13,20 @@ class ProgramLibrary {
 public:
   explicit ProgramLibrary(nc::ParseOptions options = {}) : options_(options) {}
   // Parses a file and registers its programs; a program without an O line takes its number from a
-  // file name like O9010.nc. Returns the syntax problems found (they also stay attached to their blocks).
+  // file name like O9010.nc. Returns the syntax problems of the main file; those of a library file stay
+  // attached to their blocks only, to alarm when a block of it is reached.
   std::vector<nc::Diagnostic> add_text(const std::string& name, std::string text, bool is_main = false);
   std::vector<nc::Diagnostic> add_file(const std::string& path, bool is_main = false);
   // Every *.nc, *.NC, O*, *.txt and *.tap file in the folder.
   std::vector<nc::Diagnostic> add_folder(const std::string& dir);
 
   const nc::Program* find(int number) const;
+  // A program that is in a file only after the '%' that ends it (never read), or null.
+  struct Unread {
+    const nc::SourceFile* file;
+    nc::UnreadProgram where;
+  };
+  const Unread* unread(int number) const;
   const nc::Program* main() const { return main_; }
   const std::vector<std::unique_ptr<nc::Program>>& programs() const { return programs_; }
   const std::vector<std::shared_ptr<const nc::SourceFile>>& files() const { return files_; }
@@ -29,6 +36,7 @@ private:
   std::vector<std::shared_ptr<const nc::SourceFile>> files_;
   std::vector<std::unique_ptr<nc::Program>> programs_;
   std::map<int, const nc::Program*> by_number_;
+  std::map<int, Unread> unread_;
   const nc::Program* main_ = nullptr;
 };
 

@@ -140,9 +140,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         if (const char* what = kindless_unsupported(g))
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
         alarm("PS0010", unknown_g_code(g, profile_), column);
-      // AI contour control (G05.1 Q1/Q0, G05 P10000/P0) and look-ahead control (G08 P1/P0) change
-      // how the control accelerates, not the path: the time planner's profile stands for them
-      case 51: case 50: case 80: break;
+      case 51: case 50: case 80: case 611: high_speed_mode(g, column); break;  // high_speed.cpp
       case 430: case 440:
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
         length_comp_ = g / 10;
@@ -274,6 +272,7 @@ void Interpreter::emit(Move& m) {
   m.feed_per_rev = feed_per_rev_ || m.threading;
   m.spindle = speed_;
   m.exact_stop = exact_stop_ || exact_stop_once_;
+  m.lookahead = look_ahead_ || exact_stop_code_ == 611;
   m.macro_statements = statements_since_;
   m.nc_blocks = nc_blocks_since_;
   statements_since_ = nc_blocks_since_ = 0;

@@ -38,6 +38,7 @@ struct Move {
   double length = 0;           // path length, mm
   int code = 0;                // T number, M code, spindle or coolant M code
   bool exact_stop = false;     // G61 modal or G09 in the block: the feed comes to zero at the block end
+  bool lookahead = true;       // look-ahead mode (G05.1 Q1, G08 P1, ...): the feed carries on into the next block
   std::uint32_t macro_statements = 0;  // macro statements executed since the previous event (for the time planner)
   std::uint32_t nc_blocks = 0;         // NC blocks read since the previous event, this one included
   std::int32_t thread_start = -1;      // threading: spindle angle (Q, 0.001 deg) after the one-rotation signal;

@@ -236,8 +236,11 @@ void motion_table(MachineProfile& p, const toml::table& t, const std::string& or
     else if (key == "macro_time") m.macro_time = positive(origin, node, key, true);
     else if (key == "corner_speed") m.corner_speed = positive_axes(origin, node, key, p.axes, true);
     else if (key == "in_position") m.in_position = positive(origin, node, key, false);
+    else if (key == "look_ahead_at_power_on") m.look_ahead_at_power_on = flag(origin, node, key);
+    else if (key == "g61_1") m.g61_1 = flag(origin, node, key);
     else fail(origin, node, fmt::format("unknown key '{}' in [motion] (acceleration, jerk, acc_dec, filter, "
-                                        "time_constant, look_ahead, block_time, macro_time, corner_speed, in_position)", key));
+                                        "time_constant, look_ahead, block_time, macro_time, corner_speed, in_position, "
+                                        "look_ahead_at_power_on, g61_1)", key));
   }
 }
 

@@ -53,6 +53,8 @@ struct MotionSettings {
   double macro_time = 0.0005;      // s per macro statement
   AxisVector corner_speed{};       // mm/min allowed change of axis speed at a corner (No.1783); 0 = stop
   double in_position = 0.02;       // mm, in-position width for exact stop (No.1826)
+  bool look_ahead_at_power_on = true;  // the look-ahead mode (G05.1 Q1) is on at power-on and reset
+  bool g61_1 = false;              // G61.1 (high-accuracy mode of other makers) taken as look-ahead on
 };
 
 // The position loop of each axis ([servo] in a profile).

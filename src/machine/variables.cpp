@@ -157,6 +157,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
   if (n >= 4001 && n <= 4022) {
     bool lathe_a = profile_.lathe() && profile_.gcode_system == 'A';
     if (n == 4014 && work_index_ > 6) return Value::of(54.1);
+    if (n == 4015 && exact_stop_code_ == 611) return Value::of(61.1);
     if (const auto g = transform_modal(n)) return Value::of(*g);  // G15/G16, G50/G51, G50.1/G51.1, G68/G69
     return Value::of(gcode_for_group(n - 4000, motion_, plane_, incremental_, feed_per_rev_, inch_, css_,
                                      length_comp_, modal_call_, work_index_, exact_stop_code_, lathe_a, cycle_,

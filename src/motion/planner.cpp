@@ -271,6 +271,12 @@ void Planner::add(const Move& m) {
     p.junction = 0;
   }
   if (p.exact_stop) p.stop_after = true;
+  // Look-ahead off (G05.1 Q0, G08 P0, G05 P0): the planner cannot see the next block, so the feed
+  // comes down to zero at this block's end (no in-position check, unlike G61/G09).
+  if (!m.lookahead && before) {
+    p.stop_after = true;
+    ++totals_.without_lookahead;
+  }
   pending_.push_back(std::move(p));
 }
 

@@ -65,6 +65,7 @@ struct PlanTotals {
   std::uint64_t motions = 0, starved = 0, stops = 0, waits = 0;
   double feed_length = 0, feed_motion_seconds = 0;  // cutting moves: mean feed reached = length / time
   std::uint64_t macro_statements = 0, nc_blocks = 0;
+  std::uint64_t without_lookahead = 0;  // motions made with look-ahead off (G05.1 Q0, G08 P0, ...)
 };
 
 // Streams moves from the interpreter; calls on_block for each motion once its timing is final.

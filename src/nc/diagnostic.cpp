@@ -32,11 +32,30 @@ static const char* severity_name(Severity s) {
   return "error";
 }
 
+std::string_view block_text(const Span& s) {
+  if (!s.file) return {};
+  std::string_view text = s.file->line(s.line);
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == ';')) text.remove_suffix(1);
+  return text;
+}
+
+static std::string call_stack(const Diagnostic& d) {
+  std::string out;
+  for (const Span& s : d.called_from) {
+    std::string text(block_text(s).substr(0, 80));
+    for (char& c : text)
+      if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+    out += fmt::format("\n       = called from {}:{} ({})", s.file ? s.file->name() : "?", s.line, text);
+  }
+  return out;
+}
+
 std::string format(const Diagnostic& d) {
   std::string where = d.span.file ? fmt::format("{}:{}:{}: ", d.span.file->name(), d.span.line, d.span.column) : "";
   std::string head = fmt::format("{}{}: {}{}{}", where, severity_name(d.severity), d.code, d.code.empty() ? "" : " ",
                                  d.message);
-  if (!d.span.file || d.span.line == 0) return head;
+  if (!d.span.file || d.span.line == 0) return head + call_stack(d);
   std::string_view text = d.span.file->line(d.span.line);
   constexpr std::size_t kMaxQuote = 160;  // long lines are quoted around the column
   std::size_t col = d.span.column ? d.span.column - 1 : 0;
@@ -50,8 +69,8 @@ std::string format(const Diagnostic& d) {
   std::size_t len = d.span.length ? d.span.length : 1;
   if (caret + len > quoted.size() + 1) len = quoted.size() + 1 - caret;
   if (len == 0) len = 1;
-  return fmt::format("{}\n {:>5} | {}{}\n       | {}{}", head, d.span.line, from ? "..." : "", quoted,
-                     std::string(caret + (from ? 3 : 0), ' '), std::string(len, '^'));
+  return fmt::format("{}\n {:>5} | {}{}\n       | {}{}{}", head, d.span.line, from ? "..." : "", quoted,
+                     std::string(caret + (from ? 3 : 0), ' '), std::string(len, '^'), call_stack(d));
 }
 
 }  // namespace ncurve::nc

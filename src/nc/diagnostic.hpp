@@ -38,9 +38,14 @@ struct Diagnostic {
   std::string code;  // FANUC alarm ("PS0011", "MC3001") or an ncurve code ("NC1001"); may be empty
   std::string message;
   Span span;
+  std::vector<Span> called_from = {};  // an alarm in a called program: the calling blocks, innermost first
 };
 
-// "file:line:col: error: PS0011 feed rate is zero" followed by the block and a caret.
+// The text of the block at a span, without leading and trailing blanks.
+std::string_view block_text(const Span& s);
+
+// "file:line:col: error: PS0011 feed rate is zero" followed by the block and a caret, and a
+// "called from file:line (block)" line for each call around it.
 std::string format(const Diagnostic& d);
 
 // Raised by the interpreter at the block that causes an alarm; caught by run().

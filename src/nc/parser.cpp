@@ -435,6 +435,7 @@ private:
         if (c == '+' || c == '-' || is_digit(c) || c == '.')
           fail("PS0004", "a number or sign without an address (arithmetic in a word needs brackets: X[#1+5.])");
         if (c == '=') fail("PS0009", "'=' in an NC block: only a variable (#i) can be assigned");
+        if (c == ':') fail("PS0009", "':' (the program number address of ISO code, as O) is only allowed at the start of a block");
         fail("PS0009", fmt::format("'{}' is not an address", c));
       }
       std::size_t len = 0;
@@ -492,6 +493,9 @@ private:
     if (i_ != s_.size()) {
       if (is_upper(peek()))
         fail("PS0127", "an NC word after an assignment: a macro statement and NC words in one block");
+      if (peek() == ':')
+        fail("PS0114", "':' after the expression: ':' is the program number address of ISO code (as O), only "
+                       "allowed at the start of a block; a block ends with ';' or the end of the line");
       fail("PS0114", "expected an operator or the end of the block");
     }
   }
@@ -617,12 +621,15 @@ struct LineScanner {
   bool has_comment = false;
   std::string error;
   std::uint16_t error_col = 0;
+  // A comment holding a '(' ends at its first ')' all the same: where it opened and closed.
+  std::uint16_t nested_open = 0, early_open = 0, early_close = 0;
 
   void clear() {
     n = 0;
     comment.clear();
     has_comment = false;
     error.clear();
+    nested_open = early_open = early_close = 0;
   }
   bool failed() const { return !error.empty(); }
 };
@@ -688,6 +695,28 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
   return true;
 }
 
+// The program number lines (O1234, :1234) in the text the control does not read, after the '%' on
+// line end_line that ends the file.
+std::vector<UnreadProgram> programs_after_end(const std::string& text, std::size_t pos, std::uint32_t end_line) {
+  std::vector<UnreadProgram> found;
+  std::uint32_t line = end_line;
+  while (pos < text.size()) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string::npos) eol = text.size();
+    ++line;
+    std::size_t k = pos;
+    while (k < eol && (text[k] == ' ' || text[k] == '\t')) ++k;
+    if (k + 1 < eol && (to_upper(text[k]) == 'O' || text[k] == ':') && is_digit(text[k + 1])) {
+      int number = 0;
+      for (std::size_t j = k + 1, digits = 0; j < eol && is_digit(text[j]) && digits < 8; ++j, ++digits)
+        number = number * 10 + (text[j] - '0');
+      found.push_back(UnreadProgram{number, line, end_line});
+    }
+    pos = eol + 1;
+  }
+  return found;
+}
+
 }  // namespace
 
 ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) {
@@ -713,8 +742,16 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
   auto handle_block = [&](LineScanner& ls, std::uint32_t line) {
     std::span<const Ch> s(ls.buf.data(), ls.n);
     std::size_t i = 0;
-    // Program number line: O1234 (NAME)
-    if (!s.empty() && s[0].c == 'O' && s.size() > 1 && is_digit(s[1].c)) {
+    // An alarm in the words after a comment that held a '(' comes from its early end.
+    auto why = [&ls](std::string message, std::uint16_t column) {
+      if (ls.early_close && column > ls.early_close)
+        message += fmt::format("; the comment opened at column {} closed early at column {}: a comment ends at its "
+                               "first ')' (comments do not nest), and the text after it is read as words",
+                               ls.early_open, ls.early_close);
+      return message;
+    };
+    // Program number line: O1234 (NAME), or :1234 in ISO code
+    if (!s.empty() && (s[0].c == 'O' || s[0].c == ':') && s.size() > 1 && is_digit(s[1].c)) {
       std::size_t j = 1;
       std::string digits;
       while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
@@ -734,7 +771,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       current->comments.push_back(ls.comment);
     }
     if (!ls.error.empty()) {
-      add_error(*current, b, "PS0009", ls.error, ls.error_col, 1, result.diagnostics);
+      add_error(*current, b, "PS0009", why(ls.error, ls.error_col), ls.error_col, 1, result.diagnostics);
       started = true;
       return;
     }
@@ -748,7 +785,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       std::string digits;
       while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
       if (digits.empty()) {
-        add_error(*current, b, "PS0005", "no number after address N", s[i].col, 1, result.diagnostics);
+        add_error(*current, b, "PS0005", why("no number after address N", s[i].col), s[i].col, 1, result.diagnostics);
       } else if (digits.size() > 8) {
         add_error(*current, b, "PS0003", "sequence number has more than 8 digits", s[i].col,
                   static_cast<std::uint32_t>(digits.size() + 1), result.diagnostics);
@@ -769,7 +806,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
         b.kind = Statement::empty;
         b.words_begin = b.words_end = static_cast<std::uint32_t>(words_mark);
         b.target = b.value = b.cond = Expr{};
-        add_error(*current, b, e.code, e.message, e.column, e.length, result.diagnostics);
+        add_error(*current, b, e.code, why(e.message, e.column), e.column, e.length, result.diagnostics);
       }
     }
     started = true;
@@ -817,6 +854,13 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
         if (c == ')') {
           in_comment = false;
           ls.has_comment = true;
+          if (ls.nested_open && !ls.early_close) {
+            ls.early_open = clamp_col(comment_start + 1);
+            ls.early_close = clamp_col(k + 1);
+          }
+        } else if (c == '(' && !ls.nested_open) {
+          ls.nested_open = clamp_col(k + 1);
+          if (ls.comment.size() < kMaxComment) ls.comment += c;
         } else if (ls.comment.size() < kMaxComment) {
           ls.comment += c;
         }
@@ -825,6 +869,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       if (c == '(') {
         in_comment = true;
         comment_start = k;
+        if (!ls.early_close) ls.nested_open = 0;
         if (ls.has_comment && ls.comment.size() < kMaxComment) ls.comment += ' ';
         continue;
       }
@@ -846,6 +891,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
     }
     if (block_open || !ls.error.empty() || ls.has_comment) handle_block(ls, line);
   }
+  if (done) result.after_end = programs_after_end(text, pos, line);
   for (auto& p : result.programs) match_loops(*p, result.diagnostics);
   std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
                    [](const Diagnostic& a, const Diagnostic& b) { return a.span.line < b.span.line; });

@@ -63,9 +63,17 @@ struct Program {
   }
 };
 
+// A program number line after the '%' that ends the file: the control never reads it.
+struct UnreadProgram {
+  int number = -1;
+  std::uint32_t line = 0;      // its O (or :) line
+  std::uint32_t end_line = 0;  // the closing '%'
+};
+
 struct ParseResult {
   std::vector<std::unique_ptr<Program>> programs;
   std::vector<Diagnostic> diagnostics;  // every problem found in the text, in order
+  std::vector<UnreadProgram> after_end;  // programs after the closing '%'
 };
 
 // Digits in one number, NC word or macro constant, every digit typed counted (0.00000001 has nine,
@@ -79,7 +87,8 @@ struct ParseOptions {
   int max_digits = kPortableDigits;
 };
 
-// Splits a file into programs (one per O number) and compiles each block.
+// Splits a file into programs (one per O number, or ':' number, its ISO form) and compiles each
+// block, up to the '%' that ends the file.
 // Problems are reported and also attached to their block, to be raised when it runs, as FANUC does.
 ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options = {});
 

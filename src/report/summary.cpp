@@ -1,5 +1,7 @@
 #include "report/summary.hpp"
 
+#include "report/writers.hpp"
+
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
@@ -82,6 +84,7 @@ static nlohmann::json diagnostic_json(const nc::Diagnostic& d) {
     j["column"] = d.span.column;
     j["block"] = std::string(d.span.file->line(d.span.line));
   }
+  if (!d.called_from.empty()) j["called_from"] = called_from_json(d);
   return j;
 }
 

@@ -48,7 +48,7 @@ void JsonlWriter::on_move(const Move& m) {
     fmt::format_to(it, R"(,"threading":true)");
     if (m.thread_start >= 0) fmt::format_to(it, R"(,"thread_start_deg":{})", m.thread_start / 1000.0);
   }
-  if (m.is_motion()) fmt::format_to(it, R"(,"length":{})", m.length);
+  if (m.is_motion()) fmt::format_to(it, R"(,"length":{},"lookahead":{})", m.length, m.lookahead);
   if (m.kind == MoveKind::dwell || m.is_motion()) fmt::format_to(it, R"(,"seconds":{})", m.seconds);
   if (!m.is_motion() && m.kind != MoveKind::dwell) fmt::format_to(it, R"(,"code":{})", m.code);
   b.push_back('}');
@@ -199,6 +199,15 @@ void CsvWriter::stopped(const nc::Diagnostic& alarm) {  // the header is out alr
   out_ << alarm.span.line << ",alarm:" << alarm.code << ",,,," << std::string(extra_.size(), ',') << "\n";
 }
 
+nlohmann::json called_from_json(const nc::Diagnostic& d) {
+  nlohmann::json calls = nlohmann::json::array();
+  for (const nc::Span& s : d.called_from)
+    calls.push_back({{"file", s.file ? s.file->name() : std::string()},
+                     {"line", s.line},
+                     {"block", std::string(nc::block_text(s))}});
+  return calls;
+}
+
 void JsonlWriter::stopped(const nc::Diagnostic& alarm) {
   nlohmann::json j;
   j["kind"] = "alarm";
@@ -207,6 +216,7 @@ void JsonlWriter::stopped(const nc::Diagnostic& alarm) {
   j["column"] = alarm.span.column;
   j["alarm"] = alarm.code;
   j["message"] = alarm.message;
+  if (!alarm.called_from.empty()) j["called_from"] = called_from_json(alarm);
   out_ << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 

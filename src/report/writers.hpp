@@ -1,5 +1,6 @@
 // Move sinks that write the tool path: JSON Lines, CSV points, expanded G-code.
 #pragma once
+#include <nlohmann/json_fwd.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -16,6 +17,9 @@ struct OutputFrame {
   explicit OutputFrame(const machine::MachineProfile& p) : x_diameter(p.lathe() && p.diameter_x) {}
   double x(double radius_or_x) const { return x_diameter ? 2 * radius_or_x : radius_or_x; }
 };
+
+// An alarm's calling blocks, innermost first: [{"file", "line", "block"}, ...].
+nlohmann::json called_from_json(const nc::Diagnostic& d);
 
 class JsonlWriter final : public machine::MoveSink {
 public:
