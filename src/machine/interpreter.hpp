@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "machine/chamfer.hpp"
 #include "machine/compensation.hpp"
 #include "machine/library.hpp"
 #include "machine/move.hpp"
@@ -112,6 +113,7 @@ private:
   void linear(MoveKind kind, const AxisVector& target);
   void arc(const AxisVector& target, bool clockwise);
   void emit(Move& m);
+  void emit_programmed(Move& m);  // emit() past chamfering: compensation, then deliver
   void deliver(Move& m);  // stats and the sink: the moves as the tool makes them
   bool compensating() const;
   void end_of_block_compensation(bool g40, bool g41);
@@ -140,6 +142,16 @@ private:
   void tapping_hole(const Hole& h);  // G84, G74, conventional and rigid
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
+
+  // chamfering and corner R (chamfer.cpp): the block's move waits for the next one
+  void arm_corner(const AxisVector& target);  // the block's ,C ,R (lathe: C, I, K, R), before its move
+  bool corner_emit(Move& m);                  // in emit(): holds the move, or cuts the held one's corner
+  void cut_held_corner(Move& next);
+  void corner_block_end(bool program_end = false);  // after an NC block: what it left undone is an alarm
+  [[noreturn]] void corner_alarm(const HeldCorner& h, std::string code, std::string message) const;
+  std::vector<Cmd> comma_cmds_;  // the block's ,C ,R ,A words (letters c, r, a)
+  CornerState corner_;
+  bool corner_on_ = false;       // comma words read, a request armed or a move held
 
   // rotary axes (rotary.cpp)
   void init_rotary();
