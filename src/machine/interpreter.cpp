@@ -248,6 +248,7 @@ RunResult Interpreter::run(MoveSink& sink) {
       }
       step();
     }
+    if (corner_on_) corner_block_end(true);  // a chamfering block at the end of the program
     comp_->finish();
   } catch (const nc::Alarm& a) {
     result_.alarm = a.diagnostic;
@@ -295,6 +296,7 @@ void Interpreter::step() {
       const bool from_cancel = comp_side_ == 0 && !comp_->offset_mode();
       macro_call_block_ = false;
       exec_nc(b);
+      if (corner_on_) [[unlikely]] corner_block_end();
       if (compensating() && !macro_call_block_ && !shape_moves_)
         end_of_block_compensation(g40 && comp_side_ == 0, from_cancel && comp_side_ != 0);
       break;
@@ -527,6 +529,11 @@ void Interpreter::exec_nc(const Block& b) {
       m_codes_.push_back(round_int(c.value));  // checked when acted on: G65 M1.5 is an argument
     }
     int k = c.letter - 'A';
+    if (k >= 26) [[unlikely]] {  // ,C ,R ,A: the parser writes their letters in lower case
+      comma_cmds_.push_back(c);
+      corner_on_ = true;
+      continue;
+    }
     have_[k] = true;
     slot_[k] = static_cast<std::uint8_t>(cmds_.size());
     cmds_.push_back(c);
@@ -638,6 +645,8 @@ void Interpreter::exec_nc(const Block& b) {
     bool full_circle_ijk = (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K'));
     if (axes || full_circle_ijk) {
       if (rolls_) roll_over(target);
+      if (corner_on_ || (profile_.lathe() && (has('C') || has('I') || has('K') || has('R')))) [[unlikely]]
+        arm_corner(target);
       motion(target);
       moved = true;
     }

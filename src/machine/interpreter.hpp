@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "machine/chamfer.hpp"
 #include "machine/compensation.hpp"
 #include "machine/library.hpp"
 #include "machine/move.hpp"
@@ -116,6 +117,7 @@ private:
   void linear(MoveKind kind, const AxisVector& target);
   void arc(const AxisVector& target, bool clockwise);
   void emit(Move& m);
+  void emit_programmed(Move& m);  // emit() past chamfering: compensation, then deliver
   void deliver(Move& m);  // stats and the sink: the moves as the tool makes them
   bool compensating() const;
   void end_of_block_compensation(bool g40, bool g41);
@@ -148,6 +150,15 @@ private:
   // AI contour control / look-ahead modes (high_speed.cpp)
   void high_speed_mode(int g, std::uint16_t column);
   bool look_ahead_ = true;  // G05.1 Q1, G08 P1, G05 P10000 (G61.1: exact_stop_code_ 611)
+  // chamfering and corner R (chamfer.cpp): the block's move waits for the next one
+  void arm_corner(const AxisVector& target);  // the block's ,C ,R (lathe: C, I, K, R), before its move
+  bool corner_emit(Move& m);                  // in emit(): holds the move, or cuts the held one's corner
+  void cut_held_corner(Move& next);
+  void corner_block_end(bool program_end = false);  // after an NC block: what it left undone is an alarm
+  [[noreturn]] void corner_alarm(const HeldCorner& h, std::string code, std::string message) const;
+  std::vector<Cmd> comma_cmds_;  // the block's ,C ,R ,A words (letters c, r, a)
+  CornerState corner_;
+  bool corner_on_ = false;       // comma words read, a request armed or a move held
 
   // rotary axes (rotary.cpp)
   void init_rotary();
@@ -351,6 +362,7 @@ private:
     double r = 0;                 // taper: X radius (G90/G92) or Z (G94) at the cut's start less its end
   };
   LatheCycle lathe_cycle_;
+  bool g76_reads_a_ = false;  // the one-block G76 reads its end point: A is its tool angle
   std::uint64_t thread_block_ = 0;  // RunStats::blocks at the last G32 cut: the next block continues it
   int thread_chamfer_ = profile_.thread_chamfer;  // G76 P(m)(r)(a), Q(dmin), R(d) rewrite these
   int g76_finish_count_ = profile_.g76_finish_count;

@@ -221,9 +221,13 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
       incremental = true;
       if (!has_axis_[a]) a = -1;
     } else if (a >= 0 && !has_axis_[a]) {
-      // a lathe reads C (and B) as chamfer and other words of its cycles; a mill has nothing for them
-      if (lathe && (c.letter == 'A' || c.letter == 'B' || c.letter == 'C')) continue;
-      alarm("PS0009", fmt::format("address {}: this machine has no {} axis", c.letter, c.letter), c.column);
+      if (lathe && c.letter == 'C' && profile_.chamfer_address_c) continue;  // chamfering (chamfer.cpp)
+      if (lathe && c.letter == 'A' && g76_reads_a_) continue;
+      if (lathe && c.letter == 'A' && profile_.chamfer_address_c)
+        alarm("NC9001", "the angle A of direct drawing dimension programming is not supported yet", c.column);
+      alarm("PS0009", fmt::format("address {}: this machine has no {} axis{}", c.letter, c.letter,
+                                  lathe && c.letter == 'C' ? " (chamfering takes I or K; C with No.3405#4 CCR = 1)" : ""),
+            c.column);
     } else if (a < 0) {
       if (c.letter == 'U' || c.letter == 'V' || c.letter == 'W' || c.letter == 'E')
         alarm("PS0009", fmt::format("address {} has no meaning on this machine", c.letter), c.column);
@@ -280,6 +284,11 @@ void Interpreter::emit(Move& m) {
     if (m.is_motion()) shape_moves_->push_back(m);
     return;
   }
+  if (corner_on_ && corner_emit(m)) [[unlikely]] return;  // chamfering: held for the next move
+  emit_programmed(m);
+}
+
+void Interpreter::emit_programmed(Move& m) {
   if (!compensating()) return deliver(m);
   const PlaneAxes pa = plane_axes(plane_);
   const bool in_plane = m.kind == MoveKind::arc ? m.plane == plane_

@@ -337,6 +337,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   else if (key == "3402#0") p.power_on_g01 = bit();
   else if (key == "3402#3") p.power_on_g91 = bit();
   else if (key == "6001#5") p.t_code_calls_o9000 = bit();
+  else if (key == "3405#4") p.chamfer_address_c = bit();
   else if (key == "3410") p.arc_radius_tolerance = value * p.increment;
   else if (key == "5114" || key == "5115") {
     if (value < 0 || value != std::floor(value))
@@ -375,11 +376,11 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
       throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3410, "
-                      "5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#4, 5101#5, 5101#6, 5105#1, 5105#2, 5114, 5115, "
-                      "5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, 5400#6, "
-                      "5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; per axis "
-                      "1006#0, 1008#0, 1008#1, 1008#2, 1260)",
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3405#4, "
+                      "3410, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#4, 5101#5, 5101#6, 5105#1, 5105#2, 5114, "
+                      "5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
+                      "5400#6, 5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
+                      "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260)",
                       key));
   }
 }

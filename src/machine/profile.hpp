@@ -99,6 +99,7 @@ struct MachineProfile {
   bool power_on_feed_per_rev = false;  // lathes start in feed per revolution
   int power_on_plane = 17;
   bool t_code_calls_o9000 = false;  // No.6001#5 TCS
+  bool chamfer_address_c = false;   // No.3405#4 CCR: lathe chamfering by C (and R), not I/K (and R)
   bool block_skip = false;          // block skip switch on: blocks starting with '/' are skipped
   int macro_nesting = 4;            // G65/G66/custom calls: 4 on 0i/16i, 5 on 30i
   int subprogram_nesting = 10;      // M98 calls: 10 on 0i, 15 on 30i

@@ -122,7 +122,9 @@ void Interpreter::multiple_threading_cycle() {
   }
   if (!axes) return;  // Series 10/11 format without an end point: nothing to cut
   AxisVector end = pos_;
+  g76_reads_a_ = fcv;  // A is the tool angle there, not an axis
   axis_target(end);
+  g76_reads_a_ = false;
   double taper = 0, height = 0, first = 0, angle = 0;
   if (!fcv) {
     if (has('R')) taper = dimension(word('R'));

@@ -431,6 +431,10 @@ private:
     b.words_begin = static_cast<std::uint32_t>(prog_.words.size());
     while (i_ < s_.size()) {
       char c = peek();
+      if (c == ',') {  // ,C ,R (chamfering, corner R) and ,A (angle): kept as the letters c, r, a
+        comma_word();
+        continue;
+      }
       if (!is_upper(c)) {
         if (c == '+' || c == '-' || is_digit(c) || c == '.')
           fail("PS0004", "a number or sign without an address (arithmetic in a word needs brackets: X[#1+5.])");
@@ -457,6 +461,19 @@ private:
       prog_.words.push_back(w);
     }
     b.words_end = static_cast<std::uint32_t>(prog_.words.size());
+  }
+
+  void comma_word() {
+    Word w;
+    w.column = col();
+    ++i_;
+    const char c = peek();
+    if (c != 'C' && c != 'R' && c != 'A')
+      fail("PS0053", "a comma must be followed by C (chamfering), R (corner R) or A (angle)");
+    w.letter = static_cast<char>(c - 'A' + 'a');
+    ++i_;
+    word_value(w);
+    prog_.words.push_back(w);
   }
 
   void assignment(Block& b, Statement kind) {
