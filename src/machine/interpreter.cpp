@@ -371,8 +371,8 @@ void Interpreter::add_call_stack(nc::Diagnostic& d) const {
   }
 }
 
-void Interpreter::call_program(int number, Frame frame, std::uint16_t column) {
-  const nc::Program* p = library_.find(number);
+void Interpreter::call_program(int number, Frame frame, std::uint16_t column, std::int32_t entry) {
+  const nc::Program* p = entry >= 0 ? prog_ : library_.find(number);
   if (!p) {
     if (const ProgramLibrary::Unread* u = library_.unread(number))
       alarm("PS0078", fmt::format("program O{:04} not found: it is in {} at line {}, after the '%' of line {} that "
@@ -386,7 +386,7 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column) {
     warn_mixed_decimal_points(*p);
   }
   frame.prog = p;
-  frame.pc = 0;
+  frame.pc = frame.entry = std::max(entry, 0);
   frame.caller = prog_;
   frame.call_block = block_;
   if (frame.kind == Frame::subprogram) {
@@ -443,7 +443,7 @@ void Interpreter::return_from_program(std::optional<int> sequence, std::uint16_t
   Frame& f = frames_.back();
   if (f.repeat > 0) {
     --f.repeat;
-    f.pc = 0;
+    f.pc = f.entry;
     if (f.kind == Frame::macro) locals_[f.level] = f.initial;
     return;
   }
@@ -659,7 +659,20 @@ void Interpreter::exec_nc(const Block& b) {
     last_m_ = m;
     switch (m) {
       case 98: {
-        if (!has('P')) alarm("PS0076", "M98 needs P (the subprogram number)", b.column);
+        if (!has('P') && has('Q')) {  // M98 Q: the block N(q) of the program being run, as a subprogram
+          const int seq = integer(word('Q'), "Q (sequence number)");
+          auto it = prog_->sequence_index.find(seq);
+          if (it == prog_->sequence_index.end())
+            alarm("PS0078", fmt::format("M98 Q{}: no block N{} in this program", seq, seq), word('Q').column);
+          const int repeat = has('L') ? integer(word('L'), "L") : 1;
+          if (repeat < 1) break;
+          Frame f;
+          f.kind = Frame::subprogram;
+          f.repeat = repeat - 1;
+          call_program(prog_->number, f, word('Q').column, static_cast<std::int32_t>(it->second));
+          return;
+        }
+        if (!has('P')) alarm("PS0076", "M98 needs P (the subprogram number) or Q (a sequence number of this program)", b.column);
         const Cmd& p = word('P');
         int pv = integer(p, "P");
         int repeat = has('L') ? integer(word('L'), "L") : 1;

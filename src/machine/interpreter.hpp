@@ -95,7 +95,8 @@ private:
   const std::vector<std::int32_t>& loops_of(const nc::Program* p);
   bool condition(const nc::Expr& e);
   nc::Value eval(const nc::Expr& e);
-  void call_program(int number, Frame frame, std::uint16_t column);
+  // entry >= 0: the block of the program being run where the call starts (M98 Q)
+  void call_program(int number, Frame frame, std::uint16_t column, std::int32_t entry = -1);
   void call_macro(int number, const std::vector<Arg>& args, int repeat, bool custom, bool modal, std::uint16_t column);
   void return_from_program(std::optional<int> sequence, std::uint16_t column);
   void end_program(int m_code);
@@ -241,6 +242,7 @@ private:
   struct Frame {
     const nc::Program* prog = nullptr;
     std::int32_t pc = 0;
+    std::int32_t entry = 0;  // where a repeat starts again (M98 Q: the called block)
     std::int32_t level = 0;  // local variable level
     enum Kind : std::uint8_t { main, subprogram, macro } kind = main;
     bool custom = false;     // called by a custom G/M code (such codes are ordinary inside)

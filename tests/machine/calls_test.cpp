@@ -165,3 +165,19 @@ TEST(Calls, LineEndsAndByteOrderMark) {
     EXPECT_EQ(ms[1].line, 2u);
   }
 }
+
+// M98 Q: the block N(q) of the program being run is called as a subprogram; M99 returns after the
+// M98 block; L repeats it. Here the routine after M30 moves X by 10 (G91), called twice then once.
+TEST(Calls, M98QCallsASequenceNumberOfThisProgram) {
+  auto r = run("O0100\nG90 G00 X0 Y0\nM98 Q500 L2\nG90 G00 Y5.\nM98 Q500\nM30\nN500 G91 G00 X10.\nG90\nM99\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  auto ms = r.motions();
+  ASSERT_EQ(ms.size(), 5u);
+  EXPECT_DOUBLE_EQ(ms[1].end[0], 10.0);
+  EXPECT_DOUBLE_EQ(ms[2].end[0], 20.0);
+  EXPECT_DOUBLE_EQ(ms[3].end[1], 5.0);
+  EXPECT_DOUBLE_EQ(ms[4].end[0], 30.0);
+  EXPECT_EQ(ms[4].line, 7u);
+  auto missing = run("O0100\nM98 Q600\nM30\nN500 M99\n");
+  EXPECT_EQ(missing.alarm_code(), "PS0078");
+}
