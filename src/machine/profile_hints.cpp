@@ -36,6 +36,7 @@ BlockWords words_of(const nc::Program& p, const nc::Block& b) {
   BlockWords w;
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
     const nc::Word& word = p.words[i];
+    if (word.letter < 'A' || word.letter > 'Z') continue;  // ,C ,R ,A (kept in lower case)
     if (!word.literal) {
       w.has[word.letter - 'A'] = true;  // present, value unknown before the run
       continue;

@@ -178,8 +178,9 @@ TEST(LatheCycles, WritersShowAThread) {
   auto r = run("G21 G99\nG00 X19.4 Z5.\nG32 Z-20. F3. Q180000\nX24. Z-22.\nM30\n", lathe());
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   std::ostringstream jsonl, gcode;
-  report::JsonlWriter j(jsonl, lathe());
-  report::GcodeWriter g(gcode, lathe(), "t.nc");
+  const auto profile = lathe();  // the writers keep a reference to it
+  report::JsonlWriter j(jsonl, profile);
+  report::GcodeWriter g(gcode, profile, "t.nc");
   for (const auto& m : r.moves) {
     j.on_move(m);
     g.on_move(m);
