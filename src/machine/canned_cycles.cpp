@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "base/restore.hpp"
 #include "machine/drilling.hpp"
 
 namespace ncurve::machine {
@@ -133,11 +134,7 @@ bool Interpreter::canned_cycle_block() {
   h.rigid = rigid;
   // Under cutter compensation the cycle's moves are made at the programmed points, the vector
   // cancelled as for G28, and the next move restores it.
-  struct Restore {
-    bool& flag;
-    bool was;
-    ~Restore() { flag = was; }
-  } restore{comp_suspended_, comp_suspended_};
+  const base::RestoreOnExit restore_suspended(comp_suspended_);
   if (compensating()) comp_suspended_ = true;
   AxisVector step{};
   for (int a = 0; a < kAxes; ++a) step[a] = incremental_ ? hole[a] - base[a] : 0;

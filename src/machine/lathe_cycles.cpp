@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "base/restore.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
@@ -101,11 +102,7 @@ void Interpreter::single_cycle(const AxisVector& target) {
   // on the side the cutting pattern gives (whatever G41/G42 says) and cancels it on the return to A.
   // G92 is threaded without compensation.
   const int programmed_side = comp_side_;
-  struct Restore {
-    int& side;
-    int value;
-    ~Restore() { side = value; }
-  } restore{comp_side_, programmed_side};
+  const base::RestoreOnExit restore_side(comp_side_);
   if (compensating()) {
     comp_->cancel_at_end();
     int side = 0;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "base/restore.hpp"
 #include "machine/interpreter.hpp"
 #include "machine/stock_removal.hpp"
 
@@ -92,12 +93,7 @@ bool Interpreter::repetitive_cycle(int g) {
   }
   // Under tool-nose radius compensation the vector is cancelled at the start point, the roughing
   // follows the compensated shape and its moves are made as computed; the next move starts up again.
-  const int programmed_side = comp_side_;
-  struct Restore {
-    int& side;
-    int value;
-    ~Restore() { side = value; }
-  } restore{comp_side_, programmed_side};
+  const base::RestoreOnExit restore_side(comp_side_);
   return g == 730 ? pattern_repeating_cycle() : stock_removal_cycle(g);
 }
 

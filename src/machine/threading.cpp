@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/restore.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
@@ -180,12 +181,7 @@ void Interpreter::g76_passes(const AxisVector& end, double taper, double height,
   }
   for (int k = 0; k < std::max(g76_finish_count_, 1); ++k) depths.push_back(height);
 
-  const int programmed_side = comp_side_;
-  struct Restore {
-    int& side;
-    int value;
-    ~Restore() { side = value; }
-  } restore{comp_side_, programmed_side};
+  const base::RestoreOnExit restore_side(comp_side_);
   if (compensating()) {  // threading is not compensated: the vector is cancelled at A
     comp_->cancel_at_end();
     comp_side_ = 0;
