@@ -17,6 +17,8 @@ import shutil
 import subprocess
 import sys
 
+from rs274 import canon as rs274_canon
+
 
 def pocket(rng):
     n = rng.randint(4, 9)
@@ -76,14 +78,7 @@ def ncurve_moves(ncurve, path):
 
 
 def linuxcnc_moves(rs274, path, work):
-    table = os.path.join(work, "tool.tbl")
-    # rs274 maps its tool table to $HOME/.tool.mmap: a private HOME keeps concurrent runs apart
-    out = subprocess.run([rs274, "-g", "-t", table, path, os.path.join(work, "canon.txt")],
-                         stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=30,
-                         env=dict(os.environ, HOME=os.path.abspath(work)))
-    if out.returncode != 0:
-        raise RuntimeError(f"rs274 exited {out.returncode}: {out.stderr}")
-    text = open(os.path.join(work, "canon.txt")).read()
+    text, printed = rs274_canon(rs274, path, work, ("-t", os.path.join(work, "tool.tbl")))
     moves = []
     for m in re.finditer(r"(STRAIGHT_FEED|ARC_FEED)\(([^)]*)\)", text):
         v = [float(x) for x in m.group(2).split(",")]
@@ -91,8 +86,8 @@ def linuxcnc_moves(rs274, path, work):
             moves.append(("line", v[0], v[1], None))
         else:  # ARC_FEED(first_end, second_end, first_axis, second_axis, rotation, ...)
             moves.append(("arc", v[0], v[1], [v[2], v[3]]))
-    if "error" in out.stdout.lower() and not moves:
-        raise RuntimeError(out.stdout + out.stderr)
+    if "error" in printed.lower() and not moves:
+        raise RuntimeError(printed)
     return moves
 
 

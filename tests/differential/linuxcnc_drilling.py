@@ -24,6 +24,8 @@ import shutil
 import subprocess
 import sys
 
+from rs274 import canon as rs274_canon
+
 CYCLES = [81, 82, 83, 73, 85, 86, 89]
 
 
@@ -100,20 +102,14 @@ def ncurve_moves(ncurve, path):
 
 
 def linuxcnc_moves(rs274, path, work):
-    canon = os.path.join(work, "canon.txt")
-    # rs274 maps its tool table to $HOME/.tool.mmap: a private HOME keeps concurrent runs apart
-    out = subprocess.run([rs274, "-g", path, canon], stdin=subprocess.DEVNULL, capture_output=True, text=True,
-                         timeout=30, env=dict(os.environ, HOME=os.path.abspath(work)))
-    if out.returncode != 0:
-        raise RuntimeError(f"rs274 exited {out.returncode}: {out.stderr}")
-    text = open(canon).read()
+    text, printed = rs274_canon(rs274, path, work)
     moves, at = [], (0.0, 0.0, 0.0)
     for m in re.finditer(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)", text):
         v = tuple(float(x) for x in m.group(2).split(",")[:3])
         if v != at:
             moves.append(("feed" if m.group(1) == "STRAIGHT_FEED" else "rapid", *v))
         at = v
-    said = [l for l in (out.stdout + out.stderr).splitlines() if l.strip() not in ("", "executing")]
+    said = [l for l in printed.splitlines() if l.strip() not in ("", "executing")]
     if said:
         raise RuntimeError("rs274: " + "\n".join(said))
     return moves
