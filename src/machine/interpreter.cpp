@@ -88,11 +88,16 @@ Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& li
   cs.startup_type_c = profile_.compensation.startup_type_c;
   cs.blocks_without_motion = profile_.compensation.blocks_read - 2;
   cs.interference_check = profile_.compensation.interference_check;
-  comp_.emplace(
-      cs, [this](Move& m) { deliver(m); },
-      [this](const Move& at, const std::string& code, const std::string& message) {
-        throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message,
-                                       nc::Span{at.file, at.line, 1, 1}});
+  comp_.emplace(radius_compensation(cs, [this](Move& m) { deliver(m); }));
+}
+
+// A compensation whose alarms stop the run and whose warnings join the run's, at the block of the move.
+RadiusCompensation Interpreter::radius_compensation(CompensationSettings settings,
+                                                    RadiusCompensation::Deliver deliver) {
+  return RadiusCompensation(
+      settings, std::move(deliver),
+      [](const Move& at, const std::string& code, const std::string& message) {
+        throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{at.file, at.line, 1, 1}});
       },
       [this](const Move& at, const std::string& code, const std::string& message) {
         if (result_.warnings.size() < 1000)

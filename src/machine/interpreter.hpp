@@ -200,6 +200,7 @@ private:
   ShapeRange shape_range(int g);
   std::vector<Move> walk_shape(const ShapeRange& r, int g, bool keep);
   std::vector<Move> nose_compensated(const std::vector<Move>& shape);  // G71..G73 under G41/G42
+  RadiusCompensation radius_compensation(CompensationSettings settings, RadiusCompensation::Deliver deliver);
   void check_shape_block(const nc::Block& b, bool first, int g);
   void finishing_cycle(const ShapeRange& r);
   bool stock_removal_cycle(int g);

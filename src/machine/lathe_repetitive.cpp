@@ -291,16 +291,7 @@ std::vector<Move> Interpreter::nose_compensated(const std::vector<Move>& shape) 
   if (radius < 0) radius = -radius, side = -side;
   std::vector<Move> out;
   if (side == 0 || radius == 0) return shape;
-  RadiusCompensation nose(
-      CompensationSettings{}, [&](Move& m) { out.push_back(m); },
-      [](const Move& at, const std::string& code, const std::string& message) {
-        throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{at.file, at.line, 1, 1}});
-      },
-      [this](const Move& at, const std::string& code, const std::string& message) {
-        if (result_.warnings.size() < 1000)
-          result_.warnings.push_back(
-              nc::Diagnostic{nc::Severity::warning, code, message, nc::Span{at.file, at.line, 1, 1}});
-      });
+  RadiusCompensation nose = radius_compensation({}, [&](Move& m) { out.push_back(m); });
   nose.set_tip(nose_tip());
   for (const Move& m : shape)
     if (m.is_motion()) nose.element(m, side, radius);
