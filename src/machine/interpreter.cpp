@@ -627,6 +627,7 @@ void Interpreter::exec_nc(const Block& b) {
     }
   }
 
+  if (position_offset_ != 0) [[unlikely]] check_position_offset(one_shot);
   bool moved = false;
   if (!one_shot.empty()) {
     if (std::ranges::any_of(one_shot, [](int g) { return g != 40; })) end_lathe_cycle_data();
@@ -648,6 +649,7 @@ void Interpreter::exec_nc(const Block& b) {
     AxisVector target = pos_;
     bool axes = axis_target(target);
     bool full_circle_ijk = (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K'));
+    if (position_offset_ != 0) [[unlikely]] apply_position_offset(target);
     if (axes || full_circle_ijk) {
       if (rolls_) roll_over(target);
       if (corner_on_ || (profile_.lathe() && (has('C') || has('I') || has('K') || has('R')))) [[unlikely]]

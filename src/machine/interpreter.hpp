@@ -148,6 +148,11 @@ private:
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
 
+  // tool position offset G45..G48 (position_offset.cpp)
+  int position_offset_ = 0;  // 45..48 given in the block (one-shot), else 0
+  void check_position_offset(const std::vector<int>& one_shot);
+  void apply_position_offset(AxisVector& target);
+
   // AI contour control / look-ahead modes (high_speed.cpp)
   void high_speed_mode(int g, std::uint16_t column);
   bool look_ahead_ = true;  // G05.1 Q1, G08 P1, G05 P10000 (G61.1: exact_stop_code_ 611)

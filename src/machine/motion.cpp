@@ -81,6 +81,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
   const bool lathe = profile_.lathe();
   const bool system_a = lathe && profile_.gcode_system == 'A';
   exact_stop_once_ = false;
+  position_offset_ = 0;
   bool group01 = false;
   bool transform = false;  // a G15/G16, G50/G51, G50.1/G51.1, G68/G69 of a mill: transform_codes
   struct CancelCycle {  // after the block's codes: G00..G03 with G81 in one block cancel it too
@@ -103,6 +104,10 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         break;
       case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
+      case 450: case 460: case 470: case 480:  // tool position offset (position_offset.cpp)
+        if (lathe) alarm("PS0010", unknown_g_code(g, profile_), column);
+        position_offset_ = g / 10;
+        break;
       case 170: case 180: case 190:
         if (g / 10 != plane_ && (rigid_tapping_ || rigid_pending_))
           alarm("PS0206", fmt::format("the plane cannot change (G{}) in rigid tapping mode (after M29)", g / 10), column);

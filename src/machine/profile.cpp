@@ -338,6 +338,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   else if (key == "3402#3") p.power_on_g91 = bit();
   else if (key == "6001#5") p.t_code_calls_o9000 = bit();
   else if (key == "3405#4") p.chamfer_address_c = bit();
+  else if (key == "5001#5") p.position_offset_by_h = bit();
   else if (key == "3410") p.arc_radius_tolerance = value * p.increment;
   else if (key == "5114" || key == "5115") {
     if (value < 0 || value != std::floor(value))

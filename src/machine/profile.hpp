@@ -105,6 +105,7 @@ struct MachineProfile {
   int subprogram_nesting = 10;      // M98 calls: 10 on 0i, 15 on 30i
   int number_digits = 8;            // digits in one number (word or constant), leading zeros counted
   double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
+  bool position_offset_by_h = false;    // No.5001#5 TPH: G45..G48 take the offset number from H (else D)
   double peck_retract = 0;    // No.5114, mm: G73's retraction d after each peck
   double peck_clearance = 0;  // No.5115, mm: G83's clearance d above the previous peck's depth
   DrillingSettings drilling;
