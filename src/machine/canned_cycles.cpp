@@ -158,6 +158,19 @@ bool Interpreter::canned_cycle_block() {
   return true;
 }
 
+// "When the G8x command and an M code are specified in the same block, the M code is executed at
+// the time of the first positioning operation": after the move to the first hole, before the rapid
+// to R; the repeats (K) make no M code. M02, M30, M98 and M99 act after the block as elsewhere.
+void Interpreter::cycle_m_codes() {
+  if (cycle_m_done_) return;
+  cycle_m_done_ = true;
+  for (const Cmd& c : cmds_) {
+    if (c.letter != 'M') continue;
+    const int m = integer(c, "M");
+    if (m != 2 && m != 30 && m != 98 && m != 99) m_code_event(m);
+  }
+}
+
 void Interpreter::cycle_move(const Hole& h, MoveKind kind, double level) {
   AxisVector t = pos_;
   t[h.axis] = level;
@@ -179,6 +192,7 @@ void Interpreter::drill_hole(const Hole& h) {
   AxisVector at = h.at;
   at[h.axis] = pos_[h.axis];
   if (at != pos_) linear(MoveKind::rapid, at);
+  if (!m_codes_.empty()) [[unlikely]] cycle_m_codes();
   if (g == 76 || g == 87 || g == 88) return boring_hole(h);
   if (g == 84 || g == 74) return tapping_hole(h);
   cycle_move(h, MoveKind::rapid, h.r);

@@ -715,19 +715,28 @@ void Interpreter::exec_nc(const Block& b) {
         return;
       }
       case 2: case 30: end_program(m); return;
-      case 0: case 1:
-        emit_event(MoveKind::program_stop, m);
-        if (m == 0) warn("NC2004", "M00 program stop: the control waits for cycle start here");
+      default:
+        if (!cycle_m_done_) m_code_event(m);  // else made at the hole's positioning (canned_cycles.cpp)
         break;
-      case 3: case 4: case 5: case 19: emit_event(MoveKind::spindle, m); break;
-      case 6: emit_event(MoveKind::tool_change, tool_); break;
-      case 7: case 8: case 9: emit_event(MoveKind::coolant, m); break;
-      default: emit_event(MoveKind::m_code, m); break;
     }
   }
 
   if (moved && modal_call_ && !here.modal) {
     call_macro(modal_program_, modal_args_, modal_repeat_, false, true, b.column);
+  }
+}
+
+// The event of an M code that neither calls nor ends a program, as its block makes it.
+void Interpreter::m_code_event(int m) {
+  switch (m) {
+    case 0: case 1:
+      emit_event(MoveKind::program_stop, m);
+      if (m == 0) warn("NC2004", "M00 program stop: the control waits for cycle start here");
+      break;
+    case 3: case 4: case 5: case 19: emit_event(MoveKind::spindle, m); break;
+    case 6: emit_event(MoveKind::tool_change, tool_); break;
+    case 7: case 8: case 9: emit_event(MoveKind::coolant, m); break;
+    default: emit_event(MoveKind::m_code, m); break;
   }
 }
 

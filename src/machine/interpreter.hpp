@@ -125,6 +125,7 @@ private:
   V2 nose_tip() const;
   double nose_radius() const;
   void emit_event(MoveKind kind, int code);
+  void m_code_event(int m);  // spindle, coolant, M06, M00/M01 and other M codes of the block
   void dwell();
   void reference_return(int g);
   void machine_coordinate_move();
@@ -141,6 +142,8 @@ private:
   void cancel_canned_cycle();
   bool canned_cycle_block();  // a block in cycle mode: stores the data, drills when it has axis words
   void drill_hole(const Hole& h);
+  void cycle_m_codes();  // the cycle block's M codes, at its first hole's positioning
+  bool cycle_m_done_ = false;  // they were: the block's M codes make no event after it
   void cycle_move(const Hole& h, MoveKind kind, double level);  // along the drilling axis
   void cycle_dwell();
   void boring_hole(const Hole& h);   // G76, G87, G88

@@ -82,6 +82,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
   const bool system_a = lathe && profile_.gcode_system == 'A';
   exact_stop_once_ = false;
   position_offset_ = 0;
+  cycle_m_done_ = false;
   bool group01 = false;
   bool transform = false;  // a G15/G16, G50/G51, G50.1/G51.1, G68/G69 of a mill: transform_codes
   struct CancelCycle {  // after the block's codes: G00..G03 with G81 in one block cancel it too
