@@ -138,14 +138,19 @@ Value Interpreter::eval(const nc::Expr& e) {
     case nc::EvalFault::none: return r.value;
     case nc::EvalFault::divide_by_zero: alarm("PS0112", "division by zero", r.column);
     case nc::EvalFault::domain: alarm("PS0119", "argument out of the function's range", r.column);
-    case nc::EvalFault::overflow: alarm("PS0111", "calculated value out of range", r.column);
+    case nc::EvalFault::overflow:
+      alarm("PS0111", "calculated value out of range (a macro value lies within -1e47 .. 1e47)", r.column);
     case nc::EvalFault::not_on_this_control:
       alarm("PS0114", "ATAN[a,b] needs a 30i control; write ATAN[a]/[b]", r.column);
   }
   return r.value;
 }
 
-bool Interpreter::condition(const nc::Expr& e) { return eval(e).number() != 0.0; }
+bool Interpreter::condition(const nc::Expr& e) {
+  const double v = eval(e).number();
+  if (std::isnan(v)) alarm("PS0111", "the condition has no value (NaN)");  // never taken as true
+  return v != 0.0;
+}
 
 // Programs that mix dimension words with and without a decimal point are a classic source of
 // scrapped parts. A word of a macro call (G65, G66, a custom G code) is an argument, not an axis.
@@ -353,6 +358,7 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column) {
   const nc::Program* p = library_.find(number);
   if (!p)
     alarm("PS0078", fmt::format("program O{:04} not found (in this file or the --lib folders)", number), column);
+  if (const nc::Diagnostic* twice = library_.duplicate(number)) alarm(twice->code, twice->message, column);
   frame.prog = p;
   frame.pc = 0;
   if (frame.kind == Frame::subprogram) {
@@ -477,6 +483,7 @@ void Interpreter::exec_nc(const Block& b) {
   have_.fill(false);
   g_codes_.clear();
   m_codes_.clear();
+  word_check_ = false;
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
     const nc::Word& w = prog_->words[i];
     Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value};
@@ -484,9 +491,9 @@ void Interpreter::exec_nc(const Block& b) {
       Value v = eval(w.expr);
       if (v.vacant) continue;  // a word whose value is vacant is not there at all
       c.value = v.v;
-      if (!std::isfinite(c.value) || std::fabs(c.value) > 1e15)
-        alarm("PS0003", fmt::format("value of address {} out of range", w.letter), w.column);
+      check_word_digits(w.letter, c.value, scaled_address(w.letter), w.column);
     }
+    if (word_needs_check(c.letter, c.value)) word_check_ = true;
     if (c.letter == 'G') {
       if (c.literal && c.decimal_point && c.value * 10 != std::floor(c.value * 10))
         alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
@@ -551,6 +558,7 @@ void Interpreter::exec_nc(const Block& b) {
     }
   }
 
+  if (word_check_ || g_codes_.size() > 1) check_block_words();
   std::vector<int> one_shot;
   handle_g_codes(one_shot);
   if (rigid_pending_ || std::ranges::find(m_codes_, 29) != m_codes_.end()) rigid_tapping_words();

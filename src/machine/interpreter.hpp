@@ -103,6 +103,10 @@ private:
   double dimension_raw(const Cmd& c) const;  // program units, decimal point rule and rounding, no inch
   int integer(const Cmd& c, const char* what) const;
   std::vector<Arg> arguments(bool skip_p_l, int skip_g, int skip_m) const;
+  // checks on the block's words before they act (block_words.cpp)
+  bool word_needs_check(char letter, double value) const;
+  void check_block_words();
+  void check_word_digits(char letter, double value, bool dimension, std::uint16_t column) const;
   void assign_arguments(const std::vector<Arg>& args);
 
   // motion (motion.cpp)
@@ -223,6 +227,7 @@ private:
   std::array<std::uint8_t, 26> slot_{};
   std::vector<int> g_codes_;  // x10: 541 for G54.1
   std::vector<int> m_codes_;
+  bool word_check_ = false;  // the block repeats an address or signs one that takes no sign
 
   // modal state
   int motion_ = 0;           // 0..3

@@ -20,6 +20,13 @@ public:
   std::vector<nc::Diagnostic> add_folder(const std::string& dir);
 
   const nc::Program* find(int number) const;
+  // PS0073 when two programs of one file or one folder carry this number (find() gives the first).
+  // The file run and earlier folders come before later folders, as a search path.
+  const nc::Diagnostic* duplicate(int number) const {
+    if (duplicates_.empty()) return nullptr;
+    auto it = duplicates_.find(number);
+    return it == duplicates_.end() ? nullptr : &it->second;
+  }
   const nc::Program* main() const { return main_; }
   const std::vector<std::unique_ptr<nc::Program>>& programs() const { return programs_; }
   const std::vector<std::shared_ptr<const nc::SourceFile>>& files() const { return files_; }
@@ -29,6 +36,10 @@ private:
   std::vector<std::shared_ptr<const nc::SourceFile>> files_;
   std::vector<std::unique_ptr<nc::Program>> programs_;
   std::map<int, const nc::Program*> by_number_;
+  std::map<int, nc::Diagnostic> duplicates_;
+  std::map<int, int> source_of_;  // number -> the file or folder (counted from 1) that defined it
+  int source_ = 0;
+  bool in_folder_ = false;
   const nc::Program* main_ = nullptr;
 };
 

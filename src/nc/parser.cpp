@@ -718,10 +718,22 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       std::size_t j = 1;
       std::string digits;
       while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
-      if (digits.size() > 8) digits.resize(8);
-      new_program(std::stoi(digits));
+      const bool too_long = digits.size() > 8;
+      const int number = too_long ? -1 : std::stoi(digits);
+      new_program(number > 0 ? number : -1);
+      current->line = line;
       if (ls.has_comment) current->name = ls.comment;
       started = true;
+      if (too_long || number == 0) {  // the program alarms where it starts
+        Block& b = current->blocks.emplace_back();
+        b.line = line;
+        b.column = s[0].col;
+        add_error(*current, b, too_long ? "PS0003" : "PS0074",
+                  too_long ? fmt::format("O{}: a program number has at most 8 digits", digits)
+                           : std::string("O0 is not a program number: program numbers start at 1"),
+                  s[0].col, static_cast<std::uint32_t>(j), result.diagnostics);
+        return;
+      }
       if (j == s.size()) return;
       s = s.subspan(j);
     }

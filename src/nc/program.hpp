@@ -49,6 +49,7 @@ struct Block {
 
 struct Program {
   int number = -1;  // O number; -1 when the file has none
+  std::uint32_t line = 0;  // line of the O word (0: none)
   std::string name;  // comment on the O line
   std::shared_ptr<const SourceFile> file;
   std::vector<Block> blocks;
