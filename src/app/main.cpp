@@ -45,7 +45,7 @@ int run_command(const RunArgs& a) {
   try {
     setup = app::prepare_run(a.in);
   } catch (const std::exception& e) {
-    std::cerr << "ncurve run: " << e.what() << "\n";
+    std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
     return 2;
   }
   const machine::MachineProfile& profile = setup.profile;
@@ -60,7 +60,7 @@ int run_command(const RunArgs& a) {
     try {
       file.emplace(output, inputs);
     } catch (const io::OutputError& e) {
-      std::cerr << "ncurve run: error: " << e.what() << "\n";
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
       return 2;
     }
   }
@@ -86,14 +86,16 @@ int run_command(const RunArgs& a) {
   rep.profile = &profile;
   rep.result = &result;
   rep.stats = report::source_stats(lib, lib.main()->file.get());
-  rep.text_problems = setup.problems;
+  rep.text_problems = std::move(setup.problems);
+  rep.text_problems_left_out = setup.problems_left_out;
+  rep.unchecked_lines = setup.unchecked_lines;
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
   if (a.format == "summary") out << summary;
   if (file) {
     try {
       file->commit();
     } catch (const io::OutputError& e) {
-      std::cerr << "ncurve run: error: " << e.what() << "\n";
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
       return 2;
     }
   }

@@ -96,6 +96,12 @@ RunSetup prepare_run(const RunInputs& in) {
     auto more = s.lib->add_folder(dir);
     s.problems.insert(s.problems.end(), more.begin(), more.end());
   }
+  s.problems_left_out = s.lib->problems_left_out();
+  s.unchecked_lines = s.lib->unchecked_lines();
+  if (s.problems.size() > nc::kMaxDiagnostics) {  // the first hundred of all files together
+    s.problems_left_out += s.problems.size() - nc::kMaxDiagnostics;
+    s.problems.resize(nc::kMaxDiagnostics);
+  }
   return s;
 }
 

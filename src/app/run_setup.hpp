@@ -26,7 +26,9 @@ struct RunInputs {
 struct RunSetup {
   machine::MachineProfile profile = machine::default_mill();
   std::unique_ptr<machine::ProgramLibrary> lib = std::make_unique<machine::ProgramLibrary>();
-  std::vector<nc::Diagnostic> problems;  // syntax found while reading the programs
+  std::vector<nc::Diagnostic> problems;  // syntax found while reading the programs: the first 100
+  std::size_t problems_left_out = 0;     // and how many more there are
+  std::size_t unchecked_lines = 0;       // lines past those that no jump can reach, not parsed
   machine::RunOptions options;
 };
 

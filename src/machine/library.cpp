@@ -29,6 +29,8 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, st
   auto file = std::make_shared<const nc::SourceFile>(name, std::move(text));
   files_.push_back(file);
   nc::ParseResult r = nc::parse(file, options_);
+  problems_left_out_ += r.more_diagnostics;
+  unchecked_lines_ += r.unchecked_lines;
   if (!in_folder_) ++source_;
   int from_name = number_from_file_name(name);
   for (auto& p : r.programs) {

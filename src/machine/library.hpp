@@ -16,6 +16,10 @@ public:
   // file name like O9010.nc. Returns the syntax problems found (they also stay attached to their blocks).
   std::vector<nc::Diagnostic> add_text(const std::string& name, std::string text, bool is_main = false);
   std::vector<nc::Diagnostic> add_file(const std::string& path, bool is_main = false);
+  // Problems found beyond the first nc::kMaxDiagnostics of each file, counted only.
+  std::size_t problems_left_out() const { return problems_left_out_; }
+  // Lines not parsed because no block on them can run (nc::ParseResult::unchecked_lines).
+  std::size_t unchecked_lines() const { return unchecked_lines_; }
   // Every *.nc, *.NC, O*, *.txt and *.tap file in the folder.
   std::vector<nc::Diagnostic> add_folder(const std::string& dir);
 
@@ -39,6 +43,8 @@ private:
   std::map<int, nc::Diagnostic> duplicates_;
   std::map<int, int> source_of_;  // number -> the file or folder (counted from 1) that defined it
   int source_ = 0;
+  std::size_t problems_left_out_ = 0;
+  std::size_t unchecked_lines_ = 0;
   bool in_folder_ = false;
   const nc::Program* main_ = nullptr;
 };

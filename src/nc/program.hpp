@@ -64,9 +64,16 @@ struct Program {
   }
 };
 
+// Problems of a text kept to be shown; the rest are counted (a file of junk has one a line).
+constexpr std::size_t kMaxDiagnostics = 100;
+
 struct ParseResult {
   std::vector<std::unique_ptr<Program>> programs;
-  std::vector<Diagnostic> diagnostics;  // every problem found in the text, in order
+  std::vector<Diagnostic> diagnostics;  // the first kMaxDiagnostics problems found in the text, by line
+  std::size_t more_diagnostics = 0;     // problems found beyond those
+  // Lines not parsed: past kMaxDiagnostics problems, lines after a block that alarms which no jump
+  // can reach (no N, DO, WHILE, END, O, '/' or '%'): they can never run.
+  std::size_t unchecked_lines = 0;
 };
 
 // Digits in one number, NC word or macro constant, every digit typed counted (0.00000001 has nine,
