@@ -20,6 +20,7 @@ struct RunInputs {
   std::vector<std::string> sets;    // "#100=5"
   std::vector<std::string> params;  // "6050=102"
   std::uint64_t max_steps = machine::RunOptions{}.max_steps;
+  double max_seconds = machine::RunOptions{}.max_seconds;
   bool nose_centre = false;
 };
 
@@ -33,7 +34,7 @@ struct RunSetup {
 };
 
 // The options naming them: program (required unless program_required is false), --machine, --lib,
-// --param, --set, --max-steps.
+// --param, --set, --max-steps, --max-seconds.
 void add_run_inputs(CLI::App* command, RunInputs& in, bool program_required);
 // Throws std::runtime_error with a message for the user (bad option, profile or file).
 RunSetup prepare_run(const RunInputs& in);

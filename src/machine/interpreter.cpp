@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace ncurve::machine {
@@ -133,6 +134,7 @@ void Interpreter::warn(std::string code, std::string message, std::uint16_t colu
 Value Interpreter::eval(const nc::Expr& e) {
   VarReader reader{this};
   const nc::Instr* code = prog_->code.data();
+  operations_ += e.end - e.begin;
   nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
   switch (r.fault) {
     case nc::EvalFault::none: return r.value;
@@ -229,20 +231,10 @@ RunResult Interpreter::run(MoveSink& sink) {
       prog_ = nullptr;
       write_var(n, Value::of(v), 0);
     }
+    started_ = std::chrono::steady_clock::now();
     while (!finished_) {
-      if (result_.stats.blocks >= options_.max_steps) {
-        std::string where;
-        if (last_back_jump_) {
-          const Block& b = *last_back_jump_;
-          where = fmt::format("; it keeps looping through {}:{}", last_back_jump_prog_->file->name(), b.line);
-          if (b.kind == Statement::end_loop && b.match >= 0)
-            where += fmt::format(" (END {} of the loop at line {})", b.loop_id,
-                                 last_back_jump_prog_->blocks[b.match].line);
-          prog_ = last_back_jump_prog_;
-          block_ = last_back_jump_;
-        }
-        alarm("NC9000", fmt::format("program stopped after {} blocks (--max-steps){}", options_.max_steps, where));
-      }
+      if (result_.stats.blocks + operations_ >= options_.max_steps || (result_.stats.blocks & 0xFFFF) == 0)
+        check_runaway();
       step();
     }
     comp_->finish();
@@ -255,6 +247,28 @@ RunResult Interpreter::run(MoveSink& sink) {
   }
   sink_ = nullptr;
   return result_;
+}
+
+// A runaway program stops at the loop that keeps it going, naming the option to raise.
+void Interpreter::check_runaway() {
+  const bool steps = result_.stats.blocks + operations_ >= options_.max_steps;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  if (!steps && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
+  std::string where;
+  if (last_back_jump_) {
+    const Block& b = *last_back_jump_;
+    where = fmt::format("; it keeps looping through {}:{}", last_back_jump_prog_->file->name(), b.line);
+    if (b.kind == Statement::end_loop && b.match >= 0)
+      where += fmt::format(" (END {} of the loop at line {})", b.loop_id, last_back_jump_prog_->blocks[b.match].line);
+    prog_ = last_back_jump_prog_;
+    block_ = last_back_jump_;
+  }
+  if (steps)
+    alarm("NC9000", fmt::format("program stopped after {} steps ({} blocks and {} expression operations; raise "
+                                "--max-steps to let it run longer){}",
+                                result_.stats.blocks + operations_, result_.stats.blocks, operations_, where));
+  alarm("NC9000", fmt::format("program stopped after {:.0f} s, {} blocks (raise --max-seconds to let it run longer){}",
+                              seconds, result_.stats.blocks, where));
 }
 
 void Interpreter::step() {

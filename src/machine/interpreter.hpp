@@ -1,6 +1,7 @@
 // Executes a Program as a FANUC 0i/30i control would, streaming Moves to a sink.
 #pragma once
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -19,7 +20,9 @@
 namespace ncurve::machine {
 
 struct RunOptions {
-  std::uint64_t max_steps = 200'000'000;          // executed blocks before a runaway program is stopped
+  // a runaway program is stopped after this many steps: a block is one, an expression one an operation
+  std::uint64_t max_steps = 200'000'000;
+  double max_seconds = 60;  // or after this long (wall clock); 0: no limit
   std::vector<std::pair<int, double>> presets;  // --set "#100=5"
   bool nose_centre = false;  // lathe: write the tool-nose centre's path, not the imaginary tip's
 };
@@ -84,6 +87,7 @@ private:
 
   // execution
   void step();
+  void check_runaway();  // --max-steps and --max-seconds
   void exec_nc(const nc::Block& b);
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
@@ -228,6 +232,8 @@ private:
   std::vector<int> g_codes_;  // x10: 541 for G54.1
   std::vector<int> m_codes_;
   bool word_check_ = false;  // the block repeats an address or signs one that takes no sign
+  std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
+  std::chrono::steady_clock::time_point started_;
 
   // modal state
   int motion_ = 0;           // 0..3
