@@ -701,12 +701,25 @@ bool follows_alarm(const Program& p) {
   return !p.blocks.empty() && p.blocks.back().error >= 0 && !p.blocks.back().block_skip;
 }
 
-// A line with no N, '/', O, '%', DO, WHILE (W) or END: none of its blocks is a jump target, so after
-// a block that alarms it can never run. Conservative: the letters anywhere on the line, comments too.
-bool cannot_be_a_target(std::string_view raw) {
-  for (std::size_t k = 0; k < raw.size(); ++k) {
+// A line that starts no program (O or ':' first) and has no N (but a leading N of a number already
+// given, which GOTO does not reach), '/', '%', DO, WHILE (W) or END: none of its blocks is a jump
+// target, so after a block that alarms it can never run. Conservative: the letters anywhere on the
+// line, comments too.
+bool cannot_be_a_target(std::string_view raw, const Program& p) {
+  std::size_t k = raw.find_first_not_of(" \t\r");
+  if (k != std::string_view::npos && (to_upper(raw[k]) == 'O' || raw[k] == ':')) return false;
+  if (k != std::string_view::npos && to_upper(raw[k]) == 'N') {
+    std::size_t end = ++k;
+    while (end < raw.size() && is_digit(raw[end]) && end - k <= 8) ++end;
+    if (end == k || end - k > 8) return false;
+    if (!p.sequence_index.contains(std::stoi(std::string(raw.substr(k, end - k))))) return false;
+    k = end;
+  } else {
+    k = 0;
+  }
+  for (; k < raw.size(); ++k) {
     const char c = to_upper(raw[k]);
-    if (c == 'N' || c == '/' || c == 'O' || c == '%' || c == 'W') return false;
+    if (c == 'N' || c == '/' || c == '%' || c == 'W') return false;
     if (c == 'D' && k + 1 < raw.size() && to_upper(raw[k + 1]) == 'O') return false;
   }
   return true;
@@ -734,11 +747,13 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
   };
   bool started = false;  // a block has been read (a later '%' ends the file)
   Problems syntax, loops;
-  // A block with an error and no N after another such block is never reached: the one before
-  // alarms, and only an N makes a block a target. It is counted, not kept (a file of junk).
+  // A block with an error after another such block is never reached: the one before alarms, and only
+  // an N makes a block a target (the first block with that N). It is counted, not kept (junk).
   auto drop_if_unreachable = [&](const Block& b) {
     std::vector<Block>& blocks = current->blocks;
-    if (b.error < 0 || b.sequence >= 0 || b.block_skip || blocks.size() < 2) return;
+    if (b.error < 0 || b.block_skip || blocks.size() < 2) return;
+    if (b.sequence >= 0 && current->sequence_index.at(b.sequence) + 1 == static_cast<std::int32_t>(blocks.size()))
+      return;  // the first block with its N: a GOTO target
     const Block& before = blocks[blocks.size() - 2];
     if (before.error < 0 || before.block_skip) return;
     if (b.error + 1 == static_cast<std::int32_t>(current->errors.size())) current->errors.pop_back();
@@ -843,7 +858,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       if (started) done = true;
       continue;
     }
-    if (syntax.list.size() >= kMaxDiagnostics && current && follows_alarm(*current) && cannot_be_a_target(raw)) {
+    if (syntax.list.size() >= kMaxDiagnostics && current && follows_alarm(*current) && cannot_be_a_target(raw, *current)) {
       ++result.unchecked_lines;
       continue;
     }

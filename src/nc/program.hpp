@@ -72,7 +72,7 @@ struct ParseResult {
   std::vector<Diagnostic> diagnostics;  // the first kMaxDiagnostics problems found in the text, by line
   std::size_t more_diagnostics = 0;     // problems found beyond those
   // Lines not parsed: past kMaxDiagnostics problems, lines after a block that alarms which no jump
-  // can reach (no N, DO, WHILE, END, O, '/' or '%'): they can never run.
+  // can reach (no new N, DO, WHILE, END, '/' or '%', no O first): they can never run.
   std::size_t unchecked_lines = 0;
 };
 
