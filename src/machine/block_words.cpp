@@ -122,7 +122,7 @@ void Interpreter::check_block_words() {
 // counted in least input increments for a dimension, as a whole number otherwise (PS0003).
 void Interpreter::check_word_digits(char letter, double value, bool dimension, std::uint16_t column) const {
   const double per_unit = !dimension ? 1.0 : inch_ ? per_unit_inch_ : per_unit_mm_;
-  const double limit = std::pow(10.0, profile_.number_digits);
+  const double limit = digit_limit_;
   if (std::fabs(value) * per_unit < limit - 0.5) return;
   const int decimals = static_cast<int>(std::lround(std::log10(per_unit)));
   alarm("PS0003",

@@ -74,6 +74,7 @@ Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& li
   init_rotary();
   per_unit_mm_ = increments_per_mm(profile_);
   per_unit_inch_ = std::round(10 / profile_.increment);
+  digit_limit_ = std::pow(10.0, profile_.number_digits);
   eval_options_.atan_signed = profile_.atan_signed;
   eval_options_.atan_comma = profile_.control == Control::fanuc_30i;
   eval_options_.adp_scale = 1.0 / profile_.increment;

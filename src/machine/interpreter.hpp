@@ -232,6 +232,7 @@ private:
   std::vector<int> g_codes_;  // x10: 541 for G54.1
   std::vector<int> m_codes_;
   bool word_check_ = false;  // the block repeats an address or signs one that takes no sign
+  double digit_limit_ = 1e8;  // 10^number_digits: a word's value in units or increments stays below
   std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
   std::chrono::steady_clock::time_point started_;
 
