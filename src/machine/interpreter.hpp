@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "machine/compensation.hpp"
@@ -233,6 +234,7 @@ private:
   std::vector<int> m_codes_;
   bool word_check_ = false;  // the block repeats an address or signs one that takes no sign
   double digit_limit_ = 1e8;  // 10^number_digits: a word's value in units or increments stays below
+  std::unordered_set<const nc::Block*> repeat_warned_;  // blocks already warned of a repeated address
   std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
   std::chrono::steady_clock::time_point started_;
 

@@ -3,6 +3,7 @@
 // duplication, No.3403#6 AD2) and No.3404#7 M3B; the run limits --max-steps and --max-seconds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -162,6 +163,10 @@ TEST(Limits, AnAddressTwiceInABlock) {
   EXPECT_EQ(group.motions()[0].kind, machine::MoveKind::rapid);
   EXPECT_TRUE(warned(group, "NC2005"));
   EXPECT_FALSE(warned(run("G90 G54 G00 G17 G21 G40 G49 G80 X1.\nM30\n"), "NC2005"));
+  auto loop = run("#1=0\nWHILE [#1 LT 5] DO1\nG00 X1. X2.\n#1=#1+1\nEND1\nM30\n");  // warned once a block
+  EXPECT_EQ(std::count_if(loop.result.warnings.begin(), loop.result.warnings.end(),
+                          [](const nc::Diagnostic& w) { return w.code == "NC2005"; }),
+            1);
 
   auto strict = machine::default_mill();
   strict.address_duplicate_alarm = true;
