@@ -180,10 +180,13 @@ int program_command(const AnalyzeArgs& a) {
     setup = prepare_run(a.in);
     apply_servo_options(setup.profile, a);
   } catch (const std::exception& e) {
-    std::cerr << "ncurve analyze: " << e.what() << "\n";
+    std::cerr << "ncurve analyze: " << nc::escape_controls(e.what()) << "\n";
     return 2;
   }
   for (const auto& d : setup.problems) std::cerr << nc::format(d) << "\n";
+  if (setup.problems_left_out) std::cerr << "... and " << setup.problems_left_out << " more text problems not shown\n";
+  if (setup.unchecked_lines)
+    std::cerr << "... and " << setup.unchecked_lines << " lines after them that can never run, not checked\n";
   const machine::MachineProfile& profile = setup.profile;
   std::optional<geom::Curve> curve;
   if (a.curve.name.empty() && (!a.shape_csv.empty() || !a.shape_plot.empty() || a.tol > 0)) {

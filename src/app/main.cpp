@@ -49,7 +49,7 @@ int run_command(const RunArgs& a) {
   try {
     setup = app::prepare_run(a.in);
   } catch (const std::exception& e) {
-    std::cerr << "ncurve run: " << e.what() << "\n";
+    std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
     return 2;
   }
   const machine::MachineProfile& profile = setup.profile;
@@ -70,7 +70,7 @@ int run_command(const RunArgs& a) {
     try {
       file.emplace(output, inputs);
     } catch (const io::OutputError& e) {
-      std::cerr << "ncurve run: error: " << e.what() << "\n";
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
       return 2;
     }
   }
@@ -103,7 +103,9 @@ int run_command(const RunArgs& a) {
   rep.profile = &profile;
   rep.result = &result;
   rep.stats = report::source_stats(lib, lib.main()->file.get());
-  rep.text_problems = setup.problems;
+  rep.text_problems = std::move(setup.problems);
+  rep.text_problems_left_out = setup.problems_left_out;
+  rep.unchecked_lines = setup.unchecked_lines;
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
   if (plot && !app::save_plot(a.plot, a.view, *plot, interp, rep.source, lib)) return 2;
   if (a.format == "summary") (plot_out ? std::cerr : out) << summary;
@@ -111,7 +113,7 @@ int run_command(const RunArgs& a) {
     try {
       file->commit();
     } catch (const io::OutputError& e) {
-      std::cerr << "ncurve run: error: " << e.what() << "\n";
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
       return 2;
     }
   }
