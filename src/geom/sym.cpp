@@ -21,8 +21,17 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
+// Nodes this thread may still allocate under a SymBudget (-1: no budget).
+thread_local std::int64_t budget_left = -1;
+
+std::shared_ptr<SymNode> allocate() {
+  if (budget_left == 0) throw SymTooLarge();
+  if (budget_left > 0) --budget_left;
+  return std::make_shared<SymNode>();
+}
+
 Sym node(SymOp op, Sym a, Sym b = nullptr) {
-  auto n = std::make_shared<SymNode>();
+  auto n = allocate();
   n->op = op;
   n->a = std::move(a);
   n->b = std::move(b);
@@ -181,15 +190,18 @@ Printed print(const Sym& e) {
 
 }  // namespace
 
+SymBudget::SymBudget(std::int64_t nodes) : outer_(budget_left) { budget_left = nodes; }
+SymBudget::~SymBudget() { budget_left = outer_; }
+
 Sym konst(double k) {
-  auto n = std::make_shared<SymNode>();
+  auto n = allocate();
   n->op = SymOp::konst;
   n->k = k;
   return n;
 }
 
 Sym variable(int number) {
-  auto n = std::make_shared<SymNode>();
+  auto n = allocate();
   n->op = SymOp::var;
   n->var = number;
   return n;
