@@ -722,7 +722,13 @@ std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next
     if (built[i]) return built[i];
     const Sym& e = nodes[i];
     Sym out = e;
-    if (e->a) out = node(e->op, self(self, ops_a[i]), ops_b[i] >= 0 ? self(self, ops_b[i]) : nullptr);
+    if (e->a) {
+      // the second operand's temporaries numbered first: sequenced, so that every compiler writes
+      // the same macro (as function arguments the two calls' order was unspecified)
+      Sym b = ops_b[i] >= 0 ? self(self, ops_b[i]) : nullptr;
+      Sym a = self(self, ops_a[i]);
+      out = node(e->op, std::move(a), std::move(b));
+    }
     const bool long_constant = e->op == SymOp::konst && to_macro(out).size() > 2 * kVariableLength;
     if (uses[i] > 1 && (e->a || long_constant) && to_macro(out).size() > kVariableLength) {
       auto own = own_var.find(id);
