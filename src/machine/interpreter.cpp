@@ -139,6 +139,10 @@ void Interpreter::warn(std::string code, std::string message, std::uint16_t colu
     result_.warnings.push_back(nc::Diagnostic{nc::Severity::warning, std::move(code), std::move(message), span(column)});
 }
 
+void Interpreter::warn_once(std::string code, std::string message, std::uint16_t column) {
+  if (warned_once_.emplace(block_, code).second) warn(std::move(code), std::move(message), column);
+}
+
 Value Interpreter::eval(const nc::Expr& e) {
   VarReader reader{this};
   const nc::Instr* code = prog_->code.data();

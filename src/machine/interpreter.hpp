@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -255,6 +256,7 @@ private:
   [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
                           std::uint32_t length = 1) const;
   void warn(std::string code, std::string message, std::uint16_t column = 0);
+  void warn_once(std::string code, std::string message, std::uint16_t column = 0);  // once per block and code
   nc::Span span(std::uint16_t column = 0, std::uint32_t length = 1) const;
 
   struct Frame {
@@ -303,6 +305,7 @@ private:
   std::vector<int> m_codes_;
   bool word_check_ = false;  // the block repeats an address or signs one that takes no sign
   double digit_limit_ = 1e8;  // 10^number_digits: a word's value in units or increments stays below
+  std::set<std::pair<const nc::Block*, std::string>> warned_once_;  // warn_once: given already
   std::unordered_set<const nc::Block*> repeat_warned_;  // blocks already warned of a repeated address
   std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
   std::chrono::steady_clock::time_point started_;

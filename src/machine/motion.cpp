@@ -446,10 +446,13 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
     }
     if (r == 0) alarm("PS0023", "arc radius R is zero", word('R').column);
     double half = d / 2;
-    if (half > std::fabs(r) + profile_.arc_radius_tolerance)
-      alarm("PS0023", fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} mm)",
-                                  word('R').value, half),
-            word('R').column);
+    if (half > std::fabs(r) + profile_.arc_radius_tolerance)  // no circle of radius R: the centre is the midpoint
+      warn_once("NC2016",
+                fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} mm): the "
+                            "control puts the centre on the chord's midpoint and cuts a half circle of that radius "
+                            "(PS0023 is for R0 only)",
+                            word('R').value, half),
+                word('R').column);
     double h = std::sqrt(std::max(0.0, r * r - half * half));
     // centre left of the chord for G03 with R > 0, right for G02
     double sign = (clockwise ? -1.0 : 1.0) * (r > 0 ? 1.0 : -1.0);
@@ -457,7 +460,13 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
     cq = sq + dy / 2 + sign * h * dx / d;
   } else {
     double off_p = 0, off_q = 0;
-    if (!has(pa.ip) && !has(pa.iq)) alarm("PS0022", "G02/G03 needs R or the centre offsets (I, J, K) of the plane");
+    if (!has(pa.ip) && !has(pa.iq)) {  // No.3403#5 CIR
+      if (profile_.arc_without_centre_alarm)
+        alarm("PS0022", "G02/G03 needs R or the centre offsets (I, J, K) of the plane (No.3403#5 CIR = 1)");
+      warn_once("NC2015", "G02/G03 without R or the centre offsets (I, J, K) of the plane: the control moves to "
+                          "the end point by linear interpolation (No.3403#5 CIR = 0)");
+      return linear(MoveKind::line, target);
+    }
     auto offset = [&](char letter, int axis) {
       if (!has(letter)) return 0.0;
       double v = dimension(word(letter));  // I on a lathe is a radius value

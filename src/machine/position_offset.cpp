@@ -39,10 +39,11 @@ void Interpreter::check_position_offset(const std::vector<int>& one_shot) {
                                 g),
           column);
   if (cycle_ != 0) {  // the manual: "G45 to G48 are ignored in canned cycle mode"
-    warn("NC2014", fmt::format("G{} in canned cycle mode (G{}) is ignored, as on the control: give the tool position "
-                               "offset before the cycle and cancel it after G80",
-                               g, cycle_),
-         column);
+    warn_once("NC2014",
+              fmt::format("G{} in canned cycle mode (G{}) is ignored, as on the control: give the tool position "
+                          "offset before the cycle and cancel it after G80",
+                          g, cycle_),
+              column);
     position_offset_ = 0;
     return;
   }
