@@ -116,6 +116,8 @@
     for (let i = 0; i < n; i++)
       if (moves.kind[i] === 2) for (let k = 1; k < 8; k++) { arcPoint(i, k / 8, tmp); grow(tmp[0], tmp[1], tmp[2]); }
     // (the extent of arcs between those eighths is within the padding round the drawing)
+    if (Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) < 1e-6)  // no path (an alarm at once): a 10 mm box
+      for (let k = 0; k < 3; k++) lo[k] -= 5, hi[k] += 5;
     const diag = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
     const origin = [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2];
     const toWorld = (m, out) => {  // machine point -> world, relative to the origin
@@ -257,12 +259,13 @@
     const tickLen = diag * 0.012;
     for (let k = 0; k < 3; k++) {
       const shown = span[k] * scale[k];
-      const step = niceStep(Math.max(shown, 1e-6), span[k] > diag * 1e-6 ? 6 : 1);
+      const flat = span[k] <= diag * 1e-6;  // the path does not move along this axis: one tick, at its value
+      const step = niceStep(flat ? diag * scale[k] : shown, 6);
       const v0 = (wlo[k] + origin[perm[k]]) * scale[k], v1 = (whi[k] + origin[perm[k]]) * scale[k];
       const firstTick = Math.ceil((v0 - 1e-9 * step) / step) * step;
       const list = [];
       for (let v = firstTick, c = 0; v <= v1 + 1e-9 * step && c < 200; v += step, c++) list.push(v);
-      if (span[k] <= diag * 1e-6) list.splice(1);
+      if (flat) list.splice(0, list.length, Math.round(v0 / step) * step);
       ticks.push({step, list, toWorld: (v) => v / scale[k] - origin[perm[k]]});
     }
     // the axes' corner: the lowest corner of the box
