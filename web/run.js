@@ -186,6 +186,6 @@
     views: Object.keys(NAMES),
     screenOf: (i) => plot.screenOf(i),
     lineOf: (i) => blockOf(i).line,
-    timing: {decodeMs: tDecoded - t0, buildMs: tBuilt - tDecoded, firstDrawMs: tDrawn - t0},
+    timing: {scriptStartMs: t0, decodeMs: tDecoded - t0, buildMs: tBuilt - tDecoded, firstDrawMs: tDrawn - t0},
   };
 })();

@@ -35,7 +35,8 @@ const {chromium} = require(path.resolve(modules, 'playwright-core'));
     frames.sort((a, b) => a - b);
     const t = performance.now();
     p.pick(innerWidth / 2, innerHeight / 2);
-    return {moves: B.moveCount, segments: B.segments, timing: B.timing, frameMedianMs: frames[5], pickMs: performance.now() - t,
+    const nav = performance.getEntriesByType('navigation')[0];
+    return {responseEndMs: nav.responseEnd, domInteractiveMs: nav.domInteractive, moves: B.moveCount, segments: B.segments, timing: B.timing, frameMedianMs: frames[5], pickMs: performance.now() - t,
             renderer: p.renderer.getContext().getParameter(p.renderer.getContext().RENDERER)};
   });
   console.log(JSON.stringify({file, bytes: fs.statSync(file).size, loadedMs: loaded, ...r}, null, 1));
