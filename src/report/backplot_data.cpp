@@ -83,8 +83,10 @@ std::string base64(const void* data, std::size_t bytes) {
 namespace {
 
 template <class T>
-std::string b64(const std::vector<T>& v) {
-  return '"' + base64(v.data(), v.size() * sizeof(T)) + '"';
+void add_array(std::string& out, const char* key, const std::vector<T>& v) {
+  out += fmt::format(",\"{}\":\"", key);
+  out += base64(v.data(), v.size() * sizeof(T));
+  out += '"';
 }
 
 std::string dump(const nlohmann::json& j) { return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); }
@@ -127,8 +129,16 @@ std::string BackplotData::json(bool inch) const {
   }
   std::string out = dump(head);
   out.pop_back();  // the closing brace: the arrays follow
-  out += fmt::format(",\"kind\":{},\"end\":{},\"feed\":{},\"block\":{},\"arcs\":{},\"block_file\":{},\"block_line\":{}}}",
-                     b64(kind_), b64(end_), b64(feed_), b64(block_), b64(arcs_), b64(block_file_), b64(block_line_));
+  const std::size_t bytes = kind_.size() * 21 + arcs_.size() * 4 + block_line_.size() * 6;
+  out.reserve(out.size() + bytes / 3 * 4 + 256);
+  add_array(out, "kind", kind_);
+  add_array(out, "end", end_);
+  add_array(out, "feed", feed_);
+  add_array(out, "block", block_);
+  add_array(out, "arcs", arcs_);
+  add_array(out, "block_file", block_file_);
+  add_array(out, "block_line", block_line_);
+  out += '}';
   return out;
 }
 

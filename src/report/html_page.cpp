@@ -7,19 +7,31 @@
 
 namespace ncurve::report {
 
-std::string script_json(std::string_view json) {
-  std::string out;
-  out.reserve(json.size() + 64);
+namespace {
+
+void append_script_json(std::string& out, std::string_view json) {
+  std::size_t plain = 0;  // the text from here to i needs no escape
   for (std::size_t i = 0; i < json.size(); ++i) {
     const char c = json[i];
+    const bool separator = c == '\xE2' && i + 2 < json.size() && json[i + 1] == '\x80' &&
+                           (json[i + 2] == '\xA8' || json[i + 2] == '\xA9');
+    if (c != '<' && c != '>' && c != '&' && !separator) continue;
+    out.append(json.substr(plain, i - plain));
     if (c == '<') out += "\\u003c";
     else if (c == '>') out += "\\u003e";
     else if (c == '&') out += "\\u0026";
-    else if (c == '\xE2' && i + 2 < json.size() && json[i + 1] == '\x80' && (json[i + 2] == '\xA8' || json[i + 2] == '\xA9')) {
-      out += json[i + 2] == '\xA8' ? "\\u2028" : "\\u2029";
-      i += 2;
-    } else out += c;
+    else out += json[i + 2] == '\xA8' ? "\\u2028" : "\\u2029", i += 2;
+    plain = i + 1;
   }
+  out.append(json.substr(plain));
+}
+
+}  // namespace
+
+std::string script_json(std::string_view json) {
+  std::string out;
+  out.reserve(json.size() + 64);
+  append_script_json(out, json);
   return out;
 }
 
@@ -48,8 +60,8 @@ std::string backplot_html(const HtmlPageInput& in) {
     out.append(page.substr(at, open - at));
     const std::string_view key = page.substr(open + 2, close - open - 2);
     if (key == "title") out += xml_escape(in.title);
-    else if (key == "summary") out += script_json(in.summary_json);
-    else if (key == "data") out += script_json(in.data_json);
+    else if (key == "summary") append_script_json(out, in.summary_json);
+    else if (key == "data") append_script_json(out, in.data_json);
     else out.append(inline_asset(key));
     at = close + 2;
   }
