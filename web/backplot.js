@@ -183,6 +183,7 @@
     const scene = new THREE.Scene(), pickScene = new THREE.Scene();
     scene.background = new THREE.Color(0xfcfcfd);
     const materials = [];
+    const coarseLines = [];  // [full, coarse] per kind, for big paths
     const colorAttrs = [];
     layers.forEach((L, k) => {
       if (!L.owner.length) { colorAttrs.push(null); return; }
@@ -204,6 +205,20 @@
       lines.frustumCulled = false;
       lines.name = KIND_NAMES[k];
       scene.add(lines);
+      // while turning a big path on a slow GPU: every step-th segment (an index over the same buffers)
+      const step = Math.ceil(total / 150000);
+      if (step > 1) {
+        const idx = new Uint32Array(2 * Math.ceil(L.owner.length / step));
+        for (let seg = 0, o = 0; seg < L.owner.length; seg += step) idx[o++] = 2 * seg, idx[o++] = 2 * seg + 1;
+        const cg = new THREE.BufferGeometry();
+        for (const name of Object.keys(g.attributes)) cg.setAttribute(name, g.attributes[name]);
+        cg.setIndex(new THREE.BufferAttribute(idx, 1));
+        const coarse = new THREE.LineSegments(cg, m);
+        coarse.frustumCulled = false;
+        coarse.visible = false;
+        scene.add(coarse);
+        coarseLines.push([lines, coarse]);
+      }
       const pg = new THREE.BufferGeometry();
       pg.setAttribute('position', position);  // shared: uploaded once
       pg.setAttribute('color', new THREE.BufferAttribute(L.pick, 3, true));
@@ -458,8 +473,22 @@
       pending = true;
       global.requestAnimationFrame(render);
     }
+    // a redraw slower than 80 ms while turning: the coarse lines until the pointer is released
+    let interacting = false, coarse = false, lastRender = 0;
+    const useCoarse = (on) => {
+      coarse = on;
+      for (const [full, c] of coarseLines) full.visible = !on, c.visible = on;
+    };
+    controls.addEventListener('start', () => { interacting = true; lastRender = 0; });
+    controls.addEventListener('end', () => {
+      interacting = false;
+      if (coarse) useCoarse(false), requestRender();
+    });
     function render() {
       pending = false;
+      const now = performance.now();
+      if (interacting && coarseLines.length && !coarse && lastRender && now - lastRender > 80) useCoarse(true);
+      lastRender = now;
       const wpp = (camera.top - camera.bottom) / camera.zoom / Math.max(renderer.domElement.clientHeight, 1);
       for (const m of materials) if (m.isLineDashedMaterial) m.dashSize = 6 * wpp, m.gapSize = 4 * wpp;
       renderer.setRenderTarget(null);
@@ -563,7 +592,7 @@
           moveCount: n,
           kinds: {rapid: moveCounts[0], feed: moveCounts[1], arc: moveCounts[2]},
           segments: {rapid: counts[0], feed: counts[1], arc: counts[2]},
-          view: viewName, hovered,
+          view: viewName, hovered, coarse,
           camera: {position: camera.position.toArray(), zoom: camera.zoom, target: controls.target.toArray()},
         };
       },

@@ -39,7 +39,21 @@ const {chromium} = require(path.resolve(modules, 'playwright-core'));
     return {responseEndMs: nav.responseEnd, domInteractiveMs: nav.domInteractive, moves: B.moveCount, segments: B.segments, timing: B.timing, frameMedianMs: frames[5], pickMs: performance.now() - t,
             renderer: p.renderer.getContext().getParameter(p.renderer.getContext().RENDERER)};
   });
-  console.log(JSON.stringify({file, bytes: fs.statSync(file).size, loadedMs: loaded, ...r}, null, 1));
+  // a drag: past a slow redraw the page draws its coarse lines until the button is released
+  const box = await page.locator('canvas').boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  const steps = [];
+  for (let i = 1; i <= 6; i++) {
+    const t = Date.now();
+    await page.mouse.move(box.x + box.width / 2 + 20 * i, box.y + box.height / 2);
+    await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+    steps.push({ms: Date.now() - t, coarse: await page.evaluate(() => window.ncurveBackplot.plot.state().coarse)});
+  }
+  await page.mouse.up();
+  r.dragSteps = steps;
+  r.coarseAfterRelease = await page.evaluate(() => window.ncurveBackplot.plot.state().coarse);
+  console.log(JSON.stringify({file, bytes: fs.statSync(file).size, loadedMs: loaded, ...r}));
   await context.close();
   fs.rmSync(profile, {recursive: true, force: true});
 })();
