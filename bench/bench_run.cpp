@@ -104,7 +104,7 @@ BENCHMARK(BM_G81Holes100k)->Unit(benchmark::kMillisecond);
 
 void BM_G65Calls(benchmark::State& state) {
   std::string text =
-      "O1002\n#1=0\nWHILE [#1 LT 100000] DO1\nG65 P9100 A#1 B2. X[#1*0.001]\n#1=#1+1\nEND1\nM30\n"
+      "O1002\n#1=0\nWHILE [#1 LT 100000] DO1\nG65 P9100 A#1 B0.002 X[#1*0.001]\n#1=#1+1\nEND1\nM30\n"
       "O9100\n#3=#1*#2\nG01 X#24 Y#3 F500.\nM99\n";
   std::uint64_t blocks = 0;
   for (auto _ : state) blocks += run_text(text).blocks;

@@ -1,42 +1,54 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with clang and fuzzes the parser and interpreter for SECONDS (default 60),
-# then the curve expressions (compile, differentiate, print, check) for half as long, and the
-# cutter-profile and point-list files for a quarter.
+# Builds the libFuzzer targets (clang, in build-sanitize/ with the sanitizer tests: see
+# configure_sanitize in packages.sh) and fuzzes for about SECONDS (default 60), two targets at a
+# time: the parser and interpreter with the CSV, JSON Lines and G-code writers for three quarters of
+# SECONDS, then the cutter-profile and point-list files for a quarter; beside them the curve
+# expressions for half, the machine profiles and the command line for a quarter each. A crash,
+# undefined behaviour, a leak, a time-out (10 s an input) or 2 GB of memory fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 source scripts/packages.sh
-ensure_packages "${tool_packages[@]}" "${fuzz_packages[@]}"
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNCURVE_FUZZ=ON \
-  -DNCURVE_TESTS=OFF -DNCURVE_BENCH=OFF >/dev/null
-cmake --build build-fuzz --target fuzz_run fuzz_curve fuzz_rows
+ensure_packages "${tool_packages[@]}" "${test_packages[@]}" "${fuzz_packages[@]}"
+configure_sanitize
+cmake --build build-sanitize --target fuzz_run fuzz_curve fuzz_rows fuzz_profile fuzz_cli
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+dir=build-sanitize/fuzz
 # fuzz TARGET CORPUS SECONDS MAX_LEN: runs one target, prints its totals, or the failing input's log
 fuzz() {
-  local log="build-fuzz/$1.log"
-  if ./build-fuzz/fuzz/"$1" "$2" -max_total_time="$3" -max_len="$4" -timeout=10 -rss_limit_mb=2048 \
-      -print_final_stats=1 >"$log" 2>&1; then
-    grep -E "^Done|^stat::(number_of_executed_units|peak_rss_mb)" "$log" || true
+  local log="$dir/$1.log"
+  if (cd "$dir" && ./"$1" "corpus-$2" -max_total_time="$3" -max_len="$4" -timeout=10 -rss_limit_mb=2048 \
+        -print_final_stats=1 >"$1.log" 2>&1); then
+    echo "$1: $(grep -E "^Done" "$log")"
   else
     tail -n 60 "$log"
-    echo "$1: failure; the input that caused it is named above (crash-*, timeout-* or leak-*)"
-    exit 1
+    echo "$1: failure; the input that caused it is named above (crash-*, timeout-*, leak-* in $dir)"
+    return 1
   fi
 }
 
-corpus=build-fuzz/corpus
-mkdir -p "$corpus"
-cp tests/programs/*.nc examples/*.nc macros/*.nc "$corpus"/
-fuzz fuzz_run "$corpus" "$seconds" 8192
+mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,cli}
+cp tests/programs/*.nc examples/*.nc macros/*.nc "$dir/corpus-programs/"
+printf 'CX+[R0+A*t/360]*COS[t]\nCY+[R0+A*t/360]*SIN[t]\n0' >"$dir/corpus-curves/spiral"
+printf 'A/COS[t]\n0\nA*TAN[t]' >"$dir/corpus-curves/hyperbola"
+printf '63*SIN[t]-7.5*SIN[6*t]+20*SIN[ATAN[SIN[5*t]]/[1.4-COS[5*t]]-t]\nSQRT[ABS[t]]*EXP[t/90]\nLN[t+1]' \
+  >"$dir/corpus-curves/rotor"
+cp examples/*.csv "$dir/corpus-rows/"
+printf '100,-5,-20\n100,5\n' >"$dir/corpus-rows/dish"
+cp profiles/*.toml tests/programs/*.toml "$dir/corpus-profiles/"
+# command lines: arguments separated by NUL bytes
+printf 'gen\x00ellipse\x00--tol\x000.01\x00--form\x00cycle' >"$dir/corpus-cli/gen"
+printf 'analyze\x00circle\x00--radius\x0050\x00--feed\x001000\x00--kv\x0030,25' >"$dir/corpus-cli/circle"
+printf 'analyze\x00x.nc\x00--servo\x00--curve\x00expr\x00--x\x00t\x00--t\x000:1' >"$dir/corpus-cli/analyze"
+printf 'helicoid\x00--example\x00seed004\x00--step\x001\x00--centre-distance\x00200:300:10' >"$dir/corpus-cli/helicoid"
+printf 'run\x00x.nc\x00--format\x00csv\x00--arc-tol\x000.01\x00--param\x006050=102' >"$dir/corpus-cli/run"
 
-curves=build-fuzz/corpus-curves
-mkdir -p "$curves"
-printf 'CX+[R0+A*t/360]*COS[t]\nCY+[R0+A*t/360]*SIN[t]\n0' >"$curves/spiral"
-printf 'A/COS[t]\n0\nA*TAN[t]' >"$curves/hyperbola"
-printf '63*SIN[t]-7.5*SIN[6*t]+20*SIN[ATAN[SIN[5*t]]/[1.4-COS[5*t]]-t]\nSQRT[ABS[t]]*EXP[t/90]\nLN[t+1]' >"$curves/rotor"
-fuzz fuzz_curve "$curves" "$(( (seconds + 1) / 2 ))" 512
-
-rows=build-fuzz/corpus-rows
-mkdir -p "$rows"
-cp examples/*.csv "$rows"/
-printf '100,-5,-20\n100,5\n' >"$rows/dish"
-fuzz fuzz_rows "$rows" "$(( (seconds + 3) / 4 ))" 4096
+quarter=$(( (seconds + 3) / 4 ))
+# two streams on the two cores: the interpreter and the point lists; the curves, profiles and command line
+{ fuzz fuzz_run programs "$(( seconds - quarter ))" 8192 && fuzz fuzz_rows rows "$quarter" 4096; } &
+first=$!
+status=0
+{ fuzz fuzz_curve curves "$(( (seconds + 1) / 2 ))" 512 && fuzz fuzz_profile profiles "$quarter" 4096 &&
+  fuzz fuzz_cli cli "$quarter" 512; } || status=1
+wait "$first" || status=1
+exit "$status"

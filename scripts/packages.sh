@@ -16,3 +16,12 @@ ensure_packages() {
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
   fi
 }
+# The sanitizer build (build-sanitize/), one for test.sh --sanitize and fuzz.sh: clang with
+# AddressSanitizer and UndefinedBehaviorSanitizer (float-cast-overflow included, no recovery, libstdc++
+# assertions) and libFuzzer's coverage, line tables for the stack traces. Both scripts configure it
+# alike, so the second builds only what the first has not.
+configure_sanitize() {
+  CC=clang CXX=clang++ cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
+    -DNCURVE_SANITIZE=ON -DNCURVE_FUZZ=ON -DNCURVE_TESTS=ON -DNCURVE_BENCH=OFF >/dev/null
+}

@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
-# Installs the test packages, builds ncurve with its tests and benchmarks, and runs every test.
-# With --sanitize: the same tests under AddressSanitizer and UndefinedBehaviorSanitizer.
+# Installs the test packages, builds ncurve with its tests and benchmarks in build/ (beside the tool
+# that setup.sh built there), and runs every test.
+# With --sanitize: the same tests under AddressSanitizer and UndefinedBehaviorSanitizer (clang,
+# build-sanitize/, shared with fuzz.sh: see configure_sanitize in packages.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/packages.sh
-ensure_packages "${tool_packages[@]}" "${test_packages[@]}"
-dir=build
-flags=(-DCMAKE_BUILD_TYPE=Release -DNCURVE_TESTS=ON -DNCURVE_BENCH=ON)
 if [ "${1:-}" = "--sanitize" ]; then
-  dir=build-asan
-  flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DNCURVE_SANITIZE=ON -DNCURVE_TESTS=ON -DNCURVE_BENCH=OFF)
+  ensure_packages "${tool_packages[@]}" "${test_packages[@]}" "${fuzz_packages[@]}"
+  configure_sanitize
+  cmake --build build-sanitize
+  # undefined behaviour stops the program (-fno-sanitize-recover); leaks are reported
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --test-dir build-sanitize --output-on-failure -j2
+  exit
 fi
-cmake -S . -B "$dir" -G Ninja "${flags[@]}" >/dev/null
-cmake --build "$dir"
-ctest --test-dir "$dir" --output-on-failure -j2
+ensure_packages "${tool_packages[@]}" "${test_packages[@]}"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DNCURVE_TESTS=ON -DNCURVE_BENCH=ON >/dev/null
+cmake --build build
+ctest --test-dir build --output-on-failure -j2

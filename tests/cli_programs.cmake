@@ -1,6 +1,6 @@
 # Runs the ncurve command on each tests/programs/*.nc that has an expected output beside it
 # (NAME.expected.csv, NAME.expected.txt for the exit code and alarm) and compares.
-# NAME.toml is its machine profile and NAME.args holds extra options, one per line.
+# NAME.toml is its machine profile and NAME.args holds extra options, one per line (for both).
 file(GLOB programs "${SRC}/tests/programs/*.nc")
 set(failures 0)
 foreach(prog ${programs})
@@ -24,7 +24,7 @@ foreach(prog ${programs})
     endif()
   endif()
   if(EXISTS "${dir}/${name}.expected.txt")
-    execute_process(COMMAND ${NCURVE} run ${prog} ${machine} --lib ${SRC}/macros
+    execute_process(COMMAND ${NCURVE} run ${prog} ${machine} --lib ${SRC}/macros ${extra}
                     OUTPUT_VARIABLE out RESULT_VARIABLE rc)
     file(STRINGS "${dir}/${name}.expected.txt" lines)
     foreach(line ${lines})

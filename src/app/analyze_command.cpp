@@ -12,6 +12,9 @@
 #include "motion/circle.hpp"
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
+#include "base/bounds.hpp"
+#include "base/progress.hpp"
+#include "report/feed_trace.hpp"
 #include "report/motion_plots.hpp"
 #include "app/analyze_shape.hpp"
 #include "app/cli_units.hpp"
@@ -135,55 +138,19 @@ int circle_command(const AnalyzeArgs& a) {
   return 0;
 }
 
-struct BlockRecord {
-  double s0, length, programmed, v_in, v_peak, v_out, up, down;
-  bool starved;
-};
-
-std::vector<report::FeedSample> feed_samples(const std::vector<BlockRecord>& blocks) {
-  std::vector<report::FeedSample> out;
-  if (blocks.empty()) return out;
-  const double total = blocks.back().s0 + blocks.back().length;
-  const std::size_t bins = 3000;
-  if (blocks.size() * 4 <= bins) {
-    for (const auto& b : blocks) {
-      out.push_back({b.s0, b.programmed, b.v_in, b.starved});
-      out.push_back({b.s0 + b.up, b.programmed, b.v_peak, b.starved});
-      out.push_back({b.s0 + b.length - b.down, b.programmed, b.v_peak, b.starved});
-      out.push_back({b.s0 + b.length, b.programmed, b.v_out, b.starved});
-    }
-    return out;
-  }
-  // many blocks: per bin of path length, the lowest feed reached (dips stay visible)
-  std::vector<report::FeedSample> bin(bins + 1);
-  std::vector<bool> used(bins + 1, false);
-  for (const auto& b : blocks) {
-    std::size_t k = static_cast<std::size_t>(b.s0 / std::max(total, 1e-12) * bins);
-    k = std::min(k, bins);
-    double low = std::min({b.v_in, b.v_peak, b.v_out});
-    if (!used[k]) bin[k] = {total * k / bins, b.programmed, low, b.starved};
-    else {
-      bin[k].reached = std::min(bin[k].reached, low);
-      bin[k].programmed = std::max(bin[k].programmed, b.programmed);
-      bin[k].starved = bin[k].starved || b.starved;
-    }
-    used[k] = true;
-  }
-  for (std::size_t k = 0; k <= bins; ++k)
-    if (used[k]) out.push_back(bin[k]);
-  return out;
-}
-
 int program_command(const AnalyzeArgs& a) {
   RunSetup setup;
   try {
     setup = prepare_run(a.in);
     apply_servo_options(setup.profile, a);
   } catch (const std::exception& e) {
-    std::cerr << "ncurve analyze: " << e.what() << "\n";
+    std::cerr << "ncurve analyze: " << nc::escape_controls(e.what()) << "\n";
     return 2;
   }
   for (const auto& d : setup.problems) std::cerr << nc::format(d) << "\n";
+  if (setup.problems_left_out) std::cerr << "... and " << setup.problems_left_out << " more text problems not shown\n";
+  if (setup.unchecked_lines)
+    std::cerr << "... and " << setup.unchecked_lines << " lines after them that can never run, not checked\n";
   const machine::MachineProfile& profile = setup.profile;
   std::optional<geom::Curve> curve;
   if (a.curve.name.empty() && (!a.shape_csv.empty() || !a.shape_plot.empty() || a.tol > 0)) {
@@ -218,8 +185,7 @@ int program_command(const AnalyzeArgs& a) {
   }
   std::optional<motion::ServoSim> sim;
   if (a.servo) sim.emplace(profile);
-  std::vector<BlockRecord> records;
-  double cut_length = 0;
+  report::FeedTrace trace;
   motion::BlockTime slowest_wait{};
   motion::Planner planner(profile, [&](const motion::BlockTime& b) {
     if (csv)
@@ -227,28 +193,41 @@ int program_command(const AnalyzeArgs& a) {
                          b.move.file ? b.move.file->name() : "", b.move.line, machine::to_string(b.move.kind), b.length,
                          b.programmed, b.cap, motion::to_string(b.limit), b.v_in, b.v_peak, b.v_out, b.start, b.seconds,
                          b.wait, b.settle, b.starved ? 1 : 0);
-    if (sim) sim->on_block(b);
-    if (b.wait > slowest_wait.wait) slowest_wait = b;
-    if (!a.plot.empty() && b.move.kind != machine::MoveKind::rapid) {
-      records.push_back({cut_length, b.length, b.programmed, b.v_in, b.v_peak, b.v_out,
-                         b.profile.up.distance(b.profile.up.duration()),
-                         b.profile.down.distance(b.profile.down.duration()), b.starved});
-      cut_length += b.length;
+    if (sim) {
+      if ((b.start + b.seconds) / profile.servo.period > a.max_ticks)
+        throw base::BoundExceeded(fmt::format(
+            "--servo: the program runs longer than {:.3g} servo periods of {:g} ms ({:.4g} s of machine time), at {}: "
+            "raise --max-ticks",
+            a.max_ticks, profile.servo.period * 1000, a.max_ticks * profile.servo.period, where(b.move)));
+      sim->on_block(b);
     }
+    if (b.wait > slowest_wait.wait) slowest_wait = b;
+    if (!a.plot.empty() && b.move.kind != machine::MoveKind::rapid)
+      trace.add({b.length, b.programmed, b.v_in, b.v_peak, b.v_out, b.profile.up.distance(b.profile.up.duration()),
+                 b.profile.down.distance(b.profile.down.duration()), b.starved});
   });
   // The contour measured against the curve: feed moves (lines and arcs), and for a plane curve on a
   // mill only those that stay at one Z (plunges and retracts are not part of the contour).
   struct Tee final : machine::MoveSink {
     machine::MoveSink* planner = nullptr;
     std::vector<machine::Move>* contour = nullptr;
+    std::size_t max_moves = 0;
     bool plane_only = false;
+    std::uint64_t moves = 0;
+    base::Progress progress{"ncurve analyze", "moves"};
     void on_move(const machine::Move& m) override {
+      progress.at(++moves);
       planner->on_move(m);
       if (!contour || (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc)) return;
       if (plane_only && m.end[2] != m.start[2]) return;
+      if (contour->size() >= max_moves)
+        throw base::BoundExceeded(fmt::format("--curve keeps every contour move to measure it: more than {}, at {}: "
+                                              "raise --max-moves",
+                                              max_moves, where(m)));
       contour->push_back(m);
     }
   } tee;
+  tee.max_moves = a.max_moves;
   std::vector<machine::Move> contour;
   tee.planner = &planner;
   if (curve) {
@@ -256,8 +235,14 @@ int program_command(const AnalyzeArgs& a) {
     tee.plane_only = !profile.lathe() && curve->planar_z();
   }
   machine::Interpreter interp(profile, *setup.lib, setup.options);
-  machine::RunResult result = interp.run(tee);
-  planner.finish();
+  machine::RunResult result;
+  try {
+    result = interp.run(tee);
+    planner.finish();
+  } catch (const base::BoundExceeded& e) {  // (the --blocks file is not written)
+    std::cerr << "ncurve analyze: " << e.what() << "\n";
+    return 2;
+  }
   if (blocks_file) {
     try {
       blocks_file->commit();
@@ -293,7 +278,7 @@ int program_command(const AnalyzeArgs& a) {
   if (!a.plot.empty()) {
     std::string title = fmt::format("{}: feed along the cutting path, cycle time {:.2f} s ({})", a.in.program,
                                     t.seconds, profile.name);
-    if (!save(a.plot, report::feed_svg(feed_samples(records), title), {a.in.program})) return 2;
+    if (!save(a.plot, report::feed_svg(trace.samples(), title), {a.in.program})) return 2;
   }
   if (a.json) {
     nlohmann::json j;
@@ -380,6 +365,14 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
       ->check(units::gain_per_s());
   cmd->add_option("--feed-forward", a.feed_forward, "velocity feed-forward coefficient 0..1 over the profile's")
       ->check(units::ratio(units::at_least(0), units::at_most(1)));
+  cmd->add_option("--max-moves", a.max_moves,
+                  "--curve: the most contour moves kept for measuring (about 250 bytes each), default 500000; more is "
+                  "refused")
+      ->check(units::number("a count", "", units::at_least(1), units::at_most(1e9), true));
+  cmd->add_option("--max-ticks", a.max_ticks,
+                  "--servo: the most servo periods simulated (about 60 ns each), default 50000000; a longer program "
+                  "is refused")
+      ->check(units::number("a count", "", units::at_least(1), units::at_most(1e12), true));
   cmd->allow_extras();
   cmd->add_option("--curve", a.curve.name,
                   "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "

@@ -11,6 +11,7 @@
 #include "app/curve_args.hpp"
 #include "app/save.hpp"
 #include "app/shipped.hpp"
+#include "base/bounds.hpp"
 #include "gen/generate.hpp"
 #include "machine/profile.hpp"
 
@@ -96,6 +97,9 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
   gen->add_flag("--inch", a.inch,
                 "write the program in inches (G20; coordinates and feeds in inches on the inch increment); the curve, "
                 "--tol and the other lengths stay in mm, --feed in mm/min or mm/rev, --css in m/min");
+  gen->add_option("--max-moves", a.max_moves,
+                  "the most lines and arcs the program may make (all depth passes), default 200000; more is refused")
+      ->check(whole(1, 100000000));
   gen->add_option("--plot", a.plot, "SVG plot of the curve, the path and the deviation along it");
   gen->add_option("-o,--output", a.output, "write the program here (statistics go to the terminal)");
   gen->add_flag("--json", a.json, "statistics as JSON");
@@ -134,6 +138,7 @@ int gen_command(const GenArgs& a) {
     o.max_rpm = a.max_rpm;
     o.coolant = a.coolant;
     o.inch = a.inch;
+    o.max_moves = static_cast<std::size_t>(a.max_moves);
     gen::check_options(o);
     if (a.macro_only && o.form != gen::Form::cycle) throw std::runtime_error("--macro-only is for --form cycle");
     curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to, "ncurve gen", long_options(*a.command)},
@@ -155,6 +160,9 @@ int gen_command(const GenArgs& a) {
   gen::Result r;
   try {
     r = gen::generate(*curve, o);
+  } catch (const base::BoundExceeded& e) {
+    std::cerr << "ncurve gen: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 1;

@@ -35,6 +35,7 @@ struct GenArgs {
   bool spindle_ccw = false;
   int css = 0;
   int max_rpm = 0;
+  long max_moves = 200000;
   bool coolant = false;
   bool inch = false;
   CLI::App* command = nullptr;

@@ -14,8 +14,16 @@
 #include "io/number_rows.hpp"
 #include "app/cli_units.hpp"
 #include "app/save.hpp"
+#include "base/progress.hpp"
 
 namespace ncurve::app {
+namespace {
+// Bounds on one command's work (docs/helicoid.md): rows of the table (psi steps, or centre
+// distances; a robust step takes about 7 ms) and lattice points evaluated by --method brute
+// (about 0.2 us each).
+constexpr double kMostSteps = 20000;
+constexpr double kMostBrutePoints = 1e9;
+}  // namespace
 
 void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   CLI::App* h = app.add_subcommand("helicoid", "disc-cutter locations for a helical surface (the helicoid paper's method)");
@@ -179,6 +187,12 @@ int helicoid_command(const HelicoidArgs& a) {
     lattice.s_step = a.s_step;
     double reach = std::acos(std::max(-1.0, (diameter / 2 - depth - flank) / (diameter / 2))) * 180 / std::numbers::pi;
     lattice.alpha_max = a.alpha_range.value_or(std::min(89.0, reach + 2));
+    if (const std::int64_t points = lattice.size(cutter.length()); points > kMostLatticePoints)
+      throw std::runtime_error(fmt::format(
+          "the search lattice (+-{:g} deg by {:g} deg around the cutter, {:g} mm of profile by {:g} mm) has {:.3g} "
+          "points, more than {:.3g}: raise --alpha-step or --s-step (or lower --alpha-range)",
+          lattice.alpha_max, lattice.alpha_step, cutter.length(), lattice.s_step, static_cast<double>(points),
+          static_cast<double>(kMostLatticePoints)));
     search.emplace(work, cutter, setting, lattice);
     if (search->setting().start_distance < work.profile.r_max() + cutter.outer_radius() - 1e-9 &&
         search->deepest_penetration(0, search->setting().start_distance) > 1e-6)
@@ -187,10 +201,9 @@ int helicoid_command(const HelicoidArgs& a) {
     double from = a.from.value_or(0), to = a.to.value_or(360.0 / work.lobes);
     if (to < from) throw std::runtime_error(fmt::format("--to ({:g} deg) is before --from ({:g} deg)", to, from));
     const double steps = std::floor((to - from) / a.step + 1e-9);
-    constexpr double kMostSteps = 1e6;
-    if (steps > kMostSteps)
+    if (steps + 1 > kMostSteps)
       throw std::runtime_error(fmt::format("psi from {:g} to {:g} deg in steps of {:g} deg is {:.3g} steps, more than {:.0f}: "
-                                           "raise --step", from, to, a.step, steps, kMostSteps));
+                                           "raise --step", from, to, a.step, steps + 1, kMostSteps));
     const int n = static_cast<int>(steps);
     for (int i = 0; i <= n; ++i) psis.push_back(from + i * a.step);
     if ((a.final_motion != "x") == a.centre_distance.empty() || (a.final_motion == "x" && a.start_z))
@@ -221,12 +234,23 @@ int helicoid_command(const HelicoidArgs& a) {
       if (v.size() == 1) {
         centre_distances.push_back(v[0]);
       } else {
-        int count = static_cast<int>(std::floor((v[1] - v[0]) / v[2] + 1e-9));
-        for (int i = 0; i <= count; ++i) centre_distances.push_back(v[0] + i * v[2]);
+        const double count = std::floor((v[1] - v[0]) / v[2] + 1e-9);
+        if (count + 1 > kMostSteps)
+          throw std::runtime_error(fmt::format("--centre-distance '{}' is {:.3g} distances, more than {:.0f}: a larger STEP",
+                                               a.centre_distance, count + 1, kMostSteps));
+        for (int i = 0; i <= static_cast<int>(count); ++i) centre_distances.push_back(v[0] + i * v[2]);
         psis = {psis.front()};
       }
     }
     job.method = method_from_name(a.method);
+    // brute force evaluates every lattice point at every step (about 0.2 us each)
+    const double rows = static_cast<double>(psis.size() * std::max<std::size_t>(1, centre_distances.size()));
+    const double evaluations = rows * static_cast<double>(lattice.size(cutter.length()));
+    if (job.method == Method::brute && evaluations > kMostBrutePoints)
+      throw std::runtime_error(fmt::format(
+          "--method brute over {:.0f} steps of {:.3g} lattice points is {:.3g} evaluations, more than {:.3g}: raise "
+          "--step, --alpha-step or --s-step, or use --method robust",
+          rows, static_cast<double>(lattice.size(cutter.length())), evaluations, kMostBrutePoints));
     job.step = a.step;
     const std::string cutter_text = general ? fmt::format("cutter {} (D{:g})", a.cutter_profile, diameter)
                                             : fmt::format("cutter D{:g} r{:g} {:g} deg", diameter, corner, angle);
@@ -237,14 +261,18 @@ int helicoid_command(const HelicoidArgs& a) {
     return 2;
   }
   try {
+    base::Progress progress("ncurve helicoid", "contacts",
+                            a.final_motion != "x" ? psis.size() * centre_distances.size() : psis.size());
     if (a.final_motion != "x") {
       for (double distance : centre_distances) {
         AxialMotion motion{distance, a.start_z, a.final_motion == "z+" ? 1 : -1};
-        for (auto& c : search->run_axial(psis, job.method, motion)) job.contacts.push_back(c);
+        const std::size_t before = job.contacts.size();
+        for (auto& c : search->run_axial(psis, job.method, motion, [&](std::size_t n) { progress.at(before + n); }))
+          job.contacts.push_back(c);
       }
       job.final_motion = a.final_motion;
     } else {
-      job.contacts = search->run(psis, job.method);
+      job.contacts = search->run(psis, job.method, [&](std::size_t n) { progress.at(n); });
     }
     for (const auto& c : job.contacts) {
       if (c.normal_angle > 1e-3)

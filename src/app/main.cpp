@@ -13,6 +13,7 @@
 #include "app/analyze_command.hpp"
 #include "app/run_plot.hpp"
 #include "app/run_setup.hpp"
+#include "app/cli.hpp"
 #include "app/cli_checks.hpp"
 #include "app/cli_docs.hpp"
 #include "app/shipped.hpp"
@@ -34,22 +35,12 @@ std::string version_text() {
                      dir ? *dir : std::string("not found beside the binary"));
 }
 
-struct RunArgs {
-  app::RunInputs in;
-  std::string format = "summary";
-  double arc_tol = 0.001;
-  std::string output;
-  bool json = false;
-  std::string plot;  // --plot F.svg
-  std::string view;  // --view xy|xz|yz|iso
-};
-
-int run_command(const RunArgs& a) {
+int run_command(const app::RunArgs& a) {
   app::RunSetup setup;
   try {
     setup = app::prepare_run(a.in);
   } catch (const std::exception& e) {
-    std::cerr << "ncurve run: " << e.what() << "\n";
+    std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
     return 2;
   }
   const machine::MachineProfile& profile = setup.profile;
@@ -70,7 +61,7 @@ int run_command(const RunArgs& a) {
     try {
       file.emplace(output, inputs);
     } catch (const io::OutputError& e) {
-      std::cerr << "ncurve run: error: " << e.what() << "\n";
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
       return 2;
     }
   }
@@ -103,7 +94,9 @@ int run_command(const RunArgs& a) {
   rep.profile = &profile;
   rep.result = &result;
   rep.stats = report::source_stats(lib, lib.main()->file.get());
-  rep.text_problems = setup.problems;
+  rep.text_problems = std::move(setup.problems);
+  rep.text_problems_left_out = setup.problems_left_out;
+  rep.unchecked_lines = setup.unchecked_lines;
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
   if (plot && !app::save_plot(a.plot, a.view, *plot, interp, rep.source, lib)) return 2;
   if (a.format == "summary") (plot_out ? std::cerr : out) << summary;
@@ -111,7 +104,7 @@ int run_command(const RunArgs& a) {
     try {
       file->commit();
     } catch (const io::OutputError& e) {
-      std::cerr << "ncurve run: error: " << e.what() << "\n";
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
       return 2;
     }
   }
@@ -124,38 +117,13 @@ int run_command(const RunArgs& a) {
 }  // namespace
 
 int ncurve_main(int argc, char** argv) {
-  CLI::App app{"ncurve: run, generate and analyse FANUC Custom Macro B programs for non-circular curves"};
-  app.require_subcommand(1);
+  CLI::App app{app::kDescription};
   app.set_version_flag("--version", version_text());
-  RunArgs a;
-  CLI::App* run = app.add_subcommand("run", "execute a part program as a FANUC control would and report the tool path");
-  app::add_run_inputs(run, a.in, true);
-  run->add_option("--format", a.format, "output: summary (default), jsonl, csv or gcode")
-      ->check(CLI::IsMember({"summary", "jsonl", "csv", "gcode"}));
-  run->add_option("--arc-tol", a.arc_tol, "csv: chord error allowed when arcs are written as points, mm")
-      ->check(app::positive_mm());
-  run->add_option("-o,--output", a.output, "write the output to this file (the summary then goes to the terminal)");
-  run->add_flag("--json", a.json, "summary as JSON");
-  app::add_plot_options(run, a.plot, a.view);
-  app::GenArgs g;
-  app::add_gen_command(app, g);
-  app::HelicoidArgs h;
-  app::add_helicoid_command(app, h);
-  app::AnalyzeArgs an;
-  app::add_analyze_command(app, an);
-  CLI::App* completion = app.add_subcommand("completion", "print the bash completion script: source <(ncurve completion)");
-  CLI::App* man = app.add_subcommand("man", "print the manual page (roff)")->group("");
-
-  if (argc > 1 && argv[1][0] != '-') {
-    std::vector<std::string> known;
-    for (const auto* c : app.get_subcommands([](const CLI::App*) { return true; })) known.push_back(c->get_name());
-    if (std::find(known.begin(), known.end(), argv[1]) == known.end()) {
-      std::string near = app::nearest(argv[1], known);
-      std::cerr << fmt::format("ncurve: '{}' is not a command{}; the commands are run, gen, analyze, helicoid and "
-                               "completion (ncurve --help)\n",
-                               argv[1], near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near));
-      return 2;
-    }
+  app::Commands c;
+  app::add_commands(app, c);
+  if (const std::string why = app::not_a_command(app, argc, argv); !why.empty()) {
+    std::cerr << why;
+    return 2;
   }
   try {
     app.parse(argc, argv);
@@ -163,18 +131,18 @@ int ncurve_main(int argc, char** argv) {
     int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
-  if (completion->parsed()) {
+  if (c.completion->parsed()) {
     std::cout << app::bash_completion(app);
     return 0;
   }
-  if (man->parsed()) {
+  if (c.man->parsed()) {
     std::cout << app::man_page(app, NCURVE_VERSION);
     return 0;
   }
-  if (run->parsed()) return run_command(a);
-  if (g.command->parsed()) return app::gen_command(g);
-  if (h.command->parsed()) return app::helicoid_command(h);
-  if (an.command->parsed()) return app::analyze_command(an);
+  if (c.run_command->parsed()) return run_command(c.run);
+  if (c.gen.command->parsed()) return app::gen_command(c.gen);
+  if (c.helicoid.command->parsed()) return app::helicoid_command(c.helicoid);
+  if (c.analyze.command->parsed()) return app::analyze_command(c.analyze);
   return 2;
 }
 

@@ -72,13 +72,19 @@ void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
       ->allow_extra_args(false);
   cmd->add_flag("--nose-centre", in.nose_centre,
                "lathe: write the tool-nose centre's path, not the imaginary tip's that the control commands");
-  cmd->add_option("--max-steps", in.max_steps, "stop a program that has not ended after this many blocks")
+  cmd->add_option("--max-steps", in.max_steps,
+                  "stop a program that has not ended after this many steps (a block is one, an expression one "
+                  "an operation; default 200000000)")
       ->check(whole(1, 1'000'000'000'000'000L));
+  cmd->add_option("--max-seconds", in.max_seconds,
+                  "stop a program that has not ended after this many seconds of running (default 60; 0: no limit)")
+      ->check(non_negative("a time", "s"));
 }
 
 RunSetup prepare_run(const RunInputs& in) {
   RunSetup s;
   s.options.max_steps = in.max_steps;
+  s.options.max_seconds = in.max_seconds;
   s.options.nose_centre = in.nose_centre;
   for (const auto& v : in.sets) s.options.presets.push_back(parse_set(v));
   if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
@@ -95,6 +101,12 @@ RunSetup prepare_run(const RunInputs& in) {
   for (const auto& dir : in.libs) {
     auto more = s.lib->add_folder(dir);
     s.problems.insert(s.problems.end(), more.begin(), more.end());
+  }
+  s.problems_left_out = s.lib->problems_left_out();
+  s.unchecked_lines = s.lib->unchecked_lines();
+  if (s.problems.size() > nc::kMaxDiagnostics) {  // the first hundred of all files together
+    s.problems_left_out += s.problems.size() - nc::kMaxDiagnostics;
+    s.problems.resize(nc::kMaxDiagnostics);
   }
   return s;
 }

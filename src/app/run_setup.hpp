@@ -20,18 +20,21 @@ struct RunInputs {
   std::vector<std::string> sets;    // "#100=5"
   std::vector<std::string> params;  // "6050=102"
   std::uint64_t max_steps = machine::RunOptions{}.max_steps;
+  double max_seconds = machine::RunOptions{}.max_seconds;
   bool nose_centre = false;
 };
 
 struct RunSetup {
   machine::MachineProfile profile = machine::default_mill();
   std::unique_ptr<machine::ProgramLibrary> lib = std::make_unique<machine::ProgramLibrary>();
-  std::vector<nc::Diagnostic> problems;  // syntax found while reading the programs
+  std::vector<nc::Diagnostic> problems;  // syntax found while reading the programs: the first 100
+  std::size_t problems_left_out = 0;     // and how many more there are
+  std::size_t unchecked_lines = 0;       // lines past those that no jump can reach, not parsed
   machine::RunOptions options;
 };
 
 // The options naming them: program (required unless program_required is false), --machine, --lib,
-// --param, --set, --max-steps.
+// --param, --set, --max-steps, --max-seconds.
 void add_run_inputs(CLI::App* command, RunInputs& in, bool program_required);
 // Throws std::runtime_error with a message for the user (bad option, profile or file).
 RunSetup prepare_run(const RunInputs& in);

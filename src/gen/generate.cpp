@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "base/bounds.hpp"
 #include "base/memory.hpp"
 #include "base/parallel.hpp"
 #include "gen/forms.hpp"
@@ -77,6 +78,14 @@ geom::Plane plane_of(const machine::MachineProfile& p) {
   return geom::Plane{0, 1};
 }
 
+// Refusal of a program beyond Options::max_moves.
+static base::BoundExceeded too_many_moves(const Options& o) {
+  return base::BoundExceeded(fmt::format(
+      "the program needs more than {} lines or arcs{} within {} mm: raise --max-moves (or --tol, or give a shorter "
+      "range of t)",
+      o.max_moves, o.step_down > 0 ? " (all depth passes)" : "", o.tol));
+}
+
 namespace detail {
 
 // The round trip, taking the measurement of a speculation (may be null) where it fits.
@@ -108,6 +117,7 @@ Stats detail::round_trip(const std::string& text, const geom::Curve& curve, cons
     std::uint32_t first, last;
     bool spare_core = base::cores() > 1;
     std::vector<Pass> passes;
+    std::size_t moves = 0;
     bool between = true;
     Keep(const geom::Curve& c, const Options& options, std::uint32_t first_line, std::uint32_t last_line)
         : curve(c), o(options), first(first_line), last(last_line) {}
@@ -126,6 +136,7 @@ Stats detail::round_trip(const std::string& text, const geom::Curve& curve, cons
         pass.measurer = std::make_unique<Measurer>(curve, at_depth, true);
       }
       between = false;
+      if (++moves > o.max_moves) throw too_many_moves(o);
       Pass& pass = passes.back();
       if (pass.ahead && pass.moves.size() == pass.moves.capacity()) pass.ahead->stop();  // the moves will move
       pass.moves.push_back(ContourMove::of(m));
@@ -383,6 +394,10 @@ Result generate(const geom::Curve& contour, const Options& o) {
   if (o.step_down > 0 && is_lathe(o)) throw std::runtime_error("depth passes are for the mill");
   if (o.step_down > 0 && with_z) throw std::runtime_error("depth passes need a plane curve; this one rises in Z");
   if (o.step_down > 0 && !(o.depth > 0)) throw std::runtime_error("depth passes need a depth > 0");
+  if (const double passes = std::ceil(o.depth / o.step_down); o.step_down > 0 && passes > Options::kMostPasses)
+    throw base::BoundExceeded(fmt::format("a depth of {:g} mm in passes of {:g} mm is {:.3g} passes, more than {:g}: "
+                                         "raise --step-down",
+                                         o.depth, o.step_down, passes, Options::kMostPasses));
   // An inch program: the curve and the options in inches, every form written as in mm; the round
   // trip runs it and measures in mm.
   std::optional<geom::Curve> inches;
@@ -432,13 +447,20 @@ Result generate(const geom::Curve& contour, const Options& o) {
     if (p.name == "cy") c.fit.centre[1] = in_program_units(u, p.value);
   }
   c.fit.centre = map(c.fit.centre);
+  geom::PieceBudget budget;
+  budget.most = o.max_moves;
+  c.fit.budget = &budget;
   Emitted e;
-  switch (o.form) {
-    case Form::expanded:
-    case Form::arcs: e = expanded_or_arcs(c); break;
-    case Form::macro: e = equal_step_macro(c); break;
-    case Form::adaptive_macro: e = adaptive_macro(c); break;
-    case Form::cycle: e = cycle(c); break;
+  try {
+    switch (o.form) {
+      case Form::expanded:
+      case Form::arcs: e = expanded_or_arcs(c); break;
+      case Form::macro: e = equal_step_macro(c); break;
+      case Form::adaptive_macro: e = adaptive_macro(c); break;
+      case Form::cycle: e = cycle(c); break;
+    }
+  } catch (const geom::PieceBudget::TooManyPieces&) {
+    throw too_many_moves(o);
   }
   Result r;
   r.text = std::move(e.text);

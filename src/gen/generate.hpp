@@ -50,6 +50,11 @@ struct Options {
   // 0.0001 in, IS-C 0.00001 in). The curve, the tolerance and these options stay in mm (css in
   // m/min, written as ft/min); the round trip runs the inch program and measures in mm.
   bool inch = false;
+  // Bounds on the work (docs/gen.md): the most contour moves (lines and arcs, all depth passes)
+  // the program may make, and the most depth passes; beyond, generate() refuses (std::
+  // runtime_error naming --max-moves or --step-down).
+  std::size_t max_moves = 200000;
+  static constexpr double kMostPasses = 1000;
 };
 
 // How the curve sits on the machine.

@@ -790,6 +790,7 @@ Path lines_greedy(const Fit& f, bool band, bool radial, double from, double to, 
     }
     if (tb < t_end) learned = std::clamp((tb - ta) / predicted, 0.25, 4.0);
     path.max_deviation = std::max(path.max_deviation, b_error);
+    if (f.budget) f.budget->add();
     path.pieces.push_back(Piece{false, a.at, b.at, {}, false, ta, tb});
     if (errors) errors->push_back(b_error);
     ta = tb;
@@ -885,7 +886,8 @@ constexpr double kJoinHopeless = 1.5;
 Path lines_both_ways(const Fit& f, bool band, bool radial, double middle, std::size_t expected) {
   const Curve back_curve = f.curve.reversed();
   const Fit back{back_curve, f.place, f.grid,      f.plane,        f.tol,          f.centre,
-                 f.arcs_with_r, f.r_step, f.arc_radius_limit, f.model_steps, f.chunk_segments, f.both_ways};
+                 f.arcs_with_r, f.r_step, f.arc_radius_limit, f.model_steps, f.chunk_segments, f.both_ways,
+                 nullptr,     f.budget};
   const double t0 = f.curve.t0(), t1 = f.curve.t1();
   Path ahead, behind;
   std::vector<double> ahead_errors, behind_errors;
@@ -998,6 +1000,7 @@ double chords_error(const Fit& f, const std::vector<double>& ts, Path* out) {
     Vertex b = vertex(f, ts[i], 0);
     double e = segment_error(f, ts[i - 1], ts[i], a, b);
     worst = std::max(worst, e);
+    if (out && f.budget) f.budget->add();
     if (out) out->pieces.push_back(Piece{false, a.at, b.at, {}, false, ts[i - 1], ts[i]});
     a = b;
   }
@@ -1026,6 +1029,7 @@ std::vector<double> equal_chords(const Fit& f, double length) {
     while (shorter(hi) && hi < t_end) hi = std::min(t_end, ta + 2 * (hi - ta));
     ts.push_back(largest_ok(ta, hi, shorter, span));
     if (ts.size() > 50'000'000) throw std::runtime_error("too many segments");
+    if (f.budget && ts.size() > f.budget->most + 1) throw PieceBudget::TooManyPieces(f.budget->most);
   }
   return ts;
 }
@@ -1055,6 +1059,7 @@ Path fit_lines(const Fit& f, LineMethod method) {
       while (!passes(n)) {
         n *= 2;
         if (n > (1L << 24)) throw std::runtime_error("no equal step meets the tolerance");
+        if (f.budget && n / 2 >= static_cast<long>(f.budget->most)) throw PieceBudget::TooManyPieces(f.budget->most);
       }
       n = smallest_passing(n / 2, n, passes);
       Path p;
@@ -1276,6 +1281,7 @@ Path fit_arcs(const Fit& f) {
       for (auto& p : trial) {
         Piece s = snapped(f, p);
         path.max_deviation = std::max(path.max_deviation, piece_error(f, s));
+        if (f.budget) f.budget->add();
         path.pieces.push_back(s);
       }
       ta = lo;

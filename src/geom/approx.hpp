@@ -2,9 +2,12 @@
 // that proves it (maximum distance, found by optimisation on each piece).
 #pragma once
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "geom/curve.hpp"
@@ -63,6 +66,20 @@ struct Piece {
   double r = 0;           // arcs with R words: the R written (negative beyond 180 degrees)
 };
 
+// The most pieces a fit may make, counted over all its threads: the one beyond throws
+// TooManyPieces (a fit of both ways may count part of the path twice).
+struct PieceBudget {
+  std::size_t most = 0;
+  std::atomic<std::size_t> made{0};
+  void add() {
+    if (made.fetch_add(1, std::memory_order_relaxed) >= most) throw TooManyPieces(most);
+  }
+  struct TooManyPieces : std::runtime_error {
+    explicit TooManyPieces(std::size_t most)
+        : std::runtime_error("more than " + std::to_string(most) + " lines or arcs") {}
+  };
+};
+
 struct Path {
   std::vector<Piece> pieces;
   double max_deviation = 0;  // as measured while building (exact, before the round trip)
@@ -96,6 +113,7 @@ struct Fit {
   bool both_ways = true;
   // The curve's survey, from its validate(): spares the prediction of equal-error steps its jets.
   const Survey* survey = nullptr;
+  PieceBudget* budget = nullptr;  // none: no bound
 };
 
 Path fit_lines(const Fit& fit, LineMethod method);

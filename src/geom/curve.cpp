@@ -200,8 +200,17 @@ Curve::Curve(const CurveSpec& spec, const std::map<std::string, double>& values,
 
 void Curve::compile(nc::EvalOptions options) {
   for (int a = 0; a < 3; ++a) {
-    sym_d1_[a] = simplify(derivative(sym_pos_[a], kTVar));
-    sym_d2_[a] = simplify(derivative(sym_d1_[a], kTVar));
+    try {
+      SymBudget budget(kMaxSymNodes);
+      sym_d1_[a] = simplify(derivative(sym_pos_[a], kTVar));
+      sym_d2_[a] = simplify(derivative(sym_d1_[a], kTVar));
+    } catch (const SymTooLarge&) {
+      throw std::runtime_error(fmt::format(
+          "{} {}(t): its derivatives need more than {} expression nodes (the second derivative of a product of n "
+          "factors has n^3 terms): write the expression shorter, e.g. a repeated factor as POW[u,n] or a "
+          "product of sines as a sum",
+          name_, "xyz"[a], kMaxSymNodes));
+    }
   }
   // the tapes read t alone: the parameters are constants in them
   std::map<int, double> values;

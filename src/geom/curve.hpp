@@ -17,6 +17,9 @@ using Vec3 = std::array<double, 3>;
 constexpr int kTVar = 100;
 constexpr int kFirstParamVar = 101;
 constexpr int kVarCount = 1000;
+// The most expression nodes differentiating one coordinate (twice) may build: about a second and
+// tens of MB; the shipped curves need under 2,000, the rotor's tool-radius offset about 71,000.
+constexpr std::int64_t kMaxSymNodes = 500000;
 
 struct ParamSpec {
   std::string name;

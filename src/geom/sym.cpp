@@ -21,8 +21,17 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
+// Nodes this thread may still allocate under a SymBudget (-1: no budget).
+thread_local std::int64_t budget_left = -1;
+
+std::shared_ptr<SymNode> allocate() {
+  if (budget_left == 0) throw SymTooLarge();
+  if (budget_left > 0) --budget_left;
+  return std::make_shared<SymNode>();
+}
+
 Sym node(SymOp op, Sym a, Sym b = nullptr) {
-  auto n = std::make_shared<SymNode>();
+  auto n = allocate();
   n->op = op;
   n->a = std::move(a);
   n->b = std::move(b);
@@ -181,15 +190,18 @@ Printed print(const Sym& e) {
 
 }  // namespace
 
+SymBudget::SymBudget(std::int64_t nodes) : outer_(budget_left) { budget_left = nodes; }
+SymBudget::~SymBudget() { budget_left = outer_; }
+
 Sym konst(double k) {
-  auto n = std::make_shared<SymNode>();
+  auto n = allocate();
   n->op = SymOp::konst;
   n->k = k;
   return n;
 }
 
 Sym variable(int number) {
-  auto n = std::make_shared<SymNode>();
+  auto n = allocate();
   n->op = SymOp::var;
   n->var = number;
   return n;
@@ -710,7 +722,13 @@ std::vector<Sym> share_subexpressions(const std::vector<Sym>& outputs, int& next
     if (built[i]) return built[i];
     const Sym& e = nodes[i];
     Sym out = e;
-    if (e->a) out = node(e->op, self(self, ops_a[i]), ops_b[i] >= 0 ? self(self, ops_b[i]) : nullptr);
+    if (e->a) {
+      // the second operand's temporaries numbered first: sequenced, so that every compiler writes
+      // the same macro (as function arguments the two calls' order was unspecified)
+      Sym b = ops_b[i] >= 0 ? self(self, ops_b[i]) : nullptr;
+      Sym a = self(self, ops_a[i]);
+      out = node(e->op, std::move(a), std::move(b));
+    }
     const bool long_constant = e->op == SymOp::konst && to_macro(out).size() > 2 * kVariableLength;
     if (uses[i] > 1 && (e->a || long_constant) && to_macro(out).size() > kVariableLength) {
       auto own = own_var.find(id);

@@ -2,7 +2,9 @@
 // `ncurve run`), differentiated exactly, simplified, evaluated natively and printed back as
 // FANUC macro text (trigonometry in degrees, as on the control).
 #pragma once
+#include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,6 +26,23 @@ struct SymNode {
   double k = 0;  // konst
   int var = 0;   // var: macro variable number
   Sym a, b;
+};
+
+// While a SymBudget lives, building expressions on its thread allocates at most `nodes` nodes;
+// the next one throws SymTooLarge. Differentiation multiplies a long product's size (the second
+// derivative of n factors has n^3), so a budget bounds the time and memory of a user's curve.
+class SymBudget {
+public:
+  explicit SymBudget(std::int64_t nodes);
+  ~SymBudget();
+  SymBudget(const SymBudget&) = delete;
+  SymBudget& operator=(const SymBudget&) = delete;
+
+private:
+  std::int64_t outer_;
+};
+struct SymTooLarge : std::runtime_error {
+  SymTooLarge() : std::runtime_error("expression too large") {}
 };
 
 Sym konst(double k);

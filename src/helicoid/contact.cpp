@@ -54,9 +54,10 @@ double helix_angle(double lead, double radius) {
 }
 
 std::int64_t Lattice::size(double profile_length) const {
-  auto na = static_cast<std::int64_t>(std::floor(alpha_max / alpha_step + 1e-9));
-  auto ns = static_cast<std::int64_t>(std::floor(profile_length / s_step + 1e-9));
-  return (2 * na + 1) * (ns + 1);
+  // in doubles, held below 2^62: a tiny step must not overflow the conversion
+  const double na = std::floor(alpha_max / alpha_step + 1e-9), ns = std::floor(profile_length / s_step + 1e-9);
+  const double n = (2 * na + 1) * (ns + 1);
+  return n < 4e18 ? static_cast<std::int64_t>(n) : std::int64_t{4'000'000'000'000'000'000};
 }
 
 Method method_from_name(const std::string& name) {
@@ -80,6 +81,9 @@ ContactSearch::ContactSearch(Workpiece work, DiscCutter cutter, Setting setting,
       plane_profile_(work_.profile) {
   if (!(lattice_.alpha_step > 0) || !(lattice_.s_step > 0) || !(lattice_.alpha_max > 0) || lattice_.alpha_max >= 90)
     throw std::runtime_error("lattice: steps > 0 and 0 < alpha range < 90 degrees");
+  if (lattice_.size(cutter_.length()) > kMostLatticePoints)
+    throw std::runtime_error(fmt::format("lattice: {} points, more than {}: a larger step", lattice_.size(cutter_.length()),
+                                         kMostLatticePoints));
   double b = setting_.swing * kDeg, h = work_.hand;
   axis_ = {0, -h * std::cos(b), std::sin(b)};
   e2_ = {0, std::sin(b), h * std::cos(b)};
@@ -132,7 +136,8 @@ ContactSearch::Distance ContactSearch::distance(double psi, double alpha, double
   return out;
 }
 
-std::vector<Contact> ContactSearch::run_axial(const std::vector<double>& psis, Method method, const AxialMotion& m) const {
+std::vector<Contact> ContactSearch::run_axial(const std::vector<double>& psis, Method method, const AxialMotion& m,
+                                              const StepDone& done) const {
   const double twist = work_.twist();
   if (twist == 0) throw std::runtime_error("a straight workpiece (lead 0) is the same at every Z: the final motion must be X");
   if (m.direction != 1 && m.direction != -1) throw std::runtime_error("axial motion: direction is -1 or +1");
@@ -212,6 +217,7 @@ std::vector<Contact> ContactSearch::run_axial(const std::vector<double>& psis, M
     c.cutter_point[2] += z;
     c.evaluations = evaluations;
     out.push_back(c);
+    if (done) done(out.size());
   }
   return out;
 }
@@ -849,7 +855,7 @@ private:
 
 }  // namespace
 
-std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method method) const {
+std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method method, const StepDone& done) const {
   std::vector<Contact> out;
   std::vector<Node> path;  // lattice contacts so far
   const Node corner{0, static_cast<int>(std::lround(cutter_.corner_middle() / lattice_.s_step))};
@@ -908,6 +914,7 @@ std::vector<Contact> ContactSearch::run(const std::vector<double>& psis, Method 
     c.evaluations = step.evaluations();
     c.plane_A = plane_distance(psi);
     out.push_back(c);
+    if (done) done(out.size());
   }
   return out;
 }

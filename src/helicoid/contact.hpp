@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -42,6 +43,9 @@ struct Lattice {
   double alpha_step = 0.05, s_step = 0.05, alpha_max = 30;
   std::int64_t size(double profile_length) const;
 };
+// The most lattice points a search takes (the robust search keeps a few numbers per point: about
+// 40 bytes each); the default lattice of seed 004 has 1.4 million.
+constexpr std::int64_t kMostLatticePoints = 20'000'000;
 
 enum class Method { brute, nine_point, robust };
 Method method_from_name(const std::string& name);
@@ -91,15 +95,18 @@ public:
   };
   Distance distance(double psi, double alpha, double s) const;
 
+  // Called with the number of phases done after each (progress on a terminal).
+  using StepDone = std::function<void(std::size_t)>;
   // Contacts for each phase (degrees), in order; the tracing prediction follows the order.
-  std::vector<Contact> run(const std::vector<double>& psis, Method method) const;
+  std::vector<Contact> run(const std::vector<double>& psis, Method method, const StepDone& done = {}) const;
 
   // Contacts when the final motion is along Z. A screw motion leaves the helicoid where it is, so
   // the cutter at Z = z and phase psi touches as it does at Z = 0 and phase psi + twist z: the
   // first touch along Z is the first phase, going the way the travel turns it, at which A(phase)
   // reaches the centre distance (a traced table of A over one lobe, then Illinois on the bracket).
   // Throws, naming psi, when the start is not clear or the cutter never reaches the workpiece.
-  std::vector<Contact> run_axial(const std::vector<double>& psis, Method method, const AxialMotion& motion) const;
+  std::vector<Contact> run_axial(const std::vector<double>& psis, Method method, const AxialMotion& motion,
+                                 const StepDone& done = {}) const;
 
   // Plane programming (the method seed 004 improves on): the end profile offset by the corner
   // radius, the cutter's corner centre placed on it along X.

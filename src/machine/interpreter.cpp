@@ -6,6 +6,7 @@
 #include "machine/profile_hints.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace ncurve::machine {
@@ -75,6 +76,7 @@ Interpreter::Interpreter(const MachineProfile& profile, const ProgramLibrary& li
   init_rotary();
   per_unit_mm_ = increments_per_mm(profile_);
   per_unit_inch_ = std::round(10 / profile_.increment);
+  digit_limit_ = std::pow(10.0, profile_.number_digits);
   eval_options_.atan_signed = profile_.atan_signed;
   eval_options_.atan_comma = profile_.control == Control::fanuc_30i;
   eval_options_.adp_scale = 1.0 / profile_.increment;
@@ -140,19 +142,25 @@ void Interpreter::warn(std::string code, std::string message, std::uint16_t colu
 Value Interpreter::eval(const nc::Expr& e) {
   VarReader reader{this};
   const nc::Instr* code = prog_->code.data();
+  operations_ += e.end - e.begin;
   nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
   switch (r.fault) {
     case nc::EvalFault::none: return r.value;
     case nc::EvalFault::divide_by_zero: alarm("PS0112", "division by zero", r.column);
     case nc::EvalFault::domain: alarm("PS0119", "argument out of the function's range", r.column);
-    case nc::EvalFault::overflow: alarm("PS0111", "calculated value out of range", r.column);
+    case nc::EvalFault::overflow:
+      alarm("PS0111", "calculated value out of range (a macro value lies within -1e47 .. 1e47)", r.column);
     case nc::EvalFault::not_on_this_control:
       alarm("PS0114", "ATAN[a,b] needs a 30i control; write ATAN[a]/[b]", r.column);
   }
   return r.value;
 }
 
-bool Interpreter::condition(const nc::Expr& e) { return eval(e).number() != 0.0; }
+bool Interpreter::condition(const nc::Expr& e) {
+  const double v = eval(e).number();
+  if (std::isnan(v)) alarm("PS0111", "the condition has no value (NaN)");  // never taken as true
+  return v != 0.0;
+}
 
 // Programs that mix dimension words with and without a decimal point are a classic source of
 // scrapped parts. A word of a macro call (G65, G66, a custom G code) is an argument, not an axis.
@@ -237,20 +245,10 @@ RunResult Interpreter::run(MoveSink& sink) {
       prog_ = nullptr;
       write_var(n, Value::of(v), 0);
     }
+    started_ = std::chrono::steady_clock::now();
     while (!finished_) {
-      if (result_.stats.blocks >= options_.max_steps) {
-        std::string where;
-        if (last_back_jump_) {
-          const Block& b = *last_back_jump_;
-          where = fmt::format("; it keeps looping through {}:{}", last_back_jump_prog_->file->name(), b.line);
-          if (b.kind == Statement::end_loop && b.match >= 0)
-            where += fmt::format(" (END {} of the loop at line {})", b.loop_id,
-                                 last_back_jump_prog_->blocks[b.match].line);
-          prog_ = last_back_jump_prog_;
-          block_ = last_back_jump_;
-        }
-        alarm("NC9000", fmt::format("program stopped after {} blocks (--max-steps){}", options_.max_steps, where));
-      }
+      if (result_.stats.blocks + operations_ >= options_.max_steps || (result_.stats.blocks & 0xFFFF) == 0)
+        check_runaway();
       step();
     }
     if (corner_on_) corner_block_end(true);  // a chamfering block at the end of the program
@@ -265,6 +263,28 @@ RunResult Interpreter::run(MoveSink& sink) {
   }
   sink_ = nullptr;
   return result_;
+}
+
+// A runaway program stops at the loop that keeps it going, naming the option to raise.
+void Interpreter::check_runaway() {
+  const bool steps = result_.stats.blocks + operations_ >= options_.max_steps;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  if (!steps && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
+  std::string where;
+  if (last_back_jump_) {
+    const Block& b = *last_back_jump_;
+    where = fmt::format("; it keeps looping through {}:{}", last_back_jump_prog_->file->name(), b.line);
+    if (b.kind == Statement::end_loop && b.match >= 0)
+      where += fmt::format(" (END {} of the loop at line {})", b.loop_id, last_back_jump_prog_->blocks[b.match].line);
+    prog_ = last_back_jump_prog_;
+    block_ = last_back_jump_;
+  }
+  if (steps)
+    alarm("NC9000", fmt::format("program stopped after {} steps ({} blocks and {} expression operations; raise "
+                                "--max-steps to let it run longer){}",
+                                result_.stats.blocks + operations_, result_.stats.blocks, operations_, where));
+  alarm("NC9000", fmt::format("program stopped after {:.0f} s, {} blocks (raise --max-seconds to let it run longer){}",
+                              seconds, result_.stats.blocks, where));
 }
 
 void Interpreter::step() {
@@ -386,6 +406,7 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column, st
             column);
     alarm("PS0078", fmt::format("program O{:04} not found (in this file or the --lib folders)", number), column);
   }
+  if (const nc::Diagnostic* twice = library_.duplicate(number)) alarm(twice->code, twice->message, column);
   if (p->file != library_.main()->file && std::ranges::find(reached_, p) == reached_.end()) {
     reached_.push_back(p);
     warn_mixed_decimal_points(*p);
@@ -516,6 +537,7 @@ void Interpreter::exec_nc(const Block& b) {
   have_.fill(false);
   g_codes_.clear();
   m_codes_.clear();
+  word_check_ = false;
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
     const nc::Word& w = prog_->words[i];
     Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value};
@@ -523,21 +545,21 @@ void Interpreter::exec_nc(const Block& b) {
       Value v = eval(w.expr);
       if (v.vacant) continue;  // a word whose value is vacant is not there at all
       c.value = v.v;
-      if (!std::isfinite(c.value) || std::fabs(c.value) > 1e15)
-        alarm("PS0003", fmt::format("value of address {} out of range", w.letter), w.column);
-    }
-    if (c.letter == 'G') {
-      if (c.literal && c.decimal_point && c.value * 10 != std::floor(c.value * 10))
-        alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
-      g_codes_.push_back(round_int(c.value * 10));
-    } else if (c.letter == 'M') {
-      m_codes_.push_back(round_int(c.value));  // checked when acted on: G65 M1.5 is an argument
+      check_word_digits(w.letter, c.value, scaled_address(w.letter), w.column);
     }
     int k = c.letter - 'A';
     if (k >= 26) [[unlikely]] {  // ,C ,R ,A: the parser writes their letters in lower case
       comma_cmds_.push_back(c);
       corner_on_ = true;
       continue;
+    }
+    if (word_needs_check(c.letter, c.value)) word_check_ = true;
+    if (c.letter == 'G') {
+      if (c.literal && c.decimal_point && c.value * 10 != std::floor(c.value * 10))
+        alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
+      g_codes_.push_back(round_int(c.value * 10));
+    } else if (c.letter == 'M') {
+      m_codes_.push_back(round_int(c.value));  // checked when acted on: G65 M1.5 is an argument
     }
     have_[k] = true;
     slot_[k] = static_cast<std::uint8_t>(cmds_.size());
@@ -595,6 +617,7 @@ void Interpreter::exec_nc(const Block& b) {
     }
   }
 
+  if (word_check_ || g_codes_.size() > 1) check_block_words();
   std::vector<int> one_shot;
   handle_g_codes(one_shot);
   if (rigid_pending_ || std::ranges::find(m_codes_, 29) != m_codes_.end()) rigid_tapping_words();

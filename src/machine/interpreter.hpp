@@ -1,12 +1,14 @@
 // Executes a Program as a FANUC 0i/30i control would, streaming Moves to a sink.
 #pragma once
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "machine/chamfer.hpp"
@@ -24,7 +26,9 @@ struct Step;
 }
 
 struct RunOptions {
-  std::uint64_t max_steps = 200'000'000;          // executed blocks before a runaway program is stopped
+  // a runaway program is stopped after this many steps: a block is one, an expression one an operation
+  std::uint64_t max_steps = 200'000'000;
+  double max_seconds = 60;  // or after this long (wall clock); 0: no limit
   std::vector<std::pair<int, double>> presets;  // --set "#100=5"
   bool nose_centre = false;  // lathe: write the tool-nose centre's path, not the imaginary tip's
 };
@@ -89,6 +93,7 @@ private:
 
   // execution
   void step();
+  void check_runaway();  // --max-steps and --max-seconds
   void exec_nc(const nc::Block& b);
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
@@ -109,6 +114,10 @@ private:
   double dimension_raw(const Cmd& c) const;  // program units, decimal point rule and rounding, no inch
   int integer(const Cmd& c, const char* what) const;
   std::vector<Arg> arguments(bool skip_p_l, int skip_g, int skip_m) const;
+  // checks on the block's words before they act (block_words.cpp)
+  bool word_needs_check(char letter, double value) const;
+  void check_block_words();
+  void check_word_digits(char letter, double value, bool dimension, std::uint16_t column) const;
   void assign_arguments(const std::vector<Arg>& args);
 
   // motion (motion.cpp)
@@ -286,6 +295,11 @@ private:
   std::array<std::uint8_t, 26> slot_{};
   std::vector<int> g_codes_;  // x10: 541 for G54.1
   std::vector<int> m_codes_;
+  bool word_check_ = false;  // the block repeats an address or signs one that takes no sign
+  double digit_limit_ = 1e8;  // 10^number_digits: a word's value in units or increments stays below
+  std::unordered_set<const nc::Block*> repeat_warned_;  // blocks already warned of a repeated address
+  std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
+  std::chrono::steady_clock::time_point started_;
 
   // modal state
   int motion_ = 0;           // 0..3

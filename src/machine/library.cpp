@@ -29,12 +29,28 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, st
   auto file = std::make_shared<const nc::SourceFile>(name, std::move(text));
   files_.push_back(file);
   nc::ParseResult r = nc::parse(file, options_);
+  problems_left_out_ += r.more_diagnostics;
+  unchecked_lines_ += r.unchecked_lines;
+  if (!in_folder_) ++source_;
   int from_name = number_from_file_name(name);
   for (auto& p : r.programs) {
     if (p->number < 0 && from_name >= 0) p->number = from_name;
     const nc::Program* raw = p.get();
     if (is_main && !main_) main_ = raw;
-    if (p->number >= 0) by_number_.try_emplace(p->number, raw);
+    if (p->number >= 0) {
+      auto [it, added] = by_number_.try_emplace(p->number, raw);
+      if (added) source_of_[p->number] = source_;
+      else if (source_of_[p->number] == source_) {  // a control holds one program a number (PS0073)
+        const nc::Program& first = *it->second;
+        nc::Diagnostic d{nc::Severity::error, "PS0073",
+                         fmt::format("O{:04} is defined twice, at {}:{} and {}:{}: a control holds one program a "
+                                     "number (program number already in use)",
+                                     p->number, first.file->name(), first.line, name, p->line),
+                         nc::Span{file.get(), p->line, 1, 1}};
+        duplicates_.try_emplace(p->number, d);
+        r.diagnostics.push_back(std::move(d));
+      }
+    }
     programs_.push_back(std::move(p));
   }
   if (is_main && !main_) throw std::runtime_error(fmt::format("{}: error: the file holds no program", name));
@@ -67,10 +83,18 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_folder(const std::string& dir) {
   }
   std::sort(paths.begin(), paths.end());
   std::vector<nc::Diagnostic> all;
-  for (const auto& p : paths) {
-    auto d = add_file(p);
-    all.insert(all.end(), d.begin(), d.end());
+  ++source_;
+  in_folder_ = true;
+  try {
+    for (const auto& p : paths) {
+      auto d = add_file(p);
+      all.insert(all.end(), d.begin(), d.end());
+    }
+  } catch (...) {
+    in_folder_ = false;
+    throw;
   }
+  in_folder_ = false;
   return all;
 }
 

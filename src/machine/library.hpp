@@ -17,6 +17,10 @@ public:
   // attached to their blocks only, to alarm when a block of it is reached.
   std::vector<nc::Diagnostic> add_text(const std::string& name, std::string text, bool is_main = false);
   std::vector<nc::Diagnostic> add_file(const std::string& path, bool is_main = false);
+  // Problems found beyond the first nc::kMaxDiagnostics of each file, counted only.
+  std::size_t problems_left_out() const { return problems_left_out_; }
+  // Lines not parsed because no block on them can run (nc::ParseResult::unchecked_lines).
+  std::size_t unchecked_lines() const { return unchecked_lines_; }
   // Every *.nc, *.NC, O*, *.txt and *.tap file in the folder.
   std::vector<nc::Diagnostic> add_folder(const std::string& dir);
 
@@ -27,6 +31,13 @@ public:
     nc::UnreadProgram where;
   };
   const Unread* unread(int number) const;
+  // PS0073 when two programs of one file or one folder carry this number (find() gives the first).
+  // The file run and earlier folders come before later folders, as a search path.
+  const nc::Diagnostic* duplicate(int number) const {
+    if (duplicates_.empty()) return nullptr;
+    auto it = duplicates_.find(number);
+    return it == duplicates_.end() ? nullptr : &it->second;
+  }
   const nc::Program* main() const { return main_; }
   const std::vector<std::unique_ptr<nc::Program>>& programs() const { return programs_; }
   const std::vector<std::shared_ptr<const nc::SourceFile>>& files() const { return files_; }
@@ -37,6 +48,12 @@ private:
   std::vector<std::unique_ptr<nc::Program>> programs_;
   std::map<int, const nc::Program*> by_number_;
   std::map<int, Unread> unread_;
+  std::map<int, nc::Diagnostic> duplicates_;
+  std::map<int, int> source_of_;  // number -> the file or folder (counted from 1) that defined it
+  int source_ = 0;
+  std::size_t problems_left_out_ = 0;
+  std::size_t unchecked_lines_ = 0;
+  bool in_folder_ = false;
   const nc::Program* main_ = nullptr;
 };
 

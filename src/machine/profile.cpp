@@ -74,6 +74,17 @@ double number(const std::string& origin, const toml::node& node, const std::stri
   fail(origin, node, fmt::format("'{}' must be a number", key));
 }
 
+// A tool offset value within FANUC's input range (16i/0i, metric): geometry +-999.999 mm, wear
+// +-99.999 mm (+-999.9999 and +-99.9999 on IS-C).
+double offset_value(const std::string& origin, const toml::node& node, const std::string& key, bool wear) {
+  const double v = number(origin, node, key);
+  const double most = wear ? 100 : 1000;
+  if (!(std::fabs(v) < most))
+    fail(origin, node, fmt::format("tool offset '{}' = {} mm is beyond the control's range (a {} value: -{} .. {} mm)",
+                                   key, v, wear ? "wear" : "geometry", most - 0.001, most - 0.001));
+  return v;
+}
+
 bool flag(const std::string& origin, const toml::node& node, const std::string& key) {
   if (auto v = node.value<bool>()) return *v;
   if (auto v = node.value<int64_t>(); v && (*v == 0 || *v == 1)) return *v == 1;
@@ -317,6 +328,8 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     p.drilling.rigid_return = value * p.increment;
   }
   else if (key == "3401#0") p.decimal_calculator = bit();
+  else if (key == "3403#6") p.address_duplicate_alarm = bit();
+  else if (key == "3404#7") p.multiple_m_codes = bit();
   else if (key == "5003#0") p.compensation.startup_type_b = bit();
   else if (key == "5003#1") p.compensation.startup_type_c = bit();
   else if (key == "5008#1" || key == "5008#3") p.compensation.interference_check = !bit();
@@ -385,7 +398,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
       throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3405#4, "
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3403#6, 3404#7, 3405#4, "
                       "3410, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#2, 5101#4, 5101#5, 5101#6, 5102#6, 5102#7, 5105#1, "
                       "5105#2, 5110, 5111, 5114, 5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
                       "5400#6, 5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
@@ -461,7 +474,9 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
           LatheOffset& o = p.lathe_offsets[n];
           for (const auto& [fk, fn] : *set) {
             std::string f(fk.str());
-            double v = number(origin, fn, f);
+            double v = f == "tip" ? number(origin, fn, f) : offset_value(origin, fn, f, f.ends_with("_wear"));
+            if (f == "tip" && !(v >= 0 && v <= 9 && v == std::floor(v)))
+              fail(origin, fn, fmt::format("the imaginary tool nose direction 'tip' is a whole number 0 .. 9, not {}", v));
             if (f == "x") o.x = v;
             else if (f == "z") o.z = v;
             else if (f == "r") o.r = v;
@@ -476,14 +491,14 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
         if (n < 1 || n > 999) fail(origin, tn, "tool offset numbers are 1 .. 999");
         MillOffset& o = p.tool_offsets[n];
         if (!set) {  // one value: the geometry of H and D alike
-          o.geometry = o.d_geometry = number(origin, tn, s);
+          o.geometry = o.d_geometry = offset_value(origin, tn, s, false);
           continue;
         }
         if (set->contains("x") || set->contains("z"))
           fail(origin, tn, "a table of x and z is a lathe offset: set type = \"lathe\" first");
         for (const auto& [fk, fn] : *set) {
           std::string f(fk.str());
-          double v = number(origin, fn, f);
+          double v = offset_value(origin, fn, f, f.ends_with("_wear"));
           if (f == "length") o.geometry = v;
           else if (f == "length_wear") o.wear = v;
           else if (f == "radius") o.d_geometry = v;

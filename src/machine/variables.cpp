@@ -1,6 +1,7 @@
 // Macro variables: locals, commons and the system variables a FANUC control exposes.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 
@@ -219,7 +220,8 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
     return axis_index(profile_.axes[k]);
   };
   if (n == 3000) {
-    int code = static_cast<int>(std::lround(v.number()));
+    const double value = v.number();  // (in a wide type: a huge value must not overflow the alarm number)
+    const long long code = std::isfinite(value) ? std::llround(std::clamp(value, -1e15, 1e15)) : 0;
     std::string text = block_ && block_->comment >= 0 ? prog_->comments[block_->comment] : "";
     alarm(fmt::format("MC{}", 3000 + code), text.empty() ? "alarm raised by #3000" : text, column);
   }

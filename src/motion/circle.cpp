@@ -74,10 +74,13 @@ CircleResult circle_test(const machine::MachineProfile& profile, const CircleTes
     for (const auto& m : moves) plan.on_move(m);
     plan.finish();
   }
-  if (!(end <= test.most_seconds))
-    throw std::runtime_error(fmt::format("{} turns of R {:g} mm at {:g} mm/min take {:.3g} s, more than the {:g} s "
-                                         "simulated at most: raise the feed or lower the radius",
-                                         test.turns, R, r.feed_reached, end, test.most_seconds));
+  if (!(end <= test.most_seconds) || !(end / profile.servo.period <= test.most_ticks))
+    throw std::runtime_error(fmt::format("{} turns of R {:g} mm at {:g} mm/min take {:.3g} s, more than the {:.4g} s "
+                                         "simulated at most: raise the feed or lower the radius (the bound: {:g} s, "
+                                         "or {:.3g} servo periods of {:g} ms)",
+                                         test.turns, R, r.feed_reached, end,
+                                         std::min(test.most_seconds, test.most_ticks * profile.servo.period),
+                                         test.most_seconds, test.most_ticks, profile.servo.period * 1000));
   if (r.feed_reached >= test.feed * (1 - 1e-9)) r.feed_reached = test.feed;  // length / time rounds
   const double V = r.feed_reached / 60, w = V / R;
 

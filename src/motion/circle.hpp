@@ -13,7 +13,8 @@ struct CircleTest {
   double feed = 1000;  // mm/min
   bool clockwise = false;
   int turns = 3;       // the middle turn is measured (steady state)
-  double most_seconds = 3600;  // refused (std::runtime_error) if the run would take longer
+  double most_seconds = 3600;  // refused (std::runtime_error) if the run would take longer,
+  double most_ticks = 10e6;    // or take more servo periods (the measured turn's polar: 16 bytes a period)
 };
 
 // The plane of the test: X Y on a mill (G17); Z X on a lathe (G18: angles from +Z towards +X).

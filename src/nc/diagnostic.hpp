@@ -46,6 +46,13 @@ std::string_view block_text(const Span& s);
 
 // "file:line:col: error: PS0011 feed rate is zero" followed by the block and a caret, and a
 // "called from file:line (block)" line for each call around it.
+// Text from a program or a file name made safe for a terminal: control characters (C0 but the tab,
+// DEL and the C1 range as UTF-8 encodes it) as \xNN escapes, so a message cannot move the cursor or retitle
+// the window. Other bytes pass unchanged.
+std::string escape_controls(std::string_view text);
+
+// "file:line:col: error: PS0011 feed rate is zero" followed by the block and a caret; program text
+// (message, file name, quoted block) with its control characters escaped.
 std::string format(const Diagnostic& d);
 
 // Raised by the interpreter at the block that causes an alarm; caught by run().

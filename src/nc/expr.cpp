@@ -9,7 +9,6 @@ namespace ncurve::nc {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kMaxMagnitude = 1e47;  // FANUC macro variable range
 
 double round_half_away(double x) { return x < 0 ? -std::floor(-x + 0.5) : std::floor(x + 0.5); }
 
@@ -21,7 +20,7 @@ bool to_integer(double x, std::int64_t& out) {
 }
 
 EvalFault finite(double x, double& out) {
-  if (!std::isfinite(x) || std::fabs(x) > kMaxMagnitude) return EvalFault::overflow;
+  if (out_of_range(x)) return EvalFault::overflow;
   out = x;
   return EvalFault::none;
 }

@@ -31,6 +31,11 @@ struct Expr {
 
 constexpr int kMaxEvalStack = 48;
 
+// The range of a macro value (0i manual, custom macro: -10^47 .. 10^47); a result beyond it, at any
+// step of an expression, is PS0111 CALCULATED DATA OVERFLOW. The negation also catches NaN.
+constexpr double kMaxMagnitude = 1e47;
+inline bool out_of_range(double x) { return !(x >= -kMaxMagnitude && x <= kMaxMagnitude); }
+
 // Settings that change what a function returns (machine profile).
 struct EvalOptions {
   bool atan_signed = false;   // No.6004#0 NAT: ATAN -180..180 and ASIN -90..90 when set
@@ -62,11 +67,15 @@ EvalResult evaluate(const Instr* pc, const Instr* end, Vars& vars, const EvalOpt
   for (; pc != end; ++pc) {
     switch (pc->op) {
       case Op::konst: stack[++top] = Value::of(pc->k); break;
-      case Op::var: stack[++top] = vars.read(pc->var, pc->column); break;
+      case Op::var:
+        stack[++top] = vars.read(pc->var, pc->column);
+        if (out_of_range(stack[top].v)) return {{}, EvalFault::overflow, pc->column};
+        break;
       case Op::var_indirect: {
         double n = stack[top].number();
         if (!(n > -2147483648.0 && n < 2147483647.0)) return {{}, EvalFault::domain, pc->column};
         stack[top] = vars.read(static_cast<int>(n < 0 ? n - 0.5 : n + 0.5), pc->column);
+        if (out_of_range(stack[top].v)) return {{}, EvalFault::overflow, pc->column};
         break;
       }
       case Op::neg: if (!stack[top].vacant) stack[top].v = -stack[top].v; break;
@@ -83,13 +92,33 @@ EvalResult evaluate(const Instr* pc, const Instr* end, Vars& vars, const EvalOpt
         stack[top] = Value::of((a.vacant && b.vacant) || (!a.vacant && !b.vacant && a.v == b.v) ? 0.0 : 1.0);
         break;
       }
-      case Op::add: { double b = stack[top--].number(); stack[top] = Value::of(stack[top].number() + b); break; }
-      case Op::sub: { double b = stack[top--].number(); stack[top] = Value::of(stack[top].number() - b); break; }
-      case Op::mul: { double b = stack[top--].number(); stack[top] = Value::of(stack[top].number() * b); break; }
+      case Op::add: {
+        const double b = stack[top--].number();
+        const double r = stack[top].number() + b;
+        if (out_of_range(r)) return {{}, EvalFault::overflow, pc->column};
+        stack[top] = Value::of(r);
+        break;
+      }
+      case Op::sub: {
+        const double b = stack[top--].number();
+        const double r = stack[top].number() - b;
+        if (out_of_range(r)) return {{}, EvalFault::overflow, pc->column};
+        stack[top] = Value::of(r);
+        break;
+      }
+      case Op::mul: {
+        const double b = stack[top--].number();
+        const double r = stack[top].number() * b;
+        if (out_of_range(r)) return {{}, EvalFault::overflow, pc->column};
+        stack[top] = Value::of(r);
+        break;
+      }
       case Op::div: {
-        double b = stack[top--].number();
+        const double b = stack[top--].number();
         if (b == 0.0) return {{}, EvalFault::divide_by_zero, pc->column};
-        stack[top] = Value::of(stack[top].number() / b);
+        const double r = stack[top].number() / b;
+        if (out_of_range(r)) return {{}, EvalFault::overflow, pc->column};
+        stack[top] = Value::of(r);
         break;
       }
       case Op::mod: case Op::band: case Op::bor: case Op::bxor:

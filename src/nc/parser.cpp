@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <span>
 
 #include "base/memory.hpp"
@@ -588,10 +589,17 @@ private:
   }
 };
 
+// The first kMaxDiagnostics problems of a kind (syntax, loops) and a count of the rest.
+struct Problems {
+  std::vector<Diagnostic> list;
+  std::size_t more = 0;
+};
+
 void add_error(Program& p, Block& b, std::string code, std::string message, std::uint16_t column,
-               std::uint32_t length, std::vector<Diagnostic>& all) {
+               std::uint32_t length, Problems& all) {
   Diagnostic d{Severity::error, std::move(code), std::move(message), Span{p.file.get(), b.line, column, length}};
-  all.push_back(d);
+  if (all.list.size() < kMaxDiagnostics) all.list.push_back(d);
+  else ++all.more;
   if (b.error < 0) {
     b.error = static_cast<std::int32_t>(p.errors.size());
     p.errors.push_back(std::move(d));
@@ -599,7 +607,7 @@ void add_error(Program& p, Block& b, std::string code, std::string message, std:
 }
 
 // Pairs DO/WHILE with END in each program; FANUC allows three levels of nesting.
-void match_loops(Program& p, std::vector<Diagnostic>& all) {
+void match_loops(Program& p, Problems& all) {
   std::vector<std::int32_t> open;
   for (std::size_t i = 0; i < p.blocks.size(); ++i) {
     Block& b = p.blocks[i];
@@ -734,6 +742,35 @@ std::vector<UnreadProgram> programs_after_end(const std::string& text, std::size
   return found;
 }
 
+// The last block alarms when the control reaches it (a text problem, no block skip).
+bool follows_alarm(const Program& p) {
+  return !p.blocks.empty() && p.blocks.back().error >= 0 && !p.blocks.back().block_skip;
+}
+
+// A line that starts no program (O or ':' first) and has no N (but a leading N of a number already
+// given, which GOTO does not reach), '/', '%', DO, WHILE (W) or END: none of its blocks is a jump
+// target, so after a block that alarms it can never run. Conservative: the letters anywhere on the
+// line, comments too.
+bool cannot_be_a_target(std::string_view raw, const Program& p) {
+  std::size_t k = raw.find_first_not_of(" \t\r");
+  if (k != std::string_view::npos && (to_upper(raw[k]) == 'O' || raw[k] == ':')) return false;
+  if (k != std::string_view::npos && to_upper(raw[k]) == 'N') {
+    std::size_t end = ++k;
+    while (end < raw.size() && is_digit(raw[end]) && end - k <= 8) ++end;
+    if (end == k || end - k > 8) return false;
+    if (!p.sequence_index.contains(std::stoi(std::string(raw.substr(k, end - k))))) return false;
+    k = end;
+  } else {
+    k = 0;
+  }
+  for (; k < raw.size(); ++k) {
+    const char c = to_upper(raw[k]);
+    if (c == 'N' || c == '/' || c == '%' || c == 'W') return false;
+    if (c == 'D' && k + 1 < raw.size() && to_upper(raw[k + 1]) == 'O') return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) {
@@ -755,6 +792,21 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
     }
   };
   bool started = false;  // a block has been read (a later '%' ends the file)
+  Problems syntax, loops;
+  // A block with an error after another such block is never reached: the one before alarms, and only
+  // an N makes a block a target (the first block with that N). It is counted, not kept (junk).
+  auto drop_if_unreachable = [&](const Block& b) {
+    std::vector<Block>& blocks = current->blocks;
+    if (b.error < 0 || b.block_skip || blocks.size() < 2) return;
+    if (b.sequence >= 0 && current->sequence_index.at(b.sequence) + 1 == static_cast<std::int32_t>(blocks.size()))
+      return;  // the first block with its N: a GOTO target
+    const Block& before = blocks[blocks.size() - 2];
+    if (before.error < 0 || before.block_skip) return;
+    if (b.error + 1 == static_cast<std::int32_t>(current->errors.size())) current->errors.pop_back();
+    if (b.comment >= 0 && b.comment + 1 == static_cast<std::int32_t>(current->comments.size()))
+      current->comments.pop_back();
+    blocks.pop_back();
+  };
 
   auto handle_block = [&](LineScanner& ls, std::uint32_t line) {
     std::span<const Ch> s(ls.buf.data(), ls.n);
@@ -772,10 +824,22 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       std::size_t j = 1;
       std::string digits;
       while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
-      if (digits.size() > 8) digits.resize(8);
-      new_program(std::stoi(digits));
+      const bool too_long = digits.size() > 8;
+      const int number = too_long ? -1 : std::stoi(digits);
+      new_program(number > 0 ? number : -1);
+      current->line = line;
       if (ls.has_comment) current->name = ls.comment;
       started = true;
+      if (too_long || number == 0) {  // the program alarms where it starts
+        Block& b = current->blocks.emplace_back();
+        b.line = line;
+        b.column = s[0].col;
+        add_error(*current, b, too_long ? "PS0003" : "PS0074",
+                  too_long ? fmt::format("O{}: a program number has at most 8 digits", digits)
+                           : std::string("O0 is not a program number: program numbers start at 1"),
+                  s[0].col, static_cast<std::uint32_t>(j), syntax);
+        return;
+      }
       if (j == s.size()) return;
       s = s.subspan(j);
     }
@@ -788,8 +852,9 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       current->comments.push_back(ls.comment);
     }
     if (!ls.error.empty()) {
-      add_error(*current, b, "PS0009", why(ls.error, ls.error_col), ls.error_col, 1, result.diagnostics);
+      add_error(*current, b, "PS0009", why(ls.error, ls.error_col), ls.error_col, 1, syntax);
       started = true;
+      drop_if_unreachable(b);
       return;
     }
     if (i < s.size() && s[i].c == '/') {
@@ -802,10 +867,10 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       std::string digits;
       while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
       if (digits.empty()) {
-        add_error(*current, b, "PS0005", why("no number after address N", s[i].col), s[i].col, 1, result.diagnostics);
+        add_error(*current, b, "PS0005", why("no number after address N", s[i].col), s[i].col, 1, syntax);
       } else if (digits.size() > 8) {
         add_error(*current, b, "PS0003", "sequence number has more than 8 digits", s[i].col,
-                  static_cast<std::uint32_t>(digits.size() + 1), result.diagnostics);
+                  static_cast<std::uint32_t>(digits.size() + 1), syntax);
       } else {
         b.sequence = std::stoi(digits);
         current->sequence_index.emplace(b.sequence, static_cast<std::int32_t>(current->blocks.size() - 1));
@@ -823,10 +888,11 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
         b.kind = Statement::empty;
         b.words_begin = b.words_end = static_cast<std::uint32_t>(words_mark);
         b.target = b.value = b.cond = Expr{};
-        add_error(*current, b, e.code, why(e.message, e.column), e.column, e.length, result.diagnostics);
+        add_error(*current, b, e.code, why(e.message, e.column), e.column, e.length, syntax);
       }
     }
     started = true;
+    drop_if_unreachable(b);
   };
 
   const std::string& text = file->text();
@@ -844,6 +910,10 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
     std::size_t first = raw.find_first_not_of(" \t\r");
     if (first != std::string_view::npos && raw[first] == '%') {
       if (started) done = true;
+      continue;
+    }
+    if (syntax.list.size() >= kMaxDiagnostics && current && follows_alarm(*current) && cannot_be_a_target(raw, *current)) {
+      ++result.unchecked_lines;
       continue;
     }
     if (current && plain_nc_line(raw, line, *current, max_digits)) {
@@ -909,9 +979,20 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
     if (block_open || !ls.error.empty() || ls.has_comment) handle_block(ls, line);
   }
   if (done) result.after_end = programs_after_end(text, pos, line);
-  for (auto& p : result.programs) match_loops(*p, result.diagnostics);
-  std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+  for (auto& p : result.programs) match_loops(*p, loops);
+  std::stable_sort(loops.list.begin(), loops.list.end(),  // a DO without END comes at its program's end
                    [](const Diagnostic& a, const Diagnostic& b) { return a.span.line < b.span.line; });
+  // each list is in line order: the first kMaxDiagnostics of both together are among them
+  std::vector<Diagnostic>& all = result.diagnostics;
+  all.reserve(syntax.list.size() + loops.list.size());
+  std::merge(std::make_move_iterator(syntax.list.begin()), std::make_move_iterator(syntax.list.end()),
+             std::make_move_iterator(loops.list.begin()), std::make_move_iterator(loops.list.end()),
+             std::back_inserter(all), [](const Diagnostic& a, const Diagnostic& b) { return a.span.line < b.span.line; });
+  result.more_diagnostics = syntax.more + loops.more;
+  if (all.size() > kMaxDiagnostics) {
+    result.more_diagnostics += all.size() - kMaxDiagnostics;
+    all.resize(kMaxDiagnostics);
+  }
   return result;
 }
 

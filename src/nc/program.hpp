@@ -49,6 +49,7 @@ struct Block {
 
 struct Program {
   int number = -1;  // O number; -1 when the file has none
+  std::uint32_t line = 0;  // line of the O word (0: none)
   std::string name;  // comment on the O line
   std::shared_ptr<const SourceFile> file;
   std::vector<Block> blocks;
@@ -70,10 +71,17 @@ struct UnreadProgram {
   std::uint32_t end_line = 0;  // the closing '%'
 };
 
+// Problems of a text kept to be shown; the rest are counted (a file of junk has one a line).
+constexpr std::size_t kMaxDiagnostics = 100;
+
 struct ParseResult {
   std::vector<std::unique_ptr<Program>> programs;
-  std::vector<Diagnostic> diagnostics;  // every problem found in the text, in order
+  std::vector<Diagnostic> diagnostics;  // the first kMaxDiagnostics problems found in the text, by line
+  std::size_t more_diagnostics = 0;     // problems found beyond those
   std::vector<UnreadProgram> after_end;  // programs after the closing '%'
+  // Lines not parsed: past kMaxDiagnostics problems, lines after a block that alarms which no jump
+  // can reach (no new N, DO, WHILE, END, '/' or '%', no O first): they can never run.
+  std::size_t unchecked_lines = 0;
 };
 
 // Digits in one number, NC word or macro constant, every digit typed counted (0.00000001 has nine,

@@ -5,6 +5,9 @@
 
 namespace ncurve::report {
 
+// The most points an arc is written as (CSV): a bound on the output of one move.
+constexpr long kMostArcPoints = 100'000;
+
 template <class F>
 void arc_points(const machine::Move& m, double tolerance, F&& point) {
   int p = 0, q = 1, n = 2;
@@ -17,8 +20,10 @@ void arc_points(const machine::Move& m, double tolerance, F&& point) {
   double r = std::max(rs, re);
   double step = 2 * std::acos(std::max(-1.0, 1 - std::max(tolerance, 1e-9) / std::max(r, 1e-12)));
   if (!(step > 1e-6)) step = 1e-6;
-  long count = static_cast<long>(std::ceil(std::fabs(m.sweep) / step));
-  count = std::clamp(count, 1L, 10'000'000L);
+  // at most kMostArcPoints points (a chord error beyond the tolerance only where the radius is above
+  // about 2.5e8 times it); in doubles, so that a NaN or huge sweep converts to a count safely
+  const double wanted = std::ceil(std::fabs(m.sweep) / step);
+  const long count = wanted >= 1 ? static_cast<long>(std::min(wanted, static_cast<double>(kMostArcPoints))) : 1;
   for (long i = 1; i <= count; ++i) {
     if (i == count) {
       point(m.end);

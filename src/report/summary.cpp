@@ -43,8 +43,8 @@ std::string summary_text(const RunReport& r) {
   const auto& st = res.stats;
   const auto& prof = *r.profile;
   std::string out;
-  out += fmt::format("ncurve run: {}\n", r.source);
-  out += fmt::format("  machine        {}\n", prof.name);
+  out += fmt::format("ncurve run: {}\n", nc::escape_controls(r.source));
+  out += fmt::format("  machine        {}\n", nc::escape_controls(prof.name));
   out += fmt::format("  source         {} bytes, {} words, {} blocks, {} program(s)\n", r.stats.bytes, r.stats.words,
                      r.stats.blocks, r.stats.programs);
   out += fmt::format("  executed       {} blocks\n", st.blocks);
@@ -64,9 +64,17 @@ std::string summary_text(const RunReport& r) {
     if (!res.alarm || res.alarm->span.line != d.span.line || res.alarm->span.file != d.span.file ||
         res.alarm->code != d.code)
       problems.push_back(&d);
+  const std::size_t left_out = r.text_problems_left_out;
   if (!problems.empty())
-    out += fmt::format("  text problems  {} more (each alarms when the control reaches its block)\n", problems.size());
+    out += fmt::format("  text problems  {} more (each alarms when the control reaches its block){}\n",
+                       problems.size() + left_out,
+                       left_out ? fmt::format("; the first {} shown", problems.size()) : "");
   for (const auto* d : problems) out += nc::format(*d) + "\n";
+  if (left_out) out += fmt::format("  ... and {} more text problems not shown\n", left_out);
+  if (r.unchecked_lines)
+    out += fmt::format("  ... and {} lines after them not checked: each follows a block that alarms and no jump can "
+                       "reach it (no N, DO, WHILE, END or O)\n",
+                       r.unchecked_lines);
   for (const auto& w : res.warnings) out += nc::format(w) + "\n";
   if (res.alarm) out += nc::format(*res.alarm) + "\n";
   out += res.ok() ? "  result         completed\n" : "  result         ALARM: execution stopped at the block above\n";
@@ -119,6 +127,8 @@ std::string summary_json(const RunReport& r) {
   for (const auto& w : res.warnings) j["warnings"].push_back(diagnostic_json(w));
   j["text_problems"] = nlohmann::json::array();
   for (const auto& d : r.text_problems) j["text_problems"].push_back(diagnostic_json(d));
+  j["text_problems_left_out"] = r.text_problems_left_out;  // found beyond the first 100, counted only
+  j["unchecked_lines"] = r.unchecked_lines;  // past those: lines no jump can reach, not parsed
   j["alarm"] = res.alarm ? diagnostic_json(*res.alarm) : nlohmann::json(nullptr);
   j["ok"] = res.ok();
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // a name that is not UTF-8 gets U+FFFD

@@ -24,6 +24,8 @@ struct RunReport {
   const machine::RunResult* result = nullptr;
   SourceStats stats;
   std::vector<nc::Diagnostic> text_problems;  // syntax found by the parser, anywhere in the programs
+  std::size_t text_problems_left_out = 0;     // found beyond those, counted only
+  std::size_t unchecked_lines = 0;            // lines past those that can never run, not parsed
 };
 
 std::string summary_text(const RunReport& r);

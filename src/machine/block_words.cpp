@@ -1,0 +1,138 @@
+// What the control checks in the words of one block before acting on them: an address given twice
+// (No.3403#6 AD2), G codes of one group, M codes beyond what No.3404#7 M3B allows, and a minus sign
+// on an address that takes none (M, S, T, H, D).
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+
+#include "machine/interpreter.hpp"
+
+namespace ncurve::machine {
+
+namespace {
+
+// The modal group of a G code (x10), or 0 for a one-shot code and codes whose group the check
+// leaves alone. Lathe system A uses G90/G92/G94 as cycles and G98/G99 for the feed, so only the
+// groups common to every system are taken there.
+int g_group(int g, bool lathe, char system) {
+  switch (g) {
+    case 0: case 10: case 20: case 30: return 1;
+    case 170: case 180: case 190: return 2;
+    case 200: case 210: return 6;
+    case 400: case 410: case 420: return 7;
+    case 660: case 670: return 12;
+    case 960: case 970: return 13;
+    case 540: case 541: case 550: case 560: case 570: case 580: case 590: return 14;
+    default: break;
+  }
+  if (lathe && system == 'A') return 0;
+  switch (g) {
+    case 900: case 910: return 3;
+    case 940: case 950: return 5;
+    default: break;
+  }
+  if (lathe) return 0;
+  switch (g) {
+    case 430: case 440: case 490: return 8;
+    case 730: case 740: case 760: case 800: case 810: case 820: case 830: case 840: case 850: case 860:
+    case 870: case 880: case 890: return 9;
+    case 980: case 990: return 10;
+    case 500: case 510: return 11;
+    case 610: case 620: case 630: case 640: return 15;
+    case 680: case 690: return 16;
+    case 150: case 160: return 17;
+    case 501: case 511: return 22;
+    default: return 0;
+  }
+}
+
+std::string g_name(int g) { return fmt::format("G{:02}{}", g / 10, g % 10 ? fmt::format(".{}", g % 10) : ""); }
+
+bool takes_no_sign(char letter) {
+  return letter == 'M' || letter == 'S' || letter == 'T' || letter == 'H' || letter == 'D';
+}
+
+}  // namespace
+
+bool Interpreter::word_needs_check(char letter, double value) const {
+  return (letter != 'G' && have_[letter - 'A']) || (value < 0 && takes_no_sign(letter));
+}
+
+void Interpreter::check_block_words() {
+  // a minus sign where the address takes none: T-1 would select no tool, S-100 no speed
+  for (const Cmd& c : cmds_)
+    if (c.value < 0 && takes_no_sign(c.letter))
+      alarm("PS0006", fmt::format("{}{}: address {} takes no minus sign", c.letter, c.value, c.letter), c.column);
+
+  const bool strict = profile_.address_duplicate_alarm;
+  // G codes of one group: the last one counts (No.3403#6 AD2 = 0), or PS5074 (AD2 = 1)
+  const bool lathe = profile_.lathe();
+  for (std::size_t i = 0; i < g_codes_.size(); ++i) {
+    const int group = g_group(g_codes_[i], lathe, profile_.gcode_system);
+    if (group == 0) continue;
+    for (std::size_t j = i + 1; j < g_codes_.size(); ++j) {
+      if (g_group(g_codes_[j], lathe, profile_.gcode_system) != group || g_codes_[j] == g_codes_[i]) continue;
+      std::uint16_t column = 0;
+      for (const Cmd& c : cmds_)
+        if (c.letter == 'G' && std::lround(c.value * 10) == g_codes_[j]) column = c.column;
+      const std::string both = fmt::format("{} and {} of group {:02} in one block", g_name(g_codes_[i]),
+                                           g_name(g_codes_[j]), group);
+      if (strict) alarm("PS5074", both + " (No.3403#6 AD2 = 1)", column);
+      if (repeat_warned_.insert(block_).second)  // once a block, however often it runs
+          warn("NC2005", fmt::format("{}: the control takes the last, {} (No.3403#6 AD2 = 0)", both,
+                                   g_name(g_codes_[j])), column);
+      break;
+    }
+  }
+
+  // an address twice: the later value counts (AD2 = 0) or PS5074; M codes up to three with M3B
+  const std::size_t m_allowed = profile_.multiple_m_codes ? 3 : 1;
+  std::array<std::uint8_t, 26> count{};
+  for (const Cmd& c : cmds_) ++count[c.letter - 'A'];
+  bool dropped = false;
+  for (std::size_t i = 0; i < cmds_.size(); ++i) {
+    Cmd& c = cmds_[i];
+    const int k = c.letter - 'A';
+    const std::size_t allowed = c.letter == 'M' ? m_allowed : 1;
+    if (c.letter == 'G' || count[k] <= allowed) continue;
+    const Cmd& last = cmds_[slot_[k]];
+    const std::string what =
+        c.letter == 'M' && !profile_.multiple_m_codes
+            ? fmt::format("M{} and M{} in one block: this control takes one M code a block (No.3404#7 M3B = 0)",
+                          c.value, last.value)
+        : c.letter == 'M' ? fmt::format("more than three M codes in one block (No.3404#7 M3B = 1)")
+                          : fmt::format("address {} given twice in one block ({}{} and {}{})", c.letter, c.letter,
+                                        c.value, c.letter, last.value);
+    if (strict) alarm("PS5074", what + " (No.3403#6 AD2 = 1)", c.column);
+    if (repeat_warned_.insert(block_).second)
+      warn("NC2005", fmt::format("{}: the control takes the last (No.3403#6 AD2 = 0)", what), c.column);
+    --count[k];
+    c.letter = 0;  // dropped
+    dropped = true;
+  }
+  if (!dropped) return;
+  std::erase_if(cmds_, [](const Cmd& c) { return c.letter == 0; });
+  m_codes_.clear();
+  for (std::size_t i = 0; i < cmds_.size(); ++i) {
+    slot_[cmds_[i].letter - 'A'] = static_cast<std::uint8_t>(i);
+    if (cmds_[i].letter == 'M') m_codes_.push_back(static_cast<int>(std::lround(cmds_[i].value)));
+  }
+}
+
+// A value computed for an address (X[#1*2]) within the digits the control takes (number_digits):
+// counted in least input increments for a dimension, as a whole number otherwise (PS0003).
+void Interpreter::check_word_digits(char letter, double value, bool dimension, std::uint16_t column) const {
+  const double per_unit = !dimension ? 1.0 : inch_ ? per_unit_inch_ : per_unit_mm_;
+  const double limit = digit_limit_;
+  if (std::fabs(value) * per_unit < limit - 0.5) return;
+  const int decimals = static_cast<int>(std::lround(std::log10(per_unit)));
+  alarm("PS0003",
+        fmt::format("{}: the value {:g} has more digits than the control takes (at most {:.{}f}{}; {} digits, "
+                    "machine profile number_digits)",
+                    letter, value, (limit - 1) / per_unit, decimals, dimension ? (inch_ ? " in" : " mm") : "",
+                    profile_.number_digits),
+        column);
+}
+
+}  // namespace ncurve::machine
