@@ -231,6 +231,27 @@ async function lonelyMove(page, motions, kind) {
       await page.close();
     }
 
+    // a program in inches: the axes in inches; a click on empty space clears the selection
+    {
+      const {html, motions} = page_of('browser_inch', path.join(src, 'examples/inch.nc'), []);
+      const {page, errors} = await open(context, html);
+      await page.click('#views button[data-view="top"]');
+      await page.waitForTimeout(150);
+      const names = await page.$$eval('.ncurve-label.axis-name', (l) => l.filter((e) => e.style.display !== 'none').map((e) => e.textContent));
+      check(names.includes('X, in') && names.includes('Y, in'), `inch: axes in inches ${JSON.stringify(names)}`);
+      const i = await lonelyMove(page, motions, 2);
+      const p = await page.evaluate((i) => window.ncurveBackplot.screenOf(i), i);
+      await page.mouse.click(p.x, p.y);
+      check(!(await page.isHidden('#selection')) && (await page.textContent('#selection')).includes(`inch.nc:${motions[i].line}`),
+            `inch: an arc selected by a click (line ${motions[i].line})`);
+      const box = await page.locator('canvas').boundingBox();
+      await page.mouse.click(box.x + 30, box.y + box.height / 2);
+      check(await page.isHidden('#selection'), 'inch: a click on empty space clears the selection');
+      await page.screenshot({path: path.join(out, 'browser_inch_top.png')});
+      check(errors.length === 0, `inch: no script errors (${errors.join('; ')})`);
+      await page.close();
+    }
+
     // a hostile comment and a byte that is not UTF-8: text on the page, never markup or script
     {
       const prog = path.join(out, 'browser_hostile.nc');
