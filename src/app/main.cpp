@@ -54,6 +54,10 @@ int run_command(const app::RunArgs& a) {
               << " both write to standard output; write one of them to a file (-o FILE)\n";
     return 2;
   }
+  if (!a.dprnt.empty() && (a.dprnt == "-" || a.dprnt == output)) {
+    std::cerr << "ncurve run: --dprnt needs a file of its own (not standard output, not the -o file)\n";
+    return 2;
+  }
   std::optional<io::OutputFile> file;
   if (!output.empty()) {
     std::vector<std::string> inputs;
@@ -88,6 +92,16 @@ int run_command(const app::RunArgs& a) {
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
   if (gcode) gcode->finish();
+  if (!a.dprnt.empty()) {  // what the control sent up to the end or the alarm
+    std::vector<std::string> inputs;
+    for (const auto& f : lib.files()) inputs.push_back(f->name());
+    try {
+      io::write_file(a.dprnt, result.output.bytes, inputs);
+    } catch (const io::OutputError& e) {
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
+      return 2;
+    }
+  }
 
   report::RunReport rep;
   rep.source = a.in.program == "-" ? "<stdin>" : a.in.program;
