@@ -7,6 +7,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/cli_docs.hpp"
+#include "app/run_html.hpp"
 #include "app/run_plot.hpp"
 
 namespace ncurve::app {
@@ -24,6 +25,7 @@ void add_commands(CLI::App& app, Commands& c) {
   run->add_flag("--json", a.json, "summary as JSON");
   run->add_option("--dprnt", a.dprnt, "write what POPEN, DPRNT, BPRNT and PCLOS send to this file, byte for byte");
   add_plot_options(run, a.plot, a.view);
+  add_html_option(run, a.html);
   c.run_command = run;
   add_gen_command(app, c.gen);
   add_helicoid_command(app, c.helicoid);

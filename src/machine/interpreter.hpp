@@ -165,6 +165,8 @@ private:
   void tapping_hole(const Hole& h);  // G84, G74, conventional and rigid
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
+  bool lathe_drilling_block();  // a lathe's G83..G85, G87..G89 (lathe_drilling.cpp)
+  void lathe_hole(const Hole& h, double q);
 
   // AI contour control / look-ahead modes (high_speed.cpp)
   void high_speed_mode(int g, std::uint16_t column);
@@ -243,6 +245,28 @@ private:
   double thread_start_angle();                     // Q in 0.001 deg, degrees
   double increments(const Cmd& c, const char* what) const;  // a length written in least increments, mm
   // ---- end of lathe cycles ----
+
+  // ---- reference position moves, single direction positioning, skip and stored stroke checks
+  // (reference_moves.cpp, single_direction.cpp, skip.cpp, stroke_check.cpp) ----
+  unsigned block_axes() const;  // a bit per axis the block names (U, V, W too on system A)
+  void remember_intermediate(const AxisVector& mid);  // G28/G30/G30.1: the point G29 goes through
+  void reference_check();                 // G27
+  void return_from_reference();           // G29
+  void workpiece_preset();                // G92.1 (G50.3 on system A)
+  bool single_direction_block();          // a one-shot G60 block
+  void single_direction(const AxisVector& target);
+  bool skip_move(int g);                  // G31, G31 P1..P4, G31.1..G31.4
+  void init_stroke_check();
+  void stroke_area_command();             // G22 with its area
+  void stroke_area_switch(bool on);       // G22 / G23
+  void check_stroke(const Move& m) const; // deliver(): a move past a stored stroke limit is an alarm
+  AxisVector intermediate_{};
+  unsigned intermediate_axes_ = 0;        // axes G28/G30/G30.1 have given an intermediate point
+  std::optional<AxisVector> skip_position_;  // #5061..: where the last G31 ended
+  bool stroke_check_ = false;             // some stored stroke limit is in force
+  bool stroke2_on_ = true;                // G22 (check 2 on) or G23
+  AxisVector stroke1_plus_{}, stroke1_minus_{}, stroke2_plus_{}, stroke2_minus_{};
+  // ---- end of reference position moves ----
 
   // variables (variables.cpp)
  public:
@@ -336,6 +360,8 @@ private:
   std::optional<double> cycle_r_, cycle_z_;  // mm as written (G91: R from the initial level, Z from R)
   double cycle_q_ = 0, cycle_p_ = 0;  // peck depth or shift (mm), dwell (s)
   bool cycle_has_q_ = false;
+  bool cycle_z_incremental_ = false;  // lathe: the bottom was written as a distance from R (W, U, or under G91)
+  int cycle_clamp_m_ = -1;            // lathe: the C-axis clamp M code the cycle gave out in this block
   bool rigid_tapping_ = false;        // rigid mode: M29 (or No.5200#0) with G84/G74, until the cycle ends
   bool rigid_pending_ = false;        // M29 given, its G84/G74 not yet
   // rotary axes with roll-over (No.1008#0): absolute words of this block and their values
