@@ -1,5 +1,6 @@
 # Runs the ncurve command on each tests/programs/*.nc that has an expected output beside it
-# (NAME.expected.csv, NAME.expected.txt for the exit code and alarm) and compares.
+# (NAME.expected.csv, NAME.expected.txt for the exit code and alarm, NAME.expected.hex for the bytes
+# --dprnt writes) and compares.
 # NAME.toml is its machine profile and NAME.args holds extra options, one per line (for both).
 file(GLOB programs "${SRC}/tests/programs/*.nc")
 set(failures 0)
@@ -41,6 +42,25 @@ foreach(prog ${programs})
         endif()
       endif()
     endforeach()
+  endif()
+  if(EXISTS "${dir}/${name}.expected.hex")  # the bytes of --dprnt: hex pairs, '#' lines are comments
+    set(dprnt "${CMAKE_CURRENT_BINARY_DIR}/${name}.dprnt")
+    execute_process(COMMAND ${NCURVE} run ${prog} ${machine} --lib ${SRC}/macros --dprnt ${dprnt} ${extra}
+                    OUTPUT_QUIET RESULT_VARIABLE rc)
+    file(READ "${dprnt}" got HEX)
+    file(STRINGS "${dir}/${name}.expected.hex" hex_lines)
+    set(want "")
+    foreach(line ${hex_lines})
+      if(NOT line MATCHES "^#")
+        string(REPLACE " " "" line "${line}")
+        string(APPEND want "${line}")
+      endif()
+    endforeach()
+    string(TOLOWER "${want}" want)
+    if(NOT got STREQUAL want)
+      message(SEND_ERROR "${name}: --dprnt bytes differ from ${name}.expected.hex\n got  ${got}\n want ${want}")
+      math(EXPR failures "${failures}+1")
+    endif()
   endif()
 endforeach()
 if(failures GREATER 0)

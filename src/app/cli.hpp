@@ -20,6 +20,7 @@ struct RunArgs {
   std::string format = "summary";
   double arc_tol = 0.001;
   std::string output;
+  std::string dprnt;  // --dprnt FILE: the bytes POPEN/DPRNT/BPRNT/PCLOS sent
   bool json = false;
   std::string plot;  // --plot F.svg
   std::string view;  // --view xy|xz|yz|iso

@@ -58,6 +58,10 @@ int run_command(const app::RunArgs& a) {
               << " both write to standard output; write one of them to a file (-o FILE)\n";
     return 2;
   }
+  if (!a.dprnt.empty() && (a.dprnt == "-" || a.dprnt == output || a.dprnt == a.html || a.dprnt == a.plot)) {
+    std::cerr << "ncurve run: --dprnt needs a file of its own (not standard output, not another output's file)\n";
+    return 2;
+  }
   const bool html_out = a.html == "-";  // the page takes standard output
   if (html_out && (a.plot == "-" || (a.format != "summary" && output.empty()))) {
     std::cerr << "ncurve run: --html - and " << (a.plot == "-" ? "--plot -" : "--format " + a.format)
@@ -106,6 +110,16 @@ int run_command(const app::RunArgs& a) {
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
   if (gcode) gcode->finish();
+  if (!a.dprnt.empty()) {  // what the control sent up to the end or the alarm
+    std::vector<std::string> inputs;
+    for (const auto& f : lib.files()) inputs.push_back(f->name());
+    try {
+      io::write_file(a.dprnt, result.output.bytes, inputs);
+    } catch (const io::OutputError& e) {
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
+      return 2;
+    }
+  }
 
   report::RunReport rep;
   rep.source = a.in.program == "-" ? "<stdin>" : a.in.program;

@@ -193,6 +193,7 @@ void Interpreter::warn_mixed_decimal_points(const nc::Program& program) {
         if (!word.literal || !scaled_address(word.letter)) continue;
         if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
         if (word.letter == 'Q' && profile_.lathe()) continue;  // and a start angle (G32, G92), a depth in increments (G76)
+        if (word.letter == 'Q' && !profile_.lathe() && block_has_g(*p, b, 330, 330)) continue;  // G33's start angle
         if (word.decimal_point) with = with ? with : &word;
         else if (word.value != 0 && !without) {
           without = &word;
@@ -318,10 +319,17 @@ void Interpreter::step() {
   if (b.kind == Statement::nc) ++nc_blocks_since_;
   else if (b.kind != Statement::empty) ++statements_since_;
   switch (b.kind) {
-    case Statement::empty: ++f.pc; break;
+    case Statement::empty:
+      ++f.pc;
+      if (parameter_input_ && b.sequence >= 0) [[unlikely]] parameter_input_block(b);  // N alone: no R
+      break;
     case Statement::assign: exec_assignment(b); ++frames_.back().pc; break;
     case Statement::nc: {
       ++f.pc;
+      if (parameter_input_) [[unlikely]] {
+        parameter_input_block(b);
+        break;
+      }
       const bool g40 = comp_side_ != 0;
       const bool from_cancel = comp_side_ == 0 && !comp_->offset_mode();
       macro_call_block_ = false;
@@ -349,6 +357,10 @@ void Interpreter::step() {
       f.pc = b.match;
       last_back_jump_ = &b;
       last_back_jump_prog_ = prog_;
+      break;
+    case Statement::popen: case Statement::pclos: case Statement::dprnt: case Statement::bprnt:
+      external_output(b);
+      ++frames_.back().pc;
       break;
   }
 }

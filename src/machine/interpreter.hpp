@@ -15,6 +15,7 @@
 #include "machine/chamfer.hpp"
 #include "machine/compensation.hpp"
 #include "machine/library.hpp"
+#include "machine/macro_output.hpp"
 #include "machine/move.hpp"
 #include "machine/profile.hpp"
 #include "machine/transforms.hpp"
@@ -66,6 +67,7 @@ struct RunResult {
   std::optional<nc::Diagnostic> alarm;
   std::vector<nc::Diagnostic> warnings;  // includes #3006 messages and M00/M01 stops
   RunStats stats;
+  ExternalOutput output;  // what POPEN, DPRNT, BPRNT and PCLOS sent
 };
 
 class Interpreter {
@@ -106,6 +108,13 @@ private:
   void call_macro(int number, const std::vector<Arg>& args, int repeat, bool custom, bool modal, std::uint16_t column);
   void return_from_program(std::optional<int> sequence, std::uint16_t column);
   void end_program(int m_code);
+  void external_output(const nc::Block& b);  // POPEN PCLOS DPRNT BPRNT (macro_output.cpp)
+  // programmable parameter input, G10 L52 .. G11 (parameter_input.cpp)
+  void start_parameter_input();
+  void parameter_input_block(const nc::Block& b);
+  void set_parameters_by_program(int n, const std::vector<std::pair<std::string, double>>& changes,
+                                 std::uint16_t column);
+  bool parameter_input_ = false;
 
   // words and units
   bool has(char letter) const { return have_[letter - 'A']; }
@@ -299,7 +308,7 @@ private:
   void add_call_stack(nc::Diagnostic& d) const;
   std::vector<const nc::Program*> reached_;  // programs of other files entered so far (their warnings given)
 
-  const MachineProfile profile_;
+  MachineProfile profile_;  // G10 L52 may change its parameters
   std::array<bool, kAxes> has_axis_{};  // the profile's axes, by axis_index
   double per_unit_mm_ = 1000, per_unit_inch_ = 10000;  // least input increments per mm and per inch
   const ProgramLibrary& library_;

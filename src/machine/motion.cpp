@@ -205,6 +205,11 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           if (const int r = repetitive_code(g); r >= 700 && r <= 750) { one_shot.push_back(r); break; }
           if (profile_.gcode_system == 'C' && (g == 700 || g == 710)) { inch_ = g == 700; break; }
         }
+        if (!lathe && g == 330) {  // G33 thread cutting of a machining center (threading.cpp)
+          motion_ = 33;
+          group01 = true;
+          break;
+        }
         if (!lathe && g == 600) {  // G60: one-shot (group 00), or modal in group 01 with No.5431#0 MDL = 1
           if (!profile_.g60_modal) one_shot.push_back(g);
           else motion_ = 60, group01 = true;
@@ -266,12 +271,13 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
 
 void Interpreter::motion(const AxisVector& target) {
   bool swap = false;  // a mirror image reverses arcs: G02 and G03 swap
-  if (xf_hook_ && motion_ >= 2) swap = transform_arc_words();
+  if (xf_hook_ && (motion_ == 2 || motion_ == 3)) swap = transform_arc_words();
   switch (motion_) {
     case 0: linear(MoveKind::rapid, target); break;
     case 1: linear(MoveKind::line, target); break;
     case 2: arc(target, !swap); break;
     case 3: arc(target, swap); break;
+    case 33: thread_block(target); break;  // G33: a mill's, or G32 of lathe systems B/C (threading.cpp)
     case 60: single_direction(target); break;  // G60 modal (No.5431#0 MDL = 1)
     default: lathe_motion(target); break;  // G32/G90/G92/G94 (lathe_cycles.cpp)
   }
@@ -720,7 +726,11 @@ void Interpreter::data_setting() {
     *field = incremental_ ? *field + v : v;
     return;
   }
-  alarm("NC9001", fmt::format("G10 L{} is not supported yet (L2, L20 and L1/L10..L13 are)", l));
+  if (l == 52) return start_parameter_input();  // parameter_input.cpp
+  if (l == 50)
+    alarm("NC9001", "G10 L50 is the Series 15 form of programmable parameter input; the 0i, 16i and 30i take "
+                    "G10 L52 (N_ R_ blocks, then G11)");
+  alarm("NC9001", fmt::format("G10 L{} is not supported yet (L2, L20, L1/L10..L13 and L52 are)", l));
 }
 
 }  // namespace ncurve::machine

@@ -34,12 +34,12 @@ MachineProfile default_lathe() {
   return p;
 }
 
-namespace {
-
 bool is_axis_parameter(const std::string& key) {
   return key == "1006#0" || key == "1008#0" || key == "1008#1" || key == "1008#2" || key == "1260" ||
          key == "1320" || key == "1321" || key == "1322" || key == "1323" || key == "5440";
 }
+
+namespace {
 
 // No.1320..1323 (stored stroke limits 1 and 2) and No.5440 (G60 overrun) of one axis, in increments.
 void set_axis_length(MachineProfile& p, const std::string& key, int a, double value) {
@@ -178,6 +178,7 @@ void machine_table(MachineProfile& p, const toml::table& t, const std::string& o
       p.drilling.repeat_address = v[0];
     } else if (key == "diameter_programming") p.diameter_x = flag(origin, node, key);
     else if (key == "block_skip") p.block_skip = flag(origin, node, key);
+    else if (key == "output_parity") p.output_parity = flag(origin, node, key);
     else if (key == "macro_call_nesting") p.macro_nesting = static_cast<int>(number(origin, node, key));
     else if (key == "subprogram_nesting") p.subprogram_nesting = static_cast<int>(number(origin, node, key));
     else if (key == "number_digits") {
@@ -378,6 +379,9 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   else if (key == "3402#0") p.power_on_g01 = bit();
   else if (key == "3402#3") p.power_on_g91 = bit();
   else if (key == "6001#5") p.t_code_calls_o9000 = bit();
+  else if (key == "6001#1") p.dprnt_no_spaces = bit();
+  else if (key == "0100#2" || key == "100#2") p.eob_cr_lf = bit();
+  else if (key == "0100#3" || key == "100#3") p.eob_lf_only = bit();
   else if (key == "3405#4") p.chamfer_address_c = bit();
   else if (key == "5001#5") p.position_offset_by_h = bit();
   else if (key == "3410") p.arc_radius_tolerance = value * p.increment;
@@ -410,18 +414,19 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     } catch (...) {
       n = 0;
     }
-    if (value != std::floor(value))
+    const bool known = (n >= 6050 && n <= 6059) || (n >= 6080 && n <= 6089) || (n >= 6071 && n <= 6079);
+    if (known && value != std::floor(value))
       throw std::runtime_error(fmt::format("parameter {} takes a whole number, got {}", key, value));
     const int code = static_cast<int>(value);
     if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = code;
     else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = code;
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
-      throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 1300#0, 3401#0, 3402#0, 3402#3, 3402#7, 3403#5, 3403#6, 3404#7, 3405#4, "
+      throw UnknownParameter(
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 0100#2, 0100#3, 1300#0, 3401#0, 3402#0, 3402#3, 3402#7, 3403#5, 3403#6, 3404#7, 3405#4, "
                       "3410, 5001#5, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#2, 5101#4, 5101#5, 5101#6, 5102#6, 5102#7, 5105#1, "
                       "5105#2, 5110, 5111, 5114, 5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
-                      "5400#6, 5400#7, 5410, 5411, 5421, 5431#0, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
+                      "5400#6, 5400#7, 5410, 5411, 5421, 5431#0, 6001#1, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
                       "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260, 1320..1323, 5440)",
                       key));
   }

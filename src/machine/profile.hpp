@@ -4,6 +4,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -138,6 +139,11 @@ struct MachineProfile {
   int g76_finish_count = 1;      // No.5142: G76 finishing passes (m), 1..99
   int g76_tool_angle = 0;        // No.5143: G76 tool nose angle (a): 0, 29, 30, 55, 60 or 80 degrees
   bool series10_format = false;  // No.0001#1 FCV: Series 10/11 program format (one-block G71..G76)
+  // external output of DPRNT/BPRNT (docs/macro-output.md)
+  bool dprnt_no_spaces = false;  // No.6001#1 PRT: leading zeros and the + sign send nothing (0: a space each)
+  bool eob_cr_lf = false;        // No.0100#2 CRF: the end of block is CR LF (0: as NCR says)
+  bool eob_lf_only = false;      // No.0100#3 NCR: the end of block is LF (0: LF CR CR)
+  bool output_parity = false;    // characters keep ISO code's even parity bit (8th bit) as a receiver stores them
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   // coordinate transforms of a mill (G68, G51): parameters No.5400, 5410, 5411, 5421
   bool rotation_angle_by_g90_g91 = false;  // No.5400#0 RIN: G68 R follows G90/G91 (0: always absolute)
@@ -183,6 +189,12 @@ MachineProfile default_lathe();
 
 // Reads a TOML profile; throws std::runtime_error naming file:line:column on a bad or unknown key.
 MachineProfile load_profile(const std::string& path);
+// Thrown by set_parameter for a parameter ncurve does not model (others are bad values).
+struct UnknownParameter : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+// Whether a parameter is set per axis (its key then ends in ".A", the axis letter).
+bool is_axis_parameter(const std::string& key);
 // Sets a FANUC parameter by its number ("6050", "3401#0"; per axis "1008#0.A"); throws for ones
 // ncurve does not use.
 void set_parameter(MachineProfile& p, const std::string& key, double value);

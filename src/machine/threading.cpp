@@ -86,9 +86,9 @@ void Interpreter::thread_pass(const AxisVector& end, double out_x, double lead, 
 // spindle's one-rotation signal, Q not read).
 void Interpreter::thread_block(const AxisVector& target) {
   if (compensating())
-    alarm("NC9001", fmt::format("threading (G{}) under tool-nose radius compensation is not supported yet: cancel "
+    alarm("NC9001", fmt::format("threading (G{}) under {} radius compensation is not supported yet: cancel "
                                 "it with G40 before the thread",
-                                motion_));
+                                motion_, profile_.lathe() ? "tool-nose" : "cutter"));
   const bool continues = thread_block_ != 0 && thread_block_ + 1 == result_.stats.blocks;
   double angle = thread_start_angle();
   if (continues) angle = -1;

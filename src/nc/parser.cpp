@@ -111,6 +111,7 @@ public:
     if (i_ == s_.size()) return;
     b.column = s_[i_].col;
     if (peek() == '#') return assignment(b, Statement::assign);
+    if (output_statement(b)) return;
     std::size_t len = 0;
     Kw k = keyword_at(i_, len);
     if (is_macro_statement_word(k)) return macro_statement(b, k, len);
@@ -543,6 +544,91 @@ private:
     double n = number(dp);
     if (dp || n < 1 || n > 3) throw SyntaxError{"PS0126", "the loop number of DO/END must be 1, 2 or 3", c, 1};
     return static_cast<std::uint8_t>(n);
+  }
+
+  bool word_at(const char* w) const {
+    std::size_t n = std::strlen(w);
+    for (std::size_t j = 0; j < n; ++j)
+      if (peek(j) != w[j]) return false;
+    return true;
+  }
+
+  // External output commands (FANUC operator's manual, custom macro: external output commands):
+  // POPEN, PCLOS, DPRNT [a #b [cd] ...], BPRNT [a #b [c] ...]. Characters: letters, digits and
+  // * / + - ? @ & _ ('*' is sent as a space); spaces are not sent (they are not read).
+  bool output_statement(Block& b) {
+    static constexpr struct {
+      const char* word;
+      Statement kind;
+    } kWords[] = {{"POPEN", Statement::popen},
+                  {"PCLOS", Statement::pclos},
+                  {"DPRNT", Statement::dprnt},
+                  {"BPRNT", Statement::bprnt}};
+    for (const auto& w : kWords) {
+      if (!word_at(w.word)) continue;
+      i_ += 5;
+      b.kind = w.kind;
+      if (w.kind == Statement::dprnt || w.kind == Statement::bprnt) print_items(b, w.kind == Statement::dprnt);
+      if (i_ != s_.size()) fail("PS0114", fmt::format("unexpected text after {}", w.word));
+      return true;
+    }
+    return false;
+  }
+
+  void print_items(Block& b, bool decimal) {
+    const char* name = decimal ? "DPRNT" : "BPRNT";
+    if (peek() != '[') fail("PS0114", fmt::format("{} needs its items in brackets: {}[...]", name, name));
+    const std::uint16_t open = col();
+    ++i_;
+    b.words_begin = static_cast<std::uint32_t>(prog_.prints.size());
+    for (;;) {
+      const char c = peek();
+      if (c == ']') break;
+      if (c == '\0') fail("PS0114", fmt::format("missing ']' for the '[' of {} at column {}", name, open));
+      PrintItem item;
+      item.column = col();
+      if (c == '#') {
+        Expr e = begin_expr();
+        stack_ = max_stack_ = 0;
+        variable();
+        item.var = finish_expr(e);
+        print_format(item, decimal);
+      } else {
+        const bool allowed = is_upper(c) || is_digit(c) || std::strchr("*/+-?@&_", c) != nullptr;
+        if (!allowed)
+          fail("PS0114", fmt::format("'{}' cannot be output by {} (letters, digits and * / + - ? @ & _; '*' is a "
+                                     "space)", c, name));
+        while (peek() != '\0' && (is_upper(peek()) || is_digit(peek()) || std::strchr("*/+-?@&_", peek())))
+          item.text += peek(), ++i_;
+      }
+      prog_.prints.push_back(std::move(item));
+    }
+    ++i_;
+    b.words_end = static_cast<std::uint32_t>(prog_.prints.size());
+  }
+
+  // [cd] after a DPRNT variable (integer and decimal digits, together at most 8), [c] after a BPRNT
+  // one (decimal places).
+  void print_format(PrintItem& item, bool decimal) {
+    const char* need = decimal ? "[cd]: its integer digits c and decimal digits d, e.g. #100[53]"
+                               : "[c]: its decimal places, e.g. #100[3]";
+    if (peek() != '[') fail("PS0114", fmt::format("a variable of {} needs its format {}", decimal ? "DPRNT" : "BPRNT", need));
+    const std::uint16_t at = col();
+    ++i_;
+    std::string digits;
+    while (is_digit(peek())) digits += peek(), ++i_;
+    if (peek() != ']' || digits.size() != (decimal ? 2u : 1u))
+      throw SyntaxError{"PS0114", fmt::format("bad format: {} needs {}", decimal ? "DPRNT" : "BPRNT", need), at, 1};
+    ++i_;
+    if (decimal) {
+      item.integers = static_cast<std::uint8_t>(digits[0] - '0');
+      item.decimals = static_cast<std::uint8_t>(digits[1] - '0');
+      if (item.integers + item.decimals > 8 || item.integers + item.decimals == 0)
+        throw SyntaxError{"PS0114", fmt::format("DPRNT format [{}]: integer and decimal digits together are 1 to 8",
+                                                digits), at, 4};
+    } else {
+      item.decimals = static_cast<std::uint8_t>(digits[0] - '0');
+    }
   }
 
   void macro_statement(Block& b, Kw k, std::size_t len) {

@@ -30,6 +30,19 @@ enum class Statement : std::uint8_t {
   while_do,  // WHILE [cond] DO m
   do_loop,   // DO m (no WHILE: endless)
   end_loop,  // END m
+  popen,     // POPEN: external output open (macro_output.cpp)
+  pclos,     // PCLOS: external output close
+  dprnt,     // DPRNT[...]: words_begin..words_end index Program::prints
+  bprnt,     // BPRNT[...]: likewise
+};
+
+// One item of DPRNT[...] or BPRNT[...]: characters as written ('*' kept), or a variable and its
+// format: DPRNT [c d] integer and decimal digits, BPRNT [c] decimal places (in decimals).
+struct PrintItem {
+  std::string text;
+  Expr var;  // #b (or #[expr]); empty for characters
+  std::uint8_t integers = 0, decimals = 0;
+  std::uint16_t column = 0;
 };
 
 struct Block {
@@ -57,6 +70,7 @@ struct Program {
   std::vector<Instr> code;
   std::vector<Diagnostic> errors;
   std::vector<std::string> comments;
+  std::vector<PrintItem> prints;  // items of DPRNT/BPRNT blocks
   std::unordered_map<std::int32_t, std::int32_t> sequence_index;  // N -> first block with it
 
   Span span_of(const Block& b, std::uint16_t column = 0, std::uint32_t length = 1) const {

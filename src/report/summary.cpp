@@ -75,6 +75,12 @@ std::string summary_text(const RunReport& r) {
     out += fmt::format("  ... and {} lines after them not checked: each follows a block that alarms and no jump can "
                        "reach it (no N, DO, WHILE, END or O)\n",
                        r.unchecked_lines);
+  const auto& printed = res.output;
+  if (!printed.lines.empty())
+    out += fmt::format("  printed        {} line(s) by DPRNT/BPRNT (the bytes sent: --dprnt FILE)\n",
+                       printed.lines.size() + printed.lines_left_out);
+  for (const auto& line : printed.lines) out += fmt::format("    \"{}\"\n", line);
+  if (printed.lines_left_out) out += fmt::format("    ... and {} more lines not shown\n", printed.lines_left_out);
   for (const auto& w : res.warnings) out += nc::format(w) + "\n";
   if (res.alarm) out += nc::format(*res.alarm) + "\n";
   out += res.ok() ? "  result         completed\n" : "  result         ALARM: execution stopped at the block above\n";
@@ -123,6 +129,8 @@ std::string summary_json(const RunReport& r) {
     }
     j["extent"] = ext;
   }
+  j["printed"] = res.output.lines;  // DPRNT/BPRNT lines, the first 1000
+  j["printed_left_out"] = res.output.lines_left_out;
   j["warnings"] = nlohmann::json::array();
   for (const auto& w : res.warnings) j["warnings"].push_back(diagnostic_json(w));
   j["text_problems"] = nlohmann::json::array();
