@@ -458,8 +458,10 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
     if (r == 0) alarm("PS0023", "arc radius R is zero", word('R').column);
     double half = d / 2;
     if (half > std::fabs(r) + profile_.arc_radius_tolerance)
-      alarm("PS0023", fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} mm)",
-                                  word('R').value, half),
+      alarm("PS0023", fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} {} "
+                                  "against {:.4f})",
+                                  word('R').value, std::fabs(r) / (inch_ ? 25.4 : 1), inch_ ? "in" : "mm",
+                                  half / (inch_ ? 25.4 : 1)),
             word('R').column);
     double h = std::sqrt(std::max(0.0, r * r - half * half));
     // centre left of the chord for G03 with R > 0, right for G02
