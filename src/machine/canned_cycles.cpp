@@ -111,14 +111,16 @@ bool Interpreter::canned_cycle_block() {
                                 "and names no alarm; ncurve stops here",
                                 "XYZ"[cycle_axis_], axis_letter, plane_),
           gcol);
-  if (!cycle_z_)
-    alarm("PS0045", fmt::format("address {} not found (G{}): a hole needs its bottom point {} (the manual names no "
-                                "alarm for it; ncurve stops here)", axis_letter, g, axis_letter),
-          gcol);
-  if (!cycle_r_)
-    alarm("PS0045", fmt::format("address R not found (G{}): a hole needs its point R (the manual names no alarm "
-                                "for it; ncurve stops here)", g),
-          gcol);
+  if (!cycle_r_ || !cycle_z_)  // the manual on G80: "R = 0 and Z = 0 in incremental mode"
+    warn_once("NC2017",
+              fmt::format("G{} drills without {}: point R and point Z are cleared by G80 (and at power-on), which the "
+                          "control takes as R = 0 and Z = 0 in incremental mode: {}",
+                          g,
+                          !cycle_r_ && !cycle_z_ ? fmt::format("R and {}", axis_letter)
+                          : !cycle_r_            ? std::string("R")
+                                                 : std::string(1, axis_letter),
+                          !cycle_z_ ? "the hole has no depth" : "point R is the initial level"),
+              gcol);
   if ((g == 73 || g == 83) && (!cycle_has_q_ || cycle_q_ <= 0))
     alarm("PS0045", fmt::format("address Q not found (G73/G83): G{} needs Q, the depth of each cut, not 0", g), gcol);
   const bool rigid = (g == 84 || g == 74) && (rigid_tapping_ || profile_.drilling.g84_rigid);
@@ -128,8 +130,8 @@ bool Interpreter::canned_cycle_block() {
   Hole h;
   h.axis = ax;
   h.initial = cycle_initial_[ax];
-  h.r = incremental_ ? h.initial + *cycle_r_ : *cycle_r_;
-  h.z = incremental_ ? h.r + *cycle_z_ : *cycle_z_;
+  h.r = !cycle_r_ ? h.initial : incremental_ ? h.initial + *cycle_r_ : *cycle_r_;
+  h.z = !cycle_z_ ? h.r : incremental_ ? h.r + *cycle_z_ : *cycle_z_;
   h.back = cycle_return_initial_ ? h.initial : h.r;
   h.rigid = rigid;
   // Under cutter compensation the cycle's moves are made at the programmed points, the vector
@@ -158,6 +160,19 @@ bool Interpreter::canned_cycle_block() {
   return true;
 }
 
+// "When the G8x command and an M code are specified in the same block, the M code is executed at
+// the time of the first positioning operation": after the move to the first hole, before the rapid
+// to R; the repeats (K) make no M code. M02, M30, M98 and M99 act after the block as elsewhere.
+void Interpreter::cycle_m_codes() {
+  if (cycle_m_done_) return;
+  cycle_m_done_ = true;
+  for (const Cmd& c : cmds_) {
+    if (c.letter != 'M') continue;
+    const int m = integer(c, "M");
+    if (m != 2 && m != 30 && m != 98 && m != 99) m_code_event(m);
+  }
+}
+
 void Interpreter::cycle_move(const Hole& h, MoveKind kind, double level) {
   AxisVector t = pos_;
   t[h.axis] = level;
@@ -179,6 +194,7 @@ void Interpreter::drill_hole(const Hole& h) {
   AxisVector at = h.at;
   at[h.axis] = pos_[h.axis];
   if (at != pos_) linear(MoveKind::rapid, at);
+  if (!m_codes_.empty()) [[unlikely]] cycle_m_codes();
   if (g == 76 || g == 87 || g == 88) return boring_hole(h);
   if (g == 84 || g == 74) return tapping_hole(h);
   cycle_move(h, MoveKind::rapid, h.r);

@@ -139,6 +139,10 @@ void Interpreter::warn(std::string code, std::string message, std::uint16_t colu
     result_.warnings.push_back(nc::Diagnostic{nc::Severity::warning, std::move(code), std::move(message), span(column)});
 }
 
+void Interpreter::warn_once(std::string code, std::string message, std::uint16_t column) {
+  if (warned_once_.emplace(block_, code).second) warn(std::move(code), std::move(message), column);
+}
+
 Value Interpreter::eval(const nc::Expr& e) {
   VarReader reader{this};
   const nc::Instr* code = prog_->code.data();
@@ -651,6 +655,7 @@ void Interpreter::exec_nc(const Block& b) {
     }
   }
 
+  if (position_offset_ != 0) [[unlikely]] check_position_offset(one_shot);
   bool moved = false;
   if (!one_shot.empty()) {
     if (std::ranges::any_of(one_shot, [](int g) { return g != 40; })) end_lathe_cycle_data();
@@ -679,6 +684,7 @@ void Interpreter::exec_nc(const Block& b) {
     AxisVector target = pos_;
     bool axes = axis_target(target);
     bool full_circle_ijk = (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K'));
+    if (position_offset_ != 0) [[unlikely]] apply_position_offset(target);
     if (axes || full_circle_ijk) {
       if (rolls_) roll_over(target);
       if (corner_on_ || (profile_.lathe() && (has('C') || has('I') || has('K') || has('R')))) [[unlikely]]
@@ -748,19 +754,28 @@ void Interpreter::exec_nc(const Block& b) {
         return;
       }
       case 2: case 30: end_program(m); return;
-      case 0: case 1:
-        emit_event(MoveKind::program_stop, m);
-        if (m == 0) warn("NC2004", "M00 program stop: the control waits for cycle start here");
+      default:
+        if (!cycle_m_done_) m_code_event(m);  // else made at the hole's positioning (canned_cycles.cpp)
         break;
-      case 3: case 4: case 5: case 19: emit_event(MoveKind::spindle, m); break;
-      case 6: emit_event(MoveKind::tool_change, tool_); break;
-      case 7: case 8: case 9: emit_event(MoveKind::coolant, m); break;
-      default: emit_event(MoveKind::m_code, m); break;
     }
   }
 
   if (moved && modal_call_ && !here.modal) {
     call_macro(modal_program_, modal_args_, modal_repeat_, false, true, b.column);
+  }
+}
+
+// The event of an M code that neither calls nor ends a program, as its block makes it.
+void Interpreter::m_code_event(int m) {
+  switch (m) {
+    case 0: case 1:
+      emit_event(MoveKind::program_stop, m);
+      if (m == 0) warn("NC2004", "M00 program stop: the control waits for cycle start here");
+      break;
+    case 3: case 4: case 5: case 19: emit_event(MoveKind::spindle, m); break;
+    case 6: emit_event(MoveKind::tool_change, tool_); break;
+    case 7: case 8: case 9: emit_event(MoveKind::coolant, m); break;
+    default: emit_event(MoveKind::m_code, m); break;
   }
 }
 

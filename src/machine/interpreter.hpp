@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -134,6 +135,7 @@ private:
   V2 nose_tip() const;
   double nose_radius() const;
   void emit_event(MoveKind kind, int code);
+  void m_code_event(int m);  // spindle, coolant, M06, M00/M01 and other M codes of the block
   void dwell();
   void reference_return(int g);
   void machine_coordinate_move();
@@ -150,6 +152,8 @@ private:
   void cancel_canned_cycle();
   bool canned_cycle_block();  // a block in cycle mode: stores the data, drills when it has axis words
   void drill_hole(const Hole& h);
+  void cycle_m_codes();  // the cycle block's M codes, at its first hole's positioning
+  bool cycle_m_done_ = false;  // they were: the block's M codes make no event after it
   void cycle_move(const Hole& h, MoveKind kind, double level);  // along the drilling axis
   void cycle_dwell();
   void boring_hole(const Hole& h);   // G76, G87, G88
@@ -158,6 +162,11 @@ private:
   void rigid_tapping_check(std::uint16_t column) const;
   bool lathe_drilling_block();  // a lathe's G83..G85, G87..G89 (lathe_drilling.cpp)
   void lathe_hole(const Hole& h, double q);
+
+  // tool position offset G45..G48 (position_offset.cpp)
+  int position_offset_ = 0;  // 45..48 given in the block (one-shot), else 0
+  void check_position_offset(const std::vector<int>& one_shot);
+  void apply_position_offset(AxisVector& target);
 
   // AI contour control / look-ahead modes (high_speed.cpp)
   void high_speed_mode(int g, std::uint16_t column);
@@ -271,6 +280,7 @@ private:
   [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
                           std::uint32_t length = 1) const;
   void warn(std::string code, std::string message, std::uint16_t column = 0);
+  void warn_once(std::string code, std::string message, std::uint16_t column = 0);  // once per block and code
   nc::Span span(std::uint16_t column = 0, std::uint32_t length = 1) const;
 
   struct Frame {
@@ -319,6 +329,7 @@ private:
   std::vector<int> m_codes_;
   bool word_check_ = false;  // the block repeats an address or signs one that takes no sign
   double digit_limit_ = 1e8;  // 10^number_digits: a word's value in units or increments stays below
+  std::set<std::pair<const nc::Block*, std::string>> warned_once_;  // warn_once: given already
   std::unordered_set<const nc::Block*> repeat_warned_;  // blocks already warned of a repeated address
   std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
   std::chrono::steady_clock::time_point started_;

@@ -335,9 +335,6 @@ bool Interpreter::peck_cycle(int g) {
     if (!one_block && has('R')) mrc_return_ = dimension(word('R'));
     return false;
   }
-  if (comp_side_ != 0 || comp_->offset_mode())
-    alarm("NC9001", fmt::format("{} ({}) with tool-nose radius compensation in force is not supported yet", code,
-                                cycle_name(g)));
   const char di = one_block ? 'I' : 'P', dk = one_block ? 'K' : 'Q';
   auto amount = [&](char l) {
     if (!has(l)) return 0.0;
@@ -368,6 +365,13 @@ bool Interpreter::peck_cycle(int g) {
   } else {
     k.start = mrc::transposed(k.start), k.end = mrc::transposed(k.end);
     k.shift = step_z, k.peck = step_x;
+  }
+  // Tool-nose radius compensation is not applied to G74/G75 (as to G76): the vector in force is
+  // cancelled at the start point, the pecks are made as programmed, the next move starts up again.
+  const base::RestoreOnExit restore_side(comp_side_);
+  if (compensating()) {
+    comp_->cancel_at_end();
+    comp_side_ = 0;
   }
   emit_cycle_path(mrc::peck_cycle(k), g == 750);
   return true;

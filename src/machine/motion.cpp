@@ -87,6 +87,8 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
   const bool lathe = profile_.lathe();
   const bool system_a = lathe && profile_.gcode_system == 'A';
   exact_stop_once_ = false;
+  position_offset_ = 0;
+  cycle_m_done_ = false;
   bool group01 = false;
   bool transform = false;  // a G15/G16, G50/G51, G50.1/G51.1, G68/G69 of a mill: transform_codes
   struct CancelCycle {  // after the block's codes: G00..G03 with G81 in one block cancel it too
@@ -114,6 +116,10 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       case 230: stroke_area_switch(false); break;  // G22 comes with its area (one_shot)
       case 250: case 260: break;  // spindle speed fluctuation detection off/on: nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
+      case 450: case 460: case 470: case 480:  // tool position offset (position_offset.cpp)
+        if (lathe) alarm("PS0010", unknown_g_code(g, profile_), column);
+        position_offset_ = g / 10;
+        break;
       case 170: case 180: case 190:
         if (g / 10 != plane_ && (rigid_tapping_ || rigid_pending_))
           alarm("PS0206", fmt::format("the plane cannot change (G{}) in rigid tapping mode (after M29)", g / 10), column);
@@ -457,12 +463,14 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
     }
     if (r == 0) alarm("PS0023", "arc radius R is zero", word('R').column);
     double half = d / 2;
-    if (half > std::fabs(r) + profile_.arc_radius_tolerance)
-      alarm("PS0023", fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} {} "
-                                  "against {:.4f})",
-                                  word('R').value, std::fabs(r) / (inch_ ? 25.4 : 1), inch_ ? "in" : "mm",
-                                  half / (inch_ ? 25.4 : 1)),
-            word('R').column);
+    if (half > std::fabs(r) + profile_.arc_radius_tolerance)  // no circle of radius R: the centre is the midpoint
+      warn_once("NC2016",
+                fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} {} against "
+                            "{:.4f}): the control puts the centre on the chord's midpoint and cuts a half circle of "
+                            "that radius (PS0023 is for R0 only)",
+                            word('R').value, std::fabs(r) / (inch_ ? 25.4 : 1), inch_ ? "in" : "mm",
+                            half / (inch_ ? 25.4 : 1)),
+                word('R').column);
     double h = std::sqrt(std::max(0.0, r * r - half * half));
     // centre left of the chord for G03 with R > 0, right for G02
     double sign = (clockwise ? -1.0 : 1.0) * (r > 0 ? 1.0 : -1.0);
@@ -470,7 +478,13 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
     cq = sq + dy / 2 + sign * h * dx / d;
   } else {
     double off_p = 0, off_q = 0;
-    if (!has(pa.ip) && !has(pa.iq)) alarm("PS0022", "G02/G03 needs R or the centre offsets (I, J, K) of the plane");
+    if (!has(pa.ip) && !has(pa.iq)) {  // No.3403#5 CIR
+      if (profile_.arc_without_centre_alarm)
+        alarm("PS0022", "G02/G03 needs R or the centre offsets (I, J, K) of the plane (No.3403#5 CIR = 1)");
+      warn_once("NC2015", "G02/G03 without R or the centre offsets (I, J, K) of the plane: the control moves to "
+                          "the end point by linear interpolation (No.3403#5 CIR = 0)");
+      return linear(MoveKind::line, target);
+    }
     auto offset = [&](char letter, int axis) {
       if (!has(letter)) return 0.0;
       double v = dimension(word(letter));  // I on a lathe is a radius value

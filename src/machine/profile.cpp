@@ -350,6 +350,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   else if (key == "1300#0") p.stroke2_outside = bit();
   else if (key == "3402#7") p.stroke2_off_at_power_on = bit();
   else if (key == "3401#0") p.decimal_calculator = bit();
+  else if (key == "3403#5") p.arc_without_centre_alarm = bit();
   else if (key == "3403#6") p.address_duplicate_alarm = bit();
   else if (key == "3404#7") p.multiple_m_codes = bit();
   else if (key == "5003#0") p.compensation.startup_type_b = bit();
@@ -382,6 +383,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   else if (key == "3402#3") p.power_on_g91 = bit();
   else if (key == "6001#5") p.t_code_calls_o9000 = bit();
   else if (key == "3405#4") p.chamfer_address_c = bit();
+  else if (key == "5001#5") p.position_offset_by_h = bit();
   else if (key == "3410") p.arc_radius_tolerance = value * p.increment;
   else if (key == "5114" || key == "5115") {
     if (value < 0 || value != std::floor(value))
@@ -420,8 +422,8 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
       throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 1300#0, 3401#0, 3402#0, 3402#3, 3402#7, 3403#6, 3404#7, 3405#4, "
-                      "3410, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#2, 5101#4, 5101#5, 5101#6, 5102#6, 5102#7, 5105#1, "
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 1300#0, 3401#0, 3402#0, 3402#3, 3402#7, 3403#5, 3403#6, 3404#7, 3405#4, "
+                      "3410, 5001#5, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#2, 5101#4, 5101#5, 5101#6, 5102#6, 5102#7, 5105#1, "
                       "5105#2, 5110, 5111, 5114, 5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
                       "5400#6, 5400#7, 5410, 5411, 5421, 5431#0, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
                       "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260, 1320..1323, 5440)",

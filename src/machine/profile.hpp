@@ -111,10 +111,12 @@ struct MachineProfile {
   bool block_skip = false;          // block skip switch on: blocks starting with '/' are skipped
   int macro_nesting = 4;            // G65/G66/custom calls: 4 on 0i/16i, 5 on 30i
   int subprogram_nesting = 10;      // M98 calls: 10 on 0i, 15 on 30i
+  bool arc_without_centre_alarm = false;  // No.3403#5 CIR: G02/G03 without R or I J K is PS0022 (else a line)
   bool address_duplicate_alarm = false;  // No.3403#6 AD2: an address twice in a block is PS5074 (else the last counts)
   bool multiple_m_codes = false;         // No.3404#7 M3B: up to three M codes in a block (else one)
   int number_digits = 8;            // digits in one number (word or constant), leading zeros counted
   double arc_radius_tolerance = 0.020;  // No.3410, mm: start/end radius difference allowed
+  bool position_offset_by_h = false;    // No.5001#5 TPH: G45..G48 take the offset number from H (else D)
   double peck_retract = 0;    // No.5114, mm: G73's retraction d after each peck
   double peck_clearance = 0;  // No.5115, mm: G83's clearance d above the previous peck's depth
   DrillingSettings drilling;

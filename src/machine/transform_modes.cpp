@@ -279,8 +279,8 @@ void Interpreter::transformed_cycle_levels(int axis, double& r_level, double& z_
     return (forward ? xf_.apply(v) : xf_.invert(v))[axis];
   };
   const double initial = z_of(cycle_initial_[axis], false);
-  const double r = incremental_ ? initial + *cycle_r_ : *cycle_r_;
-  const double z = incremental_ ? r + *cycle_z_ : *cycle_z_;
+  const double r = !cycle_r_ ? initial : incremental_ ? initial + *cycle_r_ : *cycle_r_;  // cleared: 0 incremental
+  const double z = !cycle_z_ ? r : incremental_ ? r + *cycle_z_ : *cycle_z_;
   r_level = z_of(r, true);
   z_level = z_of(z, true);
 }

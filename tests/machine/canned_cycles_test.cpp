@@ -239,9 +239,9 @@ TEST(CannedCycles, G80AndG01Cancel) {
                       {3, R, 20, 0, 1},
                       {4, R, 30, 0, 1}, {4, L, 30, 0, -3}, {4, R, 30, 0, 1},
                       {5, L, 40, 0, 1}, {6, L, 50, 0, 1}});
-  // after G80 the data are gone: a new cycle needs Z again
+  // after G80 the data are gone: Z is cleared, "Z = 0 in incremental mode", a hole without depth
   auto again = run("G90 G00 X0. Y0. Z10.\nG81 X5. Z-3. R1. F100.\nG80\nG81 X10. R1.\nM30\n");
-  EXPECT_EQ(again.alarm_code(), "PS0045");
+  expect_moves(again, 4, {{4, R, 10, 0, 10}, {4, R, 10, 0, 1}, {4, R, 10, 0, 10}});
 }
 
 // R, F and P alone change the kept data but drill nothing; Z is an axis word and drills where the tool is.
@@ -253,9 +253,22 @@ TEST(CannedCycles, ABlockWithoutAxisWordsDoesNotDrill) {
   EXPECT_DOUBLE_EQ(r.motions().at(7).feed, 200);
 }
 
+// The manual on G80: "Point R and point Z are cleared. This means that R = 0 and Z = 0 in
+// incremental mode." A hole without R starts at the initial level; without Z it has no depth.
+TEST(CannedCycles, ClearedRAndZAreZeroIncremental) {
+  auto no_z = run("G00 Z10.\nG81 X5. R2. F100.\nM30\n");
+  expect_moves(no_z, 2, {{2, R, 5, 0, 10}, {2, R, 5, 0, 2}, {2, R, 5, 0, 10}});
+  ASSERT_EQ(no_z.result.warnings.size(), 1u);
+  EXPECT_EQ(no_z.result.warnings[0].code, "NC2017");
+  auto no_r = run("G00 Z10.\nG81 X5. Z-2. F100.\nM30\n");
+  expect_moves(no_r, 2, {{2, R, 5, 0, 10}, {2, L, 5, 0, -2}, {2, R, 5, 0, 10}});
+  // corpus O0061: G99 without R after G80 returns to point R, which is the initial level
+  auto g99 = run("G90 G00 X0. Y0. Z1.455\nG81 G99 X1. Z0.3 F42.\nX2. Z-1.1\nG80\nM30\n");
+  expect_moves(g99, 2, {{2, R, 1, 0, 1.455}, {2, L, 1, 0, 0.3}, {2, R, 1, 0, 1.455},
+                        {3, R, 2, 0, 1.455}, {3, L, 2, 0, -1.1}, {3, R, 2, 0, 1.455}});
+}
+
 TEST(CannedCycles, MissingDataAlarms) {
-  EXPECT_EQ(run("G00 Z10.\nG81 X5. R2. F100.\nM30\n").alarm_code(), "PS0045");
-  EXPECT_EQ(run("G00 Z10.\nG81 X5. Z-2. F100.\nM30\n").alarm_code(), "PS0045");
   auto q = run("G00 Z10.\nG83 X5. Z-10. R2. F100.\nM30\n");
   EXPECT_EQ(q.alarm_code(), "PS0045");
   EXPECT_EQ(q.alarm_line(), 2u);

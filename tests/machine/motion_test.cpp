@@ -143,10 +143,41 @@ TEST(Motion, ArcPlanesG18G19) {
 
 TEST(Motion, ArcErrors) {
   EXPECT_EQ(run("G00 X10. Y0.\nG03 X0. Y10.5 I-10. F100.\nM30\n").alarm_code(), "PS0020");
-  EXPECT_EQ(run("G00 X10. Y0.\nG03 X-30. Y0. R10. F100.\nM30\n").alarm_code(), "PS0023");
-  EXPECT_EQ(run("G00 X10. Y0.\nG03 X0. Y10. F100.\nM30\n").alarm_code(), "PS0022");
+  EXPECT_EQ(run("G00 X10. Y0.\nG03 X-30. Y0. R0 F100.\nM30\n").alarm_code(), "PS0023");
+  auto cir = machine::default_mill();
+  machine::set_parameter(cir, "3403#5", 1);  // CIR = 1: an arc without R or I J K is PS0022
+  EXPECT_EQ(run("G00 X10. Y0.\nG03 X0. Y10. F100.\nM30\n", cir).alarm_code(), "PS0022");
   // within No.3410 the arc is accepted
   EXPECT_TRUE(run("G00 X10. Y0.\nG03 X0. Y10.015 I-10. F100.\nM30\n").result.ok());
+}
+
+// No.3403#5 CIR = 0 (factory): G02/G03 without R or I J K is a line to the end point, at F.
+TEST(Motion, ArcWithoutCentreIsALine) {
+  auto r = run("G00 X10. Y0.\nG03 X0. Y10. F100.\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  const auto m = r.motions().back();
+  EXPECT_EQ(m.kind, machine::MoveKind::line);
+  EXPECT_NEAR(m.end[0], 0, 1e-12);
+  EXPECT_NEAR(m.end[1], 10, 1e-12);
+  EXPECT_DOUBLE_EQ(m.feed, 100);
+  ASSERT_EQ(r.result.warnings.size(), 1u);
+  EXPECT_EQ(r.result.warnings[0].code, "NC2015");
+}
+
+// R shorter than half the chord: no circle of radius R reaches the end point; the centre falls on
+// the chord's midpoint (the square root of R^2 - (d/2)^2 taken as 0), a half circle of radius d/2.
+// From (10, 0) to (-30, 0) with R10: centre (-10, 0), radius 20, counterclockwise through (-10, 20).
+TEST(Motion, ArcRadiusShorterThanHalfTheChordIsAHalfCircle) {
+  auto r = run("G00 X10. Y0.\nG03 X-30. Y0. R10. F100.\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  const auto m = r.motions().back();
+  EXPECT_EQ(m.kind, machine::MoveKind::arc);
+  EXPECT_NEAR(m.center[0], -10, 1e-9);
+  EXPECT_NEAR(m.center[1], 0, 1e-9);
+  EXPECT_NEAR(m.sweep, std::numbers::pi, 1e-9);
+  EXPECT_NEAR(r.result.stats.max[1], 20, 1e-9);
+  ASSERT_EQ(r.result.warnings.size(), 1u);
+  EXPECT_EQ(r.result.warnings[0].code, "NC2016");
 }
 
 TEST(Motion, InchProgramsConvertAtTheEdge) {

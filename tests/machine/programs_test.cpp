@@ -30,7 +30,9 @@ struct Expected {
   double value = 0;                           // events: the M code (spindle, program_stop) or the dwell in s
 };
 
-bool is_event(const std::string& kind) { return kind == "spindle" || kind == "dwell" || kind == "program_stop"; }
+bool is_event(const std::string& kind) {
+  return kind == "spindle" || kind == "coolant" || kind == "dwell" || kind == "program_stop";
+}
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
