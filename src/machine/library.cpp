@@ -19,6 +19,13 @@ int number_from_file_name(const std::string& path) {
   if (stem.size() > 9) return -1;
   return std::stoi(stem.substr(1));
 }
+// Lines before a file's first O number that hold nothing but comments (a title such as "(NEW FILE)"
+// after the '%'): the control runs the program the O line starts, not these.
+bool header_only(const nc::Program& p) {
+  return p.number < 0 && std::ranges::all_of(p.blocks, [](const nc::Block& b) {
+           return b.kind == nc::Statement::empty && b.error < 0 && b.sequence < 0;
+         });
+}
 }  // namespace
 
 std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, std::string text, bool is_main) {
@@ -34,8 +41,12 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, st
   if (!in_folder_) ++source_;
   int from_name = number_from_file_name(name);
   for (auto& p : r.programs) {
-    if (p->number < 0 && from_name >= 0) p->number = from_name;
     const nc::Program* raw = p.get();
+    if (header_only(*p) && p != r.programs.back()) {  // comments before the first O: no program to run
+      programs_.push_back(std::move(p));
+      continue;
+    }
+    if (p->number < 0 && from_name >= 0) p->number = from_name;
     if (is_main && !main_) main_ = raw;
     if (p->number >= 0) {
       auto [it, added] = by_number_.try_emplace(p->number, raw);

@@ -471,10 +471,11 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
     double half = d / 2;
     if (half > std::fabs(r) + profile_.arc_radius_tolerance)  // no circle of radius R: the centre is the midpoint
       warn_once("NC2016",
-                fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} mm): the "
-                            "control puts the centre on the chord's midpoint and cuts a half circle of that radius "
-                            "(PS0023 is for R0 only)",
-                            word('R').value, half),
+                fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} {} against "
+                            "{:.4f}): the control puts the centre on the chord's midpoint and cuts a half circle of "
+                            "that radius (PS0023 is for R0 only)",
+                            word('R').value, std::fabs(r) / (inch_ ? 25.4 : 1), inch_ ? "in" : "mm",
+                            half / (inch_ ? 25.4 : 1)),
                 word('R').column);
     double h = std::sqrt(std::max(0.0, r * r - half * half));
     // centre left of the chord for G03 with R > 0, right for G02

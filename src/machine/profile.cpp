@@ -122,20 +122,24 @@ AxisVector axis_vector(const std::string& origin, const toml::node& node, const 
 }
 
 void machine_table(MachineProfile& p, const toml::table& t, const std::string& origin) {
+  // type first: its defaults (a lathe's axes X Z) must not replace the file's axes, and a TOML
+  // table's keys come in alphabetical order ("axes" before "type"), not in the file's
+  if (const toml::node* node = t.get("type")) {
+    std::string v = text(origin, *node, "type");
+    if (v == "mill") p.type = MachineType::mill;
+    else if (v == "lathe") {
+      MachineProfile l = default_lathe();
+      p.type = l.type;
+      p.axes = l.axes;
+      p.power_on_feed_per_rev = l.power_on_feed_per_rev;
+      p.power_on_plane = l.power_on_plane;
+    } else fail(origin, *node, "type must be \"mill\" or \"lathe\"");
+  }
   for (const auto& [k, node] : t) {
     std::string key(k.str());
     if (key == "name") p.name = text(origin, node, key);
-    else if (key == "type") {
-      std::string v = text(origin, node, key);
-      if (v == "mill") p.type = MachineType::mill;
-      else if (v == "lathe") {
-        MachineProfile l = default_lathe();
-        p.type = l.type;
-        p.axes = l.axes;
-        p.power_on_feed_per_rev = l.power_on_feed_per_rev;
-        p.power_on_plane = l.power_on_plane;
-      } else fail(origin, node, "type must be \"mill\" or \"lathe\"");
-    } else if (key == "control") {
+    else if (key == "type") continue;
+    else if (key == "control") {
       std::string v = text(origin, node, key);
       if (v == "0i" || v == "16i" || v == "18i" || v == "21i") p.control = Control::fanuc_0i;
       else if (v == "30i" || v == "31i" || v == "32i") {

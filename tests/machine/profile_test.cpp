@@ -21,6 +21,20 @@ TEST(Profile, ShippedProfilesLoad) {
   EXPECT_DOUBLE_EQ(lathe.reference_points[0][0], 150.0);
 }
 
+// TOML gives a table's keys in alphabetical order: "axes" comes before "type", and a lathe's
+// default axes (X Z) must not replace the ones the file gives, wherever the two keys stand.
+TEST(Profile, LatheKeepsTheAxesTheFileGives) {
+  auto c = parse_profile("[machine]\ntype = \"lathe\"\naxes = [\"X\", \"Z\", \"C\"]\n", "p.toml");
+  EXPECT_TRUE(c.lathe());
+  EXPECT_EQ(c.axes, "XZC");
+  auto before = parse_profile("[machine]\naxes = [\"X\", \"Z\", \"C\"]\ntype = \"lathe\"\n", "p.toml");
+  EXPECT_EQ(before.axes, "XZC");
+  EXPECT_EQ(parse_profile("[machine]\ntype = \"lathe\"\n", "p.toml").axes, "XZ");
+  EXPECT_THROW(parse_profile("[machine]\ntype = \"lathe\"\naxes = [\"X\", \"Z\", \"C\"]\n[feeds]\nrapid = [1, 2]\n",
+                             "p.toml"),
+               std::runtime_error);
+}
+
 TEST(Profile, ThirtyIRaisesNestingAndIncrementSystem) {
   auto p = parse_profile("[machine]\ncontrol = \"30i\"\nincrement_system = \"IS-C\"\n[parameters]\n\"3410\" = 20\n", "p.toml");
   EXPECT_EQ(p.control, Control::fanuc_30i);
