@@ -84,6 +84,7 @@ int run_command(const app::RunArgs& a) {
     tee.emplace(*sink, *plot);
   }
   machine::MoveSink& target = tee ? static_cast<machine::MoveSink&>(*tee) : *sink;
+  setup.options.path_tolerance = a.arc_tol;  // G12.1/G07.1 paths as the CSV's arcs
   machine::Interpreter interp(profile, lib, setup.options);
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
