@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <new>
 
 #include "app/cli_checks.hpp"
 #include "app/curve_args.hpp"
@@ -143,6 +144,8 @@ int gen_command(const GenArgs& a) {
     if (a.macro_only && o.form != gen::Form::cycle) throw std::runtime_error("--macro-only is for --form cycle");
     curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to, "ncurve gen", long_options(*a.command)},
                               a.command->remaining(), o.profile));
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 2;
@@ -163,6 +166,8 @@ int gen_command(const GenArgs& a) {
   } catch (const base::BoundExceeded& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 1;

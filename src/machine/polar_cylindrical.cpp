@@ -50,9 +50,9 @@ const char* forbidden_kind(int g, bool lathe, char system) {
 }
 }  // namespace
 
-// G07.1 (71), G12.1 (121), G13.1 (131); G107, G112, G113 (x10) are a lathe's names for them.
+// G07.1 (71), G12.1 (121), G13.1 (131); G107 is G07.1's other name, G112 and G113 a lathe's.
 bool Interpreter::developed_code(int g, std::uint16_t column) {
-  if (g >= 1000 && !profile_.lathe()) return false;
+  if ((g == 1120 || g == 1130) && !profile_.lathe()) return false;  // G107 is on both
   if (g == 71 || g == 1070) return cylinder_code(column), true;
   if (g == 121 || g == 1120) return polar_start(column), true;
   // G13.1: outside the mode there is nothing to cancel
@@ -347,6 +347,7 @@ void Interpreter::deliver_developed(Move& m) {
     if (d.polar) warn_polar_speed(piece, piece.end[d.rotary] - piece.start[d.rotary], piece.length,
                                   std::min(std::fabs(piece.start[d.linear]), std::fabs(piece.end[d.linear])));
     d.machine = piece.end;
+    if (stroke_check_) check_stroke(piece);  // stroke_check.cpp
     record(piece);
   }
 }
