@@ -106,6 +106,7 @@ int run_command(const app::RunArgs& a) {
   machine::MoveSink& target = html_tee ? static_cast<machine::MoveSink&>(*html_tee)
                               : tee    ? static_cast<machine::MoveSink&>(*tee)
                                        : *sink;
+  setup.options.path_tolerance = a.arc_tol;  // G12.1/G07.1 paths as the CSV's arcs
   machine::Interpreter interp(profile, lib, setup.options);
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end

@@ -77,9 +77,6 @@ constexpr Entry kTable[] = {
     {962, both, "spindle indexing (G96.2)"},
     {963, both, "spindle indexing (G96.3)"},
     {964, both, "spindle indexing (G96.4)"},
-    {1070, both, "cylindrical interpolation (G107)"},
-    {1120, lathe, "polar coordinate interpolation (G112)"},
-    {1130, lathe, "polar coordinate interpolation (G113)"},
 };
 }  // namespace
 

@@ -33,6 +33,7 @@ struct RunOptions {
   double max_seconds = 60;  // or after this long (wall clock); 0: no limit
   std::vector<std::pair<int, double>> presets;  // --set "#100=5"
   bool nose_centre = false;  // lathe: write the tool-nose centre's path, not the imaginary tip's
+  double path_tolerance = 0.001;  // mm: G12.1/G07.1 moves are written within this of the contour (--arc-tol)
 };
 
 struct RunStats {
@@ -139,6 +140,7 @@ private:
   void emit(Move& m);
   void emit_programmed(Move& m);  // emit() past chamfering: compensation, then deliver
   void deliver(Move& m);  // stats and the sink: the moves as the tool makes them
+  void record(Move& m);   // deliver() past the polar and cylindrical interpolation modes
   bool compensating() const;
   void end_of_block_compensation(bool g40, bool g41);
   V2 nose_tip() const;
@@ -218,6 +220,34 @@ private:
   double xf_arc_r_ = 0;
   V2 xf_arc_offset_{};
   // ---- end of coordinate transforms ----
+
+  // ---- polar coordinate interpolation G12.1/G13.1 and cylindrical interpolation G07.1
+  // (polar_cylindrical.cpp): moves are made in the programmed plane, deliver() turns them into the
+  // linear and rotary axes' moves ----
+  struct Developed {
+    bool polar = true;         // G12.1, else G07.1
+    int rotary = 5, linear = 0;  // axes (polar: No.5461, No.5460)
+    int slot = 1;              // where the hypothetical (polar) or developed (G07.1) coordinate is kept
+    int spare = -1;            // G07.1: where the real position of the axis at `slot` is kept (-1: held)
+    int p = 0, q = 1;          // the plane's slots
+    int saved_plane = 17, sign = 1;  // sign: the linear axis's side of the centre (polar)
+    double held = 0, radius = 0;     // held: the axis at `slot`, unmoved; radius: G07.1's r
+    double angle0 = 0, angle = 0;    // polar: the rotary axis at G12.1 (deg), the angle from it (rad)
+    AxisVector machine{};            // where the machine is
+    std::uint32_t warned_line = 0;
+  };
+  bool developed_code(int g, std::uint16_t column);  // false: g is not a code of this machine
+  void polar_start(std::uint16_t column);
+  void cylinder_code(std::uint16_t column);
+  void end_developed();
+  void check_code_in_developed(int g, std::uint16_t column) const;  // codes the modes forbid
+  bool developed_axis_target(AxisVector& target);  // axis_target in the modes
+  void deliver_developed(Move& m);                 // deliver() in the modes
+  void warn_polar_speed(const Move& m, double degrees, double length, double radius);
+  std::optional<Developed> dev_;
+  bool developed_ = false;       // dev_ has a value
+  bool developed_hook_ = false;  // axis words go to developed_axis_target
+  // ---- end of polar and cylindrical interpolation ----
 
   // ---- lathe multiple repetitive cycles G70..G75 (lathe_repetitive.cpp) ----
   struct ShapeRange {

@@ -104,6 +104,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
     for (const Cmd& c : cmds_)
       if (c.letter == 'G' && std::lround(c.value * 10) == g) column = c.column;
     if (xf_on_) check_code_in_transform(g, column);
+    if (developed_) [[unlikely]] check_code_in_developed(g, column);  // polar_cylindrical.cpp
     switch (g) {
       case 0: case 10: case 20: case 30:
         motion_ = g / 10;
@@ -156,6 +157,9 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
         alarm("PS0010", unknown_g_code(g, profile_), column);
       case 51: case 50: case 80: case 611: high_speed_mode(g, column); break;  // high_speed.cpp
+      case 71: case 121: case 131: case 1070: case 1120: case 1130:  // polar_cylindrical.cpp
+        if (developed_code(g, column)) break;
+        alarm("PS0010", unknown_g_code(g, profile_), column);
       case 430: case 440:
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
         length_comp_ = g / 10;
@@ -234,6 +238,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
 
 // Reads axis words into target (work coordinates, mm). Returns whether any axis word was given.
 bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
+  if (developed_hook_) [[unlikely]] return developed_axis_target(target);  // G12.1, G07.1
   if (xf_hook_ && !force_absolute) return transformed_axis_target(target);  // G16, G51.1, G51, G68
   const bool lathe = profile_.lathe();
   const bool system_a = lathe && profile_.gcode_system == 'A';
@@ -328,7 +333,7 @@ void Interpreter::emit_programmed(Move& m) {
   double radius = 0;
   if (profile_.lathe()) {
     radius = nose_radius();
-    comp_->set_tip(nose_tip());
+    comp_->set_tip(developed_ ? V2{} : nose_tip());  // G12.1, G07.1: the tool's centre
   } else {
     radius = radius_offset(d_);
   }
@@ -341,6 +346,7 @@ void Interpreter::emit_programmed(Move& m) {
 }
 
 void Interpreter::deliver(Move& m) {
+  if (developed_) [[unlikely]] return deliver_developed(m);  // G12.1, G07.1: the machine's moves
   if (stroke_check_) [[unlikely]] check_stroke(m);  // stroke_check.cpp
   if (options_.nose_centre && profile_.lathe() && m.is_motion()) {
     const V2 tip = nose_tip();  // (Z, X): the imaginary tip from the nose centre
@@ -348,6 +354,10 @@ void Interpreter::deliver(Move& m) {
     m.end[2] -= tip.x, m.end[0] -= tip.y;
     if (m.kind == MoveKind::arc) m.center[2] -= tip.x, m.center[0] -= tip.y;
   }
+  record(m);
+}
+
+void Interpreter::record(Move& m) {
   RunStats& s = result_.stats;
   ++s.by_kind[static_cast<int>(m.kind)];
   if (m.is_motion()) {
@@ -452,7 +462,7 @@ void Interpreter::linear(MoveKind kind, const AxisVector& target) {
 void Interpreter::arc(const AxisVector& target, bool clockwise) {
   if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
   const PlaneAxes pa = plane_axes(plane_);
-  if (profile_.lathe() && plane_ != 18) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
+  if (profile_.lathe() && plane_ != 18 && !developed_) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
   const double sp = pos_[pa.p], sq = pos_[pa.q];
   const double ep = target[pa.p], eq = target[pa.q];
   const double tol = profile_.increment * 0.5 + 1e-9;
@@ -535,8 +545,8 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
   m.length = std::hypot(planar, dn);
   m.feed = feed_;
   m.seconds = feed_seconds(m.length, m.center[0]);
-  // extents: the quadrant points the arc passes
-  for (int k = 0; k < 4; ++k) {
+  // extents: the quadrant points the arc passes (in G12.1/G07.1 the machine's moves give them)
+  for (int k = 0; k < 4 && !developed_; ++k) {
     double ang = k * std::numbers::pi / 2;
     double rel = std::remainder(ang - a0, kTwoPi);
     double along = sweep > 0 ? (rel < 0 ? rel + kTwoPi : rel) : (rel > 0 ? kTwoPi - rel : -rel);

@@ -36,7 +36,8 @@ MachineProfile default_lathe() {
 
 bool is_axis_parameter(const std::string& key) {
   return key == "1006#0" || key == "1008#0" || key == "1008#1" || key == "1008#2" || key == "1260" ||
-         key == "1320" || key == "1321" || key == "1322" || key == "1323" || key == "5440";
+         key == "1320" || key == "1321" || key == "1322" || key == "1323" || key == "5440" ||
+         key == "1022";
 }
 
 namespace {
@@ -65,6 +66,12 @@ void set_axis_parameter(MachineProfile& p, const std::string& key, const std::st
     if (value < 0 || value != std::floor(value))
       throw std::runtime_error(fmt::format("parameter 1260.{} is the travel of one turn in increments (0: 360 deg)", axis));
     r.per_turn = value > 0 ? value * p.increment : 360;
+    return;
+  }
+  if (key == "1022") {  // 1, 2, 3: a basic axis; 5, 6, 7: parallel to X, Y, Z
+    if (value != std::floor(value) || value < 0 || value > 7 || value == 4)
+      throw std::runtime_error(fmt::format("parameter 1022.{} is 0..3 or 5..7 (5, 6, 7: parallel to X, Y, Z)", axis));
+    r.parallel = static_cast<int>(value);
     return;
   }
   if (value != 0 && value != 1) throw std::runtime_error(fmt::format("parameter {}.{} is a bit: 0 or 1", key, axis));
@@ -394,6 +401,11 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
       throw std::runtime_error(fmt::format("parameter {} is a whole number of increments, 0 or more", key));
     (key == "5114" ? p.peck_retract : p.peck_clearance) = value * p.increment;
   }
+  else if (key == "5460" || key == "5461") {
+    if (value != std::floor(value) || value < 0 || value > 8)
+      throw std::runtime_error(fmt::format("parameter {} is an axis number, 0..8 (1: the profile's first axis)", key));
+    (key == "5460" ? p.polar_linear_axis : p.polar_rotary_axis) = static_cast<int>(value);
+  }
   else if (key == "5400#0") p.rotation_angle_by_g90_g91 = bit();
   else if (key == "5400#6") p.scaling_per_axis = bit();
   else if (key == "5400#7") p.scaling_unit_coarse = bit();
@@ -430,8 +442,8 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
           fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 0100#2, 0100#3, 1300#0, 3401#0, 3402#0, 3402#3, 3402#7, 3403#5, 3403#6, 3404#7, 3405#4, "
                       "3410, 5001#5, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#2, 5101#4, 5101#5, 5101#6, 5102#6, 5102#7, 5105#1, "
                       "5105#2, 5110, 5111, 5114, 5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
-                      "5400#6, 5400#7, 5410, 5411, 5421, 5431#0, 6001#1, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
-                      "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260, 1320..1323, 5440)",
+                      "5400#6, 5400#7, 5410, 5411, 5421, 5431#0, 5460, 5461, 6001#1, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
+                      "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1022, 1260, 1320..1323, 5440)",
                       key));
   }
 }

@@ -74,6 +74,7 @@ struct RotaryAxis {
   bool by_sign = false;             // No.1008#1 RABx: absolute commands turn the way of their sign (else the shorter way)
   bool relative_roll_over = false;  // No.1008#2 RRLx: relative coordinates within one turn (display only)
   double per_turn = 360;            // No.1260, degrees per turn
+  int parallel = 0;                 // No.1022: 5, 6, 7 = parallel to X, Y, Z (the axis G07.1 stands it for)
 };
 
 // Drilling canned cycle parameters of a mill (No.5101, No.5200, No.5213).
@@ -144,6 +145,8 @@ struct MachineProfile {
   bool eob_cr_lf = false;        // No.0100#2 CRF: the end of block is CR LF (0: as NCR says)
   bool eob_lf_only = false;      // No.0100#3 NCR: the end of block is LF (0: LF CR CR)
   bool output_parity = false;    // characters keep ISO code's even parity bit (8th bit) as a receiver stores them
+  int polar_linear_axis = 0;        // No.5460: G12.1's linear axis, by its number in `axes` (0: not set)
+  int polar_rotary_axis = 0;        // No.5461: G12.1's rotary axis, by its number
   bool arcs_with_r = false;         // programs written for this machine give arcs by R, not I J K
   // coordinate transforms of a mill (G68, G51): parameters No.5400, 5410, 5411, 5421
   bool rotation_angle_by_g90_g91 = false;  // No.5400#0 RIN: G68 R follows G90/G91 (0: always absolute)

@@ -276,7 +276,7 @@ TEST(Motion, AxisWordOfAMissingRotaryAxisAlarms) {
 }
 
 TEST(Motion, UnsupportedFeaturesStopWithADiagnostic) {
-  EXPECT_EQ(run("G12.1\n").alarm_code(), "NC9001");  // polar coordinate interpolation
+  EXPECT_EQ(run("G02.2\n").alarm_code(), "NC9001");  // involute interpolation
   EXPECT_EQ(run("G07.5 X1.\n").alarm_code(), "PS0010");
 }
 

@@ -123,7 +123,7 @@ TEST(GCodes, CodesOfTheControlAreNotSupportedYetNotUnknown) {
     EXPECT_NE(message(r).find(std::string("(") + code + ")"), std::string::npos) << message(r);
   }
   EXPECT_NE(message(run("G37 Z0.\nM30\n")).find("PS0080"), std::string::npos);
-  for (const char* code : {"G34", "G36", "G50.2", "G68", "G112"}) {
+  for (const char* code : {"G34", "G36", "G50.2", "G68", "G10.9"}) {
     auto r = run(fmt::format("{} X10. Z1.\nM30\n", code), machine::default_lathe());
     EXPECT_EQ(r.alarm_code(), "NC9001") << code << ": " << message(r);
   }

@@ -1,0 +1,372 @@
+// Polar coordinate interpolation (G12.1/G13.1; G112/G113 on a lathe) and cylindrical interpolation
+// (G07.1; G107 on a lathe) as the FANUC 0i/15i/16i operator's manuals describe them
+// (docs/polar-cylindrical.md). In either mode the program is a contour in a Cartesian plane: for
+// G12.1 the linear axis (No.5460) and a hypothetical axis addressed by the rotary axis (No.5461),
+// for G07.1 the surface of the cylinder of radius r developed flat, the rotary axis's angle read as
+// the arc length r * angle. The interpreter moves in that plane (pos_ holds it: the hypothetical or
+// developed coordinate sits in the slot of the linear axis it stands beside), cutter compensation
+// offsets the contour there, and deliver() turns each move into the linear and rotary axes' moves.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "machine/developed_path.hpp"
+#include "machine/interpreter.hpp"
+
+namespace ncurve::machine {
+
+namespace {
+constexpr double kDeg = 180 / std::numbers::pi;
+const char* const kAxisLetters = "XYZABC";
+
+std::string g_name(int g) { return fmt::format("G{:02}{}", g / 10, g % 10 ? fmt::format(".{}", g % 10) : ""); }
+
+const char* forbidden_kind(int g, bool lathe, char system) {
+  switch (g) {
+    case 0: return "positioning";
+    case 170: case 180: case 190: return "plane selection";
+    case 270: case 280: case 290: case 300: case 301: return "reference position return";
+    case 310: case 311: case 312: case 313: case 314: return "skip function";
+    case 370: return "automatic tool length measurement";
+    case 520: case 530: case 540: case 550: case 560: case 570: case 580: case 590: case 541:
+      return "coordinate system change";
+    case 160: case 510: case 511: case 680: return "coordinate transform";
+    case 430: case 440: case 490: return "tool length compensation";
+    case 320: case 330: case 340: return "threading";
+    default: break;
+  }
+  if (g == 920 && !(lathe && system == 'A')) return "coordinate system setting";
+  if (lathe) {
+    if (system == 'A' && (g == 900 || g == 920 || g == 940)) return "single cutting cycle";
+    if (system != 'A' && (g == 770 || g == 780 || g == 790)) return "single cutting cycle";
+    if (g >= 700 && g <= 760 && g % 10 == 0) return "multiple repetitive cycle";
+    if (g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890) return "drilling canned cycle";
+  } else if (g % 10 == 0 && ((g >= 730 && g <= 760) || (g >= 810 && g <= 890))) {
+    return "drilling canned cycle";
+  }
+  return nullptr;
+}
+}  // namespace
+
+// G07.1 (71), G12.1 (121), G13.1 (131); G107 is G07.1's other name, G112 and G113 a lathe's.
+bool Interpreter::developed_code(int g, std::uint16_t column) {
+  if ((g == 1120 || g == 1130) && !profile_.lathe()) return false;  // G107 is on both
+  if (g == 71 || g == 1070) return cylinder_code(column), true;
+  if (g == 121 || g == 1120) return polar_start(column), true;
+  // G13.1: outside the mode there is nothing to cancel
+  if (!dev_) return true;
+  if (!dev_->polar)
+    alarm("PS0176", fmt::format("{} in cylindrical interpolation mode: cancel G07.1 with G07.1 {}0", g_name(g),
+                                kAxisLetters[dev_->rotary]),
+          column);
+  for (const Cmd& c : cmds_)
+    if (axis_index(c.letter) >= 0)
+      alarm("PS0145", fmt::format("{} is given in a block of its own, without axis words", g_name(g)), c.column);
+  if (compensating())
+    alarm("PS0146", fmt::format("{} in cutter compensation mode: cancel G41/G42 with G40 inside the polar "
+                                "coordinate interpolation mode first",
+                                g_name(g)),
+          column);
+  end_developed();
+  return true;
+}
+
+void Interpreter::polar_start(std::uint16_t column) {
+  if (dev_)
+    alarm(dev_->polar ? "PS0146" : "PS0176",
+          dev_->polar ? "G12.1 in polar coordinate interpolation mode: it is on already"
+                      : "G12.1 in cylindrical interpolation mode: cancel G07.1 first",
+          column);
+  const int n = static_cast<int>(profile_.axes.size());
+  const int ln = profile_.polar_linear_axis, rn = profile_.polar_rotary_axis;
+  if (ln < 1 || ln > n || rn < 1 || rn > n)
+    alarm("PS0145", fmt::format("G12.1 needs the axes of the polar coordinate interpolation plane: set parameter "
+                                "No.5460 (the linear axis) and No.5461 (the rotary axis) to their axis numbers, "
+                                "1 to {} (axes {}); now {} and {}",
+                                n, profile_.axes, ln, rn),
+          column);
+  const int lin = axis_index(profile_.axes[ln - 1]), rot = axis_index(profile_.axes[rn - 1]);
+  if (lin > 2 || rot < 3 || !rotary_[rot])
+    alarm("PS0145", fmt::format("G12.1: No.5460 must name a linear axis (X, Y or Z) and No.5461 a rotary axis "
+                                "(No.1006#0 = 1); they name {} and {}",
+                                profile_.axes[ln - 1], profile_.axes[rn - 1]),
+          column);
+  for (const Cmd& c : cmds_)
+    if (axis_index(c.letter) >= 0)
+      alarm("PS0145", "G12.1 is given in a block of its own, without axis words", c.column);
+  if (compensating())
+    alarm("PS0146", "G12.1 in cutter compensation mode: give G40 before G12.1 and start G41/G42 inside the mode",
+          column);
+  if (xf_on_) alarm("PS0146", "G12.1 with a coordinate transform on: cancel G16, G51, G51.1 or G68 first", column);
+  if (cycle_ != 0) alarm("PS0146", "G12.1 in a drilling canned cycle: cancel it with G80 first", column);
+  Developed d;
+  d.polar = true;
+  d.linear = lin;
+  d.rotary = rot;
+  d.slot = lin == 0 ? 1 : lin == 1 ? 2 : 0;  // the hypothetical axis: Xp-Yp, Yp-Zp or Zp-Xp plane
+  d.p = lin;
+  d.q = d.slot;
+  d.saved_plane = plane_;
+  d.held = pos_[d.slot];
+  d.sign = pos_[lin] < 0 ? -1 : 1;
+  d.angle0 = pos_[rot];  // "the angle of 0 for the position of the tool when G12.1 is specified"
+  d.machine = pos_;
+  pos_[d.slot] = 0;  // "the virtual axis is at coordinate 0 immediately after G12.1"
+  plane_ = lin == 0 ? 17 : lin == 1 ? 19 : 18;
+  dev_ = d;
+  developed_ = developed_hook_ = true;
+}
+
+// G07.1 C<r>: on with the cylinder's radius r, off with C0.
+void Interpreter::cylinder_code(std::uint16_t column) {
+  const Cmd* axis = nullptr;
+  for (const Cmd& c : cmds_) {
+    if (axis_index(c.letter) < 0) continue;
+    if (axis) alarm("PS0175", "G07.1 names one rotary axis and the cylinder's radius (G07.1 C57.299)", c.column);
+    axis = &c;
+  }
+  if (!axis) alarm("PS0175", "G07.1 names the rotary axis and the cylinder's radius (G07.1 C57.299; C0 cancels)", column);
+  const int a = axis_index(axis->letter);
+  if (!has_axis_[a] || !rotary_[a])
+    alarm("PS0175", fmt::format("G07.1 {}: cylindrical interpolation needs a rotary axis (No.1006#0 = 1)", axis->letter),
+          axis->column);
+  const double r = dimension(*axis);
+  if (r == 0) {
+    developed_hook_ = true;  // the word is no move
+    if (!dev_) return;
+    if (dev_->polar)
+      alarm("PS0146", "G07.1 in polar coordinate interpolation mode: cancel G12.1 with G13.1 first", column);
+    if (dev_->rotary != a)
+      alarm("PS0175", fmt::format("G07.1 {}0: the cylindrical interpolation mode is on for {}", axis->letter,
+                                  kAxisLetters[dev_->rotary]),
+            axis->column);
+    if (compensating())
+      alarm("PS0176", "G07.1 cancel in cutter compensation mode: cancel G41/G42 with G40 inside the mode first",
+            column);
+    end_developed();
+    return;
+  }
+  if (r < 0) alarm("PS0175", "G07.1: the cylinder's radius is negative", axis->column);
+  if (dev_)
+    alarm(dev_->polar ? "PS0146" : "PS0176",
+          dev_->polar ? "G07.1 in polar coordinate interpolation mode: cancel G12.1 with G13.1 first"
+                      : "G07.1 in cylindrical interpolation mode: cancel it (G07.1 C0) before giving a new radius",
+          column);
+  const int parallel = profile_.rotary[a].parallel;
+  if (parallel < 5)
+    alarm("PS0175", fmt::format("G07.1 {}: set parameter No.1022 of {} to 5, 6 or 7 (the axis it is parallel to: "
+                                "X, Y or Z); it is {}",
+                                axis->letter, axis->letter, parallel),
+          axis->column);
+  const int slot = parallel - 5;
+  const PlaneAxes pa = plane_axes(plane_);
+  if (pa.p != slot && pa.q != slot)
+    alarm("PS0175", fmt::format("G07.1 {}: {} stands for {} (No.1022 = {}), which is not in the G{} plane: select "
+                                "the plane of {} and the other linear axis before G07.1",
+                                axis->letter, axis->letter, kAxisLetters[slot], parallel, plane_, kAxisLetters[slot]),
+          column);
+  if (compensating())
+    alarm("PS0176", "G07.1 in cutter compensation mode: give G40 before G07.1 and start G41/G42 inside the mode",
+          column);
+  if (xf_on_) alarm("PS0176", "G07.1 with a coordinate transform on: cancel G16, G51, G51.1 or G68 first", column);
+  if (cycle_ != 0) alarm("PS0176", "G07.1 in a drilling canned cycle: cancel it with G80 first", column);
+  if (motion_ == 0)
+    alarm("PS0176", "G07.1 in G00 mode: cylindrical interpolation moves by G01, G02 and G03 only; give G01 in a "
+                    "block before G07.1",
+          column);
+  Developed d;
+  d.polar = false;
+  d.rotary = a;
+  d.slot = slot;
+  d.p = pa.p;
+  d.q = pa.q;
+  d.radius = r;
+  d.saved_plane = plane_;
+  d.machine = pos_;
+  if (has_axis_[slot]) {  // the linear axis the rotary axis stands beside keeps moving in a free slot
+    d.held = pos_[slot];
+    for (int k = 0; k < 3 && d.spare < 0; ++k)
+      if (!has_axis_[k] && k != slot) d.spare = k;
+    if (d.spare >= 0) pos_[d.spare] = pos_[slot];
+  }
+  pos_[slot] = pos_[a] / kDeg * r;
+  dev_ = d;
+  developed_ = developed_hook_ = true;
+}
+
+void Interpreter::end_developed() {
+  pos_ = dev_->machine;
+  plane_ = dev_->saved_plane;
+  dev_.reset();
+  developed_ = false;  // developed_hook_ stays for the block's axis words (G07.1 C0)
+  if (rolls_) wrap_rotary();
+}
+
+void Interpreter::check_code_in_developed(int g, std::uint16_t column) const {
+  const bool lathe = profile_.lathe();
+  const char* what = forbidden_kind(g, lathe, profile_.gcode_system);
+  if (!what && lathe && profile_.gcode_system == 'A' && g == 500 && (has('X') || has('Z') || has('U') || has('W')))
+    what = "coordinate system setting";
+  if (!what) return;
+  if (!dev_->polar && g == 170 + 10 * (dev_->saved_plane - 17)) return;  // the plane in force
+  alarm(dev_->polar ? "PS0146" : "PS0176",
+        fmt::format("{} ({}) cannot be given in {} mode: cancel it with {} first", g_name(g), what,
+                    dev_->polar ? "polar coordinate interpolation (G12.1)" : "cylindrical interpolation (G07.1)",
+                    dev_->polar ? "G13.1" : fmt::format("G07.1 {}0", kAxisLetters[dev_->rotary])),
+        column);
+}
+
+// The block's axis words in the programmed plane: the rotary axis's address is the hypothetical
+// axis (polar: a length, a radius value even where X is a diameter) or the angle on the cylinder
+// (G07.1: degrees, made the arc length r * angle).
+bool Interpreter::developed_axis_target(AxisVector& target) {
+  const bool radius_word = std::ranges::any_of(g_codes_, [](int g) { return g == 71 || g == 1070; });
+  if (!dev_) {  // the block that cancelled G07.1
+    developed_hook_ = false;
+    return radius_word ? false : axis_target(target);
+  }
+  if (radius_word) return false;  // G07.1 C<r>: the word is the radius
+  const Developed& d = *dev_;
+  const bool lathe = profile_.lathe();
+  const bool system_a = lathe && profile_.gcode_system == 'A';
+  const char* mode = d.polar ? "polar coordinate interpolation (G12.1)" : "cylindrical interpolation (G07.1)";
+  const char* code = d.polar ? "PS0146" : "PS0176";
+  if (rolls_) roll_word_.fill(false);
+  if (corner_on_ || (lathe && motion_ == 1 && (has('I') || has('K') || has('R'))))
+    alarm("NC9001", fmt::format("chamfering and corner R in {} mode are not supported yet", mode));
+  if (!d.polar && (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K')))
+    alarm("PS0022", "in cylindrical interpolation mode (G07.1) an arc is given by its radius R, not by I, J, K");
+  bool any = false;
+  for (const Cmd& c : cmds_) {
+    int a = axis_index(c.letter);
+    bool incremental = incremental_;
+    if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W' || (c.letter == 'H' && d.rotary == 5))) {
+      a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : c.letter == 'W' ? 2 : 5;
+      incremental = true;
+    }
+    if (a < 0) continue;
+    if (!has_axis_[a])
+      alarm("PS0009", fmt::format("address {}: this machine has no {} axis", c.letter, kAxisLetters[a]), c.column);
+    int slot = a;
+    double v = 0;
+    if (a == d.rotary) {
+      slot = d.slot;
+      v = d.polar ? dimension(c) : angle(c) / kDeg * d.radius;
+    } else {
+      if (a == d.slot) {
+        if (d.spare < 0)
+          alarm("NC9001", fmt::format("moving {} in {} mode on this machine is not supported yet ({} stands in its "
+                                      "place in the plane)",
+                                      kAxisLetters[a], mode, kAxisLetters[d.rotary]),
+                c.column);
+        slot = d.spare;
+      }
+      v = rotary_[a] ? angle(c) : dimension(c);
+      if (a == 0 && lathe && profile_.diameter_x) v /= 2;
+    }
+    target[slot] = incremental ? target[slot] + v : v;
+    any = true;
+  }
+  if (any && (motion_ == 0 || motion_ > 3))
+    alarm(code, fmt::format("{} mode moves by G01, G02 or G03 only (the modal motion is {})", mode,
+                            motion_ == 0 ? "G00" : "a lathe cycle or threading"));
+  return any;
+}
+
+// A move of the programmed plane as the machine makes it: the linear and rotary axes moving together
+// by pieces, each within the path tolerance of the contour.
+void Interpreter::deliver_developed(Move& m) {
+  Developed& d = *dev_;
+  if (!m.is_motion()) {
+    m.start = m.end = d.machine;
+    return record(m);
+  }
+  const PlanePath path = PlanePath::of(m, d.p, d.q);
+  auto along = [&](double t) {  // every axis but the plane's, linearly; the plane's on the contour
+    AxisVector v{};
+    for (int a = 0; a < kAxes; ++a) v[a] = t >= 1 ? m.end[a] : m.start[a] + t * (m.end[a] - m.start[a]);
+    const V2 at = path.at(t);
+    v[d.p] = at.x;
+    v[d.q] = at.y;
+    return v;
+  };
+  std::vector<double> ts;
+  std::vector<AxisVector> points;
+  if (d.polar) {
+    for (const PolarPoint& pp : polar_points(path, options_.path_tolerance, d.sign, d.angle)) {
+      AxisVector v = along(pp.t);
+      v[d.linear] = pp.linear;
+      v[d.rotary] = d.angle0 + pp.angle * kDeg;
+      v[d.slot] = d.held;
+      ts.push_back(pp.t);
+      points.push_back(v);
+    }
+  } else {
+    for (double t : chord_steps(path, options_.path_tolerance)) {
+      AxisVector v = along(t);
+      v[d.rotary] = v[d.slot] / d.radius * kDeg;
+      v[d.slot] = d.spare >= 0 ? v[d.spare] : d.held;
+      if (d.spare >= 0) v[d.spare] = 0;
+      ts.push_back(t);
+      points.push_back(v);
+    }
+  }
+  AxisVector programmed_end = m.programmed_end;
+  if (m.compensated) {  // the programmed end as the machine's axes, on the side the tool is
+    const V2 at{m.programmed_end[d.p], m.programmed_end[d.q]};
+    programmed_end = m.programmed_end;
+    if (d.polar) {
+      const double r = std::hypot(at.x, at.y);
+      double a = r > 0 ? std::atan2(at.y, at.x) + (d.sign < 0 ? std::numbers::pi : 0.0) : d.angle;
+      a = d.angle + std::remainder(a - d.angle, 2 * std::numbers::pi);
+      programmed_end[d.linear] = d.sign * r;
+      programmed_end[d.rotary] = d.angle0 + a * kDeg;
+      programmed_end[d.slot] = d.held;
+    } else {
+      programmed_end[d.rotary] = programmed_end[d.slot] / d.radius * kDeg;
+      programmed_end[d.slot] = d.spare >= 0 ? programmed_end[d.spare] : d.held;
+      if (d.spare >= 0) programmed_end[d.spare] = 0;
+    }
+  }
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    Move piece = m;
+    if (piece.kind == MoveKind::arc) piece.kind = MoveKind::line;
+    piece.start = d.machine;
+    piece.end = points[i];
+    piece.center = {};
+    piece.sweep = 0;
+    piece.clockwise = false;
+    const double share = ts[i] - ts[i - 1];
+    piece.length = m.length * share;
+    piece.seconds = m.seconds * share;
+    piece.programmed_end = programmed_end;
+    if (i > 1) piece.macro_statements = piece.nc_blocks = 0;
+    if (i + 1 < points.size()) piece.exact_stop = false;
+    if (d.polar) warn_polar_speed(piece, piece.end[d.rotary] - piece.start[d.rotary], piece.length,
+                                  std::min(std::fabs(piece.start[d.linear]), std::fabs(piece.end[d.linear])));
+    d.machine = piece.end;
+    if (stroke_check_) check_stroke(piece);  // stroke_check.cpp
+    record(piece);
+  }
+}
+
+// The rotary axis turns faster the nearer the path runs to the centre: the manual's limit is
+// F < L * R * pi / 180 (L: the nearest distance to the centre, R: the rotary axis's maximum cutting
+// feedrate in deg/min). Warned once a block.
+void Interpreter::warn_polar_speed(const Move& m, double degrees, double length, double radius) {
+  Developed& d = *dev_;
+  if (m.feed_per_rev || m.feed <= 0 || length <= 0 || d.warned_line == m.line) return;
+  const double rate = std::fabs(degrees) / length * m.feed;  // deg/min
+  if (rate <= profile_.max_cutting_feed) return;
+  d.warned_line = m.line;
+  if (result_.warnings.size() >= 1000) return;
+  result_.warnings.push_back(nc::Diagnostic{nc::Severity::warning, "NC2060", fmt::format("polar coordinate interpolation: the path passes {:.4f} mm from the centre, where {} "
+                             "turns at {:.0f} deg/min at F{:g}, above the maximum cutting feedrate {:g}; the manual "
+                             "asks for F < L x R x pi / 180",
+                             radius, kAxisLetters[d.rotary], rate, m.feed, profile_.max_cutting_feed),
+                                            nc::Span{m.file, m.line, 1, 1}});
+}
+
+}  // namespace ncurve::machine
