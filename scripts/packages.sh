@@ -1,6 +1,6 @@
 # Sourced by the scripts: ensure_packages PKG... installs the Debian packages not yet installed.
 tool_packages=(cmake ninja-build g++ pkg-config libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-               libeigen3-dev)
+               libeigen3-dev libcpp-httplib-dev)
 # linuxcnc-uspace: its rs274 interpreter is the second implementation the compensation is compared with
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev python3 linuxcnc-uspace)
 fuzz_packages=(clang libclang-rt-14-dev)
