@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <new>
 
 #include "gen/generate.hpp"
 #include "gen/shape_models.hpp"
@@ -58,6 +59,8 @@ int circle_command(const AnalyzeArgs& a) {
   try {
     if (!a.in.machine.empty()) profile = machine::load_profile(a.in.machine);
     apply_servo_options(profile, a);
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve analyze circle: " << e.what() << "\n";
     return 2;
@@ -68,6 +71,8 @@ int circle_command(const AnalyzeArgs& a) {
   motion::CircleResult r;
   try {
     r = motion::circle_test(profile, test);
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve analyze circle: " << e.what() << "\n";
     return 2;
@@ -143,6 +148,8 @@ int program_command(const AnalyzeArgs& a) {
   try {
     setup = prepare_run(a.in);
     apply_servo_options(setup.profile, a);
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve analyze: " << nc::escape_controls(e.what()) << "\n";
     return 2;
@@ -160,7 +167,9 @@ int program_command(const AnalyzeArgs& a) {
   if (!a.curve.name.empty()) {
     try {
       curve.emplace(build_curve(a.curve, a.command->remaining(), profile));
-    } catch (const std::exception& e) {
+    } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
+  } catch (const std::exception& e) {
       std::cerr << "ncurve analyze: --curve: " << e.what() << "\n";
       return 2;
     }

@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <new>
 
 #include "app/cli_checks.hpp"
 #include "app/curve_args.hpp"
@@ -174,6 +175,8 @@ int gen_command(const GenArgs& a) {
   std::optional<GenJob> job;
   try {
     job.emplace(gen_job(a, a.command->remaining(), "ncurve gen", long_options(*a.command)));
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 2;
@@ -196,6 +199,8 @@ int gen_command(const GenArgs& a) {
   } catch (const base::BoundExceeded& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 1;

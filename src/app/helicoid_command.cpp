@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <memory>
 #include <numbers>
 
@@ -108,7 +109,9 @@ int helicoid_command(const HelicoidArgs& a) {
       for (const auto& row : io::read_number_file(a.profile_csv, 2, 2)) points.push_back({row.values[0], row.values[1]});
       try {
         profile = EndProfile::from_points("points " + a.profile_csv, points);
-      } catch (const std::exception& e) {
+      } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
+  } catch (const std::exception& e) {
         throw std::runtime_error(a.profile_csv + ": " + e.what());
       }
       profile_name = "points " + a.profile_csv;
@@ -256,6 +259,8 @@ int helicoid_command(const HelicoidArgs& a) {
                                             : fmt::format("cutter D{:g} r{:g} {:g} deg", diameter, corner, angle);
     job.title = fmt::format("{}, lead {:g} mm {} hand, {}, crossing {:.4f} deg", profile_name, work.lead, a.hand,
                             cutter_text, 90 - setting.swing);
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve helicoid: " << e.what() << "\n";
     return 2;
@@ -294,6 +299,8 @@ int helicoid_command(const HelicoidArgs& a) {
       job.passes = plan.passes;
       job.pass_tolerance = *a.program_tol;
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve helicoid: " << e.what() << "\n";
     return 1;

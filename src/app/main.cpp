@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <memory>
 #include <optional>
 
@@ -40,6 +41,8 @@ int run_command(const app::RunArgs& a) {
   app::RunSetup setup;
   try {
     setup = app::prepare_run(a.in);
+  } catch (const std::bad_alloc&) {
+    throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
     return 2;

@@ -672,7 +672,7 @@ void Interpreter::exec_nc(const Block& b) {
       }
     }
   } else if (cycle_ != 0) {
-    moved = canned_cycle_block();
+    moved = profile_.lathe() ? lathe_drilling_block() : canned_cycle_block();
   } else {
     AxisVector target = pos_;
     bool axes = axis_target(target);
@@ -691,6 +691,10 @@ void Interpreter::exec_nc(const Block& b) {
     if (c.letter != 'M') continue;
     int m = integer(c, "M");
     last_m_ = m;
+    if (m == cycle_clamp_m_) [[unlikely]] {  // given out by the lathe's drilling cycle at each hole
+      cycle_clamp_m_ = -1;
+      continue;
+    }
     switch (m) {
       case 98: {
         if (!has('P') && has('Q')) {  // M98 Q: the block N(q) of the program being run, as a subprogram

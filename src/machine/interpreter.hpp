@@ -159,6 +159,8 @@ private:
   void tapping_hole(const Hole& h);  // G84, G74, conventional and rigid
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
+  bool lathe_drilling_block();  // a lathe's G83..G85, G87..G89 (lathe_drilling.cpp)
+  void lathe_hole(const Hole& h, double q);
 
   // AI contour control / look-ahead modes (high_speed.cpp)
   void high_speed_mode(int g, std::uint16_t column);
@@ -338,6 +340,8 @@ private:
   std::optional<double> cycle_r_, cycle_z_;  // mm as written (G91: R from the initial level, Z from R)
   double cycle_q_ = 0, cycle_p_ = 0;  // peck depth or shift (mm), dwell (s)
   bool cycle_has_q_ = false;
+  bool cycle_z_incremental_ = false;  // lathe: the bottom was written as a distance from R (W, U, or under G91)
+  int cycle_clamp_m_ = -1;            // lathe: the C-axis clamp M code the cycle gave out in this block
   bool rigid_tapping_ = false;        // rigid mode: M29 (or No.5200#0) with G84/G74, until the cycle ends
   bool rigid_pending_ = false;        // M29 given, its G84/G74 not yet
   // rotary axes with roll-over (No.1008#0): absolute words of this block and their values

@@ -127,9 +127,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         break;
       case 200: inch_ = true; break;
       case 210: inch_ = false; break;
-      case 800:
-        if (!lathe) cancel_canned_cycle();
-        break;
+      case 800: cancel_canned_cycle(); break;
       case 670: break;
       case 150: case 160: case 501: case 510: case 511: case 680: case 690:
         if (!lathe) {
@@ -168,7 +166,10 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         else if (!lathe) transform = true;                                 // scaling cancel
         break;
       default: {
-        if (lathe && select_lathe_motion(g, one_shot)) break;  // lathe_cycles.cpp
+        if (lathe && select_lathe_motion(g, one_shot)) {  // lathe_cycles.cpp
+          group01 = group01 || motion_ == g / 10;  // G32/G90/G92/G94 end a drilling cycle, G76 does not
+          break;
+        }
         if (system_a) {
           if (g == 980) { feed_per_rev_ = false; break; }
           if (g == 990) { feed_per_rev_ = true; break; }
@@ -189,11 +190,8 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         }
         if (lathe && g >= 700 && g <= 760)
           alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
-        if (lathe && (g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890))
-          alarm("NC9001", fmt::format("G{} (lathe canned cycle for {} drilling) is not supported yet", g / 10,
-                                      g <= 850 ? "face" : "side"),
-                column);
-        if (!lathe && g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890))) {
+        const bool lathe_drilling = g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890;
+        if (lathe ? lathe_drilling : (g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890)))) {
           select_canned_cycle(g, column);
           break;
         }

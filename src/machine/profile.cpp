@@ -311,6 +311,15 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     p.drilling.shift_direction = bit() ? (p.drilling.shift_direction | mask) : (p.drilling.shift_direction & ~mask);
   }
   else if (key == "5101#6") p.drilling.tap_without_m05 = bit();
+  else if (key == "5101#2") p.drilling.lathe_peck_to_r = bit();
+  else if (key == "5102#6") p.drilling.lathe_r_by_axis = bit();
+  else if (key == "5102#7") p.drilling.lathe_r_absolute = bit();
+  else if (key == "5110" || key == "5111") {
+    if (value < 0 || value != std::floor(value) || value > 99999999)
+      throw std::runtime_error(fmt::format("parameter {} is a whole number, 0 or more", key));
+    if (key == "5110") p.drilling.c_clamp_m = static_cast<int>(value);
+    else p.drilling.c_unclamp_dwell = value / 1000.0;  // ms
+  }
   else if (key == "5200#0") p.drilling.g84_rigid = bit();
   else if (key == "5200#5") p.drilling.peck_to_r = bit();
   else if (key == "5213") {
@@ -390,8 +399,8 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else
       throw std::runtime_error(
           fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3403#6, 3404#7, 3405#4, "
-                      "3410, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#4, 5101#5, 5101#6, 5105#1, 5105#2, 5114, "
-                      "5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
+                      "3410, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#2, 5101#4, 5101#5, 5101#6, 5102#6, 5102#7, 5105#1, "
+                      "5105#2, 5110, 5111, 5114, 5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
                       "5400#6, 5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
                       "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260)",
                       key));

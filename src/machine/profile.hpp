@@ -82,6 +82,12 @@ struct DrillingSettings {
   bool peck_to_r = false;        // No.5200#5 PCP: 1 = peck rigid tapping returns to R (else high-speed, back by d)
   double rigid_return = 0;       // No.5213, mm: d of peck rigid tapping
   char repeat_address = 'K';     // repeats of a hole: K (0i, 16i, 30i) or L (controls whose format uses L)
+  // a lathe's drilling cycles G83..G89 (docs/lathe-cycles.md)
+  bool lathe_peck_to_r = false;  // No.5101#2 RTR: 0 = G83/G87 with Q are high-speed peck, 1 = peck (out to R)
+  bool lathe_r_by_axis = false;  // No.5102#6 RDI: 0 = R is a radius, 1 = R of X follows X's diameter programming
+  bool lathe_r_absolute = false; // No.5102#7 RAB: system A's R is 0 = from the initial level, 1 = absolute
+  int c_clamp_m = 0;             // No.5110: the M code that clamps the C axis in a drilling block (0: none)
+  double c_unclamp_dwell = 0;    // No.5111, s: dwell after the unclamp M code (clamp + 1)
 };
 
 struct MachineProfile {

@@ -2,6 +2,7 @@
 // execution trace.
 #include <nlohmann/json.hpp>
 
+#include <new>
 #include <optional>
 
 #include "report/summary.hpp"
@@ -56,6 +57,8 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
   app::RunSetup setup;
   try {
     setup = app::prepare_run(in);
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
   } catch (const std::exception& e) {
     throw ApiError(400, e.what());
   }

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <new>
 #include <optional>
 
 #include "app/analyze_command.hpp"
@@ -84,12 +85,16 @@ Answer api_gen(const ServeConfig& config, const std::string& body) {
   std::optional<app::GenJob> job;
   try {
     job.emplace(app::gen_job(a, extras, "POST /api/gen", {}));
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
   } catch (const std::exception& e) {
     throw ApiError(400, e.what());
   }
   gen::Result r;
   try {
     r = gen::generate(job->curve, job->options);
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
   } catch (const std::exception& e) {
     throw ApiError(422, e.what());
   }
@@ -107,6 +112,8 @@ Answer api_analyze(const ServeConfig& config, const std::string& body) {
   app::RunSetup setup;
   try {
     setup = app::prepare_run(in);
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
   } catch (const std::exception& e) {
     throw ApiError(400, e.what());
   }

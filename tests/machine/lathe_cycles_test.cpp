@@ -193,12 +193,3 @@ TEST(LatheCycles, WritersShowAThread) {
   EXPECT_NE(gcode.str().find("G32 X19.4 Z-20. F3. Q180000\nG32 X24. Z-22.\n"), std::string::npos) << gcode.str();
 }
 
-// The lathe's drilling cycles (face G83..G85, side G87..G89) are FANUC codes ncurve does not run
-// yet: NC9001 at the code, never PS0010 nor a silent skip.
-TEST(LatheCycles, DrillingCyclesAreNotSupportedYet) {
-  for (const char* g : {"G83", "G84", "G85", "G87", "G88", "G89"}) {
-    auto r = run(fmt::format("G21 G99\nG00 X0. Z5.\n{} Z-20. R-3. Q5000 F0.1\nM30\n", g), lathe());
-    EXPECT_EQ(r.alarm_code(), "NC9001") << g;
-    EXPECT_EQ(r.alarm_line(), 3u) << g;
-  }
-}
