@@ -1,8 +1,10 @@
 # Sourced by the scripts: ensure_packages PKG... installs the Debian packages not yet installed.
+# libjs-three: three.js, compiled into the page of `run --html`
 tool_packages=(cmake ninja-build g++ pkg-config libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-               libeigen3-dev libcpp-httplib-dev)
+               libeigen3-dev libjs-three libcpp-httplib-dev)
 # linuxcnc-uspace: its rs274 interpreter is the second implementation the compensation is compared with
-test_packages=(libgtest-dev libgmock-dev libbenchmark-dev python3 linuxcnc-uspace)
+# chromium: the browser the pages are tested in (tests/browser, with playwright-core from npm)
+test_packages=(libgtest-dev libgmock-dev libbenchmark-dev python3 linuxcnc-uspace chromium)
 fuzz_packages=(clang libclang-rt-14-dev)
 ensure_packages() {
   local missing=() p
@@ -15,6 +17,10 @@ ensure_packages() {
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
   fi
+}
+# node and npm for the browser tests: Debian's, unless a node is installed already
+ensure_node() {
+  command -v node >/dev/null && command -v npm >/dev/null || ensure_packages nodejs npm
 }
 # The sanitizer build (build-sanitize/), one for test.sh --sanitize and fuzz.sh: clang with
 # AddressSanitizer and UndefinedBehaviorSanitizer (float-cast-overflow included, no recovery, libstdc++

@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 source scripts/packages.sh
 if [ "${1:-}" = "--sanitize" ]; then
   ensure_packages "${tool_packages[@]}" "${test_packages[@]}" "${fuzz_packages[@]}"
+  ensure_node
   configure_sanitize
   cmake --build build-sanitize
   # undefined behaviour stops the program (-fno-sanitize-recover); leaks are reported
@@ -15,6 +16,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   exit
 fi
 ensure_packages "${tool_packages[@]}" "${test_packages[@]}"
+ensure_node
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DNCURVE_TESTS=ON -DNCURVE_BENCH=ON >/dev/null
 cmake --build build
 ctest --test-dir build --output-on-failure -j2

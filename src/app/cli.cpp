@@ -7,6 +7,7 @@
 
 #include "app/cli_checks.hpp"
 #include "app/cli_docs.hpp"
+#include "app/run_html.hpp"
 #include "app/run_plot.hpp"
 
 namespace ncurve::app {
@@ -23,6 +24,7 @@ void add_commands(CLI::App& app, Commands& c) {
   run->add_option("-o,--output", a.output, "write the output to this file (the summary then goes to the terminal)");
   run->add_flag("--json", a.json, "summary as JSON");
   add_plot_options(run, a.plot, a.view);
+  add_html_option(run, a.html);
   c.run_command = run;
   add_gen_command(app, c.gen);
   add_helicoid_command(app, c.helicoid);

@@ -24,6 +24,7 @@ struct RunArgs {
   bool json = false;
   std::string plot;  // --plot F.svg
   std::string view;  // --view xy|xz|yz|iso
+  std::string html;  // --html F.html
 };
 
 // The commands' arguments, filled by parsing, and the subcommands to ask which one was given.

@@ -12,6 +12,7 @@
 #include "app/gen_command.hpp"
 #include "app/helicoid_command.hpp"
 #include "app/analyze_command.hpp"
+#include "app/run_html.hpp"
 #include "app/run_plot.hpp"
 #include "app/run_setup.hpp"
 #include "app/cli.hpp"
@@ -58,6 +59,12 @@ int run_command(const app::RunArgs& a) {
               << " both write to standard output; write one of them to a file (-o FILE)\n";
     return 2;
   }
+  const bool html_out = a.html == "-";  // the page takes standard output
+  if (html_out && (a.plot == "-" || (a.format != "summary" && output.empty()))) {
+    std::cerr << "ncurve run: --html - and " << (a.plot == "-" ? "--plot -" : "--format " + a.format)
+              << " both write to standard output; write one of them to a file\n";
+    return 2;
+  }
   std::optional<io::OutputFile> file;
   if (!output.empty()) {
     std::vector<std::string> inputs;
@@ -87,7 +94,15 @@ int run_command(const app::RunArgs& a) {
     plot.emplace(profile);
     tee.emplace(*sink, *plot);
   }
-  machine::MoveSink& target = tee ? static_cast<machine::MoveSink&>(*tee) : *sink;
+  std::optional<report::BackplotData> html;
+  std::optional<report::TeeSink> html_tee;
+  if (!a.html.empty()) {
+    html.emplace(profile);
+    html_tee.emplace(tee ? static_cast<machine::MoveSink&>(*tee) : *sink, *html);
+  }
+  machine::MoveSink& target = html_tee ? static_cast<machine::MoveSink&>(*html_tee)
+                              : tee    ? static_cast<machine::MoveSink&>(*tee)
+                                       : *sink;
   machine::Interpreter interp(profile, lib, setup.options);
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
@@ -103,7 +118,10 @@ int run_command(const app::RunArgs& a) {
   rep.unchecked_lines = setup.unchecked_lines;
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
   if (plot && !app::save_plot(a.plot, a.view, *plot, interp, rep.source, lib)) return 2;
-  if (a.format == "summary") (plot_out ? std::cerr : out) << summary;
+  if (html && !app::save_html(a.html, *html, interp.variable(4006).number() == 20, rep.source,
+                              a.json ? summary : report::summary_json(rep), lib))
+    return 2;
+  if (a.format == "summary") (plot_out || (html_out && !file) ? std::cerr : out) << summary;
   if (file) {
     try {
       file->commit();
@@ -113,7 +131,7 @@ int run_command(const app::RunArgs& a) {
     }
   }
   if (a.format == "summary") {
-  } else if (file) std::cout << summary;
+  } else if (file) (html_out ? std::cerr : std::cout) << summary;
   else if (!result.ok()) std::cerr << nc::format(*result.alarm) << "\n";
   return result.ok() ? 0 : 1;
 }

@@ -235,6 +235,7 @@ RunResult Interpreter::run(MoveSink& sink) {
   look_ahead_ = profile_.motion.look_ahead_at_power_on;
   set_origin();
   for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
+  init_stroke_check();
 
   reached_.clear();
   for (const auto& p : library_.programs())  // the main file's; a library program's when it is called
@@ -668,6 +669,13 @@ void Interpreter::exec_nc(const Block& b) {
         case 100: data_setting(); break;
         case 520: case 920: case 500: set_coordinate_system(g); break;
         case 700: case 710: case 720: case 730: case 740: case 750: moved = repetitive_cycle(g) || moved; break;
+        case 270: reference_check(); moved = true; break;  // reference_moves.cpp
+        case 290: return_from_reference(); moved = true; break;
+        case 301: reference_return(g); moved = true; break;
+        case 921: workpiece_preset(); break;
+        case 600: moved = single_direction_block() || moved; break;  // single_direction.cpp
+        case 310: case 311: case 312: case 313: case 314: moved = skip_move(g) || moved; break;  // skip.cpp
+        case 220: stroke_area_command(); break;  // stroke_check.cpp
         default: break;
       }
     }

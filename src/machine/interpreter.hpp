@@ -240,6 +240,28 @@ private:
   double increments(const Cmd& c, const char* what) const;  // a length written in least increments, mm
   // ---- end of lathe cycles ----
 
+  // ---- reference position moves, single direction positioning, skip and stored stroke checks
+  // (reference_moves.cpp, single_direction.cpp, skip.cpp, stroke_check.cpp) ----
+  unsigned block_axes() const;  // a bit per axis the block names (U, V, W too on system A)
+  void remember_intermediate(const AxisVector& mid);  // G28/G30/G30.1: the point G29 goes through
+  void reference_check();                 // G27
+  void return_from_reference();           // G29
+  void workpiece_preset();                // G92.1 (G50.3 on system A)
+  bool single_direction_block();          // a one-shot G60 block
+  void single_direction(const AxisVector& target);
+  bool skip_move(int g);                  // G31, G31 P1..P4, G31.1..G31.4
+  void init_stroke_check();
+  void stroke_area_command();             // G22 with its area
+  void stroke_area_switch(bool on);       // G22 / G23
+  void check_stroke(const Move& m) const; // deliver(): a move past a stored stroke limit is an alarm
+  AxisVector intermediate_{};
+  unsigned intermediate_axes_ = 0;        // axes G28/G30/G30.1 have given an intermediate point
+  std::optional<AxisVector> skip_position_;  // #5061..: where the last G31 ended
+  bool stroke_check_ = false;             // some stored stroke limit is in force
+  bool stroke2_on_ = true;                // G22 (check 2 on) or G23
+  AxisVector stroke1_plus_{}, stroke1_minus_{}, stroke2_plus_{}, stroke2_minus_{};
+  // ---- end of reference position moves ----
+
   // variables (variables.cpp)
  public:
   nc::Value read_var(int n, std::uint16_t column);

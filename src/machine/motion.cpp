@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "machine/g_code_table.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
@@ -26,6 +27,11 @@ const char* kindless_unsupported(int g) {
     case 121: case 131: return "polar coordinate interpolation (G12.1/G13.1)";
     default: return nullptr;
   }
+}
+// The name of a G code of the control that ncurve does not simulate, or nullptr.
+const char* unsupported_name(int g, const MachineProfile& p) {
+  const char* what = g_code_not_simulated(g, p);  // g_code_table.cpp
+  return what ? what : kindless_unsupported(g);
 }
 // PS0010 for a G code the control lacks; a whole number could be made a custom G code.
 std::string unknown_g_code(int g, const MachineProfile& p) {
@@ -102,6 +108,11 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         group01 = true;  // a group 01 code ends a drilling canned cycle
         break;
       case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
+      case 270: case 290: case 301: case 310: case 311: case 312: case 313: case 314: case 220:
+        one_shot.push_back(g);  // reference_moves.cpp, skip.cpp, stroke_check.cpp
+        break;
+      case 230: stroke_area_switch(false); break;  // G22 comes with its area (one_shot)
+      case 250: case 260: break;  // spindle speed fluctuation detection off/on: nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 170: case 180: case 190:
         if (g / 10 != plane_ && (rigid_tapping_ || rigid_pending_))
@@ -135,7 +146,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           break;
         }
         if (g == 150 || g == 690) break;  // cancels: nothing active to cancel
-        if (const char* what = kindless_unsupported(g))
+        if (const char* what = unsupported_name(g, profile_))
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
         alarm("PS0010", unknown_g_code(g, profile_), column);
       case 51: case 50: case 80: case 611: high_speed_mode(g, column); break;  // high_speed.cpp
@@ -188,6 +199,12 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           if (const int r = repetitive_code(g); r >= 700 && r <= 750) { one_shot.push_back(r); break; }
           if (profile_.gcode_system == 'C' && (g == 700 || g == 710)) { inch_ = g == 700; break; }
         }
+        if (!lathe && g == 600) {  // G60: one-shot (group 00), or modal in group 01 with No.5431#0 MDL = 1
+          if (!profile_.g60_modal) one_shot.push_back(g);
+          else motion_ = 60, group01 = true;
+          break;
+        }
+        if (g == (system_a ? 503 : 921)) { one_shot.push_back(921); break; }  // workpiece coordinate system preset
         if (lathe && g >= 700 && g <= 760)
           alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
         const bool lathe_drilling = g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890;
@@ -195,7 +212,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
           select_canned_cycle(g, column);
           break;
         }
-        if (const char* what = kindless_unsupported(g))
+        if (const char* what = unsupported_name(g, profile_))
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
         alarm("PS0010", unknown_g_code(g, profile_), column);
       }
@@ -249,6 +266,7 @@ void Interpreter::motion(const AxisVector& target) {
     case 1: linear(MoveKind::line, target); break;
     case 2: arc(target, !swap); break;
     case 3: arc(target, swap); break;
+    case 60: single_direction(target); break;  // G60 modal (No.5431#0 MDL = 1)
     default: lathe_motion(target); break;  // G32/G90/G92/G94 (lathe_cycles.cpp)
   }
   xf_arc_ = false;
@@ -311,6 +329,7 @@ void Interpreter::emit_programmed(Move& m) {
 }
 
 void Interpreter::deliver(Move& m) {
+  if (stroke_check_) [[unlikely]] check_stroke(m);  // stroke_check.cpp
   if (options_.nose_centre && profile_.lathe() && m.is_motion()) {
     const V2 tip = nose_tip();  // (Z, X): the imaginary tip from the nose centre
     m.start[2] -= tip.x, m.start[0] -= tip.y;
@@ -535,10 +554,14 @@ void Interpreter::reference_return(int g) {
     point = has('P') ? integer(word('P'), "P of G30") - 1 : 1;
     if (point < 1 || point > 3) alarm("PS0046", "G30 P must be 2, 3 or 4", word('P').column);
   }
+  if (g == 301 && !profile_.floating_reference)
+    alarm("NC9001", "G30.1 (floating reference position return) needs the floating reference position, which the "
+                    "operator sets on the control (No.1244): give it in the profile as [reference_points] floating");
   AxisVector mid = pos_;
   bool any = axis_target(mid);
   if (!any) return;
   if (rolls_) roll_over(mid);
+  remember_intermediate(mid);  // for G29 (reference_moves.cpp)
   // in offset mode the vector is cancelled at the intermediate point and restored at the next move
   comp_suspended_ = true;
   struct Restore {
@@ -554,7 +577,7 @@ void Interpreter::reference_return(int g) {
       if (c.letter == 'W') a = 2;
     }
     if (a < 0 || !has_axis_[a]) continue;
-    ref[a] = profile_.reference_points[point][a] - origin_[a] - tool_shift_[a];
+    ref[a] = (g == 301 ? *profile_.floating_reference : profile_.reference_points[point])[a] - origin_[a] - tool_shift_[a];
   }
   linear(MoveKind::rapid, ref);
 }

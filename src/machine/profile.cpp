@@ -37,7 +37,20 @@ MachineProfile default_lathe() {
 namespace {
 
 bool is_axis_parameter(const std::string& key) {
-  return key == "1006#0" || key == "1008#0" || key == "1008#1" || key == "1008#2" || key == "1260";
+  return key == "1006#0" || key == "1008#0" || key == "1008#1" || key == "1008#2" || key == "1260" ||
+         key == "1320" || key == "1321" || key == "1322" || key == "1323" || key == "5440";
+}
+
+// No.1320..1323 (stored stroke limits 1 and 2) and No.5440 (G60 overrun) of one axis, in increments.
+void set_axis_length(MachineProfile& p, const std::string& key, int a, double value) {
+  if (value != std::floor(value))
+    throw std::runtime_error(fmt::format("parameter {} is a whole number of increments, got {}", key, value));
+  const double mm = value * p.increment / (a == 0 && p.lathe() && p.diameter_x ? 2 : 1);  // a diameter on X
+  if (key == "1320") p.stroke1_plus[a] = mm;
+  else if (key == "1321") p.stroke1_minus[a] = mm;
+  else if (key == "1322") p.stroke2_plus[a] = mm;
+  else if (key == "1323") p.stroke2_minus[a] = mm;
+  else p.g60_overrun[a] = value * p.increment;
 }
 
 // No.1006#0, No.1008#0..#2, No.1260 of one axis ("1008#0.A").
@@ -45,6 +58,8 @@ void set_axis_parameter(MachineProfile& p, const std::string& key, const std::st
   const int a = axis.size() == 1 ? axis_index(axis[0]) : -1;
   if (a < 0 || p.axes.find(axis[0]) == std::string::npos)
     throw std::runtime_error(fmt::format("parameter {}.{}: this machine has no {} axis (axes {})", key, axis, axis, p.axes));
+  if (key == "1320" || key == "1321" || key == "1322" || key == "1323" || key == "5440")
+    return set_axis_length(p, key, a, value);
   RotaryAxis& r = p.rotary[a];
   if (key == "1260") {  // 0 (a linear axis's entry in an array) leaves 360 deg
     if (value < 0 || value != std::floor(value))
@@ -327,6 +342,9 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
       throw std::runtime_error("parameter 5213 is a whole number of increments, 0 or more");
     p.drilling.rigid_return = value * p.increment;
   }
+  else if (key == "5431#0") p.g60_modal = bit();
+  else if (key == "1300#0") p.stroke2_outside = bit();
+  else if (key == "3402#7") p.stroke2_off_at_power_on = bit();
   else if (key == "3401#0") p.decimal_calculator = bit();
   else if (key == "3403#6") p.address_duplicate_alarm = bit();
   else if (key == "3404#7") p.multiple_m_codes = bit();
@@ -398,11 +416,11 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
       throw std::runtime_error(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 3401#0, 3402#0, 3402#3, 3403#6, 3404#7, 3405#4, "
+          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 1300#0, 3401#0, 3402#0, 3402#3, 3402#7, 3403#6, 3404#7, 3405#4, "
                       "3410, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#2, 5101#4, 5101#5, 5101#6, 5102#6, 5102#7, 5105#1, "
                       "5105#2, 5110, 5111, 5114, 5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
-                      "5400#6, 5400#7, 5410, 5411, 5421, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
-                      "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260)",
+                      "5400#6, 5400#7, 5410, 5411, 5421, 5431#0, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
+                      "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1260, 1320..1323, 5440)",
                       key));
   }
 }
@@ -452,8 +470,13 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
     } else if (key == "reference_points") {
       for (const auto& [rk, rn] : *t) {
         std::string r(rk.str());
+        if (r == "floating") {  // G30.1: the floating reference position (No.1244)
+          p.floating_reference = axis_vector(origin, rn, r, p.axes);
+          continue;
+        }
         int idx = r == "1" ? 0 : r == "2" ? 1 : r == "3" ? 2 : r == "4" ? 3 : -1;
-        if (idx < 0) fail(origin, rn, "reference points are named \"1\" .. \"4\" (G28 uses 1, G30 P2..P4)");
+        if (idx < 0)
+          fail(origin, rn, "reference points are named \"1\" .. \"4\" (G28 uses 1, G30 P2..P4) or \"floating\" (G30.1)");
         p.reference_points[idx] = axis_vector(origin, rn, r, p.axes);
       }
     } else if (key == "tool_offsets") {

@@ -1,7 +1,9 @@
 // What differs between machines: FANUC parameters, axes, units, limits, offsets.
 #pragma once
 #include <array>
+#include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -150,6 +152,15 @@ struct MachineProfile {
   double spindle_speed_for_time = 1000;  // rev/min assumed for feed per revolution when no S is active
   std::array<AxisVector, 7> work_offsets{};  // [0] external (#5201..), [1..6] G54..G59
   std::array<AxisVector, 4> reference_points{};  // machine coordinates of reference points 1..4
+  std::optional<AxisVector> floating_reference;  // G30.1: set by the operator on the control (No.1244)
+  // single direction positioning and stored stroke checks (docs/reference-moves.md)
+  AxisVector g60_overrun{};   // No.5440 per axis, mm: the sign gives the final direction; 0 = none
+  bool g60_modal = false;     // No.5431#0 MDL: G60 is modal in group 01 (0: one-shot, group 00)
+  AxisVector stroke1_plus;    // No.1320 per axis, machine mm; +inf: no limit (factory)
+  AxisVector stroke1_minus;   // No.1321 per axis
+  AxisVector stroke2_plus{}, stroke2_minus{};  // No.1322 / No.1323: the area of stored stroke check 2
+  bool stroke2_outside = false;    // No.1300#0 OUT: 0 = the inside of the area is forbidden, 1 = the outside
+  bool stroke2_off_at_power_on = false;  // No.3402#7 G23: G23 (check 2 off) at power-on, else G22
   OffsetMemory offset_memory = OffsetMemory::A;  // mill tool compensation memory
   std::map<int, MillOffset> tool_offsets;  // mill: offset number 1..999
   std::map<int, LatheOffset> lathe_offsets;  // lathe: offset number 1..64 -> geometry and wear
@@ -157,6 +168,10 @@ struct MachineProfile {
   MotionSettings motion;
   ServoSettings servo;
 
+  MachineProfile() {
+    stroke1_plus.fill(std::numeric_limits<double>::infinity());
+    stroke1_minus.fill(-std::numeric_limits<double>::infinity());
+  }
   bool lathe() const { return type == MachineType::lathe; }
   nc::ParseOptions parse_options() const { return nc::ParseOptions{number_digits}; }
 };

@@ -30,7 +30,7 @@ void Interpreter::check_code_in_transform(int g, std::uint16_t column) const {
                                 "G{} plane): cancel the rotation with G69 first",
                                 g / 10, xf_rotation_plane_),
           column);
-  const bool reference = g == 270 || g == 280 || g == 290 || g == 300;
+  const bool reference = g == 270 || g == 280 || g == 290 || g == 300 || g == 301;
   const bool coordinates = (g >= 520 && g <= 590 && g % 10 == 0) || g == 541 || g == 920;
   if (!reference && !coordinates) return;
   const char* mode = xf_.rotating    ? "coordinate system rotation mode (G68): cancel it with G69"

@@ -194,7 +194,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
         double m = now + origin_[a] + tool_shift_[a];
         return Value::of(program_units(a, m));
       }
-      case 3: return Value::of(program_units(a, pos_[a]));
+      case 3: return Value::of(program_units(a, skip_position_ ? (*skip_position_)[a] : pos_[a]));  // G31 (skip.cpp)
       case 4: return Value::of(program_units(a, tool_shift_[a]));
       default: return Value::of(0);
     }

@@ -1,0 +1,105 @@
+// Moves about the reference positions: G27 check, G29 return through the G28/G30 intermediate
+// point, and G92.1 workpiece coordinate system preset (docs/reference-moves.md).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "base/restore.hpp"
+#include "machine/interpreter.hpp"
+
+namespace ncurve::machine {
+
+namespace {
+constexpr const char* kAxisLetters = "XYZABC";
+}
+
+unsigned Interpreter::block_axes() const {
+  const bool system_a = profile_.lathe() && profile_.gcode_system == 'A';
+  unsigned axes = 0;
+  for (const Cmd& c : cmds_) {
+    int a = axis_index(c.letter);
+    if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W')) a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : 2;
+    if (a >= 0 && has_axis_[a]) axes |= 1u << a;
+  }
+  return axes;
+}
+
+// The control keeps the intermediate point of each axis a G28, G30 or G30.1 names, in work
+// coordinates: after a change of coordinate system it lies at the same coordinates of the new one.
+void Interpreter::remember_intermediate(const AxisVector& mid) {
+  const unsigned axes = block_axes();
+  for (int a = 0; a < kAxes; ++a)
+    if (axes & (1u << a)) intermediate_[a] = mid[a];
+  intermediate_axes_ |= axes;
+}
+
+// G27 IP: positioning at rapid to IP, then each axis named must stand at reference position 1
+// (machine coordinates, the tool offsets included: an active offset puts it elsewhere), else PS0092.
+void Interpreter::reference_check() {
+  AxisVector target = pos_;
+  if (!axis_target(target)) return;
+  if (compensating())
+    alarm("NC9001", "G27 in cutter compensation mode is not supported yet: cancel the compensation with G40 first, "
+                    "as the manual asks");
+  if (rolls_) roll_over(target);
+  linear(MoveKind::rapid, target);
+  const unsigned axes = block_axes();
+  const double tolerance = profile_.increment * 0.5 + 1e-9;
+  for (int a = 0; a < kAxes; ++a) {
+    if (!(axes & (1u << a))) continue;
+    const double machine = pos_[a] + origin_[a] + tool_shift_[a];
+    const double reference = profile_.reference_points[0][a];
+    if (std::fabs(machine - reference) <= tolerance) continue;
+    const char* offset = tool_shift_[a] != 0 ? "; the tool offset in force moves it by " : "";
+    alarm("PS0092", fmt::format("G27: the {} axis is at {:.4f} (machine coordinates), not at reference position 1 "
+                                "({:.4f}){}{}",
+                                kAxisLetters[a], program_units(a, machine), program_units(a, reference), offset,
+                                tool_shift_[a] != 0 ? fmt::format("{:.4f}: cancel it before G27",
+                                                                  program_units(a, tool_shift_[a]))
+                                                    : ""));
+  }
+}
+
+// G29 IP: the axes named go at rapid to the intermediate point of the last G28/G30/G30.1, then to
+// IP (G91, U, W: from the intermediate point). An axis no G28/G30 has named has no intermediate
+// point: it moves in the second step only. In offset mode the vector is cancelled at the
+// intermediate point, as in G28, and restored at the end point.
+void Interpreter::return_from_reference() {
+  if (intermediate_axes_ == 0)
+    alarm("PS0305", "G29 needs an intermediate position: no G28, G30 or G30.1 has been given since power-on");
+  const unsigned axes = block_axes();
+  if (axes == 0) return;
+  AxisVector mid = pos_;
+  for (int a = 0; a < kAxes; ++a)
+    if ((axes & intermediate_axes_) & (1u << a)) mid[a] = intermediate_[a];
+  AxisVector target = mid;  // an incremental word counts from the intermediate point
+  axis_target(target);
+  if (rolls_) roll_over(target);
+  {
+    base::RestoreOnExit<bool> restore(comp_suspended_);
+    comp_suspended_ = true;
+    linear(MoveKind::rapid, mid);
+  }
+  linear(MoveKind::rapid, target);
+}
+
+// G92.1 IP 0 (G50.3 on a system A lathe): the axes named go back to the workpiece coordinate system
+// the work zero offsets give, without the shift of G92 (G50) and G52.
+void Interpreter::workpiece_preset() {
+  const unsigned axes = block_axes();
+  AxisVector check = pos_;
+  axis_target(check, true);  // PS0009 for an axis the machine lacks
+  for (const Cmd& c : cmds_) {
+    const int a = axis_index(c.letter);
+    if (a >= 0 && has_axis_[a] && c.value != 0)
+      warn("NC2041", fmt::format("{}: the preset takes {}0 and sets the workpiece coordinate system its offsets give; "
+                                 "the value is not used",
+                                 profile_.lathe() && profile_.gcode_system == 'A' ? "G50.3" : "G92.1", c.letter),
+           c.column);
+  }
+  for (int a = 0; a < kAxes; ++a)
+    if (axes & (1u << a)) shift_[a] = local_[a] = 0;
+  set_origin();
+}
+
+}  // namespace ncurve::machine

@@ -1,0 +1,303 @@
+// `ncurve run --html` in a real browser: headless Chromium (Debian's), driven by playwright-core.
+//   node backplot.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
+// Opens the pages of shipped examples and checks what is drawn: the number of moves against the
+// run's, a WebGL canvas that is not blank (pixels of a screenshot), the block shown when hovering
+// a move, the view buttons, the alarm, a lathe's axes, a hostile comment kept as text. Screenshots
+// go to OUT_DIR for a person to look at. Exit 77 (skipped) where no Chromium is installed.
+'use strict';
+const {execFileSync} = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const zlib = require('zlib');
+
+const [ncurve, src, out, modules] = process.argv.slice(2);
+const chromium = process.env.NCURVE_CHROMIUM || '/usr/bin/chromium';
+if (!fs.existsSync(chromium)) {
+  console.log(`SKIPPED: no Chromium at ${chromium} (install Debian's chromium package to run the browser tests)`);
+  process.exit(77);
+}
+const {chromium: driver} = require(path.resolve(modules, 'playwright-core'));
+fs.mkdirSync(out, {recursive: true});
+
+let passed = 0, failed = 0;
+function check(ok, what) {
+  if (ok) passed++;
+  else failed++;
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+}
+
+// runs ncurve; its standard output, whatever the exit status
+function run(args) {
+  try {
+    return execFileSync(ncurve, args, {encoding: 'utf8', maxBuffer: 1 << 28, stdio: ['ignore', 'pipe', 'pipe']});
+  } catch (e) {
+    if (e.status === 1) return e.stdout;  // an alarm
+    throw e;
+  }
+}
+// the summary (JSON) and the motions (JSON Lines) of a run, and its page
+function page_of(name, program, extra) {
+  const html = path.join(out, `${name}.html`);
+  const summary = JSON.parse(run(['run', program, ...extra, '--json', '--html', html]));
+  const jsonl = run(['run', program, ...extra, '--format', 'jsonl']);
+  const motions = jsonl.split('\n').filter((l) => l.trim()).map((l) => JSON.parse(l))
+    .filter((m) => m.kind === 'rapid' || m.kind === 'line' || m.kind === 'arc');
+  return {html, summary, motions};
+}
+
+// RGB pixels of a PNG screenshot (8-bit, not interlaced: what Chromium writes)
+function decodePng(buf) {
+  let at = 8, width = 0, height = 0, channels = 0;
+  const idat = [];
+  while (at < buf.length) {
+    const len = buf.readUInt32BE(at), type = buf.toString('ascii', at + 4, at + 8);
+    const body = buf.subarray(at + 8, at + 8 + len);
+    if (type === 'IHDR') {
+      width = body.readUInt32BE(0), height = body.readUInt32BE(4);
+      channels = {2: 3, 6: 4}[body[9]];
+      if (body[8] !== 8 || !channels || body[12]) throw new Error('unexpected PNG format');
+    } else if (type === 'IDAT') idat.push(body);
+    at += 12 + len;
+  }
+  const raw = zlib.inflateSync(Buffer.concat(idat));
+  const stride = width * channels, px = Buffer.alloc(height * stride);
+  for (let y = 0; y < height; y++) {
+    const f = raw[y * (stride + 1)], line = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
+    for (let x = 0; x < stride; x++) {
+      const a = x >= channels ? px[y * stride + x - channels] : 0, b = y ? px[(y - 1) * stride + x] : 0;
+      const c = x >= channels && y ? px[(y - 1) * stride + x - channels] : 0;
+      let v = line[x];
+      if (f === 1) v += a;
+      else if (f === 2) v += b;
+      else if (f === 3) v += (a + b) >> 1;
+      else if (f === 4) {
+        const p = a + b - c, pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
+        v += pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+      }
+      px[y * stride + x] = v & 255;
+    }
+  }
+  return {width, height, channels, px};
+}
+// how many pixels are near each colour
+function countColours(png, colours) {
+  const n = colours.map(() => 0);
+  let other = 0;
+  for (let i = 0; i < png.width * png.height; i++) {
+    const o = i * png.channels, r = png.px[o], g = png.px[o + 1], b = png.px[o + 2];
+    let hit = false;
+    colours.forEach((c, k) => {
+      if (Math.abs(r - c[0]) + Math.abs(g - c[1]) + Math.abs(b - c[2]) < 90) n[k]++, hit = true;
+    });
+    if (!hit && r + g + b < 600) other++;
+  }
+  return {n, other};
+}
+
+async function open(context, file) {
+  const page = await context.newPage();
+  page.setDefaultTimeout(60000);
+  const dialogs = [], errors = [];
+  page.on('dialog', (d) => { dialogs.push(d.message()); d.dismiss().catch(() => {}); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  await page.goto('file://' + file);
+  await page.waitForFunction(() => window.ncurveBackplot && 'ready' in window.ncurveBackplot);
+  await page.waitForTimeout(300);
+  return {page, dialogs, errors};
+}
+
+// the index of a motion whose middle lies on its own (no other motion's within 6 px) and inside the view
+async function lonelyMove(page, motions, kind) {
+  return page.evaluate(([count, kind]) => {
+    const B = window.ncurveBackplot, pts = [];
+    for (let i = 0; i < count; i++) pts.push(B.screenOf(i));
+    const W = innerWidth, H = innerHeight;
+    for (let k = 0; k < count; k++) {
+      const i = (Math.floor(count / 2) + k) % count;
+      if (kind !== undefined && B.plot.moves.kind[i] !== kind) continue;
+      const p = pts[i];
+      if (p.x < 60 || p.y < 150 || p.x > W - 60 || p.y > H - 80) continue;
+      if (pts.every((q, j) => j === i || Math.hypot(q.x - p.x, q.y - p.y) > 6)) return i;
+    }
+    return -1;
+  }, [motions.length, kind]);
+}
+
+(async () => {
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'ncurve-chromium-'));
+  const context = await driver.launchPersistentContext(profile, {
+    executablePath: chromium,
+    headless: true,
+    viewport: {width: 1280, height: 800},
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+           '--disable-background-networking', '--disable-component-update', '--disable-sync',
+           '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  });
+  try {
+    // a mill program: the spiral
+    {
+      const {html, summary, motions} = page_of('browser_spiral', path.join(src, 'examples/spiral.nc'), []);
+      const {page, dialogs, errors} = await open(context, html);
+      const B = await page.evaluate(() => ({ready: window.ncurveBackplot.ready, error: window.ncurveBackplot.error,
+        moveCount: window.ncurveBackplot.moveCount, kinds: window.ncurveBackplot.kinds, view: window.ncurveBackplot.view}));
+      check(B.ready, `spiral: the page drew (${B.error || 'WebGL'})`);
+      check(B.moveCount === summary.motions && B.moveCount === motions.length,
+            `spiral: ${B.moveCount} moves drawn, the run made ${summary.motions}`);
+      check(B.kinds.rapid === summary.moves.rapid && B.kinds.feed === summary.moves.line && B.kinds.arc === summary.moves.arc,
+            `spiral: moves by kind ${JSON.stringify(B.kinds)}`);
+      check(B.view === 'iso', `spiral: a mill opens in the iso view (${B.view})`);
+      const shot = await page.screenshot({path: path.join(out, 'browser_spiral_iso.png')});
+      const {n, other} = countColours(decodePng(shot), [[0x15, 0x65, 0xc0], [0xef, 0x6c, 0x00]]);
+      check(n[0] > 300 && n[1] > 20, `spiral: the canvas shows feed (${n[0]} px) and rapid (${n[1]} px) lines`);
+      check(other > 200, `spiral: axes and labels drawn (${other} dark px)`);
+      const header = await page.textContent('#summary');
+      check(header.includes('spiral.nc') && header.includes('completed') && header.includes(`${summary.motions}`),
+            'spiral: the header names the program, the result and the moves');
+
+      // hover a known move: its file:line and block text from the run's own JSON Lines
+      const i = await lonelyMove(page, motions, 1);
+      check(i >= 0, `spiral: a move to hover (${i})`);
+      const p = await page.evaluate((i) => window.ncurveBackplot.screenOf(i), i);
+      await page.mouse.move(p.x - 30, p.y - 30);
+      await page.mouse.move(p.x, p.y, {steps: 3});
+      await page.waitForSelector('#tip:not([hidden])', {timeout: 10000}).catch(() => {});
+      const tip = await page.textContent('#tip');
+      const hovered = await page.evaluate(() => window.ncurveBackplot.hovered);
+      check(hovered === i, `spiral: the move under the pointer is the one aimed at (${hovered}, ${i})`);
+      check(tip.includes(`spiral.nc:${motions[i].line}`), `spiral: hovering shows its line ${motions[i].line}: "${tip}"`);
+      await page.screenshot({path: path.join(out, 'browser_spiral_hover.png')});
+      // a click selects the block's moves
+      await page.mouse.click(p.x, p.y);
+      const sel = await page.textContent('#selection');
+      check(/selected: \d+ moves? of this block/.test(sel) && sel.includes(`:${motions[i].line}`), `spiral: click selects the block: "${sel}"`);
+
+      // the view buttons move the camera
+      const cams = {};
+      for (const v of ['top', 'front', 'side', 'iso']) {
+        await page.click(`#views button[data-view="${v}"]`);
+        await page.waitForTimeout(150);
+        cams[v] = await page.evaluate(() => ({view: window.ncurveBackplot.view, camera: window.ncurveBackplot.camera}));
+        await page.screenshot({path: path.join(out, `browser_spiral_${v}.png`)});
+      }
+      const dir = (c) => { const [x, y, z] = c.camera.position, t = c.camera.target, d = Math.hypot(x - t[0], y - t[1], z - t[2]); return [(x - t[0]) / d, (y - t[1]) / d, (z - t[2]) / d]; };
+      const near = (a, b) => a.every((v, k) => Math.abs(v - b[k]) < 1e-3);
+      check(near(dir(cams.top), [0, 0, 1]) && cams.top.view === 'top', `spiral: Top looks down Z (${dir(cams.top).map((v) => v.toFixed(3))})`);
+      check(near(dir(cams.front), [0, -1, 0]), `spiral: Front looks along +Y (${dir(cams.front).map((v) => v.toFixed(3))})`);
+      check(near(dir(cams.side), [1, 0, 0]), `spiral: Side looks along -X (${dir(cams.side).map((v) => v.toFixed(3))})`);
+      check(near(dir(cams.iso), [1 / Math.sqrt(3), -1 / Math.sqrt(3), 1 / Math.sqrt(3)]), 'spiral: Iso from X+, Y-, Z+');
+      // dragging orbits: the camera moves, the named view is left
+      const box = await page.locator('canvas').boundingBox();
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      await page.mouse.down();
+      await page.mouse.move(box.x + box.width / 2 + 120, box.y + box.height / 2 + 40, {steps: 5});
+      await page.mouse.up();
+      const orbit = await page.evaluate(() => ({view: window.ncurveBackplot.view, camera: window.ncurveBackplot.camera}));
+      check(!near(dir(orbit), dir(cams.iso)) && orbit.view === '', 'spiral: dragging rotates the view');
+      check(dialogs.length === 0 && errors.length === 0, `spiral: no script errors (${errors.join('; ')})`);
+      await page.close();
+    }
+
+    // an alarm: the alarm block marked
+    {
+      const {html, summary} = page_of('browser_alarm', path.join(src, 'examples/alarm.nc'), []);
+      const {page, errors} = await open(context, html);
+      const header = await page.textContent('#summary');
+      check(header.includes('ALARM MC3001') && header.includes('line 9') && header.includes('DEPTH #100 NOT SET'),
+            `alarm: the header says the alarm: "${header.slice(0, 200)}"`);
+      const marker = await page.$('.ncurve-label.marker.alarm');
+      check(marker && (await marker.isVisible()) && (await marker.textContent()) === 'MC3001 line 9', 'alarm: marked in the view');
+      check((await page.evaluate(() => window.ncurveBackplot.moveCount)) === summary.motions, 'alarm: the moves before it drawn');
+      await page.screenshot({path: path.join(out, 'browser_alarm.png')});
+      check(errors.length === 0, `alarm: no script errors (${errors.join('; ')})`);
+      await page.close();
+    }
+
+    // a lathe: Z across, X up as a diameter, arcs drawn
+    {
+      const {html, summary} = page_of('browser_lathe', path.join(src, 'examples/lathe-mrc.nc'), ['--machine', 'fanuc-lathe']);
+      const {page, errors} = await open(context, html);
+      const B = await page.evaluate(() => ({n: window.ncurveBackplot.moveCount, kinds: window.ncurveBackplot.kinds,
+        view: window.ncurveBackplot.view, segments: window.ncurveBackplot.segments}));
+      check(B.n === summary.motions, `lathe: ${B.n} moves drawn, the run made ${summary.motions}`);
+      check(B.view === 'zx', 'lathe: opens on the ZX plane');
+      check(B.kinds.arc === summary.moves.arc && (B.kinds.arc === 0 || B.segments.arc > 4 * B.kinds.arc),
+            `lathe: arcs drawn as arcs (${B.kinds.arc} arcs, ${B.segments.arc} segments)`);
+      const names = await page.$$eval('.ncurve-label.axis-name', (l) => l.filter((e) => e.style.display !== 'none').map((e) => e.textContent));
+      check(names.includes('Z, mm') && names.includes('X (diameter), mm'), `lathe: axes ${JSON.stringify(names)}`);
+      await page.screenshot({path: path.join(out, 'browser_lathe.png')});
+      check(errors.length === 0, `lathe: no script errors (${errors.join('; ')})`);
+      await page.close();
+    }
+
+    // a program in inches: the axes in inches; a click on empty space clears the selection
+    {
+      const {html, motions} = page_of('browser_inch', path.join(src, 'examples/inch.nc'), []);
+      const {page, errors} = await open(context, html);
+      await page.click('#views button[data-view="top"]');
+      await page.waitForTimeout(150);
+      const names = await page.$$eval('.ncurve-label.axis-name', (l) => l.filter((e) => e.style.display !== 'none').map((e) => e.textContent));
+      check(names.includes('X, in') && names.includes('Y, in'), `inch: axes in inches ${JSON.stringify(names)}`);
+      const i = await lonelyMove(page, motions, 2);
+      const p = await page.evaluate((i) => window.ncurveBackplot.screenOf(i), i);
+      await page.mouse.click(p.x, p.y);
+      check(!(await page.isHidden('#selection')) && (await page.textContent('#selection')).includes(`inch.nc:${motions[i].line}`),
+            `inch: an arc selected by a click (line ${motions[i].line})`);
+      const box = await page.locator('canvas').boundingBox();
+      await page.mouse.click(box.x + 30, box.y + box.height / 2);
+      check(await page.isHidden('#selection'), 'inch: a click on empty space clears the selection');
+      await page.screenshot({path: path.join(out, 'browser_inch_top.png')});
+      check(errors.length === 0, `inch: no script errors (${errors.join('; ')})`);
+      await page.close();
+    }
+
+    // a hostile comment and a byte that is not UTF-8: text on the page, never markup or script
+    {
+      const prog = path.join(out, 'browser_hostile.nc');
+      fs.writeFileSync(prog, Buffer.concat([Buffer.from('%\nO1234 (</script><script>alert[1]</script>)\nG90 G00 X0 Y0 Z5.\n' +
+        'G01 Z-1. F100 (<img src=x onerror=alert[2]> \u2028)\nX20. (caf'), Buffer.from([0xe9]), Buffer.from(')\nY20.\nX0\nY0\nM30\n%\n')]));
+      const {html, motions} = page_of('browser_hostile', prog, []);
+      const {page, dialogs, errors} = await open(context, html);
+      check((await page.evaluate(() => window.ncurveBackplot.moveCount)) === motions.length, 'hostile: drawn');
+      const i = motions.findIndex((m) => m.line === 4);
+      const p = await page.evaluate((i) => window.ncurveBackplot.screenOf(i), i);
+      await page.mouse.move(p.x + 20, p.y + 20);
+      await page.mouse.move(p.x, p.y, {steps: 3});
+      await page.waitForTimeout(300);
+      const tip = await page.textContent('#tip');
+      check(tip.includes('<img src=x onerror=alert[2]>'), `hostile: the comment shown as text: "${tip}"`);
+      await page.mouse.move(5, 5);
+      const j = motions.findIndex((m) => m.line === 5);
+      const q = await page.evaluate((i) => window.ncurveBackplot.screenOf(i), j);
+      await page.mouse.move(q.x, q.y, {steps: 3});
+      await page.waitForTimeout(300);
+      check((await page.textContent('#tip')).includes('X20. (caf\ufffd)'), 'hostile: a byte that is not UTF-8 shown as U+FFFD');
+      check(dialogs.length === 0 && (await page.$$('img')).length === 0, `hostile: no script ran (${dialogs.join(', ')})`);
+      check((await page.title()).includes('browser_hostile.nc'), 'hostile: title');
+      check(errors.length === 0, `hostile: no script errors (${errors.join('; ')})`);
+      await page.close();
+      // the comment closes at alert(1's ')': a PS0009 alarm, whose block the header shows as text
+      const prog2 = path.join(out, 'browser_hostile_alarm.nc');
+      fs.writeFileSync(prog2, '%\nG00 X1 Y1 (</script><script>alert(1)</script>)\nM30\n%\n');
+      const second = page_of('browser_hostile_alarm', prog2, []);
+      const other = await open(context, second.html);
+      const header = await other.page.textContent('#summary');
+      check(header.includes('ALARM PS0009') && header.includes('(</script><script>alert(1)</script>)'),
+            `hostile: the alarm's block shown as text: "${header.slice(0, 300)}"`);
+      check(other.dialogs.length === 0 && other.errors.length === 0, 'hostile: no script ran from the alarm block');
+      await other.page.screenshot({path: path.join(out, 'browser_hostile_alarm.png')});
+      await other.page.close();
+    }
+  } finally {
+    await context.close();
+    fs.rmSync(profile, {recursive: true, force: true});
+  }
+  console.log(`screenshots in ${out}`);
+  console.log(`${passed} passed, ${failed} failed`);
+  process.exit(failed ? 1 : 0);
+})().catch((e) => {
+  console.log(`FAIL ${e.stack || e}`);
+  console.log(`${passed} passed, ${failed + 1} failed`);
+  process.exit(1);
+});

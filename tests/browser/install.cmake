@@ -1,0 +1,23 @@
+# The browser tests' node packages (playwright-core), as tests/browser/package-lock.json pins them,
+# installed into OUT (the build folder) with `npm ci`; again only when the lock file changed.
+# Nothing to do where there is no Chromium: the browser tests then skip, saying so.
+if(NOT EXISTS /usr/bin/chromium AND NOT DEFINED ENV{NCURVE_CHROMIUM})
+  message("no Chromium at /usr/bin/chromium: playwright-core not installed, the browser tests will be skipped")
+  return()
+endif()
+file(MAKE_DIRECTORY ${OUT})
+file(SHA256 ${SRC}/package-lock.json want)
+set(stamp ${OUT}/node_modules/.ncurve-lock-sha256)
+if(EXISTS ${stamp})
+  file(READ ${stamp} have)
+  if(have STREQUAL want AND EXISTS ${OUT}/node_modules/playwright-core/package.json)
+    return()
+  endif()
+endif()
+configure_file(${SRC}/package.json ${OUT}/package.json COPYONLY)
+configure_file(${SRC}/package-lock.json ${OUT}/package-lock.json COPYONLY)
+execute_process(COMMAND ${NPM} ci --no-audit --no-fund --loglevel=error WORKING_DIRECTORY ${OUT} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "npm ci in ${OUT} failed (${rc}): the browser tests need playwright-core from the npm registry")
+endif()
+file(WRITE ${stamp} "${want}")

@@ -1,0 +1,614 @@
+// ncurve's 3D backplot: the moves of a run as GPU line segments (one BufferGeometry per kind of
+// move), orbit / pan / zoom, standard views, axes with ticks, hover and click on a move. Used by
+// the page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js and
+// OrbitControls (Debian's libjs-three, release 111) loaded first, and nothing else.
+//
+//   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
+//   const plot = NcurveBackplot.create(container, moves, {onHover(i) {}, onClick(i) {}});
+//   plot.setView('iso'); plot.highlight([3, 4]); plot.setColors(i => [255, 0, 0]); plot.state();
+//
+// moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32Array (X Y Z of
+// each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
+// Float32Array (per arc: centre X Y Z, sweep in radians counter-clockwise, plane 17/18/19),
+// block: Uint32Array (per move, its block), lathe, diameter, inch, plane, alarmAt: [X, Y, Z] | null}.
+(function (global) {
+  'use strict';
+  const THREE = global.THREE;
+  const KIND_NAMES = ['rapid', 'feed', 'arc'];
+  const KIND_COLORS = [[0xef, 0x6c, 0x00], [0x15, 0x65, 0xc0], [0x2e, 0x7d, 0x32]];
+  const HIGHLIGHT = 0xd81b60;
+
+  function bytes(b64) {
+    const bin = atob(b64 || '');
+    const out = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i++) out[i] = bin.charCodeAt(i);
+    return out.buffer;
+  }
+
+  // The moves from the data of `ncurve run --html` (base64 little-endian arrays).
+  function decode(d) {
+    const kind = new Uint8Array(bytes(d.kind));
+    const n = kind.length;
+    const end = new Float32Array(bytes(d.end));
+    const start = new Float32Array(3 * n);
+    const jumps = d.jumps || [];
+    let j = 0;
+    for (let i = 0; i < n; i++) {
+      if (j < jumps.length && jumps[j][0] === i) {
+        start[3 * i] = jumps[j][1], start[3 * i + 1] = jumps[j][2], start[3 * i + 2] = jumps[j][3];
+        j++;
+      } else if (i > 0) {
+        start[3 * i] = end[3 * i - 3], start[3 * i + 1] = end[3 * i - 2], start[3 * i + 2] = end[3 * i - 1];
+      }
+    }
+    const arcIndex = new Int32Array(n);
+    let a = 0;
+    for (let i = 0; i < n; i++) arcIndex[i] = kind[i] === 2 ? a++ : -1;
+    return {
+      count: n, kind, start, end, arcIndex,
+      arcs: new Float32Array(bytes(d.arcs)),
+      feed: new Float32Array(bytes(d.feed)),
+      block: new Uint32Array(bytes(d.block)),
+      blockFile: new Uint16Array(bytes(d.block_file)),
+      blockLine: new Uint32Array(bytes(d.block_line)),
+      lathe: !!d.lathe, diameter: !!d.diameter, inch: !!d.inch, plane: d.plane || 17,
+      alarmAt: d.alarm ? d.alarm.at : null,
+    };
+  }
+
+  // 1, 2 or 5 times a power of ten, near span / count
+  function niceStep(span, count) {
+    const raw = Math.max(span, 1e-9) / count;
+    const p = Math.pow(10, Math.floor(Math.log10(raw)));
+    const m = raw / p;
+    return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+  }
+
+  function formatNumber(v, step) {
+    const digits = Math.max(0, Math.min(6, -Math.floor(Math.log10(step) + 1e-9)));
+    const s = v.toFixed(digits);
+    return s === '-0' || /^-0\.0*$/.test(s) ? s.slice(1) : s;
+  }
+
+  const PLANE_AXES = {17: [0, 1], 18: [2, 0], 19: [1, 2]};
+
+  function create(container, moves, options) {
+    options = options || {};
+    const n = moves.count;
+    // machine X Y Z -> world: a lathe's Z across and X up (a rotation, so arcs keep their sense)
+    const perm = moves.lathe ? [2, 0, 1] : [0, 1, 2];  // world axis k takes machine axis perm[k]
+    const worldUp = moves.lathe ? new THREE.Vector3(0, 1, 0) : new THREE.Vector3(0, 0, 1);
+
+    // the extents (machine axes), the arcs' points included, and the origin the floats are kept near
+    const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+    const grow = (x, y, z) => {
+      if (x < lo[0]) lo[0] = x; if (x > hi[0]) hi[0] = x;
+      if (y < lo[1]) lo[1] = y; if (y > hi[1]) hi[1] = y;
+      if (z < lo[2]) lo[2] = z; if (z > hi[2]) hi[2] = z;
+    };
+    for (let i = 0; i < n; i++) {
+      grow(moves.start[3 * i], moves.start[3 * i + 1], moves.start[3 * i + 2]);
+      grow(moves.end[3 * i], moves.end[3 * i + 1], moves.end[3 * i + 2]);
+    }
+    if (moves.alarmAt) grow(moves.alarmAt[0], moves.alarmAt[1], moves.alarmAt[2]);
+    if (!(lo[0] <= hi[0])) { lo.fill(0); hi.fill(0); }
+    // a point of arc move i at t in [0, 1], machine axes (a spiral where the radii differ, the
+    // axis normal to the plane moved linearly: a helix)
+    const S = moves.start, E = moves.end, A = moves.arcs;
+    const arc = {i: -1, p: 0, q: 1, cp: 0, cq: 0, rs: 0, re: 0, a0: 0, sweep: 0};
+    const arcPoint = (i, t, out) => {
+      const s = 3 * i;
+      if (arc.i !== i) {  // the arc's constants, once per arc
+        const a = 5 * moves.arcIndex[i], plane = PLANE_AXES[A[a + 4]] || PLANE_AXES[17], p = plane[0], q = plane[1];
+        const cp = A[a + p], cq = A[a + q];
+        const sp = S[s + p] - cp, sq = S[s + q] - cq, ep = E[s + p] - cp, eq = E[s + q] - cq;
+        arc.i = i, arc.p = p, arc.q = q, arc.cp = cp, arc.cq = cq, arc.sweep = A[a + 3];
+        arc.rs = Math.sqrt(sp * sp + sq * sq), arc.re = Math.sqrt(ep * ep + eq * eq), arc.a0 = Math.atan2(sq, sp);
+      }
+      for (let k = 0; k < 3; k++) out[k] = S[s + k] + (E[s + k] - S[s + k]) * t;
+      if (t > 0 && t < 1) {
+        const r = arc.rs + (arc.re - arc.rs) * t, ang = arc.a0 + arc.sweep * t;
+        out[arc.p] = arc.cp + r * Math.cos(ang), out[arc.q] = arc.cq + r * Math.sin(ang);
+      }
+      return out;
+    };
+    const tmp = [0, 0, 0];
+    for (let i = 0; i < n; i++)
+      if (moves.kind[i] === 2) for (let k = 1; k < 8; k++) { arcPoint(i, k / 8, tmp); grow(tmp[0], tmp[1], tmp[2]); }
+    // (the extent of arcs between those eighths is within the padding round the drawing)
+    if (Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) < 1e-6)  // no path (an alarm at once): a 10 mm box
+      for (let k = 0; k < 3; k++) lo[k] -= 5, hi[k] += 5;
+    const diag = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
+    const origin = [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2];
+    const toWorld = (m, out) => {  // machine point -> world, relative to the origin
+      out[0] = m[perm[0]] - origin[perm[0]];
+      out[1] = m[perm[1]] - origin[perm[1]];
+      out[2] = m[perm[2]] - origin[perm[2]];
+      return out;
+    };
+
+    // segments per arc: chord error within a 5000th of the extent, fewer if there would be too many
+    const segOf = new Uint16Array(n);
+    let tol = diag / 5000;
+    const arcSegments = (i) => {
+      const a = 5 * moves.arcIndex[i], plane = PLANE_AXES[A[a + 4]] || PLANE_AXES[17], p = plane[0], q = plane[1];
+      const r = Math.max(Math.hypot(S[3 * i + p] - A[a + p], S[3 * i + q] - A[a + q]), 1e-9);
+      const step = 2 * Math.acos(Math.max(-1, 1 - tol / r));
+      return Math.max(1, Math.min(720, Math.ceil(Math.abs(A[a + 3]) / Math.max(step, 1e-4)) || 1));
+    };
+    let total;
+    for (let pass = 0; pass < 6; pass++) {
+      total = 0;
+      for (let i = 0; i < n; i++) total += segOf[i] = moves.kind[i] === 2 ? arcSegments(i) : 1;
+      if (total <= Math.max(6e6, 2 * n)) break;
+      tol *= 4;
+    }
+
+    // one geometry per kind: positions, colours (by kind, or as set), pick ids, dash distances
+    const counts = [0, 0, 0], moveCounts = [0, 0, 0];
+    const first = new Uint32Array(n);  // a move's first segment in its kind's geometry
+    for (let i = 0; i < n; i++) {
+      const k = moves.kind[i];
+      first[i] = counts[k];
+      counts[k] += segOf[i];
+      moveCounts[k]++;
+    }
+    const layers = counts.map((c) => ({
+      pos: new Float32Array(6 * c), col: new Uint8Array(6 * c), pick: new Uint8Array(6 * c),
+      dist: new Float32Array(2 * c), owner: new Uint32Array(c),
+    }));
+    const w0 = [0, 0, 0], w1 = [0, 0, 0], p0 = [0, 0, 0], p1 = [0, 0, 0];
+    for (let i = 0; i < n; i++) {
+      const k = moves.kind[i], L = layers[k], segs = segOf[i], kc = KIND_COLORS[k];
+      const id = i + 1, r = id & 255, g = (id >> 8) & 255, b = (id >> 16) & 255;
+      let run = 0;
+      p0[0] = moves.start[3 * i], p0[1] = moves.start[3 * i + 1], p0[2] = moves.start[3 * i + 2];
+      for (let s = 0; s < segs; s++) {
+        if (k === 2) arcPoint(i, (s + 1) / segs, p1);
+        else p1[0] = moves.end[3 * i], p1[1] = moves.end[3 * i + 1], p1[2] = moves.end[3 * i + 2];
+        toWorld(p0, w0), toWorld(p1, w1);
+        const at = first[i] + s, v = 6 * at;
+        L.pos[v] = w0[0], L.pos[v + 1] = w0[1], L.pos[v + 2] = w0[2];
+        L.pos[v + 3] = w1[0], L.pos[v + 4] = w1[1], L.pos[v + 5] = w1[2];
+        L.col[v] = L.col[v + 3] = kc[0], L.col[v + 1] = L.col[v + 4] = kc[1], L.col[v + 2] = L.col[v + 5] = kc[2];
+        L.pick[v] = L.pick[v + 3] = r, L.pick[v + 1] = L.pick[v + 4] = g, L.pick[v + 2] = L.pick[v + 5] = b;
+        const dx = w1[0] - w0[0], dy = w1[1] - w0[1], dz = w1[2] - w0[2], len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        L.dist[2 * at] = run, L.dist[2 * at + 1] = run + len;
+        run += len;
+        L.owner[at] = i;
+        p0[0] = p1[0], p0[1] = p1[1], p0[2] = p1[2];
+      }
+    }
+
+    const scene = new THREE.Scene(), pickScene = new THREE.Scene();
+    scene.background = new THREE.Color(0xfcfcfd);
+    const materials = [];
+    const coarseLines = [];  // [full, coarse] per kind, for big paths
+    const colorAttrs = [];
+    layers.forEach((L, k) => {
+      if (!L.owner.length) { colorAttrs.push(null); return; }
+      const position = new THREE.BufferAttribute(L.pos, 3);
+      const g = new THREE.BufferGeometry();
+      g.setAttribute('position', position);
+      const color = new THREE.BufferAttribute(L.col, 3, true);
+      g.setAttribute('color', color);
+      colorAttrs.push(color);
+      let m;
+      if (k === 0) {
+        g.setAttribute('lineDistance', new THREE.BufferAttribute(L.dist, 1));
+        m = new THREE.LineDashedMaterial({vertexColors: THREE.VertexColors, dashSize: 1, gapSize: 1});
+      } else {
+        m = new THREE.LineBasicMaterial({vertexColors: THREE.VertexColors});
+      }
+      materials.push(m);
+      const lines = new THREE.LineSegments(g, m);
+      lines.frustumCulled = false;
+      lines.name = KIND_NAMES[k];
+      scene.add(lines);
+      // while turning a big path on a slow GPU: every step-th segment (an index over the same buffers)
+      const step = Math.ceil(total / 150000);
+      if (step > 1) {
+        const idx = new Uint32Array(2 * Math.ceil(L.owner.length / step));
+        for (let seg = 0, o = 0; seg < L.owner.length; seg += step) idx[o++] = 2 * seg, idx[o++] = 2 * seg + 1;
+        const cg = new THREE.BufferGeometry();
+        for (const name of Object.keys(g.attributes)) cg.setAttribute(name, g.attributes[name]);
+        cg.setIndex(new THREE.BufferAttribute(idx, 1));
+        const coarse = new THREE.LineSegments(cg, m);
+        coarse.frustumCulled = false;
+        coarse.visible = false;
+        scene.add(coarse);
+        coarseLines.push([lines, coarse]);
+      }
+      const pg = new THREE.BufferGeometry();
+      pg.setAttribute('position', position);  // shared: uploaded once
+      pg.setAttribute('color', new THREE.BufferAttribute(L.pick, 3, true));
+      const pl = new THREE.LineSegments(pg, new THREE.LineBasicMaterial({vertexColors: THREE.VertexColors}));
+      pl.frustumCulled = false;
+      pickScene.add(pl);
+    });
+
+    // the highlighted moves, drawn over the rest
+    const hlGeometry = new THREE.BufferGeometry();
+    const hlLines = new THREE.LineSegments(hlGeometry,
+      new THREE.LineBasicMaterial({color: HIGHLIGHT, depthTest: false, transparent: true}));
+    hlLines.renderOrder = 10;
+    hlLines.frustumCulled = false;
+    scene.add(hlLines);
+    const hoverGeometry = new THREE.BufferGeometry();
+    const hoverLines = new THREE.LineSegments(hoverGeometry,
+      new THREE.LineBasicMaterial({color: 0x000000, depthTest: false, transparent: true}));
+    hoverLines.renderOrder = 11;
+    hoverLines.frustumCulled = false;
+    scene.add(hoverLines);
+    const segmentsOf = (list) => {
+      let c = 0;
+      for (const i of list) if (i >= 0 && i < n) c += segOf[i];
+      const out = new Float32Array(6 * c);
+      let o = 0;
+      for (const i of list) {
+        if (!(i >= 0 && i < n)) continue;
+        const src = layers[moves.kind[i]].pos;
+        out.set(src.subarray(6 * first[i], 6 * (first[i] + segOf[i])), o);
+        o += 6 * segOf[i];
+      }
+      return new THREE.BufferAttribute(out, 3);
+    };
+
+    // the axes: a light grid on the floor (mill: the XY plane under the path; lathe: the ZX
+    // plane), three axes along the box's edges with ticks; their numbers as HTML labels
+    const wlo = [0, 0, 0], whi = [0, 0, 0];
+    toWorld(lo, wlo), toWorld(hi, whi);
+    const span = [whi[0] - wlo[0], whi[1] - wlo[1], whi[2] - wlo[2]];
+    const unit = moves.inch ? 25.4 : 1, unitName = moves.inch ? 'in' : 'mm';
+    // the value shown along world axis k per world unit, and the axis name
+    const scale = [0, 1, 2].map((k) => (moves.lathe && perm[k] === 0 && moves.diameter ? 2 : 1) / unit);
+    const axisName = [0, 1, 2].map((k) => {
+      const letter = 'XYZ'[perm[k]];
+      const what = moves.lathe && letter === 'X' ? (moves.diameter ? ' (diameter)' : ' (radius)') : '';
+      return `${letter}${what}, ${unitName}`;
+    });
+    const guide = new THREE.Group();
+    scene.add(guide);
+    const gridPts = [], axisPts = [], ticks = [];
+    const floorK = moves.lathe ? 2 : 2;  // the grid lies across world x and y at the lowest world z
+    const tickLen = diag * 0.012;
+    for (let k = 0; k < 3; k++) {
+      const shown = span[k] * scale[k];
+      const flat = span[k] <= diag * 1e-6;  // the path does not move along this axis: one tick, at its value
+      const step = niceStep(flat ? diag * scale[k] : shown, 6);
+      const v0 = (wlo[k] + origin[perm[k]]) * scale[k], v1 = (whi[k] + origin[perm[k]]) * scale[k];
+      const firstTick = Math.ceil((v0 - 1e-9 * step) / step) * step;
+      const list = [];
+      for (let v = firstTick, c = 0; v <= v1 + 1e-9 * step && c < 200; v += step, c++) list.push(v);
+      if (flat) list.splice(0, list.length, Math.round(v0 / step) * step);
+      ticks.push({step, list, toWorld: (v) => v / scale[k] - origin[perm[k]]});
+    }
+    // the axes' corner: the lowest corner of the box
+    const corner = [wlo[0], wlo[1], wlo[2]];
+    const pad = diag * 0.04;
+    const axisEnds = [];  // per world axis: its two ends (or null where the path has no extent)
+    for (let k = 0; k < 3; k++) {
+      if (span[k] <= diag * 1e-6 && k === floorK) continue;
+      const a = corner.slice(), b = corner.slice();
+      a[k] = wlo[k], b[k] = whi[k];
+      for (const j of [0, 1, 2]) if (j !== k) a[j] -= pad, b[j] -= pad;
+      if (span[k] > diag * 1e-6) axisPts.push(...a, ...b);
+      axisEnds[k] = [a, b];
+      for (const v of ticks[k].list) {
+        const p = a.slice();
+        p[k] = ticks[k].toWorld(v);
+        for (const j of [0, 1, 2]) {  // a tick across each of the two other axes
+          if (j === k) continue;
+          const q = p.slice();
+          q[j] -= tickLen;
+          axisPts.push(...p, ...q);
+        }
+      }
+    }
+    // grid lines at the ticks of world x and y, on the floor
+    const fz = wlo[floorK] - pad;
+    for (const v of ticks[0].list) {
+      const x = ticks[0].toWorld(v);
+      gridPts.push(x, wlo[1] - pad, fz, x, whi[1] + pad, fz);
+    }
+    for (const v of ticks[1].list) {
+      const y = ticks[1].toWorld(v);
+      gridPts.push(wlo[0] - pad, y, fz, whi[0] + pad, y, fz);
+    }
+    const lineSet = (pts, color, opacity) => {
+      const g = new THREE.BufferGeometry();
+      g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(pts), 3));
+      return new THREE.LineSegments(g, new THREE.LineBasicMaterial({color, transparent: opacity < 1, opacity}));
+    };
+    guide.add(lineSet(gridPts, 0x90a4ae, 0.35));
+    guide.add(lineSet(axisPts, 0x37474f, 1));
+
+    // renderer, camera, controls
+    const renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
+    renderer.setPixelRatio(global.devicePixelRatio || 1);
+    container.appendChild(renderer.domElement);
+    renderer.domElement.className = 'ncurve-canvas';
+    const overlay = document.createElement('div');
+    overlay.className = 'ncurve-overlay';
+    container.appendChild(overlay);
+    const radius = diag / 2;
+    const camera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 8 * radius + 1);
+    camera.up.copy(worldUp);
+    const controls = new THREE.OrbitControls(camera, renderer.domElement);
+    controls.screenSpacePanning = true;
+    controls.enableKeys = false;
+    controls.zoomSpeed = 1.5;
+    let viewName = '', lastView = '', settingView = false;
+    const resize = () => {
+      const w = Math.max(container.clientWidth, 1), h = Math.max(container.clientHeight, 1);
+      renderer.setSize(w, h, false);
+      renderer.domElement.style.width = w + 'px';
+      renderer.domElement.style.height = h + 'px';
+      const half = radius * 1.25, aspect = w / h;
+      camera.left = -half * Math.max(aspect, 1), camera.right = half * Math.max(aspect, 1);
+      camera.top = half / Math.min(aspect, 1), camera.bottom = -half / Math.min(aspect, 1);
+      camera.updateProjectionMatrix();
+      requestRender();
+    };
+    // the views: where the camera looks from (world), machine-wise
+    const VIEWS = moves.lathe
+      ? {zx: [0, 0, 1], top: [0, 1, 1e-4], end: [1, 0, 0], iso: [1, 0.8, 1.2]}
+      : {top: [0, -1e-4, 1], front: [0, -1, 0], side: [1, 0, 0], iso: [1, -1, 1]};
+    const setView = (name) => {
+      const d = VIEWS[name];
+      if (!d) return false;
+      viewName = name;
+      const dir = new THREE.Vector3(d[0], d[1], d[2]).normalize();
+      // the box's corners as seen from there: the camera centred on them, zoomed to fit
+      controls.target.set(0, 0, 0);
+      camera.position.copy(dir.clone().multiplyScalar(4 * radius + 1));
+      camera.lookAt(controls.target);
+      camera.updateMatrixWorld();
+      const inv = new THREE.Matrix4().getInverse(camera.matrixWorld);
+      const b = new THREE.Box3();
+      for (const x of [wlo[0] - pad, whi[0]]) for (const y of [wlo[1] - pad, whi[1]]) for (const z of [wlo[2] - pad, whi[2]])
+        b.expandByPoint(new THREE.Vector3(x, y, z).applyMatrix4(inv));
+      const centre = new THREE.Vector3((b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2, 0).applyMatrix4(camera.matrixWorld);
+      const shift = centre.sub(camera.position);  // in the view's plane
+      controls.target.copy(shift);
+      camera.position.add(shift);
+      const w = Math.max(b.max.x - b.min.x, diag * 1e-3), h = Math.max(b.max.y - b.min.y, diag * 1e-3);
+      // room for the labels round the drawing, the buttons above and the legend below
+      const H = Math.max(renderer.domElement.clientHeight, 1), above = 70, below = 100;
+      const cw = Math.max(renderer.domElement.clientWidth - 170, 50), ch = Math.max(H - above - below, 50);
+      const ppu = Math.min(cw / w, ch / h);  // pixels per world unit
+      camera.zoom = ppu * (camera.top - camera.bottom) / H;
+      camera.updateProjectionMatrix();
+      const upWorld = new THREE.Vector3(0, 1, 0).applyQuaternion(camera.quaternion).multiplyScalar((below - above) / 2 / ppu);
+      controls.target.sub(upWorld);
+      camera.position.sub(upWorld);
+      settingView = true;
+      controls.update();
+      settingView = false;
+      viewName = lastView = name;
+      requestRender();
+      return true;
+    };
+
+    // labels: tick numbers and axis names beside their axis (on the side away from the path),
+    // the start point and the alarm; placed on the screen every frame
+    const labels = [];
+    const addLabel = (cls, text, world, axis) => {
+      const el = document.createElement('div');
+      el.className = 'ncurve-label ' + cls;
+      el.textContent = text;
+      overlay.appendChild(el);
+      labels.push({el, world: new THREE.Vector3(world[0], world[1], world[2]), axis});
+    };
+    for (let k = 0; k < 3; k++) {
+      if (!axisEnds[k]) continue;
+      const a = axisEnds[k][0];
+      ticks[k].list.forEach((v) => {
+        const p = a.slice();
+        p[k] = ticks[k].toWorld(v);
+        addLabel('tick tick-' + 'xyz'[k], formatNumber(v, ticks[k].step), p, k);
+      });
+      const e = axisEnds[k][1].slice();
+      if (span[k] <= diag * 1e-6) e[k] += diag * 0.05;
+      addLabel('axis-name axis-' + 'xyz'[k], axisName[k], e, k);
+    }
+    if (n > 0) addLabel('marker start', '', toWorld(moves.start.subarray(0, 3), [0, 0, 0]), -1);
+    if (moves.alarmAt) addLabel('marker alarm', options.alarmLabel || 'alarm', toWorld(moves.alarmAt, [0, 0, 0]), -1);
+
+    const v3 = new THREE.Vector3();
+    const project = (w) => {
+      v3.copy(w).project(camera);
+      const c = renderer.domElement;
+      return [(v3.x + 1) / 2 * c.clientWidth, (1 - v3.y) / 2 * c.clientHeight];
+    };
+    const placeLabels = () => {
+      const W = renderer.domElement.clientWidth, H = renderer.domElement.clientHeight;
+      const centre = project(new THREE.Vector3((wlo[0] + whi[0]) / 2, (wlo[1] + whi[1]) / 2, (wlo[2] + whi[2]) / 2));
+      // per axis: its direction on the screen, the side away from the path, how many ticks to skip
+      const screen = axisEnds.map((ends, k) => {
+        if (!ends) return null;
+        const a = project(new THREE.Vector3(...ends[0])), b = project(new THREE.Vector3(...ends[1]));
+        const len = Math.hypot(b[0] - a[0], b[1] - a[1]);
+        const d = len > 1e-6 ? [(b[0] - a[0]) / len, (b[1] - a[1]) / len] : [1, 0];
+        let nrm = [-d[1], d[0]];
+        const mid = [(a[0] + b[0]) / 2 - centre[0], (a[1] + b[1]) / 2 - centre[1]];
+        if (nrm[0] * mid[0] + nrm[1] * mid[1] < 0) nrm = [-nrm[0], -nrm[1]];
+        const count = ticks[k].list.length;
+        const gap = count > 1 ? len / (count - 1) : Infinity;
+        let every = Math.max(1, Math.ceil(48 / Math.max(gap, 1e-9)));
+        if (every > 2 && every <= 5) every = 5;
+        else if (every > 5) every = 10 * Math.ceil(every / 10);
+        return {d, nrm, len, every, endOn: len < 30 && span[k] > diag * 1e-6};
+      });
+      const tickIndex = [0, 0, 0];
+      for (const L of labels) {
+        let [x, y] = project(L.world);
+        let hide = false;
+        if (L.axis >= 0) {
+          const s = screen[L.axis];
+          const name = L.el.classList.contains('axis-name');
+          if (s.endOn) hide = true;
+          if (!name) {
+            const i = tickIndex[L.axis]++;
+            const m = Math.round(ticks[L.axis].list[i] / ticks[L.axis].step);
+            if (m % s.every !== 0) hide = true;
+            x += s.nrm[0] * 16, y += s.nrm[1] * 16;
+          } else {  // beyond the axis' end, clear of its last tick, kept on the canvas
+            const w = L.el.offsetWidth, h = L.el.offsetHeight;
+            const along = Math.abs(s.d[0]) * w / 2 + Math.abs(s.d[1]) * h / 2 + 10;
+            x += s.d[0] * along, y += s.d[1] * along;
+            x = Math.min(Math.max(x, w / 2 + 4), W - w / 2 - 4);
+            y = Math.min(Math.max(y, h / 2 + 4), H - h / 2 - 4);
+          }
+        }
+        const inside = x >= -40 && x <= W + 40 && y >= -20 && y <= H + 20;
+        L.el.style.display = inside && !hide ? '' : 'none';
+        L.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) translate(-50%, -50%)`;
+      }
+    };
+
+    let pending = false;
+    function requestRender() {
+      if (pending) return;
+      pending = true;
+      global.requestAnimationFrame(render);
+    }
+    // a redraw slower than 80 ms while turning: the coarse lines until the pointer is released
+    let interacting = false, coarse = false, lastRender = 0;
+    const useCoarse = (on) => {
+      coarse = on;
+      for (const [full, c] of coarseLines) full.visible = !on, c.visible = on;
+    };
+    controls.addEventListener('start', () => { interacting = true; lastRender = 0; });
+    controls.addEventListener('end', () => {
+      interacting = false;
+      if (coarse) useCoarse(false), requestRender();
+    });
+    function render() {
+      pending = false;
+      const now = performance.now();
+      if (interacting && coarseLines.length && !coarse && lastRender && now - lastRender > 80) useCoarse(true);
+      lastRender = now;
+      const wpp = (camera.top - camera.bottom) / camera.zoom / Math.max(renderer.domElement.clientHeight, 1);
+      for (const m of materials) if (m.isLineDashedMaterial) m.dashSize = 6 * wpp, m.gapSize = 4 * wpp;
+      renderer.setRenderTarget(null);
+      renderer.render(scene, camera);
+      placeLabels();
+      if (api.onRender) api.onRender();
+    }
+    controls.addEventListener('change', () => {
+      if (!settingView) viewName = '';  // moved by hand: no named view
+      requestRender();
+    });
+
+    // picking: the pick scene (each move's number as its colour) rendered for a few pixels round the pointer
+    const PICK = 9;
+    const pickTarget = new THREE.WebGLRenderTarget(PICK, PICK);
+    const pickPixels = new Uint8Array(4 * PICK * PICK);
+    const pick = (clientX, clientY) => {
+      const rect = renderer.domElement.getBoundingClientRect();
+      const x = clientX - rect.left, y = clientY - rect.top;
+      if (x < 0 || y < 0 || x >= rect.width || y >= rect.height) return -1;
+      const dpr = renderer.getPixelRatio();
+      const W = Math.round(rect.width * dpr), H = Math.round(rect.height * dpr);
+      camera.setViewOffset(W, H, Math.round(x * dpr) - (PICK >> 1), Math.round(y * dpr) - (PICK >> 1), PICK, PICK);
+      renderer.setRenderTarget(pickTarget);
+      renderer.setClearColor(0x000000, 1);
+      renderer.render(pickScene, camera);
+      renderer.setRenderTarget(null);
+      camera.clearViewOffset();
+      renderer.readRenderTargetPixels(pickTarget, 0, 0, PICK, PICK, pickPixels);
+      let best = -1, bestD = Infinity;
+      for (let py = 0; py < PICK; py++) for (let px = 0; px < PICK; px++) {
+        const o = 4 * (py * PICK + px);
+        const id = pickPixels[o] | (pickPixels[o + 1] << 8) | (pickPixels[o + 2] << 16);
+        if (!id) continue;
+        const d = (px - (PICK >> 1)) ** 2 + (py - (PICK >> 1)) ** 2;
+        if (d < bestD) bestD = d, best = id - 1;
+      }
+      return best < n ? best : -1;
+    };
+
+    let hovered = -1;
+    const setHover = (i) => {
+      if (i === hovered) return;
+      hovered = i;
+      hoverGeometry.setAttribute('position', segmentsOf(i >= 0 ? [i] : []));
+      requestRender();
+      if (api.onHover) api.onHover(i);
+    };
+    let down = null, lastPointer = null, pickQueued = false;
+    const el = renderer.domElement;
+    el.addEventListener('pointerdown', (e) => { down = [e.clientX, e.clientY]; setHover(-1); });
+    el.addEventListener('pointerup', (e) => {
+      if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4 && api.onClick) api.onClick(pick(e.clientX, e.clientY));
+      down = null;
+    });
+    el.addEventListener('pointermove', (e) => {
+      if (e.buttons) return;
+      lastPointer = [e.clientX, e.clientY];
+      if (pickQueued) return;
+      pickQueued = true;
+      global.requestAnimationFrame(() => { pickQueued = false; setHover(pick(lastPointer[0], lastPointer[1])); });
+    });
+    el.addEventListener('pointerleave', () => setHover(-1));
+    global.addEventListener('resize', resize);
+
+    const api = {
+      onHover: options.onHover || null,
+      onClick: options.onClick || null,
+      onRender: null,
+      moves, camera, controls, renderer,
+      setView, fit: () => setView(viewName || lastView),
+      views: Object.keys(VIEWS),
+      pick,
+      // colours: fn(i) -> [r, g, b] (0..255) or null for the kind's colour; no argument: by kind
+      setColors(fn) {
+        for (let i = 0; i < n; i++) {
+          const k = moves.kind[i], c = (fn && fn(i)) || KIND_COLORS[k], col = layers[k].col;
+          for (let v = 6 * first[i], e = 6 * (first[i] + segOf[i]); v < e; v += 3) col[v] = c[0], col[v + 1] = c[1], col[v + 2] = c[2];
+        }
+        for (const a of colorAttrs) if (a) a.needsUpdate = true;
+        requestRender();
+      },
+      highlight(list) {
+        hlGeometry.setAttribute('position', segmentsOf(list || []));
+        requestRender();
+      },
+      hover: setHover,
+      // where move i's middle is on the page (client coordinates)
+      screenOf(i) {
+        const L = layers[moves.kind[i]], s = first[i] + (segOf[i] >> 1), v = 6 * s;
+        const w = segOf[i] === 1
+          ? [(L.pos[v] + L.pos[v + 3]) / 2, (L.pos[v + 1] + L.pos[v + 4]) / 2, (L.pos[v + 2] + L.pos[v + 5]) / 2]
+          : [L.pos[v], L.pos[v + 1], L.pos[v + 2]];
+        const [x, y] = project(new THREE.Vector3(w[0], w[1], w[2]));
+        const rect = renderer.domElement.getBoundingClientRect();
+        return {x: rect.left + x, y: rect.top + y};
+      },
+      render() { pending = false; render(); },
+      state() {
+        return {
+          moveCount: n,
+          kinds: {rapid: moveCounts[0], feed: moveCounts[1], arc: moveCounts[2]},
+          segments: {rapid: counts[0], feed: counts[1], arc: counts[2]},
+          view: viewName, hovered, coarse,
+          camera: {position: camera.position.toArray(), zoom: camera.zoom, target: controls.target.toArray()},
+        };
+      },
+      dispose() {
+        global.removeEventListener('resize', resize);
+        controls.dispose();
+        renderer.dispose();
+        container.removeChild(renderer.domElement);
+        container.removeChild(overlay);
+      },
+    };
+    const defaultView = moves.lathe ? 'zx' : moves.plane === 18 ? 'front' : moves.plane === 19 ? 'side' : 'iso';
+    resize();
+    setView(options.view || defaultView);
+    return api;
+  }
+
+  global.NcurveBackplot = {decode, create, KIND_NAMES, KIND_COLORS, niceStep};
+})(window);
