@@ -260,13 +260,7 @@ int program_command(const AnalyzeArgs& a) {
       return 2;
     }
   }
-  if (sim) {  // settle for five time constants of the slowest loop
-    double slowest = INFINITY;
-    for (char axis : profile.axes)
-      if (int k = machine::axis_index(axis); k >= 0 && k < 3)
-        slowest = std::min(slowest, profile.servo.kv[static_cast<std::size_t>(k)]);
-    sim->finish(std::max(0.2, 5.0 / slowest));
-  }
+  if (sim) settle(*sim, profile);
   if (!result.ok()) {
     std::cerr << nc::format(*result.alarm) << "\n";
     return 1;
@@ -290,40 +284,7 @@ int program_command(const AnalyzeArgs& a) {
     if (!save(a.plot, report::feed_svg(trace.samples(), title), {a.in.program})) return 2;
   }
   if (a.json) {
-    nlohmann::json j;
-    j["program"] = a.in.program;
-    j["machine"] = profile.name;
-    j["cycle_time_s"] = t.seconds;
-    j["motion_s"] = t.motion_seconds;
-    j["wait_s"] = t.wait_seconds;
-    j["settle_s"] = t.settle_seconds;
-    j["dwell_s"] = t.dwell_seconds;
-    j["programmed_time_s"] = t.programmed_seconds;
-    j["motions"] = t.motions;
-    j["stops"] = t.stops;
-    j["waits"] = t.waits;
-    j["starved_blocks"] = t.starved;
-    j["motions_without_lookahead"] = t.without_lookahead;
-    j["feed_length_mm"] = t.feed_length;
-    j["mean_feed_mm_min"] = mean_feed;
-    j["macro_statements"] = t.macro_statements;
-    j["nc_blocks"] = t.nc_blocks;
-    j["axes"] = nlohmann::json::array();
-    for (char axis : profile.axes) j["axes"].push_back(std::string(1, axis));
-    j["x_diameter"] = report::OutputFrame(profile).x_diameter;
-    if (sim) {
-      auto contour_json = [&](const motion::ContourStats& s) {
-        return nlohmann::json{{"max_mm", s.max_error},
-                              {"rms_mm", s.rms},
-                              {"t_s", s.max_t},
-                              {"line", s.max_line},
-                              {"file", s.max_file ? s.max_file->name() : ""},
-                              {"at", shape::position_json(profile, s.max_actual)},
-                              {"samples", s.ticks}};
-      };
-      j["contour_error"] = contour_json(sim->cutting());
-      j["rapid_contour_error"] = contour_json(sim->rapids());
-    }
+    nlohmann::json j = analyze_json(a.in.program, profile, t, sim ? &*sim : nullptr);
     if (shape) shape::add_json(j, *curve, *shape, a.tol);
     std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
@@ -360,6 +321,54 @@ int program_command(const AnalyzeArgs& a) {
 }
 
 }  // namespace
+
+nlohmann::json analyze_json(const std::string& program, const machine::MachineProfile& profile,
+                            const motion::PlanTotals& t, const motion::ServoSim* sim) {
+  const double mean_feed = t.feed_motion_seconds > 0 ? t.feed_length / t.feed_motion_seconds * 60 : 0;
+  nlohmann::json j;
+  j["program"] = program;
+  j["machine"] = profile.name;
+  j["cycle_time_s"] = t.seconds;
+  j["motion_s"] = t.motion_seconds;
+  j["wait_s"] = t.wait_seconds;
+  j["settle_s"] = t.settle_seconds;
+  j["dwell_s"] = t.dwell_seconds;
+  j["programmed_time_s"] = t.programmed_seconds;
+  j["motions"] = t.motions;
+  j["stops"] = t.stops;
+  j["waits"] = t.waits;
+  j["starved_blocks"] = t.starved;
+  j["motions_without_lookahead"] = t.without_lookahead;
+  j["feed_length_mm"] = t.feed_length;
+  j["mean_feed_mm_min"] = mean_feed;
+  j["macro_statements"] = t.macro_statements;
+  j["nc_blocks"] = t.nc_blocks;
+  j["axes"] = nlohmann::json::array();
+  for (char axis : profile.axes) j["axes"].push_back(std::string(1, axis));
+  j["x_diameter"] = report::OutputFrame(profile).x_diameter;
+  if (sim) {
+    auto contour_json = [&](const motion::ContourStats& s) {
+      return nlohmann::json{{"max_mm", s.max_error},
+                            {"rms_mm", s.rms},
+                            {"t_s", s.max_t},
+                            {"line", s.max_line},
+                            {"file", s.max_file ? s.max_file->name() : ""},
+                            {"at", shape::position_json(profile, s.max_actual)},
+                            {"samples", s.ticks}};
+    };
+    j["contour_error"] = contour_json(sim->cutting());
+    j["rapid_contour_error"] = contour_json(sim->rapids());
+  }
+  return j;
+}
+
+void settle(motion::ServoSim& sim, const machine::MachineProfile& profile) {
+  double slowest = INFINITY;  // five time constants of the slowest loop
+  for (char axis : profile.axes)
+    if (int k = machine::axis_index(axis); k >= 0 && k < 3)
+      slowest = std::min(slowest, profile.servo.kv[static_cast<std::size_t>(k)]);
+  sim.finish(std::max(0.2, 5.0 / slowest));
+}
 
 void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
   CLI::App* cmd = app.add_subcommand(

@@ -2,11 +2,14 @@
 // `ncurve analyze circle`: the circular test on the machine model.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <string>
 
 #include "app/curve_args.hpp"
 #include "app/run_setup.hpp"
+#include "motion/planner.hpp"
+#include "motion/servo.hpp"
 
 namespace ncurve::app {
 
@@ -32,5 +35,11 @@ struct AnalyzeArgs {
 
 void add_analyze_command(CLI::App& app, AnalyzeArgs& args);
 int analyze_command(const AnalyzeArgs& args);
+
+// The cycle time of `analyze --json` from the planner's totals (and the servo's contour error).
+nlohmann::json analyze_json(const std::string& program, const machine::MachineProfile& profile,
+                            const motion::PlanTotals& totals, const motion::ServoSim* sim);
+// Lets the servo model settle after the last block (five time constants of the slowest loop).
+void settle(motion::ServoSim& sim, const machine::MachineProfile& profile);
 
 }  // namespace ncurve::app

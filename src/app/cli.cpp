@@ -30,6 +30,7 @@ void add_commands(CLI::App& app, Commands& c) {
   add_gen_command(app, c.gen);
   add_helicoid_command(app, c.helicoid);
   add_analyze_command(app, c.analyze);
+  add_serve_command(app, c.serve);
   c.completion = app.add_subcommand("completion", "print the bash completion script: source <(ncurve completion)");
   c.man = app.add_subcommand("man", "print the manual page (roff)")->group("");
 }
@@ -40,7 +41,7 @@ std::string not_a_command(CLI::App& app, int argc, const char* const* argv) {
   for (const auto* c : app.get_subcommands([](const CLI::App*) { return true; })) known.push_back(c->get_name());
   if (std::find(known.begin(), known.end(), argv[1]) != known.end()) return {};
   const std::string near = nearest(argv[1], known);
-  return fmt::format("ncurve: '{}' is not a command{}; the commands are run, gen, analyze, helicoid and completion "
+  return fmt::format("ncurve: '{}' is not a command{}; the commands are run, gen, analyze, helicoid, serve and completion "
                      "(ncurve --help)\n",
                      argv[1], near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near));
 }

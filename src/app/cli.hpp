@@ -9,6 +9,7 @@
 #include "app/gen_command.hpp"
 #include "app/helicoid_command.hpp"
 #include "app/run_setup.hpp"
+#include "app/serve_args.hpp"
 
 namespace ncurve::app {
 
@@ -33,6 +34,7 @@ struct Commands {
   GenArgs gen;
   HelicoidArgs helicoid;
   AnalyzeArgs analyze;
+  ServeArgs serve;
   CLI::App* run_command = nullptr;
   CLI::App* completion = nullptr;
   CLI::App* man = nullptr;

@@ -107,49 +107,82 @@ void add_gen_command(CLI::App& app, GenArgs& a) {
   a.command = gen;
 }
 
+GenJob gen_job(const GenArgs& a, const std::vector<std::string>& extras, const std::string& command,
+               const std::vector<std::string>& options) {
+  gen::Options o;
+  if (a.curve.empty()) throw std::runtime_error("name a curve (ncurve gen --list shows them) or expr");
+  if (!a.machine.empty()) o.profile = machine::load_profile(a.machine);
+  gen::parse_form(a.form, o.form);
+  if (a.lines == "equal-step") o.lines = geom::LineMethod::equal_step;
+  else if (a.lines == "equal-chord") o.lines = geom::LineMethod::equal_chord;
+  else if (a.lines == "equal-error-chord") o.lines = geom::LineMethod::equal_error_on_curve;
+  else if (a.lines == "radial-error") o.lines = geom::LineMethod::radial_error;
+  o.tol = a.tol;
+  o.feed = a.feed;
+  o.depth = a.depth;
+  o.step_down = a.step_down;
+  o.clearance = a.clearance;
+  o.program_number = a.program_number;
+  o.tool_radius = a.tool_radius;
+  o.side = a.side == "right" ? gen::Side::right : gen::Side::left;
+  o.tip = a.tip;
+  o.cycle_program = a.cycle_program;
+  o.tool = a.tool;
+  o.spindle = a.spindle;
+  o.spindle_ccw = a.spindle_ccw;
+  o.css = a.css;
+  o.max_rpm = a.max_rpm;
+  o.coolant = a.coolant;
+  o.inch = a.inch;
+  o.max_moves = static_cast<std::size_t>(a.max_moves);
+  gen::check_options(o);
+  if (a.macro_only && o.form != gen::Form::cycle) throw std::runtime_error("--macro-only is for --form cycle");
+  geom::Curve curve = build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to, command, options}, extras, o.profile);
+  return GenJob{std::move(o), std::move(curve)};
+}
+
+nlohmann::json gen_json(const GenJob& job, const gen::Result& r, const std::string* program) {
+  const auto& s = r.stats;
+  const gen::Options& o = job.options;
+  nlohmann::json j;
+  j["curve"] = job.curve.name();
+  j["form"] = gen::to_string(o.form);
+  j["tolerance"] = o.tol;
+  j["words"] = s.words;
+  j["bytes"] = s.bytes;
+  j["blocks"] = s.blocks;
+  j["points"] = s.points;
+  j["path_length"] = s.path_length;
+  j["max_deviation"] = s.max_deviation;
+  j["worst_t"] = s.worst_t;
+  j["worst_point"] = s.worst_point;
+  j["within_tolerance"] = r.within_tolerance;
+  j["tool_radius"] = o.tool_radius;
+  j["passes"] = s.passes;
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& [key, value] : r.parameters) params[key] = value;
+  j["parameters"] = params;
+  if (program) j["program"] = *program;
+  if (!r.macro.empty()) j["macro"] = r.macro;
+  return j;
+}
+
 int gen_command(const GenArgs& a) {
   if (a.list) {
     std::cout << list_curves();
     return 0;
   }
-  gen::Options o;
-  std::optional<geom::Curve> curve;
+  std::optional<GenJob> job;
   try {
-    if (a.curve.empty()) throw std::runtime_error("name a curve (ncurve gen --list shows them) or expr");
-    if (!a.machine.empty()) o.profile = machine::load_profile(a.machine);
-    gen::parse_form(a.form, o.form);
-    if (a.lines == "equal-step") o.lines = geom::LineMethod::equal_step;
-    else if (a.lines == "equal-chord") o.lines = geom::LineMethod::equal_chord;
-    else if (a.lines == "equal-error-chord") o.lines = geom::LineMethod::equal_error_on_curve;
-    else if (a.lines == "radial-error") o.lines = geom::LineMethod::radial_error;
-    o.tol = a.tol;
-    o.feed = a.feed;
-    o.depth = a.depth;
-    o.step_down = a.step_down;
-    o.clearance = a.clearance;
-    o.program_number = a.program_number;
-    o.tool_radius = a.tool_radius;
-    o.side = a.side == "right" ? gen::Side::right : gen::Side::left;
-    o.tip = a.tip;
-    o.cycle_program = a.cycle_program;
-    o.tool = a.tool;
-    o.spindle = a.spindle;
-    o.spindle_ccw = a.spindle_ccw;
-    o.css = a.css;
-    o.max_rpm = a.max_rpm;
-    o.coolant = a.coolant;
-    o.inch = a.inch;
-    o.max_moves = static_cast<std::size_t>(a.max_moves);
-    gen::check_options(o);
-    if (a.macro_only && o.form != gen::Form::cycle) throw std::runtime_error("--macro-only is for --form cycle");
-    curve.emplace(build_curve({a.curve, a.x, a.y, a.z, a.t_range, a.from, a.to, "ncurve gen", long_options(*a.command)},
-                              a.command->remaining(), o.profile));
+    job.emplace(gen_job(a, a.command->remaining(), "ncurve gen", long_options(*a.command)));
   } catch (const std::bad_alloc&) {
     throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve gen: " << e.what() << "\n";
     return 2;
   }
+  const gen::Options& o = job->options;
+  const geom::Curve* curve = &job->curve;
 
   if (const geom::CurveSpec* spec = geom::find_curve(curve->name()); spec && spec->lathe && !o.profile.lathe())
     std::cerr << fmt::format(
@@ -179,27 +212,7 @@ int gen_command(const GenArgs& a) {
   const auto& s = r.stats;
   if (!a.plot.empty() && !save(a.plot, gen::plot_svg(r.cutter_centre ? *r.cutter_centre : *curve, o, s))) return 2;
   if (a.json) {
-    nlohmann::json j;
-    j["curve"] = curve->name();
-    j["form"] = gen::to_string(o.form);
-    j["tolerance"] = o.tol;
-    j["words"] = s.words;
-    j["bytes"] = s.bytes;
-    j["blocks"] = s.blocks;
-    j["points"] = s.points;
-    j["path_length"] = s.path_length;
-    j["max_deviation"] = s.max_deviation;
-    j["worst_t"] = s.worst_t;
-    j["worst_point"] = s.worst_point;
-    j["within_tolerance"] = r.within_tolerance;
-    j["tool_radius"] = o.tool_radius;
-    j["passes"] = s.passes;
-    nlohmann::json params = nlohmann::json::object();
-    for (const auto& [key, value] : r.parameters) params[key] = value;
-    j["parameters"] = params;
-    if (output.empty()) j["program"] = program;
-    if (!r.macro.empty()) j["macro"] = r.macro;
-    std::cout << j.dump(2) << "\n";
+    std::cout << gen_json(*job, r, output.empty() ? &program : nullptr).dump(2) << "\n";
   } else {
     if (output.empty()) std::cout << program;
     std::ostream& out = output.empty() ? std::cerr : std::cout;

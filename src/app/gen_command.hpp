@@ -2,8 +2,12 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "gen/generate.hpp"
 
 namespace ncurve::app {
 
@@ -43,5 +47,16 @@ struct GenArgs {
 
 void add_gen_command(CLI::App& app, GenArgs& args);
 int gen_command(const GenArgs& args);
+
+// The options and the curve the arguments ask for (extras: the curve's --NAME VALUE parameters;
+// command and options: for messages, see CurveArgs). Throws std::runtime_error for the user.
+struct GenJob {
+  gen::Options options;
+  geom::Curve curve;
+};
+GenJob gen_job(const GenArgs& args, const std::vector<std::string>& extras, const std::string& command,
+               const std::vector<std::string>& options);
+// The statistics of `ncurve gen --json`, with the program's text when program is given.
+nlohmann::json gen_json(const GenJob& job, const gen::Result& result, const std::string* program);
 
 }  // namespace ncurve::app

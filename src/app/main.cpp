@@ -26,6 +26,7 @@
 #include "report/path_plot.hpp"
 #include "report/summary.hpp"
 #include "report/writers.hpp"
+#include "serve/serve_command.hpp"
 
 namespace {
 
@@ -179,6 +180,7 @@ int ncurve_main(int argc, char** argv) {
   if (c.gen.command->parsed()) return app::gen_command(c.gen);
   if (c.helicoid.command->parsed()) return app::helicoid_command(c.helicoid);
   if (c.analyze.command->parsed()) return app::analyze_command(c.analyze);
+  if (c.serve.command->parsed()) return serve::serve_command(c.serve);
   return 2;
 }
 

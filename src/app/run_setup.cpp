@@ -87,10 +87,13 @@ RunSetup prepare_run(const RunInputs& in) {
   s.options.max_seconds = in.max_seconds;
   s.options.nose_centre = in.nose_centre;
   for (const auto& v : in.sets) s.options.presets.push_back(parse_set(v));
-  if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
+  if (in.machine_text) s.profile = machine::parse_profile(*in.machine_text, in.machine);
+  else if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
   apply_parameters(s.profile, in.params);
   s.lib = std::make_unique<machine::ProgramLibrary>(s.profile.parse_options());
-  if (in.program == "-") {
+  if (in.text) {
+    s.problems = s.lib->add_text(in.program, *in.text, true);
+  } else if (in.program == "-") {
     std::ostringstream text;
     text << std::cin.rdbuf();
     if (std::cin.bad()) throw std::runtime_error("cannot read the program from standard input");

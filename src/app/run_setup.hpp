@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,8 @@ struct RunInputs {
   std::uint64_t max_steps = machine::RunOptions{}.max_steps;
   double max_seconds = machine::RunOptions{}.max_seconds;
   bool nose_centre = false;
+  std::optional<std::string> text;          // the program's text, named `program` (not read from a file)
+  std::optional<std::string> machine_text;  // a profile's TOML text, named `machine`
 };
 
 struct RunSetup {

@@ -232,6 +232,7 @@ RunResult Interpreter::run(MoveSink& sink) {
   Frame f;
   f.prog = main;
   frames_.push_back(f);
+  if (observer_) observe_call(f);
   motion_ = profile_.power_on_g01 ? 1 : 0;
   plane_ = profile_.power_on_plane;
   incremental_ = profile_.power_on_g91;
@@ -267,6 +268,7 @@ RunResult Interpreter::run(MoveSink& sink) {
     } catch (const nc::Alarm&) {
     }
   }
+  if (observer_) observer_->finished(moves_delivered(), modal_state());
   sink_ = nullptr;
   return result_;
 }
@@ -310,6 +312,7 @@ void Interpreter::step() {
   const Block& b = prog_->blocks[f.pc];
   block_ = &b;
   ++result_.stats.blocks;
+  if (observer_) [[unlikely]] observe_block(b);
   if (b.block_skip && profile_.block_skip) {
     ++f.pc;
     return;
@@ -446,6 +449,7 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column, st
     locals_.push_back(frame.initial);
   }
   frames_.push_back(frame);
+  if (observer_) [[unlikely]] observe_call(frame);
 }
 
 void Interpreter::call_macro(int number, const std::vector<Arg>& args, int repeat, bool custom, bool modal,
@@ -487,6 +491,7 @@ void Interpreter::return_from_program(std::optional<int> sequence, std::uint16_t
   if (f.repeat > 0) {
     --f.repeat;
     f.pc = f.entry;
+    if (observer_) [[unlikely]] observe_repeat(f);
     if (f.kind == Frame::macro) locals_[f.level] = f.initial;
     return;
   }
@@ -496,6 +501,7 @@ void Interpreter::return_from_program(std::optional<int> sequence, std::uint16_t
     locals_.pop_back();
   }
   frames_.pop_back();
+  if (observer_) [[unlikely]] observer_->left();
   prog_ = frames_.back().prog;
   if (sequence) {
     auto it = prog_->sequence_index.find(*sequence);
@@ -653,7 +659,7 @@ void Interpreter::exec_nc(const Block& b) {
   if (has('T')) {
     int t = integer(word('T'), "T");
     if (profile_.t_code_calls_o9000 && !here.custom) {
-      common_[149] = Value::of(t);
+      write_var(149, Value::of(t), word('T').column);
       Frame f;
       f.kind = Frame::subprogram;
       f.custom = true;

@@ -17,6 +17,7 @@
 #include "machine/library.hpp"
 #include "machine/macro_output.hpp"
 #include "machine/move.hpp"
+#include "machine/observer.hpp"
 #include "machine/profile.hpp"
 #include "machine/transforms.hpp"
 #include "nc/program.hpp"
@@ -78,6 +79,8 @@ public:
 
   // Variable value after (or during) a run, as a program would read it.
   nc::Value variable(int number);
+  // Tell this observer each block, call, return and variable write of the next runs (null: none).
+  void observe(ExecutionObserver* observer) { observer_ = observer; }
 
 private:
   struct Frame;
@@ -336,6 +339,14 @@ private:
     const nc::Block* call_block = nullptr;
   };
   void add_call_stack(nc::Diagnostic& d) const;
+  // the observer's side (observe.cpp): only called when there is one
+  ExecutionObserver* observer_ = nullptr;
+  void observe_block(const nc::Block& b);
+  void observe_call(const Frame& f);
+  void observe_repeat(const Frame& f);  // a repeated macro call's locals back to its arguments
+  void observed_write(int n, nc::Value v, std::uint16_t column);
+  std::uint64_t moves_delivered() const;
+  ModalState modal_state();
   std::vector<const nc::Program*> reached_;  // programs of other files entered so far (their warnings given)
 
   MachineProfile profile_;  // G10 L52 may change its parameters

@@ -57,6 +57,7 @@ Value Interpreter::read_var(int n, std::uint16_t column) {
 void Interpreter::write_var(int n, Value v, std::uint16_t column) {
   if (!v.vacant && (!std::isfinite(v.v) || std::fabs(v.v) > 1e47))
     alarm("PS0111", "value out of the range of a macro variable (about 1e47)", column);
+  if (observer_) [[unlikely]] return observed_write(n, v, column);
   if (n >= 1 && n <= 33) {
     locals_[frames_.empty() ? 0 : frames_.back().level][n - 1] = v;
     return;

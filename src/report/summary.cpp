@@ -87,7 +87,7 @@ std::string summary_text(const RunReport& r) {
   return out;
 }
 
-static nlohmann::json diagnostic_json(const nc::Diagnostic& d) {
+nlohmann::json diagnostic_json(const nc::Diagnostic& d) {
   nlohmann::json j;
   j["severity"] = d.severity == nc::Severity::error ? "error" : d.severity == nc::Severity::warning ? "warning" : "note";
   j["code"] = d.code;
@@ -102,7 +102,7 @@ static nlohmann::json diagnostic_json(const nc::Diagnostic& d) {
   return j;
 }
 
-std::string summary_json(const RunReport& r) {
+nlohmann::json summary_object(const RunReport& r) {
   const auto& res = *r.result;
   const auto& st = res.stats;
   const auto& prof = *r.profile;
@@ -139,7 +139,12 @@ std::string summary_json(const RunReport& r) {
   j["unchecked_lines"] = r.unchecked_lines;  // past those: lines no jump can reach, not parsed
   j["alarm"] = res.alarm ? diagnostic_json(*res.alarm) : nlohmann::json(nullptr);
   j["ok"] = res.ok();
-  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // a name that is not UTF-8 gets U+FFFD
+  return j;
+}
+
+std::string summary_json(const RunReport& r) {
+  // a name that is not UTF-8 gets U+FFFD
+  return summary_object(r).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace ncurve::report

@@ -1,5 +1,6 @@
 // The run summary: what was executed, how far the tool went, what went wrong; as text or JSON.
 #pragma once
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,8 @@ struct RunReport {
 
 std::string summary_text(const RunReport& r);
 std::string summary_json(const RunReport& r);
+// The same as a JSON object (`ncurve serve` puts it in its answer), and one diagnostic's object.
+nlohmann::json summary_object(const RunReport& r);
+nlohmann::json diagnostic_json(const nc::Diagnostic& d);
 
 }  // namespace ncurve::report

@@ -1,0 +1,79 @@
+// The interpreter's side of an ExecutionObserver: what it is told, gathered only when there is one.
+#include "machine/interpreter.hpp"
+
+namespace ncurve::machine {
+
+using nc::Value;
+
+namespace {
+// Clears a pointer for a scope: the write below is the interpreter's own, not observed twice.
+struct Unobserved {
+  ExecutionObserver*& slot;
+  ExecutionObserver* kept;
+  explicit Unobserved(ExecutionObserver*& s) : slot(s), kept(s) { slot = nullptr; }
+  ~Unobserved() { slot = kept; }
+};
+}  // namespace
+
+std::uint64_t Interpreter::moves_delivered() const {
+  std::uint64_t n = 0;
+  for (std::uint64_t k : result_.stats.by_kind) n += k;
+  return n;
+}
+
+ModalState Interpreter::modal_state() {
+  ModalState s;
+  for (std::size_t i = 0; i < kModalVariables.size(); ++i) s[i] = read_system(kModalVariables[i], 0);
+  return s;
+}
+
+void Interpreter::observe_block(const nc::Block& b) { observer_->block(*prog_, b, moves_delivered(), modal_state()); }
+
+void Interpreter::observe_call(const Frame& f) {
+  CallFrame c;
+  c.kind = f.kind == Frame::main ? CallFrame::main : f.kind == Frame::subprogram ? CallFrame::subprogram : CallFrame::macro;
+  c.program = f.prog ? f.prog->number : -1;
+  c.level = f.level;
+  c.custom = f.custom;
+  c.modal = f.modal;
+  if (f.caller && f.call_block) {
+    c.call_file = f.caller->file.get();
+    c.call_line = f.call_block->line;
+  }
+  observer_->entered(c);
+  if (f.kind != Frame::macro) return;
+  for (int i = 0; i < 33; ++i)
+    if (!f.initial[i].vacant) observer_->variable(i + 1, f.level, Value{}, f.initial[i]);
+}
+
+void Interpreter::observe_repeat(const Frame& f) {
+  if (f.kind != Frame::macro) return;
+  const auto& now = locals_[f.level];
+  for (int i = 0; i < 33; ++i) {
+    const Value& a = now[i];
+    const Value& b = f.initial[i];
+    if (a.vacant != b.vacant || (!a.vacant && a.v != b.v)) observer_->variable(i + 1, f.level, a, b);
+  }
+}
+
+void Interpreter::observed_write(int n, Value v, std::uint16_t column) {
+  const bool local = n >= 1 && n <= 33;
+  const std::int32_t level = local ? (frames_.empty() ? 0 : frames_.back().level) : -1;
+  Value old;
+  if (local || (n >= 100 && n <= common_high_) || (n >= 500 && n <= 999)) {
+    old = read_var(n, column);
+  } else if (n != 0) {
+    try {  // a system variable that cannot be read (write-only) was vacant to the program
+      old = read_system(n, column);
+    } catch (const nc::Alarm&) {
+    }
+  }
+  ExecutionObserver* observer = observer_;
+  {
+    Unobserved off(observer_);
+    write_var(n, v, column);
+  }
+  observer->variable(n, level, old, v);
+}
+
+}  // namespace ncurve::machine

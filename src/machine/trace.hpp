@@ -1,0 +1,90 @@
+// The execution trace of a run for the time-travel debugger: what each executed block changed
+// (variables with their old and new values, calls and returns, the modal state, the moves it
+// delivered), so that any instant can be rebuilt without running the program again.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "machine/observer.hpp"
+
+namespace ncurve::machine {
+
+class ExecutionTrace final : public ExecutionObserver {
+public:
+  // The most records kept (executed blocks, variable writes, level entries and modal changes
+  // together, about 32 bytes each): past it the trace stops, whole blocks only, and says so.
+  static constexpr std::size_t kDefaultLimit = 2'000'000;
+  static constexpr std::size_t kMaxLimit = 20'000'000;
+  explicit ExecutionTrace(std::size_t limit = kDefaultLimit) : limit_(limit) {}
+
+  struct Block {
+    std::uint32_t file = 0;   // index in files()
+    std::uint32_t line = 0;
+    std::uint32_t stack = 0;  // index in stacks(): the call stack the block runs in
+    std::uint64_t first_move = 0;  // moves delivered before it
+  };
+  // A variable write; values are NaN when vacant (a macro variable is never NaN).
+  struct Write {
+    std::int64_t block = -1;  // the block that wrote it; -1: before the first (--set presets)
+    std::int32_t number = 0;
+    std::int32_t level = -1;  // local level for #1..#33, else -1
+    double old_value = 0, new_value = 0;
+  };
+  // A macro call made this local level anew (all 33 vacant) before the block's writes.
+  struct Entry {
+    std::int64_t block = -1;
+    std::int32_t level = 0;
+  };
+  // A modal variable (kModalVariables) took this value in force from `block` on.
+  struct ModalChange {
+    std::int64_t block = 0;  // == blocks().size(): the state after the last block
+    std::int32_t variable = 0;
+    double value = 0;        // NaN: vacant
+  };
+
+  static double encode(nc::Value v) { return v.vacant ? std::numeric_limits<double>::quiet_NaN() : v.v; }
+
+  const std::vector<const nc::SourceFile*>& files() const { return files_; }
+  const std::vector<std::vector<CallFrame>>& stacks() const { return stacks_; }
+  const std::vector<Block>& blocks() const { return blocks_; }
+  const std::vector<Write>& writes() const { return writes_; }
+  const std::vector<Entry>& entries() const { return entries_; }
+  const ModalState& initial_modal() const { return initial_modal_; }
+  const std::vector<ModalChange>& modal_changes() const { return modal_; }
+  std::uint64_t total_moves() const { return total_moves_; }
+  std::size_t limit() const { return limit_; }
+  // Whether every executed block is in the trace; if not, why.
+  bool complete() const { return complete_; }
+  std::string limit_message() const;
+
+  void block(const nc::Program& program, const nc::Block& block, std::uint64_t moves, const ModalState& modal) override;
+  void entered(const CallFrame& frame) override;
+  void left() override;
+  void variable(int number, std::int32_t level, nc::Value old, nc::Value now) override;
+  void finished(std::uint64_t moves, const ModalState& modal) override;
+
+private:
+  bool room(std::size_t more, bool mid_block);  // false past the limit (the trace then ends with whole blocks)
+  void note_modal(std::int64_t block, const ModalState& modal);
+  std::size_t records() const { return blocks_.size() + writes_.size() + entries_.size() + modal_.size(); }
+
+  std::size_t limit_;
+  bool complete_ = true;
+  std::vector<const nc::SourceFile*> files_;
+  std::vector<std::vector<CallFrame>> stacks_;
+  std::vector<CallFrame> stack_;  // now
+  bool stack_changed_ = true;
+  std::vector<Block> blocks_;
+  std::vector<Write> writes_;
+  std::vector<Entry> entries_;
+  std::vector<ModalChange> modal_;
+  ModalState initial_modal_{};
+  ModalState modal_now_{};
+  std::uint64_t total_moves_ = 0;
+  std::uint64_t executed_ = 0;  // blocks run, recorded or not
+};
+
+}  // namespace ncurve::machine

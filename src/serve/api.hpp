@@ -1,0 +1,47 @@
+// The JSON API of `ncurve serve` (docs/serve.md): each endpoint a function from the request's
+// body to the answer, apart from HTTP so that tests and the server call the same code.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "machine/interpreter.hpp"
+
+namespace ncurve::serve {
+
+struct ServeConfig {
+  std::string machine;              // the profile of a request without "machine" (a file or shipped name)
+  std::vector<std::string> libs;    // --lib folders, read for each run
+  std::vector<std::string> files;   // FILE arguments, offered by GET /api/files
+  std::uint64_t max_steps = machine::RunOptions{}.max_steps;  // the most a request may ask for
+  double max_seconds = machine::RunOptions{}.max_seconds;
+  std::size_t max_body = 64u << 20;     // bytes of a request body (413 past it)
+  std::size_t max_moves = 5'000'000;    // moves put in one answer
+};
+
+// A request the API refuses: the HTTP status and what is wrong.
+struct ApiError : std::runtime_error {
+  ApiError(int status, const std::string& message) : std::runtime_error(message), status(status) {}
+  int status;
+};
+
+struct Answer {
+  int status = 200;
+  std::string body;
+  std::string content_type = "application/json";
+};
+
+// {"error": message, "status": status}
+Answer error_answer(int status, const std::string& message);
+
+Answer api_run(const ServeConfig& config, const std::string& body);
+Answer api_analyze(const ServeConfig& config, const std::string& body);
+Answer api_gen(const ServeConfig& config, const std::string& body);
+Answer api_profiles(const ServeConfig& config);
+Answer api_files(const ServeConfig& config);
+Answer api_file(const ServeConfig& config, const std::string& name);
+// The page at GET / (a placeholder until the workbench page ships).
+Answer page();
+
+}  // namespace ncurve::serve

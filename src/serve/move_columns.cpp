@@ -1,0 +1,114 @@
+#include "serve/move_columns.hpp"
+
+#include <numbers>
+
+namespace ncurve::serve {
+
+using machine::Move;
+using machine::MoveKind;
+
+MoveColumns::MoveColumns(const machine::MachineProfile& profile, FileTable& files, std::size_t limit)
+    : frame_(profile), files_(files), limit_(limit) {
+  for (char a : std::string_view("ABC"))
+    if (profile.axes.find(a) != std::string::npos) rotary_.push_back(machine::axis_index(a));
+  abc_.resize(rotary_.size());
+  sabc_.resize(rotary_.size());
+}
+
+void MoveColumns::on_move(const Move& m) {
+  if (kind_.size() >= limit_) {
+    ++dropped_;
+    return;
+  }
+  const auto index = static_cast<std::uint32_t>(kind_.size());
+  const bool placed = m.is_motion() || m.kind == MoveKind::dwell;
+  const machine::AxisVector& end = m.end;  // an event's: where the program has the tool
+  if (placed && (index == 0 || m.start != last_end_)) {
+    start_at_.push_back(index);
+    sx_.push_back(frame_.x(m.start[0]));
+    sy_.push_back(m.start[1]);
+    sz_.push_back(m.start[2]);
+    for (std::size_t r = 0; r < rotary_.size(); ++r) sabc_[r].push_back(m.start[rotary_[r]]);
+  }
+  kind_.push_back(static_cast<std::uint8_t>(m.kind));
+  file_.push_back(files_.index(m.file));
+  line_.push_back(m.line);
+  x_.push_back(frame_.x(end[0]));
+  y_.push_back(end[1]);
+  z_.push_back(end[2]);
+  for (std::size_t r = 0; r < rotary_.size(); ++r) abc_[r].push_back(end[rotary_[r]]);
+  f_.push_back(m.kind == MoveKind::line || m.kind == MoveKind::arc ? m.feed : 0.0);
+  if (m.kind == MoveKind::arc) {
+    arc_at_.push_back(index);
+    cx_.push_back(frame_.x(m.center[0]));
+    cy_.push_back(m.center[1]);
+    cz_.push_back(m.center[2]);
+    sweep_.push_back(m.sweep * 180 / std::numbers::pi);
+    plane_.push_back(m.plane);
+    cw_.push_back(m.clockwise ? 1 : 0);
+  }
+  if (!placed) {
+    code_at_.push_back(index);
+    code_.push_back(m.code);
+  }
+  if (placed) last_end_ = m.end;
+}
+
+void MoveColumns::write_json(fmt::memory_buffer& b) const {
+  auto it = fmt::appender(b);
+  auto num = [&](double v) { put_number(b, v); };
+  auto whole = [&](auto v) { fmt::format_to(it, "{}", static_cast<long long>(v)); };
+  fmt::format_to(it, "{{\"count\":{},\"complete\":{},", kind_.size(), complete() ? "true" : "false");
+  if (dropped_)
+    fmt::format_to(it, "\"message\":{},", json_string(fmt::format("the answer holds the first {} moves of {} (max_moves)",
+                                                                  kind_.size(), kind_.size() + dropped_)));
+  b.append(std::string_view("\"kinds\":["));
+  for (int k = 0; k < 10; ++k) fmt::format_to(it, "{}\"{}\"", k ? "," : "", machine::to_string(static_cast<MoveKind>(k)));
+  b.append(std::string_view("],"));
+  put_array(b, "kind", kind_, whole);
+  b.push_back(',');
+  put_array(b, "file", file_, whole);
+  b.push_back(',');
+  put_array(b, "line", line_, whole);
+  const char* names[] = {"a", "b", "c"};
+  auto axes = [&](const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
+                  const std::vector<std::vector<double>>& abc) {
+    b.push_back(',');
+    put_array(b, "x", x, num);
+    b.push_back(',');
+    put_array(b, "y", y, num);
+    b.push_back(',');
+    put_array(b, "z", z, num);
+    for (std::size_t r = 0; r < rotary_.size(); ++r) {
+      b.push_back(',');
+      put_array(b, names[rotary_[r] - 3], abc[r], num);
+    }
+  };
+  axes(x_, y_, z_, abc_);
+  b.push_back(',');
+  put_array(b, "f", f_, num);
+  b.append(std::string_view(",\"starts\":{"));
+  put_array(b, "index", start_at_, whole);
+  axes(sx_, sy_, sz_, sabc_);
+  b.append(std::string_view("},\"arcs\":{"));
+  put_array(b, "index", arc_at_, whole);
+  b.push_back(',');
+  put_array(b, "cx", cx_, num);
+  b.push_back(',');
+  put_array(b, "cy", cy_, num);
+  b.push_back(',');
+  put_array(b, "cz", cz_, num);
+  b.push_back(',');
+  put_array(b, "plane", plane_, whole);
+  b.push_back(',');
+  put_array(b, "cw", cw_, whole);
+  b.push_back(',');
+  put_array(b, "sweep_deg", sweep_, num);
+  b.append(std::string_view("},\"codes\":{"));
+  put_array(b, "index", code_at_, whole);
+  b.push_back(',');
+  put_array(b, "code", code_, whole);
+  b.append(std::string_view("}}"));
+}
+
+}  // namespace ncurve::serve

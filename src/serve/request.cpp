@@ -1,0 +1,114 @@
+#include "serve/request.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/shipped.hpp"
+
+namespace ncurve::serve {
+
+using nlohmann::json;
+
+json parse_body(const std::string& body) {
+  json j;
+  try {
+    j = json::parse(body);
+  } catch (const json::parse_error& e) {
+    throw ApiError(400, fmt::format("the request body is not JSON: {}", e.what()));
+  }
+  if (!j.is_object()) throw ApiError(400, "the request body must be a JSON object ({\"program\": ...})");
+  return j;
+}
+
+void check_keys(const json& j, std::initializer_list<const char*> known, const char* endpoint) {
+  for (const auto& [key, value] : j.items())
+    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; }))
+      throw ApiError(400, fmt::format("{} has no key \"{}\" (its keys: {})", endpoint, key, fmt::join(known, ", ")));
+}
+
+std::optional<std::string> get_string(const json& j, const char* key, bool required) {
+  auto it = j.find(key);
+  if (it == j.end() || it->is_null()) {
+    if (required) throw ApiError(400, fmt::format("the request needs \"{}\" (a string)", key));
+    return std::nullopt;
+  }
+  if (!it->is_string()) throw ApiError(400, fmt::format("\"{}\" must be a string", key));
+  return it->get<std::string>();
+}
+
+std::optional<double> get_number(const json& j, const char* key) {
+  auto it = j.find(key);
+  if (it == j.end() || it->is_null()) return std::nullopt;
+  if (!it->is_number()) throw ApiError(400, fmt::format("\"{}\" must be a number", key));
+  return it->get<double>();
+}
+
+bool get_bool(const json& j, const char* key, bool otherwise) {
+  auto it = j.find(key);
+  if (it == j.end() || it->is_null()) return otherwise;
+  if (!it->is_boolean()) throw ApiError(400, fmt::format("\"{}\" must be true or false", key));
+  return it->get<bool>();
+}
+
+void choose_profile(const ServeConfig& config, const json& j, app::RunInputs& in) {
+  const std::optional<std::string> machine = get_string(j, "machine");
+  if (!machine) {
+    in.machine = config.machine;
+    return;
+  }
+  if (machine->find_first_of("\n=") != std::string::npos) {  // TOML text
+    in.machine = "<request>";
+    in.machine_text = *machine;
+    return;
+  }
+  std::string name = *machine;
+  if (name.size() > 5 && name.ends_with(".toml")) name.resize(name.size() - 5);
+  const std::vector<std::string> shipped = app::shipped_profiles();
+  if (name.find('/') != std::string::npos || std::find(shipped.begin(), shipped.end(), name) == shipped.end())
+    throw ApiError(400, fmt::format("unknown profile \"{}\": \"machine\" is a shipped profile ({}) or a profile's TOML "
+                                    "text",
+                                    *machine, shipped.empty() ? "none found" : fmt::format("{}", fmt::join(shipped, ", "))));
+  in.machine = app::find_profile(name);
+}
+
+app::RunInputs run_inputs(const ServeConfig& config, const json& j) {
+  app::RunInputs in;
+  in.text = get_string(j, "program", true);
+  in.program = get_string(j, "name").value_or("program.nc");
+  if (in.program.empty() || in.program == "-") throw ApiError(400, "\"name\" names the program's file, e.g. prog.nc");
+  choose_profile(config, j, in);
+  in.libs = config.libs;
+  in.max_steps = config.max_steps;
+  in.max_seconds = config.max_seconds;
+  if (auto steps = get_number(j, "max_steps")) {
+    if (!(*steps >= 1) || *steps > static_cast<double>(config.max_steps))
+      throw ApiError(400, fmt::format("\"max_steps\" is 1 to {} (the server's --max-steps)", config.max_steps));
+    in.max_steps = static_cast<std::uint64_t>(*steps);
+  }
+  if (auto seconds = get_number(j, "max_seconds")) {
+    const bool over = config.max_seconds > 0 && (*seconds == 0 || *seconds > config.max_seconds);
+    if (!(*seconds >= 0) || over)
+      throw ApiError(400, fmt::format("\"max_seconds\" is at most {} (the server's --max-seconds)", config.max_seconds));
+    in.max_seconds = *seconds;
+  }
+  in.nose_centre = get_bool(j, "nose_centre", false);
+  auto pairs = [&](const char* key, auto add) {
+    auto it = j.find(key);
+    if (it == j.end() || it->is_null()) return;
+    if (!it->is_object()) throw ApiError(400, fmt::format("\"{}\" must be an object, e.g. {{\"#100\": 5}}", key));
+    for (const auto& [k, v] : it->items()) {
+      if (!v.is_number()) throw ApiError(400, fmt::format("\"{}\": the value of \"{}\" must be a number", key, k));
+      add(k, v.template get<double>());
+    }
+  };
+  pairs("set", [&](const std::string& k, double v) {
+    in.sets.push_back(fmt::format("{}{}={}", k.starts_with('#') ? "" : "#", k, v));
+  });
+  pairs("param", [&](const std::string& k, double v) { in.params.push_back(fmt::format("{}={}", k, v)); });
+  return in;
+}
+
+}  // namespace ncurve::serve

@@ -1,0 +1,110 @@
+// POST /api/run: the run's summary, its moves as columns, its diagnostics and, asked for, its
+// execution trace.
+#include <nlohmann/json.hpp>
+
+#include <new>
+#include <optional>
+
+#include "report/summary.hpp"
+#include "serve/api.hpp"
+#include "serve/move_columns.hpp"
+#include "serve/request.hpp"
+#include "serve/trace_json.hpp"
+
+namespace ncurve::serve {
+
+using nlohmann::json;
+
+std::string json_string(const std::string& s) {
+  return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+Answer error_answer(int status, const std::string& message) {
+  json j{{"error", message}, {"status", status}};
+  return Answer{status, j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n"};
+}
+
+namespace {
+// Everything the editor marks: the syntax found on reading (but the one the run alarmed on), the
+// warnings, the alarm.
+json diagnostics(const report::RunReport& rep) {
+  const machine::RunResult& res = *rep.result;
+  json out = json::array();
+  for (const auto& d : rep.text_problems)
+    if (!res.alarm || res.alarm->span.line != d.span.line || res.alarm->span.file != d.span.file ||
+        res.alarm->code != d.code)
+      out.push_back(report::diagnostic_json(d));
+  for (const auto& w : res.warnings) out.push_back(report::diagnostic_json(w));
+  if (res.alarm) out.push_back(report::diagnostic_json(*res.alarm));
+  return out;
+}
+}  // namespace
+
+Answer api_run(const ServeConfig& config, const std::string& body) {
+  const json j = parse_body(body);
+  check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "moves",
+                 "trace", "trace_limit"},
+             "POST /api/run");
+  const app::RunInputs in = run_inputs(config, j);
+  const bool want_moves = get_bool(j, "moves", true);
+  const bool want_trace = get_bool(j, "trace", false);
+  std::size_t trace_limit = machine::ExecutionTrace::kDefaultLimit;
+  if (auto n = get_number(j, "trace_limit")) {
+    if (!(*n >= 1 && *n <= static_cast<double>(machine::ExecutionTrace::kMaxLimit)))
+      throw ApiError(400, fmt::format("\"trace_limit\" is 1 to {}", machine::ExecutionTrace::kMaxLimit));
+    trace_limit = static_cast<std::size_t>(*n);
+  }
+  app::RunSetup setup;
+  try {
+    setup = app::prepare_run(in);
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
+  } catch (const std::exception& e) {
+    throw ApiError(400, e.what());
+  }
+
+  FileTable files;
+  std::optional<MoveColumns> moves;
+  machine::NullSink no_moves;
+  if (want_moves) moves.emplace(setup.profile, files, config.max_moves);
+  std::optional<machine::ExecutionTrace> trace;
+  if (want_trace) trace.emplace(trace_limit);
+  machine::Interpreter interp(setup.profile, *setup.lib, setup.options);
+  if (trace) interp.observe(&*trace);
+  const machine::RunResult result = interp.run(moves ? static_cast<machine::MoveSink&>(*moves) : no_moves);
+
+  report::RunReport rep;
+  rep.source = in.program;
+  rep.profile = &setup.profile;
+  rep.result = &result;
+  rep.stats = report::source_stats(*setup.lib, setup.lib->main()->file.get());
+  rep.text_problems = std::move(setup.problems);
+  rep.text_problems_left_out = setup.problems_left_out;
+  rep.unchecked_lines = setup.unchecked_lines;
+
+  fmt::memory_buffer b;
+  auto it = fmt::appender(b);
+  const bool runaway = result.alarm && result.alarm->code == "NC9000";
+  b.push_back('{');
+  if (runaway) fmt::format_to(it, "\"error\":{},\"status\":422,", json_string(result.alarm->message));
+  fmt::format_to(it, "\"summary\":{},\"diagnostics\":{}",
+                 report::summary_object(rep).dump(-1, ' ', false, json::error_handler_t::replace),
+                 diagnostics(rep).dump(-1, ' ', false, json::error_handler_t::replace));
+  if (moves) {
+    b.append(std::string_view(",\"moves\":"));
+    moves->write_json(b);
+  }
+  if (trace) {
+    b.append(std::string_view(",\"trace\":"));
+    write_trace_json(b, *trace, files);
+  }
+  b.append(std::string_view(",\"files\":["));
+  for (std::size_t i = 0; i < files.names().size(); ++i) {
+    if (i) b.push_back(',');
+    b.append(json_string(files.names()[i]));
+  }
+  b.append(std::string_view("]}\n"));
+  return Answer{runaway ? 422 : 200, std::string(b.data(), b.size())};
+}
+
+}  // namespace ncurve::serve

@@ -1,0 +1,92 @@
+#include "serve/server.hpp"
+
+#include <fmt/format.h>
+#include <httplib.h>
+
+#include <new>
+
+namespace ncurve::serve {
+
+namespace {
+
+void send(httplib::Response& res, const Answer& a) {
+  res.status = a.status;
+  res.set_content(a.body, a.content_type.c_str());
+}
+
+// The answer of an endpoint, or the JSON error of whatever stopped it.
+template <class F>
+void answer(httplib::Response& res, F endpoint) {
+  try {
+    send(res, endpoint());
+  } catch (const ApiError& e) {
+    send(res, error_answer(e.status, e.what()));
+  } catch (const std::bad_alloc&) {
+    send(res, error_answer(507, "out of memory: the request needs more memory than the machine has; try a smaller one"));
+  } catch (const std::exception& e) {
+    send(res, error_answer(500, fmt::format("internal error: {}", e.what())));
+  }
+}
+
+const char* reason(int status) {
+  switch (status) {
+    case 400: return "bad request";
+    case 404: return "no such page or endpoint (the API: POST /api/run, /api/analyze, /api/gen; GET /api/profiles, "
+                     "/api/files)";
+    case 405: return "method not allowed";
+    case 413: return "the request body is too large";
+    default: return "the request failed";
+  }
+}
+
+}  // namespace
+
+Server::Server(ServeConfig config) : config_(std::move(config)), http_(std::make_unique<httplib::Server>()) {
+  httplib::Server& s = *http_;
+  const ServeConfig& c = config_;
+  s.set_payload_max_length(c.max_body);
+  s.Get("/", [](const httplib::Request&, httplib::Response& res) { answer(res, [] { return page(); }); });
+  s.Post("/api/run", [&c](const httplib::Request& req, httplib::Response& res) {
+    answer(res, [&] { return api_run(c, req.body); });
+  });
+  s.Post("/api/analyze", [&c](const httplib::Request& req, httplib::Response& res) {
+    answer(res, [&] { return api_analyze(c, req.body); });
+  });
+  s.Post("/api/gen", [&c](const httplib::Request& req, httplib::Response& res) {
+    answer(res, [&] { return api_gen(c, req.body); });
+  });
+  s.Get("/api/profiles", [&c](const httplib::Request&, httplib::Response& res) {
+    answer(res, [&] { return api_profiles(c); });
+  });
+  s.Get("/api/files", [&c](const httplib::Request&, httplib::Response& res) {
+    answer(res, [&] { return api_files(c); });
+  });
+  s.Get(R"(/api/files/([^/]+))", [&c](const httplib::Request& req, httplib::Response& res) {
+    answer(res, [&] { return api_file(c, req.matches[1]); });
+  });
+  // httplib's own refusals (no route, a body over the limit) get a JSON body too
+  s.set_error_handler([&c](const httplib::Request&, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    std::string message = reason(res.status);
+    if (res.status == 413) message = fmt::format("{} (at most {} bytes)", message, c.max_body);
+    send(res, error_answer(res.status, message));
+  });
+}
+
+Server::~Server() = default;
+
+int Server::bind(const std::string& host, int port) {
+  const int bound = port == 0 ? http_->bind_to_any_port(host) : (http_->bind_to_port(host, port) ? port : -1);
+  if (bound <= 0)
+    throw std::runtime_error(fmt::format("cannot listen on {}:{} (in use, or not an address of this machine)", host,
+                                         port));
+  return bound;
+}
+
+bool Server::listen() { return http_->listen_after_bind(); }
+
+void Server::stop() { http_->stop(); }
+
+bool Server::running() const { return http_->is_running(); }
+
+}  // namespace ncurve::serve

@@ -1,0 +1,151 @@
+// POST /api/gen and POST /api/analyze: `ncurve gen --json` and `ncurve analyze --json` over HTTP.
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <new>
+#include <optional>
+
+#include "app/analyze_command.hpp"
+#include "app/gen_command.hpp"
+#include "base/bounds.hpp"
+#include "motion/planner.hpp"
+#include "motion/servo.hpp"
+#include "report/summary.hpp"
+#include "serve/api.hpp"
+#include "serve/request.hpp"
+
+namespace ncurve::serve {
+
+using nlohmann::json;
+
+namespace {
+constexpr double kMaxServoTicks = 50e6;  // as analyze --max-ticks' default
+constexpr long kMaxGenMoves = 5'000'000;
+
+std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n"; }
+}  // namespace
+
+Answer api_gen(const ServeConfig& config, const std::string& body) {
+  const json j = parse_body(body);
+  check_keys(j, {"curve", "params", "x", "y", "z", "t", "from", "to", "tol", "form", "lines", "machine", "feed", "depth",
+                 "step_down", "clearance", "program_number", "tool_radius", "tip", "side", "cycle_program",
+                 "macro_only", "tool", "spindle", "spindle_ccw", "css", "max_rpm", "coolant", "inch", "max_moves"},
+             "POST /api/gen");
+  app::GenArgs a;
+  a.curve = get_string(j, "curve", true).value();
+  a.x = get_string(j, "x").value_or("");
+  a.y = get_string(j, "y").value_or("");
+  a.z = get_string(j, "z").value_or("");
+  a.t_range = get_string(j, "t").value_or("");
+  a.from = get_number(j, "from");
+  a.to = get_number(j, "to");
+  a.form = get_string(j, "form").value_or(a.form);
+  a.lines = get_string(j, "lines").value_or(a.lines);
+  a.side = get_string(j, "side").value_or(a.side);
+  auto number = [&](const char* key, auto& field) {
+    if (auto v = get_number(j, key)) field = static_cast<std::remove_reference_t<decltype(field)>>(*v);
+  };
+  number("tol", a.tol);
+  number("feed", a.feed);
+  number("depth", a.depth);
+  number("step_down", a.step_down);
+  number("clearance", a.clearance);
+  number("program_number", a.program_number);
+  number("tool_radius", a.tool_radius);
+  number("tip", a.tip);
+  number("cycle_program", a.cycle_program);
+  number("tool", a.tool);
+  number("spindle", a.spindle);
+  number("css", a.css);
+  number("max_rpm", a.max_rpm);
+  number("max_moves", a.max_moves);
+  if (a.max_moves < 1 || a.max_moves > kMaxGenMoves)
+    throw ApiError(400, fmt::format("\"max_moves\" is 1 to {}", kMaxGenMoves));
+  a.macro_only = get_bool(j, "macro_only", false);
+  a.spindle_ccw = get_bool(j, "spindle_ccw", false);
+  a.coolant = get_bool(j, "coolant", false);
+  a.inch = get_bool(j, "inch", false);
+  if (j.contains("machine")) {
+    app::RunInputs in;
+    choose_profile(config, j, in);
+    if (in.machine_text) throw ApiError(400, "POST /api/gen takes a shipped profile by name in \"machine\"");
+    a.machine = in.machine;
+  } else {
+    a.machine = config.machine;
+  }
+  std::vector<std::string> extras;  // the curve's parameters, as the command line's --NAME VALUE
+  if (auto it = j.find("params"); it != j.end() && !it->is_null()) {
+    if (!it->is_object()) throw ApiError(400, "\"params\" must be an object, e.g. {\"a\": 5}");
+    for (const auto& [k, v] : it->items()) {
+      if (!v.is_number()) throw ApiError(400, fmt::format("\"params\": the value of \"{}\" must be a number", k));
+      extras.push_back("--" + k);
+      extras.push_back(fmt::format("{}", v.get<double>()));
+    }
+  }
+  std::optional<app::GenJob> job;
+  try {
+    job.emplace(app::gen_job(a, extras, "POST /api/gen", {}));
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
+  } catch (const std::exception& e) {
+    throw ApiError(400, e.what());
+  }
+  gen::Result r;
+  try {
+    r = gen::generate(job->curve, job->options);
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
+  } catch (const std::exception& e) {
+    throw ApiError(422, e.what());
+  }
+  const std::string& program = a.macro_only ? r.macro : r.text;
+  json out = app::gen_json(*job, r, &program);
+  return Answer{200, dump(out)};
+}
+
+Answer api_analyze(const ServeConfig& config, const std::string& body) {
+  const json j = parse_body(body);
+  check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "servo"},
+             "POST /api/analyze");
+  const app::RunInputs in = run_inputs(config, j);
+  const bool servo = get_bool(j, "servo", false);
+  app::RunSetup setup;
+  try {
+    setup = app::prepare_run(in);
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
+  } catch (const std::exception& e) {
+    throw ApiError(400, e.what());
+  }
+  const machine::MachineProfile& profile = setup.profile;
+  std::optional<motion::ServoSim> sim;
+  if (servo) sim.emplace(profile);
+  motion::Planner planner(profile, [&](const motion::BlockTime& b) {
+    if (!sim) return;
+    if ((b.start + b.seconds) / profile.servo.period > kMaxServoTicks)
+      throw base::BoundExceeded(fmt::format("\"servo\": the program runs longer than {:.3g} servo periods ({:.4g} s of "
+                                            "machine time); ncurve analyze --servo --max-ticks runs it longer",
+                                            kMaxServoTicks, kMaxServoTicks * profile.servo.period));
+    sim->on_block(b);
+  });
+  machine::Interpreter interp(profile, *setup.lib, setup.options);
+  machine::RunResult result;
+  try {
+    result = interp.run(planner);
+    planner.finish();
+  } catch (const base::BoundExceeded& e) {
+    throw ApiError(422, e.what());
+  }
+  if (sim) app::settle(*sim, profile);
+  json out = app::analyze_json(in.program, profile, planner.totals(), sim ? &*sim : nullptr);
+  out["ok"] = result.ok();
+  out["alarm"] = result.alarm ? report::diagnostic_json(*result.alarm) : json(nullptr);
+  const bool runaway = result.alarm && result.alarm->code == "NC9000";
+  if (runaway) {
+    out["error"] = result.alarm->message;
+    out["status"] = 422;
+  }
+  return Answer{runaway ? 422 : 200, dump(out)};
+}
+
+}  // namespace ncurve::serve

@@ -1,0 +1,219 @@
+// ncurve serve's HTTP API, through real requests to a server on a free loopback port.
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "serve/server.hpp"
+
+namespace ncurve::serve {
+namespace {
+
+using nlohmann::json;
+
+class ServerTest : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() {
+    ServeConfig c;
+    c.max_body = 16u << 20;  // 16 MB: a 10 MB program passes, 20 MB does not
+    c.max_steps = 10'000'000;
+    c.files = {std::string(NCURVE_SOURCE_DIR) + "/examples/spiral.nc"};
+    server_ = new Server(c);
+    port_ = server_->bind("127.0.0.1", 0);
+    thread_ = new std::thread([] { server_->listen(); });
+    for (int i = 0; i < 500 && !server_->running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  static void TearDownTestSuite() {
+    server_->stop();
+    thread_->join();
+    delete thread_;
+    delete server_;
+  }
+  static httplib::Client client() {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_read_timeout(120, 0);
+    c.set_write_timeout(120, 0);
+    return c;
+  }
+  static json post(const std::string& path, const std::string& body, int expected_status) {
+    auto c = client();
+    auto r = c.Post(path, body, "application/json");
+    EXPECT_TRUE(r) << "no answer to POST " << path << ": " << httplib::to_string(r.error());
+    if (!r) return {};
+    EXPECT_EQ(r->status, expected_status) << r->body.substr(0, 500);
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
+    return json::parse(r->body);
+  }
+  // the server still answers after whatever went before
+  static void still_serving() {
+    json j = post("/api/run", R"({"program": "G01 X1. F100.\nM30\n", "moves": false})", 200);
+    EXPECT_EQ(j["summary"]["ok"], true);
+  }
+  static Server* server_;
+  static std::thread* thread_;
+  static int port_;
+};
+Server* ServerTest::server_ = nullptr;
+std::thread* ServerTest::thread_ = nullptr;
+int ServerTest::port_ = 0;
+
+TEST_F(ServerTest, BadJsonIsAClearError) {
+  json j = post("/api/run", "{\"program\": \"M30\"", 400);
+  EXPECT_EQ(j["status"], 400);
+  EXPECT_NE(j["error"].get<std::string>().find("not JSON"), std::string::npos) << j;
+  j = post("/api/run", "[1, 2]", 400);
+  EXPECT_NE(j["error"].get<std::string>().find("object"), std::string::npos) << j;
+  j = post("/api/run", R"({"name": "a.nc"})", 400);  // no program
+  EXPECT_NE(j["error"].get<std::string>().find("\"program\""), std::string::npos) << j;
+  j = post("/api/run", R"({"program": "M30", "trace": "yes"})", 400);
+  EXPECT_NE(j["error"].get<std::string>().find("\"trace\""), std::string::npos) << j;
+  j = post("/api/run", R"({"program": "M30", "progam": 1})", 400);  // a misspelt key is not ignored
+  EXPECT_NE(j["error"].get<std::string>().find("progam"), std::string::npos) << j;
+  still_serving();
+}
+
+TEST_F(ServerTest, UnknownProfileIsAClearError) {
+  json j = post("/api/run", R"({"program": "M30\n", "machine": "fanuc-mil"})", 400);
+  EXPECT_NE(j["error"].get<std::string>().find("unknown profile \"fanuc-mil\""), std::string::npos) << j;
+  j = post("/api/run", R"({"program": "M30\n", "machine": "/etc/passwd"})", 400);  // no file paths
+  EXPECT_NE(j["error"].get<std::string>().find("unknown profile"), std::string::npos) << j;
+  j = post("/api/run", R"({"program": "M30\n", "machine": "name = \"x\"\nkind = \"drill\"\n"})", 400);
+  EXPECT_FALSE(j["error"].get<std::string>().empty());
+  still_serving();
+}
+
+TEST_F(ServerTest, ProfileAsTomlText) {
+  std::ifstream f(std::string(NCURVE_SOURCE_DIR) + "/profiles/fanuc-lathe.toml");
+  std::stringstream toml;
+  toml << f.rdbuf();
+  // lathe, diameter mode: X20. is a radius of 10, written back as a diameter
+  json req{{"program", "G00 X20. Z5.\nM30\n"}, {"machine", toml.str()}};
+  json j = post("/api/run", req.dump(), 200);
+  EXPECT_EQ(j["summary"]["machine"], "FANUC 0i-TF 2-axis lathe");
+  EXPECT_EQ(j["moves"]["x"][0], 20.0);
+  EXPECT_EQ(j["moves"]["z"][0], 5.0);
+}
+
+TEST_F(ServerTest, AlarmIsANormalAnswer) {
+  // line 3 divides by zero; the '/' is its 10th character
+  json j = post("/api/run", R"({"program": "G01 X1. F100.\n#1=5\n#2=[#1+1]/0\nG01 X2.\nM30\n", "name": "div.nc"})", 200);
+  const json& alarm = j["summary"]["alarm"];
+  EXPECT_EQ(j["summary"]["ok"], false);
+  EXPECT_EQ(alarm["code"], "PS0112");
+  EXPECT_EQ(alarm["file"], "div.nc");
+  EXPECT_EQ(alarm["line"], 3);
+  EXPECT_EQ(alarm["column"], 10);
+  EXPECT_EQ(j["diagnostics"].back()["code"], "PS0112");
+  EXPECT_EQ(j["moves"]["count"], 1);  // the move before it, not the one after
+  EXPECT_EQ(j["moves"]["x"][0], 1.0);
+}
+
+TEST_F(ServerTest, RunawayIsAnErrorStatusWithTheRun) {
+  json j = post("/api/run", R"({"program": "N1 G01 X1. F100.\nGOTO 1\n", "max_steps": 1000})", 422);
+  EXPECT_EQ(j["status"], 422);
+  EXPECT_NE(j["error"].get<std::string>().find("stopped after 1000 steps"), std::string::npos) << j["error"];
+  EXPECT_EQ(j["summary"]["alarm"]["code"], "NC9000");
+  j = post("/api/run", R"({"program": "M30\n", "max_steps": 1e12})", 400);  // over the server's
+  EXPECT_NE(j["error"].get<std::string>().find("max_steps"), std::string::npos);
+  still_serving();
+}
+
+TEST_F(ServerTest, TenMegabyteProgram) {
+  std::string program = "G90 G01 F1000.\n";
+  std::size_t lines = 0;
+  while (program.size() < 10'000'000) {
+    program += 'X';  // 10 to 16 bytes a line
+    program += std::to_string(lines % 1000);
+    program += ".5 Y1.25\n";
+    ++lines;
+  }
+  program += "M30\n";
+  json j = post("/api/run", json{{"program", program}, {"name", "big.nc"}}.dump(), 200);
+  EXPECT_EQ(j["summary"]["ok"], true);
+  EXPECT_EQ(j["summary"]["moves"]["line"], lines);
+  EXPECT_EQ(j["moves"]["count"], lines + 1);  // and M30
+  EXPECT_EQ(j["moves"]["x"][lines - 1], static_cast<double>((lines - 1) % 1000) + 0.5);
+}
+
+TEST_F(ServerTest, TooLargeBodyIsRefused) {
+  const std::string program(20u << 20, ' ');  // 20 MB over the 16 MB limit
+  auto c = client();
+  auto r = c.Post("/api/run", json{{"program", program}}.dump(), "application/json");
+  if (r) {  // (httplib may also close the connection before reading it all)
+    EXPECT_EQ(r->status, 413);
+    EXPECT_NE(json::parse(r->body)["error"].get<std::string>().find("too large"), std::string::npos) << r->body;
+  }
+  still_serving();
+}
+
+TEST_F(ServerTest, EightConcurrentClients) {
+  // each client's own #100 decides its path: the answers do not mix
+  std::vector<std::thread> threads;
+  std::vector<json> answers(8);
+  const std::string program =
+      "#1=0\nWHILE [#1 LT 20000] DO1\nG01 X#100 Y[#1*0.001] F1000.\n#1=#1+1\nEND1\nM30\n";
+  for (int i = 0; i < 8; ++i)
+    threads.emplace_back([&, i] {
+      auto c = client();
+      json req{{"program", program}, {"set", {{"#100", i + 1}}}, {"trace", i % 2 == 0}};
+      auto r = c.Post("/api/run", req.dump(), "application/json");
+      if (r && r->status == 200) answers[i] = json::parse(r->body);
+    });
+  for (auto& t : threads) t.join();
+  for (int i = 0; i < 8; ++i) {
+    ASSERT_FALSE(answers[i].is_null()) << "client " << i;
+    EXPECT_EQ(answers[i]["summary"]["moves"]["line"], 20000);
+    EXPECT_EQ(answers[i]["summary"]["extent"]["X"][1], i + 1.0);  // (from X0, where the tool starts)
+    EXPECT_EQ(answers[i]["moves"]["x"][19999], i + 1.0);
+    EXPECT_EQ(answers[i].contains("trace"), i % 2 == 0);
+  }
+}
+
+TEST_F(ServerTest, FilesProfilesAndPage) {
+  auto c = client();
+  auto r = c.Get("/api/files");
+  ASSERT_TRUE(r);
+  json files = json::parse(r->body)["files"];
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files[0]["name"], "spiral.nc");
+  r = c.Get("/api/files/spiral.nc");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("O1000"), std::string::npos);
+  r = c.Get("/api/files/passwd");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 404);
+  r = c.Get("/api/profiles");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_TRUE(json::parse(r->body)["profiles"].is_array());
+  r = c.Get("/");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("<html"), std::string::npos);
+  r = c.Get("/api/nothing");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 404);
+  EXPECT_TRUE(json::parse(r->body).contains("error"));
+}
+
+TEST_F(ServerTest, AnalyzeAndGen) {
+  // 100 mm at F600: 10 s at the programmed feed
+  json j = post("/api/analyze", R"({"program": "G01 X100. F600.\nM30\n"})", 200);
+  EXPECT_EQ(j["ok"], true);
+  EXPECT_DOUBLE_EQ(j["programmed_time_s"].get<double>(), 10.0);
+  EXPECT_GE(j["cycle_time_s"].get<double>(), 10.0);
+  j = post("/api/gen", R"({"curve": "ellipse", "params": {"a": 20, "b": 10}, "tol": 0.01})", 200);
+  EXPECT_EQ(j["within_tolerance"], true);
+  EXPECT_LE(j["max_deviation"].get<double>(), 0.01);
+  EXPECT_NE(j["program"].get<std::string>().find("M30"), std::string::npos);
+  j = post("/api/gen", R"({"curve": "elipse"})", 400);
+  EXPECT_NE(j["error"].get<std::string>().find("ellipse"), std::string::npos) << j;
+}
+
+}  // namespace
+}  // namespace ncurve::serve
