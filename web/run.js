@@ -57,7 +57,9 @@
   fact('path', `${fmt(summary.feed_length_mm / unit)} ${unitName} at feed, ${fmt(summary.rapid_length_mm / unit)} ${unitName} rapid`);
   fact('time', `${fmt(summary.time_at_programmed_feed_s, 1)} s at programmed feed`);
   if (summary.extent) {
-    const parts = Object.entries(summary.extent).map(([axis, r]) => {
+    const order = axis => 'XYZABC'.indexOf(axis);  // JSON objects come with their keys sorted
+    const axes = Object.entries(summary.extent).sort((a, b) => order(a[0]) - order(b[0]));
+    const parts = axes.map(([axis, r]) => {
       const rotary = 'ABC'.includes(axis), u = rotary ? 1 : unit;
       const name = data.lathe && axis === 'X' ? (data.diameter ? 'X⌀' : 'X') : axis;
       return `${name} ${fmt(r[0] / u)} … ${fmt(r[1] / u)}${rotary ? '°' : ''}`;

@@ -48,6 +48,13 @@ bool scaled_address(char c) {  // dimension words read in least input increments
   }
 }
 
+// Whether a block holds a literal M98.
+bool calls_subprogram(const nc::Program& p, const nc::Block& b) {
+  for (std::uint32_t w = b.words_begin; w < b.words_end; ++w)
+    if (p.words[w].letter == 'M' && p.words[w].literal && p.words[w].value == 98) return true;
+  return false;
+}
+
 // Whether a block holds a literal G code from g_lo to g_hi (x10).
 bool block_has_g(const nc::Program& p, const nc::Block& b, int g_lo, int g_hi) {
   for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
@@ -194,6 +201,7 @@ void Interpreter::warn_mixed_decimal_points(const nc::Program& program) {
         if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
         if (word.letter == 'Q' && profile_.lathe()) continue;  // and a start angle (G32, G92), a depth in increments (G76)
         if (word.letter == 'Q' && !profile_.lathe() && block_has_g(*p, b, 330, 330)) continue;  // G33's start angle
+        if (word.letter == 'Q' && calls_subprogram(*p, b)) continue;  // M98 Q: a sequence number
         if (word.decimal_point) with = with ? with : &word;
         else if (word.value != 0 && !without) {
           without = &word;
@@ -654,7 +662,14 @@ void Interpreter::exec_nc(const Block& b) {
     bool limit = profile_.lathe() && std::ranges::any_of(one_shot, [](int g) { return g == 500 || g == 920; });
     (limit ? max_spindle_ : speed_) = word('S').value;
   }
-  if (has('H')) h_ = integer(word('H'), "H");
+  if (has('H')) {
+    h_ = integer(word('H'), "H");
+    // an H alone in G43/G44 mode changes the tool length offset to the new number's value
+    const bool length_code = std::ranges::any_of(g_codes_, [](int g) { return g == 430 || g == 440 || g == 490; });
+    const bool position_offset = std::ranges::any_of(g_codes_, [](int g) { return g >= 450 && g <= 480; });
+    if (!profile_.lathe() && (length_comp_ == 43 || length_comp_ == 44) && !length_code && !position_offset)
+      tool_shift_[2] = (length_comp_ == 43 ? 1 : -1) * length_offset(h_);
+  }
   if (has('D') && !(profile_.lathe() && profile_.series10_format)) d_ = integer(word('D'), "D");  // else a cycle's depth
   if (has('T')) {
     int t = integer(word('T'), "T");

@@ -214,6 +214,16 @@ async function lonelyMove(page, motions, kind) {
       await page.close();
     }
 
+    // a lathe with a C axis: the header gives the extents in axis order (X, Z, C), not sorted
+    {
+      const prog = path.join(src, 'tests/programs/lt_drill_c_axis');
+      const {html} = page_of('browser_lathe_c', prog + '.nc', ['--machine', prog + '.toml']);
+      const {page} = await open(context, html);
+      const header = await page.textContent('#summary');
+      check(/X⌀.*Z.*C/.test(header), `lathe with C: extents in axis order: "${header.slice(0, 300)}"`);
+      await page.close();
+    }
+
     // a lathe: Z across, X up as a diameter, arcs drawn
     {
       const {html, summary} = page_of('browser_lathe', path.join(src, 'examples/lathe-mrc.nc'), ['--machine', 'fanuc-lathe']);

@@ -26,6 +26,10 @@ TEST(Motion, DecimalPointRule) {
   auto isc = machine::default_mill();
   isc.increment = 0.0001;
   EXPECT_DOUBLE_EQ(run("G00 X10\nM30\n", isc).motions().at(0).end[0], 0.001);
+  // M98's Q is a sequence number, no dimension: a program of decimal points with it is not mixed
+  auto seq = run("G00 X10.\nM98 Q102\nM30\nN102 G00 Y5.\nM99\n");
+  ASSERT_TRUE(seq.result.ok()) << seq.result.alarm->message;
+  for (const auto& w : seq.result.warnings) EXPECT_NE(w.code, "NC2001") << nc::format(w);
 }
 
 // The warning quotes the number as the control shows it (118 increments of 0.001 mm = 0.118) and

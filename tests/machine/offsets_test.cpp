@@ -57,6 +57,20 @@ TEST(Offsets, G43AppliesGeometryPlusWear) {
   EXPECT_NEAR(r.var(101) - r.motions().back().end[2], 99.5, 1e-9);
 }
 
+// An H word alone in G43/G44 mode puts the new number's value in force (the old one is replaced,
+// not added): machine Z = work Z + H value under G43, - H value under G44.
+TEST(Offsets, HAloneInG43ModeChangesTheLength) {
+  auto r = run("G10 L10 P1 R100.\nG10 L10 P2 R150.\nG90 G43 G00 Z10. H1\n#101=#5023\nZ20. H2\n#102=#5023\n"
+               "G44 Z0 H1\n#103=#5023\nH2\nZ5.\n#104=#5023\nG49 Z5.\n#105=#5023\nH1\nZ5.\n#106=#5023\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << r.result.alarm->message;
+  EXPECT_NEAR(r.var(101), 10.0 + 100.0, 1e-9);
+  EXPECT_NEAR(r.var(102), 20.0 + 150.0, 1e-9);
+  EXPECT_NEAR(r.var(103), 0.0 - 100.0, 1e-9);
+  EXPECT_NEAR(r.var(104), 5.0 - 150.0, 1e-9);
+  EXPECT_NEAR(r.var(105), 5.0, 1e-9);
+  EXPECT_NEAR(r.var(106), 5.0, 1e-9);  // G49: an H alone applies nothing
+}
+
 TEST(Offsets, ProfileTableAndBadKeys) {
   auto p = machine::parse_profile(
       "[machine]\noffset_memory = \"C\"\n[tool_offsets]\n\"1\" = { length = 120.0, radius = 5.0, radius_wear = -0.01 }\n",
