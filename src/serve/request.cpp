@@ -24,9 +24,11 @@ json parse_body(const std::string& body) {
 }
 
 void check_keys(const json& j, std::initializer_list<const char*> known, const char* endpoint) {
-  for (const auto& [key, value] : j.items())
+  for (const auto& item : j.items()) {
+    const std::string& key = item.key();
     if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; }))
       throw ApiError(400, fmt::format("{} has no key \"{}\" (its keys: {})", endpoint, key, fmt::join(known, ", ")));
+  }
 }
 
 std::optional<std::string> get_string(const json& j, const char* key, bool required) {
