@@ -319,6 +319,79 @@ void set_threading_parameter(MachineProfile& p, const std::string& key, double v
 
 }  // namespace
 
+// The parameters set_parameter takes, for the message that names them (one a line, kept in order).
+constexpr const char* kSupportedParameters[] = {
+    "0001#1",
+    "0100#2",
+    "0100#3",
+    "1300#0",
+    "3401#0",
+    "3402#0",
+    "3402#3",
+    "3402#7",
+    "3403#5",
+    "3403#6",
+    "3404#7",
+    "3405#4",
+    "3410",
+    "5001#5",
+    "5003#0",
+    "5003#1",
+    "5008#1",
+    "5008#3",
+    "5101#0",
+    "5101#2",
+    "5101#4",
+    "5101#5",
+    "5101#6",
+    "5102#6",
+    "5102#7",
+    "5105#1",
+    "5105#2",
+    "5110",
+    "5111",
+    "5114",
+    "5115",
+    "5130",
+    "5131",
+    "5132",
+    "5133",
+    "5135..5137",
+    "5139",
+    "5140..5143",
+    "5200#0",
+    "5200#5",
+    "5213",
+    "5400#0",
+    "5400#6",
+    "5400#7",
+    "5410",
+    "5411",
+    "5421",
+    "5431#0",
+    "5460",
+    "5461",
+    "6001#1",
+    "6001#5",
+    "6004#0",
+    "19625",
+    "6050..6059",
+    "6071..6079",
+    "6080..6089",
+};
+
+// The per-axis parameters it takes.
+constexpr const char* kSupportedAxisParameters[] = {
+    "1006#0",
+    "1008#0",
+    "1008#1",
+    "1008#2",
+    "1022",
+    "1260",
+    "1320..1323",
+    "5440",
+};
+
 void set_parameter(MachineProfile& p, const std::string& key, double value) {
   auto bit = [&] {
     if (value != 0 && value != 1) throw std::runtime_error(fmt::format("parameter {} is a bit: 0 or 1", key));
@@ -438,13 +511,8 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = code;
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;
     else
-      throw UnknownParameter(
-          fmt::format("parameter '{}' is not one ncurve uses (supported: 0001#1, 0100#2, 0100#3, 1300#0, 3401#0, 3402#0, 3402#3, 3402#7, 3403#5, 3403#6, 3404#7, 3405#4, "
-                      "3410, 5001#5, 5003#0, 5003#1, 5008#1, 5008#3, 5101#0, 5101#2, 5101#4, 5101#5, 5101#6, 5102#6, 5102#7, 5105#1, "
-                      "5105#2, 5110, 5111, 5114, 5115, 5130, 5131, 5132, 5133, 5135..5137, 5139, 5140..5143, 5200#0, 5200#5, 5213, 5400#0, "
-                      "5400#6, 5400#7, 5410, 5411, 5421, 5431#0, 5460, 5461, 6001#1, 6001#5, 6004#0, 19625, 6050..6059, 6071..6079, 6080..6089; "
-                      "per axis 1006#0, 1008#0, 1008#1, 1008#2, 1022, 1260, 1320..1323, 5440)",
-                      key));
+      throw UnknownParameter(fmt::format("parameter '{}' is not one ncurve uses (supported: {}; per axis {})", key,
+                                         fmt::join(kSupportedParameters, ", "), fmt::join(kSupportedAxisParameters, ", ")));
   }
 }
 
