@@ -46,6 +46,9 @@ Server::Server(ServeConfig config) : config_(std::move(config)), http_(std::make
   const ServeConfig& c = config_;
   s.set_payload_max_length(c.max_body);
   s.Get("/", [](const httplib::Request&, httplib::Response& res) { answer(res, [] { return page(); }); });
+  s.Get(R"(/assets/([A-Za-z0-9._-]+))", [](const httplib::Request& req, httplib::Response& res) {
+    answer(res, [&] { return asset(req.matches[1]); });
+  });
   s.Post("/api/run", [&c](const httplib::Request& req, httplib::Response& res) {
     answer(res, [&] { return api_run(c, req.body); });
   });

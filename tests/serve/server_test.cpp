@@ -195,6 +195,13 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   EXPECT_NE(r->body.find("<html"), std::string::npos);
+  r = c.Get("/assets/workbench.js");  // the page's files, compiled in
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("ncurveWorkbench"), std::string::npos);
+  r = c.Get("/assets/run.html");  // not one of the workbench's
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 404);
   r = c.Get("/api/nothing");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 404);
