@@ -194,7 +194,8 @@ void Interpreter::warn_mixed_decimal_points(const nc::Program& program) {
     const nc::Word* without = nullptr;
     std::uint32_t without_line = 0;
     bool without_is_argument = false;
-    for (const auto& b : p->blocks)
+    for (const auto& b : p->blocks) {
+      if (b.kind != nc::Statement::nc) continue;  // DPRNT's range indexes Program::prints
       for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
         const nc::Word& word = p->words[w];
         if (!word.literal || !scaled_address(word.letter)) continue;
@@ -209,6 +210,7 @@ void Interpreter::warn_mixed_decimal_points(const nc::Program& program) {
           without_is_argument = is_call(*p, b);
         }
       }
+    }
     if (!with || !without) return;
     const std::string word = fmt::format("{}{}", without->letter, shown_number(without->value, 0));
     const std::string read_as = profile_.decimal_calculator

@@ -239,7 +239,7 @@ bool Interpreter::stock_removal_cycle(int g) {
   // the first block names the type: the infeed axis alone is type I, both axes type II
   bool infeed_axis = false, other_axis = false;
   const nc::Block& nb = prog_->blocks[range.first];
-  for (std::uint32_t w = nb.words_begin; w < nb.words_end; ++w) {
+  for (std::uint32_t w = nb.words_begin; nb.kind == nc::Statement::nc && w < nb.words_end; ++w) {
     const char l = prog_->words[w].letter;
     const bool x = l == 'X' || (l == 'U' && profile_.gcode_system == 'A');
     const bool z = l == 'Z' || (l == 'W' && profile_.gcode_system == 'A');
