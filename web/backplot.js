@@ -5,7 +5,7 @@
 //
 //   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
 //   const plot = NcurveBackplot.create(container, moves, {onHover(i) {}, onClick(i) {}});
-//   plot.setView('iso'); plot.highlight([3, 4]); plot.setColors(i => [255, 0, 0]); plot.state();
+//   plot.setView('iso'); plot.highlight([3, 4]); plot.setColors(i => [255, 0, 0]); plot.setTool([x, y, z]); plot.state();
 //
 // moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
@@ -462,7 +462,7 @@
           }
         }
         const inside = x >= -40 && x <= W + 40 && y >= -20 && y <= H + 20;
-        L.el.style.display = inside && !hide ? '' : 'none';
+        L.el.style.display = inside && !hide && !L.hidden ? '' : 'none';
         L.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) translate(-50%, -50%)`;
       }
     };
@@ -576,6 +576,13 @@
         requestRender();
       },
       hover: setHover,
+      // a ring where the tool is (machine X Y Z, X as a radius on a lathe); null hides it
+      setTool(p) {
+        if (!api.toolLabel) addLabel('marker tool', '', [0, 0, 0], -1), api.toolLabel = labels[labels.length - 1];
+        api.toolLabel.hidden = !p;
+        if (p) api.toolLabel.world.fromArray(toWorld(p, [0, 0, 0]));
+        requestRender();
+      },
       // where move i's middle is on the page (client coordinates)
       screenOf(i) {
         const L = layers[moves.kind[i]], s = first[i] + (segOf[i] >> 1), v = 6 * s;

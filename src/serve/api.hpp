@@ -41,7 +41,8 @@ Answer api_gen(const ServeConfig& config, const std::string& body);
 Answer api_profiles(const ServeConfig& config);
 Answer api_files(const ServeConfig& config);
 Answer api_file(const ServeConfig& config, const std::string& name);
-// The page at GET / (a placeholder until the workbench page ships).
+// The workbench page at GET / and its scripts, styles and example at GET /assets/NAME.
 Answer page();
+Answer asset(const std::string& name);
 
 }  // namespace ncurve::serve

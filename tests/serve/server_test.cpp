@@ -45,7 +45,8 @@ protected:
     EXPECT_TRUE(r) << "no answer to POST " << path << ": " << httplib::to_string(r.error());
     if (!r) return {};
     EXPECT_EQ(r->status, expected_status) << r->body.substr(0, 500);
-    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
+    EXPECT_TRUE(r->get_header_value("Content-Type").starts_with("application/json"))  // "; charset=utf-8" when big
+        << r->get_header_value("Content-Type");
     return json::parse(r->body);
   }
   // the server still answers after whatever went before
@@ -195,6 +196,13 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   EXPECT_NE(r->body.find("<html"), std::string::npos);
+  r = c.Get("/assets/workbench.js");  // the page's files, compiled in
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("ncurveWorkbench"), std::string::npos);
+  r = c.Get("/assets/run.html");  // not one of the workbench's
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 404);
   r = c.Get("/api/nothing");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 404);

@@ -1,0 +1,177 @@
+// The workbench of `ncurve serve` in a real browser: headless Chromium (Debian's), playwright-core.
+//   node workbench.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
+// Starts `ncurve serve --port 0 examples/spiral.nc`, opens the page and checks: the moves drawn
+// against the run's count, an error typed in the editor marked at its line, stepping the debugger
+// forward and back with #104 changing, a watchpoint on #104 stopped on, a move clicked landing on
+// its line. Screenshots go to OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
+'use strict';
+const {spawn, execFileSync} = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+
+const [ncurve, src, out, modules] = process.argv.slice(2);
+const chromium = process.env.NCURVE_CHROMIUM || '/usr/bin/chromium';
+if (!fs.existsSync(chromium)) {
+  console.log(`SKIPPED: no Chromium at ${chromium} (install Debian's chromium package to run the browser tests)`);
+  process.exit(77);
+}
+const {chromium: driver} = require(path.resolve(modules, 'playwright-core'));
+fs.mkdirSync(out, {recursive: true});
+
+let passed = 0, failed = 0;
+function check(ok, what) {
+  if (ok) passed++;
+  else failed++;
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+}
+
+const spiral = path.join(src, 'examples/spiral.nc');
+const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {encoding: 'utf8'}));
+
+(async () => {
+  const server = spawn(ncurve, ['serve', '--port', '0', spiral], {stdio: ['ignore', 'pipe', 'pipe']});
+  const port = await new Promise((resolve, reject) => {
+    let text = '';
+    server.stdout.on('data', (d) => {
+      text += d;
+      const m = /127\.0\.0\.1:(\d+)/.exec(text);
+      if (m) resolve(+m[1]);
+    });
+    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
+    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
+  });
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'ncurve-chromium-'));
+  const context = await driver.launchPersistentContext(profile, {
+    executablePath: chromium, headless: true, viewport: {width: 1400, height: 860},
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+           '--disable-background-networking', '--disable-component-update', '--disable-sync',
+           '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  });
+  try {
+    const page = await context.newPage();
+    page.setDefaultTimeout(60000);
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    const offsite = [];
+    page.on('request', (r) => { if (!r.url().startsWith(`http://127.0.0.1:${port}/`)) offsite.push(r.url()); });
+    await page.goto(`http://127.0.0.1:${port}/`);
+    await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1);
+    const W = () => page.evaluate(() => ({runs: ncurveWorkbench.runs, moveCount: ncurveWorkbench.moveCount,
+      diagnostics: ncurveWorkbench.diagnostics, pos: ncurveWorkbench.pos, vars: ncurveWorkbench.vars,
+      state: ncurveWorkbench.plot.state(), text: ncurveWorkbench.editor.text, cursor: ncurveWorkbench.editor.cursorLine(),
+      highlighted: ncurveWorkbench.highlighted, stopped: ncurveWorkbench.stoppedOnBreak, drawnUpTo: ncurveWorkbench.drawnUpTo}));
+    let w = await W();
+    check(w.text === fs.readFileSync(spiral, 'utf8'), 'the FILE given to serve is in the editor');
+    check(w.moveCount === summary.motions && w.state.moveCount === summary.motions,
+          `${w.moveCount} moves drawn, the run made ${summary.motions}`);
+    check(w.state.kinds.feed === summary.moves.line && w.state.kinds.rapid === summary.moves.rapid, `moves by kind ${JSON.stringify(w.state.kinds)}`);
+    check(errors.length === 0, `no script errors (${errors.join('; ')})`);
+    check(offsite.length === 0, `nothing loaded from elsewhere (${offsite.join(' ')})`);
+    check(await page.evaluate(() => document.querySelectorAll('.wb-hl .g').length > 5 && document.querySelectorAll('.wb-hl .k').length >= 3 &&
+          document.querySelectorAll('.wb-hl .c').length >= 6 && document.querySelectorAll('.wb-hl .v').length > 10), 'syntax highlighted');
+    await page.screenshot({path: path.join(out, 'workbench-spiral.png')});
+
+    // click a lonely move: the editor lands on its line
+    const target = await page.evaluate(() => {
+      const B = ncurveWorkbench.plot, n = B.moves.count, pts = [];
+      for (let i = 0; i < n; i++) pts.push(B.screenOf(i));
+      const r = B.renderer.domElement.getBoundingClientRect();
+      for (let k = 0; k < n; k++) {
+        const i = (Math.floor(n / 2) + k) % n, p = pts[i];
+        if (p.x < r.left + 60 || p.y < r.top + 60 || p.x > r.right - 60 || p.y > r.bottom - 60) continue;
+        if (pts.every((q, j) => j === i || Math.hypot(q.x - p.x, q.y - p.y) > 6)) return {i, p, line: B.moves.line[i]};
+      }
+      return null;
+    });
+    check(target !== null, 'a move to click');
+    if (target) {
+      await page.mouse.click(target.p.x, target.p.y);
+      await page.waitForTimeout(200);
+      w = await W();
+      check(w.cursor === target.line && target.line === 23, `clicking move ${target.i} selects its line ${target.line} (cursor on ${w.cursor})`);
+      check(w.highlighted.length === summary.moves.line - 1, `its line's ${w.highlighted.length} moves highlighted`);
+      await page.screenshot({path: path.join(out, 'workbench-click.png')});
+    }
+
+    // the debugger: step forward and back over the loop, #104 changes
+    await page.click('button[data-tab="debug"]');
+    const line20 = await page.evaluate(() => {  // the first block on line 20 (#104=...)
+      const t = ncurveWorkbench.trace;
+      for (let k = 0; k < t.count; k++) if (t.at(k).line === 20) return k;
+      return -1;
+    });
+    check(line20 > 0, `line 20 executed (block ${line20 + 1})`);
+    await page.evaluate((k) => ncurveWorkbench.goTo(k), line20);
+    w = await W();
+    check(w.vars['#104'] === undefined, `before line 20 first runs, #104 is vacant (${w.vars['#104']})`);
+    await page.click('#dbg-fwd');
+    w = await W();
+    const r1 = 1 + 2 * 3.6 * 3.1415927 / 180;
+    check(Math.abs(w.vars['#104'] - r1) < 1e-6, `one step on, #104 = ${w.vars['#104']} (1 + 2*3.6*pi/180 = ${r1.toFixed(6)})`);
+    check(await page.evaluate(() => !!document.querySelector('.wb-vars tr.changed')), 'the changed variable is highlighted');
+    check(await page.evaluate(() => document.querySelector('.wb-band.current') !== null), 'the current line is highlighted');
+    await page.click('#dbg-back');
+    w = await W();
+    check(w.vars['#104'] === undefined && w.pos === line20, 'one step back, #104 vacant again');
+    // a watchpoint on #104 from the start: stops right after its first write, then at the second
+    await page.click('#dbg-first');
+    await page.fill('#watch-var', '#104');
+    await page.click('#watch-add');
+    await page.click('#dbg-next-break');
+    w = await W();
+    check(w.stopped && w.pos === line20 + 1 && Math.abs(w.vars['#104'] - r1) < 1e-6, `the watchpoint stops after the write of #104 (block ${w.pos + 1})`);
+    await page.click('#dbg-next-break');
+    w = await W();
+    const r2 = 1 + 2 * 7.2 * 3.1415927 / 180;
+    check(w.stopped && Math.abs(w.vars['#104'] - r2) < 1e-6, `and again at the next (#104 = ${w.vars['#104']})`);
+    check(w.drawnUpTo > 0 && w.drawnUpTo < summary.motions, `the path drawn up to the tool (${w.drawnUpTo} of ${summary.motions})`);
+    await page.screenshot({path: path.join(out, 'workbench-debugger.png')});
+    await page.click('#dbg-prev-break');
+    w = await W();
+    check(w.pos === line20 + 1, 'back to the previous watchpoint stop');
+    // a breakpoint on line 22 by clicking the gutter
+    await page.evaluate(() => document.querySelectorAll('#watches .w').forEach((e) => e.click()));
+    const g = await page.evaluate(() => ncurveWorkbench.editor.gutterOf(22));
+    await page.mouse.click(g.x, g.y);
+    await page.click('#dbg-first');
+    await page.click('#dbg-next-break');
+    w = await W();
+    const line = await page.evaluate(() => ncurveWorkbench.state.line);
+    check(w.stopped && line === 22, `the line breakpoint stops on line 22 (${line})`);
+
+    // type an error: its mark at the right line after the re-run
+    await page.click('button[data-tab="summary"]');
+    const runs = w.runs;
+    const at = await page.evaluate(() => ncurveWorkbench.editor.screenOf(20, 40));
+    await page.mouse.click(at.x, at.y);
+    await page.keyboard.press('End');
+    await page.keyboard.type(' #1=[1+');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n, runs);
+    w = await W();
+    const alarm = w.diagnostics.find((d) => d.severity === 'error');
+    check(alarm && alarm.line === 20, `the alarm marks line 20 (${alarm && `${alarm.code} line ${alarm.line}: ${alarm.message}`})`);
+    const mark = await page.evaluate(() => {
+      const m = document.querySelector('.wb-mark.error');
+      return m && {line: +m.dataset.line, top: m.getBoundingClientRect().top};
+    });
+    const lineTop = await page.evaluate(() => ncurveWorkbench.editor.screenOf(20, 1).y);
+    check(mark && mark.line === 20 && Math.abs(mark.top - lineTop) < 12, 'its wavy mark is drawn on line 20');
+    const m = await page.evaluate(() => { const r = document.querySelector('.wb-mark.error').getBoundingClientRect(); return {x: r.left + 3, y: r.top - 4}; });
+    await page.mouse.move(m.x, m.y);
+    await page.waitForTimeout(100);
+    const tip = await page.evaluate(() => { const t = document.querySelector('.wb-tip'); return t.hidden ? '' : t.textContent; });
+    check(alarm && tip.includes(alarm.code), `hovering it shows the code and message (${tip})`);
+    await page.screenshot({path: path.join(out, 'workbench-alarm.png')});
+    check(errors.length === 0, `still no script errors (${errors.join('; ')})`);
+  } catch (e) {
+    check(false, String(e && e.stack || e));
+  } finally {
+    await context.close();
+    server.kill();
+    fs.rmSync(profile, {recursive: true, force: true});
+  }
+  console.log(`${passed} passed, ${failed} failed; screenshots in ${out}`);
+  process.exit(failed ? 1 : 0);
+})();

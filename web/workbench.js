@@ -1,0 +1,427 @@
+// The workbench page of `ncurve serve` (docs/serve.md): the editor (wb-editor.js) runs the program
+// through POST /api/run 300 ms after each edit; the answer's moves go to the backplot
+// (backplot.js), its diagnostics to the editor, its summary to the panel, and its trace to the
+// debugger (wb-debug.js). Every text of the program or the server goes in as textContent.
+// window.ncurveWorkbench tells a test what is shown.
+(function () {
+  'use strict';
+  const $ = (id) => document.getElementById(id);
+  const el = (tag, cls, text) => {
+    const e = document.createElement(tag);
+    if (cls) e.className = cls;
+    if (text !== undefined) e.textContent = text;
+    return e;
+  };
+  const fmt = (v, digits) => (Math.abs(v) < 1e-12 ? 0 : v).toFixed(digits === undefined ? 3 : digits).replace(/\.?0+$/, '') || '0';
+  const DIM = [214, 219, 226];
+
+  const W = window.ncurveWorkbench = {ready: false, runs: 0, moveCount: 0, diagnostics: [], timing: {}, pos: 0, error: null};
+  let profiles = [], answer = null, conv = null, plot = null, trace = null, mainFile = 0, viewName = '';
+  const breakpoints = new Set(), watches = [];
+  let tab = 'summary', name = 'program.nc', dirtyAnalysis = true;
+
+  const editor = W.editor = NcurveEditor.create($('editor'), {
+    onChange() { schedule(); dirtyAnalysis = true; },
+    onCursorLine(line) { showLineMoves(line); },
+    onGutterClick(line) {
+      if (breakpoints.has(line)) breakpoints.delete(line); else breakpoints.add(line);
+      editor.setBreakpoints(breakpoints);
+    },
+  });
+
+  // ---- running ----
+  let timer = 0, seq = 0, inFlight = null;
+  function schedule() {
+    clearTimeout(timer);
+    W.timing.edit = performance.now();
+    timer = setTimeout(run, 300);
+  }
+  const profile = () => profiles.find((p) => p.name === $('machine').value) || {};
+  async function run() {
+    clearTimeout(timer);
+    const my = ++seq, t0 = performance.now();
+    if (inFlight) inFlight.abort();
+    inFlight = new AbortController();
+    status('running…', '');
+    let r, j;
+    try {
+      r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
+        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, trace: $('trace').checked})});
+      const t1 = performance.now();
+      j = await r.json();
+      W.timing.request_ms = t1 - t0, W.timing.parse_ms = performance.now() - t1;
+    } catch (e) {
+      if (my === seq) status(`the server did not answer: ${e.message}`, 'alarm');
+      return;
+    }
+    if (my !== seq) return;
+    if (!j.summary) { status(`${r.status}: ${j.error}`, 'alarm'); return; }
+    answer = j;
+    show(t0);
+  }
+  function status(text, cls) {
+    $('status').textContent = text;
+    $('status').className = 'wb-status ' + (cls || '');
+  }
+
+  // ---- the answer's moves as the backplot takes them (docs/html.md): motions only ----
+  function convert(m, p) {
+    const K = m.kinds, R = K.indexOf('rapid'), LN = K.indexOf('line'), A = K.indexOf('arc'), DW = K.indexOf('dwell');
+    const N = m.count, xs = p.diameter ? 0.5 : 1;
+    let n = 0;
+    for (let i = 0; i < N; i++) { const k = m.kind[i]; if (k === R || k === LN || k === A) n++; }
+    const c = {count: n, kind: new Uint8Array(n), start: new Float32Array(3 * n), end: new Float32Array(3 * n),
+      arcIndex: new Int32Array(n), arcs: new Float32Array(5 * m.arcs.index.length), line: new Uint32Array(n),
+      file: new Uint16Array(n), feed: new Float32Array(n), moveOf: new Uint32Array(n), before: new Uint32Array(N + 1),
+      lathe: !!p.lathe, diameter: !!p.diameter, inch: false, plane: p.lathe ? 18 : 17, alarmAt: null, last: [0, 0, 0]};
+    let px = 0, py = 0, pz = 0, s = 0, a = 0, j = 0;
+    const S = m.starts, AR = m.arcs;
+    for (let i = 0; i < N; i++) {
+      c.before[i] = j;
+      if (s < S.index.length && S.index[s] === i) px = S.x[s] * xs, py = S.y[s], pz = S.z[s], s++;
+      const k = m.kind[i], ex = m.x[i] * xs, ey = m.y[i], ez = m.z[i];
+      if (k === R || k === LN || k === A) {
+        c.kind[j] = k === R ? 0 : k === LN ? 1 : 2;
+        c.start[3 * j] = px, c.start[3 * j + 1] = py, c.start[3 * j + 2] = pz;
+        c.end[3 * j] = ex, c.end[3 * j + 1] = ey, c.end[3 * j + 2] = ez;
+        c.arcIndex[j] = -1;
+        if (k === A) {
+          while (a < AR.index.length && AR.index[a] < i) a++;
+          const o = 5 * a;
+          c.arcs[o] = AR.cx[a] * xs, c.arcs[o + 1] = AR.cy[a], c.arcs[o + 2] = AR.cz[a];
+          c.arcs[o + 3] = AR.sweep_deg[a] * Math.PI / 180, c.arcs[o + 4] = AR.plane[a];
+          c.arcIndex[j] = a++;
+        }
+        c.line[j] = m.line[i], c.file[j] = m.file[i], c.feed[j] = m.f[i], c.moveOf[j] = i;
+        j++;
+      }
+      if (k === R || k === LN || k === A || k === DW) px = ex, py = ey, pz = ez;
+    }
+    c.before[N] = j;
+    c.last = [px, py, pz];
+    return c;
+  }
+
+  // ---- showing an answer ----
+  function show(t0) {
+    const t1 = performance.now();
+    const p = profile();
+    mainFile = Math.max(0, answer.files.indexOf(name));
+    conv = convert(answer.moves, p);
+    const s = answer.summary;
+    if (s.alarm) conv.alarmAt = conv.last;
+    const t2 = performance.now();
+    if (plot) { viewName = plot.state().view || viewName; plot.dispose(); }
+    plot = W.plot = NcurveBackplot.create($('plot'), conv, {
+      onHover, onClick,
+      view: viewName || undefined,
+      alarmLabel: s.alarm ? `${s.alarm.code} line ${s.alarm.line}` : '',
+    });
+    plot.render();
+    const t3 = performance.now();
+    buildViews();
+    buildLegend();
+    editor.setDiagnostics(answer.diagnostics);
+    showDiagnostics();
+    showSummary();
+    setupTrace();
+    showLineMoves(editor.cursorLine());
+    const t4 = performance.now();
+    Object.assign(W.timing, {convert_ms: t2 - t1, draw_ms: t3 - t2, panels_ms: t4 - t3, run_to_drawn_ms: t4 - t0,
+      edit_to_drawn_ms: W.timing.edit ? t4 - W.timing.edit : null});
+    W.timing.edit = 0;
+    W.runs++;
+    W.moveCount = conv.count;
+    W.diagnostics = answer.diagnostics;
+    W.summary = s;
+    W.ready = true;
+    const result = s.ok ? 'completed' : s.alarm ? `ALARM ${s.alarm.code} line ${s.alarm.line}` : 'stopped';
+    status(`${result} · ${s.motions} motions · ${fmt(W.timing.run_to_drawn_ms, 0)} ms`, s.ok ? 'ok' : 'alarm');
+    if (tab === 'analyze') analyze();
+  }
+
+  function buildViews() {
+    const box = $('views');
+    box.textContent = '';
+    const labels = {top: 'Top', front: 'Front', side: 'Side', iso: 'Iso', zx: 'ZX', end: 'End'};
+    const mark = () => { for (const b of box.children) b.classList.toggle('active', b.dataset.view === plot.state().view); };
+    for (const v of plot.views) {
+      const b = el('button', '', labels[v] || v);
+      b.dataset.view = v;
+      b.onclick = () => { plot.setView(v); viewName = v; mark(); };
+      box.append(b);
+    }
+    const fit = el('button', '', 'Fit');
+    fit.onclick = () => { plot.fit(); mark(); };
+    box.append(fit);
+    plot.controls.addEventListener('change', mark);
+    mark();
+  }
+  function buildLegend() {
+    const box = $('legend'), k = plot.state().kinds;
+    box.textContent = '';
+    const names = ['rapid', 'feed', 'arc'];
+    names.forEach((nm, i) => {
+      const c = NcurveBackplot.KIND_COLORS[i], item = el('span', 'item');
+      const sw = el('span', '');
+      sw.style.cssText = `display:inline-block;width:18px;height:0;border-top:2px ${i ? 'solid' : 'dashed'} rgb(${c.join(',')})`;
+      item.append(sw, document.createTextNode(`${nm} ${k[nm]}`));
+      box.append(item);
+    });
+    box.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves'));
+  }
+
+  const kindName = (i) => ['rapid', 'feed', 'arc'][conv.kind[i]];
+  function onHover(i) {
+    const tip = $('hover');
+    if (i < 0) { tip.hidden = true; return; }
+    tip.textContent = '';
+    const f = conv.file[i], line = conv.line[i];
+    const where = `${answer.files[f] || '?'} line ${line}`;
+    tip.append(el('div', 'where', where));
+    if (f === mainFile) tip.append(el('code', 'block', editor.lineText(line)));
+    const e = [conv.end[3 * i], conv.end[3 * i + 1], conv.end[3 * i + 2]].map((v) => fmt(v));
+    tip.append(el('div', 'what', `move ${conv.moveOf[i] + 1} · ${kindName(i)}${conv.kind[i] ? ' F' + fmt(conv.feed[i]) : ''} · to X${e[0]} Y${e[1]} Z${e[2]}`));
+    tip.hidden = false;
+    tip.style.left = '10px';
+    tip.style.top = '52px';
+  }
+  function onClick(i) {
+    W.clicked = i;
+    if (i < 0) { plot.highlight([]); return; }
+    if (conv.file[i] === mainFile) editor.selectLine(conv.line[i]);
+    showLineMoves(conv.line[i], conv.file[i]);
+  }
+  // the moves of a line, highlighted
+  function showLineMoves(line, file) {
+    if (!plot) return;
+    if (file === undefined) file = mainFile;
+    const list = [];
+    for (let i = 0; i < conv.count; i++) if (conv.line[i] === line && conv.file[i] === file) list.push(i);
+    W.highlighted = list;
+    plot.highlight(list);
+  }
+
+  function showDiagnostics() {
+    const box = $('diags');
+    box.textContent = '';
+    for (const d of answer.diagnostics) {
+      const li = el('li', d.severity);
+      li.append(el('span', 'where', `${d.file || ''}:${d.line}:${d.column || 1}`), el('strong', '', d.code),
+        document.createTextNode(' ' + d.message));
+      li.onclick = () => { if (!d.file || d.file === name) editor.selectLine(d.line); };
+      box.append(li);
+    }
+    box.hidden = !answer.diagnostics.length;
+  }
+  function showSummary() {
+    const s = answer.summary, box = $('summary');
+    box.textContent = '';
+    const fact = (k, v, cls) => box.append(el('dt', '', k), el('dd', cls || '', v));
+    if (s.ok) fact('result', 'completed', 'ok');
+    else if (s.alarm) fact('result', `ALARM ${s.alarm.code} ${s.alarm.file || ''} line ${s.alarm.line}: ${s.alarm.message}`, 'alarm');
+    else fact('result', 'stopped', 'alarm');
+    if (answer.error) fact('stopped', answer.error, 'alarm');
+    fact('machine', s.machine);
+    const mv = s.moves;
+    fact('motions', `${s.motions} — ${mv.rapid} rapid, ${mv.line} feed, ${mv.arc} arc`);
+    const events = Object.keys(mv).filter((k) => !['rapid', 'line', 'arc'].includes(k) && mv[k]).map((k) => `${mv[k]} ${k.replace('_', ' ')}`);
+    if (events.length) fact('events', events.join(', '));
+    fact('blocks', `${s.blocks_executed} executed of ${s.source_blocks} in the source`);
+    fact('path', `${fmt(s.feed_length_mm)} mm at feed, ${fmt(s.rapid_length_mm)} mm rapid`);
+    fact('time', `${fmt(s.time_at_programmed_feed_s, 1)} s at programmed feed (the Cycle time tab: with acceleration)`);
+    if (s.extent) {
+      const ax = Object.keys(s.extent).sort((a, b) => 'XYZABC'.indexOf(a) - 'XYZABC'.indexOf(b));
+      fact('extents', ax.map((a) => `${a} ${fmt(s.extent[a][0])} … ${fmt(s.extent[a][1])}`).join('   '));
+    }
+    fact('warnings', s.warnings.length ? s.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}`).join('\n') : 'none');
+    if (!answer.moves.complete) fact('moves', answer.moves.message, 'alarm');
+  }
+
+  // ---- the debugger ----
+  function setupTrace() {
+    trace = W.trace = answer.trace ? NcurveTrace.create(answer.trace) : null;
+    const slider = $('dbg-slider');
+    slider.max = trace ? trace.count : 0;
+    if (!trace) { $('dbg-pos').textContent = 'no trace: tick Debugger above'; return; }
+    if (!trace.complete) $('dbg-pos').title = trace.message || '';
+    goTo(Math.min(W.pos, trace.count), true);
+  }
+  const num = (v) => (v === null || v === undefined ? '<vacant>' : fmt(v, 6));
+  function goTo(k, quiet) {
+    if (!trace) return;
+    k = Math.max(0, Math.min(trace.count, k));
+    W.pos = k;
+    $('dbg-slider').value = k;
+    const st = W.state = trace.at(k);
+    $('dbg-pos').textContent = k < trace.count ? `block ${k + 1} of ${trace.count} · line ${st.line}` : `after the last block (${trace.count})`;
+    if (tab !== 'debug' && quiet) return;
+    editor.setCurrentLine(st.file === mainFile ? st.line : 0);
+    // the path up to this instant, the rest dimmed; the tool where it is
+    const cut = conv.before[Math.min(st.move, conv.before.length - 1)];
+    W.drawnUpTo = cut;
+    plot.highlight([]);
+    plot.setColors((i) => (i >= cut ? DIM : null));
+    const at = cut > 0 ? conv.end.subarray(3 * cut - 3, 3 * cut) : conv.count ? conv.start.subarray(0, 3) : null;
+    plot.setTool(at ? Array.from(at) : null);
+    // the call stack, innermost first
+    const stack = $('dbg-stack');
+    stack.textContent = '';
+    for (const f of st.stack.slice().reverse()) {
+      const o = f.program >= 0 ? `O${String(f.program).padStart(4, '0')}` : '(no O number)';
+      const call = f.call_line ? ` ← ${answer.files[f.call_file] || ''} line ${f.call_line}` : '';
+      stack.append(el('li', '', `${f.kind} ${o}${f.custom ? ' custom' : ''}${f.modal ? ' G66' : ''} · level ${f.level}${call}`));
+    }
+    // modal state
+    const G = [], other = [];
+    const letters = {4107: 'D', 4109: 'F', 4111: 'H', 4113: 'M', 4119: 'S', 4120: 'T'};
+    for (const [v, val] of st.modal) {
+      if (v <= 4022) { if (val !== null) G.push(`G${fmt(val, 1)}`); } else other.push(`${letters[v]}${num(val)}`);
+    }
+    $('dbg-modal').textContent = G.join(' ') + '\n' + other.join(' ');
+    $('dbg-modal').style.whiteSpace = 'pre-wrap';
+    // variables: locals of each level, commons, the rest
+    const table = $('dbg-vars');
+    table.textContent = '';
+    const rows = (title, entries) => {
+      if (!entries.length) return;
+      const h = el('tr');
+      const th = el('th', '', title);
+      th.colSpan = 2;
+      h.append(th);
+      table.append(h);
+      for (const [label, key] of entries) {
+        const tr = el('tr', st.changed.has(key) ? 'changed' : '');
+        tr.dataset.key = key;
+        tr.append(el('td', '', label), el('td', '', num(st.vars.get(key))));
+        table.append(tr);
+      }
+    };
+    const levels = [...new Set(st.stack.map((f) => f.level))].reverse();
+    for (const level of levels) {
+      const e = [];
+      for (let v = 1; v <= 33; v++) {
+        const key = trace.key(v, level);
+        if (st.vars.has(key) || st.changed.has(key)) e.push([`#${v}`, key]);
+      }
+      rows(`locals, level ${level}${level === levels[0] ? ' (current)' : ''}`, e);
+    }
+    const common = [], system = [];
+    const keys = new Set([...st.vars.keys(), ...st.changed]);
+    for (const key of [...keys].filter((x) => x < 0).sort((a, b) => b - a)) {
+      const v = -key;
+      ((v >= 100 && v <= 199) || (v >= 500 && v <= 999) ? common : system).push([`#${v}`, key]);
+    }
+    rows('common variables', common);
+    rows('system variables written', system);
+    W.vars = Object.fromEntries([...st.vars].map(([key, v]) => [key < 0 ? `#${-key}` : `L${Math.floor(key / 100000)}#${key % 100000}`, v]));
+  }
+  const step = (d) => goTo(W.pos + d);
+  const seek = (dir) => {
+    const b = trace ? trace.seek(W.pos, dir, mainFile, breakpoints, watches) : -1;
+    goTo(b >= 0 ? b : dir > 0 ? trace.count : 0);
+    W.stoppedOnBreak = b >= 0;
+  };
+  $('dbg-back').onclick = () => step(-1);
+  $('dbg-fwd').onclick = () => step(1);
+  $('dbg-first').onclick = () => goTo(0);
+  $('dbg-last').onclick = () => goTo(Infinity);
+  $('dbg-next-break').onclick = () => seek(1);
+  $('dbg-prev-break').onclick = () => seek(-1);
+  $('dbg-slider').oninput = () => goTo(+$('dbg-slider').value);
+  const showWatches = () => {
+    const box = $('watches');
+    box.textContent = '';
+    for (const v of watches) {
+      const w = el('span', 'w', `#${v}`);
+      w.title = 'remove';
+      w.onclick = () => { watches.splice(watches.indexOf(v), 1); showWatches(); };
+      box.append(w);
+    }
+  };
+  $('watch-add').onclick = () => {
+    const m = /^\s*#?\s*(\d+)\s*$/.exec($('watch-var').value);
+    if (!m) { $('watch-var').setCustomValidity('a variable: #104'); $('watch-var').reportValidity(); return; }
+    $('watch-var').setCustomValidity('');
+    if (!watches.includes(+m[1])) watches.push(+m[1]);
+    $('watch-var').value = '';
+    showWatches();
+  };
+  $('watch-var').addEventListener('keydown', (e) => { if (e.key === 'Enter') $('watch-add').click(); });
+  W.goTo = goTo;
+
+  // ---- tabs, analyze, generate ----
+  function setTab(t) {
+    tab = t;
+    for (const b of document.querySelectorAll('.wb-tabs button')) b.classList.toggle('on', b.dataset.tab === t);
+    for (const p of ['summary', 'debug', 'analyze', 'gen']) $('tab-' + p).hidden = p !== t;
+    if (!plot) return;
+    if (t === 'debug') goTo(W.pos);
+    else { plot.setColors(); plot.setTool(null); editor.setCurrentLine(0); }
+    if (t === 'analyze' && dirtyAnalysis) analyze();
+  }
+  for (const b of document.querySelectorAll('.wb-tabs button')) b.onclick = () => setTab(b.dataset.tab);
+  W.setTab = setTab;
+  async function analyze() {
+    dirtyAnalysis = false;
+    const box = $('analysis');
+    box.textContent = 'computing…';
+    const r = await fetch('/api/analyze', {method: 'POST', headers: {'Content-Type': 'application/json'},
+      body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined})});
+    const a = W.analysis = await r.json();
+    box.textContent = '';
+    const fact = (k, v) => box.append(el('dt', '', k), el('dd', '', v));
+    if (a.error) { fact('error', a.error); return; }
+    const s = (v) => (v === undefined ? '—' : `${fmt(v, 2)} s`);
+    fact('cycle time', `${s(a.cycle_time_s)}${a.ok ? '' : ' (up to the alarm)'}`);
+    fact('motion', s(a.motion_s));
+    fact('waits', `${s(a.wait_s)} (${a.waits} waits, ${a.stops} exact stops)`);
+    fact('settle', s(a.settle_s));
+    fact('dwell', s(a.dwell_s));
+    fact('at programmed feed', s(a.programmed_time_s));
+    fact('feed', `mean ${fmt(a.mean_feed_mm_min, 0)} mm/min over ${fmt(a.feed_length_mm)} mm`);
+    fact('blocks', `${a.nc_blocks} NC blocks, ${a.macro_statements} macro statements, ${a.starved_blocks} starved`);
+  }
+  $('analyze').onclick = analyze;
+  $('gen').onclick = async () => {
+    let params;
+    try { params = JSON.parse($('gen-params').value || '{}'); } catch (e) { $('gen-out').textContent = 'parameters: ' + e.message; return; }
+    const r = await fetch('/api/gen', {method: 'POST', headers: {'Content-Type': 'application/json'},
+      body: JSON.stringify({curve: $('gen-curve').value, params, tol: +$('gen-tol').value, form: $('gen-form').value})});
+    const g = await r.json();
+    if (g.error || !g.program) { $('gen-out').textContent = g.error || 'no program'; return; }
+    $('gen-out').textContent = `${g.moves !== undefined ? g.moves + ' moves, ' : ''}generated into the editor`;
+    name = 'generated.nc';
+    editor.setText(g.program);
+    run();
+  };
+
+  // ---- start: the profiles, the files, the first program ----
+  $('run').onclick = run;
+  $('machine').onchange = run;
+  $('trace').onchange = run;
+  async function open(fileName) {
+    const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : '/assets/example.nc');
+    name = fileName || 'spiral.nc';
+    editor.setText(await r.text());
+    breakpoints.clear();
+    editor.setBreakpoints(breakpoints);
+    W.pos = 0;
+    await run();
+  }
+  $('file').onchange = () => open($('file').value);
+  W.open = open;
+  (async () => {
+    try {
+      const [pj, fj] = await Promise.all([fetch('/api/profiles').then((r) => r.json()), fetch('/api/files').then((r) => r.json())]);
+      profiles = pj.profiles;
+      for (const p of profiles) $('machine').add(new Option(`${p.name} — ${p.title}`, p.name, false, p.name === (pj.default || 'fanuc-mill')));
+      for (const f of fj.files) $('file').add(new Option(f.name, f.name));
+      if (!fj.files.length) $('file').add(new Option('spiral.nc (example)', ''));
+      await open(fj.files.length ? fj.files[0].name : '');
+    } catch (e) {
+      W.error = String(e);
+      status(`cannot start: ${e.message}`, 'alarm');
+    }
+  })();
+})();
