@@ -606,7 +606,15 @@
       dispose() {
         global.removeEventListener('resize', resize);
         controls.dispose();
+        // free the GPU buffers and the context now, not at the next garbage collection
+        for (const s of [scene, pickScene])
+          s.traverse((o) => {
+            if (o.geometry) o.geometry.dispose();
+            if (o.material) o.material.dispose();
+          });
+        pickTarget.dispose();
         renderer.dispose();
+        renderer.forceContextLoss();
         container.removeChild(renderer.domElement);
         container.removeChild(overlay);
       },
