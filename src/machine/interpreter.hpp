@@ -341,6 +341,8 @@ private:
   void add_call_stack(nc::Diagnostic& d) const;
   // the observer's side (observe.cpp): only called when there is one
   ExecutionObserver* observer_ = nullptr;
+  ModalState observed_modal_{};  // the modal state the observer was last given
+  bool modal_stale_ = true;      // an NC block ran since it was read
   void observe_block(const nc::Block& b);
   void observe_call(const Frame& f);
   void observe_repeat(const Frame& f);  // a repeated macro call's locals back to its arguments

@@ -27,7 +27,12 @@ ModalState Interpreter::modal_state() {
   return s;
 }
 
-void Interpreter::observe_block(const nc::Block& b) { observer_->block(*prog_, b, moves_delivered(), modal_state()); }
+// Only an NC block changes the modal state: after a macro statement the state read before stands.
+void Interpreter::observe_block(const nc::Block& b) {
+  if (modal_stale_) observed_modal_ = modal_state();
+  modal_stale_ = b.kind == nc::Statement::nc;
+  observer_->block(*prog_, b, moves_delivered(), observed_modal_);
+}
 
 void Interpreter::observe_call(const Frame& f) {
   CallFrame c;
