@@ -79,14 +79,7 @@ bool Interpreter::canned_cycle_block() {
     alarm("PS0009", fmt::format("address {} in a canned cycle: this control counts repeats with {} (the profile's "
                                 "cycle_repeat = \"{}\")", other, repeat_letter, repeat_letter),
           word(other).column);
-  int repeat = 1;
-  if (has(repeat_letter)) {
-    repeat = integer(word(repeat_letter), "the repeat count of a canned cycle");
-    if (repeat < 0 || repeat > 9999)
-      alarm("PS0045", fmt::format("{}{} of a canned cycle: the repeat count is 0 to 9999 (the manual names no "
-                                  "alarm for it; ncurve stops here)", repeat_letter, repeat),
-            word(repeat_letter).column);
-  }
+  const int repeat = cycle_repeat_count();
 
   const AxisVector base = pos_;
   AxisVector hole = pos_;
@@ -198,7 +191,6 @@ void Interpreter::drill_hole(const Hole& h) {
   if (g == 76 || g == 87 || g == 88) return boring_hole(h);
   if (g == 84 || g == 74) return tapping_hole(h);
   cycle_move(h, MoveKind::rapid, h.r);
-  const double dir = h.into();
   switch (g) {
     case 81:
       cycle_move(h, MoveKind::line, h.z);
@@ -209,26 +201,11 @@ void Interpreter::drill_hole(const Hole& h) {
       cycle_dwell();
       cycle_move(h, MoveKind::rapid, h.back);
       break;
-    case 73: case 83: {
-      const double q = cycle_q_;
-      const double d = g == 73 ? profile_.peck_retract : profile_.peck_clearance;
-      double depth = h.r;  // reached so far
-      for (;;) {
-        double next = depth + dir * q;
-        if ((next - h.z) * dir >= 0) next = h.z;
-        cycle_move(h, MoveKind::line, next);
-        depth = next;
-        if (depth == h.z) break;
-        if (g == 73) {
-          cycle_move(h, MoveKind::rapid, depth - dir * d);  // back by d to break the chip
-        } else {
-          cycle_move(h, MoveKind::rapid, h.r);  // out to R, then down to d short of the last depth
-          cycle_move(h, MoveKind::rapid, depth - dir * d);
-        }
-      }
+    case 73: case 83:
+      // G73: back by d to break the chip; G83: out to R, then down to d short of the last depth
+      peck_to_bottom(h, cycle_q_, g == 73 ? profile_.peck_retract : profile_.peck_clearance, g == 83);
       cycle_move(h, MoveKind::rapid, h.back);
       break;
-    }
     case 85:
       cycle_move(h, MoveKind::line, h.z);
       cycle_move(h, MoveKind::line, h.r);
@@ -248,6 +225,31 @@ void Interpreter::drill_hole(const Hole& h) {
       break;
     default:
       alarm("NC9001", fmt::format("G{} ({}) is not supported yet", g, cycle_name(g)));
+  }
+}
+
+int Interpreter::cycle_repeat_count() {
+  const char letter = profile_.drilling.repeat_address;
+  if (!has(letter)) return 1;
+  const int repeat = integer(word(letter), "the repeat count of a canned cycle");
+  if (repeat < 0 || repeat > 9999)
+    alarm("PS0045", fmt::format("{}{} of a canned cycle: the repeat count is 0 to 9999 (the manual names no "
+                                "alarm for it; ncurve stops here)", letter, repeat),
+          word(letter).column);
+  return repeat;
+}
+
+void Interpreter::peck_to_bottom(const Hole& h, double q, double d, bool out_to_r) {
+  const double dir = h.into();
+  double depth = h.r;  // reached so far
+  for (;;) {
+    double next = depth + dir * q;
+    if ((next - h.z) * dir >= 0) next = h.z;
+    cycle_move(h, MoveKind::line, next);
+    depth = next;
+    if (depth == h.z) return;
+    if (out_to_r) cycle_move(h, MoveKind::rapid, h.r);
+    cycle_move(h, MoveKind::rapid, depth - dir * d);
   }
 }
 

@@ -170,6 +170,9 @@ private:
   bool cycle_m_done_ = false;  // they were: the block's M codes make no event after it
   void cycle_move(const Hole& h, MoveKind kind, double level);  // along the drilling axis
   void cycle_dwell();
+  // pecks of q from R to the bottom, each followed by a rapid back by d (out to R first with out_to_r)
+  void peck_to_bottom(const Hole& h, double q, double d, bool out_to_r);
+  int cycle_repeat_count();  // the block's K (or L), 1 without it; PS0045 beyond 0..9999
   void boring_hole(const Hole& h);   // G76, G87, G88
   void tapping_hole(const Hole& h);  // G84, G74, conventional and rigid
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74

@@ -69,15 +69,7 @@ bool Interpreter::lathe_drilling_block() {
     if (ms < 0) alarm("PS0011", "negative dwell time", word('P').column);
     p = ms / 1000.0;
   }
-  const char repeat_letter = profile_.drilling.repeat_address;
-  int repeat = 1;
-  if (has(repeat_letter)) {
-    repeat = integer(word(repeat_letter), "the repeat count of a canned cycle");
-    if (repeat < 0 || repeat > 9999)
-      alarm("PS0045", fmt::format("{}{} of a canned cycle: the repeat count is 0 to 9999 (the manual names no "
-                                  "alarm for it; ncurve stops here)", repeat_letter, repeat),
-            word(repeat_letter).column);
-  }
+  const int repeat = cycle_repeat_count();
 
   const AxisVector base = pos_;
   AxisVector hole = pos_;
@@ -141,7 +133,6 @@ void Interpreter::lathe_hole(const Hole& h, double q) {
   if (at != pos_) linear(MoveKind::rapid, at);
   if (cycle_clamp_m_ > 0) emit_event(MoveKind::m_code, cycle_clamp_m_);
   cycle_move(h, MoveKind::rapid, h.r);
-  const double dir = h.into();
   auto dwell = [&] {
     if (cycle_p_ > 0) cycle_dwell();
   };
@@ -151,17 +142,7 @@ void Interpreter::lathe_hole(const Hole& h, double q) {
         // No.5101#2 RTR = 0: high-speed peck, back by d = No.5114 after each cut; 1: peck, out to R
         // and back down to d = No.5115 short of the last depth
         const bool to_r = profile_.drilling.lathe_peck_to_r;
-        const double d = to_r ? profile_.peck_clearance : profile_.peck_retract;
-        double depth = h.r;
-        for (;;) {
-          double next = depth + dir * q;
-          if ((next - h.z) * dir >= 0) next = h.z;
-          cycle_move(h, MoveKind::line, next);
-          depth = next;
-          if (depth == h.z) break;
-          if (to_r) cycle_move(h, MoveKind::rapid, h.r);
-          cycle_move(h, MoveKind::rapid, depth - dir * d);
-        }
+        peck_to_bottom(h, q, to_r ? profile_.peck_clearance : profile_.peck_retract, to_r);
       } else {
         cycle_move(h, MoveKind::line, h.z);
       }

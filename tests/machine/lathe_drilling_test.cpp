@@ -136,7 +136,9 @@ TEST(LatheDrilling, NoseRadiusCompensationIsSuspendedInTheCycle) {
     if (m.line == 3 && m.is_motion()) {
       EXPECT_NEAR(m.end[0], 0, 1e-9);
       ++drilled;
-      if (m.kind == MoveKind::line) EXPECT_NEAR(m.end[2], -10, 1e-9);
+      if (m.kind == MoveKind::line) {
+        EXPECT_NEAR(m.end[2], -10, 1e-9);
+      }
     }
   EXPECT_EQ(drilled, 4);  // to X0, to R, the bottom, back to the initial level
 }
