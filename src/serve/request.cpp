@@ -76,6 +76,16 @@ void choose_profile(const ServeConfig& config, const json& j, app::RunInputs& in
   in.machine = app::find_profile(name);
 }
 
+app::RunSetup prepare(const app::RunInputs& in) {
+  try {
+    return app::prepare_run(in);
+  } catch (const std::bad_alloc&) {
+    throw;  // 507
+  } catch (const std::exception& e) {
+    throw ApiError(400, e.what());
+  }
+}
+
 app::RunInputs run_inputs(const ServeConfig& config, const json& j) {
   app::RunInputs in;
   in.text = get_string(j, "program", true);

@@ -19,6 +19,8 @@ std::optional<double> get_number(const nlohmann::json& j, const char* key);
 bool get_bool(const nlohmann::json& j, const char* key, bool otherwise);
 // program, name, machine, set, param, max_steps, max_seconds, nose_centre of a run or analyze request.
 app::RunInputs run_inputs(const ServeConfig& config, const nlohmann::json& j);
+// The profile read and the program parsed; a bad one is ApiError 400 (running out of memory is not).
+app::RunSetup prepare(const app::RunInputs& in);
 // The profile a request names: a shipped one by name, or TOML text (a file path is not taken).
 void choose_profile(const ServeConfig& config, const nlohmann::json& j, app::RunInputs& in);
 

@@ -54,14 +54,7 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
       throw ApiError(400, fmt::format("\"trace_limit\" is 1 to {}", machine::ExecutionTrace::kMaxLimit));
     trace_limit = static_cast<std::size_t>(*n);
   }
-  app::RunSetup setup;
-  try {
-    setup = app::prepare_run(in);
-  } catch (const std::bad_alloc&) {
-    throw;  // 507
-  } catch (const std::exception& e) {
-    throw ApiError(400, e.what());
-  }
+  app::RunSetup setup = prepare(in);
 
   FileTable files;
   std::optional<MoveColumns> moves;

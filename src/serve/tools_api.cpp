@@ -109,14 +109,7 @@ Answer api_analyze(const ServeConfig& config, const std::string& body) {
              "POST /api/analyze");
   const app::RunInputs in = run_inputs(config, j);
   const bool servo = get_bool(j, "servo", false);
-  app::RunSetup setup;
-  try {
-    setup = app::prepare_run(in);
-  } catch (const std::bad_alloc&) {
-    throw;  // 507
-  } catch (const std::exception& e) {
-    throw ApiError(400, e.what());
-  }
+  app::RunSetup setup = prepare(in);
   const machine::MachineProfile& profile = setup.profile;
   std::optional<motion::ServoSim> sim;
   if (servo) sim.emplace(profile);
