@@ -7,25 +7,13 @@
 'use strict';
 const {execFileSync} = require('child_process');
 const fs = require('fs');
-const os = require('os');
 const path = require('path');
+const {browser, checker, launch} = require('./harness.cjs');
 const zlib = require('zlib');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
-const chromium = process.env.NCURVE_CHROMIUM || '/usr/bin/chromium';
-if (!fs.existsSync(chromium)) {
-  console.log(`SKIPPED: no Chromium at ${chromium} (install Debian's chromium package to run the browser tests)`);
-  process.exit(77);
-}
-const {chromium: driver} = require(path.resolve(modules, 'playwright-core'));
-fs.mkdirSync(out, {recursive: true});
-
-let passed = 0, failed = 0;
-function check(ok, what) {
-  if (ok) passed++;
-  else failed++;
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-}
+const {chromium, driver} = browser(modules, out);
+const {check, counts} = checker();
 
 // runs ncurve; its standard output, whatever the exit status
 function run(args) {
@@ -126,15 +114,7 @@ async function lonelyMove(page, motions, kind) {
 }
 
 (async () => {
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'ncurve-chromium-'));
-  const context = await driver.launchPersistentContext(profile, {
-    executablePath: chromium,
-    headless: true,
-    viewport: {width: 1280, height: 800},
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-           '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-  });
+  const {context, close} = await launch(driver, chromium, {width: 1280, height: 800});
   try {
     // a mill program: the spiral
     {
@@ -300,14 +280,13 @@ async function lonelyMove(page, motions, kind) {
       await other.page.close();
     }
   } finally {
-    await context.close();
-    fs.rmSync(profile, {recursive: true, force: true});
+    await close();
   }
   console.log(`screenshots in ${out}`);
-  console.log(`${passed} passed, ${failed} failed`);
-  process.exit(failed ? 1 : 0);
+  console.log(`${counts.passed} passed, ${counts.failed} failed`);
+  process.exit(counts.failed ? 1 : 0);
 })().catch((e) => {
   console.log(`FAIL ${e.stack || e}`);
-  console.log(`${passed} passed, ${failed + 1} failed`);
+  console.log(`${counts.passed} passed, ${counts.failed + 1} failed`);
   process.exit(1);
 });

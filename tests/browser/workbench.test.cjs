@@ -7,24 +7,12 @@
 'use strict';
 const {spawn, execFileSync} = require('child_process');
 const fs = require('fs');
-const os = require('os');
 const path = require('path');
+const {browser, checker, launch} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
-const chromium = process.env.NCURVE_CHROMIUM || '/usr/bin/chromium';
-if (!fs.existsSync(chromium)) {
-  console.log(`SKIPPED: no Chromium at ${chromium} (install Debian's chromium package to run the browser tests)`);
-  process.exit(77);
-}
-const {chromium: driver} = require(path.resolve(modules, 'playwright-core'));
-fs.mkdirSync(out, {recursive: true});
-
-let passed = 0, failed = 0;
-function check(ok, what) {
-  if (ok) passed++;
-  else failed++;
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-}
+const {chromium, driver} = browser(modules, out);
+const {check, counts} = checker();
 
 const spiral = path.join(src, 'examples/spiral.nc');
 const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {encoding: 'utf8'}));
@@ -41,13 +29,7 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
     setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
   });
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'ncurve-chromium-'));
-  const context = await driver.launchPersistentContext(profile, {
-    executablePath: chromium, headless: true, viewport: {width: 1400, height: 860},
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-           '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-  });
+  const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
     const page = await context.newPage();
     page.setDefaultTimeout(60000);
@@ -168,10 +150,9 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
   } catch (e) {
     check(false, String(e && e.stack || e));
   } finally {
-    await context.close();
+    await close();
     server.kill();
-    fs.rmSync(profile, {recursive: true, force: true});
   }
-  console.log(`${passed} passed, ${failed} failed; screenshots in ${out}`);
-  process.exit(failed ? 1 : 0);
+  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
+  process.exit(counts.failed ? 1 : 0);
 })();
