@@ -6,6 +6,8 @@
 (function (global) {
   'use strict';
   const LOCALS = 33;
+  const vacant = (v) => v === null || v !== v;  // null in a JSON answer, NaN in a binary one
+  const value = (v) => (vacant(v) ? null : v);
   const key = (v, level) => (v >= 1 && v <= LOCALS ? level * 100000 + v : -v);  // locals per level; others by number
 
   function create(trace) {
@@ -37,7 +39,7 @@
       }
       for (let w = wFrom[b + 1]; w < wFrom[b + 2]; w++) {
         const k = key(W.var[w], W.level[w]);
-        if (W.new[w] === null) vars.delete(k);
+        if (vacant(W.new[w])) vars.delete(k);
         else vars.set(k, W.new[w]);
       }
     };
@@ -64,8 +66,8 @@
     // modal variable values at position k
     const modalAt = (k) => {
       const out = new Map();
-      M.variables.forEach((v, i) => out.set(v, M.initial[i]));
-      for (let c = 0; c < M.block.length && M.block[c] <= k; c++) out.set(M.var[c], M.value[c]);
+      M.variables.forEach((v, i) => out.set(v, value(M.initial[i])));
+      for (let c = 0; c < M.block.length && M.block[c] <= k; c++) out.set(M.var[c], value(M.value[c]));
       return out;
     };
     // variables written by block b (its keys), and whether one of them is v with a change
@@ -77,7 +79,7 @@
     };
     const changes = (b, v) => {
       for (let w = wFrom[b + 1]; w < wFrom[b + 2]; w++)
-        if (W.var[w] === v && W.old[w] !== W.new[w]) return true;
+        if (W.var[w] === v && value(W.old[w]) !== value(W.new[w])) return true;
       return false;
     };
 

@@ -46,9 +46,10 @@
     let r, j;
     try {
       r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
-        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, trace: $('trace').checked})});
+        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, trace: $('trace').checked,
+          format: 'binary'})});
       const t1 = performance.now();
-      j = await r.json();
+      j = await readAnswer(r);
       W.timing.request_ms = t1 - t0, W.timing.parse_ms = performance.now() - t1;
     } catch (e) {
       if (my === seq) status(`the server did not answer: ${e.message}`, 'alarm');
@@ -58,6 +59,27 @@
     if (!j.summary) { status(`${r.status}: ${j.error}`, 'alarm'); return; }
     answer = j;
     show(t0);
+  }
+  // a JSON answer, or a binary one (docs/serve.md): its JSON with each array named by offset made a
+  // typed array over the answer's bytes
+  const ARRAY_TYPES = {f64: Float64Array, u8: Uint8Array, u32: Uint32Array, i32: Int32Array};
+  async function readAnswer(r) {
+    if (!(r.headers.get('Content-Type') || '').startsWith('application/octet-stream')) return r.json();
+    const buf = await r.arrayBuffer(), dv = new DataView(buf);
+    if (buf.byteLength < 8 || dv.getUint32(0, true) !== 0x3142434e) throw new Error('not an ncurve binary answer');
+    const length = dv.getUint32(4, true), base = Math.ceil((8 + length) / 8) * 8;
+    const j = JSON.parse(new TextDecoder().decode(new Uint8Array(buf, 8, length)));
+    const resolve = (o) => {
+      for (const k of Object.keys(o)) {
+        const v = o[k];
+        if (!v || typeof v !== 'object') continue;
+        if (ARRAY_TYPES[v.type] && typeof v.offset === 'number') o[k] = new ARRAY_TYPES[v.type](buf, base + v.offset, v.count);
+        else resolve(v);
+      }
+    };
+    if (j.moves) resolve(j.moves);
+    if (j.trace) resolve(j.trace);
+    return j;
   }
   function status(text, cls) {
     $('status').textContent = text;
@@ -247,7 +269,7 @@
     if (!trace.complete) $('dbg-pos').title = trace.message || '';
     goTo(Math.min(W.pos, trace.count), true);
   }
-  const num = (v) => (v === null || v === undefined ? '<vacant>' : fmt(v, 6));
+  const num = (v) => (v === null || v === undefined || v !== v ? '<vacant>' : fmt(v, 6));
   function goTo(k, quiet) {
     if (!trace) return;
     k = Math.max(0, Math.min(trace.count, k));
