@@ -497,8 +497,8 @@
   }
   function colourLegend(info) {
     const box = $('legend');
+    if (!info.scale) { box.prepend(el('span', 'item', info.note)); return; }  // beside the kinds
     box.textContent = '';
-    if (!info.scale) { box.append(el('span', 'item', info.note)); return; }
     const S = info.scale, ticks = [0, 0.25, 0.5, 0.75, 1].map((u) => u * S.max);
     const digits = Math.max(0, 2 - Math.floor(Math.log10(S.max)));
     info.ticks = ticks.map((v) => fmt(v, digits));
