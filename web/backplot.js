@@ -1,14 +1,14 @@
 // ncurve's 3D backplot: the moves of a run as GPU line segments (one BufferGeometry per kind of
 // move), orbit / pan / zoom, standard views, axes with ticks, hover and click on a move. Used by
-// the page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js and
-// OrbitControls (Debian's libjs-three, release 111) loaded first, and nothing else.
+// the page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js,
+// OrbitControls (Debian's libjs-three, release 111) and backplot-geometry.js loaded first.
 //
 //   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
 //   const plot = NcurveBackplot.create(container, moves, {onHover(i) {}, onClick(i) {}});
 //   plot.setView('iso'); plot.highlight([3, 4]); plot.setColors(i => [255, 0, 0]); plot.setTool([x, y, z]); plot.state();
 //   plot.setReference([x0, y0, z0, x1, y1, z1, ...]);  // a curve in grey under the moves
 //
-// moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32Array (X Y Z of
+// moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32/64Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
 // Float32Array (per arc: centre X Y Z, sweep in radians counter-clockwise, plane 17/18/19),
 // block: Uint32Array (per move, its block), lathe, diameter, inch, plane, alarmAt: [X, Y, Z] | null}.
@@ -72,162 +72,89 @@
     return s === '-0' || /^-0\.0*$/.test(s) ? s.slice(1) : s;
   }
 
-  const PLANE_AXES = {17: [0, 1], 18: [2, 0], 19: [1, 2]};
-
   function create(container, moves, options) {
     options = options || {};
     const n = moves.count;
-    // machine X Y Z -> world: a lathe's Z across and X up (a rotation, so arcs keep their sense)
-    const perm = moves.lathe ? [2, 0, 1] : [0, 1, 2];  // world axis k takes machine axis perm[k]
     const worldUp = moves.lathe ? new THREE.Vector3(0, 1, 0) : new THREE.Vector3(0, 0, 1);
+    const G = global.NcurveBackplotGeometry.build(moves);
+    const {lo, hi, diag, origin, perm, toWorld, segOf, first, counts, moveCounts, total, layers} = G;
 
-    // the extents (machine axes), the arcs' points included, and the origin the floats are kept near
-    const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-    const grow = (x, y, z) => {
-      if (x < lo[0]) lo[0] = x; if (x > hi[0]) hi[0] = x;
-      if (y < lo[1]) lo[1] = y; if (y > hi[1]) hi[1] = y;
-      if (z < lo[2]) lo[2] = z; if (z > hi[2]) hi[2] = z;
-    };
-    for (let i = 0; i < n; i++) {
-      grow(moves.start[3 * i], moves.start[3 * i + 1], moves.start[3 * i + 2]);
-      grow(moves.end[3 * i], moves.end[3 * i + 1], moves.end[3 * i + 2]);
-    }
-    if (moves.alarmAt) grow(moves.alarmAt[0], moves.alarmAt[1], moves.alarmAt[2]);
-    if (!(lo[0] <= hi[0])) { lo.fill(0); hi.fill(0); }
-    // a point of arc move i at t in [0, 1], machine axes (a spiral where the radii differ, the
-    // axis normal to the plane moved linearly: a helix)
-    const S = moves.start, E = moves.end, A = moves.arcs;
-    const arc = {i: -1, p: 0, q: 1, cp: 0, cq: 0, rs: 0, re: 0, a0: 0, sweep: 0};
-    const arcPoint = (i, t, out) => {
-      const s = 3 * i;
-      if (arc.i !== i) {  // the arc's constants, once per arc
-        const a = 5 * moves.arcIndex[i], plane = PLANE_AXES[A[a + 4]] || PLANE_AXES[17], p = plane[0], q = plane[1];
-        const cp = A[a + p], cq = A[a + q];
-        const sp = S[s + p] - cp, sq = S[s + q] - cq, ep = E[s + p] - cp, eq = E[s + q] - cq;
-        arc.i = i, arc.p = p, arc.q = q, arc.cp = cp, arc.cq = cq, arc.sweep = A[a + 3];
-        arc.rs = Math.sqrt(sp * sp + sq * sq), arc.re = Math.sqrt(ep * ep + eq * eq), arc.a0 = Math.atan2(sq, sp);
-      }
-      for (let k = 0; k < 3; k++) out[k] = S[s + k] + (E[s + k] - S[s + k]) * t;
-      if (t > 0 && t < 1) {
-        const r = arc.rs + (arc.re - arc.rs) * t, ang = arc.a0 + arc.sweep * t;
-        out[arc.p] = arc.cp + r * Math.cos(ang), out[arc.q] = arc.cq + r * Math.sin(ang);
-      }
-      return out;
-    };
-    const tmp = [0, 0, 0];
-    for (let i = 0; i < n; i++)
-      if (moves.kind[i] === 2) for (let k = 1; k < 8; k++) { arcPoint(i, k / 8, tmp); grow(tmp[0], tmp[1], tmp[2]); }
-    // (the extent of arcs between those eighths is within the padding round the drawing)
-    if (Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) < 1e-6)  // no path (an alarm at once): a 10 mm box
-      for (let k = 0; k < 3; k++) lo[k] -= 5, hi[k] += 5;
-    const diag = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
-    const origin = [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2];
-    const toWorld = (m, out) => {  // machine point -> world, relative to the origin
-      out[0] = m[perm[0]] - origin[perm[0]];
-      out[1] = m[perm[1]] - origin[perm[1]];
-      out[2] = m[perm[2]] - origin[perm[2]];
-      return out;
-    };
-
-    // segments per arc: chord error within a 5000th of the extent, fewer if there would be too many
-    const segOf = new Uint16Array(n);
-    let tol = diag / 5000;
-    const arcSegments = (i) => {
-      const a = 5 * moves.arcIndex[i], plane = PLANE_AXES[A[a + 4]] || PLANE_AXES[17], p = plane[0], q = plane[1];
-      const r = Math.max(Math.hypot(S[3 * i + p] - A[a + p], S[3 * i + q] - A[a + q]), 1e-9);
-      const step = 2 * Math.acos(Math.max(-1, 1 - tol / r));
-      return Math.max(1, Math.min(720, Math.ceil(Math.abs(A[a + 3]) / Math.max(step, 1e-4)) || 1));
-    };
-    let total;
-    for (let pass = 0; pass < 6; pass++) {
-      total = 0;
-      for (let i = 0; i < n; i++) total += segOf[i] = moves.kind[i] === 2 ? arcSegments(i) : 1;
-      if (total <= Math.max(6e6, 2 * n)) break;
-      tol *= 4;
-    }
-
-    // one geometry per kind: positions, colours (by kind, or as set), pick ids, dash distances
-    const counts = [0, 0, 0], moveCounts = [0, 0, 0];
-    const first = new Uint32Array(n);  // a move's first segment in its kind's geometry
-    for (let i = 0; i < n; i++) {
-      const k = moves.kind[i];
-      first[i] = counts[k];
-      counts[k] += segOf[i];
-      moveCounts[k]++;
-    }
-    const layers = counts.map((c) => ({
-      pos: new Float32Array(6 * c), col: new Uint8Array(6 * c), pick: new Uint8Array(6 * c),
-      dist: new Float32Array(2 * c), owner: new Uint32Array(c),
-    }));
-    const w0 = [0, 0, 0], w1 = [0, 0, 0], p0 = [0, 0, 0], p1 = [0, 0, 0];
-    for (let i = 0; i < n; i++) {
-      const k = moves.kind[i], L = layers[k], segs = segOf[i], kc = KIND_COLORS[k];
-      const id = i + 1, r = id & 255, g = (id >> 8) & 255, b = (id >> 16) & 255;
-      let run = 0;
-      p0[0] = moves.start[3 * i], p0[1] = moves.start[3 * i + 1], p0[2] = moves.start[3 * i + 2];
-      for (let s = 0; s < segs; s++) {
-        if (k === 2) arcPoint(i, (s + 1) / segs, p1);
-        else p1[0] = moves.end[3 * i], p1[1] = moves.end[3 * i + 1], p1[2] = moves.end[3 * i + 2];
-        toWorld(p0, w0), toWorld(p1, w1);
-        const at = first[i] + s, v = 6 * at;
-        L.pos[v] = w0[0], L.pos[v + 1] = w0[1], L.pos[v + 2] = w0[2];
-        L.pos[v + 3] = w1[0], L.pos[v + 4] = w1[1], L.pos[v + 5] = w1[2];
-        L.col[v] = L.col[v + 3] = kc[0], L.col[v + 1] = L.col[v + 4] = kc[1], L.col[v + 2] = L.col[v + 5] = kc[2];
-        L.pick[v] = L.pick[v + 3] = r, L.pick[v + 1] = L.pick[v + 4] = g, L.pick[v + 2] = L.pick[v + 5] = b;
-        const dx = w1[0] - w0[0], dy = w1[1] - w0[1], dz = w1[2] - w0[2], len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        L.dist[2 * at] = run, L.dist[2 * at + 1] = run + len;
-        run += len;
-        L.owner[at] = i;
-        p0[0] = p1[0], p0[1] = p1[1], p0[2] = p1[2];
-      }
-    }
-
-    const scene = new THREE.Scene(), pickScene = new THREE.Scene();
+    // one set of lines per kind, in the kind's colour until setColors gives each move its own
+    const scene = new THREE.Scene();
     scene.background = new THREE.Color(0xfcfcfd);
-    const materials = [];
+    const kinds = [];  // per kind: {geometries, material, colors} or null
     const coarseLines = [];  // [full, coarse] per kind, for big paths
-    const colorAttrs = [];
     layers.forEach((L, k) => {
-      if (!L.owner.length) { colorAttrs.push(null); return; }
+      if (!L.count) { kinds.push(null); return; }
       const position = new THREE.BufferAttribute(L.pos, 3);
       const g = new THREE.BufferGeometry();
       g.setAttribute('position', position);
-      const color = new THREE.BufferAttribute(L.col, 3, true);
-      g.setAttribute('color', color);
-      colorAttrs.push(color);
+      const color = new THREE.Color(`rgb(${KIND_COLORS[k].join(',')})`);
       let m;
       if (k === 0) {
         g.setAttribute('lineDistance', new THREE.BufferAttribute(L.dist, 1));
-        m = new THREE.LineDashedMaterial({vertexColors: THREE.VertexColors, dashSize: 1, gapSize: 1});
+        m = new THREE.LineDashedMaterial({color, dashSize: 1, gapSize: 1});
       } else {
-        m = new THREE.LineBasicMaterial({vertexColors: THREE.VertexColors});
+        m = new THREE.LineBasicMaterial({color});
       }
-      materials.push(m);
       const lines = new THREE.LineSegments(g, m);
       lines.frustumCulled = false;
       lines.name = KIND_NAMES[k];
       scene.add(lines);
-      // while turning a big path on a slow GPU: every step-th segment (an index over the same buffers)
+      const kind = {geometries: [g], material: m, position, colors: null};
+      kinds.push(kind);
+      // while turning a big path on a slow GPU, and for its first frame: every step-th segment (in
+      // buffers of their own, uploaded at once); setColors copies their colours from the full ones
       const step = Math.ceil(total / 150000);
       if (step > 1) {
-        const idx = new Uint32Array(2 * Math.ceil(L.owner.length / step));
-        for (let seg = 0, o = 0; seg < L.owner.length; seg += step) idx[o++] = 2 * seg, idx[o++] = 2 * seg + 1;
+        const kept = Math.ceil(L.count / step), cpos = new Float32Array(6 * kept), cdist = k === 0 ? new Float32Array(2 * kept) : null;
+        for (let seg = 0, o = 0; seg < L.count; seg += step, o++) {
+          cpos.set(L.pos.subarray(6 * seg, 6 * seg + 6), 6 * o);
+          if (cdist) cdist[2 * o] = L.dist[2 * seg], cdist[2 * o + 1] = L.dist[2 * seg + 1];
+        }
         const cg = new THREE.BufferGeometry();
-        for (const name of Object.keys(g.attributes)) cg.setAttribute(name, g.attributes[name]);
-        cg.setIndex(new THREE.BufferAttribute(idx, 1));
+        cg.setAttribute('position', new THREE.BufferAttribute(cpos, 3));
+        if (cdist) cg.setAttribute('lineDistance', new THREE.BufferAttribute(cdist, 1));
+        cg.userData = {step};
         const coarse = new THREE.LineSegments(cg, m);
         coarse.frustumCulled = false;
         coarse.visible = false;
         scene.add(coarse);
         coarseLines.push([lines, coarse]);
+        kind.geometries.push(cg);
       }
-      const pg = new THREE.BufferGeometry();
-      pg.setAttribute('position', position);  // shared: uploaded once
-      pg.setAttribute('color', new THREE.BufferAttribute(L.pick, 3, true));
-      const pl = new THREE.LineSegments(pg, new THREE.LineBasicMaterial({vertexColors: THREE.VertexColors}));
-      pl.frustumCulled = false;
-      pickScene.add(pl);
     });
+    // the colour of each vertex, from the first setColors on
+    const vertexColors = (k) => {
+      const kind = kinds[k];
+      if (!kind.colors) {
+        kind.colors = new THREE.BufferAttribute(new Uint8Array(6 * counts[k]), 3, true);
+        kind.geometries[0].setAttribute('color', kind.colors);
+        const cg = kind.geometries[1];
+        if (cg) cg.setAttribute('color', kind.coarseColors = new THREE.BufferAttribute(
+          new Uint8Array(3 * cg.attributes.position.count), 3, true));
+        kind.material.vertexColors = THREE.VertexColors;
+        kind.material.color.set(0xffffff);
+        kind.material.needsUpdate = true;
+      }
+      return kind.colors;
+    };
+    // the pick scene (each move's number as its colour), made at the first pick
+    let pickScene = null;
+    const pickSceneNow = () => {
+      if (pickScene) return pickScene;
+      pickScene = new THREE.Scene();
+      kinds.forEach((kind, k) => {
+        if (!kind) return;
+        const pg = new THREE.BufferGeometry();
+        pg.setAttribute('position', kind.position);  // shared: uploaded once
+        pg.setAttribute('color', new THREE.BufferAttribute(G.pickColors(k), 3, true));
+        const pl = new THREE.LineSegments(pg, new THREE.LineBasicMaterial({vertexColors: THREE.VertexColors}));
+        pl.frustumCulled = false;
+        pickScene.add(pl);
+      });
+      return pickScene;
+    };
 
     let reference = null;  // setReference's line
     // the highlighted moves, drawn over the rest
@@ -327,10 +254,22 @@
     guide.add(lineSet(axisPts, 0x37474f, 1));
 
     // renderer, camera, controls
-    const renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
+    // (a renderer handed on by the plot before keeps its context and compiled shaders); no
+    // antialiasing for a big path, which would take twice as long to draw without a GPU
+    const antialias = total <= 500000;
+    let renderer = options.renderer;
+    if (renderer && renderer.getContext().getContextAttributes().antialias !== antialias) {
+      renderer.dispose();
+      renderer.forceContextLoss();
+      renderer.domElement.remove();
+      renderer = null;
+    }
+    if (!renderer) renderer = new THREE.WebGLRenderer({antialias, preserveDrawingBuffer: true});
     renderer.setPixelRatio(global.devicePixelRatio || 1);
-    container.appendChild(renderer.domElement);
+    if (renderer.domElement.parentNode !== container) container.appendChild(renderer.domElement);
     renderer.domElement.className = 'ncurve-canvas';
+    const listeners = [];
+    const listen = (target, type, fn) => { target.addEventListener(type, fn); listeners.push([target, type, fn]); };
     const overlay = document.createElement('div');
     overlay.className = 'ncurve-overlay';
     container.appendChild(overlay);
@@ -487,17 +426,26 @@
       interacting = false;
       if (coarse) useCoarse(false), requestRender();
     });
+    // a big path shows its coarse lines first, on a slow GPU long before the full ones are drawn
+    let preview = coarseLines.length > 0;
     function render() {
       pending = false;
       const now = performance.now();
       if (interacting && coarseLines.length && !coarse && lastRender && now - lastRender > 80) useCoarse(true);
+      if (preview) useCoarse(true);
       lastRender = now;
       const wpp = (camera.top - camera.bottom) / camera.zoom / Math.max(renderer.domElement.clientHeight, 1);
-      for (const m of materials) if (m.isLineDashedMaterial) m.dashSize = 6 * wpp, m.gapSize = 4 * wpp;
+      if (kinds[0]) kinds[0].material.dashSize = 6 * wpp, kinds[0].material.gapSize = 4 * wpp;
       renderer.setRenderTarget(null);
       renderer.render(scene, camera);
       placeLabels();
       if (api.onRender) api.onRender();
+      if (preview) {
+        preview = false;
+        setTimeout(() => {
+          if (!interacting) useCoarse(false), requestRender();
+        }, 0);
+      }
     }
     controls.addEventListener('change', () => {
       if (!settingView) viewName = '';  // moved by hand: no named view
@@ -517,7 +465,7 @@
       camera.setViewOffset(W, H, Math.round(x * dpr) - (PICK >> 1), Math.round(y * dpr) - (PICK >> 1), PICK, PICK);
       renderer.setRenderTarget(pickTarget);
       renderer.setClearColor(0x000000, 1);
-      renderer.render(pickScene, camera);
+      renderer.render(pickSceneNow(), camera);
       renderer.setRenderTarget(null);
       camera.clearViewOffset();
       renderer.readRenderTargetPixels(pickTarget, 0, 0, PICK, PICK, pickPixels);
@@ -542,20 +490,20 @@
     };
     let down = null, lastPointer = null, pickQueued = false;
     const el = renderer.domElement;
-    el.addEventListener('pointerdown', (e) => { down = [e.clientX, e.clientY]; setHover(-1); });
-    el.addEventListener('pointerup', (e) => {
+    listen(el, 'pointerdown', (e) => { down = [e.clientX, e.clientY]; setHover(-1); });
+    listen(el, 'pointerup', (e) => {
       if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4 && api.onClick) api.onClick(pick(e.clientX, e.clientY));
       down = null;
     });
-    el.addEventListener('pointermove', (e) => {
+    listen(el, 'pointermove', (e) => {
       if (e.buttons) return;
       lastPointer = [e.clientX, e.clientY];
       if (pickQueued) return;
       pickQueued = true;
       global.requestAnimationFrame(() => { pickQueued = false; setHover(pick(lastPointer[0], lastPointer[1])); });
     });
-    el.addEventListener('pointerleave', () => setHover(-1));
-    global.addEventListener('resize', resize);
+    listen(el, 'pointerleave', () => setHover(-1));
+    listen(global, 'resize', resize);
 
     const api = {
       onHover: options.onHover || null,
@@ -567,11 +515,19 @@
       pick,
       // colours: fn(i) -> [r, g, b] (0..255) or null for the kind's colour; no argument: by kind
       setColors(fn) {
+        const cols = kinds.map((kind, k) => (kind ? vertexColors(k) : null));
         for (let i = 0; i < n; i++) {
-          const k = moves.kind[i], c = (fn && fn(i)) || KIND_COLORS[k], col = layers[k].col;
+          const k = moves.kind[i], c = (fn && fn(i)) || KIND_COLORS[k], col = cols[k].array;
           for (let v = 6 * first[i], e = 6 * (first[i] + segOf[i]); v < e; v += 3) col[v] = c[0], col[v + 1] = c[1], col[v + 2] = c[2];
         }
-        for (const a of colorAttrs) if (a) a.needsUpdate = true;
+        kinds.forEach((kind) => {
+          if (!kind) return;
+          kind.colors.needsUpdate = true;
+          if (!kind.coarseColors) return;
+          const step = kind.geometries[1].userData.step, from = kind.colors.array, to = kind.coarseColors.array;
+          for (let seg = 0, o = 0; o < to.length; seg += step, o += 6) to.set(from.subarray(6 * seg, 6 * seg + 6), o);
+          kind.coarseColors.needsUpdate = true;
+        });
         requestRender();
       },
       // a curve drawn thin and grey under the moves (a generated program's curve): points flat, X Y Z
@@ -634,20 +590,25 @@
           camera: {position: camera.position.toArray(), zoom: camera.zoom, target: controls.target.toArray()},
         };
       },
-      dispose() {
-        global.removeEventListener('resize', resize);
+      // keepRenderer: the WebGL renderer (its canvas left in place) is returned for the next plot's
+      // options.renderer; otherwise its context is freed too
+      dispose(how) {
+        const keep = !!(how && how.keepRenderer);
+        for (const [target, type, fn] of listeners) target.removeEventListener(type, fn);
         controls.dispose();
         // free the GPU buffers and the context now, not at the next garbage collection
-        for (const s of [scene, pickScene])
+        for (const s of pickScene ? [scene, pickScene] : [scene])
           s.traverse((o) => {
             if (o.geometry) o.geometry.dispose();
             if (o.material) o.material.dispose();
           });
         pickTarget.dispose();
+        container.removeChild(overlay);
+        if (keep) return renderer;
         renderer.dispose();
         renderer.forceContextLoss();
         container.removeChild(renderer.domElement);
-        container.removeChild(overlay);
+        return null;
       },
     };
     const defaultView = moves.lathe ? 'zx' : moves.plane === 18 ? 'front' : moves.plane === 19 ? 'side' : 'iso';

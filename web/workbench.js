@@ -1,5 +1,5 @@
 // The workbench page of `ncurve serve` (docs/serve.md): the editor (wb-editor.js) runs the program
-// through POST /api/run 300 ms after each edit; the answer's moves go to the backplot
+// through POST /api/run on each edit (quick edits together); the answer's moves go to the backplot
 // (backplot.js), its diagnostics to the editor, its summary to the panel, and its trace to the
 // debugger (wb-debug.js). Every text of the program or the server goes in as textContent.
 // window.ncurveWorkbench tells a test what is shown.
@@ -15,7 +15,9 @@
   const fmt = (v, digits) => (Math.abs(v) < 1e-12 ? 0 : v).toFixed(digits === undefined ? 3 : digits).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, '') || '0';
   const DIM = [214, 219, 226];
 
-  const W = window.ncurveWorkbench = {ready: false, runs: 0, moveCount: 0, diagnostics: [], timing: {}, pos: 0, error: null};
+  const W = window.ncurveWorkbench = {ready: false, runs: 0, moveCount: 0, diagnostics: [], timing: {}, pos: 0, error: null,
+    // what is shown is the run of the text in the editor, and no run is waiting
+    settled: () => W.shownText === editor.text && !timer};
   let profiles = [], answer = null, conv = null, plot = null, trace = null, mainFile = 0, viewName = '';
   const breakpoints = new Set(), watches = [];
   let tab = 'summary', name = 'program.nc', dirtyAnalysis = true;
@@ -30,24 +32,30 @@
   });
 
   // ---- running ----
-  let timer = 0, seq = 0, inFlight = null;
+  // an edit after a quiet spell runs at once; the edits that follow it within 300 ms of each other
+  // run together 300 ms after the last
+  let timer = 0, seq = 0, inFlight = null, lastEdit = -Infinity;
   function schedule() {
     clearTimeout(timer);
-    W.timing.edit = performance.now();
-    timer = setTimeout(run, 300);
+    timer = 0;
+    const now = W.timing.edit = performance.now(), quiet = now - lastEdit > 300;
+    lastEdit = now;
+    if (quiet) run(); else timer = setTimeout(run, 300);
   }
   const profile = () => profiles.find((p) => p.name === $('machine').value) || {};
   async function run() {
     clearTimeout(timer);
+    timer = 0;
     const my = ++seq, t0 = performance.now();
     if (inFlight) inFlight.abort();
     inFlight = new AbortController();
     status('running…', '');
     let r, j;
+    // the moves first, drawn as soon as they come; the trace (Debugger) by a second request after
+    const request = {program: editor.text, name, machine: $('machine').value || undefined, format: 'binary'};
     try {
       r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
-        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, trace: $('trace').checked,
-          format: 'binary'})});
+        body: JSON.stringify(request)});
       const t1 = performance.now();
       j = await readAnswer(r);
       W.timing.request_ms = t1 - t0, W.timing.parse_ms = performance.now() - t1;
@@ -58,7 +66,37 @@
     if (my !== seq) return;
     if (!j.summary) { status(`${r.status}: ${j.error}`, 'alarm'); return; }
     answer = j;
-    show(t0);
+    answer.program = request.program;
+    const wantTrace = $('trace').checked;
+    show(t0, wantTrace);
+    if (!wantTrace) return;
+    inFlight = new AbortController();
+    let t;
+    try {
+      r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
+        body: JSON.stringify(Object.assign(request, {moves: false, trace: true}))});
+      t = await readAnswer(r);
+    } catch (e) {
+      if (my === seq) status(`the server did not answer for the trace: ${e.message}`, 'alarm');
+      return;
+    }
+    if (my !== seq) return;
+    if (t.trace) answer.trace = traceInFiles(t.trace, t.files, answer.files);
+    setupTrace();
+    W.timing.trace_ms = performance.now() - t0;
+    W.shownText = answer.program;
+    W.runs++;
+  }
+  // the trace of a second answer with its file numbers made those of the first
+  function traceInFiles(trace, from, to) {
+    const map = from.map((f) => {
+      if (!to.includes(f)) to.push(f);
+      return to.indexOf(f);
+    });
+    const file = trace.blocks.file;
+    for (let b = 0; b < file.length; b++) file[b] = map[file[b]];
+    for (const stack of trace.stacks) for (const f of stack) if (f.call_file !== undefined) f.call_file = map[f.call_file];
+    return trace;
   }
   // a JSON answer, or a binary one (docs/serve.md): its JSON with each array named by offset made a
   // typed array over the answer's bytes
@@ -67,8 +105,8 @@
     if (!(r.headers.get('Content-Type') || '').startsWith('application/octet-stream')) return r.json();
     const buf = await r.arrayBuffer(), dv = new DataView(buf);
     if (buf.byteLength < 8 || dv.getUint32(0, true) !== 0x3142434e) throw new Error('not an ncurve binary answer');
-    const length = dv.getUint32(4, true), base = Math.ceil((8 + length) / 8) * 8;
-    const j = JSON.parse(new TextDecoder().decode(new Uint8Array(buf, 8, length)));
+    const base = 8, length = dv.getUint32(4, true);
+    const j = JSON.parse(new TextDecoder().decode(new Uint8Array(buf, base + length)));
     const resolve = (o) => {
       for (const k of Object.keys(o)) {
         const v = o[k];
@@ -125,7 +163,7 @@
   }
 
   // ---- showing an answer ----
-  function show(t0) {
+  function show(t0, traceToCome) {
     const t1 = performance.now();
     const p = profile();
     mainFile = Math.max(0, answer.files.indexOf(name));
@@ -133,28 +171,30 @@
     const s = answer.summary;
     if (s.alarm) conv.alarmAt = conv.last;
     const t2 = performance.now();
-    if (plot) { viewName = plot.state().view || viewName; plot.dispose(); }
+    let renderer;
+    if (plot) { viewName = plot.state().view || viewName; renderer = plot.dispose({keepRenderer: true}); }
     plot = W.plot = NcurveBackplot.create($('plot'), conv, {
+      renderer,
       onHover, onClick,
       view: viewName || undefined,
       alarmLabel: s.alarm ? `${s.alarm.code} line ${s.alarm.line}` : '',
     });
-    plot.render();
-    const t3 = performance.now();
+    const t3 = performance.now();  // drawn at the next frame
     buildViews();
     buildLegend();
     editor.setDiagnostics(answer.diagnostics);
     showDiagnostics();
     showSummary();
-    setupTrace();
+    if (!traceToCome) setupTrace();
+    else $('dbg-pos').textContent = 'the trace is coming…';
     showLineMoves(editor.cursorLine());
     showReference();
     applyColour();
     const t4 = performance.now();
     Object.assign(W.timing, {convert_ms: t2 - t1, draw_ms: t3 - t2, panels_ms: t4 - t3, run_to_drawn_ms: t4 - t0,
-      edit_to_drawn_ms: W.timing.edit ? t4 - W.timing.edit : null});
+      edit_to_drawn_ms: W.timing.edit ? t4 - W.timing.edit : null, drawn_at: t4});
     W.timing.edit = 0;
-    W.runs++;
+    if (!traceToCome) W.shownText = answer.program, W.runs++;
     W.moveCount = conv.count;
     W.diagnostics = answer.diagnostics;
     W.summary = s;

@@ -2,6 +2,7 @@
 // execution trace.
 #include <nlohmann/json.hpp>
 
+#include <cstring>
 #include <new>
 #include <optional>
 
@@ -38,18 +39,6 @@ json diagnostics(const report::RunReport& rep) {
   if (res.alarm) out.push_back(report::diagnostic_json(*res.alarm));
   return out;
 }
-// "NCB1", the JSON's length (u32, little-endian), the JSON, spaces to a multiple of 8 bytes, the
-// arrays the JSON names by offset from there.
-std::string binary_answer(std::string_view json, const std::string& blob) {
-  const auto length = static_cast<std::uint32_t>(json.size());
-  std::string out("NCB1");
-  out.append(reinterpret_cast<const char*>(&length), sizeof length);
-  out.append(json);
-  out.resize((out.size() + 7) / 8 * 8, ' ');
-  out.append(blob);
-  return out;
-}
-
 }  // namespace
 
 Answer api_run(const ServeConfig& config, const std::string& body) {
@@ -91,8 +80,10 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
 
   fmt::memory_buffer b;
   auto it = fmt::appender(b);
-  std::string blob;
-  Columns columns{b, format == "binary" ? &blob : nullptr};
+  // a binary answer: "NCB1", the arrays' length L (u32, little-endian), the arrays, the JSON
+  std::string bytes;
+  if (format == "binary") bytes.assign("NCB1\0\0\0\0", 8);
+  Columns columns{b, format == "binary" ? &bytes : nullptr, 8};
   const bool runaway = result.alarm && result.alarm->code == "NC9000";
   b.push_back('{');
   if (runaway) fmt::format_to(it, "\"error\":{},\"status\":422,", json_string(result.alarm->message));
@@ -115,7 +106,11 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
   b.append(std::string_view("]}\n"));
   const int status = runaway ? 422 : 200;
   if (!columns.blob) return Answer{status, std::string(b.data(), b.size())};
-  return Answer{status, binary_answer(std::string_view(b.data(), b.size()), blob), "application/octet-stream"};
+  bytes.resize((bytes.size() + 7) / 8 * 8, '\0');
+  const auto length = static_cast<std::uint32_t>(bytes.size() - 8);
+  std::memcpy(bytes.data() + 4, &length, sizeof length);
+  bytes.append(b.data(), b.size());
+  return Answer{status, std::move(bytes), "application/octet-stream"};
 }
 
 }  // namespace ncurve::serve

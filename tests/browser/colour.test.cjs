@@ -107,7 +107,7 @@ fs.writeFileSync(zigzag, ['%', 'O0001', 'G90 G17 G21', 'G00 X0. Y0. Z5.', 'G01 Z
     const before = await page.evaluate(() => ncurveWorkbench.runs);
     await page.evaluate(() => ncurveWorkbench.editor.setText(ncurveWorkbench.editor.text.replace('M30', 'M05\nM30')));
     await page.click('#run');
-    await page.waitForFunction((n) => ncurveWorkbench.runs > n, before);
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
     await page.waitForTimeout(100);
     c = await colour();
     check(c.mode === 'deviation' && !c.scale && c.coloured === 0 && /edited/.test(await legend()),

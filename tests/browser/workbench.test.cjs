@@ -126,12 +126,15 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     // type an error: its mark at the right line after the re-run
     await page.click('button[data-tab="summary"]');
     const runs = w.runs;
+    await page.evaluate(() => { window.firstCanvas = ncurveWorkbench.plot.renderer.domElement; });
     const at = await page.evaluate(() => ncurveWorkbench.editor.screenOf(20, 40));
     await page.mouse.click(at.x, at.y);
     await page.keyboard.press('End');
     await page.keyboard.type(' #1=[1+');
-    await page.waitForFunction((n) => ncurveWorkbench.runs > n, runs);
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), runs);
     w = await W();
+    check(await page.evaluate(() => ncurveWorkbench.plot.renderer.domElement === firstCanvas &&
+          document.querySelectorAll('#plot canvas').length === 1), 'the re-run drew with the same WebGL canvas');
     const alarm = w.diagnostics.find((d) => d.severity === 'error');
     check(alarm && alarm.line === 20, `the alarm marks line 20 (${alarm && `${alarm.code} line ${alarm.line}: ${alarm.message}`})`);
     const mark = await page.evaluate(() => {
