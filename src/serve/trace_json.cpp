@@ -94,6 +94,13 @@ void write_trace_json(fmt::memory_buffer& b, const ExecutionTrace& t, FileTable&
   put_array(b, "var", column<std::int32_t>(m, [](const ExecutionTrace::ModalChange& r) { return r.variable; }), whole);
   b.push_back(',');
   put_array(b, "value", column<double>(m, [](const ExecutionTrace::ModalChange& r) { return r.value; }), num);
+  const auto& r = t.reads();
+  b.append(std::string_view("},\"reads\":{"));
+  put_array(b, "block", column<std::int64_t>(r, [](const ExecutionTrace::Read& x) { return x.block; }), whole);
+  b.push_back(',');
+  put_array(b, "var", column<std::int32_t>(r, [](const ExecutionTrace::Read& x) { return x.number; }), whole);
+  b.push_back(',');
+  put_array(b, "value", column<double>(r, [](const ExecutionTrace::Read& x) { return x.value; }), num);
   b.append(std::string_view("}}"));
 }
 
