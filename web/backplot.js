@@ -6,6 +6,7 @@
 //   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
 //   const plot = NcurveBackplot.create(container, moves, {onHover(i) {}, onClick(i) {}});
 //   plot.setView('iso'); plot.highlight([3, 4]); plot.setColors(i => [255, 0, 0]); plot.setTool([x, y, z]); plot.state();
+//   plot.setReference([x0, y0, z0, x1, y1, z1, ...]);  // a curve in grey under the moves
 //
 // moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
@@ -17,6 +18,7 @@
   const KIND_NAMES = ['rapid', 'feed', 'arc'];
   const KIND_COLORS = [[0xef, 0x6c, 0x00], [0x15, 0x65, 0xc0], [0x2e, 0x7d, 0x32]];
   const HIGHLIGHT = 0xd81b60;
+  const REFERENCE = 0x8f979f;  // setReference's curve
 
   function bytes(b64) {
     const bin = atob(b64 || '');
@@ -227,6 +229,7 @@
       pickScene.add(pl);
     });
 
+    let reference = null;  // setReference's line
     // the highlighted moves, drawn over the rest
     const hlGeometry = new THREE.BufferGeometry();
     const hlLines = new THREE.LineSegments(hlGeometry,
@@ -571,6 +574,33 @@
         for (const a of colorAttrs) if (a) a.needsUpdate = true;
         requestRender();
       },
+      // a curve drawn thin and grey under the moves (a generated program's curve): points flat, X Y Z
+      // each as the moves' (X as a radius on a lathe); null removes it
+      setReference(points) {
+        if (reference) {
+          scene.remove(reference);
+          reference.geometry.dispose();
+          reference.material.dispose();
+          reference = null;
+        }
+        const count = points ? Math.floor(points.length / 3) : 0;
+        if (count >= 2) {
+          const pos = new Float32Array(3 * count), p = [0, 0, 0], w = [0, 0, 0];
+          for (let i = 0; i < count; i++) {
+            p[0] = points[3 * i], p[1] = points[3 * i + 1], p[2] = points[3 * i + 2];
+            toWorld(p, w);
+            pos[3 * i] = w[0], pos[3 * i + 1] = w[1], pos[3 * i + 2] = w[2];
+          }
+          const g = new THREE.BufferGeometry();
+          g.setAttribute('position', new THREE.BufferAttribute(pos, 3));
+          // drawn first and leaving the depth alone: the moves over it cover it
+          reference = new THREE.Line(g, new THREE.LineBasicMaterial({color: REFERENCE, depthWrite: false}));
+          reference.renderOrder = -1;
+          reference.frustumCulled = false;
+          scene.add(reference);
+        }
+        requestRender();
+      },
       highlight(list) {
         hlGeometry.setAttribute('position', segmentsOf(list || []));
         requestRender();
@@ -600,6 +630,7 @@
           kinds: {rapid: moveCounts[0], feed: moveCounts[1], arc: moveCounts[2]},
           segments: {rapid: counts[0], feed: counts[1], arc: counts[2]},
           view: viewName, hovered, coarse,
+          reference: reference ? reference.geometry.attributes.position.count : 0,
           camera: {position: camera.position.toArray(), zoom: camera.zoom, target: controls.target.toArray()},
         };
       },

@@ -9,6 +9,8 @@
 (function (global) {
   'use strict';
   const LOCALS = 33;
+  const vacant = (v) => v === null || v !== v;  // null in a JSON answer, NaN in a binary one
+  const value = (v) => (vacant(v) ? null : v);
   const key = (v, level) => (v >= 1 && v <= LOCALS ? level * 100000 + v : -v);  // locals per level; others by number
 
   function create(trace) {
@@ -40,7 +42,7 @@
       }
       for (let w = wFrom[b + 1]; w < wFrom[b + 2]; w++) {
         const k = key(W.var[w], W.level[w]);
-        if (W.new[w] === null) vars.delete(k);
+        if (vacant(W.new[w])) vars.delete(k);
         else vars.set(k, W.new[w]);
       }
     };
@@ -57,11 +59,11 @@
       rFrom[n] = r;
       const last = new Map();
       for (let i = 0; i < R.block.length; i++) {
-        rNew[i] = !last.has(R.var[i]) || last.get(R.var[i]) !== R.value[i] ? 1 : 0;
-        last.set(R.var[i], R.value[i]);
+        rNew[i] = !last.has(R.var[i]) || last.get(R.var[i]) !== value(R.value[i]) ? 1 : 0;
+        last.set(R.var[i], value(R.value[i]));
       }
     }
-    const applyReads = (reads, b) => { for (let r = rFrom[b]; r < rFrom[b + 1]; r++) reads.set(R.var[r], R.value[r]); };
+    const applyReads = (reads, b) => { for (let r = rFrom[b]; r < rFrom[b + 1]; r++) reads.set(R.var[r], value(R.value[r])); };
     // snapshots every `every` positions so that any position is at most `every` blocks of work away
     const every = Math.max(64, Math.ceil(n / 200));
     const snaps = [], readSnaps = [];
@@ -95,8 +97,8 @@
     // modal variable values at position k
     const modalAt = (k) => {
       const out = new Map();
-      M.variables.forEach((v, i) => out.set(v, M.initial[i]));
-      for (let c = 0; c < M.block.length && M.block[c] <= k; c++) out.set(M.var[c], M.value[c]);
+      M.variables.forEach((v, i) => out.set(v, value(M.initial[i])));
+      for (let c = 0; c < M.block.length && M.block[c] <= k; c++) out.set(M.var[c], value(M.value[c]));
       return out;
     };
     // variables written by block b (its keys), and whether one of them is v with a change
@@ -108,7 +110,7 @@
     };
     const changes = (b, v) => {
       for (let w = wFrom[b + 1]; w < wFrom[b + 2]; w++)
-        if (W.var[w] === v && W.old[w] !== W.new[w]) return true;
+        if (W.var[w] === v && value(W.old[w]) !== value(W.new[w])) return true;
       if (b >= 0) for (let r = rFrom[b]; r < rFrom[b + 1]; r++) if (R.var[r] === v && rNew[r]) return true;
       return false;
     };

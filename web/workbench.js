@@ -12,7 +12,7 @@
     if (text !== undefined) e.textContent = text;
     return e;
   };
-  const fmt = (v, digits) => (Math.abs(v) < 1e-12 ? 0 : v).toFixed(digits === undefined ? 3 : digits).replace(/\.?0+$/, '') || '0';
+  const fmt = (v, digits) => (Math.abs(v) < 1e-12 ? 0 : v).toFixed(digits === undefined ? 3 : digits).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, '') || '0';
   const DIM = [214, 219, 226];
 
   const W = window.ncurveWorkbench = {ready: false, runs: 0, moveCount: 0, diagnostics: [], timing: {}, pos: 0, error: null};
@@ -51,9 +51,10 @@
     let r, j;
     try {
       r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
-        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, trace: $('trace').checked})});
+        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, trace: $('trace').checked,
+          format: 'binary'})});
       const t1 = performance.now();
-      j = await r.json();
+      j = await readAnswer(r);
       W.timing.request_ms = t1 - t0, W.timing.parse_ms = performance.now() - t1;
     } catch (e) {
       if (my === seq) status(`the server did not answer: ${e.message}`, 'alarm');
@@ -63,6 +64,27 @@
     if (!j.summary) { status(`${r.status}: ${j.error}`, 'alarm'); return; }
     answer = j;
     show(t0);
+  }
+  // a JSON answer, or a binary one (docs/serve.md): its JSON with each array named by offset made a
+  // typed array over the answer's bytes
+  const ARRAY_TYPES = {f64: Float64Array, u8: Uint8Array, u32: Uint32Array, i32: Int32Array};
+  async function readAnswer(r) {
+    if (!(r.headers.get('Content-Type') || '').startsWith('application/octet-stream')) return r.json();
+    const buf = await r.arrayBuffer(), dv = new DataView(buf);
+    if (buf.byteLength < 8 || dv.getUint32(0, true) !== 0x3142434e) throw new Error('not an ncurve binary answer');
+    const length = dv.getUint32(4, true), base = Math.ceil((8 + length) / 8) * 8;
+    const j = JSON.parse(new TextDecoder().decode(new Uint8Array(buf, 8, length)));
+    const resolve = (o) => {
+      for (const k of Object.keys(o)) {
+        const v = o[k];
+        if (!v || typeof v !== 'object') continue;
+        if (ARRAY_TYPES[v.type] && typeof v.offset === 'number') o[k] = new ARRAY_TYPES[v.type](buf, base + v.offset, v.count);
+        else resolve(v);
+      }
+    };
+    if (j.moves) resolve(j.moves);
+    if (j.trace) resolve(j.trace);
+    return j;
   }
   function status(text, cls) {
     $('status').textContent = text;
@@ -131,6 +153,8 @@
     showSummary();
     setupTrace();
     showLineMoves(editor.cursorLine());
+    showReference();
+    applyColour();
     const t4 = performance.now();
     Object.assign(W.timing, {convert_ms: t2 - t1, draw_ms: t3 - t2, panels_ms: t4 - t3, run_to_drawn_ms: t4 - t0,
       edit_to_drawn_ms: W.timing.edit ? t4 - W.timing.edit : null});
@@ -257,7 +281,7 @@
     if (!trace.complete) $('dbg-pos').title = trace.message || '';
     goTo(Math.min(W.pos, trace.count), true);
   }
-  const num = (v) => (v === null || v === undefined ? '<vacant>' : fmt(v, 6));
+  const num = (v) => (v === null || v === undefined || v !== v ? '<vacant>' : fmt(v, 6));
   function goTo(k, quiet) {
     if (!trace) return;
     k = Math.max(0, Math.min(trace.count, k));
@@ -407,7 +431,7 @@
     for (const p of ['summary', 'debug', 'analyze', 'gen']) $('tab-' + p).hidden = p !== t;
     if (!plot) return;
     if (t === 'debug') goTo(W.pos);
-    else { plot.setColors(); plot.setTool(null); editor.setCurrentLine(0); }
+    else { applyColour(); plot.setTool(null); editor.setCurrentLine(0); }
     if (t === 'analyze' && dirtyAnalysis) analyze();
   }
   for (const b of document.querySelectorAll('.wb-tabs button')) b.onclick = () => setTab(b.dataset.tab);
@@ -436,15 +460,130 @@
   $('gen').onclick = async () => {
     let params;
     try { params = JSON.parse($('gen-params').value || '{}'); } catch (e) { $('gen-out').textContent = 'parameters: ' + e.message; return; }
+    const machine = $('machine').value;
     const r = await fetch('/api/gen', {method: 'POST', headers: {'Content-Type': 'application/json'},
-      body: JSON.stringify({curve: $('gen-curve').value, params, tol: +$('gen-tol').value, form: $('gen-form').value})});
+      body: JSON.stringify({curve: $('gen-curve').value, params, tol: +$('gen-tol').value, form: $('gen-form').value,
+        machine: machine || undefined})});
     const g = await r.json();
     if (g.error || !g.program) { $('gen-out').textContent = g.error || 'no program'; return; }
-    $('gen-out').textContent = `${g.moves !== undefined ? g.moves + ' moves, ' : ''}generated into the editor`;
-    name = 'generated.nc';
+    $('gen-out').textContent = `max deviation ${fmt(g.max_deviation, 6)} mm (tolerance ${g.tolerance} mm), ` +
+      `${g.move_deviation.index.length} moves on the curve; the curve in grey, ${g.reference.count} points: generated into the editor`;
+    name = GENERATED;
     editor.setText(g.program);
+    genRef = {text: editor.text, machine, tol: g.tolerance, max: g.max_deviation, ref: g.reference,
+      dev: new Map(g.move_deviation.index.map((i, k) => [i, g.move_deviation.mm[k]]))};
+    setColourMode('deviation');
     run();
   };
+
+  // ---- colour: by kind, by the feed reached (POST /api/analyze "moves") or by the deviation from a
+  // generated curve (POST /api/gen); a legend with the scale ----
+  const GENERATED = 'generated.nc', GREY = [178, 184, 192];
+  const RAMP = [[59, 76, 192], [40, 160, 220], [40, 175, 90], [235, 165, 20], [200, 30, 30]];
+  let colourMode = 'kind', feeds = null, feedsWanted = null, genRef = null;
+  const ramp = (u) => {
+    u = Math.max(0, Math.min(1, u || 0)) * (RAMP.length - 1);
+    const k = Math.min(RAMP.length - 2, Math.floor(u)), f = u - k, a = RAMP[k], b = RAMP[k + 1];
+    return [0, 1, 2].map((c) => Math.round(a[c] + (b[c] - a[c]) * f));
+  };
+  function setColourMode(mode) {
+    colourMode = $('colour').value = mode;
+    applyColour();
+  }
+  $('colour').onchange = () => setColourMode($('colour').value);
+  // the generated curve in grey while the generated program (or an edit of it) is in the editor
+  function showReference() {
+    const on = genRef && name === GENERATED && genRef.machine === $('machine').value;
+    let pts = null;
+    if (on) {
+      const R = genRef.ref, xs = profile().diameter ? 0.5 : 1;
+      pts = new Float32Array(3 * R.count);
+      for (let i = 0; i < R.count; i++) pts[3 * i] = R.x[i] * xs, pts[3 * i + 1] = R.y[i], pts[3 * i + 2] = R.z[i];
+    }
+    plot.setReference(pts);
+  }
+  function feedData() {  // the feeds of the program in the editor; null while they are asked for
+    const key = editor.text + '\u0000' + $('machine').value;
+    if (feeds && feeds.key === key) return feeds;
+    if (feedsWanted !== key) {
+      feedsWanted = key;
+      fetch('/api/analyze', {method: 'POST', headers: {'Content-Type': 'application/json'},
+        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, moves: true})})
+        .then((r) => r.json()).then((a) => ({key, error: a.error || (a.moves ? '' : 'no moves'), moves: a.moves}),
+          (e) => ({key, error: e.message}))
+        .then((f) => { if (feedsWanted === key) { feeds = f, feedsWanted = null; applyColour(); } });
+    }
+    return null;
+  }
+  // colours the moves as the selector says (not while the debugger draws the path up to the tool)
+  function applyColour() {
+    if (!plot || tab === 'debug') return;
+    let info = {mode: colourMode, coloured: 0, note: ''};
+    if (colourMode === 'feed') info = colourByFeed(info);
+    else if (colourMode === 'deviation') info = colourByDeviation(info);
+    if (!info.scale) plot.setColors();
+    buildLegend();
+    if (info.scale || info.note) colourLegend(info);
+    W.colour = info;
+  }
+  function colourByFeed(info) {
+    const f = feedData();
+    if (!f) return Object.assign(info, {note: 'feed reached: computing…'});
+    const M = f.moves;
+    if (f.error || M.count !== answer.moves.count)
+      return Object.assign(info, {note: `feed reached: ${f.error || 'the cycle time run made other moves'}; coloured by kind`});
+    let top = 0;
+    for (let j = 0; j < conv.count; j++) if (conv.kind[j]) top = Math.max(top, M.feed_programmed[conv.moveOf[j]]);
+    if (!(top > 0)) return Object.assign(info, {note: 'feed reached: no moves at feed; coloured by kind'});
+    const seen = new Set();
+    let most = 0;
+    plot.setColors((j) => {
+      if (!conv.kind[j]) return GREY;
+      const v = M.feed_peak[conv.moveOf[j]], c = ramp(v / top);
+      info.coloured++, most = Math.max(most, v), seen.add(c.join());
+      return c;
+    });
+    return Object.assign(info, {scale: {title: 'feed reached (the peak of each move)', max: top, unit: 'mm/min'},
+      distinct: seen.size, most, grey: 'rapids grey'});
+  }
+  function colourByDeviation(info) {
+    const here = genRef && genRef.machine === $('machine').value && name === GENERATED;
+    if (!here) return Object.assign(info, {note: 'deviation: for a program generated in the Generate tab; coloured by kind'});
+    if (editor.text !== genRef.text)
+      return Object.assign(info, {note: 'deviation: the program was edited since it was generated; coloured by kind'});
+    const K = answer.moves.kinds, LN = K.indexOf('line'), A = K.indexOf('arc');
+    for (const i of genRef.dev.keys())
+      if (i >= answer.moves.count || (answer.moves.kind[i] !== LN && answer.moves.kind[i] !== A))
+        return Object.assign(info, {note: 'deviation: the run made other moves than gen measured; coloured by kind'});
+    const seen = new Set();
+    let most = 0;
+    plot.setColors((j) => {
+      const d = genRef.dev.get(conv.moveOf[j]);
+      if (d === undefined) return GREY;
+      const c = ramp(d / genRef.tol);
+      info.coloured++, most = Math.max(most, d), seen.add(c.join());
+      return c;
+    });
+    return Object.assign(info, {scale: {title: 'deviation from the curve', max: genRef.tol, unit: 'mm'},
+      distinct: seen.size, most, grey: 'approach, retract and rapids grey; the curve in grey under the path'});
+  }
+  function colourLegend(info) {
+    const box = $('legend');
+    if (!info.scale) { box.prepend(el('span', 'item', info.note)); return; }  // beside the kinds
+    box.textContent = '';
+    const S = info.scale, ticks = [0, 0.25, 0.5, 0.75, 1].map((u) => u * S.max);
+    const digits = Math.max(0, 2 - Math.floor(Math.log10(S.max)));
+    info.ticks = ticks.map((v) => fmt(v, digits));
+    const scale = el('span', 'wb-scale');
+    const bar = el('span', 'bar');
+    bar.style.background = `linear-gradient(to right, ${RAMP.map((c) => `rgb(${c.join(',')})`).join(', ')})`;
+    const labels = el('span', 'ticks');
+    for (const t of info.ticks) labels.append(el('span', '', t));
+    scale.append(bar, labels);
+    const most = colourMode === 'deviation' ? `max ${fmt(info.most, 6)} mm` : `highest ${fmt(info.most, 0)} mm/min`;
+    box.append(el('span', 'item', `${S.title}, ${S.unit}`), scale, el('span', 'item', most), el('span', 'hint', info.grey));
+  }
+  W.setColourMode = setColourMode;
 
   // ---- start: the profiles, the files, the first program ----
   $('run').onclick = run;

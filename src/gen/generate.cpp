@@ -108,6 +108,7 @@ Stats detail::round_trip(const std::string& text, const geom::Curve& curve, cons
   // the program runs (with a core to spare).
   struct Pass {
     std::vector<ContourMove> moves;
+    std::vector<std::size_t> index;  // of each among all the moves the program makes
     std::unique_ptr<Measurer> measurer;
     std::unique_ptr<Ahead> ahead;
   };
@@ -118,10 +119,12 @@ Stats detail::round_trip(const std::string& text, const geom::Curve& curve, cons
     bool spare_core = base::cores() > 1;
     std::vector<Pass> passes;
     std::size_t moves = 0;
+    std::size_t seen = 0;  // moves and events so far
     bool between = true;
     Keep(const geom::Curve& c, const Options& options, std::uint32_t first_line, std::uint32_t last_line)
         : curve(c), o(options), first(first_line), last(last_line) {}
     void on_move(const machine::Move& m) override {
+      const std::size_t index = seen++;
       if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
       if (m.line < first || m.line > last) {
         between = true;
@@ -140,6 +143,7 @@ Stats detail::round_trip(const std::string& text, const geom::Curve& curve, cons
       Pass& pass = passes.back();
       if (pass.ahead && pass.moves.size() == pass.moves.capacity()) pass.ahead->stop();  // the moves will move
       pass.moves.push_back(ContourMove::of(m));
+      pass.index.push_back(index);
       // a long contour (a run done, room for more): measure while the program runs
       if (spare_core && pass.moves.size() == Measurer::kRun + 1 && pass.moves.capacity() > 2 * Measurer::kRun)
         pass.ahead = std::make_unique<Ahead>(*pass.measurer, pass.moves);
@@ -173,6 +177,11 @@ Stats detail::round_trip(const std::string& text, const geom::Curve& curve, cons
   for (const auto& m : measured)
     if (m.max_deviation > s.max_deviation) s.max_deviation = m.max_deviation, s.worst_t = m.worst_t, s.worst_point = m.worst_point;
   s.passes = keep.passes.size();
+  for (std::size_t p = 0; p < keep.passes.size(); ++p) {
+    const std::vector<std::size_t>& index = keep.passes[p].index;
+    s.run_index.insert(s.run_index.end(), index.begin(), index.end());
+    s.run_deviation.insert(s.run_deviation.end(), measured[p].move_deviation.begin(), measured[p].move_deviation.end());
+  }
   report::SourceStats source = report::source_stats(lib, lib.main()->file.get());  // as `ncurve run` counts
   s.words = source.words;
   s.bytes = source.bytes;
@@ -469,6 +478,7 @@ Result generate(const geom::Curve& contour, const Options& o) {
   Options on_control = measured_o;
   for (const auto& [key, value] : r.parameters) machine::set_parameter(on_control.profile, key, value);
   r.stats = detail::round_trip(r.text, measured, on_control, e.first, e.last, e.speculation.get());
+  r.placement = axis_map(measured, measured_o);
   r.cutter_centre = std::move(cutter_centre);
   r.within_tolerance = r.stats.max_deviation <= o.tol;
   return r;

@@ -75,6 +75,13 @@ struct Stats {
   std::vector<geom::Vec3> path;
   std::vector<std::size_t> path_block;  // for each point after the first, the move that reaches it
   std::vector<std::pair<double, double>> deviation;  // (t, mm)
+  // each move's largest distance from the curve: the curve's farthest point from the move over
+  // the move's parameter interval, and the move's ends (the largest of these is max_deviation)
+  std::vector<double> move_deviation;
+  // round trip: every contour move of every pass, its index among all the moves the program makes
+  // (events included, as `ncurve run` lists them) and its move_deviation
+  std::vector<std::size_t> run_index;
+  std::vector<double> run_deviation;
   std::size_t passes = 1;    // depth passes measured (all within max_deviation; the rest is the last)
   // the moves were the fit's path as the control reads it back, measured while the program was
   // emitted and run (the same figures as measuring them afterwards)
@@ -84,6 +91,7 @@ struct Stats {
 struct Result {
   std::string text;
   std::optional<geom::Curve> cutter_centre;  // with a tool radius: the offset curve the path follows
+  AxisMap placement;  // where the measured curve (cutter_centre, else the curve) lies, mm, the last pass
   std::vector<std::pair<std::string, double>> parameters;  // to set on the control, e.g. {"6050", 102}
   std::string macro;  // cycle: its macro program alone (also at the end of text)
   Stats stats;

@@ -399,6 +399,7 @@ private:
     s.points = moves + 1;
     s.start_t = start.t;
     s.deviation.resize(moves);
+    s.move_deviation.resize(moves);
     s.path.resize(first_point.back());
     s.path_block.resize(first_point.back() - 1);
     s.path[0] = contour[0].start;
@@ -411,6 +412,8 @@ private:
         worst[k].note(at.end_distance, at.t1);
         worst[k].note(at.worst.distance, at.worst.t);
         s.deviation[i] = {at.t1, at.worst.distance};
+        const double from_curve = i > 0 ? measured[i - 1].end_distance : distance(contour[0].start, start.jet.p);
+        s.move_deviation[i] = std::max({at.worst.distance, at.end_distance, from_curve});
         if (m.arc) {
           const Vec3& from = m.start;
           const double u0 = from[plane_.u_axis] - m.centre[plane_.u_axis];

@@ -155,13 +155,9 @@ void Planner::on_move(const Move& m) {
   carry_compute_ += m.macro_statements * profile_.motion.macro_time + m.nc_blocks * profile_.motion.block_time;
   totals_.macro_statements += m.macro_statements;
   totals_.nc_blocks += m.nc_blocks;
-  if (m.is_motion() && m.length > 0) {
+  if (plans(m)) {
     add(m);
-  } else if (m.is_motion()) {
-    bool rotary = false;
-    for (int a = 3; a < machine::kAxes; ++a) rotary |= m.end[a] != m.start[a];
-    if (rotary) add(m);
-  } else {
+  } else if (!m.is_motion()) {
     // Events wait for the motion before them to end (M codes wait for FIN, G04 for in-position).
     double dwell = m.kind == MoveKind::dwell ? m.seconds : 0;
     if (!pending_.empty()) {
@@ -174,6 +170,14 @@ void Planner::on_move(const Move& m) {
   }
   while (finalize_front()) {
   }
+}
+
+bool Planner::plans(const Move& m) {
+  if (!m.is_motion()) return false;
+  if (m.length > 0) return true;
+  bool rotary = false;
+  for (int a = 3; a < machine::kAxes; ++a) rotary |= m.end[a] != m.start[a];
+  return rotary;
 }
 
 void Planner::add(const Move& m) {

@@ -75,6 +75,8 @@ public:
   using Callback = std::function<void(const BlockTime&)>;
   explicit Planner(const machine::MachineProfile& profile, Callback on_block = {});
   void on_move(const machine::Move& m) override;
+  // whether m is timed (on_block called for it): a motion of some length, or turning a rotary axis
+  static bool plans(const machine::Move& m);
   void finish();  // after the run: plans the blocks still waiting for look-ahead
   const PlanTotals& totals() const { return totals_; }
 

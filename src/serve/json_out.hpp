@@ -3,8 +3,12 @@
 #pragma once
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -36,6 +40,43 @@ void put_array(fmt::memory_buffer& b, std::string_view name, const std::vector<T
     put(values[i]);
   }
   b.push_back(']');
+}
+
+// Where an answer's arrays go: into the JSON text, or (a binary answer, docs/serve.md) into a blob
+// of little-endian arrays that the JSON names as {"type": "f64", "offset": bytes, "count": n}.
+struct Columns {
+  fmt::memory_buffer& json;
+  std::string* blob = nullptr;
+};
+
+static_assert(std::endian::native == std::endian::little, "binary answers are little-endian");
+
+template <class T, class Put>
+void put_array(Columns& out, std::string_view name, const std::vector<T>& values, Put put) {
+  if (!out.blob) return put_array(out.json, name, values, put);
+  std::string& blob = *out.blob;
+  blob.resize((blob.size() + 7) / 8 * 8, '\0');
+  const std::size_t offset = blob.size();
+  const char* type;
+  if constexpr (std::is_same_v<T, double>) type = "f64";
+  else if constexpr (std::is_same_v<T, std::uint8_t>) type = "u8";
+  else if constexpr (std::is_same_v<T, std::uint32_t>) type = "u32";
+  else if constexpr (std::is_same_v<T, std::int32_t>) type = "i32";
+  else type = "f64";  // 64-bit integers as doubles: exact to 2^53, and what JavaScript reads
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::uint8_t> || std::is_same_v<T, std::uint32_t> ||
+                std::is_same_v<T, std::int32_t>) {
+    blob.resize(offset + values.size() * sizeof(T));
+    if (!values.empty()) std::memcpy(blob.data() + offset, values.data(), values.size() * sizeof(T));
+  } else {
+    static_assert(std::is_integral_v<T> && sizeof(T) == 8, "an array type binary answers do not have");
+    blob.resize(offset + values.size() * sizeof(double));
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const auto d = static_cast<double>(values[i]);
+      std::memcpy(blob.data() + offset + i * sizeof(double), &d, sizeof d);
+    }
+  }
+  fmt::format_to(fmt::appender(out.json), "\"{}\":{{\"type\":\"{}\",\"offset\":{},\"count\":{}}}", name, type, offset,
+                 values.size());
 }
 
 // File names by index, in the order first met: {"files": [...]} of an answer.

@@ -54,7 +54,8 @@ void MoveColumns::on_move(const Move& m) {
   if (placed) last_end_ = m.end;
 }
 
-void MoveColumns::write_json(fmt::memory_buffer& b) const {
+void MoveColumns::write_json(Columns& out) const {
+  fmt::memory_buffer& b = out.json;
   auto it = fmt::appender(b);
   auto num = [&](double v) { put_number(b, v); };
   auto whole = [&](auto v) { fmt::format_to(it, "{}", static_cast<long long>(v)); };
@@ -65,49 +66,49 @@ void MoveColumns::write_json(fmt::memory_buffer& b) const {
   b.append(std::string_view("\"kinds\":["));
   for (int k = 0; k < 10; ++k) fmt::format_to(it, "{}\"{}\"", k ? "," : "", machine::to_string(static_cast<MoveKind>(k)));
   b.append(std::string_view("],"));
-  put_array(b, "kind", kind_, whole);
+  put_array(out, "kind", kind_, whole);
   b.push_back(',');
-  put_array(b, "file", file_, whole);
+  put_array(out, "file", file_, whole);
   b.push_back(',');
-  put_array(b, "line", line_, whole);
+  put_array(out, "line", line_, whole);
   const char* names[] = {"a", "b", "c"};
   auto axes = [&](const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
                   const std::vector<std::vector<double>>& abc) {
     b.push_back(',');
-    put_array(b, "x", x, num);
+    put_array(out, "x", x, num);
     b.push_back(',');
-    put_array(b, "y", y, num);
+    put_array(out, "y", y, num);
     b.push_back(',');
-    put_array(b, "z", z, num);
+    put_array(out, "z", z, num);
     for (std::size_t r = 0; r < rotary_.size(); ++r) {
       b.push_back(',');
-      put_array(b, names[rotary_[r] - 3], abc[r], num);
+      put_array(out, names[rotary_[r] - 3], abc[r], num);
     }
   };
   axes(x_, y_, z_, abc_);
   b.push_back(',');
-  put_array(b, "f", f_, num);
+  put_array(out, "f", f_, num);
   b.append(std::string_view(",\"starts\":{"));
-  put_array(b, "index", start_at_, whole);
+  put_array(out, "index", start_at_, whole);
   axes(sx_, sy_, sz_, sabc_);
   b.append(std::string_view("},\"arcs\":{"));
-  put_array(b, "index", arc_at_, whole);
+  put_array(out, "index", arc_at_, whole);
   b.push_back(',');
-  put_array(b, "cx", cx_, num);
+  put_array(out, "cx", cx_, num);
   b.push_back(',');
-  put_array(b, "cy", cy_, num);
+  put_array(out, "cy", cy_, num);
   b.push_back(',');
-  put_array(b, "cz", cz_, num);
+  put_array(out, "cz", cz_, num);
   b.push_back(',');
-  put_array(b, "plane", plane_, whole);
+  put_array(out, "plane", plane_, whole);
   b.push_back(',');
-  put_array(b, "cw", cw_, whole);
+  put_array(out, "cw", cw_, whole);
   b.push_back(',');
-  put_array(b, "sweep_deg", sweep_, num);
+  put_array(out, "sweep_deg", sweep_, num);
   b.append(std::string_view("},\"codes\":{"));
-  put_array(b, "index", code_at_, whole);
+  put_array(out, "index", code_at_, whole);
   b.push_back(',');
-  put_array(b, "code", code_, whole);
+  put_array(out, "code", code_, whole);
   b.append(std::string_view("}}"));
 }
 

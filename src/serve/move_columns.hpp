@@ -20,7 +20,7 @@ public:
   std::size_t count() const { return kind_.size(); }
   bool complete() const { return dropped_ == 0; }
   // {"count": ..., "kinds": [...], "kind": [...], "file": [...], ...} (docs/serve.md)
-  void write_json(fmt::memory_buffer& out) const;
+  void write_json(Columns& out) const;
 
 private:
   report::OutputFrame frame_;

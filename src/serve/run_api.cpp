@@ -38,16 +38,30 @@ json diagnostics(const report::RunReport& rep) {
   if (res.alarm) out.push_back(report::diagnostic_json(*res.alarm));
   return out;
 }
+// "NCB1", the JSON's length (u32, little-endian), the JSON, spaces to a multiple of 8 bytes, the
+// arrays the JSON names by offset from there.
+std::string binary_answer(std::string_view json, const std::string& blob) {
+  const auto length = static_cast<std::uint32_t>(json.size());
+  std::string out("NCB1");
+  out.append(reinterpret_cast<const char*>(&length), sizeof length);
+  out.append(json);
+  out.resize((out.size() + 7) / 8 * 8, ' ');
+  out.append(blob);
+  return out;
+}
+
 }  // namespace
 
 Answer api_run(const ServeConfig& config, const std::string& body) {
   const json j = parse_body(body);
   check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "moves",
-                 "trace", "trace_limit"},
+                 "trace", "trace_limit", "format"},
              "POST /api/run");
   const app::RunInputs in = run_inputs(config, j);
   const bool want_moves = get_bool(j, "moves", true);
   const bool want_trace = get_bool(j, "trace", false);
+  const std::string format = get_string(j, "format").value_or("json");
+  if (format != "json" && format != "binary") throw ApiError(400, "\"format\" is \"json\" or \"binary\"");
   std::size_t trace_limit = machine::ExecutionTrace::kDefaultLimit;
   if (auto n = get_number(j, "trace_limit")) {
     if (!(*n >= 1 && *n <= static_cast<double>(machine::ExecutionTrace::kMaxLimit)))
@@ -77,6 +91,8 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
 
   fmt::memory_buffer b;
   auto it = fmt::appender(b);
+  std::string blob;
+  Columns columns{b, format == "binary" ? &blob : nullptr};
   const bool runaway = result.alarm && result.alarm->code == "NC9000";
   b.push_back('{');
   if (runaway) fmt::format_to(it, "\"error\":{},\"status\":422,", json_string(result.alarm->message));
@@ -85,11 +101,11 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
                  diagnostics(rep).dump(-1, ' ', false, json::error_handler_t::replace));
   if (moves) {
     b.append(std::string_view(",\"moves\":"));
-    moves->write_json(b);
+    moves->write_json(columns);
   }
   if (trace) {
     b.append(std::string_view(",\"trace\":"));
-    write_trace_json(b, *trace, files);
+    write_trace_json(columns, *trace, files);
   }
   b.append(std::string_view(",\"files\":["));
   for (std::size_t i = 0; i < files.names().size(); ++i) {
@@ -97,7 +113,9 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
     b.append(json_string(files.names()[i]));
   }
   b.append(std::string_view("]}\n"));
-  return Answer{runaway ? 422 : 200, std::string(b.data(), b.size())};
+  const int status = runaway ? 422 : 200;
+  if (!columns.blob) return Answer{status, std::string(b.data(), b.size())};
+  return Answer{status, binary_answer(std::string_view(b.data(), b.size()), blob), "application/octet-stream"};
 }
 
 }  // namespace ncurve::serve

@@ -9,12 +9,13 @@ namespace ncurve::serve {
 
 namespace {
 
-void send(httplib::Response& res, const Answer& a) {
+void send(httplib::Response& res, Answer a) {
   res.status = a.status;
   // httplib gzips a JSON answer for a browser, which takes a minute for the 40 MB of a
   // million moves: a big answer goes uncompressed (httplib leaves a type it does not know)
   const bool big = a.body.size() > (1u << 20) && a.content_type == "application/json";
-  res.set_content(a.body, big ? "application/json; charset=utf-8" : a.content_type.c_str());
+  res.set_header("Content-Type", big ? "application/json; charset=utf-8" : a.content_type);
+  res.body = std::move(a.body);
 }
 
 // The answer of an endpoint, or the JSON error of whatever stopped it.

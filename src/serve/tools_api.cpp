@@ -13,6 +13,7 @@
 #include "report/summary.hpp"
 #include "serve/api.hpp"
 #include "serve/request.hpp"
+#include "serve/tool_columns.hpp"
 
 namespace ncurve::serve {
 
@@ -21,6 +22,7 @@ using nlohmann::json;
 namespace {
 constexpr double kMaxServoTicks = 50e6;  // as analyze --max-ticks' default
 constexpr long kMaxGenMoves = 5'000'000;
+constexpr std::size_t kMostCurvePoints = 200'000;  // /api/gen's "reference" polyline
 
 std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n"; }
 }  // namespace
@@ -100,20 +102,32 @@ Answer api_gen(const ServeConfig& config, const std::string& body) {
   }
   const std::string& program = a.macro_only ? r.macro : r.text;
   json out = app::gen_json(*job, r, &program);
-  return Answer{200, dump(out)};
+  // the curve and each move's deviation, for the page to draw (a tenth of the tolerance, with room)
+  const CurvePolyline curve = curve_polyline(r.cutter_centre ? *r.cutter_centre : job->curve, r.placement,
+                                             job->options.tol / 20, kMostCurvePoints);
+  std::string head = dump(out);  // {...}\n
+  fmt::memory_buffer b;
+  b.append(std::string_view(head).substr(0, head.rfind('}')));
+  write_gen_geometry(b, curve, r.stats, job->options.profile);
+  b.append(std::string_view("}\n"));
+  return Answer{200, std::string(b.data(), b.size())};
 }
 
 Answer api_analyze(const ServeConfig& config, const std::string& body) {
   const json j = parse_body(body);
-  check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "servo"},
+  check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "servo",
+                 "moves"},
              "POST /api/analyze");
   const app::RunInputs in = run_inputs(config, j);
   const bool servo = get_bool(j, "servo", false);
+  std::optional<FeedColumns> feeds;
+  if (get_bool(j, "moves", false)) feeds.emplace(config.max_moves);
   app::RunSetup setup = prepare(in);
   const machine::MachineProfile& profile = setup.profile;
   std::optional<motion::ServoSim> sim;
   if (servo) sim.emplace(profile);
   motion::Planner planner(profile, [&](const motion::BlockTime& b) {
+    if (feeds) feeds->planned(b);
     if (!sim) return;
     if ((b.start + b.seconds) / profile.servo.period > kMaxServoTicks)
       throw base::BoundExceeded(fmt::format("\"servo\": the program runs longer than {:.3g} servo periods ({:.4g} s of "
@@ -121,10 +135,20 @@ Answer api_analyze(const ServeConfig& config, const std::string& body) {
                                             kMaxServoTicks, kMaxServoTicks * profile.servo.period));
     sim->on_block(b);
   });
+  struct Tee final : machine::MoveSink {  // the feeds see each move before the planner times it
+    FeedColumns* feeds;
+    motion::Planner& planner;
+    Tee(FeedColumns* f, motion::Planner& p) : feeds(f), planner(p) {}
+    void on_move(const machine::Move& m) override {
+      if (feeds) feeds->made(m);
+      planner.on_move(m);
+    }
+    void stopped(const nc::Diagnostic& d) override { planner.stopped(d); }
+  } tee(feeds ? &*feeds : nullptr, planner);
   machine::Interpreter interp(profile, *setup.lib, setup.options);
   machine::RunResult result;
   try {
-    result = interp.run(planner);
+    result = interp.run(tee);
     planner.finish();
   } catch (const base::BoundExceeded& e) {
     throw ApiError(422, e.what());
@@ -138,7 +162,14 @@ Answer api_analyze(const ServeConfig& config, const std::string& body) {
     out["error"] = result.alarm->message;
     out["status"] = 422;
   }
-  return Answer{runaway ? 422 : 200, dump(out)};
+  if (!feeds) return Answer{runaway ? 422 : 200, dump(out)};
+  std::string head = dump(out);
+  fmt::memory_buffer b;
+  b.append(std::string_view(head).substr(0, head.rfind('}')));
+  b.append(std::string_view(",\"moves\":"));
+  feeds->write_json(b);
+  b.append(std::string_view("}\n"));
+  return Answer{runaway ? 422 : 200, std::string(b.data(), b.size())};
 }
 
 }  // namespace ncurve::serve

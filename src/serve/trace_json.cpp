@@ -21,7 +21,8 @@ std::vector<T> column(const auto& rows, F field) {
 
 }  // namespace
 
-void write_trace_json(fmt::memory_buffer& b, const ExecutionTrace& t, FileTable& files) {
+void write_trace_json(Columns& out, const ExecutionTrace& t, FileTable& files) {
+  fmt::memory_buffer& b = out.json;
   auto it = fmt::appender(b);
   auto num = [&](double v) {  // variables exactly as the program computed them (shortest form)
     if (std::isnan(v)) b.append(std::string_view("null"));
@@ -37,14 +38,14 @@ void write_trace_json(fmt::memory_buffer& b, const ExecutionTrace& t, FileTable&
 
   const auto& blocks = t.blocks();
   b.append(std::string_view("\"blocks\":{"));
-  put_array(b, "file", column<std::uint32_t>(blocks, [&](const ExecutionTrace::Block& r) { return file_index[r.file]; }),
+  put_array(out, "file", column<std::uint32_t>(blocks, [&](const ExecutionTrace::Block& r) { return file_index[r.file]; }),
             whole);
   b.push_back(',');
-  put_array(b, "line", column<std::uint32_t>(blocks, [](const ExecutionTrace::Block& r) { return r.line; }), whole);
+  put_array(out, "line", column<std::uint32_t>(blocks, [](const ExecutionTrace::Block& r) { return r.line; }), whole);
   b.push_back(',');
-  put_array(b, "stack", column<std::uint32_t>(blocks, [](const ExecutionTrace::Block& r) { return r.stack; }), whole);
+  put_array(out, "stack", column<std::uint32_t>(blocks, [](const ExecutionTrace::Block& r) { return r.stack; }), whole);
   b.push_back(',');
-  put_array(b, "move", column<std::uint64_t>(blocks, [](const ExecutionTrace::Block& r) { return r.first_move; }),
+  put_array(out, "move", column<std::uint64_t>(blocks, [](const ExecutionTrace::Block& r) { return r.first_move; }),
             whole);
   b.append(std::string_view("},\"stacks\":["));
   bool first_stack = true;
@@ -66,41 +67,41 @@ void write_trace_json(fmt::memory_buffer& b, const ExecutionTrace& t, FileTable&
   }
   const auto& w = t.writes();
   b.append(std::string_view("],\"writes\":{"));
-  put_array(b, "block", column<std::int64_t>(w, [](const ExecutionTrace::Write& r) { return r.block; }), whole);
+  put_array(out, "block", column<std::int64_t>(w, [](const ExecutionTrace::Write& r) { return r.block; }), whole);
   b.push_back(',');
-  put_array(b, "var", column<std::int32_t>(w, [](const ExecutionTrace::Write& r) { return r.number; }), whole);
+  put_array(out, "var", column<std::int32_t>(w, [](const ExecutionTrace::Write& r) { return r.number; }), whole);
   b.push_back(',');
-  put_array(b, "level", column<std::int32_t>(w, [](const ExecutionTrace::Write& r) { return r.level; }), whole);
+  put_array(out, "level", column<std::int32_t>(w, [](const ExecutionTrace::Write& r) { return r.level; }), whole);
   b.push_back(',');
-  put_array(b, "old", column<double>(w, [](const ExecutionTrace::Write& r) { return r.old_value; }), num);
+  put_array(out, "old", column<double>(w, [](const ExecutionTrace::Write& r) { return r.old_value; }), num);
   b.push_back(',');
-  put_array(b, "new", column<double>(w, [](const ExecutionTrace::Write& r) { return r.new_value; }), num);
+  put_array(out, "new", column<double>(w, [](const ExecutionTrace::Write& r) { return r.new_value; }), num);
   const auto& e = t.entries();
   b.append(std::string_view("},\"levels\":{"));
-  put_array(b, "block", column<std::int64_t>(e, [](const ExecutionTrace::Entry& r) { return r.block; }), whole);
+  put_array(out, "block", column<std::int64_t>(e, [](const ExecutionTrace::Entry& r) { return r.block; }), whole);
   b.push_back(',');
-  put_array(b, "level", column<std::int32_t>(e, [](const ExecutionTrace::Entry& r) { return r.level; }), whole);
+  put_array(out, "level", column<std::int32_t>(e, [](const ExecutionTrace::Entry& r) { return r.level; }), whole);
   const auto& m = t.modal_changes();
   b.append(std::string_view("},\"modal\":{"));
   std::vector<int> vars(machine::kModalVariables.begin(), machine::kModalVariables.end());
-  put_array(b, "variables", vars, whole);
+  put_array(out, "variables", vars, whole);
   b.push_back(',');
   std::vector<double> initial;
   for (const auto& v : t.initial_modal()) initial.push_back(ExecutionTrace::encode(v));
-  put_array(b, "initial", initial, num);
+  put_array(out, "initial", initial, num);
   b.push_back(',');
-  put_array(b, "block", column<std::int64_t>(m, [](const ExecutionTrace::ModalChange& r) { return r.block; }), whole);
+  put_array(out, "block", column<std::int64_t>(m, [](const ExecutionTrace::ModalChange& r) { return r.block; }), whole);
   b.push_back(',');
-  put_array(b, "var", column<std::int32_t>(m, [](const ExecutionTrace::ModalChange& r) { return r.variable; }), whole);
+  put_array(out, "var", column<std::int32_t>(m, [](const ExecutionTrace::ModalChange& r) { return r.variable; }), whole);
   b.push_back(',');
-  put_array(b, "value", column<double>(m, [](const ExecutionTrace::ModalChange& r) { return r.value; }), num);
+  put_array(out, "value", column<double>(m, [](const ExecutionTrace::ModalChange& r) { return r.value; }), num);
   const auto& r = t.reads();
   b.append(std::string_view("},\"reads\":{"));
-  put_array(b, "block", column<std::int64_t>(r, [](const ExecutionTrace::Read& x) { return x.block; }), whole);
+  put_array(out, "block", column<std::int64_t>(r, [](const ExecutionTrace::Read& x) { return x.block; }), whole);
   b.push_back(',');
-  put_array(b, "var", column<std::int32_t>(r, [](const ExecutionTrace::Read& x) { return x.number; }), whole);
+  put_array(out, "var", column<std::int32_t>(r, [](const ExecutionTrace::Read& x) { return x.number; }), whole);
   b.push_back(',');
-  put_array(b, "value", column<double>(r, [](const ExecutionTrace::Read& x) { return x.value; }), num);
+  put_array(out, "value", column<double>(r, [](const ExecutionTrace::Read& x) { return x.value; }), num);
   b.append(std::string_view("}}"));
 }
 

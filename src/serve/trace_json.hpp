@@ -5,6 +5,6 @@
 
 namespace ncurve::serve {
 
-void write_trace_json(fmt::memory_buffer& out, const machine::ExecutionTrace& trace, FileTable& files);
+void write_trace_json(Columns& out, const machine::ExecutionTrace& trace, FileTable& files);
 
 }  // namespace ncurve::serve

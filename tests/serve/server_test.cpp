@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -221,6 +223,48 @@ TEST_F(ServerTest, AnalyzeAndGen) {
   EXPECT_NE(j["program"].get<std::string>().find("M30"), std::string::npos);
   j = post("/api/gen", R"({"curve": "elipse"})", 400);
   EXPECT_NE(j["error"].get<std::string>().find("ellipse"), std::string::npos) << j;
+}
+
+// "format": "binary": the same answer with each array as little-endian bytes after the JSON.
+TEST_F(ServerTest, BinaryAnswerHoldsTheArrays) {
+  auto c = client();
+  const std::string program = "#1=2.5\nG01 X#1 Y1. F100.\nG02 X5. Y1. R1.25\n#1=#0\nM30\n";
+  auto r = c.Post("/api/run", json{{"program", program}, {"trace", true}, {"format", "binary"}}.dump(),
+                  "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200);
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/octet-stream");
+  const std::string& body = r->body;
+  ASSERT_GE(body.size(), 8u);
+  EXPECT_EQ(body.substr(0, 4), "NCB1");
+  std::uint32_t length = 0;
+  std::memcpy(&length, body.data() + 4, 4);
+  ASSERT_LE(8u + length, body.size());
+  const json j = json::parse(body.substr(8, length));
+  const std::size_t base = (8 + length + 7) / 8 * 8;
+  auto f64 = [&](const json& d) {
+    EXPECT_EQ(d["type"], "f64");
+    std::vector<double> out(d["count"].get<std::size_t>());
+    const std::size_t at = base + d["offset"].get<std::size_t>();
+    EXPECT_EQ(at % 8, 0u);
+    EXPECT_LE(at + 8 * out.size(), body.size());
+    if (!out.empty()) std::memcpy(out.data(), body.data() + at, 8 * out.size());
+    return out;
+  };
+  EXPECT_EQ(j["summary"]["ok"], true);
+  const json& m = j["moves"];
+  EXPECT_EQ(m["count"], 3);  // the line, the arc, M30
+  EXPECT_EQ(f64(m["x"]), (std::vector<double>{2.5, 5.0, 5.0}));
+  EXPECT_EQ(f64(m["arcs"]["cx"]), std::vector<double>{3.75});  // R1.25 over the 2.5 mm chord: a half circle
+  const json& kind = m["kind"];
+  EXPECT_EQ(kind["type"], "u8");
+  EXPECT_EQ(body[base + kind["offset"].get<std::size_t>() + 1], 2);  // "kinds"[2] is "arc"
+  const std::vector<double> written = f64(j["trace"]["writes"]["new"]);
+  ASSERT_EQ(written.size(), 2u);
+  EXPECT_EQ(written[0], 2.5);
+  EXPECT_TRUE(std::isnan(written[1]));  // vacant: NaN where the JSON says null
+  json bad = post("/api/run", R"({"program": "M30\n", "format": "xml"})", 400);
+  EXPECT_NE(bad["error"].get<std::string>().find("format"), std::string::npos);
 }
 
 }  // namespace
