@@ -2,7 +2,10 @@
 // the variables, call stack and modal state at any executed block rebuilt from what each block
 // changed, and the search for the next or previous breakpoint (a line, or a write that changes a
 // watched variable), forwards or backwards. No re-run: everything comes from the trace.
-//   const t = NcurveTrace.create(trace);  t.at(k) -> {block, line, file, stack, vars, changed, modal, move}
+// The system variables the program read are shown with the value each read last.
+//   const t = NcurveTrace.create(trace);  t.at(k) -> {block, line, file, stack, vars, changed, modal, move,
+//                                                     reads, readNow, readChanged}
+//   NcurveTrace.systemName(5021, profile) -> 'machine X' (docs/run.md's table; '' where it has none)
 (function (global) {
   'use strict';
   const LOCALS = 33;
@@ -43,17 +46,45 @@
         else vars.set(k, W.new[w]);
       }
     };
-    // snapshots every `every` positions so that any position is at most `every` blocks of work away
-    const every = Math.max(64, Math.ceil(n / 200));
-    const snaps = [];
+    // system variables read: those of block b are rFrom[b] .. rFrom[b + 1] - 1; rNew[r]: read r got a
+    // value other than the read of its variable before it (or is its first)
+    const R = trace.reads || {block: [], var: [], value: []};
+    const rFrom = new Int32Array(n + 1), rNew = new Uint8Array(R.block.length);
     {
-      const vars = new Map();
-      apply(vars, -1);
-      for (let k = 0; k <= n; k++) {
-        if (k % every === 0) snaps.push(new Map(vars));
-        if (k < n) apply(vars, k);
+      let r = 0;
+      for (let b = 0; b < n; b++) {
+        rFrom[b] = r;
+        while (r < R.block.length && R.block[r] === b) r++;
+      }
+      rFrom[n] = r;
+      const last = new Map();
+      for (let i = 0; i < R.block.length; i++) {
+        rNew[i] = !last.has(R.var[i]) || last.get(R.var[i]) !== value(R.value[i]) ? 1 : 0;
+        last.set(R.var[i], value(R.value[i]));
       }
     }
+    const applyReads = (reads, b) => { for (let r = rFrom[b]; r < rFrom[b + 1]; r++) reads.set(R.var[r], value(R.value[r])); };
+    // snapshots every `every` positions so that any position is at most `every` blocks of work away
+    const every = Math.max(64, Math.ceil(n / 200));
+    const snaps = [], readSnaps = [];
+    {
+      const vars = new Map(), reads = new Map();
+      apply(vars, -1);
+      for (let k = 0; k <= n; k++) {
+        if (k % every === 0) snaps.push(new Map(vars)), readSnaps.push(new Map(reads));
+        if (k < n) apply(vars, k), applyReads(reads, k);
+      }
+    }
+    // the value each system variable read before position k got at its last read (a Map var -> value)
+    let readCache = {k: -1, reads: null};
+    const readsAt = (k) => {
+      let reads, from;
+      if (readCache.k >= 0 && readCache.k <= k && k - readCache.k <= every) reads = new Map(readCache.reads), from = readCache.k;
+      else reads = new Map(readSnaps[Math.floor(k / every)]), from = Math.floor(k / every) * every;
+      for (let b = from; b < k; b++) applyReads(reads, b);
+      readCache = {k, reads};
+      return reads;
+    };
     let cache = {k: -1, vars: null};
     const varsAt = (k) => {
       let vars, from;
@@ -80,6 +111,7 @@
     const changes = (b, v) => {
       for (let w = wFrom[b + 1]; w < wFrom[b + 2]; w++)
         if (W.var[w] === v && value(W.old[w]) !== value(W.new[w])) return true;
+      if (b >= 0) for (let r = rFrom[b]; r < rFrom[b + 1]; r++) if (R.var[r] === v && rNew[r]) return true;
       return false;
     };
 
@@ -91,7 +123,12 @@
         const vars = varsAt(k);
         const changed = new Set();
         for (const w of writesOf(k - 1)) changed.add(key(W.var[w], W.level[w]));
+        // the system variables read by the block just run; changed: the value differs from before it
+        const before = k > 0 ? readsAt(k - 1) : new Map(), reads = readsAt(k), readNow = new Set(), readChanged = new Set();
+        if (k > 0) for (let r = rFrom[k - 1]; r < rFrom[k]; r++) readNow.add(R.var[r]);
+        for (const v of readNow) if (!before.has(v) || before.get(v) !== reads.get(v)) readChanged.add(v);
         return {
+          reads, readNow, readChanged,
           k, block: k < n ? k : -1, line: k < n ? B.line[k] : 0, file: k < n ? B.file[k] : -1,
           stack: trace.stacks[B.stack[Math.min(k, n - 1)]] || [], vars, changed, modal: modalAt(k),
           move: k < n ? B.move[k] : trace.moves,
@@ -109,5 +146,50 @@
     };
   }
 
-  global.NcurveTrace = {create};
+  // The name of system variable v on profile p ({lathe, axes, offset_memory} of GET /api/profiles), as
+  // docs/run.md's table of the system variables has it; '' where it gives none.
+  function systemName(v, p) {
+    p = p || {};
+    const axes = p.axes || 'XYZ', axis = (k) => axes[k] || '';
+    const inRange = (a, b) => v >= a && v <= b;
+    if (inRange(1000, 1035)) return 'interface input';
+    if (inRange(1100, 1135)) return 'interface output';
+    if (p.lathe && inRange(2001, 2964) && (v - 2000) % 100 >= 1 && (v - 2000) % 100 <= 64) {
+      const set = (v - 2000) % 100, what = ['X wear', 'Z wear', 'nose R wear', 'tip', '', '', '', 'X geometry', 'Z geometry', 'nose R geometry'];
+      const w = what[Math.floor((v - 2001) / 100)];
+      return w ? `${w}, offset ${set}` : '';
+    }
+    if (!p.lathe) {
+      const mem = p.offset_memory || 'A';
+      const ranges = [[2001, 2200, 0], [10001, 10999, 0], [2201, 2400, 1], [11001, 11999, 1], [12001, 12999, 2], [13001, 13999, 3]];
+      for (const [a, b, kind] of ranges) {
+        if (!inRange(a, b)) continue;
+        const k = v - a + 1;
+        if (mem === 'A') return kind === 0 ? `tool offset ${k}` : '';
+        if (mem === 'B') return kind === 0 ? `wear, offset ${k}` : kind === 1 ? `geometry, offset ${k}` : '';
+        return [`H wear ${k}`, `H geometry ${k}`, `D wear ${k}`, `D geometry ${k}`][kind];
+      }
+    }
+    const fixed = {3000: 'alarm', 3001: 'timer (ms)', 3002: 'timer (h)', 3003: 'single block, wait', 3004: 'feed hold, override, exact stop',
+      3005: 'settings', 3006: 'stop with message', 3011: 'date', 3012: 'time', 3901: 'parts machined', 3902: 'parts required',
+      4107: 'D', 4109: 'F', 4111: 'H', 4113: 'M', 4114: 'sequence number', 4115: 'program number', 4119: 'S', 4120: 'T',
+      4130: 'G54.1 P'};
+    if (fixed[v]) return fixed[v];
+    if (inRange(4001, 4022)) return `G group ${v - 4000}`;
+    if (inRange(5001, 5120)) {
+      const a = axis((v - 5001) % 20), kind = ['end point', 'machine', 'current', 'skip', 'tool length offset', 'servo deviation'];
+      return a ? `${kind[Math.floor((v - 5001) / 20)]} ${a}` : '';
+    }
+    if (inRange(5201, 5340)) {
+      const a = axis((v - 5201) % 20), set = Math.floor((v - 5201) / 20);
+      return a ? `${set ? `G${53 + set}` : 'external'} offset ${a}` : '';
+    }
+    if (inRange(7001, 7960)) {
+      const a = axis((v - 7001) % 20);
+      return a ? `G54.1 P${Math.floor((v - 7001) / 20) + 1} offset ${a}` : '';
+    }
+    return '';
+  }
+
+  global.NcurveTrace = {create, systemName};
 })(window);

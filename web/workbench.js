@@ -43,6 +43,11 @@
     if (quiet) run(); else timer = setTimeout(run, 300);
   }
   const profile = () => profiles.find((p) => p.name === $('machine').value) || {};
+  // serve --machine FILE (not a shipped profile): the first choice, sent as no "machine" at all
+  function serverProfile(p) {
+    profiles.push(Object.assign({}, p, {name: ''}));
+    $('machine').add(new Option(`${p.path} — ${p.title || p.error} (serve --machine)`, '', true, true), 0);
+  }
   async function run() {
     clearTimeout(timer);
     timer = 0;
@@ -244,11 +249,16 @@
     const where = `${answer.files[f] || '?'} line ${line}`;
     tip.append(el('div', 'where', where));
     if (f === mainFile) tip.append(el('code', 'block', editor.lineText(line)));
-    const e = [conv.end[3 * i], conv.end[3 * i + 1], conv.end[3 * i + 2]].map((v) => fmt(v));
-    tip.append(el('div', 'what', `move ${conv.moveOf[i] + 1} · ${kindName(i)}${conv.kind[i] ? ' F' + fmt(conv.feed[i]) : ''} · to X${e[0]} Y${e[1]} Z${e[2]}`));
+    tip.append(el('div', 'what', `move ${conv.moveOf[i] + 1} · ${kindName(i)}${conv.kind[i] ? ' F' + fmt(conv.feed[i]) : ''} · to ${endText(i)}`));
     tip.hidden = false;
     tip.style.left = '10px';
     tip.style.top = '52px';
+  }
+  // a move's end as the program writes it: a lathe's X and Z (X a diameter where programmed so)
+  function endText(i) {
+    const e = [conv.end[3 * i], conv.end[3 * i + 1], conv.end[3 * i + 2]];
+    if (conv.lathe) return `X${fmt(conv.diameter ? 2 * e[0] : e[0])} Z${fmt(e[2])}`;
+    return `X${fmt(e[0])} Y${fmt(e[1])} Z${fmt(e[2])}`;
   }
   function onClick(i) {
     W.clicked = i;
@@ -340,7 +350,8 @@
     const G = [], other = [];
     const letters = {4107: 'D', 4109: 'F', 4111: 'H', 4113: 'M', 4119: 'S', 4120: 'T'};
     for (const [v, val] of st.modal) {
-      if (v <= 4022) { if (val !== null) G.push(`G${fmt(val, 1)}`); } else other.push(`${letters[v]}${num(val)}`);
+      // (0 is G00 in group 1 only: a group the control gives no code reads 0)
+      if (v <= 4022) { if (val !== null && (val !== 0 || v === 4001)) G.push(`G${fmt(val, 1)}`); } else other.push(`${letters[v]}${num(val)}`);
     }
     $('dbg-modal').textContent = G.join(' ') + '\n' + other.join(' ');
     $('dbg-modal').style.whiteSpace = 'pre-wrap';
@@ -374,11 +385,33 @@
     const keys = new Set([...st.vars.keys(), ...st.changed]);
     for (const key of [...keys].filter((x) => x < 0).sort((a, b) => b - a)) {
       const v = -key;
-      ((v >= 100 && v <= 199) || (v >= 500 && v <= 999) ? common : system).push([`#${v}`, key]);
+      if ((v >= 100 && v <= 199) || (v >= 500 && v <= 999)) common.push([`#${v}`, key]);
+      else system.push([`#${v} ${NcurveTrace.systemName(v, profile())}`.trim(), key]);
     }
     rows('common variables', common);
     rows('system variables written', system);
+    showReads(st, table);
     W.vars = Object.fromEntries([...st.vars].map(([key, v]) => [key < 0 ? `#${-key}` : `L${Math.floor(key / 100000)}#${key % 100000}`, v]));
+  }
+  // the system variables the program has read so far, each with the value it read last; those the
+  // block just run read in yellow when the value differs from the step before
+  function showReads(st, table) {
+    W.reads = Object.fromEntries([...st.reads].map(([v, x]) => [`#${v}`, x]));
+    W.readChanged = [...st.readChanged].map((v) => `#${v}`);
+    if (!st.reads.size) return;
+    const h = el('tr'), th = el('th', '', 'system variables read (value at the last read)');
+    th.colSpan = 2;
+    h.append(th);
+    table.append(h);
+    const p = profile();
+    for (const v of [...st.reads.keys()].sort((a, b) => a - b)) {
+      const tr = el('tr', st.readChanged.has(v) ? 'changed' : st.readNow.has(v) ? 'read' : '');
+      tr.dataset.sys = v;
+      const label = el('td', '', `#${v}`), what = NcurveTrace.systemName(v, p);
+      if (what) label.append(el('span', 'what', ` ${what}`));
+      tr.append(label, el('td', '', num(st.reads.get(v))));
+      table.append(tr);
+    }
   }
   const step = (d) => goTo(W.pos + d);
   const seek = (dir) => {
@@ -413,6 +446,23 @@
   };
   $('watch-var').addEventListener('keydown', (e) => { if (e.key === 'Enter') $('watch-add').click(); });
   W.goTo = goTo;
+  // keys, with the Debugger tab open: F10 / Shift+F10 one block on / back and F5 / Shift+F5 on to the
+  // next / back to the previous breakpoint anywhere (the editor too); ← → Home End elsewhere than in
+  // the editor and the text fields (the slider moves itself on them)
+  document.addEventListener('keydown', (e) => {
+    if (tab !== 'debug' || !trace || e.ctrlKey || e.altKey || e.metaKey) return;
+    const t = e.target instanceof Element ? e.target : null;
+    const typing = t && t.closest('textarea, select, input:not([type=range]), [contenteditable]');
+    let act = null;
+    if (e.key === 'F10') act = () => step(e.shiftKey ? -1 : 1);
+    else if (e.key === 'F5') act = () => seek(e.shiftKey ? -1 : 1);
+    else if (!typing && !e.shiftKey && !(t && t.id === 'dbg-slider')) {
+      act = {ArrowRight: () => step(1), ArrowLeft: () => step(-1), Home: () => goTo(0), End: () => goTo(Infinity)}[e.key] || null;
+    }
+    if (!act) return;
+    e.preventDefault();
+    act();
+  });
 
   // ---- tabs, analyze, generate ----
   function setTab(t) {
@@ -595,6 +645,7 @@
       const [pj, fj] = await Promise.all([fetch('/api/profiles').then((r) => r.json()), fetch('/api/files').then((r) => r.json())]);
       profiles = pj.profiles;
       for (const p of profiles) $('machine').add(new Option(`${p.name} — ${p.title}`, p.name, false, p.name === (pj.default || 'fanuc-mill')));
+      if (pj.server && !profiles.some((p) => p.name === pj.default)) serverProfile(pj.server);
       for (const f of fj.files) $('file').add(new Option(f.name, f.name));
       if (!fj.files.length) $('file').add(new Option('spiral.nc (example)', ''));
       await open(fj.files.length ? fj.files[0].name : '');

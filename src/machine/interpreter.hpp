@@ -346,10 +346,12 @@ private:
   ExecutionObserver* observer_ = nullptr;
   ModalState observed_modal_{};  // the modal state the observer was last given
   bool modal_stale_ = true;      // an NC block ran since it was read
+  bool shape_read_ = false;      // G71..G73 reading their shape: its blocks are the cycle block's
   void observe_block(const nc::Block& b);
   void observe_call(const Frame& f);
   void observe_repeat(const Frame& f);  // a repeated macro call's locals back to its arguments
   void observed_write(int n, nc::Value v, std::uint16_t column);
+  nc::Value observed_read(int n, std::uint16_t column);  // a system variable the program reads
   std::uint64_t moves_delivered() const;
   ModalState modal_state();
   std::vector<const nc::Program*> reached_;  // programs of other files entered so far (their warnings given)

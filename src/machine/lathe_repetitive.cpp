@@ -184,8 +184,10 @@ std::vector<Move> Interpreter::walk_shape(const ShapeRange& r, int g, bool keep)
   if (keep) shape_moves_ = &moves;
   struct Stop {  // shape_moves_ must not outlive `moves`, even on an alarm
     std::vector<Move>*& p;
-    ~Stop() { p = nullptr; }
-  } stop{shape_moves_};
+    bool& read;
+    ~Stop() { p = nullptr, read = false; }
+  } stop{shape_moves_, shape_read_};
+  shape_read_ = keep;  // (an observer sees the cycle block make the roughing, not the shape's blocks)
   frames_.back().pc = r.first;
   for (bool first = true;;) {
     const std::int32_t at = frames_.back().pc;

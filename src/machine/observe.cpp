@@ -29,6 +29,7 @@ ModalState Interpreter::modal_state() {
 
 // Only an NC block changes the modal state: after a macro statement the state read before stands.
 void Interpreter::observe_block(const nc::Block& b) {
+  if (shape_read_) return;
   if (modal_stale_) observed_modal_ = modal_state();
   modal_stale_ = b.kind == nc::Statement::nc;
   observer_->block(*prog_, b, moves_delivered(), observed_modal_);
@@ -79,6 +80,12 @@ void Interpreter::observed_write(int n, Value v, std::uint16_t column) {
     write_var(n, v, column);
   }
   observer->variable(n, level, old, v);
+}
+
+Value Interpreter::observed_read(int n, std::uint16_t column) {
+  const Value v = read_system(n, column);  // (an alarm on reading is not a read)
+  observer_->read(n, v);
+  return v;
 }
 
 }  // namespace ncurve::machine

@@ -1,6 +1,7 @@
 // What the interpreter tells an observer while it runs (the debugger's execution trace): each
-// block as it starts, each call and return, each variable written. Off (no observer) it costs a
-// test of one pointer per block and per variable write.
+// block as it starts, each call and return, each variable written, each system variable read. Off
+// (no observer) it costs a test of one pointer per block, per variable write and per system
+// variable read.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -43,6 +44,8 @@ public:
   virtual void left() = 0;
   // Variable #number was written (level: the local level for #1..#33, -1 otherwise).
   virtual void variable(int number, std::int32_t level, nc::Value old, nc::Value now) = 0;
+  // The program read system variable #number (not a local or common) and got `value`.
+  virtual void read(int /*number*/, nc::Value /*value*/) {}
   // The run ended (completed or alarmed) after `moves` moves, in this modal state.
   virtual void finished(std::uint64_t moves, const ModalState& modal) = 0;
 };

@@ -13,7 +13,7 @@ bool same(const nc::Value& a, const nc::Value& b) { return a.vacant == b.vacant 
 std::string ExecutionTrace::limit_message() const {
   if (complete_) return {};
   return fmt::format("the trace holds the first {} of the {} blocks executed: it keeps at most {} records (blocks, "
-                     "variable writes and modal changes; raise trace_limit, at most {})",
+                     "variable writes, modal changes and system variable reads; raise trace_limit, at most {})",
                      blocks_.size(), executed_, limit_, kMaxLimit);
 }
 
@@ -27,6 +27,7 @@ bool ExecutionTrace::room(std::size_t more, bool mid_block) {
     std::erase_if(writes_, [&](const Write& w) { return w.block == last; });
     std::erase_if(entries_, [&](const Entry& e) { return e.block == last; });
     std::erase_if(modal_, [&](const ModalChange& m) { return m.block == last; });
+    std::erase_if(reads_, [&](const Read& r) { return r.block == last; });
     blocks_.pop_back();
   }
   return false;
@@ -73,6 +74,20 @@ void ExecutionTrace::left() {
 void ExecutionTrace::variable(int number, std::int32_t level, nc::Value old, nc::Value now) {
   if (!room(1, true)) return;
   writes_.push_back({static_cast<std::int64_t>(blocks_.size()) - 1, number, level, encode(old), encode(now)});
+}
+
+void ExecutionTrace::read(int number, nc::Value value) {
+  if (blocks_.empty() || !complete_) return;
+  const auto block = static_cast<std::int64_t>(blocks_.size()) - 1;
+  const double v = encode(value);
+  // a variable read twice in one block with the same value (#1=#5001+#5001) is one record
+  for (auto it = reads_.rbegin(); it != reads_.rend() && it->block == block; ++it)
+    if (it->number == number) {
+      if (it->value == v || (std::isnan(it->value) && std::isnan(v))) return;
+      break;
+    }
+  if (!room(1, true)) return;
+  reads_.push_back({block, number, v});
 }
 
 void ExecutionTrace::finished(std::uint64_t moves, const ModalState& modal) {

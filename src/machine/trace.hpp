@@ -14,8 +14,8 @@ namespace ncurve::machine {
 
 class ExecutionTrace final : public ExecutionObserver {
 public:
-  // The most records kept (executed blocks, variable writes, level entries and modal changes
-  // together, about 32 bytes each): past it the trace stops, whole blocks only, and says so.
+  // The most records kept (executed blocks, variable writes, level entries, modal changes and
+  // system variable reads together, about 32 bytes each): past it the trace stops, whole blocks only, and says so.
   static constexpr std::size_t kDefaultLimit = 2'000'000;
   static constexpr std::size_t kMaxLimit = 20'000'000;
   explicit ExecutionTrace(std::size_t limit = kDefaultLimit) : limit_(limit) {}
@@ -32,6 +32,13 @@ public:
     std::int32_t number = 0;
     std::int32_t level = -1;  // local level for #1..#33, else -1
     double old_value = 0, new_value = 0;
+  };
+  // A system variable the program read (#1000.., offsets, positions ...) and the value it got;
+  // the same value read again in the same block is kept once.
+  struct Read {
+    std::int64_t block = 0;
+    std::int32_t number = 0;
+    double value = 0;  // NaN: vacant
   };
   // A macro call made this local level anew (all 33 vacant) before the block's writes.
   struct Entry {
@@ -52,6 +59,7 @@ public:
   const std::vector<Block>& blocks() const { return blocks_; }
   const std::vector<Write>& writes() const { return writes_; }
   const std::vector<Entry>& entries() const { return entries_; }
+  const std::vector<Read>& reads() const { return reads_; }
   const ModalState& initial_modal() const { return initial_modal_; }
   const std::vector<ModalChange>& modal_changes() const { return modal_; }
   std::uint64_t total_moves() const { return total_moves_; }
@@ -64,12 +72,15 @@ public:
   void entered(const CallFrame& frame) override;
   void left() override;
   void variable(int number, std::int32_t level, nc::Value old, nc::Value now) override;
+  void read(int number, nc::Value value) override;
   void finished(std::uint64_t moves, const ModalState& modal) override;
 
 private:
   bool room(std::size_t more, bool mid_block);  // false past the limit (the trace then ends with whole blocks)
   void note_modal(std::int64_t block, const ModalState& modal);
-  std::size_t records() const { return blocks_.size() + writes_.size() + entries_.size() + modal_.size(); }
+  std::size_t records() const {
+    return blocks_.size() + writes_.size() + entries_.size() + modal_.size() + reads_.size();
+  }
 
   std::size_t limit_;
   bool complete_ = true;
@@ -80,6 +91,7 @@ private:
   std::vector<Block> blocks_;
   std::vector<Write> writes_;
   std::vector<Entry> entries_;
+  std::vector<Read> reads_;
   std::vector<ModalChange> modal_;
   ModalState initial_modal_{};
   ModalState modal_now_{};

@@ -45,12 +45,14 @@ double Interpreter::program_units(int axis, double mm) const {
   return v;
 }
 
-nc::Value Interpreter::variable(int number) { return read_var(number, 0); }
+// (a look from outside the run: not a read of the program's, so not told to the observer)
+nc::Value Interpreter::variable(int number) { return number >= 1000 ? read_system(number, 0) : read_var(number, 0); }
 
 Value Interpreter::read_var(int n, std::uint16_t column) {
   if (n >= 1 && n <= 33) return locals_[frames_.empty() ? 0 : frames_.back().level][n - 1];
   if ((n >= 100 && n <= common_high_) || (n >= 500 && n <= 999)) return common_[n];
   if (n == 0) return Value{};
+  if (observer_) [[unlikely]] return observed_read(n, column);
   return read_system(n, column);
 }
 

@@ -21,21 +21,39 @@ std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_hand
 }  // namespace
 
 Answer api_profiles(const ServeConfig& config) {
-  json list = json::array();
-  for (const std::string& name : app::shipped_profiles()) {
-    json p{{"name", name}};
+  auto describe = [](json& p, const std::string& path) {
     try {
-      const machine::MachineProfile profile = machine::load_profile(app::find_profile(name));
+      const machine::MachineProfile profile = machine::load_profile(path);
       p["title"] = profile.name;
       p["lathe"] = profile.lathe();
       p["diameter"] = profile.lathe() && profile.diameter_x;
       p["axes"] = profile.axes;
+      p["offset_memory"] = std::string(1, static_cast<char>('A' + static_cast<int>(profile.offset_memory)));
     } catch (const std::exception& e) {
       p["error"] = e.what();
     }
+  };
+  json list = json::array();
+  json fallback = config.machine.empty() ? json(nullptr) : json(config.machine);
+  for (const std::string& name : app::shipped_profiles()) {
+    json p{{"name", name}};
+    std::string path;
+    try {
+      path = app::find_profile(name);
+    } catch (const std::exception&) {  // (described below as an error)
+    }
+    describe(p, path);
+    std::error_code ec;  // --machine arrives as a path: the page selects the shipped profile by name
+    if (!config.machine.empty() && fs::equivalent(path, config.machine, ec)) fallback = name;
     list.push_back(p);
   }
-  return Answer{200, dump(json{{"profiles", list}, {"default", config.machine.empty() ? json(nullptr) : json(config.machine)}})};
+  json out{{"profiles", list}, {"default", fallback}};
+  if (!config.machine.empty()) {  // what a request that names no profile runs on
+    json server{{"path", config.machine}};
+    describe(server, config.machine);
+    out["server"] = server;
+  }
+  return Answer{200, dump(out)};
 }
 
 Answer api_files(const ServeConfig& config) {

@@ -95,6 +95,13 @@ void write_trace_json(Columns& out, const ExecutionTrace& t, FileTable& files) {
   put_array(out, "var", column<std::int32_t>(m, [](const ExecutionTrace::ModalChange& r) { return r.variable; }), whole);
   b.push_back(',');
   put_array(out, "value", column<double>(m, [](const ExecutionTrace::ModalChange& r) { return r.value; }), num);
+  const auto& r = t.reads();
+  b.append(std::string_view("},\"reads\":{"));
+  put_array(out, "block", column<std::int64_t>(r, [](const ExecutionTrace::Read& x) { return x.block; }), whole);
+  b.push_back(',');
+  put_array(out, "var", column<std::int32_t>(r, [](const ExecutionTrace::Read& x) { return x.number; }), whole);
+  b.push_back(',');
+  put_array(out, "value", column<double>(r, [](const ExecutionTrace::Read& x) { return x.value; }), num);
   b.append(std::string_view("}}"));
 }
 

@@ -4,8 +4,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fstream>
 #include <map>
 #include <optional>
+#include <sstream>
 
 #include "app/run_setup.hpp"
 #include "machine/interpreter.hpp"
@@ -197,11 +199,91 @@ TEST(Trace, LimitKeepsWholeBlocksAndSaysSo) {
   EXPECT_NE(t["message"].get<std::string>().find("trace_limit"), std::string::npos);
   const std::size_t blocks = t["blocks"]["line"].size();
   const std::size_t records = blocks + t["writes"]["block"].size() + t["levels"]["block"].size() +
-                              t["modal"]["block"].size();
+                              t["modal"]["block"].size() + t["reads"]["block"].size();
   EXPECT_LE(records, 100u);
   EXPECT_GT(blocks, 10u);
   for (const auto& b : t["writes"]["block"]) EXPECT_LT(b.get<std::size_t>(), blocks);
   EXPECT_EQ(rebuild(t, blocks), truth_after(program, blocks, {}));
+}
+
+// The system variables a program reads, by hand: G00 to X10 Y20 from the origin (G54 all zero,
+// no tool offset), so #5001 (end point, first axis X) is 10 and #5002 20; the G02 makes #4001
+// (group 1) read 2: #100 = 10 + 10 = 20, #101 = 2 + 20 + 20 = 42. The same variable read twice with one value in one block is one record; a
+// local or common read is not a system read.
+TEST(Trace, SystemVariablesRead) {
+  const json answer = traced(
+      "G90 G00 X10. Y20.\n"          // block 0
+      "#100=#5001+#5001\n"           // block 1: #5001 = 10, one record
+      "G02 X30. Y20. R10. F100.\n"   // block 2
+      "#101=#4001+#100+#5002\n"      // block 3: #4001 = 2, #5002 = 20
+      "#102=#100\n"                  // block 4: no system read
+      "M30\n");
+  ASSERT_EQ(answer["summary"]["ok"], true) << answer["summary"];
+  const json& r = answer["trace"]["reads"];
+  EXPECT_EQ(r["block"], json({1, 3, 3}));
+  EXPECT_EQ(r["var"], json({5001, 4001, 5002}));
+  EXPECT_EQ(r["value"], json({10.0, 2.0, 20.0}));
+  EXPECT_EQ(answer["trace"]["writes"]["new"][0], 20.0);  // #100
+  EXPECT_EQ(answer["trace"]["writes"]["new"][1], 42.0);  // #101
+}
+
+// On a lathe programmed in diameter, #5001 reads X as the program wrote it (a diameter).
+TEST(Trace, SystemVariableReadOnALathe) {
+  std::ifstream f(std::string(NCURVE_SOURCE_DIR) + "/profiles/fanuc-lathe.toml");
+  std::stringstream toml;
+  toml << f.rdbuf();
+  json req{{"program", "G00 X40. Z5.\n#100=#5001\n#101=#5002\nM30\n"}, {"machine", toml.str()}, {"trace", true}};
+  Answer a = api_run(ServeConfig{}, req.dump());
+  ASSERT_EQ(a.status, 200) << a.body.substr(0, 400);
+  const json r = json::parse(a.body)["trace"]["reads"];
+  EXPECT_EQ(r["var"], json({5001, 5002}));
+  EXPECT_EQ(r["value"], json({40.0, 5.0}));
+}
+
+// Without the trace, a run reads the same values (the observer only watches).
+TEST(Trace, ReadsAreOnlyRecordedWithATrace) {
+  const std::string program = "G00 X10.\n#100=#5001\nM30\n";
+  Answer a = api_run(ServeConfig{}, json{{"program", program}}.dump());
+  EXPECT_EQ(json::parse(a.body).count("trace"), 0u);
+  EXPECT_EQ(rebuild(traced(program)["trace"], 3)[100], 10.0);
+}
+
+// G71 reads its finishing shape (lines 4..6) to make the roughing: the trace shows the G71 block
+// (line 3) making every roughing move, then the block after N20 (line 7), as FANUC goes on after
+// the shape's last block; G70 runs the shape, so its blocks are in the trace, each with its move.
+TEST(Trace, StockRemovalShapeIsTheCycleBlocks) {
+  std::ifstream f(std::string(NCURVE_SOURCE_DIR) + "/profiles/fanuc-lathe.toml");
+  std::stringstream toml;
+  toml << f.rdbuf();
+  const std::string program =
+      "G99 G00 X40. Z2.\n"             // 1
+      "G71 U2. R0.5\n"                 // 2
+      "G71 P10 Q20 U0.4 W0.1 F0.2\n"   // 3
+      "N10 G00 X20.\n"                 // 4
+      "G01 Z-10.\n"                    // 5
+      "N20 X42.\n"                     // 6
+      "G70 P10 Q20\n"                  // 7
+      "M30\n";                         // 8
+  json req{{"program", program}, {"machine", toml.str()}, {"trace", true}};
+  Answer a = api_run(ServeConfig{}, req.dump());
+  ASSERT_EQ(a.status, 200) << a.body.substr(0, 400);
+  const json answer = json::parse(a.body);
+  ASSERT_EQ(answer["summary"]["ok"], true) << answer["summary"];
+  const json& t = answer["trace"];
+  EXPECT_EQ(t["blocks"]["line"], json({1, 2, 3, 7, 4, 5, 6, 8}));
+  // moves made before each block: line 1 one rapid; G71's moves up to the G70 block; G70 runs the
+  // shape, a move a block (G00 X20., G01 Z-10., X42.), then back to the start point by rapid (made
+  // by line 7 after its last block, so before M30's)
+  const json& first = t["blocks"]["move"];
+  const json& lines = answer["moves"]["line"];
+  std::size_t roughing = 0;
+  for (const auto& l : lines) roughing += l == 3;
+  EXPECT_GT(roughing, 3u);
+  EXPECT_EQ(first[2], 1);                 // G71 starts after line 1's rapid
+  EXPECT_EQ(first[3], 1 + roughing);      // and makes all the roughing
+  EXPECT_EQ(first[5].get<int>() - first[4].get<int>(), 1);  // N10 G00 X20.: one move
+  EXPECT_EQ(first[6].get<int>() - first[5].get<int>(), 1);  // G01 Z-10.
+  EXPECT_EQ(lines[first[4].get<int>()], 4);
 }
 
 }  // namespace

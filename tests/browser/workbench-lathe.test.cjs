@@ -1,0 +1,211 @@
+// The workbench of `ncurve serve --machine fanuc-lathe` in a real browser, on a shipped lathe example.
+//   node workbench-lathe.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
+// Checks: the server's profile selected, the moves drawn against `ncurve run --json`, the ZX view
+// with Z across and X up (drawn as a radius, labelled as a diameter), a hovered move's end as the
+// program writes it, the G71 block making its roughing in one step, the debugger's keys, and the
+// system variables a program reads in the watch. Screenshots go to OUT_DIR. Exit 77 without Chromium.
+'use strict';
+const {spawn, execFileSync} = require('child_process');
+const path = require('path');
+const {browser, checker, launch} = require('./harness.cjs');
+
+const [ncurve, src, out, modules] = process.argv.slice(2);
+const {chromium, driver} = browser(modules, out);
+const {check, counts} = checker();
+
+const file = path.join(src, 'examples/lathe-mrc.nc');
+const run = (...a) => execFileSync(ncurve, ['run', file, '--machine', 'fanuc-lathe', ...a], {encoding: 'utf8'});
+const summary = JSON.parse(run('--json'));
+// the motions as `run --format jsonl` writes them (X a diameter), each with its start and end
+const motions = run('--format', 'jsonl').trim().split('\n').map((l) => JSON.parse(l))
+  .filter((m) => m.kind === 'rapid' || m.kind === 'line' || m.kind === 'arc')
+  .map((m) => ({line: m.line, kind: m.kind, start: {x: m.start[0], z: m.start[2]}, end: {x: m.end[0], z: m.end[2]}}));
+const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a number
+
+(async () => {
+  const server = spawn(ncurve, ['serve', '--port', '0', '--machine', 'fanuc-lathe', file], {stdio: ['ignore', 'pipe', 'pipe']});
+  const port = await new Promise((resolve, reject) => {
+    let text = '';
+    server.stdout.on('data', (d) => {
+      text += d;
+      const m = /127\.0\.0\.1:(\d+)/.exec(text);
+      if (m) resolve(+m[1]);
+    });
+    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
+    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
+  });
+  const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
+  try {
+    const page = await context.newPage();
+    page.setDefaultTimeout(60000);
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    await page.goto(`http://127.0.0.1:${port}/`);
+    await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1);
+    const W = () => page.evaluate(() => ({runs: ncurveWorkbench.runs, moveCount: ncurveWorkbench.moveCount,
+      pos: ncurveWorkbench.pos, line: ncurveWorkbench.state && ncurveWorkbench.state.line, reads: ncurveWorkbench.reads,
+      readChanged: ncurveWorkbench.readChanged, state: ncurveWorkbench.plot.state(), drawnUpTo: ncurveWorkbench.drawnUpTo,
+      count: ncurveWorkbench.trace && ncurveWorkbench.trace.count}));
+
+    // the profile serve was given, the moves of `run`
+    check(await page.evaluate(() => document.getElementById('machine').value) === 'fanuc-lathe',
+          'serve --machine fanuc-lathe: the page runs on fanuc-lathe');
+    let w = await W();
+    check(summary.ok && w.moveCount === summary.motions && motions.length === summary.motions,
+          `${w.moveCount} moves drawn, the run made ${summary.motions}`);
+    check(w.state.kinds.feed === summary.moves.line && w.state.kinds.rapid === summary.moves.rapid &&
+          w.state.kinds.arc === summary.moves.arc, `moves by kind ${JSON.stringify(w.state.kinds)}`);
+
+    // the ZX view: screen x a linear function of Z, screen y of X (up), one scale for Z and the radius
+    check(w.state.view === 'zx', `the ZX view by default (${w.state.view})`);
+    const screen = await page.evaluate(() => Array.from({length: ncurveWorkbench.plot.moves.count}, (_, i) => ncurveWorkbench.plot.screenOf(i)));
+    const fit = (xs, ys) => {  // least squares y = a x + b, and the largest residual
+      const n = xs.length, mx = xs.reduce((s, v) => s + v, 0) / n, my = ys.reduce((s, v) => s + v, 0) / n;
+      let sxy = 0, sxx = 0;
+      for (let i = 0; i < n; i++) sxy += (xs[i] - mx) * (ys[i] - my), sxx += (xs[i] - mx) ** 2;
+      const a = sxy / sxx, b = my - a * mx;
+      return {a, worst: Math.max(...xs.map((x, i) => Math.abs(a * x + b - ys[i])))};
+    };
+    const straight = motions.map((m, i) => ({m, s: screen[i]})).filter((o) => o.m.start && o.m.kind !== 'arc');
+    const mid = (o, k) => (o.m.start[k] + o.m.end[k]) / 2;
+    const across = fit(straight.map((o) => mid(o, 'z')), straight.map((o) => o.s.x));
+    const up = fit(straight.map((o) => mid(o, 'x') / 2), straight.map((o) => o.s.y));  // radius
+    check(across.a > 0 && across.worst < 1.5, `Z across, to the right (${across.a.toFixed(3)} px/mm, off by ${across.worst.toFixed(2)} px)`);
+    check(up.a < 0 && up.worst < 1.5, `X up (${(-up.a).toFixed(3)} px/mm of radius, off by ${up.worst.toFixed(2)} px)`);
+    check(Math.abs(across.a + up.a) < 0.01 * across.a, 'the same scale on Z and on the radius: the part in true proportion');
+    const names = await page.evaluate(() => [...document.querySelectorAll('.axis-name')]
+      .filter((e) => e.style.display !== 'none').map((e) => { const r = e.getBoundingClientRect(); return {t: e.textContent, x: r.left, y: r.top}; }));
+    const xName = names.find((n) => n.t.startsWith('X')), zName = names.find((n) => n.t.startsWith('Z'));
+    check(xName && /diameter/.test(xName.t) && zName && xName.y < zName.y && zName.x > xName.x,
+          `the axes named: ${JSON.stringify(names.map((n) => n.t))}`);
+
+    // a hovered move says where it ends as the program writes it: X a diameter, Z, no Y
+    const target = await page.evaluate(() => {
+      const B = ncurveWorkbench.plot, n = B.moves.count, r = B.renderer.domElement.getBoundingClientRect();
+      const pts = Array.from({length: n}, (_, i) => B.screenOf(i));
+      for (let i = 1; i < n; i++) {
+        const p = pts[i];
+        if (B.moves.kind[i] === 2 || p.x < r.left + 60 || p.y < r.top + 60 || p.x > r.right - 60 || p.y > r.bottom - 60) continue;
+        if (pts.every((q, j) => j === i || Math.hypot(q.x - p.x, q.y - p.y) > 6)) return {i, p};
+      }
+      return null;
+    });
+    check(target !== null, 'a move to hover');
+    if (target) {
+      await page.mouse.move(target.p.x, target.p.y);
+      await page.waitForTimeout(150);
+      const tip = await page.evaluate(() => document.getElementById('hover').textContent);
+      const m = motions[target.i];
+      check(tip.includes(`to X${shown(m.end.x)} Z${shown(m.end.z)}`) && !/ Y/.test(tip),
+            `hovering move ${target.i + 1} shows its end X${shown(m.end.x)} Z${shown(m.end.z)} (${tip})`);
+      await page.mouse.move(5, 500);
+    }
+
+    // the debugger: G71 (line 9) makes all its roughing in one step; the next block is the one after
+    // N200 (line 19), as FANUC goes on after the shape's last block
+    await page.click('button[data-tab="debug"]');
+    const g71 = await page.evaluate(() => {
+      const t = ncurveWorkbench.trace;
+      for (let k = 0; k < t.count; k++) if (t.at(k).line === 9) return k;
+      return -1;
+    });
+    check(g71 > 0, `line 9 (G71) executed (block ${g71 + 1})`);
+    await page.evaluate((k) => ncurveWorkbench.goTo(k), g71);
+    await page.evaluate(() => document.activeElement && document.activeElement.blur());
+    const before9 = motions.filter((m) => m.line < 9).length, upTo9 = motions.filter((m) => m.line <= 9).length;
+    w = await W();
+    check(w.drawnUpTo === before9, `before G71, the ${before9} motions of lines 7 drawn (${w.drawnUpTo})`);
+    await page.keyboard.press('F10');
+    w = await W();
+    check(w.pos === g71 + 1 && w.line === 19 && w.drawnUpTo === upTo9,
+          `F10: one block on, on line ${w.line} (19) with the ${upTo9} motions up to G71's drawn (${w.drawnUpTo})`);
+    await page.screenshot({path: path.join(out, 'workbench-lathe.png')});
+    await page.keyboard.press('Shift+F10');
+    w = await W();
+    check(w.pos === g71 && w.line === 9, `Shift+F10: one block back, on line ${w.line}`);
+    await page.keyboard.press('ArrowRight');
+    w = await W();
+    check(w.pos === g71 + 1, `→: one block on (${w.pos})`);
+    await page.keyboard.press('ArrowLeft');
+    w = await W();
+    check(w.pos === g71, `←: one block back (${w.pos})`);
+    await page.keyboard.press('End');
+    w = await W();
+    check(w.pos === w.count, `End: after the last block (${w.pos} of ${w.count})`);
+    await page.keyboard.press('Home');
+    w = await W();
+    check(w.pos === 0, `Home: the start (${w.pos})`);
+    // F5 / Shift+F5: a breakpoint on line 26 (G75)
+    const g = await page.evaluate(() => ncurveWorkbench.editor.gutterOf(26));
+    await page.mouse.click(g.x, g.y);
+    await page.keyboard.press('F5');
+    w = await W();
+    check(w.line === 26, `F5: on to the breakpoint on line 26 (${w.line})`);
+    await page.keyboard.press('Shift+F5');
+    w = await W();
+    check(w.pos === 0, `Shift+F5: back, no breakpoint before: the start (${w.pos})`);
+    // in the editor an arrow moves the cursor, not the debugger; F10 still steps
+    await page.evaluate(() => ncurveWorkbench.editor.input.focus());
+    await page.keyboard.press('ArrowRight');
+    w = await W();
+    check(w.pos === 0, `→ in the editor leaves the debugger where it is (${w.pos})`);
+    await page.keyboard.press('F10');
+    w = await W();
+    check(w.pos === 1, `F10 in the editor steps (${w.pos})`);
+
+    // the system variables read, by hand: G00 to X40. (a diameter) Z5.: #5001 reads 40, #5002 5;
+    // after G01 X30. Z-10., #5002 reads -10; after G02, #4001 reads 2
+    const prog = 'G00 X40. Z5.\n#100=#5001\n#101=#5002\nG01 X30. Z-10. F0.2\n#102=#5002\nG02 X40. Z-15. R5.\n#103=#4001\nM30\n';
+    const runs = w.runs;
+    await page.evaluate((t) => { ncurveWorkbench.editor.setText(t); document.getElementById('run').click(); }, prog);
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n, runs);
+    await page.evaluate(() => { ncurveWorkbench.goTo(0); document.activeElement && document.activeElement.blur(); });
+    const row = (v) => page.evaluate((n) => {
+      const r = document.querySelector(`.wb-vars tr[data-sys="${n}"]`);
+      return r && {text: r.textContent, name: r.cells[0].textContent, value: r.cells[1].textContent, changed: r.classList.contains('changed')};
+    }, v);
+    w = await W();
+    check(w.reads && Object.keys(w.reads).length === 0 && !(await row(5001)), 'at the start no system variable read');
+    for (let i = 0; i < 2; i++) await page.keyboard.press('ArrowRight');  // after line 2
+    w = await W();
+    let r = await row(5001);
+    check(w.line === 3 && w.reads['#5001'] === 40 && w.readChanged.includes('#5001') && r && r.changed &&
+          r.name === '#5001 end point X' && r.value === '40', `after #100=#5001: #5001 = ${w.reads['#5001']} (40), named and in yellow (${r && r.name}: ${r && r.value})`);
+    await page.keyboard.press('F10');  // after line 3
+    w = await W();
+    r = await row(5001);
+    check(w.reads['#5002'] === 5 && r && !r.changed, `after #101=#5002: #5002 = ${w.reads['#5002']} (5), #5001 no longer in yellow`);
+    for (let i = 0; i < 2; i++) await page.keyboard.press('F10');  // after line 5
+    w = await W();
+    r = await row(5002);
+    check(w.reads['#5002'] === -10 && r && r.changed, `after G01 and #102=#5002: #5002 = ${w.reads['#5002']} (-10), in yellow`);
+    for (let i = 0; i < 2; i++) await page.keyboard.press('F10');  // after line 7
+    w = await W();
+    r = await row(4001);
+    check(w.reads['#4001'] === 2 && r && r.name === '#4001 G group 1' && r.changed, `after G02 and #103=#4001: #4001 = ${w.reads['#4001']} (2), ${r && r.name}`);
+    await page.screenshot({path: path.join(out, 'workbench-lathe-watch.png')});
+    await page.keyboard.press('Shift+F10');
+    w = await W();
+    check(w.reads['#4001'] === undefined && w.reads['#5002'] === -10, 'one block back: #4001 not read yet');
+    // a watchpoint on #5002, a variable read: stops where a read gets a new value (5 after line 3,
+    // -10 after line 5), not at a block that reads nothing new
+    await page.fill('#watch-var', '#5002');
+    await page.click('#watch-add');
+    await page.click('#dbg-first');
+    await page.keyboard.press('F5');
+    w = await W();
+    check(w.line === 4 && w.reads['#5002'] === 5, `F5 with #5002 watched: stops after line 3 (on ${w.line}, #5002 = ${w.reads['#5002']})`);
+    await page.keyboard.press('F5');
+    w = await W();
+    check(w.line === 6 && w.reads['#5002'] === -10, `and after line 5 (on ${w.line}, #5002 = ${w.reads['#5002']})`);
+    check(errors.length === 0, `no script errors (${errors.join('; ')})`);
+  } catch (e) {
+    check(false, String(e && e.stack || e));
+  } finally {
+    await close();
+    server.kill();
+  }
+  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
+  process.exit(counts.failed ? 1 : 0);
+})();
