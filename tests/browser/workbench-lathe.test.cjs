@@ -159,7 +159,7 @@ const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a numb
     const prog = 'G00 X40. Z5.\n#100=#5001\n#101=#5002\nG01 X30. Z-10. F0.2\n#102=#5002\nG02 X40. Z-15. R5.\n#103=#4001\nM30\n';
     const runs = w.runs;
     await page.evaluate((t) => { ncurveWorkbench.editor.setText(t); document.getElementById('run').click(); }, prog);
-    await page.waitForFunction((n) => ncurveWorkbench.runs > n, runs);
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), runs);
     await page.evaluate(() => { ncurveWorkbench.goTo(0); document.activeElement && document.activeElement.blur(); });
     const row = (v) => page.evaluate((n) => {
       const r = document.querySelector(`.wb-vars tr[data-sys="${n}"]`);
