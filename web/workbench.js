@@ -72,6 +72,7 @@
     if (!j.summary) { status(`${r.status}: ${j.error}`, 'alarm'); return; }
     answer = j;
     answer.program = request.program;
+    if (profile().file && j.profile) Object.assign(profile(), j.profile);  // a file's kind, as the server read it
     const wantTrace = $('trace').checked;
     show(t0, wantTrace);
     if (!wantTrace) return;
@@ -177,7 +178,10 @@
     if (s.alarm) conv.alarmAt = conv.last;
     const t2 = performance.now();
     let renderer;
-    if (plot) { viewName = plot.state().view || viewName; renderer = plot.dispose({keepRenderer: true}); }
+    if (plot) {  // the view kept, but a change to or from a lathe takes the machine's default view
+      viewName = plot.moves.lathe === conv.lathe ? plot.state().view || viewName : '';
+      renderer = plot.dispose({keepRenderer: true});
+    }
     plot = W.plot = NcurveBackplot.create($('plot'), conv, {
       renderer,
       onHover, onClick,
@@ -497,15 +501,36 @@
     fact('blocks', `${a.nc_blocks} NC blocks, ${a.macro_statements} macro statements, ${a.starved_blocks} starved`);
   }
   $('analyze').onclick = analyze;
+  // the curves of `ncurve gen --list` (GET /api/curves), then an expression; a curve chosen fills
+  // the parameters with its defaults
+  let curves = [];
+  function chooseCurve() {
+    const c = curves.find((k) => k.name === $('gen-curve').value);
+    $('gen-expr').hidden = !!c;
+    $('gen-params').value = '{' + (c ? c.params : []).map((p) => `${JSON.stringify(p.name)}: ${p.value}`).join(', ') + '}';
+    $('gen-doc').textContent = !c ? 'x(t), y(t), z(t) (z 0 if empty) over t from .. to, in the macro language: SIN COS TAN ATAN ' +
+      '... in degrees, [ ] or ( ); names other than t are parameters, their values in Parameters'
+      : `${c.doc}; t ${c.from} to ${c.to} (${c.t_doc})${c.lathe ? '; a lathe curve: choose a lathe profile' : ''}` +
+        c.params.map((p) => `; ${p.name}: ${p.doc}`).join('');
+    $('gen-error').textContent = '';
+  }
+  $('gen-curve').onchange = chooseCurve;
   $('gen').onclick = async () => {
+    const fail = (text) => { $('gen-error').textContent = text; $('gen-out').textContent = ''; };
+    $('gen-error').textContent = '';
     let params;
-    try { params = JSON.parse($('gen-params').value || '{}'); } catch (e) { $('gen-out').textContent = 'parameters: ' + e.message; return; }
-    const machine = $('machine').value;
-    const r = await fetch('/api/gen', {method: 'POST', headers: {'Content-Type': 'application/json'},
-      body: JSON.stringify({curve: $('gen-curve').value, params, tol: +$('gen-tol').value, form: $('gen-form').value,
-        machine: machine || undefined})});
-    const g = await r.json();
-    if (g.error || !g.program) { $('gen-out').textContent = g.error || 'no program'; return; }
+    try { params = JSON.parse($('gen-params').value || '{}'); } catch (e) { fail('parameters: ' + e.message); return; }
+    const machine = $('machine').value, curve = $('gen-curve').value;
+    const request = {curve, params, tol: +$('gen-tol').value, form: $('gen-form').value, machine: machine || undefined};
+    if (curve === 'expr')
+      Object.assign(request, {x: $('gen-x').value, y: $('gen-y').value, z: $('gen-z').value || undefined,
+        t: `${$('gen-from').value.trim()}:${$('gen-to').value.trim()}`});
+    let r, g;
+    try {
+      r = await fetch('/api/gen', {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(request)});
+      g = await r.json();
+    } catch (e) { fail(`the server did not answer: ${e.message}`); return; }
+    if (g.error || !g.program) { fail(`${r.status}: ${g.error || 'no program'}`); return; }
     $('gen-out').textContent = `max deviation ${fmt(g.max_deviation, 6)} mm (tolerance ${g.tolerance} mm), ` +
       `${g.move_deviation.index.length} moves on the curve; the curve in grey, ${g.reference.count} points: generated into the editor`;
     name = GENERATED;
@@ -627,7 +652,34 @@
 
   // ---- start: the profiles, the files, the first program ----
   $('run').onclick = run;
-  $('machine').onchange = run;
+  // a profile from a file: its TOML text is the option's value, sent as "machine" as a shipped name is
+  const FROM_FILE = '\u0000file';
+  let machineShown = '';
+  $('machine').onchange = () => {
+    if ($('machine').value !== FROM_FILE) { machineShown = $('machine').value; run(); return; }
+    $('machine').value = machineShown;  // until a file is read
+    $('machine-file').value = '';
+    $('machine-file').click();
+  };
+  $('machine-file').onchange = async () => {
+    const f = $('machine-file').files[0];
+    if (!f) return;
+    const text = await f.text();
+    if (!text.trim()) { status(`${f.name}: the file is empty`, 'alarm'); return; }
+    const box = $('machine');
+    let o = [...box.options].find((x) => x.dataset.file);
+    if (!o) {
+      o = new Option('', '');
+      o.dataset.file = '1';
+      box.add(o, box.options.length - 1);
+    }
+    o.text = `${f.name} (file)`;
+    o.value = text;
+    profiles = profiles.filter((p) => !p.file).concat([{name: text, title: f.name, file: f.name}]);
+    box.value = machineShown = text;
+    W.machineFile = f.name;
+    run();
+  };
   $('trace').onchange = run;
   async function open(fileName) {
     const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : '/assets/example.nc');
@@ -642,10 +694,16 @@
   W.open = open;
   (async () => {
     try {
-      const [pj, fj] = await Promise.all([fetch('/api/profiles').then((r) => r.json()), fetch('/api/files').then((r) => r.json())]);
+      const [pj, fj, cj] = await Promise.all(['/api/profiles', '/api/files', '/api/curves'].map((u) => fetch(u).then((r) => r.json())));
       profiles = pj.profiles;
       for (const p of profiles) $('machine').add(new Option(`${p.name} — ${p.title}`, p.name, false, p.name === (pj.default || 'fanuc-mill')));
       if (pj.server && !profiles.some((p) => p.name === pj.default)) serverProfile(pj.server);
+      $('machine').add(new Option('from a file…', FROM_FILE));
+      machineShown = $('machine').value;
+      curves = cj.curves;
+      for (const c of curves) $('gen-curve').add(new Option(c.name, c.name, false, c.name === 'ellipse'));
+      $('gen-curve').add(new Option('expression x(t), y(t), z(t)', 'expr'));
+      chooseCurve();
       for (const f of fj.files) $('file').add(new Option(f.name, f.name));
       if (!fj.files.length) $('file').add(new Option('spiral.nc (example)', ''));
       await open(fj.files.length ? fj.files[0].name : '');

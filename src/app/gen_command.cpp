@@ -111,7 +111,8 @@ GenJob gen_job(const GenArgs& a, const std::vector<std::string>& extras, const s
                const std::vector<std::string>& options) {
   gen::Options o;
   if (a.curve.empty()) throw std::runtime_error("name a curve (ncurve gen --list shows them) or expr");
-  if (!a.machine.empty()) o.profile = machine::load_profile(a.machine);
+  if (a.machine_text) o.profile = machine::parse_profile(*a.machine_text, a.machine);
+  else if (!a.machine.empty()) o.profile = machine::load_profile(a.machine);
   gen::parse_form(a.form, o.form);
   if (a.lines == "equal-step") o.lines = geom::LineMethod::equal_step;
   else if (a.lines == "equal-chord") o.lines = geom::LineMethod::equal_chord;

@@ -18,6 +18,7 @@ struct GenArgs {
   std::string form = "expanded";
   std::string lines = "equal-error";
   std::string machine;
+  std::optional<std::string> machine_text;  // a profile's TOML text (machine: where it came from)
   std::optional<double> from, to;
   std::string x, y, z, t_range;
   double feed = 0;

@@ -39,6 +39,8 @@ Answer api_run(const ServeConfig& config, const std::string& body);
 Answer api_analyze(const ServeConfig& config, const std::string& body);
 Answer api_gen(const ServeConfig& config, const std::string& body);
 Answer api_profiles(const ServeConfig& config);
+// The curves of `ncurve gen --list` (geom::catalogue()) with their parameters' defaults.
+Answer api_curves();
 Answer api_files(const ServeConfig& config);
 Answer api_file(const ServeConfig& config, const std::string& name);
 // The workbench page at GET / and its scripts, styles and example at GET /assets/NAME.

@@ -10,6 +10,7 @@
 #include "machine/profile.hpp"
 #include "report/web_assets.hpp"
 #include "serve/api.hpp"
+#include "serve/request.hpp"
 
 namespace ncurve::serve {
 
@@ -20,15 +21,18 @@ namespace {
 std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n"; }
 }  // namespace
 
+json profile_json(const machine::MachineProfile& profile) {
+  return json{{"title", profile.name},
+              {"lathe", profile.lathe()},
+              {"diameter", profile.lathe() && profile.diameter_x},
+              {"axes", profile.axes},
+              {"offset_memory", std::string(1, static_cast<char>('A' + static_cast<int>(profile.offset_memory)))}};
+}
+
 Answer api_profiles(const ServeConfig& config) {
   auto describe = [](json& p, const std::string& path) {
     try {
-      const machine::MachineProfile profile = machine::load_profile(path);
-      p["title"] = profile.name;
-      p["lathe"] = profile.lathe();
-      p["diameter"] = profile.lathe() && profile.diameter_x;
-      p["axes"] = profile.axes;
-      p["offset_memory"] = std::string(1, static_cast<char>('A' + static_cast<int>(profile.offset_memory)));
+      p.update(profile_json(machine::load_profile(path)));
     } catch (const std::exception& e) {
       p["error"] = e.what();
     }

@@ -23,5 +23,7 @@ app::RunInputs run_inputs(const ServeConfig& config, const nlohmann::json& j);
 app::RunSetup prepare(const app::RunInputs& in);
 // The profile a request names: a shipped one by name, or TOML text (a file path is not taken).
 void choose_profile(const ServeConfig& config, const nlohmann::json& j, app::RunInputs& in);
+// What the page needs of a profile: title, lathe, diameter, axes, offset_memory.
+nlohmann::json profile_json(const machine::MachineProfile& profile);
 
 }  // namespace ncurve::serve

@@ -90,6 +90,7 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
   fmt::format_to(it, "\"summary\":{},\"diagnostics\":{}",
                  report::summary_object(rep).dump(-1, ' ', false, json::error_handler_t::replace),
                  diagnostics(rep).dump(-1, ' ', false, json::error_handler_t::replace));
+  fmt::format_to(it, ",\"profile\":{}", profile_json(setup.profile).dump(-1, ' ', false, json::error_handler_t::replace));
   if (moves) {
     b.append(std::string_view(",\"moves\":"));
     moves->write_json(columns);

@@ -36,7 +36,7 @@ const char* reason(int status) {
   switch (status) {
     case 400: return "bad request";
     case 404: return "no such page or endpoint (the API: POST /api/run, /api/analyze, /api/gen; GET /api/profiles, "
-                     "/api/files)";
+                     "/api/curves, /api/files)";
     case 405: return "method not allowed";
     case 413: return "the request body is too large";
     default: return "the request failed";
@@ -65,6 +65,7 @@ Server::Server(ServeConfig config) : config_(std::move(config)), http_(std::make
   s.Get("/api/profiles", [&c](const httplib::Request&, httplib::Response& res) {
     answer(res, [&] { return api_profiles(c); });
   });
+  s.Get("/api/curves", [](const httplib::Request&, httplib::Response& res) { answer(res, [] { return api_curves(); }); });
   s.Get("/api/files", [&c](const httplib::Request&, httplib::Response& res) {
     answer(res, [&] { return api_files(c); });
   });

@@ -8,6 +8,7 @@
 #include "app/analyze_command.hpp"
 #include "app/gen_command.hpp"
 #include "base/bounds.hpp"
+#include "geom/curve.hpp"
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
 #include "report/summary.hpp"
@@ -26,6 +27,17 @@ constexpr std::size_t kMostCurvePoints = 200'000;  // /api/gen's "reference" pol
 
 std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n"; }
 }  // namespace
+
+Answer api_curves() {
+  json list = json::array();
+  for (const geom::CurveSpec& c : geom::catalogue()) {
+    json params = json::array();
+    for (const geom::ParamSpec& p : c.params) params.push_back({{"name", p.name}, {"value", p.value}, {"doc", p.doc}});
+    list.push_back({{"name", c.name}, {"doc", c.doc}, {"x", c.x}, {"y", c.y}, {"z", c.z}, {"from", c.from},
+                    {"to", c.to}, {"t_doc", c.t_doc}, {"lathe", c.lathe}, {"params", params}});
+  }
+  return Answer{200, dump(json{{"curves", list}})};
+}
 
 Answer api_gen(const ServeConfig& config, const std::string& body) {
   const json j = parse_body(body);
@@ -70,8 +82,8 @@ Answer api_gen(const ServeConfig& config, const std::string& body) {
   if (j.contains("machine")) {
     app::RunInputs in;
     choose_profile(config, j, in);
-    if (in.machine_text) throw ApiError(400, "POST /api/gen takes a shipped profile by name in \"machine\"");
     a.machine = in.machine;
+    a.machine_text = in.machine_text;
   } else {
     a.machine = config.machine;
   }

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <thread>
 
+#include "geom/curve.hpp"
 #include "serve/server.hpp"
 
 namespace ncurve::serve {
@@ -223,6 +224,55 @@ TEST_F(ServerTest, AnalyzeAndGen) {
   EXPECT_NE(j["program"].get<std::string>().find("M30"), std::string::npos);
   j = post("/api/gen", R"({"curve": "elipse"})", 400);
   EXPECT_NE(j["error"].get<std::string>().find("ellipse"), std::string::npos) << j;
+}
+
+// GET /api/curves: the table `ncurve gen --list` prints, each curve with its parameters' defaults.
+TEST_F(ServerTest, CurvesAreGensTable) {
+  auto c = client();
+  auto r = c.Get("/api/curves");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200);
+  const json j = json::parse(r->body);
+  const auto& table = geom::catalogue();
+  ASSERT_EQ(j["curves"].size(), table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const json& got = j["curves"][i];
+    const geom::CurveSpec& want = table[i];
+    EXPECT_EQ(got["name"], want.name);
+    EXPECT_EQ(got["doc"], want.doc);
+    EXPECT_EQ(got["x"], want.x);
+    EXPECT_EQ(got["y"], want.y);
+    EXPECT_EQ(got["z"], want.z);
+    EXPECT_EQ(got["from"].get<double>(), want.from);
+    EXPECT_EQ(got["to"].get<double>(), want.to);
+    EXPECT_EQ(got["t_doc"], want.t_doc);
+    EXPECT_EQ(got["lathe"], want.lathe);
+    ASSERT_EQ(got["params"].size(), want.params.size()) << want.name;
+    for (std::size_t k = 0; k < want.params.size(); ++k) {
+      EXPECT_EQ(got["params"][k]["name"], want.params[k].name);
+      EXPECT_EQ(got["params"][k]["value"].get<double>(), want.params[k].value);
+      EXPECT_EQ(got["params"][k]["doc"], want.params[k].doc);
+    }
+  }
+  EXPECT_EQ(j["curves"][3]["name"], "ellipse");  // as gen --list shows it: a 40, b 20
+  EXPECT_EQ(j["curves"][3]["params"][0]["value"], 40.0);
+}
+
+// A profile's TOML text in /api/gen's "machine", as in /api/run: a lathe curve on the lathe; a bad
+// profile is a 400 saying what is wrong.
+TEST_F(ServerTest, GenTakesAProfilesText) {
+  std::ifstream f(std::string(NCURVE_SOURCE_DIR) + "/profiles/fanuc-lathe.toml");
+  std::stringstream toml;
+  toml << f.rdbuf();
+  json j = post("/api/gen", json{{"curve", "hyperbola"}, {"tol", 0.01}, {"machine", toml.str()}}.dump(), 200);
+  EXPECT_EQ(j["within_tolerance"], true);
+  // the run names the profile's kind for the page: a lathe, X in diameters
+  j = post("/api/run", json{{"program", "G00 X20. Z5.\nM30\n"}, {"machine", toml.str()}, {"moves", false}}.dump(), 200);
+  EXPECT_EQ(j["profile"]["lathe"], true);
+  EXPECT_EQ(j["profile"]["diameter"], true);
+  EXPECT_EQ(j["profile"]["title"], "FANUC 0i-TF 2-axis lathe");
+  j = post("/api/gen", json{{"curve", "ellipse"}, {"machine", "name = \"x\"\nkind = \"drill\"\n"}}.dump(), 400);
+  EXPECT_FALSE(j["error"].get<std::string>().empty());
 }
 
 // "format": "binary": the same answer with each array as little-endian bytes after the JSON.
