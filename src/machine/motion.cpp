@@ -654,8 +654,15 @@ void Interpreter::set_coordinate_system(int g) {
   if (g == 500 && !has('X') && !has('Z') && !has('U') && !has('W')) return;
   // G92 (G50 on a system A lathe): the current point gets the given coordinates
   if (!axis_target(given)) return;
+  // The manual's local coordinate system notes: G92 cancels the G52 offset of the axes it names
+  // (those it does not name keep theirs); the origin stays put, the local offset folds into the shift.
+  const unsigned named = block_axes();
   AxisVector delta{};
   for (int a = 0; a < kAxes; ++a) {
+    if (named & (1u << a)) {
+      shift_[a] += local_[a];
+      local_[a] = 0;
+    }
     shift_[a] += pos_[a] - given[a];
     origin_[a] += pos_[a] - given[a];
     delta[a] = given[a] - pos_[a];
