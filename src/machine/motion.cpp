@@ -544,7 +544,9 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
   double dn = target[pa.n] - pos_[pa.n];
   m.length = std::hypot(planar, dn);
   m.feed = feed_;
-  m.seconds = feed_seconds(m.length, m.center[0]);
+  // Helical interpolation: F is the feed along the arc in the plane, the linear axis following at
+  // F x its travel / the arc's length (the manuals' helical interpolation; parameter HTG = 0, factory)
+  m.seconds = feed_seconds(planar, m.center[0]);
   // extents: the quadrant points the arc passes (in G12.1/G07.1 the machine's moves give them)
   for (int k = 0; k < 4 && !developed_; ++k) {
     double ang = k * std::numbers::pi / 2;
