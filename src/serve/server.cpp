@@ -49,6 +49,12 @@ Server::Server(ServeConfig config) : config_(std::move(config)), http_(std::make
   httplib::Server& s = *http_;
   const ServeConfig& c = config_;
   s.set_payload_max_length(c.max_body);
+  // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a second server binds the
+  // same port and the two share its connections
+  s.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   s.Get("/", [](const httplib::Request&, httplib::Response& res) { answer(res, [] { return page(); }); });
   s.Get(R"(/assets/([A-Za-z0-9._-]+))", [](const httplib::Request& req, httplib::Response& res) {
     answer(res, [&] { return asset(req.matches[1]); });

@@ -65,6 +65,12 @@ Server* ServerTest::server_ = nullptr;
 std::thread* ServerTest::thread_ = nullptr;
 int ServerTest::port_ = 0;
 
+TEST_F(ServerTest, PortInUseIsRefused) {
+  Server second(ServeConfig{});
+  EXPECT_THROW(second.bind("127.0.0.1", port_), std::runtime_error);
+  still_serving();
+}
+
 TEST_F(ServerTest, BadJsonIsAClearError) {
   json j = post("/api/run", "{\"program\": \"M30\"", 400);
   EXPECT_EQ(j["status"], 400);
