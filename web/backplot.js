@@ -355,7 +355,10 @@
       addLabel('axis-name axis-' + 'xyz'[k], axisName[k], e, k);
     }
     if (n > 0) addLabel('marker start', '', toWorld(moves.start.subarray(0, 3), [0, 0, 0]), -1);
-    if (moves.alarmAt) addLabel('marker alarm', options.alarmLabel || 'alarm', toWorld(moves.alarmAt, [0, 0, 0]), -1);
+    if (moves.alarmAt) {
+      addLabel('marker alarm', options.alarmLabel || 'alarm', toWorld(moves.alarmAt, [0, 0, 0]), -1);
+      labels[labels.length - 1].alarm = true;
+    }
 
     const v3 = new THREE.Vector3();
     const project = (w) => {
@@ -405,7 +408,9 @@
         }
         const inside = x >= -40 && x <= W + 40 && y >= -20 && y <= H + 20;
         L.el.style.display = inside && !hide && !L.hidden ? '' : 'none';
-        L.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) translate(-50%, -50%)`;
+        // a label centred on its point, but the alarm's ✕ (its left 12 px) on the point and its text after it
+        const shift = L.alarm ? 'translate(-6px, -50%)' : 'translate(-50%, -50%)';
+        L.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) ${shift}`;
       }
     };
 
@@ -576,6 +581,12 @@
           ? [(L.pos[v] + L.pos[v + 3]) / 2, (L.pos[v + 1] + L.pos[v + 4]) / 2, (L.pos[v + 2] + L.pos[v + 5]) / 2]
           : [L.pos[v], L.pos[v + 1], L.pos[v + 2]];
         const [x, y] = project(new THREE.Vector3(w[0], w[1], w[2]));
+        const rect = renderer.domElement.getBoundingClientRect();
+        return {x: rect.left + x, y: rect.top + y};
+      },
+      // where a point of the machine (X Y Z, X as a radius on a lathe) is on the page
+      screenOfPoint(p) {
+        const [x, y] = project(new THREE.Vector3(...toWorld(p, [0, 0, 0])));
         const rect = renderer.domElement.getBoundingClientRect();
         return {x: rect.left + x, y: rect.top + y};
       },

@@ -187,6 +187,7 @@
     get hovered() { return plot.state().hovered; },
     views: Object.keys(NAMES),
     screenOf: (i) => plot.screenOf(i),
+    screenOfPoint: (p) => plot.screenOfPoint(p),
     lineOf: (i) => blockOf(i).line,
     timing: {scriptStartMs: t0, decodeMs: tDecoded - t0, buildMs: tBuilt - tDecoded, firstDrawMs: tDrawn - t0},
   };

@@ -189,6 +189,16 @@ async function lonelyMove(page, motions, kind) {
       const marker = await page.$('.ncurve-label.marker.alarm');
       check(marker && (await marker.isVisible()) && (await marker.textContent()) === 'MC3001 line 9', 'alarm: marked in the view');
       check((await page.evaluate(() => window.ncurveBackplot.moveCount)) === summary.motions, 'alarm: the moves before it drawn');
+      // the ✕ (the marker's first 12 px) on the alarm point X0 Y0 Z5, in every view
+      for (const v of ['top', 'front', 'iso']) {
+        await page.click(`#views button[data-view="${v}"]`);
+        await page.waitForTimeout(100);
+        const at = await page.evaluate(() => window.ncurveBackplot.screenOfPoint([0, 0, 5]));
+        const box = await marker.boundingBox();
+        const cx = box.x + 6, cy = box.y + box.height / 2;
+        check(Math.abs(cx - at.x) < 4 && Math.abs(cy - at.y) < 4,
+              `alarm: ${v}: the cross at (${cx.toFixed(0)}, ${cy.toFixed(0)}) on the alarm point (${at.x.toFixed(0)}, ${at.y.toFixed(0)})`);
+      }
       await page.screenshot({path: path.join(out, 'browser_alarm.png')});
       check(errors.length === 0, `alarm: no script errors (${errors.join('; ')})`);
       await page.close();
