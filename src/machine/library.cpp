@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -89,7 +90,11 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_folder(const std::string& dir) {
     if (!e.is_regular_file()) continue;
     std::string ext = e.path().extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".nc" || ext == ".txt" || ext == ".tap" || number_from_file_name(e.path().string()) >= 0)
+    // the extensions part programs are kept under (a control holds them by O number whatever the name)
+    static const std::array<std::string_view, 10> kProgramExtensions = {".nc", ".cnc", ".tap", ".txt", ".ncc",
+                                                                         ".iso", ".eia", ".ptp", ".prg", ".gcode"};
+    if (std::find(kProgramExtensions.begin(), kProgramExtensions.end(), ext) != kProgramExtensions.end() ||
+        number_from_file_name(e.path().string()) >= 0)
       paths.push_back(e.path().string());
   }
   std::sort(paths.begin(), paths.end());

@@ -1,6 +1,9 @@
 // Subprograms, macro calls, argument specification, modal and custom-code calls, nesting limits.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "support/run_program.hpp"
 
 using namespace ncurve;
@@ -137,6 +140,22 @@ TEST(Calls, LibraryFolder) {
                              {NCURVE_SOURCE_DIR "/macros"});
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   EXPECT_EQ(r.motions().size(), 1u + 36u);
+}
+
+// A control holds programs by O number: a library file is read whatever its name, if its extension
+// is one part programs are kept under (.cnc here); a README beside it is not read.
+TEST(Calls, LibraryFilesFoundByTheirNumberWhateverTheirName) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "ncurve_calls_library_names";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "gauge_tool_o1002.cnc") << "%\nO1002 (POCKET)\nG91 G01 X1. F100.\nM99\n%\n";
+  std::ofstream(dir / "README.md") << "Only the O1002 subprogram; P1002 calls it.\n";
+  auto r = ncurve::test::run("O1001\nM98 P1002 L4\nM30\n", machine::default_mill(), {}, {}, {dir.string()});
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  ASSERT_EQ(r.motions().size(), 4u);
+  EXPECT_DOUBLE_EQ(r.motions().back().end[0], 4.0);
+  fs::remove_all(dir);
 }
 
 TEST(Calls, SubprogramInsideAMacroUsesTheMacrosLocals) {
