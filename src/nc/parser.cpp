@@ -441,6 +441,8 @@ private:
         if (c == '+' || c == '-' || is_digit(c) || c == '.')
           fail("PS0004", "a number or sign without an address (arithmetic in a word needs brackets: X[#1+5.])");
         if (c == '=') fail("PS0009", "'=' in an NC block: only a variable (#i) can be assigned");
+        if (c == ':' && prog_.words.size() == b.words_begin)
+          fail("PS0005", "no program number after ':' (the program number address of ISO code, as O)");
         if (c == ':') fail("PS0009", "':' (the program number address of ISO code, as O) is only allowed at the start of a block");
         fail("PS0009", fmt::format("'{}' is not an address", c));
       }
@@ -454,6 +456,8 @@ private:
         fail("PS0009", fmt::format("'{}' is not an address: an address is one letter followed by a value", run),
              static_cast<std::uint32_t>(run.size()));
       }
+      if ((c == 'O' || c == 'N') && prog_.words.size() == b.words_begin && !is_digit(peek(1)))
+        fail("PS0005", fmt::format("no {} after address {}", c == 'O' ? "program number" : "sequence number", c));
       if (c == 'O' || c == 'N') fail("PS0009", fmt::format("address {} is only allowed at the start of a block", c));
       Word w;
       w.letter = c;

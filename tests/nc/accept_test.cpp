@@ -27,6 +27,19 @@ TEST(Accept, ColonIsTheIsoProgramNumber) {
   EXPECT_EQ(s.programs[0]->blocks.size(), 1u);
 }
 
+// ':' or O starting a block without a number: the number is missing (a ':' typed for '(', a
+// placeholder left in a template), not an address out of place
+TEST(Accept, ProgramNumberAddressWithoutANumber) {
+  for (const char* text : {"G00 X1.\n:(SOLVE FOR B)\n", "G00 X1.\nO[YOUR NUMBER]\n"}) {
+    auto r = parse_text(text);
+    ASSERT_EQ(r.diagnostics.size(), 1u) << text;
+    EXPECT_EQ(r.diagnostics[0].code, "PS0005") << text;
+    EXPECT_EQ(r.diagnostics[0].span.line, 2u);
+    EXPECT_EQ(r.diagnostics[0].span.column, 1u);
+    EXPECT_NE(r.diagnostics[0].message.find("no program number after"), std::string::npos) << r.diagnostics[0].message;
+  }
+}
+
 TEST(Accept, ColonElsewhereSaysWhatItIs) {
   auto r = parse_text("G00 X1. :12\n");
   ASSERT_EQ(r.diagnostics.size(), 1u);
