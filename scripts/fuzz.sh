@@ -3,7 +3,8 @@
 # configure_sanitize in packages.sh) and fuzzes for about SECONDS (default 60), two targets at a
 # time: the parser and interpreter with the CSV, JSON Lines and G-code writers for three quarters of
 # SECONDS, then the cutter-profile and point-list files for a quarter; beside them the curve
-# expressions for half, the machine profiles and the command line for a quarter each. A crash,
+# expressions, the server's request bodies, the machine profiles and the command line for a
+# quarter each. A crash,
 # undefined behaviour, a leak, a time-out (10 s an input) or 2 GB of memory fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,7 +12,7 @@ seconds="${1:-60}"
 source scripts/packages.sh
 ensure_packages "${tool_packages[@]}" "${test_packages[@]}" "${fuzz_packages[@]}"
 configure_sanitize
-cmake --build build-sanitize --target fuzz_run fuzz_curve fuzz_rows fuzz_profile fuzz_cli
+cmake --build build-sanitize --target fuzz_run fuzz_curve fuzz_rows fuzz_profile fuzz_cli fuzz_serve
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 dir=build-sanitize/fuzz
 # fuzz TARGET CORPUS SECONDS MAX_LEN: runs one target, prints its totals, or the failing input's log
@@ -27,7 +28,7 @@ fuzz() {
   fi
 }
 
-mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,cli}
+mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,cli,serve}
 cp tests/programs/*.nc examples/*.nc macros/*.nc "$dir/corpus-programs/"
 printf 'CX+[R0+A*t/360]*COS[t]\nCY+[R0+A*t/360]*SIN[t]\n0' >"$dir/corpus-curves/spiral"
 printf 'A/COS[t]\n0\nA*TAN[t]' >"$dir/corpus-curves/hyperbola"
@@ -43,12 +44,21 @@ printf 'analyze\x00x.nc\x00--servo\x00--curve\x00expr\x00--x\x00t\x00--t\x000:1'
 printf 'helicoid\x00--example\x00seed004\x00--step\x001\x00--centre-distance\x00200:300:10' >"$dir/corpus-cli/helicoid"
 printf 'run\x00x.nc\x00--format\x00csv\x00--arc-tol\x000.01\x00--param\x006050=102' >"$dir/corpus-cli/run"
 
+# request bodies: the first byte picks /api/run (0), /api/analyze (1) or /api/gen (2)
+printf '\x00{"program": "G01 X10. F100.\\nG02 X0 R5.\\nM30\\n", "machine": "fanuc-lathe", "trace": true, "set": {"#100": 1}}' \
+  >"$dir/corpus-serve/run"
+printf '\x01{"program": "G01 X100. F600.\\nM30\\n", "machine": "fanuc-mill", "servo": true, "moves": true}' \
+  >"$dir/corpus-serve/analyze"
+printf '\x02{"curve": "ellipse", "params": {"a": 20, "b": 10}, "tol": 0.05, "form": "arcs"}' >"$dir/corpus-serve/gen"
+printf '\x02{"curve": "expr", "x": "t", "y": "SIN[t]", "t": "0:90", "tol": 0.1}' >"$dir/corpus-serve/expr"
+
 quarter=$(( (seconds + 3) / 4 ))
-# two streams on the two cores: the interpreter and the point lists; the curves, profiles and command line
+# two streams on the two cores: the interpreter and the point lists; the curves, requests, profiles and
+# command line
 { fuzz fuzz_run programs "$(( seconds - quarter ))" 8192 && fuzz fuzz_rows rows "$quarter" 4096; } &
 first=$!
 status=0
-{ fuzz fuzz_curve curves "$(( (seconds + 1) / 2 ))" 512 && fuzz fuzz_profile profiles "$quarter" 4096 &&
-  fuzz fuzz_cli cli "$quarter" 512; } || status=1
+{ fuzz fuzz_curve curves "$quarter" 512 && fuzz fuzz_serve serve "$quarter" 4096 &&
+  fuzz fuzz_profile profiles "$quarter" 4096 && fuzz fuzz_cli cli "$quarter" 512; } || status=1
 wait "$first" || status=1
 exit "$status"
