@@ -1,5 +1,6 @@
 # ncurve run --plot / --view, and the plots of gen, analyze and helicoid on the shared layer: each
-# SVG parses and has nothing off its page (tests/plot_check.py), with the axes expected.
+# SVG parses, has nothing off its page and no two texts overlapping (tests/plot_check.py), with
+# the axes expected.
 include(${CMAKE_CURRENT_LIST_DIR}/cli_helpers.cmake)
 set(CHECK ${CMAKE_CURRENT_LIST_DIR}/plot_check.py)
 if(NOT PYTHON3)
@@ -63,6 +64,15 @@ check_plot(${OUT}/plot_feed.svg "analyze --plot")
 expect_text("${report}" "text label-v: feed, mm/min" "feed plot axes")
 check_plot(${OUT}/plot_shape.svg "analyze --shape-plot")
 expect_text("${report}" "text label-v: Y, mm" "shape plot axes")
+# the deviation's colour scale when the tolerance is its top: the tolerance's label and the
+# scale's title apart (plot_check.py: no two texts overlap)
+run_expect(0 "gen ellipse" ${NCURVE} gen ellipse --a 20 --b 10 --tol 0.005 -o ${OUT}/plot_ellipse.nc)
+run_expect(0 "analyze --shape-plot, tolerance at the top" ${NCURVE} analyze ${OUT}/plot_ellipse.nc --curve ellipse
+           --a 20 --b 10 --tol 0.005 --shape-plot ${OUT}/plot_ellipse.svg)
+check_plot(${OUT}/plot_ellipse.svg "analyze --shape-plot of the ellipse")
+expect_text("${report}" "text label-u: X, mm" "shape plot axes")
+file(READ ${OUT}/plot_ellipse.svg svg)
+expect_text("${svg}" ">tolerance 5 µm<" "the tolerance marked on the colour scale")
 foreach(kv "25,30" "25,25" "2,40")
   run_expect(0 "circle plot ${kv}" ${NCURVE} analyze circle --radius 50 --feed 5000 --kv ${kv} --plot ${OUT}/plot_circle.svg)
   check_plot(${OUT}/plot_circle.svg "circle plot ${kv}")

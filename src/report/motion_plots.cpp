@@ -91,23 +91,16 @@ std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::
                      "stroke-linecap=\"round\"/>\n",
                      f.x(p.x0), f.y(p.y0), f.x(p.x1), f.y(p.y1), heat(scale > 0 ? p.deviation / scale : 0), beyond ? 4 : 2);
   }
-  // colour scale in micrometres, beside the panel
-  const double bar_x = W - bar_w + 10, bar_top = f.top + 20, bar_h = f.height - 20;
-  for (int i = 0; i < 100; ++i)
-    s += fmt::format("<rect x=\"{}\" y=\"{:.1f}\" width=\"18\" height=\"{:.2f}\" fill=\"{}\"/>\n", bar_x,
-                     bar_top + bar_h - (i + 1) * bar_h / 100, bar_h / 100 + 0.5, heat((i + 0.5) / 100));
-  const double um = scale * 1000;
-  for (double v : plot::nice_ticks(0, std::max(um, 1e-6), 5))
-    s += fmt::format("<text x=\"{}\" y=\"{:.1f}\" dy=\"4\" font-size=\"10\">{} µm</text>\n", bar_x + 24,
-                     bar_top + bar_h - (um > 0 ? v / um : 0) * bar_h, plot::tick_label(v, plot::nice_step(std::max(um, 1e-6), 5)));
-  if (tolerance > 0) {
-    const double y = bar_top + bar_h - tolerance / scale * bar_h;
-    s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"black\" stroke-width=\"2\"/>"
-                     "<text x=\"{}\" y=\"{:.1f}\" dy=\"-4\" font-size=\"10\">tolerance</text>\n",
-                     bar_x - 4, y, bar_x + 22, y, bar_x + 24, y - 8);
-  }
   page.add(s);
-  page.text(W - 8, f.top + 8, "deviation of each block", "end", 11);
+  // colour scale in micrometres, beside the panel
+  plot::ColourScale bar;
+  bar.x = W - bar_w + 4, bar.y = f.top, bar.width = bar_w - 12, bar.height = f.height;
+  bar.title = "deviation of each block";
+  bar.colour = heat;
+  const double um = std::max(scale * 1000, 1e-6), step = plot::nice_step(um, 5);
+  for (double v : plot::nice_ticks(0, um, 5)) bar.ticks.push_back({v / um, plot::tick_label(v, step) + " µm"});
+  if (tolerance > 0) bar.mark = {{tolerance / scale, fmt::format("tolerance {:g} µm", tolerance * 1000)}};
+  plot::draw_colour_scale(page, bar);
   page.text(16, H - 10, fmt::format("largest deviation {:.2f} µm{} · grey: the nominal curve · {} blocks", worst * 1000,
                                     tolerance > 0 ? fmt::format(" · tolerance {:g} µm, {} blocks beyond it (thick)",
                                                                 tolerance * 1000, over)

@@ -199,10 +199,17 @@ Frame draw_panel(Page& page, const Panel& p) {
 }
 
 double draw_legend(Page& page, double x, double y, double max_width, const std::vector<LegendEntry>& entries) {
-  double cx = x, cy = y + 12;
+  // entries side by side, a row wrapping to the next when the next entry would pass max_width; a
+  // text wider than max_width wraps within its entry, whose row grows with its lines
+  constexpr double kSample = 30, kGap = 16, kLine = 15, kRow = 18;
+  double cx = x, row_top = y, row_h = 0;
   for (const auto& e : entries) {
-    const double w = 30 + text_width(e.label, 12) + 16;
-    if (cx > x && cx + w > x + max_width) cx = x, cy += 18;
+    const auto lines = wrap(e.label, std::max(max_width - kSample, 12.0), 12);
+    double tw = 0;
+    for (const auto& l : lines) tw = std::max(tw, text_width(l, 12));
+    const double w = kSample + tw + kGap;
+    if (cx > x && cx + w - kGap > x + max_width) cx = x, row_top += row_h, row_h = 0;
+    const double cy = row_top + 12;
     if (e.cross)
       page.add(cross(cx + 11, cy - 4, 5, e.stroke));
     else if (e.dot)
@@ -211,10 +218,52 @@ double draw_legend(Page& page, double x, double y, double max_width, const std::
       page.add(fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"{:g}\"{}/>\n",
                            cx, cy - 4, cx + 24, cy - 4, e.stroke, e.width,
                            e.dash.empty() ? "" : fmt::format(" stroke-dasharray=\"{}\"", e.dash)));
-    page.text(cx + 30, cy, e.label);
+    for (std::size_t i = 0; i < lines.size(); ++i) page.text(cx + kSample, cy + kLine * static_cast<double>(i), lines[i]);
     cx += w;
+    row_h = std::max(row_h, kRow + kLine * static_cast<double>(lines.size() - 1));
   }
-  return cy - y + 6;
+  return row_top + row_h - y;
+}
+
+double legend_height(double max_width, const std::vector<LegendEntry>& entries) {
+  Page scratch(max_width, 1);
+  return draw_legend(scratch, 0, 0, max_width, entries);
+}
+
+void draw_colour_scale(Page& page, const ColourScale& s) {
+  constexpr double kFont = 10, kBar = 18;
+  double y = s.y;
+  for (const auto& line : wrap(s.title, s.width, 11)) {
+    page.text(s.x, y + 11, line, "start", 11);
+    y += 14;
+  }
+  // the bar leaves half a label's height below it, for the label of its bottom
+  const double top = y + 10, height = std::max(10.0, s.y + s.height - kFont * 0.6 - top), bar_x = s.x + 6, label_x = bar_x + kBar + 6;
+  std::string out;
+  for (int i = 0; i < 100; ++i)
+    out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:g}\" height=\"{:.2f}\" fill=\"{}\"/>\n", bar_x,
+                       top + height - (i + 1) * height / 100, kBar, height / 100 + 0.5, s.colour((i + 0.5) / 100));
+  page.add(out);
+  // labels centred on their values, the mark's first; a tick label that would touch one already
+  // written is left out
+  std::vector<double> taken;  // the centres of the labels written
+  auto free = [&](double cy) {
+    return std::none_of(taken.begin(), taken.end(), [&](double t) { return std::fabs(t - cy) < kFont + 2; });
+  };
+  auto at = [&](double v) { return top + height - std::clamp(v, 0.0, 1.0) * height; };
+  if (s.mark) {
+    const double cy = at(s.mark->first);
+    page.add(fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"black\" stroke-width=\"2\"/>\n",
+                         bar_x - 4, cy, bar_x + kBar + 4, cy));
+    page.text(label_x, cy, s.mark->second, "start", kFont, "dy=\"4\" font-weight=\"bold\"");
+    taken.push_back(cy);
+  }
+  for (const auto& [v, label] : s.ticks) {
+    const double cy = at(v);
+    if (!free(cy)) continue;
+    page.text(label_x, cy, label, "start", kFont, "dy=\"4\"");
+    taken.push_back(cy);
+  }
 }
 
 std::string cross(double x, double y, double s, std::string_view colour, double width) {
