@@ -64,6 +64,18 @@ check_plot(${OUT}/plot_feed.svg "analyze --plot")
 expect_text("${report}" "text label-v: feed, mm/min" "feed plot axes")
 check_plot(${OUT}/plot_shape.svg "analyze --shape-plot")
 expect_text("${report}" "text label-v: Y, mm" "shape plot axes")
+# a file name of more than 100 characters: the titles wrap within the page (plot_check.py)
+set(long ${OUT}/plot_a_program_whose_name_is_far_longer_than_any_title_line_can_hold_roughing_pass_twelve_revision_c.nc)
+configure_file(${SRC}/examples/spiral.nc ${long} COPYONLY)
+run_expect(0 "analyze --plot of a long name" ${NCURVE} analyze ${long} --plot ${OUT}/plot_long_feed.svg --curve spiral
+           --r0 1 --pitch 12.566370614359172 --shape-plot ${OUT}/plot_long_shape.svg)
+check_plot(${OUT}/plot_long_feed.svg "analyze --plot, long name")
+check_plot(${OUT}/plot_long_shape.svg "analyze --shape-plot, long name")
+run_expect(0 "run --plot of a long name" ${NCURVE} run ${long} --plot ${OUT}/plot_long_run.svg)
+check_plot(${OUT}/plot_long_run.svg "run --plot, long name")
+file(READ ${OUT}/plot_long_feed.svg svg)
+expect_text("${svg}" "revision_c.nc" "the whole name in the title")
+
 # the deviation's colour scale when the tolerance is its top: the tolerance's label and the
 # scale's title apart (plot_check.py: no two texts overlap)
 run_expect(0 "gen ellipse" ${NCURVE} gen ellipse --a 20 --b 10 --tol 0.005 -o ${OUT}/plot_ellipse.nc)

@@ -246,12 +246,15 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
                                                        lathe_ ? "; lathe: Z across, X up" : ""));
   // the legend and notes at the bottom
   std::vector<std::string> notes;  // lines, the alarm's last
+  auto note = [&](const std::string& text) {
+    for (auto& line : plot::wrap(text, W - 32, 12)) notes.push_back(std::move(line));
+  };
   if (tol_ > 0)
-    notes.push_back(fmt::format("short moves drawn simplified, within {:.3g} {} of the path, to keep the drawing small",
-                                o.inch ? tol_ / 25.4 : tol_, o.inch ? "in" : "mm"));
+    note(fmt::format("short moves drawn simplified, within {:.3g} {} of the path, to keep the drawing small",
+                     o.inch ? tol_ / 25.4 : tol_, o.inch ? "in" : "mm"));
   if (left_out_)
-    notes.push_back(fmt::format("only the first {} elements are drawn: {} more moves were left out (limit of the plot)",
-                                limit_, left_out_));
+    note(fmt::format("only the first {} elements are drawn: {} more moves were left out (limit of the plot)", limit_,
+                     left_out_));
   std::size_t alarm_lines = 0;
   if (alarm_) {
     auto lines = plot::wrap(fmt::format("the run stopped on alarm {} at {}line {}: {}", alarm_->code,
@@ -357,8 +360,10 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
       auto q = map(alarm_at_);
       page.add(plot::cross(f.x(q[0]), f.y(q[1]), 7, kAlarm, 2.5));
       const bool right = f.x(q[0]) > f.left + f.width * 0.7;  // the label stays inside the panel
-      page.text(f.x(q[0]) + (right ? -10 : 10), f.y(q[1]) - 8, fmt::format("{} line {}", alarm_->code, alarm_->span.line),
-                right ? "end" : "start", 12, fmt::format("class=\"alarm\" fill=\"{}\"", kAlarm));
+      const double room = right ? f.x(q[0]) - 10 - f.left : f.left + f.width - f.x(q[0]) - 10;
+      page.text(f.x(q[0]) + (right ? -10 : 10), f.y(q[1]) - 8,
+                plot::fit(fmt::format("{} line {}", alarm_->code, alarm_->span.line), room, 12), right ? "end" : "start",
+                12, fmt::format("class=\"alarm\" fill=\"{}\"", kAlarm));
     }
     if (view == PlotView::iso) {  // the axes' directions and a scale bar instead of ticks
       const double ox = f.left + 40, oy = f.top + f.height - 40;

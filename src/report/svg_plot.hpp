@@ -19,9 +19,12 @@ std::string tick_label(double value, double step);
 // Width in pixels of text in the sans-serif font at this size (an upper estimate, so margins hold).
 double text_width(std::string_view text, double font_size);
 
-// `text` in lines no wider than `width` at this font size, broken at spaces (a word longer than
-// the width has a line of its own).
+// `text` in lines no wider than `width` at this font size, broken at spaces; a word wider than
+// the width (a long file name) is broken after a / _ - . or the like, else where it has to be.
 std::vector<std::string> wrap(std::string_view text, double width, double font_size);
+// `text` on one line no wider than `width`: as it is when it fits, else its first and last
+// characters about an ellipsis ("…").
+std::string fit(std::string_view text, double width, double font_size);
 
 // An SVG page: the header, a white background and the elements appended to it.
 class Page {
@@ -34,7 +37,7 @@ public:
   // Escaped text at (x, y); anchor "start", "middle" or "end"; extra attributes as markup.
   void text(double x, double y, std::string_view text, std::string_view anchor = "start", double size = 12,
             std::string_view extra = "");
-  // A title and an optional subtitle at the top left; returns the height they take.
+  // A title and an optional subtitle at the top left, wrapped to the page; returns the height they take.
   double heading(std::string_view title, std::string_view subtitle = "");
   std::string str() const;
 

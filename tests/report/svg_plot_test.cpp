@@ -157,6 +157,46 @@ TEST(PlotLayer, LegendEntriesNeverOverlapOrPassTheirWidth) {
   EXPECT_EQ(text_boxes(page.str()).size(), 7u + 2);  // the long entry on three lines
 }
 
+// A 130-character path without a space: wrapped after its slashes and underscores, each line
+// within the width; a word with no separator at all is cut where it has to be; fit keeps both ends.
+TEST(PlotLayer, LongWordsWrapAndLongLabelsShorten) {
+  using report::plot::text_width;
+  const std::string path = "/home/someone/projects/customer_parts_2026/turbine_blade_roughing_operation_"
+                           "number_twelve_final_revision_c_checked_by_quality.nc";
+  ASSERT_GT(path.size(), 120u);
+  auto lines = report::plot::wrap("run of " + path, 300, 15);
+  ASSERT_GE(lines.size(), 3u);
+  std::string joined;
+  for (const auto& l : lines) {
+    EXPECT_LE(text_width(l, 15), 300) << l;
+    joined += l;
+  }
+  EXPECT_EQ(joined, "run of" + path);  // nothing lost but the space the first break took
+  for (std::size_t i = 1; i + 1 < lines.size(); ++i)  // the path broken after its separators
+    EXPECT_NE(std::string("/_").find(lines[i].back()), std::string::npos) << lines[i];
+  for (const auto& l : report::plot::wrap(std::string(200, 'x'), 100, 12)) EXPECT_LE(text_width(l, 12), 100);
+  const std::string short_ = report::plot::fit(path, 200, 12);
+  EXPECT_LE(text_width(short_, 12), 200);
+  EXPECT_EQ(short_.substr(0, 5), "/home");
+  EXPECT_EQ(short_.substr(short_.size() - 3), ".nc");
+  EXPECT_NE(short_.find("…"), std::string::npos);
+  EXPECT_EQ(report::plot::fit("fits", 200, 12), "fits");
+}
+
+// A file name of 130 characters as the title and a long axis label: every text within the page.
+TEST(PlotLayer, LongTitlesStayOnThePage) {
+  report::plot::Page page(500, 400);
+  const std::string name(130, 'n');
+  const double top = page.heading(name + ".nc: feed along the path", "a subtitle " + name);
+  report::plot::Panel p;
+  p.x = 0, p.y = top, p.w = 500, p.h = 400 - top;
+  p.title = "panel " + name;
+  p.u = {0, 10, "u " + name, 1, 6};
+  p.v = {0, 10, "v", 1, 6};
+  report::plot::draw_panel(page, p);
+  expect_apart_and_within(page.str(), 0, 0, 500, 400);
+}
+
 // A mark at the top of the scale where a tick's label also is: the mark's label is written, the
 // tick's left out, and the title wraps to the scale's width above the bar.
 TEST(PlotLayer, ColourScaleLabelsDoNotCollide) {
