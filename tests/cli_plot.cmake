@@ -48,6 +48,28 @@ check_plot(${OUT}/plot_lathe.svg "lathe plot")
 expect_text("${report}" "text label-u: Z, mm" "lathe Z across")
 expect_text("${report}" "text label-v: X (diameter), mm" "lathe X up")
 
+# a lathe has one plane: zx (or xz) draws it, a view of Y is refused before the run, naming the
+# option and the lathe's view; a lathe with a Y axis has them all
+run_expect(0 "lathe --view zx" ${NCURVE} run ${SRC}/examples/lathe-hyperbola.nc --machine fanuc-lathe --plot ${OUT}/plot_lathe_zx.svg
+           --view zx)
+check_plot(${OUT}/plot_lathe_zx.svg "lathe --view zx")
+expect_text("${report}" "text label-u: Z, mm" "lathe --view zx")
+foreach(view xy yz iso)
+  file(REMOVE ${OUT}/plot_lathe_${view}.svg)
+  run_expect(2 "lathe --view ${view}" ${NCURVE} run ${SRC}/examples/lathe-hyperbola.nc --machine fanuc-lathe
+             --plot ${OUT}/plot_lathe_${view}.svg --view ${view})
+  expect_text("${err}" "--view ${view}: a lathe without a Y axis" "lathe --view ${view}")
+  expect_text("${err}" "--view zx" "lathe --view ${view} names the lathe's view")
+  if(EXISTS ${OUT}/plot_lathe_${view}.svg)
+    message(SEND_ERROR "lathe --view ${view}: a drawing was written")
+  endif()
+endforeach()
+file(WRITE ${OUT}/plot_lathe_y.toml "[machine]\nname = \"lathe with a Y axis\"\ntype = \"lathe\"\naxes = [\"X\", \"Y\", \"Z\"]\n")
+run_expect(0 "lathe with Y --view xy" ${NCURVE} run ${SRC}/examples/lathe-hyperbola.nc --machine ${OUT}/plot_lathe_y.toml
+           --plot ${OUT}/plot_lathe_y.svg --view xy)
+check_plot(${OUT}/plot_lathe_y.svg "lathe with Y --view xy")
+expect_text("${report}" "text label-v: Y, mm" "lathe with Y --view xy")
+
 # written whole or not at all
 file(REMOVE ${OUT}/no-such-dir/p.svg)
 run_expect(2 "plot to a missing folder" ${NCURVE} run ${SRC}/examples/spiral.nc --plot ${OUT}/no-such-dir/p.svg)

@@ -22,8 +22,13 @@ std::optional<PlotView> plot_view(const std::string& name) {
   return std::nullopt;
 }
 
+bool view_fits(const machine::MachineProfile& profile, PlotView view) {
+  return !profile.lathe() || view == PlotView::xz || profile.axes.find('Y') != std::string::npos;
+}
+
 PathPlot::PathPlot(const machine::MachineProfile& profile, std::size_t max_elements)
     : lathe_(profile.lathe()), x_diameter_(profile.lathe() && profile.diameter_x),
+      lathe_y_(profile.lathe() && profile.axes.find('Y') != std::string::npos),
       machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(std::max<std::size_t>(max_elements, 1)) {}
 
 namespace {
@@ -229,7 +234,9 @@ std::string style(MoveKind k) {
 }  // namespace
 
 std::string PathPlot::svg(const PathPlotOptions& o) const {
-  std::vector<PlotView> views = o.views;
+  std::vector<PlotView> views;
+  for (PlotView v : o.views)
+    if (!lathe_ || lathe_y_ || v == PlotView::xz) views.push_back(v);
   if (views.empty()) {
     if (lathe_) views = {PlotView::xz};
     else if (machine_plane_ == 18) views = {PlotView::xz, PlotView::iso, PlotView::xy, PlotView::yz};
@@ -243,7 +250,9 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
   for (const auto& e : elements_) ++by_kind[e.kind == MoveKind::rapid ? 0 : e.kind == MoveKind::line ? 1 : 2];
   const double top = page.heading(o.title, fmt::format("{} motions drawn as {} rapid, {} feed and {} arc elements{}",
                                                        motions_, by_kind[0], by_kind[1], by_kind[2],
-                                                       lathe_ ? "; lathe: Z across, X up" : ""));
+                                                       lathe_ && views.front() == PlotView::xz && views.size() == 1
+                                                           ? "; lathe: Z across, X up"
+                                                           : ""));
   // the legend and notes at the bottom
   std::vector<std::string> notes;  // lines, the alarm's last
   auto note = [&](const std::string& text) {

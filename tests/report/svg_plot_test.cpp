@@ -301,6 +301,24 @@ TEST(PathPlot, LatheDrawsZAcrossAndXUpAsDiameter) {
   EXPECT_EQ(texts(d.svg, "tick-u"), (std::vector<std::string>{"-40", "-30", "-20", "-10", "0", "10"}));
 }
 
+// A lathe moves in ZX: the views of Y do not fit it (a view asked for anyway draws ZX), unless
+// the profile has a Y axis.
+TEST(PathPlot, ALatheWithoutYHasTheZXViewOnly) {
+  auto lathe = machine::default_lathe();
+  for (auto v : {report::PlotView::xy, report::PlotView::yz, report::PlotView::iso})
+    EXPECT_FALSE(report::view_fits(lathe, v));
+  EXPECT_TRUE(report::view_fits(lathe, report::PlotView::xz));
+  EXPECT_TRUE(report::view_fits(machine::default_mill(), report::PlotView::iso));
+  auto d = draw("G00 X40. Z5.\nG01 Z-30. F0.2\nM30\n", lathe, {report::PlotView::xy});
+  EXPECT_EQ(texts(d.svg, "label-u"), (std::vector<std::string>{"Z, mm"}));
+  auto with_y = lathe;
+  with_y.axes = "XYZ";
+  EXPECT_TRUE(report::view_fits(with_y, report::PlotView::xy));
+  d = draw("G00 X40. Z5.\nG01 Z-30. F0.2\nM30\n", with_y, {report::PlotView::xy});
+  EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"Y, mm"}));
+  EXPECT_EQ(d.svg.find("Z across"), std::string::npos);
+}
+
 TEST(PathPlot, LatheInRadiusSaysSo) {
   auto p = machine::default_lathe();
   p.diameter_x = false;
