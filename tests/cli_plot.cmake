@@ -70,6 +70,12 @@ run_expect(0 "lathe with Y --view xy" ${NCURVE} run ${SRC}/examples/lathe-hyperb
 check_plot(${OUT}/plot_lathe_y.svg "lathe with Y --view xy")
 expect_text("${report}" "text label-v: Y, mm" "lathe with Y --view xy")
 
+# a rotary A axis is not drawn, and the drawing says so with its range
+run_expect(0 "run --plot, 4 axes" ${NCURVE} run ${SRC}/examples/4-axis.nc --machine ${SRC}/profiles/fanuc-4axis-helicoid.toml
+           --plot ${OUT}/plot_4axis.svg)
+check_plot(${OUT}/plot_4axis.svg "run --plot, 4 axes")
+expect_text("${report}" "text not-drawn: A axis not drawn: 0 to 360 deg" "the A axis named")
+
 # written whole or not at all
 file(REMOVE ${OUT}/no-such-dir/p.svg)
 run_expect(2 "plot to a missing folder" ${NCURVE} run ${SRC}/examples/spiral.nc --plot ${OUT}/no-such-dir/p.svg)

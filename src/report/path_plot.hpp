@@ -64,6 +64,9 @@ private:
   std::array<double, 3> last_{};
   std::optional<nc::Diagnostic> alarm_;
   std::array<double, 3> alarm_at_{};
+  // the profile's A, B and C axes, not drawn: whether each is there and rotary, and its range
+  std::array<bool, 3> other_{}, other_rotary_{};
+  std::array<double, 3> other_lo_{INFINITY, INFINITY, INFINITY}, other_hi_{-INFINITY, -INFINITY, -INFINITY};
 };
 
 }  // namespace ncurve::report

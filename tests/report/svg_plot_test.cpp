@@ -319,6 +319,20 @@ TEST(PathPlot, ALatheWithoutYHasTheZXViewOnly) {
   EXPECT_EQ(d.svg.find("Z across"), std::string::npos);
 }
 
+// The views are of X, Y and Z: a rotary A axis the run turned is named under the title with its
+// range; one that stayed at 0 (or a machine without one) is not mentioned.
+TEST(PathPlot, ARotaryAxisNotDrawnIsSaid) {
+  auto profile = machine::default_mill();
+  profile.axes = "XYZA";
+  profile.rotary[3].rotary = true;
+  auto d = draw("G01 X10. A90. F100.\nA360.\nX0 A-45.\nM30\n", profile, {report::PlotView::xy});
+  EXPECT_EQ(texts(d.svg, "not-drawn"),
+            (std::vector<std::string>{"A axis not drawn: -45 to 360 deg (the views show X, Y and Z)"}));
+  expect_apart_and_within(d.svg, 0, 0, 960, 760);
+  EXPECT_TRUE(texts(draw("G01 X10. F100.\nM30\n", profile, {}).svg, "not-drawn").empty());
+  EXPECT_TRUE(texts(draw(kMill, machine::default_mill(), {}).svg, "not-drawn").empty());
+}
+
 TEST(PathPlot, LatheInRadiusSaysSo) {
   auto p = machine::default_lathe();
   p.diameter_x = false;
