@@ -1,5 +1,6 @@
 # ncurve run --plot / --view, and the plots of gen, analyze and helicoid on the shared layer: each
-# SVG parses and has nothing off its page (tests/plot_check.py), with the axes expected.
+# SVG parses, has nothing off its page and no two texts overlapping (tests/plot_check.py), with
+# the axes expected.
 include(${CMAKE_CURRENT_LIST_DIR}/cli_helpers.cmake)
 set(CHECK ${CMAKE_CURRENT_LIST_DIR}/plot_check.py)
 if(NOT PYTHON3)
@@ -47,6 +48,34 @@ check_plot(${OUT}/plot_lathe.svg "lathe plot")
 expect_text("${report}" "text label-u: Z, mm" "lathe Z across")
 expect_text("${report}" "text label-v: X (diameter), mm" "lathe X up")
 
+# a lathe has one plane: zx (or xz) draws it, a view of Y is refused before the run, naming the
+# option and the lathe's view; a lathe with a Y axis has them all
+run_expect(0 "lathe --view zx" ${NCURVE} run ${SRC}/examples/lathe-hyperbola.nc --machine fanuc-lathe --plot ${OUT}/plot_lathe_zx.svg
+           --view zx)
+check_plot(${OUT}/plot_lathe_zx.svg "lathe --view zx")
+expect_text("${report}" "text label-u: Z, mm" "lathe --view zx")
+foreach(view xy yz iso)
+  file(REMOVE ${OUT}/plot_lathe_${view}.svg)
+  run_expect(2 "lathe --view ${view}" ${NCURVE} run ${SRC}/examples/lathe-hyperbola.nc --machine fanuc-lathe
+             --plot ${OUT}/plot_lathe_${view}.svg --view ${view})
+  expect_text("${err}" "--view ${view}: a lathe without a Y axis" "lathe --view ${view}")
+  expect_text("${err}" "--view zx" "lathe --view ${view} names the lathe's view")
+  if(EXISTS ${OUT}/plot_lathe_${view}.svg)
+    message(SEND_ERROR "lathe --view ${view}: a drawing was written")
+  endif()
+endforeach()
+file(WRITE ${OUT}/plot_lathe_y.toml "[machine]\nname = \"lathe with a Y axis\"\ntype = \"lathe\"\naxes = [\"X\", \"Y\", \"Z\"]\n")
+run_expect(0 "lathe with Y --view xy" ${NCURVE} run ${SRC}/examples/lathe-hyperbola.nc --machine ${OUT}/plot_lathe_y.toml
+           --plot ${OUT}/plot_lathe_y.svg --view xy)
+check_plot(${OUT}/plot_lathe_y.svg "lathe with Y --view xy")
+expect_text("${report}" "text label-v: Y, mm" "lathe with Y --view xy")
+
+# a rotary A axis is not drawn, and the drawing says so with its range
+run_expect(0 "run --plot, 4 axes" ${NCURVE} run ${SRC}/examples/4-axis.nc --machine ${SRC}/profiles/fanuc-4axis-helicoid.toml
+           --plot ${OUT}/plot_4axis.svg)
+check_plot(${OUT}/plot_4axis.svg "run --plot, 4 axes")
+expect_text("${report}" "text not-drawn: A axis not drawn: 0 to 360 deg" "the A axis named")
+
 # written whole or not at all
 file(REMOVE ${OUT}/no-such-dir/p.svg)
 run_expect(2 "plot to a missing folder" ${NCURVE} run ${SRC}/examples/spiral.nc --plot ${OUT}/no-such-dir/p.svg)
@@ -63,6 +92,27 @@ check_plot(${OUT}/plot_feed.svg "analyze --plot")
 expect_text("${report}" "text label-v: feed, mm/min" "feed plot axes")
 check_plot(${OUT}/plot_shape.svg "analyze --shape-plot")
 expect_text("${report}" "text label-v: Y, mm" "shape plot axes")
+# a file name of more than 100 characters: the titles wrap within the page (plot_check.py)
+set(long ${OUT}/plot_a_program_whose_name_is_far_longer_than_any_title_line_can_hold_roughing_pass_twelve_revision_c.nc)
+configure_file(${SRC}/examples/spiral.nc ${long} COPYONLY)
+run_expect(0 "analyze --plot of a long name" ${NCURVE} analyze ${long} --plot ${OUT}/plot_long_feed.svg --curve spiral
+           --r0 1 --pitch 12.566370614359172 --shape-plot ${OUT}/plot_long_shape.svg)
+check_plot(${OUT}/plot_long_feed.svg "analyze --plot, long name")
+check_plot(${OUT}/plot_long_shape.svg "analyze --shape-plot, long name")
+run_expect(0 "run --plot of a long name" ${NCURVE} run ${long} --plot ${OUT}/plot_long_run.svg)
+check_plot(${OUT}/plot_long_run.svg "run --plot, long name")
+file(READ ${OUT}/plot_long_feed.svg svg)
+expect_text("${svg}" "revision_c.nc" "the whole name in the title")
+
+# the deviation's colour scale when the tolerance is its top: the tolerance's label and the
+# scale's title apart (plot_check.py: no two texts overlap)
+run_expect(0 "gen ellipse" ${NCURVE} gen ellipse --a 20 --b 10 --tol 0.005 -o ${OUT}/plot_ellipse.nc)
+run_expect(0 "analyze --shape-plot, tolerance at the top" ${NCURVE} analyze ${OUT}/plot_ellipse.nc --curve ellipse
+           --a 20 --b 10 --tol 0.005 --shape-plot ${OUT}/plot_ellipse.svg)
+check_plot(${OUT}/plot_ellipse.svg "analyze --shape-plot of the ellipse")
+expect_text("${report}" "text label-u: X, mm" "shape plot axes")
+file(READ ${OUT}/plot_ellipse.svg svg)
+expect_text("${svg}" ">tolerance 5 µm<" "the tolerance marked on the colour scale")
 foreach(kv "25,30" "25,25" "2,40")
   run_expect(0 "circle plot ${kv}" ${NCURVE} analyze circle --radius 50 --feed 5000 --kv ${kv} --plot ${OUT}/plot_circle.svg)
   check_plot(${OUT}/plot_circle.svg "circle plot ${kv}")

@@ -11,7 +11,9 @@
 // moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32/64Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
 // Float32Array (per arc: centre X Y Z, sweep in radians counter-clockwise, plane 17/18/19),
-// block: Uint32Array (per move, its block), lathe, diameter, inch, plane, alarmAt: [X, Y, Z] | null}.
+// block: Uint32Array (per move, its block), lathe, diameter, inch, plane, alarmAt: [X, Y, Z] | null,
+// rotary: [{axis, unit, min, max}] (the A, B, C axes the run moved, not drawn), rotaryEnd:
+// Float64Array (per rotary axis in turn, its end for each move)}.
 (function (global) {
   'use strict';
   const THREE = global.THREE;
@@ -55,6 +57,8 @@
       blockLine: new Uint32Array(bytes(d.block_line)),
       lathe: !!d.lathe, diameter: !!d.diameter, inch: !!d.inch, plane: d.plane || 17,
       alarmAt: d.alarm ? d.alarm.at : null,
+      rotary: d.rotary || [],
+      rotaryEnd: new Float64Array(bytes(d.rotary_end)),
     };
   }
 

@@ -67,6 +67,11 @@
     fact(`extent, ${unitName}`, parts.join('   '));
   }
   if (summary.warnings && summary.warnings.length) fact('warnings', summary.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}`).join('; '));
+  // the rotary (or other A, B, C) axes: the drawing is of X, Y and Z
+  if (moves.rotary.length) {
+    const range = (r) => `${r.axis} ${fmt(r.min / (r.unit === 'mm' ? unit : 1))} … ${fmt(r.max / (r.unit === 'mm' ? unit : 1))}${r.unit === 'deg' ? '°' : ' ' + unitName}`;
+    fact('axes not drawn', `${moves.rotary.map(range).join('   ')} (the view shows X, Y and Z; hover a move for its end)`);
+  }
   if (data.left_out) fact('not drawn', `${data.left_out} motions past the first ${moves.count} (the page's limit)`);
   head.append(facts);
 
@@ -93,9 +98,12 @@
     if (text) box.append(el('code', 'block', text.trim()));
     const e = moves.end.subarray(3 * i, 3 * i + 3);
     const xs = data.lathe && data.diameter ? 2 : 1;
-    const end = data.lathe
+    let end = data.lathe
       ? `X${fmt(e[0] * xs / unit)} Z${fmt(e[2] / unit)}`
       : `X${fmt(e[0] / unit)} Y${fmt(e[1] / unit)} Z${fmt(e[2] / unit)}`;
+    moves.rotary.forEach((r, k) => {  // degrees, or a linear A, B, C in the page's unit
+      end += ` ${r.axis}${fmt(moves.rotaryEnd[k * moves.count + i] / (r.unit === 'mm' ? unit : 1))}`;
+    });
     const k = moves.kind[i];
     const feed = k === 0 ? '' : ` · F${fmt(moves.feed[i] / (data.inch ? unit : 1))}`;
     box.append(el('div', 'what', `move ${i + 1} of ${moves.count} · ${KIND_TEXT[k]}${feed} · to ${end}`));

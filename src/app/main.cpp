@@ -50,6 +50,10 @@ int run_command(const app::RunArgs& a) {
   }
   const machine::MachineProfile& profile = setup.profile;
   machine::ProgramLibrary& lib = *setup.lib;
+  if (const std::string why = app::plot_view_problem(profile, a.view); !why.empty()) {
+    std::cerr << "ncurve run: " << why;
+    return 2;
+  }
 
   // "-o -" is the default: the output to standard output, an alarm to the terminal
   const std::string output = a.output == "-" ? std::string() : a.output;

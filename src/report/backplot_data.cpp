@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <nlohmann/json.hpp>
 
@@ -11,7 +12,12 @@ static_assert(std::endian::native == std::endian::little, "the page reads the ar
 
 BackplotData::BackplotData(const machine::MachineProfile& profile, std::size_t limit)
     : lathe_(profile.lathe()), x_diameter_(profile.lathe() && profile.diameter_x),
-      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(limit) {}
+      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(limit) {
+  for (int k = 0; k < 3; ++k) {
+    other_[k] = profile.axes.find("ABC"[k]) != std::string::npos;
+    other_rotary_[k] = profile.rotary[3 + k].rotary;
+  }
+}
 
 std::uint32_t BackplotData::block_of(const machine::Move& m) {
   if (have_last_block_ && m.file == last_file_ && m.line == last_line_) return last_block_;
@@ -35,6 +41,10 @@ std::uint32_t BackplotData::block_of(const machine::Move& m) {
 void BackplotData::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
   const std::array<double, 3> a{m.start[0], m.start[1], m.start[2]}, b{m.end[0], m.end[1], m.end[2]};
+  for (int k = 0; k < 3; ++k)
+    if (other_[k])
+      other_lo_[k] = std::min({other_lo_[k], m.start[3 + k], m.end[3 + k]}),
+      other_hi_[k] = std::max({other_hi_[k], m.start[3 + k], m.end[3 + k]});
   if (kind_.size() >= limit_) {
     ++left_out_;
     last_ = b;
@@ -48,6 +58,8 @@ void BackplotData::on_move(const machine::Move& m) {
   for (double v : b) end_.push_back(static_cast<float>(v));
   feed_.push_back(static_cast<float>(m.feed));
   block_.push_back(block_of(m));
+  for (int k = 0; k < 3; ++k)
+    if (other_[k]) other_end_[k].push_back(m.end[3 + k]);
   if (m.kind == machine::MoveKind::arc) {
     for (double v : m.center) arcs_.push_back(static_cast<float>(v));
     arcs_.push_back(static_cast<float>(m.sweep));
@@ -127,6 +139,16 @@ std::string BackplotData::json(bool inch) const {
   } else {
     head["alarm"] = nullptr;
   }
+  // the A, B and C axes the run moved (not drawn): their ranges, and their ends axis by axis
+  nlohmann::json rotary = nlohmann::json::array();
+  std::vector<double> rotary_end;
+  for (int k = 0; k < 3; ++k) {
+    if (!other_[k] || !(other_lo_[k] <= other_hi_[k]) || (other_lo_[k] == 0 && other_hi_[k] == 0)) continue;
+    rotary.push_back({{"axis", std::string(1, "ABC"[k])}, {"unit", other_rotary_[k] ? "deg" : "mm"},
+                      {"min", other_lo_[k]}, {"max", other_hi_[k]}});
+    rotary_end.insert(rotary_end.end(), other_end_[k].begin(), other_end_[k].end());
+  }
+  head["rotary"] = rotary;
   std::string out = dump(head);
   out.pop_back();  // the closing brace: the arrays follow
   const std::size_t bytes = kind_.size() * 21 + arcs_.size() * 4 + block_line_.size() * 6;
@@ -138,6 +160,7 @@ std::string BackplotData::json(bool inch) const {
   add_array(out, "arcs", arcs_);
   add_array(out, "block_file", block_file_);
   add_array(out, "block_line", block_line_);
+  add_array(out, "rotary_end", rotary_end);
   out += '}';
   return out;
 }

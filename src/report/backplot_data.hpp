@@ -5,6 +5,7 @@
 // documented in docs/html.md.
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -57,6 +58,11 @@ private:
   bool have_last_block_ = false;
   std::optional<nc::Diagnostic> alarm_;
   std::array<double, 3> alarm_at_{};
+  // the profile's A, B and C axes (the drawing is of X Y Z): whether each is there and rotary,
+  // its range over the run and its end for each motion kept
+  std::array<bool, 3> other_{}, other_rotary_{};
+  std::array<double, 3> other_lo_{INFINITY, INFINITY, INFINITY}, other_hi_{-INFINITY, -INFINITY, -INFINITY};
+  std::array<std::vector<double>, 3> other_end_;
 };
 
 // `text` as base64 (RFC 4648, with padding).

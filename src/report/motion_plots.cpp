@@ -69,8 +69,21 @@ std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::
   }
   for (const auto& p : nominal) grow(p[0], p[1]);
   if (!std::isfinite(x0)) x0 = y0 = 0, x1 = y1 = 1;
+  // the summary under the drawing, wrapped to the page
+  std::size_t over = 0, blocks = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const bool first = i == 0 || path[i - 1].block != path[i].block;
+    blocks += first;
+    over += first && tolerance > 0 && path[i].deviation > tolerance;
+  }
+  const auto notes = plot::wrap(
+      fmt::format("largest deviation {:.2f} µm{} · grey: the nominal curve · {} blocks", worst * 1000,
+                  tolerance > 0 ? fmt::format(" · tolerance {:g} µm, {} blocks beyond it (thick)", tolerance * 1000, over) : "",
+                  blocks),
+      W - 32, 12);
+  const double notes_h = 16 * static_cast<double>(notes.size());
   plot::Panel panel;  // one scale on both axes
-  panel.x = 8, panel.y = top, panel.w = W - bar_w - 16, panel.h = H - top - 30;
+  panel.x = 8, panel.y = top, panel.w = W - bar_w - 16, panel.h = H - top - 14 - notes_h;
   panel.u = {x0, x1, u_name + ", mm", 1, 6};
   panel.v = {y0, y1, v_name + ", mm", 1, 6};
   panel.equal = true;
@@ -80,39 +93,23 @@ std::string deviation_svg(const std::vector<DeviationSegment>& path, const std::
   for (const auto& p : nominal) pts += fmt::format("{:.2f},{:.2f} ", f.x(p[0]), f.y(p[1]));
   s += fmt::format("<polyline fill=\"none\" stroke=\"#bbb\" stroke-width=\"5\" stroke-linecap=\"round\" points=\"{}\"/>\n", pts);
   const double scale = std::max(worst, tolerance > 0 ? tolerance : 0.0);
-  std::size_t over = 0, blocks = 0;
-  for (std::size_t i = 0; i < path.size(); ++i) {
-    const auto& p = path[i];
+  for (const auto& p : path) {
     const bool beyond = tolerance > 0 && p.deviation > tolerance;
-    const bool first = i == 0 || path[i - 1].block != p.block;
-    blocks += first;
-    over += beyond && first;
     s += fmt::format("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"{}\" stroke-width=\"{}\" "
                      "stroke-linecap=\"round\"/>\n",
                      f.x(p.x0), f.y(p.y0), f.x(p.x1), f.y(p.y1), heat(scale > 0 ? p.deviation / scale : 0), beyond ? 4 : 2);
   }
-  // colour scale in micrometres, beside the panel
-  const double bar_x = W - bar_w + 10, bar_top = f.top + 20, bar_h = f.height - 20;
-  for (int i = 0; i < 100; ++i)
-    s += fmt::format("<rect x=\"{}\" y=\"{:.1f}\" width=\"18\" height=\"{:.2f}\" fill=\"{}\"/>\n", bar_x,
-                     bar_top + bar_h - (i + 1) * bar_h / 100, bar_h / 100 + 0.5, heat((i + 0.5) / 100));
-  const double um = scale * 1000;
-  for (double v : plot::nice_ticks(0, std::max(um, 1e-6), 5))
-    s += fmt::format("<text x=\"{}\" y=\"{:.1f}\" dy=\"4\" font-size=\"10\">{} µm</text>\n", bar_x + 24,
-                     bar_top + bar_h - (um > 0 ? v / um : 0) * bar_h, plot::tick_label(v, plot::nice_step(std::max(um, 1e-6), 5)));
-  if (tolerance > 0) {
-    const double y = bar_top + bar_h - tolerance / scale * bar_h;
-    s += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"black\" stroke-width=\"2\"/>"
-                     "<text x=\"{}\" y=\"{:.1f}\" dy=\"-4\" font-size=\"10\">tolerance</text>\n",
-                     bar_x - 4, y, bar_x + 22, y, bar_x + 24, y - 8);
-  }
   page.add(s);
-  page.text(W - 8, f.top + 8, "deviation of each block", "end", 11);
-  page.text(16, H - 10, fmt::format("largest deviation {:.2f} µm{} · grey: the nominal curve · {} blocks", worst * 1000,
-                                    tolerance > 0 ? fmt::format(" · tolerance {:g} µm, {} blocks beyond it (thick)",
-                                                                tolerance * 1000, over)
-                                                  : "",
-                                    blocks));
+  // colour scale in micrometres, beside the panel
+  plot::ColourScale bar;
+  bar.x = W - bar_w + 4, bar.y = f.top, bar.width = bar_w - 12, bar.height = f.height;
+  bar.title = "deviation of each block";
+  bar.colour = heat;
+  const double um = std::max(scale * 1000, 1e-6), step = plot::nice_step(um, 5);
+  for (double v : plot::nice_ticks(0, um, 5)) bar.ticks.push_back({v / um, plot::tick_label(v, step) + " µm"});
+  if (tolerance > 0) bar.mark = {{tolerance / scale, fmt::format("tolerance {:g} µm", tolerance * 1000)}};
+  plot::draw_colour_scale(page, bar);
+  for (std::size_t i = 0; i < notes.size(); ++i) page.text(16, H - 10 - 16 * static_cast<double>(notes.size() - 1 - i), notes[i]);
   return page.str();
 }
 

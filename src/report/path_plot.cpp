@@ -22,11 +22,45 @@ std::optional<PlotView> plot_view(const std::string& name) {
   return std::nullopt;
 }
 
+bool view_fits(const machine::MachineProfile& profile, PlotView view) {
+  return !profile.lathe() || view == PlotView::xz || profile.axes.find('Y') != std::string::npos;
+}
+
 PathPlot::PathPlot(const machine::MachineProfile& profile, std::size_t max_elements)
     : lathe_(profile.lathe()), x_diameter_(profile.lathe() && profile.diameter_x),
-      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(std::max<std::size_t>(max_elements, 1)) {}
+      lathe_y_(profile.lathe() && profile.axes.find('Y') != std::string::npos),
+      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(std::max<std::size_t>(max_elements, 1)) {
+  for (int k = 0; k < 3; ++k) {
+    other_[k] = profile.axes.find("ABC"[k]) != std::string::npos;
+    other_rotary_[k] = profile.rotary[3 + k].rotary;
+  }
+}
 
 namespace {
+
+// What a drawing of X, Y and Z leaves out: "A axis not drawn: 0 to 360 deg" for each of the
+// profile's A, B and C axes that was ever away from 0 (lo > hi: no motion; inch: a linear one in
+// inches); empty when there is none.
+std::string axes_not_drawn(const std::array<bool, 3>& present, const std::array<bool, 3>& rotary,
+                           const std::array<double, 3>& lo, const std::array<double, 3>& hi, bool inch) {
+  auto number = [](double v) {
+    std::string s = fmt::format("{:.3f}", v);
+    s.erase(s.find_last_not_of('0') + 1);
+    if (s.back() == '.') s.pop_back();
+    return s == "-0" ? std::string("0") : s;
+  };
+  std::string out;
+  for (int k = 0; k < 3; ++k) {
+    if (!present[k] || !(lo[k] <= hi[k]) || (lo[k] == 0 && hi[k] == 0)) continue;
+    const double scale = rotary[k] || !inch ? 1 : 1 / 25.4;
+    const char* unit = rotary[k] ? "deg" : inch ? "in" : "mm";
+    if (!out.empty()) out += " · ";
+    out += lo[k] == hi[k] ? fmt::format("{} axis not drawn: at {} {}", "ABC"[k], number(lo[k] * scale), unit)
+                          : fmt::format("{} axis not drawn: {} to {} {}", "ABC"[k], number(lo[k] * scale),
+                                        number(hi[k] * scale), unit);
+  }
+  return out;
+}
 
 Vec xyz(const machine::AxisVector& v) { return {v[0], v[1], v[2]}; }
 
@@ -44,6 +78,10 @@ bool continues(const Vec& a, const Vec& b, const Vec& c) {
 void PathPlot::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
   ++motions_;
+  for (int k = 0; k < 3; ++k)
+    if (other_[k])
+      other_lo_[k] = std::min({other_lo_[k], m.start[3 + k], m.end[3 + k]}),
+      other_hi_[k] = std::max({other_hi_[k], m.start[3 + k], m.end[3 + k]});
   const Vec a = xyz(m.start), b = xyz(m.end);
   for (int k = 0; k < 3; ++k) lo_[k] = std::min({lo_[k], a[k], b[k]}), hi_[k] = std::max({hi_[k], a[k], b[k]});
   last_ = b;
@@ -229,7 +267,9 @@ std::string style(MoveKind k) {
 }  // namespace
 
 std::string PathPlot::svg(const PathPlotOptions& o) const {
-  std::vector<PlotView> views = o.views;
+  std::vector<PlotView> views;
+  for (PlotView v : o.views)
+    if (!lathe_ || lathe_y_ || v == PlotView::xz) views.push_back(v);
   if (views.empty()) {
     if (lathe_) views = {PlotView::xz};
     else if (machine_plane_ == 18) views = {PlotView::xz, PlotView::iso, PlotView::xy, PlotView::yz};
@@ -241,17 +281,30 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
   plot::Page page(W, H);
   std::uint64_t by_kind[3] = {0, 0, 0};
   for (const auto& e : elements_) ++by_kind[e.kind == MoveKind::rapid ? 0 : e.kind == MoveKind::line ? 1 : 2];
-  const double top = page.heading(o.title, fmt::format("{} motions drawn as {} rapid, {} feed and {} arc elements{}",
+  double top = page.heading(o.title, fmt::format("{} motions drawn as {} rapid, {} feed and {} arc elements{}",
                                                        motions_, by_kind[0], by_kind[1], by_kind[2],
-                                                       lathe_ ? "; lathe: Z across, X up" : ""));
+                                                       lathe_ && views.front() == PlotView::xz && views.size() == 1
+                                                           ? "; lathe: Z across, X up"
+                                                           : ""));
+  // the axes the views leave out, under the heading
+  if (const std::string other = axes_not_drawn(other_, other_rotary_, other_lo_, other_hi_, o.inch); !other.empty()) {
+    for (const auto& line : plot::wrap(other + " (the views show X, Y and Z)", W - 32, 12)) {
+      page.text(16, top + 6, line, "start", 12, "class=\"not-drawn\" fill=\"#bf360c\"");
+      top += 16;
+    }
+    top += 2;
+  }
   // the legend and notes at the bottom
   std::vector<std::string> notes;  // lines, the alarm's last
+  auto note = [&](const std::string& text) {
+    for (auto& line : plot::wrap(text, W - 32, 12)) notes.push_back(std::move(line));
+  };
   if (tol_ > 0)
-    notes.push_back(fmt::format("short moves drawn simplified, within {:.3g} {} of the path, to keep the drawing small",
-                                o.inch ? tol_ / 25.4 : tol_, o.inch ? "in" : "mm"));
+    note(fmt::format("short moves drawn simplified, within {:.3g} {} of the path, to keep the drawing small",
+                     o.inch ? tol_ / 25.4 : tol_, o.inch ? "in" : "mm"));
   if (left_out_)
-    notes.push_back(fmt::format("only the first {} elements are drawn: {} more moves were left out (limit of the plot)",
-                                limit_, left_out_));
+    note(fmt::format("only the first {} elements are drawn: {} more moves were left out (limit of the plot)", limit_,
+                     left_out_));
   std::size_t alarm_lines = 0;
   if (alarm_) {
     auto lines = plot::wrap(fmt::format("the run stopped on alarm {} at {}line {}: {}", alarm_->code,
@@ -357,8 +410,10 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
       auto q = map(alarm_at_);
       page.add(plot::cross(f.x(q[0]), f.y(q[1]), 7, kAlarm, 2.5));
       const bool right = f.x(q[0]) > f.left + f.width * 0.7;  // the label stays inside the panel
-      page.text(f.x(q[0]) + (right ? -10 : 10), f.y(q[1]) - 8, fmt::format("{} line {}", alarm_->code, alarm_->span.line),
-                right ? "end" : "start", 12, fmt::format("class=\"alarm\" fill=\"{}\"", kAlarm));
+      const double room = right ? f.x(q[0]) - 10 - f.left : f.left + f.width - f.x(q[0]) - 10;
+      page.text(f.x(q[0]) + (right ? -10 : 10), f.y(q[1]) - 8,
+                plot::fit(fmt::format("{} line {}", alarm_->code, alarm_->span.line), room, 12), right ? "end" : "start",
+                12, fmt::format("class=\"alarm\" fill=\"{}\"", kAlarm));
     }
     if (view == PlotView::iso) {  // the axes' directions and a scale bar instead of ticks
       const double ox = f.left + 40, oy = f.top + f.height - 40;

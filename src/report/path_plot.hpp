@@ -16,11 +16,15 @@
 namespace ncurve::report {
 
 enum class PlotView : std::uint8_t { xy, xz, yz, iso };
-// "xy", "xz", "yz" or "iso"; nullopt for anything else.
+// "xy", "xz" (or "zx"), "yz" or "iso"; nullopt for anything else.
 std::optional<PlotView> plot_view(const std::string& name);
+// Whether the view shows something on this machine: a lathe without a Y axis moves in one plane,
+// ZX, and has that view only (the others would draw its Y, always 0).
+bool view_fits(const machine::MachineProfile& profile, PlotView view);
 
 struct PathPlotOptions {
-  std::vector<PlotView> views;  // empty: the machine plane, the two other projections and iso (lathe: ZX)
+  std::vector<PlotView> views;  // empty: the machine plane, the two other projections and iso (lathe: ZX);
+                                // views that do not fit the machine are left out
   std::string title;
   bool inch = false;            // axes in inches (the program ended under G20)
 };
@@ -46,7 +50,7 @@ public:
 private:
   void compact();
   void simplify(double tol, std::size_t from);
-  bool lathe_, x_diameter_;
+  bool lathe_, x_diameter_, lathe_y_;  // lathe_y_: a lathe with a Y axis
   int machine_plane_;
   std::size_t limit_;
   std::vector<Element> elements_;
@@ -60,6 +64,9 @@ private:
   std::array<double, 3> last_{};
   std::optional<nc::Diagnostic> alarm_;
   std::array<double, 3> alarm_at_{};
+  // the profile's A, B and C axes, not drawn: whether each is there and rotary, and its range
+  std::array<bool, 3> other_{}, other_rotary_{};
+  std::array<double, 3> other_lo_{INFINITY, INFINITY, INFINITY}, other_hi_{-INFINITY, -INFINITY, -INFINITY};
 };
 
 }  // namespace ncurve::report

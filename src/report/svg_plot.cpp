@@ -54,6 +54,44 @@ void Page::text(double x, double y, std::string_view t, std::string_view anchor,
                        xml_escape(t));
 }
 
+namespace {
+
+// The byte offset after the first n code points of text (its size if it has fewer).
+std::size_t after_chars(std::string_view text, std::size_t n) {
+  std::size_t at = 0;
+  for (; at < text.size(); ++at)
+    if ((static_cast<unsigned char>(text[at]) & 0xC0) != 0x80 && n-- == 0) break;
+  return at;
+}
+
+// How many characters of this size fit in width (at least one).
+std::size_t chars_in(double width, double size) {
+  return static_cast<std::size_t>(std::max(1.0, std::floor(width / (size * 0.62) + 1e-9)));
+}
+
+// A word wider than width in pieces that fit: each ends after a separator of a path or name when
+// one lets it take at least half the width, else after as many characters as fit.
+std::vector<std::string> split_word(std::string_view word, double width, double size) {
+  std::vector<std::string> out;
+  const std::size_t n = chars_in(width, size);
+  while (text_width(word, size) > width) {
+    std::size_t cut = after_chars(word, n);
+    for (std::size_t k = n; k > n / 2; --k) {
+      const std::size_t end = after_chars(word, k);
+      if (std::string_view("/\\_-.,;:").find(word[end - 1]) != std::string_view::npos) {
+        cut = end;
+        break;
+      }
+    }
+    out.emplace_back(word.substr(0, cut));
+    word.remove_prefix(cut);
+  }
+  out.emplace_back(word);
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::string> wrap(std::string_view text, double width, double size) {
   std::vector<std::string> lines;
   std::string line;
@@ -66,12 +104,29 @@ std::vector<std::string> wrap(std::string_view text, double width, double size) 
       lines.push_back(line);
       line.clear();
     }
-    if (!line.empty()) line += ' ';
-    line += word;
+    if (line.empty() && text_width(word, size) > width) {  // a word of lines of its own
+      auto pieces = split_word(word, width, size);
+      lines.insert(lines.end(), pieces.begin(), pieces.end() - 1);
+      line = pieces.back();
+    } else {
+      if (!line.empty()) line += ' ';
+      line += word;
+    }
     at = end + 1;
   }
   if (!line.empty() || lines.empty()) lines.push_back(line);
   return lines;
+}
+
+std::string fit(std::string_view text, double width, double size) {
+  if (text_width(text, size) <= width) return std::string(text);
+  const std::size_t n = chars_in(width, size);
+  if (n < 2) return "…";
+  // the first and last characters kept about the ellipsis: a path keeps its file name
+  std::size_t chars = 0;
+  for (unsigned char c : text) chars += (c & 0xC0) != 0x80;
+  const std::size_t head = (n - 1) / 2, tail = n - 1 - head;
+  return std::string(text.substr(0, after_chars(text, head))) + "…" + std::string(text.substr(after_chars(text, chars - tail)));
 }
 
 double Page::heading(std::string_view title, std::string_view subtitle) {
@@ -161,7 +216,7 @@ Frame draw_panel(Page& page, const Panel& p) {
     if (!p.ticks) break;
   }
   f.u0 = u.lo, f.u1 = u.hi, f.v0 = v.lo, f.v1 = v.hi;
-  if (!p.title.empty()) page.text(f.left, p.y + 15, p.title, "start", kTitleFont);
+  if (!p.title.empty()) page.text(f.left, p.y + 15, fit(p.title, p.x + p.w - f.left, kTitleFont), "start", kTitleFont);
   std::string s = fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" stroke=\"#999\"/>\n",
                               f.left, f.top, f.width, f.height);
   if (p.ticks) {
@@ -186,11 +241,11 @@ Frame draw_panel(Page& page, const Panel& p) {
     }
     page.add(s);
     if (!p.u.label.empty())
-      page.text(f.left + f.width / 2, f.top + f.height + kTickFont + 24, p.u.label, "middle", kLabelFont,
+      page.text(f.left + f.width / 2, f.top + f.height + kTickFont + 24, fit(p.u.label, f.width, kLabelFont), "middle", kLabelFont,
                 "class=\"label-u\"");
     if (!p.v.label.empty()) {
       const double x = f.left - lv.widest - 14, y = f.top + f.height / 2;
-      page.text(x, y, p.v.label, "middle", kLabelFont, fmt::format("class=\"label-v\" transform=\"rotate(-90 {:.1f} {:.1f})\"", x, y));
+      page.text(x, y, fit(p.v.label, f.height, kLabelFont), "middle", kLabelFont, fmt::format("class=\"label-v\" transform=\"rotate(-90 {:.1f} {:.1f})\"", x, y));
     }
   } else {
     page.add(s);
@@ -199,10 +254,17 @@ Frame draw_panel(Page& page, const Panel& p) {
 }
 
 double draw_legend(Page& page, double x, double y, double max_width, const std::vector<LegendEntry>& entries) {
-  double cx = x, cy = y + 12;
+  // entries side by side, a row wrapping to the next when the next entry would pass max_width; a
+  // text wider than max_width wraps within its entry, whose row grows with its lines
+  constexpr double kSample = 30, kGap = 16, kLine = 15, kRow = 18;
+  double cx = x, row_top = y, row_h = 0;
   for (const auto& e : entries) {
-    const double w = 30 + text_width(e.label, 12) + 16;
-    if (cx > x && cx + w > x + max_width) cx = x, cy += 18;
+    const auto lines = wrap(e.label, std::max(max_width - kSample, 12.0), 12);
+    double tw = 0;
+    for (const auto& l : lines) tw = std::max(tw, text_width(l, 12));
+    const double w = kSample + tw + kGap;
+    if (cx > x && cx + w - kGap > x + max_width) cx = x, row_top += row_h, row_h = 0;
+    const double cy = row_top + 12;
     if (e.cross)
       page.add(cross(cx + 11, cy - 4, 5, e.stroke));
     else if (e.dot)
@@ -211,10 +273,53 @@ double draw_legend(Page& page, double x, double y, double max_width, const std::
       page.add(fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"{:g}\"{}/>\n",
                            cx, cy - 4, cx + 24, cy - 4, e.stroke, e.width,
                            e.dash.empty() ? "" : fmt::format(" stroke-dasharray=\"{}\"", e.dash)));
-    page.text(cx + 30, cy, e.label);
+    for (std::size_t i = 0; i < lines.size(); ++i) page.text(cx + kSample, cy + kLine * static_cast<double>(i), lines[i]);
     cx += w;
+    row_h = std::max(row_h, kRow + kLine * static_cast<double>(lines.size() - 1));
   }
-  return cy - y + 6;
+  return row_top + row_h - y;
+}
+
+double legend_height(double max_width, const std::vector<LegendEntry>& entries) {
+  Page scratch(max_width, 1);
+  return draw_legend(scratch, 0, 0, max_width, entries);
+}
+
+void draw_colour_scale(Page& page, const ColourScale& s) {
+  constexpr double kFont = 10, kBar = 18;
+  double y = s.y;
+  for (const auto& line : wrap(s.title, s.width, 11)) {
+    page.text(s.x, y + 11, line, "start", 11);
+    y += 14;
+  }
+  // the bar leaves half a label's height below it, for the label of its bottom
+  const double top = y + 10, height = std::max(10.0, s.y + s.height - kFont * 0.6 - top), bar_x = s.x + 6, label_x = bar_x + kBar + 6;
+  const double label_w = s.x + s.width - label_x;
+  std::string out;
+  for (int i = 0; i < 100; ++i)
+    out += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:g}\" height=\"{:.2f}\" fill=\"{}\"/>\n", bar_x,
+                       top + height - (i + 1) * height / 100, kBar, height / 100 + 0.5, s.colour((i + 0.5) / 100));
+  page.add(out);
+  // labels centred on their values, the mark's first; a tick label that would touch one already
+  // written is left out
+  std::vector<double> taken;  // the centres of the labels written
+  auto free = [&](double cy) {
+    return std::none_of(taken.begin(), taken.end(), [&](double t) { return std::fabs(t - cy) < kFont + 2; });
+  };
+  auto at = [&](double v) { return top + height - std::clamp(v, 0.0, 1.0) * height; };
+  if (s.mark) {
+    const double cy = at(s.mark->first);
+    page.add(fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"black\" stroke-width=\"2\"/>\n",
+                         bar_x - 4, cy, bar_x + kBar + 4, cy));
+    page.text(label_x, cy, fit(s.mark->second, label_w, kFont), "start", kFont, "dy=\"4\" font-weight=\"bold\"");
+    taken.push_back(cy);
+  }
+  for (const auto& [v, label] : s.ticks) {
+    const double cy = at(v);
+    if (!free(cy)) continue;
+    page.text(label_x, cy, fit(label, label_w, kFont), "start", kFont, "dy=\"4\"");
+    taken.push_back(cy);
+  }
 }
 
 std::string cross(double x, double y, double s, std::string_view colour, double width) {

@@ -1,8 +1,11 @@
 // The plotting layer every SVG of ncurve is drawn with: a page, panels with axes whose round tick
 // steps and labels size the margins (so nothing is clipped), legends, and text always escaped.
 #pragma once
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace ncurve::report::plot {
@@ -16,9 +19,12 @@ std::string tick_label(double value, double step);
 // Width in pixels of text in the sans-serif font at this size (an upper estimate, so margins hold).
 double text_width(std::string_view text, double font_size);
 
-// `text` in lines no wider than `width` at this font size, broken at spaces (a word longer than
-// the width has a line of its own).
+// `text` in lines no wider than `width` at this font size, broken at spaces; a word wider than
+// the width (a long file name) is broken after a / _ - . or the like, else where it has to be.
 std::vector<std::string> wrap(std::string_view text, double width, double font_size);
+// `text` on one line no wider than `width`: as it is when it fits, else its first and last
+// characters about an ellipsis ("…").
+std::string fit(std::string_view text, double width, double font_size);
 
 // An SVG page: the header, a white background and the elements appended to it.
 class Page {
@@ -31,7 +37,7 @@ public:
   // Escaped text at (x, y); anchor "start", "middle" or "end"; extra attributes as markup.
   void text(double x, double y, std::string_view text, std::string_view anchor = "start", double size = 12,
             std::string_view extra = "");
-  // A title and an optional subtitle at the top left; returns the height they take.
+  // A title and an optional subtitle at the top left, wrapped to the page; returns the height they take.
   double heading(std::string_view title, std::string_view subtitle = "");
   std::string str() const;
 
@@ -80,8 +86,24 @@ struct LegendEntry {
   bool cross = false;    // a cross marker instead of a line
   bool dot = false;      // a dot instead of a line
 };
-// A legend in rows from (x, y) within max_width; returns the height it took.
+// A legend in rows from (x, y) within max_width, a row wrapping when full and a text longer than
+// the width wrapping within its entry; returns the height it took.
 double draw_legend(Page& page, double x, double y, double max_width, const std::vector<LegendEntry>& entries);
+// The height draw_legend takes for these entries in this width (to make room for it first).
+double legend_height(double max_width, const std::vector<LegendEntry>& entries);
+
+// A vertical colour scale in the box (x, y, width, height): its title wrapped above, the bar
+// (colour(0) at the bottom, colour(1) at the top), tick labels beside it and an optional mark (a
+// line across the bar, its label in bold). Labels never overlap: a tick label too near the mark's,
+// or another tick's, is left out.
+struct ColourScale {
+  double x = 0, y = 0, width = 120, height = 300;
+  std::string title;
+  std::function<std::string(double)> colour;
+  std::vector<std::pair<double, std::string>> ticks;  // position 0..1 on the bar, label
+  std::optional<std::pair<double, std::string>> mark;
+};
+void draw_colour_scale(Page& page, const ColourScale& scale);
 
 // A cross of size s at (x, y).
 std::string cross(double x, double y, double s, std::string_view colour, double width = 2);

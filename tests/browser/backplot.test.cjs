@@ -2,8 +2,8 @@
 //   node backplot.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
 // Opens the pages of shipped examples and checks what is drawn: the number of moves against the
 // run's, a WebGL canvas that is not blank (pixels of a screenshot), the block shown when hovering
-// a move, the view buttons, the alarm, a lathe's axes, a hostile comment kept as text. Screenshots
-// go to OUT_DIR for a person to look at. Exit 77 (skipped) where no Chromium is installed.
+// a move, the view buttons, the alarm, a rotary axis's range and ends, a lathe's axes, a hostile
+// comment kept as text. Screenshots go to OUT_DIR for a person to look at. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {execFileSync} = require('child_process');
 const fs = require('fs');
@@ -211,6 +211,23 @@ async function lonelyMove(page, motions, kind) {
       const {page} = await open(context, html);
       const header = await page.textContent('#summary');
       check(/X⌀.*Z.*C/.test(header), `lathe with C: extents in axis order: "${header.slice(0, 300)}"`);
+      await page.close();
+    }
+
+    // a rotary A axis, not drawn: the header says so with its range, a move's hover text gives its A end
+    {
+      const {html, motions} = page_of('browser_4axis', path.join(src, 'examples/4-axis.nc'),
+                                      ['--machine', path.join(src, 'profiles/fanuc-4axis-helicoid.toml')]);
+      const {page, errors} = await open(context, html);
+      const header = await page.textContent('#summary');
+      check(header.includes('axes not drawn') && header.includes('A 0 … 360°'), `4-axis: the header names A's range: "${header.slice(0, 400)}"`);
+      const i = motions.findIndex((m) => m.end_abc && m.end_abc[0] === 90);
+      check(i >= 0, '4-axis: a move to A90 in the run');
+      await page.evaluate((i) => window.ncurveBackplot.plot.hover(i), i);
+      const tip = await page.textContent('#tip');
+      check(tip.includes(`4-axis.nc:${motions[i].line}`) && / A90( |$)/.test(tip), `4-axis: the hover text gives the move's A end: "${tip}"`);
+      await page.screenshot({path: path.join(out, 'browser_4axis.png')});
+      check(errors.length === 0, `4-axis: no script errors (${errors.join('; ')})`);
       await page.close();
     }
 

@@ -144,6 +144,24 @@ TEST(HtmlPage, EncodesEveryMotion) {
   EXPECT_EQ(p.data["jumps"][0][0], 0);
 }
 
+// A rotary A axis (not drawn): its range over the run and each motion's A end, in degrees; a mill
+// without one sends none.
+TEST(HtmlPage, RotaryAxisEndsAndRange) {
+  auto profile = machine::default_mill();
+  profile.axes = "XYZA";
+  profile.rotary[3].rotary = true;
+  const Page p = page("G90 G01 X10. A90. F100.\nX20. A180.\nY5.\nM30\n", profile);
+  ASSERT_EQ(p.data["rotary"].size(), 1u);
+  EXPECT_EQ(p.data["rotary"][0]["axis"], "A");
+  EXPECT_EQ(p.data["rotary"][0]["unit"], "deg");
+  EXPECT_EQ(p.data["rotary"][0]["min"], 0.0);
+  EXPECT_EQ(p.data["rotary"][0]["max"], 180.0);
+  EXPECT_EQ(array<double>(p.data, "rotary_end"), (std::vector<double>{90, 180, 180}));
+  const Page mill = page("G90 G01 X10. F100.\nM30\n");
+  EXPECT_TRUE(mill.data["rotary"].empty());
+  EXPECT_TRUE(array<double>(mill.data, "rotary_end").empty());
+}
+
 TEST(HtmlPage, LimitCountsTheRest) {
   machine::MachineProfile profile = machine::default_mill();
   report::BackplotData data(profile, 2);

@@ -35,6 +35,47 @@ std::vector<std::string> texts(const std::string& svg, const std::string& cls) {
   return out;
 }
 
+// The box of each text of the page, estimated as the layer does (0.62 em a character, 0.8 em above
+// the baseline, 0.2 below), with its text; rotated texts are left out.
+struct TextBox {
+  double x0, y0, x1, y1;
+  std::string text;
+};
+std::vector<TextBox> text_boxes(const std::string& svg) {
+  std::vector<TextBox> out;
+  std::regex re("<text ([^>]*)>([^<]*)</text>");
+  auto attr = [](const std::string& attrs, const std::string& name, const std::string& otherwise) {
+    std::smatch m;
+    return std::regex_search(attrs, m, std::regex("(^| )" + name + "=\"([^\"]*)\"")) ? m[2].str() : otherwise;
+  };
+  for (std::sregex_iterator it(svg.begin(), svg.end(), re), end; it != end; ++it) {
+    const std::string attrs = (*it)[1], body = (*it)[2];
+    if (attrs.find("rotate(") != std::string::npos) continue;
+    const double size = std::stod(attr(attrs, "font-size", "12"));
+    const double x = std::stod(attr(attrs, "x", "0")), y = std::stod(attr(attrs, "y", "0")) + std::stod(attr(attrs, "dy", "0"));
+    const double w = report::plot::text_width(body, size);
+    const std::string anchor = attr(attrs, "text-anchor", "start");
+    const double x0 = anchor == "middle" ? x - w / 2 : anchor == "end" ? x - w : x;
+    out.push_back({x0, y - 0.8 * size, x0 + w, y + 0.2 * size, body});
+  }
+  return out;
+}
+
+// No two texts overlap (by more than a pixel) and each lies within [x0, x1] x [y0, y1].
+void expect_apart_and_within(const std::string& svg, double x0, double y0, double x1, double y1) {
+  const auto boxes = text_boxes(svg);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const auto& a = boxes[i];
+    EXPECT_TRUE(a.x0 >= x0 - 0.5 && a.x1 <= x1 + 0.5 && a.y0 >= y0 - 0.5 && a.y1 <= y1 + 0.5)
+        << "'" << a.text << "' at " << a.x0 << "," << a.y0 << ".." << a.x1 << "," << a.y1;
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      const auto& b = boxes[j];
+      EXPECT_FALSE(std::min(a.x1, b.x1) - std::max(a.x0, b.x0) > 1 && std::min(a.y1, b.y1) - std::max(a.y0, b.y0) > 1)
+          << "'" << a.text << "' overlaps '" << b.text << "'";
+    }
+  }
+}
+
 struct Drawn {
   std::string svg;
   bool ok = true;
@@ -96,6 +137,84 @@ TEST(PlotLayer, PanelLabelsAreEscapedAndInsideThePage) {
   EXPECT_GT(f.left, report::plot::text_width("-120000", 11));
   EXPECT_LE(f.left + f.width, 400);
   EXPECT_LE(f.top + f.height, 300 - 11);
+}
+
+// Entries of every length in 300 px: rows wrap, a text longer than the width wraps within its
+// entry, and the height returned covers every line.
+TEST(PlotLayer, LegendEntriesNeverOverlapOrPassTheirWidth) {
+  report::plot::Page page(400, 400);
+  std::vector<report::plot::LegendEntry> entries;
+  for (const char* label : {"rapid", "a somewhat longer entry", "tolerance",
+                            "an entry far longer than the legend is wide, so that it has to wrap onto lines of its own",
+                            "x", "deviation of each block", "end"}) {
+    report::plot::LegendEntry e;
+    e.label = label;
+    entries.push_back(e);
+  }
+  const double h = report::plot::draw_legend(page, 50, 20, 300, entries);
+  EXPECT_DOUBLE_EQ(h, report::plot::legend_height(300, entries));
+  expect_apart_and_within(page.str(), 50, 20, 350, 20 + h);
+  EXPECT_EQ(text_boxes(page.str()).size(), 7u + 2);  // the long entry on three lines
+}
+
+// A 130-character path without a space: wrapped after its slashes and underscores, each line
+// within the width; a word with no separator at all is cut where it has to be; fit keeps both ends.
+TEST(PlotLayer, LongWordsWrapAndLongLabelsShorten) {
+  using report::plot::text_width;
+  const std::string path = "/home/someone/projects/customer_parts_2026/turbine_blade_roughing_operation_"
+                           "number_twelve_final_revision_c_checked_by_quality.nc";
+  ASSERT_GT(path.size(), 120u);
+  auto lines = report::plot::wrap("run of " + path, 300, 15);
+  ASSERT_GE(lines.size(), 3u);
+  std::string joined;
+  for (const auto& l : lines) {
+    EXPECT_LE(text_width(l, 15), 300) << l;
+    joined += l;
+  }
+  EXPECT_EQ(joined, "run of" + path);  // nothing lost but the space the first break took
+  for (std::size_t i = 1; i + 1 < lines.size(); ++i)  // the path broken after its separators
+    EXPECT_NE(std::string("/_").find(lines[i].back()), std::string::npos) << lines[i];
+  for (const auto& l : report::plot::wrap(std::string(200, 'x'), 100, 12)) EXPECT_LE(text_width(l, 12), 100);
+  const std::string short_ = report::plot::fit(path, 200, 12);
+  EXPECT_LE(text_width(short_, 12), 200);
+  EXPECT_EQ(short_.substr(0, 5), "/home");
+  EXPECT_EQ(short_.substr(short_.size() - 3), ".nc");
+  EXPECT_NE(short_.find("…"), std::string::npos);
+  EXPECT_EQ(report::plot::fit("fits", 200, 12), "fits");
+}
+
+// A file name of 130 characters as the title and a long axis label: every text within the page.
+TEST(PlotLayer, LongTitlesStayOnThePage) {
+  report::plot::Page page(500, 400);
+  const std::string name(130, 'n');
+  const double top = page.heading(name + ".nc: feed along the path", "a subtitle " + name);
+  report::plot::Panel p;
+  p.x = 0, p.y = top, p.w = 500, p.h = 400 - top;
+  p.title = "panel " + name;
+  p.u = {0, 10, "u " + name, 1, 6};
+  p.v = {0, 10, "v", 1, 6};
+  report::plot::draw_panel(page, p);
+  expect_apart_and_within(page.str(), 0, 0, 500, 400);
+}
+
+// A mark at the top of the scale where a tick's label also is: the mark's label is written, the
+// tick's left out, and the title wraps to the scale's width above the bar.
+TEST(PlotLayer, ColourScaleLabelsDoNotCollide) {
+  report::plot::Page page(300, 400);
+  report::plot::ColourScale s;
+  s.x = 150, s.y = 10, s.width = 120, s.height = 380;
+  s.title = "deviation of each block along the path";
+  s.colour = [](double) { return std::string("#888"); };
+  for (int i = 0; i <= 5; ++i) s.ticks.push_back({i / 5.0, fmt::format("{} µm", i)});
+  s.ticks.push_back({0.99, "close"});
+  s.mark = {{1.0, "tolerance 5 µm"}};
+  report::plot::draw_colour_scale(page, s);
+  const std::string svg = page.str();
+  expect_apart_and_within(svg, 150, 10, 270, 390);
+  EXPECT_NE(svg.find(">tolerance 5 µm<"), std::string::npos);
+  EXPECT_EQ(svg.find(">5 µm<"), std::string::npos);
+  EXPECT_EQ(svg.find(">close<"), std::string::npos);
+  EXPECT_NE(svg.find(">4 µm<"), std::string::npos);
 }
 
 // G17 mill program; the moves (from X0 Y0 Z0):
@@ -180,6 +299,38 @@ TEST(PathPlot, LatheDrawsZAcrossAndXUpAsDiameter) {
   EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"X (diameter), mm"}));
   EXPECT_EQ(texts(d.svg, "tick-v"), (std::vector<std::string>{"0", "20", "40", "60", "80"}));
   EXPECT_EQ(texts(d.svg, "tick-u"), (std::vector<std::string>{"-40", "-30", "-20", "-10", "0", "10"}));
+}
+
+// A lathe moves in ZX: the views of Y do not fit it (a view asked for anyway draws ZX), unless
+// the profile has a Y axis.
+TEST(PathPlot, ALatheWithoutYHasTheZXViewOnly) {
+  auto lathe = machine::default_lathe();
+  for (auto v : {report::PlotView::xy, report::PlotView::yz, report::PlotView::iso})
+    EXPECT_FALSE(report::view_fits(lathe, v));
+  EXPECT_TRUE(report::view_fits(lathe, report::PlotView::xz));
+  EXPECT_TRUE(report::view_fits(machine::default_mill(), report::PlotView::iso));
+  auto d = draw("G00 X40. Z5.\nG01 Z-30. F0.2\nM30\n", lathe, {report::PlotView::xy});
+  EXPECT_EQ(texts(d.svg, "label-u"), (std::vector<std::string>{"Z, mm"}));
+  auto with_y = lathe;
+  with_y.axes = "XYZ";
+  EXPECT_TRUE(report::view_fits(with_y, report::PlotView::xy));
+  d = draw("G00 X40. Z5.\nG01 Z-30. F0.2\nM30\n", with_y, {report::PlotView::xy});
+  EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"Y, mm"}));
+  EXPECT_EQ(d.svg.find("Z across"), std::string::npos);
+}
+
+// The views are of X, Y and Z: a rotary A axis the run turned is named under the title with its
+// range; one that stayed at 0 (or a machine without one) is not mentioned.
+TEST(PathPlot, ARotaryAxisNotDrawnIsSaid) {
+  auto profile = machine::default_mill();
+  profile.axes = "XYZA";
+  profile.rotary[3].rotary = true;
+  auto d = draw("G01 X10. A90. F100.\nA360.\nX0 A-45.\nM30\n", profile, {report::PlotView::xy});
+  EXPECT_EQ(texts(d.svg, "not-drawn"),
+            (std::vector<std::string>{"A axis not drawn: -45 to 360 deg (the views show X, Y and Z)"}));
+  expect_apart_and_within(d.svg, 0, 0, 960, 760);
+  EXPECT_TRUE(texts(draw("G01 X10. F100.\nM30\n", profile, {}).svg, "not-drawn").empty());
+  EXPECT_TRUE(texts(draw(kMill, machine::default_mill(), {}).svg, "not-drawn").empty());
 }
 
 TEST(PathPlot, LatheInRadiusSaysSo) {
