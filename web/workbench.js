@@ -43,10 +43,14 @@
     if (quiet) run(); else timer = setTimeout(run, 300);
   }
   const profile = () => profiles.find((p) => p.name === $('machine').value) || {};
-  // serve --machine FILE (not a shipped profile): the first choice, sent as no "machine" at all
+  // what the server runs a request naming no machine on, when that is not a shipped profile
+  // (serve --machine FILE, or no --machine: the factory-parameter mill of `ncurve run`): the first
+  // choice, sent as no "machine" at all
   function serverProfile(p) {
     profiles.push(Object.assign({}, p, {name: ''}));
-    $('machine').add(new Option(`${p.path} — ${p.title || p.error} (serve --machine)`, '', true, true), 0);
+    const text = p.factory ? `${p.title} (ncurve run's default)`
+      : `${p.path} — ${p.title || p.error} (serve --machine)`;
+    $('machine').add(new Option(text, '', true, true), 0);
   }
   async function run() {
     clearTimeout(timer);
@@ -696,8 +700,8 @@
     try {
       const [pj, fj, cj] = await Promise.all(['/api/profiles', '/api/files', '/api/curves'].map((u) => fetch(u).then((r) => r.json())));
       profiles = pj.profiles;
-      for (const p of profiles) $('machine').add(new Option(`${p.name} — ${p.title}`, p.name, false, p.name === (pj.default || 'fanuc-mill')));
-      if (pj.server && !profiles.some((p) => p.name === pj.default)) serverProfile(pj.server);
+      for (const p of profiles) $('machine').add(new Option(`${p.name} — ${p.title}`, p.name, false, p.name === pj.default));
+      if (!profiles.some((p) => p.name === pj.default)) serverProfile(pj.server);
       $('machine').add(new Option('from a file…', FROM_FILE));
       machineShown = $('machine').value;
       curves = cj.curves;

@@ -52,11 +52,13 @@ Answer api_profiles(const ServeConfig& config) {
     list.push_back(p);
   }
   json out{{"profiles", list}, {"default", fallback}};
-  if (!config.machine.empty()) {  // what a request that names no profile runs on
-    json server{{"path", config.machine}};
-    describe(server, config.machine);
-    out["server"] = server;
-  }
+  // what a request that names no profile runs on: --machine's, else the factory-parameter mill of
+  // `ncurve run` without --machine
+  json server{{"path", config.machine.empty() ? json(nullptr) : json(config.machine)},
+              {"factory", config.machine.empty()}};
+  if (config.machine.empty()) server.update(profile_json(machine::default_mill()));
+  else describe(server, config.machine);
+  out["server"] = server;
   return Answer{200, dump(out)};
 }
 

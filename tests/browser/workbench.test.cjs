@@ -46,6 +46,11 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
       highlighted: ncurveWorkbench.highlighted, stopped: ncurveWorkbench.stoppedOnBreak, drawnUpTo: ncurveWorkbench.drawnUpTo}));
     let w = await W();
     check(w.text === fs.readFileSync(spiral, 'utf8'), 'the FILE given to serve is in the editor');
+    // no serve --machine: the page shows and runs on what `ncurve run` without --machine runs on
+    const machine = await page.evaluate(() => ({value: document.getElementById('machine').value,
+      text: document.getElementById('machine').selectedOptions[0].text, ran: ncurveWorkbench.summary.machine}));
+    check(machine.value === '' && /factory parameters \(ncurve run's default\)/.test(machine.text) && machine.ran === summary.machine,
+          `the machine shown is ncurve run's default: "${machine.text}", ran on "${machine.ran}" (run: "${summary.machine}")`);
     check(w.moveCount === summary.motions && w.state.moveCount === summary.motions,
           `${w.moveCount} moves drawn, the run made ${summary.motions}`);
     check(w.state.kinds.feed === summary.moves.line && w.state.kinds.rapid === summary.moves.rapid, `moves by kind ${JSON.stringify(w.state.kinds)}`);

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "geom/curve.hpp"
+#include "machine/profile.hpp"
 #include "serve/server.hpp"
 
 namespace ncurve::serve {
@@ -200,7 +201,16 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   r = c.Get("/api/profiles");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
-  EXPECT_TRUE(json::parse(r->body)["profiles"].is_array());
+  json profiles = json::parse(r->body);
+  EXPECT_TRUE(profiles["profiles"].is_array());
+  // no --machine: a request naming none runs on `ncurve run`'s default, and the answer says so
+  EXPECT_TRUE(profiles["default"].is_null());
+  EXPECT_EQ(profiles["server"]["factory"], true);
+  EXPECT_TRUE(profiles["server"]["path"].is_null());
+  EXPECT_EQ(profiles["server"]["title"], machine::default_mill().name);
+  EXPECT_EQ(profiles["server"]["lathe"], false);
+  EXPECT_EQ(post("/api/run", R"({"program": "M30\n", "moves": false})", 200)["summary"]["machine"],
+            machine::default_mill().name);
   r = c.Get("/");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
