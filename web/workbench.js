@@ -685,9 +685,11 @@
     run();
   };
   $('trace').onchange = run;
+  // the shipped example of a server given no FILE: a lathe's when its default machine is a lathe
+  let example = {name: 'spiral.nc', url: '/assets/example.nc'};
   async function open(fileName) {
-    const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : '/assets/example.nc');
-    name = fileName || 'spiral.nc';
+    const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : example.url);
+    name = fileName || example.name;
     editor.setText(await r.text());
     breakpoints.clear();
     editor.setBreakpoints(breakpoints);
@@ -709,7 +711,8 @@
       $('gen-curve').add(new Option('expression x(t), y(t), z(t)', 'expr'));
       chooseCurve();
       for (const f of fj.files) $('file').add(new Option(f.name, f.name));
-      if (!fj.files.length) $('file').add(new Option('spiral.nc (example)', ''));
+      if (profile().lathe) example = {name: 'lathe-hyperbola.nc', url: '/assets/example-lathe.nc'};
+      if (!fj.files.length) $('file').add(new Option(`${example.name} (example)`, ''));
       await open(fj.files.length ? fj.files[0].name : '');
     } catch (e) {
       W.error = String(e);

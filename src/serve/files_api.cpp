@@ -92,7 +92,7 @@ Answer asset(const std::string& name) {
   // the workbench's files and what they need, compiled in (cmake/embed_files.cmake)
   static constexpr std::string_view kServed[] = {"workbench.html", "workbench.css", "workbench.js", "wb-editor.js",
                                                  "wb-debug.js", "backplot-geometry.js", "backplot.js", "backplot.css", "three.min.js",
-                                                 "OrbitControls.js", "example.nc"};
+                                                 "OrbitControls.js", "example.nc", "example-lathe.nc"};
   for (std::string_view served : kServed) {
     if (served != name) continue;
     const std::string_view text = web::asset(name);

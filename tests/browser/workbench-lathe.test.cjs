@@ -3,7 +3,7 @@
 // Checks: the server's profile selected, the moves drawn against `ncurve run --json`, the ZX view
 // with Z across and X up (drawn as a radius, labelled as a diameter), a hovered move's end as the
 // program writes it, the G71 block making its roughing in one step, the debugger's keys, and the
-// system variables a program reads in the watch. Screenshots go to OUT_DIR. Exit 77 without Chromium.
+// system variables a program reads in the watch; with no FILE, the shipped lathe example. Screenshots go to OUT_DIR. Exit 77 without Chromium.
 'use strict';
 const {spawn, execFileSync} = require('child_process');
 const path = require('path');
@@ -22,8 +22,9 @@ const motions = run('--format', 'jsonl').trim().split('\n').map((l) => JSON.pars
   .map((m) => ({line: m.line, kind: m.kind, start: {x: m.start[0], z: m.start[2]}, end: {x: m.end[0], z: m.end[2]}}));
 const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a number
 
-(async () => {
-  const server = spawn(ncurve, ['serve', '--port', '0', '--machine', 'fanuc-lathe', file], {stdio: ['ignore', 'pipe', 'pipe']});
+// `ncurve serve --port 0 ARGS...` and the port it says
+async function serve(...args) {
+  const server = spawn(ncurve, ['serve', '--port', '0', ...args], {stdio: ['ignore', 'pipe', 'pipe']});
   const port = await new Promise((resolve, reject) => {
     let text = '';
     server.stdout.on('data', (d) => {
@@ -34,6 +35,30 @@ const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a numb
     server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
     setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
   });
+  return {server, port};
+}
+
+// serve --machine fanuc-lathe with no FILE: the shipped lathe example, run on the lathe
+async function latheExample(context) {
+  const {server, port} = await serve('--machine', 'fanuc-lathe');
+  try {
+    const page = await context.newPage();
+    page.setDefaultTimeout(60000);
+    await page.goto(`http://127.0.0.1:${port}/`);
+    await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1 && ncurveWorkbench.settled());
+    const w = await page.evaluate(() => ({text: ncurveWorkbench.editor.text, ok: ncurveWorkbench.summary.ok,
+      file: document.getElementById('file').selectedOptions[0].text, view: ncurveWorkbench.plot.state().view}));
+    const example = require('fs').readFileSync(path.join(src, 'examples/lathe-hyperbola.nc'), 'utf8');
+    check(w.text === example && w.ok && w.file === 'lathe-hyperbola.nc (example)' && w.view === 'zx',
+          `no FILE on a lathe: the lathe example (${w.file}), completed (${w.ok}), in the ZX view`);
+    await page.close();
+  } finally {
+    server.kill();
+  }
+}
+
+(async () => {
+  const {server, port} = await serve('--machine', 'fanuc-lathe', file);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
     const page = await context.newPage();
@@ -200,6 +225,7 @@ const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a numb
     w = await W();
     check(w.line === 6 && w.reads['#5002'] === -10, `and after line 5 (on ${w.line}, #5002 = ${w.reads['#5002']})`);
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
+    await latheExample(context);
   } catch (e) {
     check(false, String(e && e.stack || e));
   } finally {
