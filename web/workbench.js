@@ -43,6 +43,10 @@
     if (quiet) run(); else timer = setTimeout(run, 300);
   }
   const profile = () => profiles.find((p) => p.name === $('machine').value) || {};
+  // what each run of the editor's program sends: its text and name, the machine, and while a
+  // generated cycle is in the editor the parameters gen says to set for it
+  const programRequest = () => ({program: editor.text, name, machine: $('machine').value || undefined,
+    param: name === GENERATED && genRef && Object.keys(genRef.param).length ? genRef.param : undefined});
   // what the server runs a request naming no machine on, when that is not a shipped profile
   // (serve --machine FILE, or no --machine: the factory-parameter mill of `ncurve run`): the first
   // choice, sent as no "machine" at all
@@ -61,7 +65,7 @@
     status('running…', '');
     let r, j;
     // the moves first, drawn as soon as they come; the trace (Debugger) by a second request after
-    const request = {program: editor.text, name, machine: $('machine').value || undefined, format: 'binary'};
+    const request = Object.assign(programRequest(), {format: 'binary'});
     try {
       r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
         body: JSON.stringify(request)});
@@ -489,7 +493,7 @@
     const box = $('analysis');
     box.textContent = 'computing…';
     const r = await fetch('/api/analyze', {method: 'POST', headers: {'Content-Type': 'application/json'},
-      body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined})});
+      body: JSON.stringify(programRequest())});
     const a = W.analysis = await r.json();
     box.textContent = '';
     const fact = (k, v) => box.append(el('dt', '', k), el('dd', '', v));
@@ -522,6 +526,7 @@
   $('gen').onclick = async () => {
     const fail = (text) => { $('gen-error').textContent = text; $('gen-out').textContent = ''; };
     $('gen-error').textContent = '';
+    $('gen-warnings').textContent = '';
     let params;
     try { params = JSON.parse($('gen-params').value || '{}'); } catch (e) { fail('parameters: ' + e.message); return; }
     const machine = $('machine').value, curve = $('gen-curve').value;
@@ -534,16 +539,29 @@
       r = await fetch('/api/gen', {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(request)});
       g = await r.json();
     } catch (e) { fail(`the server did not answer: ${e.message}`); return; }
+    for (const w of g.warnings || []) $('gen-warnings').append(el('li', '', `warning: ${w}`));
     if (g.error || !g.program) { fail(`${r.status}: ${g.error || 'no program'}`); return; }
+    const param = g.parameters || {}, set = Object.keys(param).map((k) => `No.${k} = ${param[k]}`).join(', ');
     $('gen-out').textContent = `max deviation ${fmt(g.max_deviation, 6)} mm (tolerance ${g.tolerance} mm), ` +
-      `${g.move_deviation.index.length} moves on the curve; the curve in grey, ${g.reference.count} points: generated into the editor`;
-    name = GENERATED;
-    editor.setText(g.program);
-    genRef = {text: editor.text, machine, tol: g.tolerance, max: g.max_deviation, ref: g.reference,
+      `${g.move_deviation.index.length} moves on the curve; the curve in grey, ${g.reference.count} points: generated into the editor` +
+      (set ? `, run here with ${set} (set it on the control)` : '');
+    genRef = {text: g.program, machine, tol: g.tolerance, max: g.max_deviation, ref: g.reference, param,
       dev: new Map(g.move_deviation.index.map((i, k) => [i, g.move_deviation.mm[k]]))};
+    openGenerated();
     setColourMode('deviation');
     run();
   };
+  // the generated program as the current one: its own entry in the Program menu, its name in the
+  // diagnostics
+  const GEN_FILE = '\u0000generated';
+  function openGenerated() {
+    const box = $('file');
+    if (![...box.options].some((o) => o.value === GEN_FILE)) box.add(new Option(`${GENERATED} (generated)`, GEN_FILE), 0);
+    box.value = GEN_FILE;
+    name = GENERATED;
+    editor.setText(genRef.text);
+    genRef.text = editor.text;
+  }
 
   // ---- colour: by kind, by the feed reached (POST /api/analyze "moves") or by the deviation from a
   // generated curve (POST /api/gen); a legend with the scale ----
@@ -572,12 +590,12 @@
     plot.setReference(pts);
   }
   function feedData() {  // the feeds of the program in the editor; null while they are asked for
-    const key = editor.text + '\u0000' + $('machine').value;
+    const key = JSON.stringify(programRequest());
     if (feeds && feeds.key === key) return feeds;
     if (feedsWanted !== key) {
       feedsWanted = key;
       fetch('/api/analyze', {method: 'POST', headers: {'Content-Type': 'application/json'},
-        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, moves: true})})
+        body: JSON.stringify(Object.assign(programRequest(), {moves: true}))})
         .then((r) => r.json()).then((a) => ({key, error: a.error || (a.moves ? '' : 'no moves'), moves: a.moves}),
           (e) => ({key, error: e.message}))
         .then((f) => { if (feedsWanted === key) { feeds = f, feedsWanted = null; applyColour(); } });
@@ -696,7 +714,11 @@
     W.pos = 0;
     await run();
   }
-  $('file').onchange = () => open($('file').value);
+  $('file').onchange = () => {
+    if ($('file').value !== GEN_FILE) { open($('file').value); return; }
+    openGenerated();
+    run();
+  };
   W.open = open;
   (async () => {
     try {

@@ -238,6 +238,14 @@ TEST_F(ServerTest, AnalyzeAndGen) {
   EXPECT_EQ(j["within_tolerance"], true);
   EXPECT_LE(j["max_deviation"].get<double>(), 0.01);
   EXPECT_NE(j["program"].get<std::string>().find("M30"), std::string::npos);
+  EXPECT_EQ(j["warnings"], json::array());
+  // gen's warnings, in the command line's words (without its "ncurve gen: warning: ")
+  j = post("/api/gen", R"({"curve": "hyperbola", "tol": 0.01})", 200);
+  ASSERT_EQ(j["warnings"].size(), 1u) << j["warnings"];
+  EXPECT_TRUE(j["warnings"][0].get<std::string>().starts_with("hyperbola is a lathe curve; without a lathe profile"));
+  j = post("/api/gen", R"({"curve": "hyperbola", "form": "arcs"})", 422);  // arcs of a curve in X and Z on a mill
+  EXPECT_NE(j["error"].get<std::string>().find("arcs need a plane curve"), std::string::npos) << j;
+  ASSERT_EQ(j["warnings"].size(), 1u) << j;
   j = post("/api/gen", R"({"curve": "elipse"})", 400);
   EXPECT_NE(j["error"].get<std::string>().find("ellipse"), std::string::npos) << j;
 }
