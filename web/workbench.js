@@ -263,8 +263,23 @@
     if (f === mainFile) tip.append(el('code', 'block', editor.lineText(line)));
     tip.append(el('div', 'what', `move ${conv.moveOf[i] + 1} · ${kindName(i)}${conv.kind[i] ? ' F' + fmt(conv.feed[i]) : ''} · to ${endText(i)}`));
     tip.hidden = false;
-    tip.style.left = '10px';
-    tip.style.top = '52px';
+    placeTip();
+  }
+  // the hover tip beside the pointer (below right, else where there is room), kept inside the plot
+  let pointer = [0, 0];
+  $('plot').addEventListener('pointermove', (e) => {
+    const r = $('plot').getBoundingClientRect();
+    pointer = [e.clientX - r.left, e.clientY - r.top];
+    if (!$('hover').hidden) placeTip();
+  });
+  function placeTip() {
+    const tip = $('hover'), box = $('plot'), W = box.clientWidth, H = box.clientHeight;
+    const w = tip.offsetWidth, h = tip.offsetHeight, gap = 16, [px, py] = pointer;
+    let x = px + gap, y = py + gap;
+    if (x + w > W - 4) x = px - gap - w;
+    if (y + h > H - 4) y = py - gap - h;
+    tip.style.left = Math.max(4, Math.min(x, W - w - 4)) + 'px';
+    tip.style.top = Math.max(4, Math.min(y, H - h - 4)) + 'px';
   }
   // a move's end as the program writes it: a lathe's X and Z (X a diameter where programmed so)
   function endText(i) {

@@ -124,6 +124,18 @@ async function latheExample(context) {
       const m = motions[target.i];
       check(tip.includes(`to X${shown(m.end.x)} Z${shown(m.end.z)}`) && !/ Y/.test(tip),
             `hovering move ${target.i + 1} shows its end X${shown(m.end.x)} Z${shown(m.end.z)} (${tip})`);
+      // the tip beside the pointer, inside the plot, not over the pointer nor an axis name
+      const at = await page.evaluate(() => {
+        const r = (e) => e.getBoundingClientRect();
+        return {tip: r(document.getElementById('hover')).toJSON(), plot: r(document.getElementById('plot')).toJSON(),
+          names: [...document.querySelectorAll('.ncurve-label.axis-name')].filter((e) => e.style.display !== 'none').map((e) => r(e).toJSON())};
+      });
+      const t = at.tip, p = target.p, overlaps = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+      const near = Math.hypot(Math.max(t.left - p.x, 0, p.x - t.right), Math.max(t.top - p.y, 0, p.y - t.bottom));
+      check(t.left >= at.plot.left && t.right <= at.plot.right && t.top >= at.plot.top && t.bottom <= at.plot.bottom &&
+            near > 0 && near < 40 && !at.names.some((n) => overlaps(n, t)),
+            `the tip beside the pointer (${near.toFixed(0)} px off), inside the plot, clear of the axis names`);
+      await page.screenshot({path: path.join(out, 'workbench-lathe-hover.png')});
       await page.mouse.move(5, 500);
     }
 
