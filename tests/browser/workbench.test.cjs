@@ -154,6 +154,46 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     const tip = await page.evaluate(() => { const t = document.querySelector('.wb-tip'); return t.hidden ? '' : t.textContent; });
     check(alarm && tip.includes(alarm.code), `hovering it shows the code and message (${tip})`);
     await page.screenshot({path: path.join(out, 'workbench-alarm.png')});
+    // at 1000 x 700, in every view of the spiral and of a wide program of little depth: the tick
+    // marks along each axis at least 8 px apart on the screen, the numbers 48 px, and each axis
+    // name shown whole on the canvas, clear of the buttons and the legend
+    await page.setViewportSize({width: 1000, height: 700});
+    await page.waitForTimeout(200);
+    const axesLook = async (what) => {
+      for (const view of await page.evaluate(() => ncurveWorkbench.plot.views)) {
+        const a = await page.evaluate((v) => {
+          const B = ncurveWorkbench.plot;
+          B.setView(v);
+          B.render();  // the labels placed now, not at the next frame
+          const c = B.renderer.domElement.getBoundingClientRect(), box = (q) => {
+            const r = document.querySelector(q).getBoundingClientRect();
+            return {l: r.left - c.left, t: r.top - c.top, r: r.right - c.left, b: r.bottom - c.top};
+          };
+          const p = document.getElementById('plot').getBoundingClientRect();
+          return {axes: B.state().axes, W: c.width, H: c.height, boxes: ['#views', '#legend', '.wb-colour'].map(box),
+            fits: Math.abs(c.width - p.width) < 1 && Math.abs(c.height - p.height) < 1};
+        }, view);
+        const gap = (pts) => Math.min(Infinity, ...pts.slice(1).map((p, i) => Math.hypot(p[0] - pts[i][0], p[1] - pts[i][1])));
+        const marks = Math.min(...a.axes.marks.map(gap)), numbers = Math.min(...a.axes.numbers.map(gap));
+        const bad = a.axes.names.filter((n) => n.x - n.w / 2 < 0 || n.x + n.w / 2 > a.W || n.y - n.h / 2 < 0 || n.y + n.h / 2 > a.H ||
+          a.boxes.some((b) => n.x + n.w / 2 > b.l && n.x - n.w / 2 < b.r && n.y + n.h / 2 > b.t && n.y - n.h / 2 < b.b));
+        check(a.fits && marks >= 8 && numbers >= 48 && a.axes.names.length >= 2 && bad.length === 0,
+              `${what}, ${view}: marks ${marks.toFixed(0)} px apart, numbers ${numbers.toFixed(0)} px, names ${a.axes.names.map((n) => n.text).join(' · ')}` +
+              (bad.length ? `; cut or covered: ${JSON.stringify(bad)} (canvas ${a.W} x ${a.H}, boxes ${JSON.stringify(a.boxes)})` : ''));
+      }
+    };
+    let before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', fs.readFileSync(spiral, 'utf8'));
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    await axesLook('the spiral');
+    await page.evaluate(() => ncurveWorkbench.plot.setView('iso'));
+    await page.screenshot({path: path.join(out, 'workbench-axes-1000.png')});
+    before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', 'G00 X0 Y0 Z2.\nG01 Z-0.5 F300.\nX100. Y60.\nG00 Z2.\nM30\n');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    await axesLook('100 x 60 x 2.5 mm');
+    await page.evaluate(() => ncurveWorkbench.plot.setView('iso'));
+    await page.screenshot({path: path.join(out, 'workbench-axes-flat.png')});
     check(errors.length === 0, `still no script errors (${errors.join('; ')})`);
   } catch (e) {
     check(false, String(e && e.stack || e));
