@@ -61,6 +61,8 @@
     timer = 0;
     const my = ++seq, t0 = performance.now();
     if (inFlight) inFlight.abort();
+    inFlight = null;
+    if (!hasProgram()) { showNoProgram(t0); return; }
     inFlight = new AbortController();
     status('running…', '');
     let r, j;
@@ -100,6 +102,17 @@
     W.timing.trace_ms = performance.now() - t0;
     W.shownText = answer.program;
     W.runs++;
+  }
+  // an editor of blanks and % holds no program (the server would answer 400): an empty plot and a
+  // calm note, and nothing asked of the server
+  const hasProgram = () => /[^\s%]/.test(editor.text);
+  const NO_MOVES = {count: 0, complete: true, kinds: ['rapid', 'line', 'arc', 'dwell'], kind: [], file: [], line: [],
+    x: [], y: [], z: [], f: [], starts: {index: [], x: [], y: [], z: []},
+    arcs: {index: [], cx: [], cy: [], cz: [], plane: [], cw: [], sweep_deg: []}, codes: {index: [], code: []}};
+  function showNoProgram(t0) {
+    answer = {program: editor.text, none: true, files: [name], diagnostics: [], moves: NO_MOVES,
+      summary: {ok: false, alarm: null, motions: 0, none: true}};
+    show(t0, false);
   }
   // the trace of a second answer with its file numbers made those of the first
   function traceInFiles(trace, from, to) {
@@ -217,7 +230,8 @@
     W.summary = s;
     W.ready = true;
     const result = s.ok ? 'completed' : s.alarm ? `ALARM ${s.alarm.code} line ${s.alarm.line}` : 'stopped';
-    status(`${result} · ${s.motions} motions · ${fmt(W.timing.run_to_drawn_ms, 0)} ms`, s.ok ? 'ok' : 'alarm');
+    if (s.none) status('no program', '');
+    else status(`${result} · ${s.motions} motions · ${fmt(W.timing.run_to_drawn_ms, 0)} ms`, s.ok ? 'ok' : 'alarm');
     if (tab === 'analyze') analyze();
   }
 
@@ -319,6 +333,7 @@
     const s = answer.summary, box = $('summary');
     box.textContent = '';
     const fact = (k, v, cls) => box.append(el('dt', '', k), el('dd', cls || '', v));
+    if (s.none) { fact('program', 'none: the editor holds no program'); return; }
     if (s.ok) fact('result', 'completed', 'ok');
     else if (s.alarm) fact('result', `ALARM ${s.alarm.code} ${s.alarm.file || ''} line ${s.alarm.line}: ${s.alarm.message}`, 'alarm');
     else fact('result', 'stopped', 'alarm');
@@ -344,7 +359,7 @@
     trace = W.trace = answer.trace ? NcurveTrace.create(answer.trace) : null;
     const slider = $('dbg-slider');
     slider.max = trace ? trace.count : 0;
-    if (!trace) { $('dbg-pos').textContent = 'no trace: tick Debugger above'; return; }
+    if (!trace) { $('dbg-pos').textContent = answer.none ? 'no program' : 'no trace: tick Debugger above'; return; }
     if (!trace.complete) $('dbg-pos').title = trace.message || '';
     goTo(Math.min(W.pos, trace.count), true);
   }
@@ -506,6 +521,7 @@
   async function analyze() {
     dirtyAnalysis = false;
     const box = $('analysis');
+    if (!hasProgram()) { box.textContent = 'no program'; return; }
     box.textContent = 'computing…';
     const r = await fetch('/api/analyze', {method: 'POST', headers: {'Content-Type': 'application/json'},
       body: JSON.stringify(programRequest())});
@@ -629,6 +645,7 @@
     W.colour = info;
   }
   function colourByFeed(info) {
+    if (answer.none) return Object.assign(info, {note: 'feed reached: no program'});
     const f = feedData();
     if (!f) return Object.assign(info, {note: 'feed reached: computing…'});
     const M = f.moves;

@@ -194,6 +194,18 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     await axesLook('100 x 60 x 2.5 mm');
     await page.evaluate(() => ncurveWorkbench.plot.setView('iso'));
     await page.screenshot({path: path.join(out, 'workbench-axes-flat.png')});
+    // the editor cleared: an empty plot and a calm note, no request and no error
+    for (const empty of ['', '%\n\n%\n']) {
+      before = await page.evaluate(() => ncurveWorkbench.runs);
+      await page.fill('.wb-input', empty);
+      await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+      const e = await page.evaluate(() => ({status: document.getElementById('status').textContent,
+        cls: document.getElementById('status').className, moves: ncurveWorkbench.moveCount, none: ncurveWorkbench.summary.none,
+        summary: document.getElementById('summary').textContent, diags: ncurveWorkbench.diagnostics.length}));
+      check(e.status === 'no program' && !/alarm/.test(e.cls) && e.moves === 0 && e.none && /no program/.test(e.summary) && e.diags === 0,
+            `the editor holding ${JSON.stringify(empty)}: "${e.status}", ${e.moves} moves, summary "${e.summary}"`);
+    }
+    await page.screenshot({path: path.join(out, 'workbench-empty.png')});
     check(errors.length === 0, `still no script errors (${errors.join('; ')})`);
   } catch (e) {
     check(false, String(e && e.stack || e));
