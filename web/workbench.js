@@ -478,12 +478,27 @@
       box.append(w);
     }
   };
-  $('watch-add').onclick = () => {
-    const m = /^\s*#?\s*(\d+)\s*$/.exec($('watch-var').value);
-    if (!m) { $('watch-var').setCustomValidity('a variable: #104'); $('watch-var').reportValidity(); return; }
-    $('watch-var').setCustomValidity('');
-    if (!watches.includes(+m[1])) watches.push(+m[1]);
-    $('watch-var').value = '';
+  // a watch is a variable the control has: #0 never changes, and the rest is asked of the interpreter
+  // (a run of #1=#N on the machine chosen), so a number it has not (#99999) is refused in its words
+  $('watch-add').onclick = async () => {
+    const box = $('watch-var'), text = box.value.trim();
+    const refuse = (why) => { $('watch-why').textContent = why; box.setAttribute('aria-invalid', 'true'); };
+    const m = /^#?\s*(\d{1,8})$/.exec(text);
+    if (!m) return refuse(`${JSON.stringify(text)} is not a variable: # and its number, e.g. #104`);
+    const v = +m[1];
+    if (v === 0) return refuse('#0 is always vacant: it never changes');
+    let why = '';
+    try {
+      const r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'},
+        body: JSON.stringify({program: `#1=#${v}\nM30\n`, name: 'watch.nc', machine: $('machine').value || undefined, moves: false})});
+      const j = await r.json(), a = j.summary && j.summary.alarm;
+      why = a ? `${a.code} ${a.message}` : j.error || '';
+    } catch (e) { why = `the server did not answer: ${e.message}`; }
+    if (why) return refuse(why);
+    $('watch-why').textContent = '';
+    box.removeAttribute('aria-invalid');
+    if (!watches.includes(v)) watches.push(v);
+    box.value = '';
     showWatches();
   };
   $('watch-var').addEventListener('keydown', (e) => { if (e.key === 'Enter') $('watch-add').click(); });

@@ -229,6 +229,7 @@ async function latheExample(context) {
     // -10 after line 5), not at a block that reads nothing new
     await page.fill('#watch-var', '#5002');
     await page.click('#watch-add');
+    await page.waitForSelector('#watches .w');
     await page.click('#dbg-first');
     await page.keyboard.press('F5');
     w = await W();

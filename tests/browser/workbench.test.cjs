@@ -104,8 +104,21 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     check(w.vars['#104'] === undefined && w.pos === line20, 'one step back, #104 vacant again');
     // a watchpoint on #104 from the start: stops right after its first write, then at the second
     await page.click('#dbg-first');
+    // variables the control has not are refused, and why beside the box
+    for (const [bad, why] of [['#99999', /PS0115 #99999 is not a variable of this control/], ['#0', /#0 is always vacant/],
+      ['#abc', /"#abc" is not a variable/], ['#1.5', /not a variable/]]) {
+      await page.fill('#watch-var', bad);
+      await page.click('#watch-add');
+      await page.waitForFunction(() => document.getElementById('watch-why').textContent !== '');
+      const said = await page.evaluate(() => ({why: document.getElementById('watch-why').textContent,
+        chips: document.querySelectorAll('#watches .w').length}));
+      check(why.test(said.why) && said.chips === 0, `watch ${bad} refused: ${said.why}`);
+      await page.evaluate(() => { document.getElementById('watch-why').textContent = ''; });
+    }
     await page.fill('#watch-var', '#104');
     await page.click('#watch-add');
+    await page.waitForSelector('#watches .w');
+    check(await page.evaluate(() => document.getElementById('watch-why').textContent === ''), 'watch #104 taken');
     await page.click('#dbg-next-break');
     w = await W();
     check(w.stopped && w.pos === line20 + 1 && Math.abs(w.vars['#104'] - r1) < 1e-6, `the watchpoint stops after the write of #104 (block ${w.pos + 1})`);
