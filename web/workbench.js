@@ -348,7 +348,9 @@
     fact('time', `${fmt(s.time_at_programmed_feed_s, 1)} s at programmed feed (the Cycle time tab: with acceleration)`);
     if (s.extent) {
       const ax = Object.keys(s.extent).sort((a, b) => 'XYZABC'.indexOf(a) - 'XYZABC'.indexOf(b));
-      fact('extents', ax.map((a) => `${a} ${fmt(s.extent[a][0])} … ${fmt(s.extent[a][1])}`).join('   '));
+      // X a diameter where the profile the program ran on programs it so, marked as `ncurve run` marks it
+      const dia = answer.profile && answer.profile.diameter;
+      fact('extents', ax.map((a) => `${a}${a === 'X' && dia ? '(dia)' : ''} ${fmt(s.extent[a][0])} … ${fmt(s.extent[a][1])}`).join('   '));
     }
     fact('warnings', s.warnings.length ? s.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}`).join('\n') : 'none');
     if (!answer.moves.complete) fact('moves', answer.moves.message, 'alarm');

@@ -79,6 +79,14 @@ async function latheExample(context) {
     let w = await W();
     check(summary.ok && w.moveCount === summary.motions && motions.length === summary.motions,
           `${w.moveCount} moves drawn, the run made ${summary.motions}`);
+    // the extents as `ncurve run` says them: X(dia) on a lathe programmed in diameters
+    const extents = await page.evaluate(() => {
+      const dt = [...document.querySelectorAll('#summary dt')].find((d) => d.textContent === 'extents');
+      return dt ? dt.nextElementSibling.textContent : '';
+    });
+    const ext = summary.extent, textRun = run();
+    check(extents === `X(dia) ${shown(ext.X[0])} … ${shown(ext.X[1])}   Z ${shown(ext.Z[0])} … ${shown(ext.Z[1])}` &&
+          /extent X\(dia\)/.test(textRun), `the extents as run says them: ${extents}`);
     check(w.state.kinds.feed === summary.moves.line && w.state.kinds.rapid === summary.moves.rapid &&
           w.state.kinds.arc === summary.moves.arc, `moves by kind ${JSON.stringify(w.state.kinds)}`);
 
