@@ -228,6 +228,47 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   EXPECT_TRUE(json::parse(r->body).contains("error"));
 }
 
+// An endpoint asked with a method it does not take: 405, Allow, a JSON error (not 404).
+TEST_F(ServerTest, OtherMethodIs405) {
+  auto c = client();
+  for (const char* path : {"/api/run", "/api/analyze", "/api/gen"}) {
+    auto r = c.Get(path);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 405) << path;
+    EXPECT_EQ(r->get_header_value("Allow"), "POST") << path;
+    EXPECT_TRUE(r->get_header_value("Content-Type").starts_with("application/json"));
+    const json j = json::parse(r->body);
+    EXPECT_EQ(j["status"], 405);
+    EXPECT_NE(j["error"].get<std::string>().find("POST only"), std::string::npos) << j;
+    r = c.Delete(path);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 405) << path;
+  }
+  for (const char* path : {"/api/profiles", "/api/curves", "/api/files", "/api/files/spiral.nc", "/"}) {
+    auto r = c.Post(path, "{}", "application/json");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 405) << path;
+    EXPECT_EQ(r->get_header_value("Allow"), "GET, HEAD") << path;
+    EXPECT_EQ(json::parse(r->body)["status"], 405);
+  }
+  auto r = c.Get("/api/nothing");  // no such endpoint at all: still 404
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 404);
+  still_serving();
+}
+
+// /api/run's summary holds every key of `ncurve run --json`, printed and printed_left_out too.
+TEST_F(ServerTest, RunSummaryKeys) {
+  const json j = post("/api/run", R"({"program": "G01 X1. F100.\nDPRNT[HELLO]\nM30\n", "moves": false})", 200);
+  std::vector<std::string> keys;
+  for (const auto& item : j["summary"].items()) keys.push_back(item.key());
+  EXPECT_EQ(keys, (std::vector<std::string>{"alarm", "blocks_executed", "extent", "feed_length_mm", "machine",
+                                            "motions", "moves", "ok", "printed", "printed_left_out",
+                                            "rapid_length_mm", "source", "source_blocks", "source_bytes",
+                                            "source_words", "text_problems", "text_problems_left_out",
+                                            "time_at_programmed_feed_s", "unchecked_lines", "warnings"}));
+}
+
 TEST_F(ServerTest, AnalyzeAndGen) {
   // 100 mm at F600: 10 s at the programmed feed
   json j = post("/api/analyze", R"({"program": "G01 X100. F600.\nM30\n"})", 200);
