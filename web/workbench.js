@@ -211,15 +211,14 @@
     });
     const t3 = performance.now();  // drawn at the next frame
     buildViews();
-    buildLegend();
     editor.setDiagnostics(answer.diagnostics);
     showDiagnostics();
     showSummary();
     if (!traceToCome) setupTrace();
     else $('dbg-pos').textContent = 'the trace is coming…';
     showLineMoves(editor.cursorLine());
-    showReference();
-    applyColour();
+    colour.showReference();
+    colour.apply();
     const t4 = performance.now();
     Object.assign(W.timing, {convert_ms: t2 - t1, draw_ms: t3 - t2, panels_ms: t4 - t3, run_to_drawn_ms: t4 - t0,
       edit_to_drawn_ms: W.timing.edit ? t4 - W.timing.edit : null, drawn_at: t4});
@@ -252,20 +251,6 @@
     plot.controls.addEventListener('change', mark);
     mark();
   }
-  function buildLegend() {
-    const box = $('legend'), k = plot.state().kinds;
-    box.textContent = '';
-    const names = ['rapid', 'feed', 'arc'];
-    names.forEach((nm, i) => {
-      const c = NcurveBackplot.KIND_COLORS[i], item = el('span', 'item');
-      const sw = el('span', '');
-      sw.style.cssText = `display:inline-block;width:18px;height:0;border-top:2px ${i ? 'solid' : 'dashed'} rgb(${c.join(',')})`;
-      item.append(sw, document.createTextNode(`${nm} ${k[nm]}`));
-      box.append(item);
-    });
-    box.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves'));
-  }
-
   const kindName = (i) => ['rapid', 'feed', 'arc'][conv.kind[i]];
   function onHover(i) {
     const tip = $('hover');
@@ -530,7 +515,7 @@
     for (const p of ['summary', 'debug', 'analyze', 'gen']) $('tab-' + p).hidden = p !== t;
     if (!plot) return;
     if (t === 'debug') goTo(W.pos);
-    else { applyColour(); plot.setTool(null); editor.setCurrentLine(0); }
+    else { colour.apply(); plot.setTool(null); editor.setCurrentLine(0); }
     if (t === 'analyze' && dirtyAnalysis) analyze();
   }
   for (const b of document.querySelectorAll('.wb-tabs button')) b.onclick = () => setTab(b.dataset.tab);
@@ -596,7 +581,7 @@
     genRef = {text: g.program, machine, tol: g.tolerance, max: g.max_deviation, ref: g.reference, param,
       dev: new Map(g.move_deviation.index.map((i, k) => [i, g.move_deviation.mm[k]]))};
     openGenerated();
-    setColourMode('deviation');
+    colour.setMode('deviation');
     run();
   };
   // the generated program as the current one: its own entry in the Program menu, its name in the
@@ -611,115 +596,16 @@
     genRef.text = editor.text;
   }
 
-  // ---- colour: by kind, by the feed reached (POST /api/analyze "moves") or by the deviation from a
-  // generated curve (POST /api/gen); a legend with the scale ----
-  const GENERATED = 'generated.nc', GREY = [178, 184, 192];
-  const RAMP = [[59, 76, 192], [40, 160, 220], [40, 175, 90], [235, 165, 20], [200, 30, 30]];
-  let colourMode = 'kind', feeds = null, feedsWanted = null, genRef = null;
-  const ramp = (u) => {
-    u = Math.max(0, Math.min(1, u || 0)) * (RAMP.length - 1);
-    const k = Math.min(RAMP.length - 2, Math.floor(u)), f = u - k, a = RAMP[k], b = RAMP[k + 1];
-    return [0, 1, 2].map((c) => Math.round(a[c] + (b[c] - a[c]) * f));
-  };
-  function setColourMode(mode) {
-    colourMode = $('colour').value = mode;
-    applyColour();
-  }
-  $('colour').onchange = () => setColourMode($('colour').value);
-  // the generated curve in grey while the generated program (or an edit of it) is in the editor
-  function showReference() {
-    const on = genRef && name === GENERATED && genRef.machine === $('machine').value;
-    let pts = null;
-    if (on) {
-      const R = genRef.ref, xs = profile().diameter ? 0.5 : 1;
-      pts = new Float32Array(3 * R.count);
-      for (let i = 0; i < R.count; i++) pts[3 * i] = R.x[i] * xs, pts[3 * i + 1] = R.y[i], pts[3 * i + 2] = R.z[i];
-    }
-    plot.setReference(pts);
-  }
-  function feedData() {  // the feeds of the program in the editor; null while they are asked for
-    const key = JSON.stringify(programRequest());
-    if (feeds && feeds.key === key) return feeds;
-    if (feedsWanted !== key) {
-      feedsWanted = key;
-      fetch('/api/analyze', {method: 'POST', headers: {'Content-Type': 'application/json'},
-        body: JSON.stringify(Object.assign(programRequest(), {moves: true}))})
-        .then((r) => r.json()).then((a) => ({key, error: a.error || (a.moves ? '' : 'no moves'), moves: a.moves}),
-          (e) => ({key, error: e.message}))
-        .then((f) => { if (feedsWanted === key) { feeds = f, feedsWanted = null; applyColour(); } });
-    }
-    return null;
-  }
-  // colours the moves as the selector says (not while the debugger draws the path up to the tool)
-  function applyColour() {
-    if (!plot || tab === 'debug') return;
-    let info = {mode: colourMode, coloured: 0, note: ''};
-    if (colourMode === 'feed') info = colourByFeed(info);
-    else if (colourMode === 'deviation') info = colourByDeviation(info);
-    if (!info.scale) plot.setColors();
-    buildLegend();
-    if (info.scale || info.note) colourLegend(info);
-    W.colour = info;
-  }
-  function colourByFeed(info) {
-    if (answer.none) return Object.assign(info, {note: 'feed reached: no program'});
-    const f = feedData();
-    if (!f) return Object.assign(info, {note: 'feed reached: computing…'});
-    const M = f.moves;
-    if (f.error || M.count !== answer.moves.count)
-      return Object.assign(info, {note: `feed reached: ${f.error || 'the cycle time run made other moves'}; coloured by kind`});
-    let top = 0;
-    for (let j = 0; j < conv.count; j++) if (conv.kind[j]) top = Math.max(top, M.feed_programmed[conv.moveOf[j]]);
-    if (!(top > 0)) return Object.assign(info, {note: 'feed reached: no moves at feed; coloured by kind'});
-    const seen = new Set();
-    let most = 0;
-    plot.setColors((j) => {
-      if (!conv.kind[j]) return GREY;
-      const v = M.feed_peak[conv.moveOf[j]], c = ramp(v / top);
-      info.coloured++, most = Math.max(most, v), seen.add(c.join());
-      return c;
-    });
-    return Object.assign(info, {scale: {title: 'feed reached (the peak of each move)', max: top, unit: 'mm/min'},
-      distinct: seen.size, most, grey: 'rapids grey'});
-  }
-  function colourByDeviation(info) {
-    const here = genRef && genRef.machine === $('machine').value && name === GENERATED;
-    if (!here) return Object.assign(info, {note: 'deviation: for a program generated in the Generate tab; coloured by kind'});
-    if (editor.text !== genRef.text)
-      return Object.assign(info, {note: 'deviation: the program was edited since it was generated; coloured by kind'});
-    const K = answer.moves.kinds, LN = K.indexOf('line'), A = K.indexOf('arc');
-    for (const i of genRef.dev.keys())
-      if (i >= answer.moves.count || (answer.moves.kind[i] !== LN && answer.moves.kind[i] !== A))
-        return Object.assign(info, {note: 'deviation: the run made other moves than gen measured; coloured by kind'});
-    const seen = new Set();
-    let most = 0;
-    plot.setColors((j) => {
-      const d = genRef.dev.get(conv.moveOf[j]);
-      if (d === undefined) return GREY;
-      const c = ramp(d / genRef.tol);
-      info.coloured++, most = Math.max(most, d), seen.add(c.join());
-      return c;
-    });
-    return Object.assign(info, {scale: {title: 'deviation from the curve', max: genRef.tol, unit: 'mm'},
-      distinct: seen.size, most, grey: 'approach, retract and rapids grey; the curve in grey under the path'});
-  }
-  function colourLegend(info) {
-    const box = $('legend');
-    if (!info.scale) { box.prepend(el('span', 'item', info.note)); return; }  // beside the kinds
-    box.textContent = '';
-    const S = info.scale, ticks = [0, 0.25, 0.5, 0.75, 1].map((u) => u * S.max);
-    const digits = Math.max(0, 2 - Math.floor(Math.log10(S.max)));
-    info.ticks = ticks.map((v) => fmt(v, digits));
-    const scale = el('span', 'wb-scale');
-    const bar = el('span', 'bar');
-    bar.style.background = `linear-gradient(to right, ${RAMP.map((c) => `rgb(${c.join(',')})`).join(', ')})`;
-    const labels = el('span', 'ticks');
-    for (const t of info.ticks) labels.append(el('span', '', t));
-    scale.append(bar, labels);
-    const most = colourMode === 'deviation' ? `max ${fmt(info.most, 6)} mm` : `highest ${fmt(info.most, 0)} mm/min`;
-    box.append(el('span', 'item', `${S.title}, ${S.unit}`), scale, el('span', 'item', most), el('span', 'hint', info.grey));
-  }
-  W.setColourMode = setColourMode;
+  // ---- colour: by kind, by the feed reached or by the deviation from the generated curve (wb-colour.js) ----
+  const GENERATED = 'generated.nc';
+  let genRef = null;  // the last generated program: its text, machine, tolerance, curve and deviations
+  const colour = NcurveColour.create({
+    select: $('colour'), legend: $('legend'),
+    now: () => ({plot, conv, answer, text: editor.text, request: programRequest(), profile: profile(), debugging: tab === 'debug',
+      generated: genRef && name === GENERATED && genRef.machine === $('machine').value ? genRef : null}),
+    onColour(info) { W.colour = info; },
+  });
+  W.setColourMode = colour.setMode;
 
   // ---- start: the profiles, the files, the first program ----
   $('run').onclick = run;

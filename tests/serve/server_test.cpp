@@ -219,6 +219,10 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   EXPECT_NE(r->body.find("ncurveWorkbench"), std::string::npos);
+  r = c.Get("/assets/wb-colour.js");  // the colour modes, a file of their own
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("NcurveColour"), std::string::npos);
   r = c.Get("/assets/run.html");  // not one of the workbench's
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 404);
