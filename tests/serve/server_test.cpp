@@ -223,6 +223,9 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   EXPECT_NE(r->body.find("NcurveColour"), std::string::npos);
+  r = c.Get("/assets/wb-answer.js");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
   r = c.Get("/assets/run.html");  // not one of the workbench's
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 404);
