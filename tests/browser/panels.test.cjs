@@ -4,7 +4,8 @@
 // `ncurve gen --list` prints, choosing each fills its parameters with the defaults it prints; an
 // expression x = 10 cos t, y = 10 sin t, t 0..360 (degrees, as gen's macro language) generates a
 // program whose moves at feed all lie within 10 ± tol of the origin and go once around; a bad
-// expression's error is shown beside the button; profiles/fanuc-lathe.toml chosen as a file runs
+// expression's error is shown beside the button; gen's other forms (macro, adaptive macro, cycle)
+// run as generated, named generated.nc; gen's warnings shown; profiles/fanuc-lathe.toml chosen as a file runs
 // the page as a lathe (ZX view) and generates a lathe curve on it; a broken profile shows the
 // server's 400 in the status line. Screenshots workbench-gen-expr.png, workbench-machine-file.png
 // in OUT_DIR. Exit 77 (skipped) where no Chromium is installed.

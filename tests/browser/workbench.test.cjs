@@ -2,8 +2,10 @@
 //   node workbench.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
 // Starts `ncurve serve --port 0 examples/spiral.nc`, opens the page and checks: the moves drawn
 // against the run's count, an error typed in the editor marked at its line, stepping the debugger
-// forward and back with #104 changing, a watchpoint on #104 stopped on, a move clicked landing on
-// its line. Screenshots go to OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
+// forward and back with #104 changing, a watchpoint on #104 stopped on (variables the control has
+// not refused), a move clicked landing on its line; the machine that of `ncurve run` without
+// --machine; at 1000 x 700 the axes readable in every view; an empty editor calm. Screenshots go to
+// OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {spawn, execFileSync} = require('child_process');
 const fs = require('fs');
