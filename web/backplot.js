@@ -228,17 +228,23 @@
       for (const j of [0, 1, 2]) if (j !== k) a[j] -= pad, b[j] -= pad;
       if (span[k] > diag * 1e-6) axisPts.push(...a, ...b);
       axisEnds[k] = [a, b];
-      for (const v of ticks[k].list) {
+    }
+    // the tick marks of axis k, those of the ticks shown(i) says (placeLabels thins them on the screen)
+    const tickMarks = (k, shown) => {
+      const pts = [], a = axisEnds[k][0];
+      ticks[k].list.forEach((v, i) => {
+        if (!shown(i)) return;
         const p = a.slice();
         p[k] = ticks[k].toWorld(v);
         for (const j of [0, 1, 2]) {  // a tick across each of the two other axes
           if (j === k) continue;
           const q = p.slice();
           q[j] -= tickLen;
-          axisPts.push(...p, ...q);
+          pts.push(...p, ...q);
         }
-      }
-    }
+      });
+      return new THREE.BufferAttribute(new Float32Array(pts), 3);
+    };
     // grid lines at the ticks of world x and y, on the floor
     const fz = wlo[floorK] - pad;
     for (const v of ticks[0].list) {
@@ -256,6 +262,14 @@
     };
     guide.add(lineSet(gridPts, 0x90a4ae, 0.35));
     guide.add(lineSet(axisPts, 0x37474f, 1));
+    // per axis: its tick marks' lines and which ticks they hold (a key, so that they are rebuilt
+    // only when that changes)
+    const markLines = axisEnds.map((ends) => {
+      if (!ends) return null;
+      const line = lineSet([], 0x37474f, 1);
+      guide.add(line);
+      return {line, key: ''};
+    });
 
     // renderer, camera, controls
     // (a renderer handed on by the plot before keeps its context and compiled shaders); no
@@ -364,6 +378,24 @@
       labels[labels.length - 1].alarm = true;
     }
 
+    // a label of w x h centred at x, y moved onto the canvas and off the boxes over it (the views'
+    // buttons, the legend, any element of the container marked data-keep-clear): down from a box
+    // in the upper half, up from one in the lower
+    const MARK_GAP = 8;
+    let shown = null;  // what placeLabels showed last (state())
+    const keepClear = (x, y, w, h, W, H) => {
+      const c = container.getBoundingClientRect();
+      x = Math.min(Math.max(x, w / 2 + 4), W - w / 2 - 4);
+      y = Math.min(Math.max(y, h / 2 + 4), H - h / 2 - 4);
+      for (const box of container.querySelectorAll('.ncurve-views, .ncurve-legend, [data-keep-clear]')) {
+        if (box.hidden || !box.offsetWidth) continue;
+        const r = box.getBoundingClientRect(), l = r.left - c.left, t = r.top - c.top;
+        if (x + w / 2 <= l || x - w / 2 >= l + r.width || y + h / 2 <= t || y - h / 2 >= t + r.height) continue;
+        if (t + r.height / 2 < H / 2) y = Math.max(y, t + r.height + h / 2 + 3);
+        else y = Math.min(y, t - h / 2 - 3);
+      }
+      return [x, y];
+    };
     const v3 = new THREE.Vector3();
     const project = (w) => {
       v3.copy(w).project(camera);
@@ -383,35 +415,60 @@
         const mid = [(a[0] + b[0]) / 2 - centre[0], (a[1] + b[1]) / 2 - centre[1]];
         if (nrm[0] * mid[0] + nrm[1] * mid[1] < 0) nrm = [-nrm[0], -nrm[1]];
         const count = ticks[k].list.length;
-        const gap = count > 1 ? len / (count - 1) : Infinity;
+        const gap = count > 1 ? len * ticks[k].step / (span[k] * scale[k]) : Infinity;  // one step on the screen
+        // numbers at least 48 px apart, marks at least MARK_GAP px (at 1, 2, 5, 10, 20, 50 ... steps)
         let every = Math.max(1, Math.ceil(48 / Math.max(gap, 1e-9)));
         if (every > 2 && every <= 5) every = 5;
         else if (every > 5) every = 10 * Math.ceil(every / 10);
-        return {d, nrm, len, every, endOn: len < 30 && span[k] > diag * 1e-6};
+        const endOn = len < 30 && span[k] > diag * 1e-6;
+        let markEvery = 1;
+        for (let f = 1; markEvery * gap < MARK_GAP && markEvery < 1e6; f *= 10)
+          for (const m of [1, 2, 5]) if (markEvery * gap < MARK_GAP) markEvery = m * f;
+        const first = Math.round(ticks[k].list[0] / ticks[k].step);
+        const mark = (i) => !endOn && ((first + i) % markEvery === 0 || (first + i) % every === 0);
+        const key = endOn ? 'none' : `${markEvery} ${every}`;
+        if (markLines[k].key !== key) {
+          markLines[k].key = key;
+          markLines[k].line.geometry.setAttribute('position', tickMarks(k, mark));
+        }
+        return {d, nrm, len, every, endOn, mark};
       });
       const tickIndex = [0, 0, 0];
+      shown = {marks: [[], [], []], numbers: [[], [], []], names: []};
+      screen.forEach((s, k) => {
+        if (!s) return;
+        ticks[k].list.forEach((v, i) => {
+          if (!s.mark(i)) return;
+          const p = axisEnds[k][0].slice();
+          p[k] = ticks[k].toWorld(v);
+          shown.marks[k].push(project(new THREE.Vector3(...p)));
+        });
+      });
       for (const L of labels) {
         let [x, y] = project(L.world);
         let hide = false;
         if (L.axis >= 0) {
           const s = screen[L.axis];
           const name = L.el.classList.contains('axis-name');
-          if (s.endOn) hide = true;
+          if (s.endOn && (!name || s.len < 8)) hide = true;  // a name stays unless its axis is seen end-on
           if (!name) {
             const i = tickIndex[L.axis]++;
             const m = Math.round(ticks[L.axis].list[i] / ticks[L.axis].step);
             if (m % s.every !== 0) hide = true;
             x += s.nrm[0] * 16, y += s.nrm[1] * 16;
-          } else {  // beyond the axis' end, clear of its last tick, kept on the canvas
+          } else if (!hide) {  // beyond the axis' end, clear of its last tick, kept on the canvas
+            L.el.style.display = '';  // measured as shown
             const w = L.el.offsetWidth, h = L.el.offsetHeight;
             const along = Math.abs(s.d[0]) * w / 2 + Math.abs(s.d[1]) * h / 2 + 10;
             x += s.d[0] * along, y += s.d[1] * along;
-            x = Math.min(Math.max(x, w / 2 + 4), W - w / 2 - 4);
-            y = Math.min(Math.max(y, h / 2 + 4), H - h / 2 - 4);
+            [x, y] = keepClear(x, y, w, h, W, H);
+            shown.names.push({text: L.el.textContent, x, y, w, h});
           }
         }
+
         const inside = x >= -40 && x <= W + 40 && y >= -20 && y <= H + 20;
         L.el.style.display = inside && !hide && !L.hidden ? '' : 'none';
+        if (L.axis >= 0 && inside && !hide && !L.el.classList.contains('axis-name')) shown.numbers[L.axis].push([x, y]);
         // a label centred on its point, but the alarm's ✕ (its left 12 px) on the point and its text after it
         const shift = L.alarm ? 'translate(-6px, -50%)' : 'translate(-50%, -50%)';
         L.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) ${shift}`;
@@ -512,7 +569,11 @@
       global.requestAnimationFrame(() => { pickQueued = false; setHover(pick(lastPointer[0], lastPointer[1])); });
     });
     listen(el, 'pointerleave', () => setHover(-1));
-    listen(global, 'resize', resize);
+    // the container's own size, not the window's: a page around it may grow or shrink it (a header
+    // wrapping onto two lines) and a canvas left bigger is cut off at the container's edge
+    const sizeWatch = global.ResizeObserver ? new global.ResizeObserver(() => resize()) : null;
+    if (sizeWatch) sizeWatch.observe(container);
+    else listen(global, 'resize', resize);
 
     const api = {
       onHover: options.onHover || null,
@@ -601,6 +662,8 @@
           kinds: {rapid: moveCounts[0], feed: moveCounts[1], arc: moveCounts[2]},
           segments: {rapid: counts[0], feed: counts[1], arc: counts[2]},
           view: viewName, hovered, coarse,
+          // on the canvas: each axis's tick marks and numbers shown, and the axis names (centre, size)
+          axes: shown,
           reference: reference ? reference.geometry.attributes.position.count : 0,
           camera: {position: camera.position.toArray(), zoom: camera.zoom, target: controls.target.toArray()},
         };
@@ -610,6 +673,7 @@
       dispose(how) {
         const keep = !!(how && how.keepRenderer);
         for (const [target, type, fn] of listeners) target.removeEventListener(type, fn);
+        if (sizeWatch) sizeWatch.disconnect();
         controls.dispose();
         // free the GPU buffers and the context now, not at the next garbage collection
         for (const s of pickScene ? [scene, pickScene] : [scene])

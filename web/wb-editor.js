@@ -75,10 +75,11 @@
     };
     function drawBands() {
       bands.textContent = '';
-      if (cursor) bands.append(band('cursor', cursor));
+      // (a line the text no longer has is not drawn)
+      if (cursor <= lineCount) bands.append(band('cursor', cursor));
       for (const b of breakpoints) if (b <= lineCount) bands.append(band('break', b));
-      if (selected) bands.append(band('selected', selected));
-      if (current) bands.append(band('current', current));
+      if (selected && selected <= lineCount) bands.append(band('selected', selected));
+      if (current && current <= lineCount) bands.append(band('current', current));
       marksG.textContent = '';
       for (const b of breakpoints) {
         if (b > lineCount) continue;
@@ -206,7 +207,7 @@
         render();
         root.scrollTop = 0;
       },
-      setDiagnostics(list) { diags = list || []; drawMarks(); drawBands(); },
+      setDiagnostics(list) { diags = list || []; tip.hidden = true; drawMarks(); drawBands(); },
       setBreakpoints(set) { breakpoints = set; drawBands(); },
       // the debugger's line (0: none)
       setCurrentLine(line) {

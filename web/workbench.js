@@ -43,26 +43,36 @@
     if (quiet) run(); else timer = setTimeout(run, 300);
   }
   const profile = () => profiles.find((p) => p.name === $('machine').value) || {};
-  // serve --machine FILE (not a shipped profile): the first choice, sent as no "machine" at all
+  // what each run of the editor's program sends: its text and name, the machine, and while a
+  // generated cycle is in the editor the parameters gen says to set for it
+  const programRequest = () => ({program: editor.text, name, machine: $('machine').value || undefined,
+    param: name === GENERATED && genRef && Object.keys(genRef.param).length ? genRef.param : undefined});
+  // what the server runs a request naming no machine on, when that is not a shipped profile
+  // (serve --machine FILE, or no --machine: the factory-parameter mill of `ncurve run`): the first
+  // choice, sent as no "machine" at all
   function serverProfile(p) {
     profiles.push(Object.assign({}, p, {name: ''}));
-    $('machine').add(new Option(`${p.path} — ${p.title || p.error} (serve --machine)`, '', true, true), 0);
+    const text = p.factory ? `${p.title} (ncurve run's default)`
+      : `${p.path} — ${p.title || p.error} (serve --machine)`;
+    $('machine').add(new Option(text, '', true, true), 0);
   }
   async function run() {
     clearTimeout(timer);
     timer = 0;
     const my = ++seq, t0 = performance.now();
     if (inFlight) inFlight.abort();
+    inFlight = null;
+    if (!hasProgram()) { showNoProgram(t0); return; }
     inFlight = new AbortController();
     status('running…', '');
     let r, j;
     // the moves first, drawn as soon as they come; the trace (Debugger) by a second request after
-    const request = {program: editor.text, name, machine: $('machine').value || undefined, format: 'binary'};
+    const request = Object.assign(programRequest(), {format: 'binary'});
     try {
       r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
         body: JSON.stringify(request)});
       const t1 = performance.now();
-      j = await readAnswer(r);
+      j = await NcurveAnswer.read(r);
       W.timing.request_ms = t1 - t0, W.timing.parse_ms = performance.now() - t1;
     } catch (e) {
       if (my === seq) status(`the server did not answer: ${e.message}`, 'alarm');
@@ -81,91 +91,32 @@
     try {
       r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
         body: JSON.stringify(Object.assign(request, {moves: false, trace: true}))});
-      t = await readAnswer(r);
+      t = await NcurveAnswer.read(r);
     } catch (e) {
       if (my === seq) status(`the server did not answer for the trace: ${e.message}`, 'alarm');
       return;
     }
     if (my !== seq) return;
-    if (t.trace) answer.trace = traceInFiles(t.trace, t.files, answer.files);
+    if (t.trace) answer.trace = NcurveAnswer.traceInFiles(t.trace, t.files, answer.files);
     setupTrace();
     W.timing.trace_ms = performance.now() - t0;
     W.shownText = answer.program;
     W.runs++;
   }
-  // the trace of a second answer with its file numbers made those of the first
-  function traceInFiles(trace, from, to) {
-    const map = from.map((f) => {
-      if (!to.includes(f)) to.push(f);
-      return to.indexOf(f);
-    });
-    const file = trace.blocks.file;
-    for (let b = 0; b < file.length; b++) file[b] = map[file[b]];
-    for (const stack of trace.stacks) for (const f of stack) if (f.call_file !== undefined) f.call_file = map[f.call_file];
-    return trace;
-  }
-  // a JSON answer, or a binary one (docs/serve.md): its JSON with each array named by offset made a
-  // typed array over the answer's bytes
-  const ARRAY_TYPES = {f64: Float64Array, u8: Uint8Array, u32: Uint32Array, i32: Int32Array};
-  async function readAnswer(r) {
-    if (!(r.headers.get('Content-Type') || '').startsWith('application/octet-stream')) return r.json();
-    const buf = await r.arrayBuffer(), dv = new DataView(buf);
-    if (buf.byteLength < 8 || dv.getUint32(0, true) !== 0x3142434e) throw new Error('not an ncurve binary answer');
-    const base = 8, length = dv.getUint32(4, true);
-    const j = JSON.parse(new TextDecoder().decode(new Uint8Array(buf, base + length)));
-    const resolve = (o) => {
-      for (const k of Object.keys(o)) {
-        const v = o[k];
-        if (!v || typeof v !== 'object') continue;
-        if (ARRAY_TYPES[v.type] && typeof v.offset === 'number') o[k] = new ARRAY_TYPES[v.type](buf, base + v.offset, v.count);
-        else resolve(v);
-      }
-    };
-    if (j.moves) resolve(j.moves);
-    if (j.trace) resolve(j.trace);
-    return j;
+  // an editor of blanks and % holds no program (the server would answer 400): an empty plot and a
+  // calm note, and nothing asked of the server
+  const hasProgram = () => /[^\s%]/.test(editor.text);
+  const NO_MOVES = {count: 0, complete: true, kinds: ['rapid', 'line', 'arc', 'dwell'], kind: [], file: [], line: [],
+    x: [], y: [], z: [], f: [], starts: {index: [], x: [], y: [], z: []},
+    arcs: {index: [], cx: [], cy: [], cz: [], plane: [], cw: [], sweep_deg: []}, codes: {index: [], code: []}};
+  function showNoProgram(t0) {
+    answer = {program: editor.text, none: true, files: [name], diagnostics: [], moves: NO_MOVES,
+      summary: {ok: false, alarm: null, motions: 0, none: true}};
+    show(t0, false);
   }
   function status(text, cls) {
     $('status').textContent = text;
     $('status').className = 'wb-status ' + (cls || '');
-  }
-
-  // ---- the answer's moves as the backplot takes them (docs/html.md): motions only ----
-  function convert(m, p) {
-    const K = m.kinds, R = K.indexOf('rapid'), LN = K.indexOf('line'), A = K.indexOf('arc'), DW = K.indexOf('dwell');
-    const N = m.count, xs = p.diameter ? 0.5 : 1;
-    let n = 0;
-    for (let i = 0; i < N; i++) { const k = m.kind[i]; if (k === R || k === LN || k === A) n++; }
-    const c = {count: n, kind: new Uint8Array(n), start: new Float32Array(3 * n), end: new Float32Array(3 * n),
-      arcIndex: new Int32Array(n), arcs: new Float32Array(5 * m.arcs.index.length), line: new Uint32Array(n),
-      file: new Uint16Array(n), feed: new Float32Array(n), moveOf: new Uint32Array(n), before: new Uint32Array(N + 1),
-      lathe: !!p.lathe, diameter: !!p.diameter, inch: false, plane: p.lathe ? 18 : 17, alarmAt: null, last: [0, 0, 0]};
-    let px = 0, py = 0, pz = 0, s = 0, a = 0, j = 0;
-    const S = m.starts, AR = m.arcs;
-    for (let i = 0; i < N; i++) {
-      c.before[i] = j;
-      if (s < S.index.length && S.index[s] === i) px = S.x[s] * xs, py = S.y[s], pz = S.z[s], s++;
-      const k = m.kind[i], ex = m.x[i] * xs, ey = m.y[i], ez = m.z[i];
-      if (k === R || k === LN || k === A) {
-        c.kind[j] = k === R ? 0 : k === LN ? 1 : 2;
-        c.start[3 * j] = px, c.start[3 * j + 1] = py, c.start[3 * j + 2] = pz;
-        c.end[3 * j] = ex, c.end[3 * j + 1] = ey, c.end[3 * j + 2] = ez;
-        c.arcIndex[j] = -1;
-        if (k === A) {
-          while (a < AR.index.length && AR.index[a] < i) a++;
-          const o = 5 * a;
-          c.arcs[o] = AR.cx[a] * xs, c.arcs[o + 1] = AR.cy[a], c.arcs[o + 2] = AR.cz[a];
-          c.arcs[o + 3] = AR.sweep_deg[a] * Math.PI / 180, c.arcs[o + 4] = AR.plane[a];
-          c.arcIndex[j] = a++;
-        }
-        c.line[j] = m.line[i], c.file[j] = m.file[i], c.feed[j] = m.f[i], c.moveOf[j] = i;
-        j++;
-      }
-      if (k === R || k === LN || k === A || k === DW) px = ex, py = ey, pz = ez;
-    }
-    c.before[N] = j;
-    c.last = [px, py, pz];
-    return c;
   }
 
   // ---- showing an answer ----
@@ -173,7 +124,7 @@
     const t1 = performance.now();
     const p = profile();
     mainFile = Math.max(0, answer.files.indexOf(name));
-    conv = convert(answer.moves, p);
+    conv = NcurveAnswer.movesForPlot(answer.moves, p);
     const s = answer.summary;
     if (s.alarm) conv.alarmAt = conv.last;
     const t2 = performance.now();
@@ -190,15 +141,14 @@
     });
     const t3 = performance.now();  // drawn at the next frame
     buildViews();
-    buildLegend();
     editor.setDiagnostics(answer.diagnostics);
     showDiagnostics();
     showSummary();
     if (!traceToCome) setupTrace();
     else $('dbg-pos').textContent = 'the trace is coming…';
     showLineMoves(editor.cursorLine());
-    showReference();
-    applyColour();
+    colour.showReference();
+    colour.apply();
     const t4 = performance.now();
     Object.assign(W.timing, {convert_ms: t2 - t1, draw_ms: t3 - t2, panels_ms: t4 - t3, run_to_drawn_ms: t4 - t0,
       edit_to_drawn_ms: W.timing.edit ? t4 - W.timing.edit : null, drawn_at: t4});
@@ -209,7 +159,8 @@
     W.summary = s;
     W.ready = true;
     const result = s.ok ? 'completed' : s.alarm ? `ALARM ${s.alarm.code} line ${s.alarm.line}` : 'stopped';
-    status(`${result} · ${s.motions} motions · ${fmt(W.timing.run_to_drawn_ms, 0)} ms`, s.ok ? 'ok' : 'alarm');
+    if (s.none) status('no program', '');
+    else status(`${result} · ${s.motions} motions · ${fmt(W.timing.run_to_drawn_ms, 0)} ms`, s.ok ? 'ok' : 'alarm');
     if (tab === 'analyze') analyze();
   }
 
@@ -230,20 +181,6 @@
     plot.controls.addEventListener('change', mark);
     mark();
   }
-  function buildLegend() {
-    const box = $('legend'), k = plot.state().kinds;
-    box.textContent = '';
-    const names = ['rapid', 'feed', 'arc'];
-    names.forEach((nm, i) => {
-      const c = NcurveBackplot.KIND_COLORS[i], item = el('span', 'item');
-      const sw = el('span', '');
-      sw.style.cssText = `display:inline-block;width:18px;height:0;border-top:2px ${i ? 'solid' : 'dashed'} rgb(${c.join(',')})`;
-      item.append(sw, document.createTextNode(`${nm} ${k[nm]}`));
-      box.append(item);
-    });
-    box.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves'));
-  }
-
   const kindName = (i) => ['rapid', 'feed', 'arc'][conv.kind[i]];
   function onHover(i) {
     const tip = $('hover');
@@ -255,8 +192,23 @@
     if (f === mainFile) tip.append(el('code', 'block', editor.lineText(line)));
     tip.append(el('div', 'what', `move ${conv.moveOf[i] + 1} · ${kindName(i)}${conv.kind[i] ? ' F' + fmt(conv.feed[i]) : ''} · to ${endText(i)}`));
     tip.hidden = false;
-    tip.style.left = '10px';
-    tip.style.top = '52px';
+    placeTip();
+  }
+  // the hover tip beside the pointer (below right, else where there is room), kept inside the plot
+  let pointer = [0, 0];
+  $('plot').addEventListener('pointermove', (e) => {
+    const r = $('plot').getBoundingClientRect();
+    pointer = [e.clientX - r.left, e.clientY - r.top];
+    if (!$('hover').hidden) placeTip();
+  });
+  function placeTip() {
+    const tip = $('hover'), box = $('plot'), W = box.clientWidth, H = box.clientHeight;
+    const w = tip.offsetWidth, h = tip.offsetHeight, gap = 16, [px, py] = pointer;
+    let x = px + gap, y = py + gap;
+    if (x + w > W - 4) x = px - gap - w;
+    if (y + h > H - 4) y = py - gap - h;
+    tip.style.left = Math.max(4, Math.min(x, W - w - 4)) + 'px';
+    tip.style.top = Math.max(4, Math.min(y, H - h - 4)) + 'px';
   }
   // a move's end as the program writes it: a lathe's X and Z (X a diameter where programmed so)
   function endText(i) {
@@ -296,6 +248,7 @@
     const s = answer.summary, box = $('summary');
     box.textContent = '';
     const fact = (k, v, cls) => box.append(el('dt', '', k), el('dd', cls || '', v));
+    if (s.none) { fact('program', 'none: the editor holds no program'); return; }
     if (s.ok) fact('result', 'completed', 'ok');
     else if (s.alarm) fact('result', `ALARM ${s.alarm.code} ${s.alarm.file || ''} line ${s.alarm.line}: ${s.alarm.message}`, 'alarm');
     else fact('result', 'stopped', 'alarm');
@@ -310,7 +263,9 @@
     fact('time', `${fmt(s.time_at_programmed_feed_s, 1)} s at programmed feed (the Cycle time tab: with acceleration)`);
     if (s.extent) {
       const ax = Object.keys(s.extent).sort((a, b) => 'XYZABC'.indexOf(a) - 'XYZABC'.indexOf(b));
-      fact('extents', ax.map((a) => `${a} ${fmt(s.extent[a][0])} … ${fmt(s.extent[a][1])}`).join('   '));
+      // X a diameter where the profile the program ran on programs it so, marked as `ncurve run` marks it
+      const dia = answer.profile && answer.profile.diameter;
+      fact('extents', ax.map((a) => `${a}${a === 'X' && dia ? '(dia)' : ''} ${fmt(s.extent[a][0])} … ${fmt(s.extent[a][1])}`).join('   '));
     }
     fact('warnings', s.warnings.length ? s.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}`).join('\n') : 'none');
     if (!answer.moves.complete) fact('moves', answer.moves.message, 'alarm');
@@ -321,7 +276,7 @@
     trace = W.trace = answer.trace ? NcurveTrace.create(answer.trace) : null;
     const slider = $('dbg-slider');
     slider.max = trace ? trace.count : 0;
-    if (!trace) { $('dbg-pos').textContent = 'no trace: tick Debugger above'; return; }
+    if (!trace) { $('dbg-pos').textContent = answer.none ? 'no program' : 'no trace: tick Debugger above'; return; }
     if (!trace.complete) $('dbg-pos').title = trace.message || '';
     goTo(Math.min(W.pos, trace.count), true);
   }
@@ -440,12 +395,27 @@
       box.append(w);
     }
   };
-  $('watch-add').onclick = () => {
-    const m = /^\s*#?\s*(\d+)\s*$/.exec($('watch-var').value);
-    if (!m) { $('watch-var').setCustomValidity('a variable: #104'); $('watch-var').reportValidity(); return; }
-    $('watch-var').setCustomValidity('');
-    if (!watches.includes(+m[1])) watches.push(+m[1]);
-    $('watch-var').value = '';
+  // a watch is a variable the control has: #0 never changes, and the rest is asked of the interpreter
+  // (a run of #1=#N on the machine chosen), so a number it has not (#99999) is refused in its words
+  $('watch-add').onclick = async () => {
+    const box = $('watch-var'), text = box.value.trim();
+    const refuse = (why) => { $('watch-why').textContent = why; box.setAttribute('aria-invalid', 'true'); };
+    const m = /^#?\s*(\d{1,8})$/.exec(text);
+    if (!m) return refuse(`${JSON.stringify(text)} is not a variable: # and its number, e.g. #104`);
+    const v = +m[1];
+    if (v === 0) return refuse('#0 is always vacant: it never changes');
+    let why = '';
+    try {
+      const r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'},
+        body: JSON.stringify({program: `#1=#${v}\nM30\n`, name: 'watch.nc', machine: $('machine').value || undefined, moves: false})});
+      const j = await r.json(), a = j.summary && j.summary.alarm;
+      why = a ? `${a.code} ${a.message}` : j.error || '';
+    } catch (e) { why = `the server did not answer: ${e.message}`; }
+    if (why) return refuse(why);
+    $('watch-why').textContent = '';
+    box.removeAttribute('aria-invalid');
+    if (!watches.includes(v)) watches.push(v);
+    box.value = '';
     showWatches();
   };
   $('watch-var').addEventListener('keydown', (e) => { if (e.key === 'Enter') $('watch-add').click(); });
@@ -475,7 +445,7 @@
     for (const p of ['summary', 'debug', 'analyze', 'gen']) $('tab-' + p).hidden = p !== t;
     if (!plot) return;
     if (t === 'debug') goTo(W.pos);
-    else { applyColour(); plot.setTool(null); editor.setCurrentLine(0); }
+    else { colour.apply(); plot.setTool(null); editor.setCurrentLine(0); }
     if (t === 'analyze' && dirtyAnalysis) analyze();
   }
   for (const b of document.querySelectorAll('.wb-tabs button')) b.onclick = () => setTab(b.dataset.tab);
@@ -483,9 +453,10 @@
   async function analyze() {
     dirtyAnalysis = false;
     const box = $('analysis');
+    if (!hasProgram()) { box.textContent = 'no program'; return; }
     box.textContent = 'computing…';
     const r = await fetch('/api/analyze', {method: 'POST', headers: {'Content-Type': 'application/json'},
-      body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined})});
+      body: JSON.stringify(programRequest())});
     const a = W.analysis = await r.json();
     box.textContent = '';
     const fact = (k, v) => box.append(el('dt', '', k), el('dd', '', v));
@@ -518,6 +489,7 @@
   $('gen').onclick = async () => {
     const fail = (text) => { $('gen-error').textContent = text; $('gen-out').textContent = ''; };
     $('gen-error').textContent = '';
+    $('gen-warnings').textContent = '';
     let params;
     try { params = JSON.parse($('gen-params').value || '{}'); } catch (e) { fail('parameters: ' + e.message); return; }
     const machine = $('machine').value, curve = $('gen-curve').value;
@@ -530,125 +502,40 @@
       r = await fetch('/api/gen', {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(request)});
       g = await r.json();
     } catch (e) { fail(`the server did not answer: ${e.message}`); return; }
+    for (const w of g.warnings || []) $('gen-warnings').append(el('li', '', `warning: ${w}`));
     if (g.error || !g.program) { fail(`${r.status}: ${g.error || 'no program'}`); return; }
+    const param = g.parameters || {}, set = Object.keys(param).map((k) => `No.${k} = ${param[k]}`).join(', ');
     $('gen-out').textContent = `max deviation ${fmt(g.max_deviation, 6)} mm (tolerance ${g.tolerance} mm), ` +
-      `${g.move_deviation.index.length} moves on the curve; the curve in grey, ${g.reference.count} points: generated into the editor`;
-    name = GENERATED;
-    editor.setText(g.program);
-    genRef = {text: editor.text, machine, tol: g.tolerance, max: g.max_deviation, ref: g.reference,
+      `${g.move_deviation.index.length} moves on the curve; the curve in grey, ${g.reference.count} points: generated into the editor` +
+      (set ? `, run here with ${set} (set it on the control)` : '');
+    genRef = {text: g.program, machine, tol: g.tolerance, max: g.max_deviation, ref: g.reference, param,
       dev: new Map(g.move_deviation.index.map((i, k) => [i, g.move_deviation.mm[k]]))};
-    setColourMode('deviation');
+    openGenerated();
+    colour.setMode('deviation');
     run();
   };
+  // the generated program as the current one: its own entry in the Program menu, its name in the
+  // diagnostics
+  const GEN_FILE = '\u0000generated';
+  function openGenerated() {
+    const box = $('file');
+    if (![...box.options].some((o) => o.value === GEN_FILE)) box.add(new Option(`${GENERATED} (generated)`, GEN_FILE), 0);
+    box.value = GEN_FILE;
+    name = GENERATED;
+    editor.setText(genRef.text);
+    genRef.text = editor.text;
+  }
 
-  // ---- colour: by kind, by the feed reached (POST /api/analyze "moves") or by the deviation from a
-  // generated curve (POST /api/gen); a legend with the scale ----
-  const GENERATED = 'generated.nc', GREY = [178, 184, 192];
-  const RAMP = [[59, 76, 192], [40, 160, 220], [40, 175, 90], [235, 165, 20], [200, 30, 30]];
-  let colourMode = 'kind', feeds = null, feedsWanted = null, genRef = null;
-  const ramp = (u) => {
-    u = Math.max(0, Math.min(1, u || 0)) * (RAMP.length - 1);
-    const k = Math.min(RAMP.length - 2, Math.floor(u)), f = u - k, a = RAMP[k], b = RAMP[k + 1];
-    return [0, 1, 2].map((c) => Math.round(a[c] + (b[c] - a[c]) * f));
-  };
-  function setColourMode(mode) {
-    colourMode = $('colour').value = mode;
-    applyColour();
-  }
-  $('colour').onchange = () => setColourMode($('colour').value);
-  // the generated curve in grey while the generated program (or an edit of it) is in the editor
-  function showReference() {
-    const on = genRef && name === GENERATED && genRef.machine === $('machine').value;
-    let pts = null;
-    if (on) {
-      const R = genRef.ref, xs = profile().diameter ? 0.5 : 1;
-      pts = new Float32Array(3 * R.count);
-      for (let i = 0; i < R.count; i++) pts[3 * i] = R.x[i] * xs, pts[3 * i + 1] = R.y[i], pts[3 * i + 2] = R.z[i];
-    }
-    plot.setReference(pts);
-  }
-  function feedData() {  // the feeds of the program in the editor; null while they are asked for
-    const key = editor.text + '\u0000' + $('machine').value;
-    if (feeds && feeds.key === key) return feeds;
-    if (feedsWanted !== key) {
-      feedsWanted = key;
-      fetch('/api/analyze', {method: 'POST', headers: {'Content-Type': 'application/json'},
-        body: JSON.stringify({program: editor.text, name, machine: $('machine').value || undefined, moves: true})})
-        .then((r) => r.json()).then((a) => ({key, error: a.error || (a.moves ? '' : 'no moves'), moves: a.moves}),
-          (e) => ({key, error: e.message}))
-        .then((f) => { if (feedsWanted === key) { feeds = f, feedsWanted = null; applyColour(); } });
-    }
-    return null;
-  }
-  // colours the moves as the selector says (not while the debugger draws the path up to the tool)
-  function applyColour() {
-    if (!plot || tab === 'debug') return;
-    let info = {mode: colourMode, coloured: 0, note: ''};
-    if (colourMode === 'feed') info = colourByFeed(info);
-    else if (colourMode === 'deviation') info = colourByDeviation(info);
-    if (!info.scale) plot.setColors();
-    buildLegend();
-    if (info.scale || info.note) colourLegend(info);
-    W.colour = info;
-  }
-  function colourByFeed(info) {
-    const f = feedData();
-    if (!f) return Object.assign(info, {note: 'feed reached: computing…'});
-    const M = f.moves;
-    if (f.error || M.count !== answer.moves.count)
-      return Object.assign(info, {note: `feed reached: ${f.error || 'the cycle time run made other moves'}; coloured by kind`});
-    let top = 0;
-    for (let j = 0; j < conv.count; j++) if (conv.kind[j]) top = Math.max(top, M.feed_programmed[conv.moveOf[j]]);
-    if (!(top > 0)) return Object.assign(info, {note: 'feed reached: no moves at feed; coloured by kind'});
-    const seen = new Set();
-    let most = 0;
-    plot.setColors((j) => {
-      if (!conv.kind[j]) return GREY;
-      const v = M.feed_peak[conv.moveOf[j]], c = ramp(v / top);
-      info.coloured++, most = Math.max(most, v), seen.add(c.join());
-      return c;
-    });
-    return Object.assign(info, {scale: {title: 'feed reached (the peak of each move)', max: top, unit: 'mm/min'},
-      distinct: seen.size, most, grey: 'rapids grey'});
-  }
-  function colourByDeviation(info) {
-    const here = genRef && genRef.machine === $('machine').value && name === GENERATED;
-    if (!here) return Object.assign(info, {note: 'deviation: for a program generated in the Generate tab; coloured by kind'});
-    if (editor.text !== genRef.text)
-      return Object.assign(info, {note: 'deviation: the program was edited since it was generated; coloured by kind'});
-    const K = answer.moves.kinds, LN = K.indexOf('line'), A = K.indexOf('arc');
-    for (const i of genRef.dev.keys())
-      if (i >= answer.moves.count || (answer.moves.kind[i] !== LN && answer.moves.kind[i] !== A))
-        return Object.assign(info, {note: 'deviation: the run made other moves than gen measured; coloured by kind'});
-    const seen = new Set();
-    let most = 0;
-    plot.setColors((j) => {
-      const d = genRef.dev.get(conv.moveOf[j]);
-      if (d === undefined) return GREY;
-      const c = ramp(d / genRef.tol);
-      info.coloured++, most = Math.max(most, d), seen.add(c.join());
-      return c;
-    });
-    return Object.assign(info, {scale: {title: 'deviation from the curve', max: genRef.tol, unit: 'mm'},
-      distinct: seen.size, most, grey: 'approach, retract and rapids grey; the curve in grey under the path'});
-  }
-  function colourLegend(info) {
-    const box = $('legend');
-    if (!info.scale) { box.prepend(el('span', 'item', info.note)); return; }  // beside the kinds
-    box.textContent = '';
-    const S = info.scale, ticks = [0, 0.25, 0.5, 0.75, 1].map((u) => u * S.max);
-    const digits = Math.max(0, 2 - Math.floor(Math.log10(S.max)));
-    info.ticks = ticks.map((v) => fmt(v, digits));
-    const scale = el('span', 'wb-scale');
-    const bar = el('span', 'bar');
-    bar.style.background = `linear-gradient(to right, ${RAMP.map((c) => `rgb(${c.join(',')})`).join(', ')})`;
-    const labels = el('span', 'ticks');
-    for (const t of info.ticks) labels.append(el('span', '', t));
-    scale.append(bar, labels);
-    const most = colourMode === 'deviation' ? `max ${fmt(info.most, 6)} mm` : `highest ${fmt(info.most, 0)} mm/min`;
-    box.append(el('span', 'item', `${S.title}, ${S.unit}`), scale, el('span', 'item', most), el('span', 'hint', info.grey));
-  }
-  W.setColourMode = setColourMode;
+  // ---- colour: by kind, by the feed reached or by the deviation from the generated curve (wb-colour.js) ----
+  const GENERATED = 'generated.nc';
+  let genRef = null;  // the last generated program: its text, machine, tolerance, curve and deviations
+  const colour = NcurveColour.create({
+    select: $('colour'), legend: $('legend'),
+    now: () => ({plot, conv, answer, text: editor.text, request: programRequest(), profile: profile(), debugging: tab === 'debug',
+      generated: genRef && name === GENERATED && genRef.machine === $('machine').value ? genRef : null}),
+    onColour(info) { W.colour = info; },
+  });
+  W.setColourMode = colour.setMode;
 
   // ---- start: the profiles, the files, the first program ----
   $('run').onclick = run;
@@ -681,23 +568,29 @@
     run();
   };
   $('trace').onchange = run;
+  // the shipped example of a server given no FILE: a lathe's when its default machine is a lathe
+  let example = {name: 'spiral.nc', url: '/assets/example.nc'};
   async function open(fileName) {
-    const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : '/assets/example.nc');
-    name = fileName || 'spiral.nc';
+    const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : example.url);
+    name = fileName || example.name;
     editor.setText(await r.text());
     breakpoints.clear();
     editor.setBreakpoints(breakpoints);
     W.pos = 0;
     await run();
   }
-  $('file').onchange = () => open($('file').value);
+  $('file').onchange = () => {
+    if ($('file').value !== GEN_FILE) { open($('file').value); return; }
+    openGenerated();
+    run();
+  };
   W.open = open;
   (async () => {
     try {
       const [pj, fj, cj] = await Promise.all(['/api/profiles', '/api/files', '/api/curves'].map((u) => fetch(u).then((r) => r.json())));
       profiles = pj.profiles;
-      for (const p of profiles) $('machine').add(new Option(`${p.name} — ${p.title}`, p.name, false, p.name === (pj.default || 'fanuc-mill')));
-      if (pj.server && !profiles.some((p) => p.name === pj.default)) serverProfile(pj.server);
+      for (const p of profiles) $('machine').add(new Option(`${p.name} — ${p.title}`, p.name, false, p.name === pj.default));
+      if (!profiles.some((p) => p.name === pj.default)) serverProfile(pj.server);
       $('machine').add(new Option('from a file…', FROM_FILE));
       machineShown = $('machine').value;
       curves = cj.curves;
@@ -705,7 +598,8 @@
       $('gen-curve').add(new Option('expression x(t), y(t), z(t)', 'expr'));
       chooseCurve();
       for (const f of fj.files) $('file').add(new Option(f.name, f.name));
-      if (!fj.files.length) $('file').add(new Option('spiral.nc (example)', ''));
+      if (profile().lathe) example = {name: 'lathe-hyperbola.nc', url: '/assets/example-lathe.nc'};
+      if (!fj.files.length) $('file').add(new Option(`${example.name} (example)`, ''));
       await open(fj.files.length ? fj.files[0].name : '');
     } catch (e) {
       W.error = String(e);

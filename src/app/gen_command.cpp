@@ -168,6 +168,20 @@ nlohmann::json gen_json(const GenJob& job, const gen::Result& r, const std::stri
   return j;
 }
 
+std::vector<std::string> gen_warnings(const GenJob& job) {
+  std::vector<std::string> out;
+  const gen::Options& o = job.options;
+  if (const geom::CurveSpec* spec = geom::find_curve(job.curve.name()); spec && spec->lathe && !o.profile.lathe())
+    out.push_back(fmt::format(
+        "{} is a lathe curve; without a lathe profile this is a mill program (its X and Z on the mill's X and Z, X as "
+        "a radius). For the lathe program (G18, X as a diameter, feed per revolution) give --machine "
+        "profiles/fanuc-lathe.toml",
+        spec->name));
+  if (o.css > 0 && o.max_rpm == 0 && o.profile.lathe())
+    out.push_back("--css without --max-rpm: no spindle clamp, the spindle speeds up without limit as X nears 0");
+  return out;
+}
+
 int gen_command(const GenArgs& a) {
   if (a.list) {
     std::cout << list_curves();
@@ -185,15 +199,7 @@ int gen_command(const GenArgs& a) {
   const gen::Options& o = job->options;
   const geom::Curve* curve = &job->curve;
 
-  if (const geom::CurveSpec* spec = geom::find_curve(curve->name()); spec && spec->lathe && !o.profile.lathe())
-    std::cerr << fmt::format(
-        "ncurve gen: warning: {} is a lathe curve; without a lathe profile this is a mill program (its X and Z on "
-        "the mill's X and Z, X as a radius). For the lathe program (G18, X as a diameter, feed per revolution) give "
-        "--machine profiles/fanuc-lathe.toml\n",
-        spec->name);
-  if (o.css > 0 && o.max_rpm == 0 && o.profile.lathe())
-    std::cerr << "ncurve gen: warning: --css without --max-rpm: no spindle clamp, the spindle speeds up without "
-                 "limit as X nears 0\n";
+  for (const std::string& w : gen_warnings(*job)) std::cerr << "ncurve gen: warning: " << w << "\n";
   gen::Result r;
   try {
     r = gen::generate(*curve, o);

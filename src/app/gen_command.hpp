@@ -57,6 +57,8 @@ struct GenJob {
 };
 GenJob gen_job(const GenArgs& args, const std::vector<std::string>& extras, const std::string& command,
                const std::vector<std::string>& options);
+// What gen warns of before generating (a lathe curve on a mill ...), each without "warning: ".
+std::vector<std::string> gen_warnings(const GenJob& job);
 // The statistics of `ncurve gen --json`, with the program's text when program is given.
 nlohmann::json gen_json(const GenJob& job, const gen::Result& result, const std::string* program);
 

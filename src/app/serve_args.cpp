@@ -13,8 +13,8 @@ void add_serve_command(CLI::App& app, ServeArgs& a) {
                   "address to listen on (default 127.0.0.1, this machine only; 0.0.0.0 lets any machine that can "
                   "reach this one run programs here)");
   cmd->add_option("--machine", a.machine,
-                  "the profile of a request that names none (TOML file, or a shipped one by name); default: FANUC "
-                  "3-axis mill")
+                  "the profile of a request that names none (TOML file, or a shipped one by name); default: as run, "
+                  "FANUC 3-axis mill, factory parameters")
       ->transform(profile_path());
   cmd->add_option("--lib", a.libs, "folder of macro programs for every run, or `macros`; may be repeated")
       ->transform(folder_path())

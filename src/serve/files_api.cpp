@@ -52,11 +52,13 @@ Answer api_profiles(const ServeConfig& config) {
     list.push_back(p);
   }
   json out{{"profiles", list}, {"default", fallback}};
-  if (!config.machine.empty()) {  // what a request that names no profile runs on
-    json server{{"path", config.machine}};
-    describe(server, config.machine);
-    out["server"] = server;
-  }
+  // what a request that names no profile runs on: --machine's, else the factory-parameter mill of
+  // `ncurve run` without --machine
+  json server{{"path", config.machine.empty() ? json(nullptr) : json(config.machine)},
+              {"factory", config.machine.empty()}};
+  if (config.machine.empty()) server.update(profile_json(machine::default_mill()));
+  else describe(server, config.machine);
+  out["server"] = server;
   return Answer{200, dump(out)};
 }
 
@@ -89,8 +91,8 @@ Answer page() { return asset("workbench.html"); }
 Answer asset(const std::string& name) {
   // the workbench's files and what they need, compiled in (cmake/embed_files.cmake)
   static constexpr std::string_view kServed[] = {"workbench.html", "workbench.css", "workbench.js", "wb-editor.js",
-                                                 "wb-debug.js", "backplot-geometry.js", "backplot.js", "backplot.css", "three.min.js",
-                                                 "OrbitControls.js", "example.nc"};
+                                                 "wb-debug.js", "wb-colour.js", "wb-answer.js", "backplot-geometry.js", "backplot.js", "backplot.css", "three.min.js",
+                                                 "OrbitControls.js", "example.nc", "example-lathe.nc"};
   for (std::string_view served : kServed) {
     if (served != name) continue;
     const std::string_view text = web::asset(name);

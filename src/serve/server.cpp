@@ -78,6 +78,27 @@ Server::Server(ServeConfig config) : config_(std::move(config)), http_(std::make
   s.Get(R"(/api/files/([^/]+))", [&c](const httplib::Request& req, httplib::Response& res) {
     answer(res, [&] { return api_file(c, req.matches[1]); });
   });
+  // an endpoint asked with another method: 405, the methods it takes in Allow, and a JSON error
+  auto refuse = [](const char* allow) {
+    return [allow](const httplib::Request& req, httplib::Response& res) {
+      res.set_header("Allow", allow);
+      send(res, error_answer(405, fmt::format("{} {}: the method is not allowed here ({} only)", req.method, req.path,
+                                              allow)));
+    };
+  };
+  for (const char* path : {"/api/run", "/api/analyze", "/api/gen"}) {
+    s.Get(path, refuse("POST"));
+    s.Put(path, refuse("POST"));
+    s.Patch(path, refuse("POST"));
+    s.Delete(path, refuse("POST"));
+  }
+  for (const char* path : {"/", R"(/assets/([A-Za-z0-9._-]+))", "/api/profiles", "/api/curves", "/api/files",
+                           R"(/api/files/([^/]+))"}) {
+    s.Post(path, refuse("GET, HEAD"));
+    s.Put(path, refuse("GET, HEAD"));
+    s.Patch(path, refuse("GET, HEAD"));
+    s.Delete(path, refuse("GET, HEAD"));
+  }
   // httplib's own refusals (no route, a body over the limit) get a JSON body too
   s.set_error_handler([&c](const httplib::Request&, httplib::Response& res) {
     if (!res.body.empty()) return;

@@ -104,16 +104,19 @@ Answer api_gen(const ServeConfig& config, const std::string& body) {
   } catch (const std::exception& e) {
     throw ApiError(400, e.what());
   }
+  // what the command line prints as "warning: ..." before it generates, in the answer or the error
+  const std::vector<std::string> warnings = app::gen_warnings(*job);
   gen::Result r;
   try {
     r = gen::generate(job->curve, job->options);
   } catch (const std::bad_alloc&) {
     throw;  // 507
   } catch (const std::exception& e) {
-    throw ApiError(422, e.what());
+    return Answer{422, dump(json{{"error", e.what()}, {"status", 422}, {"warnings", warnings}})};
   }
   const std::string& program = a.macro_only ? r.macro : r.text;
   json out = app::gen_json(*job, r, &program);
+  out["warnings"] = warnings;
   // the curve and each move's deviation, for the page to draw (a tenth of the tolerance, with room)
   const CurvePolyline curve = curve_polyline(r.cutter_centre ? *r.cutter_centre : job->curve, r.placement,
                                              job->options.tol / 20, kMostCurvePoints);

@@ -4,7 +4,8 @@
 // `ncurve gen --list` prints, choosing each fills its parameters with the defaults it prints; an
 // expression x = 10 cos t, y = 10 sin t, t 0..360 (degrees, as gen's macro language) generates a
 // program whose moves at feed all lie within 10 ± tol of the origin and go once around; a bad
-// expression's error is shown beside the button; profiles/fanuc-lathe.toml chosen as a file runs
+// expression's error is shown beside the button; gen's other forms (macro, adaptive macro, cycle)
+// run as generated, named generated.nc; gen's warnings shown; profiles/fanuc-lathe.toml chosen as a file runs
 // the page as a lathe (ZX view) and generates a lathe curve on it; a broken profile shows the
 // server's 400 in the status line. Screenshots workbench-gen-expr.png, workbench-machine-file.png
 // in OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
@@ -113,6 +114,49 @@ function genList() {
     check(/^400: /.test(bad) && bad.includes('COZ'), `a bad expression's error shown: ${bad}`);
     await page.fill('#gen-x', '10*COS[t]');
 
+    // gen's forms; each generated program runs in the page as gen measured it (a cycle with the
+    // parameter gen says to set), and is the current program, named so in the menu and diagnostics
+    const forms = await page.evaluate(() => [...document.getElementById('gen-form').options].map((o) => o.value));
+    check(forms.join() === 'expanded,arcs,macro,adaptive-macro,cycle', `the forms of gen --form: ${forms.join(' ')}`);
+    await page.selectOption('#gen-curve', 'ellipse');
+    await page.fill('#gen-tol', '0.005');
+    for (const form of ['macro', 'adaptive-macro', 'cycle']) {
+      await page.selectOption('#gen-form', form);
+      n = await runs();
+      await page.click('#gen');
+      await ran(n);
+      const g = await page.evaluate(() => ({ok: ncurveWorkbench.summary.ok, err: document.getElementById('gen-error').textContent,
+        out: document.getElementById('gen-out').textContent, colour: ncurveWorkbench.colour,
+        file: document.getElementById('file').selectedOptions[0].text}));
+      check(g.ok && g.err === '' && g.colour.mode === 'deviation' && g.colour.coloured > 20 && g.colour.most <= 0.005 + 1e-9 &&
+            (form !== 'cycle' || /No\.6051 = 103/.test(g.out)) && g.file === 'generated.nc (generated)',
+            `form ${form}: generated, ran (${g.ok}), ${g.colour.coloured} moves by deviation, max ${g.colour.most}; menu "${g.file}"`);
+    }
+    // an error typed into the generated program: its diagnostic names generated.nc
+    n = await runs();
+    await page.evaluate(() => {
+      const t = ncurveWorkbench.editor.input;
+      t.focus();
+      t.setSelectionRange(t.value.indexOf('M30'), t.value.indexOf('M30'));
+    });
+    await page.keyboard.type('#1=[1+\n');
+    await ran(n);
+    const d = await page.evaluate(() => ({diags: ncurveWorkbench.diagnostics.map((x) => x.file),
+      where: [...document.querySelectorAll('#diags .where')].map((e) => e.textContent)}));
+    check(d.diags.length > 0 && d.diags.every((f) => f === 'generated.nc') && d.where.every((w) => w.startsWith('generated.nc:')),
+          `the generated program's diagnostics name it (${d.where.join(' ')})`);
+    // a lathe curve on the mill: gen's warning, in its words, beside the button
+    await page.selectOption('#gen-curve', 'hyperbola');
+    await page.selectOption('#gen-form', 'expanded');
+    n = await runs();
+    await page.click('#gen');
+    await ran(n);
+    const warned = await text('gen-warnings');
+    check(/^warning: hyperbola is a lathe curve; without a lathe profile this is a mill program/.test(warned),
+          `gen's warning shown: ${warned.slice(0, 80)}…`);
+    await page.screenshot({path: path.join(out, 'workbench-gen-warning.png')});
+    await page.selectOption('#gen-curve', 'expr');
+
     // a profile from a file: the lathe's TOML, chosen through the selector's file entry
     const lathe = path.join(src, 'profiles/fanuc-lathe.toml');
     n = await runs();
@@ -144,6 +188,7 @@ function genList() {
       err: document.getElementById('gen-error').textContent, view: ncurveWorkbench.plot.state().view}));
     check(h.ok && h.err === '' && h.machine === 'FANUC 0i-TF 2-axis lathe' && h.view === 'zx',
           `the hyperbola generated on the file's lathe (${JSON.stringify(h)})`);
+    check(await text('gen-warnings') === '', 'on a lathe, no warning');
     await page.screenshot({path: path.join(out, 'workbench-machine-file.png')});
 
     // a broken profile: the server's 400 in the status line

@@ -3,7 +3,7 @@
 // Checks: the server's profile selected, the moves drawn against `ncurve run --json`, the ZX view
 // with Z across and X up (drawn as a radius, labelled as a diameter), a hovered move's end as the
 // program writes it, the G71 block making its roughing in one step, the debugger's keys, and the
-// system variables a program reads in the watch. Screenshots go to OUT_DIR. Exit 77 without Chromium.
+// system variables a program reads in the watch; with no FILE, the shipped lathe example. Screenshots go to OUT_DIR. Exit 77 without Chromium.
 'use strict';
 const {spawn, execFileSync} = require('child_process');
 const path = require('path');
@@ -22,8 +22,9 @@ const motions = run('--format', 'jsonl').trim().split('\n').map((l) => JSON.pars
   .map((m) => ({line: m.line, kind: m.kind, start: {x: m.start[0], z: m.start[2]}, end: {x: m.end[0], z: m.end[2]}}));
 const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a number
 
-(async () => {
-  const server = spawn(ncurve, ['serve', '--port', '0', '--machine', 'fanuc-lathe', file], {stdio: ['ignore', 'pipe', 'pipe']});
+// `ncurve serve --port 0 ARGS...` and the port it says
+async function serve(...args) {
+  const server = spawn(ncurve, ['serve', '--port', '0', ...args], {stdio: ['ignore', 'pipe', 'pipe']});
   const port = await new Promise((resolve, reject) => {
     let text = '';
     server.stdout.on('data', (d) => {
@@ -34,6 +35,30 @@ const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a numb
     server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
     setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
   });
+  return {server, port};
+}
+
+// serve --machine fanuc-lathe with no FILE: the shipped lathe example, run on the lathe
+async function latheExample(context) {
+  const {server, port} = await serve('--machine', 'fanuc-lathe');
+  try {
+    const page = await context.newPage();
+    page.setDefaultTimeout(60000);
+    await page.goto(`http://127.0.0.1:${port}/`);
+    await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1 && ncurveWorkbench.settled());
+    const w = await page.evaluate(() => ({text: ncurveWorkbench.editor.text, ok: ncurveWorkbench.summary.ok,
+      file: document.getElementById('file').selectedOptions[0].text, view: ncurveWorkbench.plot.state().view}));
+    const example = require('fs').readFileSync(path.join(src, 'examples/lathe-hyperbola.nc'), 'utf8');
+    check(w.text === example && w.ok && w.file === 'lathe-hyperbola.nc (example)' && w.view === 'zx',
+          `no FILE on a lathe: the lathe example (${w.file}), completed (${w.ok}), in the ZX view`);
+    await page.close();
+  } finally {
+    server.kill();
+  }
+}
+
+(async () => {
+  const {server, port} = await serve('--machine', 'fanuc-lathe', file);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
     const page = await context.newPage();
@@ -54,6 +79,14 @@ const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a numb
     let w = await W();
     check(summary.ok && w.moveCount === summary.motions && motions.length === summary.motions,
           `${w.moveCount} moves drawn, the run made ${summary.motions}`);
+    // the extents as `ncurve run` says them: X(dia) on a lathe programmed in diameters
+    const extents = await page.evaluate(() => {
+      const dt = [...document.querySelectorAll('#summary dt')].find((d) => d.textContent === 'extents');
+      return dt ? dt.nextElementSibling.textContent : '';
+    });
+    const ext = summary.extent, textRun = run();
+    check(extents === `X(dia) ${shown(ext.X[0])} … ${shown(ext.X[1])}   Z ${shown(ext.Z[0])} … ${shown(ext.Z[1])}` &&
+          /extent X\(dia\)/.test(textRun), `the extents as run says them: ${extents}`);
     check(w.state.kinds.feed === summary.moves.line && w.state.kinds.rapid === summary.moves.rapid &&
           w.state.kinds.arc === summary.moves.arc, `moves by kind ${JSON.stringify(w.state.kinds)}`);
 
@@ -99,6 +132,18 @@ const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a numb
       const m = motions[target.i];
       check(tip.includes(`to X${shown(m.end.x)} Z${shown(m.end.z)}`) && !/ Y/.test(tip),
             `hovering move ${target.i + 1} shows its end X${shown(m.end.x)} Z${shown(m.end.z)} (${tip})`);
+      // the tip beside the pointer, inside the plot, not over the pointer nor an axis name
+      const at = await page.evaluate(() => {
+        const r = (e) => e.getBoundingClientRect();
+        return {tip: r(document.getElementById('hover')).toJSON(), plot: r(document.getElementById('plot')).toJSON(),
+          names: [...document.querySelectorAll('.ncurve-label.axis-name')].filter((e) => e.style.display !== 'none').map((e) => r(e).toJSON())};
+      });
+      const t = at.tip, p = target.p, overlaps = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+      const near = Math.hypot(Math.max(t.left - p.x, 0, p.x - t.right), Math.max(t.top - p.y, 0, p.y - t.bottom));
+      check(t.left >= at.plot.left && t.right <= at.plot.right && t.top >= at.plot.top && t.bottom <= at.plot.bottom &&
+            near > 0 && near < 40 && !at.names.some((n) => overlaps(n, t)),
+            `the tip beside the pointer (${near.toFixed(0)} px off), inside the plot, clear of the axis names`);
+      await page.screenshot({path: path.join(out, 'workbench-lathe-hover.png')});
       await page.mouse.move(5, 500);
     }
 
@@ -192,6 +237,7 @@ const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a numb
     // -10 after line 5), not at a block that reads nothing new
     await page.fill('#watch-var', '#5002');
     await page.click('#watch-add');
+    await page.waitForSelector('#watches .w');
     await page.click('#dbg-first');
     await page.keyboard.press('F5');
     w = await W();
@@ -200,6 +246,7 @@ const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a numb
     w = await W();
     check(w.line === 6 && w.reads['#5002'] === -10, `and after line 5 (on ${w.line}, #5002 = ${w.reads['#5002']})`);
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
+    await latheExample(context);
   } catch (e) {
     check(false, String(e && e.stack || e));
   } finally {

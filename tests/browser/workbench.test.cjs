@@ -2,8 +2,10 @@
 //   node workbench.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
 // Starts `ncurve serve --port 0 examples/spiral.nc`, opens the page and checks: the moves drawn
 // against the run's count, an error typed in the editor marked at its line, stepping the debugger
-// forward and back with #104 changing, a watchpoint on #104 stopped on, a move clicked landing on
-// its line. Screenshots go to OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
+// forward and back with #104 changing, a watchpoint on #104 stopped on (variables the control has
+// not refused), a move clicked landing on its line; the machine that of `ncurve run` without
+// --machine; at 1000 x 700 the axes readable in every view; an empty editor calm. Screenshots go to
+// OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {spawn, execFileSync} = require('child_process');
 const fs = require('fs');
@@ -46,6 +48,11 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
       highlighted: ncurveWorkbench.highlighted, stopped: ncurveWorkbench.stoppedOnBreak, drawnUpTo: ncurveWorkbench.drawnUpTo}));
     let w = await W();
     check(w.text === fs.readFileSync(spiral, 'utf8'), 'the FILE given to serve is in the editor');
+    // no serve --machine: the page shows and runs on what `ncurve run` without --machine runs on
+    const machine = await page.evaluate(() => ({value: document.getElementById('machine').value,
+      text: document.getElementById('machine').selectedOptions[0].text, ran: ncurveWorkbench.summary.machine}));
+    check(machine.value === '' && /factory parameters \(ncurve run's default\)/.test(machine.text) && machine.ran === summary.machine,
+          `the machine shown is ncurve run's default: "${machine.text}", ran on "${machine.ran}" (run: "${summary.machine}")`);
     check(w.moveCount === summary.motions && w.state.moveCount === summary.motions,
           `${w.moveCount} moves drawn, the run made ${summary.motions}`);
     check(w.state.kinds.feed === summary.moves.line && w.state.kinds.rapid === summary.moves.rapid, `moves by kind ${JSON.stringify(w.state.kinds)}`);
@@ -99,8 +106,21 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     check(w.vars['#104'] === undefined && w.pos === line20, 'one step back, #104 vacant again');
     // a watchpoint on #104 from the start: stops right after its first write, then at the second
     await page.click('#dbg-first');
+    // variables the control has not are refused, and why beside the box
+    for (const [bad, why] of [['#99999', /PS0115 #99999 is not a variable of this control/], ['#0', /#0 is always vacant/],
+      ['#abc', /"#abc" is not a variable/], ['#1.5', /not a variable/]]) {
+      await page.fill('#watch-var', bad);
+      await page.click('#watch-add');
+      await page.waitForFunction(() => document.getElementById('watch-why').textContent !== '');
+      const said = await page.evaluate(() => ({why: document.getElementById('watch-why').textContent,
+        chips: document.querySelectorAll('#watches .w').length}));
+      check(why.test(said.why) && said.chips === 0, `watch ${bad} refused: ${said.why}`);
+      await page.evaluate(() => { document.getElementById('watch-why').textContent = ''; });
+    }
     await page.fill('#watch-var', '#104');
     await page.click('#watch-add');
+    await page.waitForSelector('#watches .w');
+    check(await page.evaluate(() => document.getElementById('watch-why').textContent === ''), 'watch #104 taken');
     await page.click('#dbg-next-break');
     w = await W();
     check(w.stopped && w.pos === line20 + 1 && Math.abs(w.vars['#104'] - r1) < 1e-6, `the watchpoint stops after the write of #104 (block ${w.pos + 1})`);
@@ -149,6 +169,58 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     const tip = await page.evaluate(() => { const t = document.querySelector('.wb-tip'); return t.hidden ? '' : t.textContent; });
     check(alarm && tip.includes(alarm.code), `hovering it shows the code and message (${tip})`);
     await page.screenshot({path: path.join(out, 'workbench-alarm.png')});
+    // at 1000 x 700, in every view of the spiral and of a wide program of little depth: the tick
+    // marks along each axis at least 8 px apart on the screen, the numbers 48 px, and each axis
+    // name shown whole on the canvas, clear of the buttons and the legend
+    await page.setViewportSize({width: 1000, height: 700});
+    await page.waitForTimeout(200);
+    const axesLook = async (what) => {
+      for (const view of await page.evaluate(() => ncurveWorkbench.plot.views)) {
+        const a = await page.evaluate((v) => {
+          const B = ncurveWorkbench.plot;
+          B.setView(v);
+          B.render();  // the labels placed now, not at the next frame
+          const c = B.renderer.domElement.getBoundingClientRect(), box = (q) => {
+            const r = document.querySelector(q).getBoundingClientRect();
+            return {l: r.left - c.left, t: r.top - c.top, r: r.right - c.left, b: r.bottom - c.top};
+          };
+          const p = document.getElementById('plot').getBoundingClientRect();
+          return {axes: B.state().axes, W: c.width, H: c.height, boxes: ['#views', '#legend', '.wb-colour'].map(box),
+            fits: Math.abs(c.width - p.width) < 1 && Math.abs(c.height - p.height) < 1};
+        }, view);
+        const gap = (pts) => Math.min(Infinity, ...pts.slice(1).map((p, i) => Math.hypot(p[0] - pts[i][0], p[1] - pts[i][1])));
+        const marks = Math.min(...a.axes.marks.map(gap)), numbers = Math.min(...a.axes.numbers.map(gap));
+        const bad = a.axes.names.filter((n) => n.x - n.w / 2 < 0 || n.x + n.w / 2 > a.W || n.y - n.h / 2 < 0 || n.y + n.h / 2 > a.H ||
+          a.boxes.some((b) => n.x + n.w / 2 > b.l && n.x - n.w / 2 < b.r && n.y + n.h / 2 > b.t && n.y - n.h / 2 < b.b));
+        check(a.fits && marks >= 8 && numbers >= 48 && a.axes.names.length >= 2 && bad.length === 0,
+              `${what}, ${view}: marks ${marks.toFixed(0)} px apart, numbers ${numbers.toFixed(0)} px, names ${a.axes.names.map((n) => n.text).join(' · ')}` +
+              (bad.length ? `; cut or covered: ${JSON.stringify(bad)} (canvas ${a.W} x ${a.H}, boxes ${JSON.stringify(a.boxes)})` : ''));
+      }
+    };
+    let before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', fs.readFileSync(spiral, 'utf8'));
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    await axesLook('the spiral');
+    await page.evaluate(() => ncurveWorkbench.plot.setView('iso'));
+    await page.screenshot({path: path.join(out, 'workbench-axes-1000.png')});
+    before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', 'G00 X0 Y0 Z2.\nG01 Z-0.5 F300.\nX100. Y60.\nG00 Z2.\nM30\n');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    await axesLook('100 x 60 x 2.5 mm');
+    await page.evaluate(() => ncurveWorkbench.plot.setView('iso'));
+    await page.screenshot({path: path.join(out, 'workbench-axes-flat.png')});
+    // the editor cleared: an empty plot and a calm note, no request and no error
+    for (const empty of ['', '%\n\n%\n']) {
+      before = await page.evaluate(() => ncurveWorkbench.runs);
+      await page.fill('.wb-input', empty);
+      await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+      const e = await page.evaluate(() => ({status: document.getElementById('status').textContent,
+        cls: document.getElementById('status').className, moves: ncurveWorkbench.moveCount, none: ncurveWorkbench.summary.none,
+        summary: document.getElementById('summary').textContent, diags: ncurveWorkbench.diagnostics.length}));
+      check(e.status === 'no program' && !/alarm/.test(e.cls) && e.moves === 0 && e.none && /no program/.test(e.summary) && e.diags === 0,
+            `the editor holding ${JSON.stringify(empty)}: "${e.status}", ${e.moves} moves, summary "${e.summary}"`);
+    }
+    await page.screenshot({path: path.join(out, 'workbench-empty.png')});
     check(errors.length === 0, `still no script errors (${errors.join('; ')})`);
   } catch (e) {
     check(false, String(e && e.stack || e));

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "geom/curve.hpp"
+#include "machine/profile.hpp"
 #include "serve/server.hpp"
 
 namespace ncurve::serve {
@@ -200,7 +201,16 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   r = c.Get("/api/profiles");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
-  EXPECT_TRUE(json::parse(r->body)["profiles"].is_array());
+  json profiles = json::parse(r->body);
+  EXPECT_TRUE(profiles["profiles"].is_array());
+  // no --machine: a request naming none runs on `ncurve run`'s default, and the answer says so
+  EXPECT_TRUE(profiles["default"].is_null());
+  EXPECT_EQ(profiles["server"]["factory"], true);
+  EXPECT_TRUE(profiles["server"]["path"].is_null());
+  EXPECT_EQ(profiles["server"]["title"], machine::default_mill().name);
+  EXPECT_EQ(profiles["server"]["lathe"], false);
+  EXPECT_EQ(post("/api/run", R"({"program": "M30\n", "moves": false})", 200)["summary"]["machine"],
+            machine::default_mill().name);
   r = c.Get("/");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
@@ -209,6 +219,13 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   EXPECT_NE(r->body.find("ncurveWorkbench"), std::string::npos);
+  r = c.Get("/assets/wb-colour.js");  // the colour modes, a file of their own
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("NcurveColour"), std::string::npos);
+  r = c.Get("/assets/wb-answer.js");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
   r = c.Get("/assets/run.html");  // not one of the workbench's
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 404);
@@ -216,6 +233,47 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 404);
   EXPECT_TRUE(json::parse(r->body).contains("error"));
+}
+
+// An endpoint asked with a method it does not take: 405, Allow, a JSON error (not 404).
+TEST_F(ServerTest, OtherMethodIs405) {
+  auto c = client();
+  for (const char* path : {"/api/run", "/api/analyze", "/api/gen"}) {
+    auto r = c.Get(path);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 405) << path;
+    EXPECT_EQ(r->get_header_value("Allow"), "POST") << path;
+    EXPECT_TRUE(r->get_header_value("Content-Type").starts_with("application/json"));
+    const json j = json::parse(r->body);
+    EXPECT_EQ(j["status"], 405);
+    EXPECT_NE(j["error"].get<std::string>().find("POST only"), std::string::npos) << j;
+    r = c.Delete(path);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 405) << path;
+  }
+  for (const char* path : {"/api/profiles", "/api/curves", "/api/files", "/api/files/spiral.nc", "/"}) {
+    auto r = c.Post(path, "{}", "application/json");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 405) << path;
+    EXPECT_EQ(r->get_header_value("Allow"), "GET, HEAD") << path;
+    EXPECT_EQ(json::parse(r->body)["status"], 405);
+  }
+  auto r = c.Get("/api/nothing");  // no such endpoint at all: still 404
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 404);
+  still_serving();
+}
+
+// /api/run's summary holds every key of `ncurve run --json`, printed and printed_left_out too.
+TEST_F(ServerTest, RunSummaryKeys) {
+  const json j = post("/api/run", R"({"program": "G01 X1. F100.\nDPRNT[HELLO]\nM30\n", "moves": false})", 200);
+  std::vector<std::string> keys;
+  for (const auto& item : j["summary"].items()) keys.push_back(item.key());
+  EXPECT_EQ(keys, (std::vector<std::string>{"alarm", "blocks_executed", "extent", "feed_length_mm", "machine",
+                                            "motions", "moves", "ok", "printed", "printed_left_out",
+                                            "rapid_length_mm", "source", "source_blocks", "source_bytes",
+                                            "source_words", "text_problems", "text_problems_left_out",
+                                            "time_at_programmed_feed_s", "unchecked_lines", "warnings"}));
 }
 
 TEST_F(ServerTest, AnalyzeAndGen) {
@@ -228,6 +286,14 @@ TEST_F(ServerTest, AnalyzeAndGen) {
   EXPECT_EQ(j["within_tolerance"], true);
   EXPECT_LE(j["max_deviation"].get<double>(), 0.01);
   EXPECT_NE(j["program"].get<std::string>().find("M30"), std::string::npos);
+  EXPECT_EQ(j["warnings"], json::array());
+  // gen's warnings, in the command line's words (without its "ncurve gen: warning: ")
+  j = post("/api/gen", R"({"curve": "hyperbola", "tol": 0.01})", 200);
+  ASSERT_EQ(j["warnings"].size(), 1u) << j["warnings"];
+  EXPECT_TRUE(j["warnings"][0].get<std::string>().starts_with("hyperbola is a lathe curve; without a lathe profile"));
+  j = post("/api/gen", R"({"curve": "hyperbola", "form": "arcs"})", 422);  // arcs of a curve in X and Z on a mill
+  EXPECT_NE(j["error"].get<std::string>().find("arcs need a plane curve"), std::string::npos) << j;
+  ASSERT_EQ(j["warnings"].size(), 1u) << j;
   j = post("/api/gen", R"({"curve": "elipse"})", 400);
   EXPECT_NE(j["error"].get<std::string>().find("ellipse"), std::string::npos) << j;
 }

@@ -1,0 +1,80 @@
+// Reading POST /api/run's answer for the workbench (docs/serve.md): the JSON or binary answer
+// (its arrays typed arrays over the bytes), a second answer's trace in the first one's file
+// numbers, and the moves as the backplot takes them.
+//   const j = await NcurveAnswer.read(response);
+//   const moves = NcurveAnswer.movesForPlot(j.moves, profile);
+(function (global) {
+  'use strict';
+  // the trace of a second answer with its file numbers made those of the first
+  function traceInFiles(trace, from, to) {
+    const map = from.map((f) => {
+      if (!to.includes(f)) to.push(f);
+      return to.indexOf(f);
+    });
+    const file = trace.blocks.file;
+    for (let b = 0; b < file.length; b++) file[b] = map[file[b]];
+    for (const stack of trace.stacks) for (const f of stack) if (f.call_file !== undefined) f.call_file = map[f.call_file];
+    return trace;
+  }
+  // a JSON answer, or a binary one (docs/serve.md): its JSON with each array named by offset made a
+  // typed array over the answer's bytes
+  const ARRAY_TYPES = {f64: Float64Array, u8: Uint8Array, u32: Uint32Array, i32: Int32Array};
+  async function readAnswer(r) {
+    if (!(r.headers.get('Content-Type') || '').startsWith('application/octet-stream')) return r.json();
+    const buf = await r.arrayBuffer(), dv = new DataView(buf);
+    if (buf.byteLength < 8 || dv.getUint32(0, true) !== 0x3142434e) throw new Error('not an ncurve binary answer');
+    const base = 8, length = dv.getUint32(4, true);
+    const j = JSON.parse(new TextDecoder().decode(new Uint8Array(buf, base + length)));
+    const resolve = (o) => {
+      for (const k of Object.keys(o)) {
+        const v = o[k];
+        if (!v || typeof v !== 'object') continue;
+        if (ARRAY_TYPES[v.type] && typeof v.offset === 'number') o[k] = new ARRAY_TYPES[v.type](buf, base + v.offset, v.count);
+        else resolve(v);
+      }
+    };
+    if (j.moves) resolve(j.moves);
+    if (j.trace) resolve(j.trace);
+    return j;
+  }
+  // the answer's moves as the backplot takes them (docs/html.md): motions only; a lathe's X halved
+  // to a radius on a profile p programmed in diameter
+  function movesForPlot(m, p) {
+    const K = m.kinds, R = K.indexOf('rapid'), LN = K.indexOf('line'), A = K.indexOf('arc'), DW = K.indexOf('dwell');
+    const N = m.count, xs = p.diameter ? 0.5 : 1;
+    let n = 0;
+    for (let i = 0; i < N; i++) { const k = m.kind[i]; if (k === R || k === LN || k === A) n++; }
+    const c = {count: n, kind: new Uint8Array(n), start: new Float32Array(3 * n), end: new Float32Array(3 * n),
+      arcIndex: new Int32Array(n), arcs: new Float32Array(5 * m.arcs.index.length), line: new Uint32Array(n),
+      file: new Uint16Array(n), feed: new Float32Array(n), moveOf: new Uint32Array(n), before: new Uint32Array(N + 1),
+      lathe: !!p.lathe, diameter: !!p.diameter, inch: false, plane: p.lathe ? 18 : 17, alarmAt: null, last: [0, 0, 0]};
+    let px = 0, py = 0, pz = 0, s = 0, a = 0, j = 0;
+    const S = m.starts, AR = m.arcs;
+    for (let i = 0; i < N; i++) {
+      c.before[i] = j;
+      if (s < S.index.length && S.index[s] === i) px = S.x[s] * xs, py = S.y[s], pz = S.z[s], s++;
+      const k = m.kind[i], ex = m.x[i] * xs, ey = m.y[i], ez = m.z[i];
+      if (k === R || k === LN || k === A) {
+        c.kind[j] = k === R ? 0 : k === LN ? 1 : 2;
+        c.start[3 * j] = px, c.start[3 * j + 1] = py, c.start[3 * j + 2] = pz;
+        c.end[3 * j] = ex, c.end[3 * j + 1] = ey, c.end[3 * j + 2] = ez;
+        c.arcIndex[j] = -1;
+        if (k === A) {
+          while (a < AR.index.length && AR.index[a] < i) a++;
+          const o = 5 * a;
+          c.arcs[o] = AR.cx[a] * xs, c.arcs[o + 1] = AR.cy[a], c.arcs[o + 2] = AR.cz[a];
+          c.arcs[o + 3] = AR.sweep_deg[a] * Math.PI / 180, c.arcs[o + 4] = AR.plane[a];
+          c.arcIndex[j] = a++;
+        }
+        c.line[j] = m.line[i], c.file[j] = m.file[i], c.feed[j] = m.f[i], c.moveOf[j] = i;
+        j++;
+      }
+      if (k === R || k === LN || k === A || k === DW) px = ex, py = ey, pz = ez;
+    }
+    c.before[N] = j;
+    c.last = [px, py, pz];
+    return c;
+  }
+
+  global.NcurveAnswer = {read: readAnswer, traceInFiles, movesForPlot};
+})(window);
