@@ -443,6 +443,9 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column, st
   }
   frame.prog = p;
   frame.pc = frame.entry = std::max(entry, 0);
+  // a program called from a macro that G66 called calls no more than that macro (nor itself again)
+  frame.modal_limit = std::min(modal_limit_next_, frames_.back().modal_limit);
+  modal_limit_next_ = SIZE_MAX;
   frame.caller = prog_;
   frame.call_block = block_;
   if (frame.kind == Frame::subprogram) {
@@ -613,14 +616,13 @@ void Interpreter::exec_nc(const Block& b) {
         call_macro(number, args, repeat, false, false, b.column);
       } else {
         modal_call_ = true;
-        modal_program_ = number;
-        modal_repeat_ = repeat;
-        modal_args_ = std::move(args);
+        modal_calls_.push_back({number, repeat, std::move(args)});
       }
       return;
     }
-    if (g == 670) {
-      modal_call_ = false;
+    if (g == 670) {  // cancels the latest G66; the one before it, if any, is in force again
+      if (!modal_calls_.empty()) modal_calls_.pop_back();
+      modal_call_ = !modal_calls_.empty();
       if (cmds_.size() == 1) return;
     }
   }
@@ -795,8 +797,15 @@ void Interpreter::exec_nc(const Block& b) {
     }
   }
 
-  if (moved && modal_call_ && !here.modal) {
-    call_macro(modal_program_, modal_args_, modal_repeat_, false, true, b.column);
+  // After a move, the latest G66 in force; in a macro a G66 called, the G66 before that one (the
+  // manual's nesting of modal calls: the inner macro's moves call the outer macro).
+  if (moved && !modal_calls_.empty()) {
+    const std::size_t n = std::min(modal_calls_.size(), here.modal_limit);
+    if (n > 0) {
+      const ModalCall call = modal_calls_[n - 1];  // a copy: the macro may give G66 or G67
+      modal_limit_next_ = n - 1;
+      call_macro(call.program, call.args, call.repeat, false, true, b.column);
+    }
   }
 }
 
