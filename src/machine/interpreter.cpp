@@ -443,6 +443,9 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column, st
   }
   frame.prog = p;
   frame.pc = frame.entry = std::max(entry, 0);
+  // a program called from a macro that G66 called calls no more than that macro (nor itself again)
+  frame.modal_limit = std::min(modal_limit_next_, frames_.back().modal_limit);
+  modal_limit_next_ = SIZE_MAX;
   frame.caller = prog_;
   frame.call_block = block_;
   if (frame.kind == Frame::subprogram) {
@@ -601,6 +604,10 @@ void Interpreter::exec_nc(const Block& b) {
   if (cmds_.empty()) return;
 
   const Frame& here = frames_.back();
+  // A subprogram called by an M code (No.6071..6079) or the T code (No.6001#5): made after the block
+  // as M98 is; 0 for none.
+  int sub_call = 0, sub_call_m = -1;
+  std::uint16_t sub_call_column = 0;
   // Macro calls take the whole block.
   for (int g : g_codes_) {
     if (g == 650 || g == 660) {
@@ -613,14 +620,13 @@ void Interpreter::exec_nc(const Block& b) {
         call_macro(number, args, repeat, false, false, b.column);
       } else {
         modal_call_ = true;
-        modal_program_ = number;
-        modal_repeat_ = repeat;
-        modal_args_ = std::move(args);
+        modal_calls_.push_back({number, repeat, std::move(args)});
       }
       return;
     }
-    if (g == 670) {
-      modal_call_ = false;
+    if (g == 670) {  // cancels the latest G66; the one before it, if any, is in force again
+      if (!modal_calls_.empty()) modal_calls_.pop_back();
+      modal_call_ = !modal_calls_.empty();
       if (cmds_.size() == 1) return;
     }
   }
@@ -639,13 +645,13 @@ void Interpreter::exec_nc(const Block& b) {
           call_macro(9020 + i, args, 1, true, false, b.column);
           return;
         }
+      // No.6071..6079: a subprogram call as M98 makes it, so after the block's move and its other
+      // M codes; the calling M code is not given out (below)
       for (int i = 0; i < 9; ++i)
-        if (profile_.m_code_subprograms[i] != 0 && m == profile_.m_code_subprograms[i]) {
-          Frame f;
-          f.kind = Frame::subprogram;
-          f.custom = true;
-          call_program(9001 + i, f, b.column);
-          return;
+        if (sub_call == 0 && profile_.m_code_subprograms[i] != 0 && m == profile_.m_code_subprograms[i]) {
+          sub_call = 9001 + i;
+          sub_call_m = m;
+          sub_call_column = b.column;
         }
     }
   }
@@ -675,18 +681,18 @@ void Interpreter::exec_nc(const Block& b) {
   if (has('D') && !(profile_.lathe() && profile_.series10_format)) d_ = integer(word('D'), "D");  // else a cycle's depth
   if (has('T')) {
     int t = integer(word('T'), "T");
-    if (profile_.t_code_calls_o9000 && !here.custom) {
+    if (profile_.t_code_calls_o9000 && !here.custom) {  // O9000 does the tool's work
       write_var(149, Value::of(t), word('T').column);
-      Frame f;
-      f.kind = Frame::subprogram;
-      f.custom = true;
-      call_program(9000, f, word('T').column);
-      return;
-    }
-    tool_ = t;
-    if (profile_.lathe()) {  // a turret indexes on T; a mill changes on M06
-      select_lathe_offset(t % 100, word('T').column);
-      emit_event(MoveKind::tool_change, t);
+      if (sub_call == 0) {
+        sub_call = 9000;
+        sub_call_column = word('T').column;
+      }
+    } else {
+      tool_ = t;
+      if (profile_.lathe()) {  // a turret indexes on T; a mill changes on M06
+        select_lathe_offset(t % 100, word('T').column);
+        emit_event(MoveKind::tool_change, t);
+      }
     }
   }
 
@@ -734,6 +740,7 @@ void Interpreter::exec_nc(const Block& b) {
     if (c.letter != 'M') continue;
     int m = integer(c, "M");
     last_m_ = m;
+    if (m == sub_call_m) continue;  // calls its subprogram below, as M98 does; not given out
     if (m == cycle_clamp_m_) [[unlikely]] {  // given out by the lathe's drilling cycle at each hole
       cycle_clamp_m_ = -1;
       continue;
@@ -795,8 +802,23 @@ void Interpreter::exec_nc(const Block& b) {
     }
   }
 
-  if (moved && modal_call_ && !here.modal) {
-    call_macro(modal_program_, modal_args_, modal_repeat_, false, true, b.column);
+  if (sub_call != 0) {
+    Frame f;
+    f.kind = Frame::subprogram;
+    f.custom = true;
+    call_program(sub_call, f, sub_call_column);
+    return;
+  }
+
+  // After a move, the latest G66 in force; in a macro a G66 called, the G66 before that one (the
+  // manual's nesting of modal calls: the inner macro's moves call the outer macro).
+  if (moved && !modal_calls_.empty()) {
+    const std::size_t n = std::min(modal_calls_.size(), here.modal_limit);
+    if (n > 0) {
+      const ModalCall call = modal_calls_[n - 1];  // a copy: the macro may give G66 or G67
+      modal_limit_next_ = n - 1;
+      call_macro(call.program, call.args, call.repeat, false, true, b.column);
+    }
   }
 }
 

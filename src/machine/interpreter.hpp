@@ -336,6 +336,9 @@ private:
     enum Kind : std::uint8_t { main, subprogram, macro } kind = main;
     bool custom = false;     // called by a custom G/M code (such codes are ordinary inside)
     bool modal = false;      // called by G66
+    // the G66 calls a move here may make: those below this index of modal_calls_ (a macro called by
+    // the n-th G66 calls the (n-1)-th after its moves; the main program, the latest)
+    std::size_t modal_limit = SIZE_MAX;
     int repeat = 0;          // calls still to come (L)
     std::array<nc::Value, 33> initial{};  // locals on entry, for repeated macro calls
     const nc::Program* caller = nullptr;    // the calling block, for the call stack of an alarm
@@ -408,9 +411,16 @@ private:
   double max_spindle_ = 0;  // G50 S on a lathe
   int tool_ = 0, h_ = 0, d_ = 0, last_m_ = -1;
   std::int32_t last_sequence_ = -1;
-  bool modal_call_ = false;
-  int modal_program_ = 0;
-  int modal_repeat_ = 1;
+  bool modal_call_ = false;  // a G66 is in force (#4012 reads 66)
+  // G66 modal calls in force, the latest last: a second G66 nests inside the first, and G67 cancels
+  // the latest (the manual's nesting of modal calls).
+  struct ModalCall {
+    int program = 0;
+    int repeat = 1;
+    std::vector<Arg> args;
+  };
+  std::vector<ModalCall> modal_calls_;
+  std::size_t modal_limit_next_ = SIZE_MAX;  // the modal_limit of the frame call_program makes next
   // drilling canned cycle (group 09): 0 = G80, else 73, 74, 76, 81..89; data kept while it is active
   int cycle_ = 0;
   bool cycle_return_initial_ = true;  // G98 (power-on), G99: return to the R point level
@@ -429,8 +439,10 @@ private:
   std::array<bool, kAxes> rotary_{};
   std::array<bool, kAxes> roll_word_{};
   AxisVector roll_value_{};
-  std::vector<Arg> modal_args_;
   void select_lathe_offset(int number, std::uint16_t column);
+  double offset_units(double mm) const;   // an offset as the program reads it (inches under G20)
+  double offset_mm(double value) const;   // and as it writes it
+  static bool is_tip_variable(int n);     // #2301..#2364: a lathe's tool nose tip (a number)
   double* lathe_offset_field(int n);
   void lathe_offset_setting();
   AxisVector tool_shift_{};  // machine = work + origin + tool shift (G43/G44 on Z; lathe T offset on X, Z)

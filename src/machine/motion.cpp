@@ -143,8 +143,16 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       case 410: case 420:
         comp_side_ = g == 410 ? 1 : -1;
         break;
-      case 200: inch_ = true; break;
-      case 210: inch_ = false; break;
+      case 200: case 210:
+        // The 30i-MA manual (8.2): G20/G21 in a block of its own at the start, before the coordinate
+        // system is set, and "must not be switched during a program". ncurve converts at the switch;
+        // the control changes the unit of the offsets whose numbers it keeps, so it warns.
+        if (inch_ != (g == 200) && result_.stats.feed_length + result_.stats.rapid_length > 0)
+          warn_once("NC2018", fmt::format("G{} switches the unit after the program has moved: the manual says G20 and "
+                                          "G21 must not be switched during a program (the offsets then change unit)",
+                                          g / 10));
+        inch_ = g == 200;
+        break;
       case 800: cancel_canned_cycle(); break;
       case 670: break;
       case 150: case 160: case 501: case 510: case 511: case 680: case 690:

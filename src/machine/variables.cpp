@@ -45,6 +45,11 @@ double Interpreter::program_units(int axis, double mm) const {
   return v;
 }
 
+// An offset (tool, work) in mm as the program reads or writes it: in inches under G20.
+double Interpreter::offset_units(double mm) const { return inch_ ? mm / 25.4 : mm; }
+double Interpreter::offset_mm(double value) const { return inch_ ? value * 25.4 : value; }
+bool Interpreter::is_tip_variable(int n) { return n >= 2301 && n <= 2364; }
+
 // (a look from outside the run: not a read of the program's, so not told to the observer)
 nc::Value Interpreter::variable(int number) { return number >= 1000 ? read_system(number, 0) : read_var(number, 0); }
 
@@ -134,10 +139,12 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     auto it = system_store_.find(n);
     return it == system_store_.end() ? Value::of(0) : it->second;
   }
+  // Offsets are kept in mm and read in the input unit, as G10 sets them and #5001.. read: under G20
+  // in inches (the tool nose tip #2301.. is a number).
   if (profile_.lathe()) {
-    if (const double* field = lathe_offset_field(n)) return Value::of(*field);
+    if (const double* field = lathe_offset_field(n)) return Value::of(is_tip_variable(n) ? *field : offset_units(*field));
   } else if (const double* field = mill_offset_field(n)) {
-    return Value::of(*field);
+    return Value::of(offset_units(*field));
   }
   switch (n) {
     case 3000: case 3006: return Value{};
@@ -205,14 +212,15 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     int set = (n - 5201) / 20;
     int a = axis_order((n - 5201) % 20);
     if (a < 0 || set > 6) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-    return Value::of(work_offsets_[set][a]);
+    return Value::of(a < 3 ? offset_units(work_offsets_[set][a]) : work_offsets_[set][a]);
   }
   if (n >= 7001 && n <= 7960) {
     int p = (n - 7001) / 20 + 1;
     int a = axis_order((n - 7001) % 20);
     if (a < 0) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
     auto it = extended_offsets_.find(p);
-    return Value::of(it == extended_offsets_.end() ? 0.0 : it->second[a]);
+    const double v = it == extended_offsets_.end() ? 0.0 : it->second[a];
+    return Value::of(a < 3 ? offset_units(v) : v);
   }
   alarm("PS0115", fmt::format("#{} is not a variable of this control", n), column);
 }
@@ -235,13 +243,14 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
     return;
   }
   if (n >= 1100 && n <= 1135) { system_store_[n] = v; return; }
+  // written in the input unit (under G20 inches), kept in mm
   if (profile_.lathe()) {
     if (double* field = lathe_offset_field(n)) {
-      *field = v.number();
+      *field = is_tip_variable(n) ? v.number() : offset_mm(v.number());
       return;
     }
   } else if (double* field = mill_offset_field(n)) {
-    *field = v.number();
+    *field = offset_mm(v.number());
     return;
   }
   switch (n) {
@@ -255,7 +264,7 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
     int set = (n - 5201) / 20;
     int a = axis_order((n - 5201) % 20);
     if (a < 0 || set > 6) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-    work_offsets_[set][a] = v.number();
+    work_offsets_[set][a] = a < 3 ? offset_mm(v.number()) : v.number();
     set_origin();
     return;
   }
@@ -263,7 +272,7 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
     int p = (n - 7001) / 20 + 1;
     int a = axis_order((n - 7001) % 20);
     if (a < 0) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-    extended_offsets_[p][a] = v.number();
+    extended_offsets_[p][a] = a < 3 ? offset_mm(v.number()) : v.number();
     set_origin();
     return;
   }
