@@ -166,7 +166,8 @@ TEST(Accept, OtherHighSpeedFormsAlarm) {
   EXPECT_EQ(run("G05.1 Q2 X0 Y0 Z0\nM30\n").alarm_code(), "NC9001");  // smooth interpolation changes the path
   EXPECT_EQ(run("G05.1 Q3\nM30\n").alarm_code(), "NC9001");           // nano smoothing
   EXPECT_EQ(run("G05.1\nM30\n").alarm_code(), "NC9002");
-  EXPECT_EQ(run("G08 P2\nM30\n").alarm_code(), "NC9002");
+  EXPECT_EQ(run("G08 P2\nM30\n").alarm_code(), "PS0109");  // FORMAT ERROR IN G08
+  EXPECT_EQ(run("G08\nM30\n").alarm_code(), "PS0109");
   EXPECT_EQ(run("G05 P3\nM30\n").alarm_code(), "NC9001");
   EXPECT_EQ(run("G05\nM30\n").alarm_code(), "NC9001");
 }
