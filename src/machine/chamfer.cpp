@@ -124,7 +124,7 @@ void Interpreter::arm_corner(const AxisVector& target) {
         r.next_sign = v < 0 ? -1 : 1;
         const char wants = along_p ? pa.iq : pa.ip;  // I: chamfer toward X after a Z move; K toward Z after X
         if (square->letter != 'R' && square->letter != 'C' && square->letter != wants)
-          alarm("PS0056", fmt::format("{} gives a chamfer along {}, the axis this block moves on; after a move along "
+          alarm("PS0306", fmt::format("{} gives a chamfer along {}, the axis this block moves on; after a move along "
                                       "{} the chamfer is {}",
                                       square->letter, axis_name(moving), axis_name(moving), wants),
                 square->column);

@@ -26,8 +26,7 @@ void Interpreter::high_speed_mode(int g, std::uint16_t column) {
     case 80: {  // G08 P1/P0
       const int p = has('P') ? integer(word('P'), "P of G08") : -1;
       if (p != 0 && p != 1)
-        alarm("NC9002", "G08 needs P1 (look-ahead control on) or P0 (off); the manual names no alarm for it",
-              column);
+        alarm("PS0109", "format error in G08: G08 takes P1 (look-ahead control on) or P0 (off)", column);
       look_ahead_ = p == 1;
       return;
     }

@@ -430,11 +430,11 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column, st
   const nc::Program* p = entry >= 0 ? prog_ : library_.find(number);
   if (!p) {
     if (const ProgramLibrary::Unread* u = library_.unread(number))
-      alarm("PS0078", fmt::format("program O{:04} not found: it is in {} at line {}, after the '%' of line {} that "
+      alarm("PS0076", fmt::format("program O{:04} not found: it is in {} at line {}, after the '%' of line {} that "
                                   "ends the file, and the control reads nothing after that '%'",
                                   number, u->file->name(), u->where.line, u->where.end_line),
             column);
-    alarm("PS0078", fmt::format("program O{:04} not found (in this file or the --lib folders)", number), column);
+    alarm("PS0076", fmt::format("program O{:04} not found (in this file or the --lib folders)", number), column);
   }
   if (const nc::Diagnostic* twice = library_.duplicate(number)) alarm(twice->code, twice->message, column);
   if (p->file != library_.main()->file && std::ranges::find(reached_, p) == reached_.end()) {

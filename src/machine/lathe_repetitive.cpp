@@ -68,7 +68,7 @@ bool Interpreter::repetitive_cycle(int g) {
   for (const Cmd& c : cmds_)
     if (c.letter == 'G' && repetitive_code(static_cast<int>(std::lround(c.value * 10))) == g) column = c.column;
   const std::string code = written(g, profile_.gcode_system);
-  if (shape_moves_) alarm("PS0066", fmt::format("{} cannot be commanded inside a finishing shape", code), column);
+  if (shape_moves_) alarm("PS0325", fmt::format("{} cannot be commanded inside a finishing shape", code), column);
   if (g == 740 || g == 750) return peck_cycle(g);
   const bool p = has('P'), q = has('Q');
   if (!p && !q && g != 700 && !profile_.series10_format) {  // the first block of the two-block format
@@ -140,7 +140,7 @@ void Interpreter::check_shape_block(const nc::Block& b, bool first, int g) {
                                   "the cycle", v / 10, code),
             word.column);
     else if (!(v == 40 || v == 960 || v == 970 || mode))
-      alarm("PS0066", fmt::format("G{}{} cannot be commanded in the finishing shape of {}: only G00..G03, G04 and "
+      alarm("PS0325", fmt::format("G{}{} cannot be commanded in the finishing shape of {}: only G00..G03, G04 and "
                                   "the modes of feed and dimension", v / 10, v % 10 ? fmt::format(".{}", v % 10) : "",
                                   code),
             word.column);
@@ -150,7 +150,7 @@ void Interpreter::check_shape_block(const nc::Block& b, bool first, int g) {
     const nc::Word& word = prog_->words[w];
     const int m = static_cast<int>(std::lround(word.value));
     if (word.letter == 'M' && word.literal && (m == 98 || m == 99 || m == 2 || m == 30))
-      alarm("PS0066", fmt::format("M{} (a call, return or end) cannot be commanded in the finishing shape of {}", m,
+      alarm("PS0325", fmt::format("M{} (a call, return or end) cannot be commanded in the finishing shape of {}", m,
                                   code),
             word.column);
     if ((word.letter == 'C' && !has_axis_[5]) || (word.letter == 'R' && !arc_block))
@@ -197,13 +197,13 @@ std::vector<Move> Interpreter::walk_shape(const ShapeRange& r, int g, bool keep)
     if (prog_->blocks[at].kind == nc::Statement::nc) first = false;
     step();
     if (frames_.size() != depth)
-      alarm("PS0066", fmt::format("a macro or subprogram call cannot be commanded in the finishing shape of {}",
+      alarm("PS0325", fmt::format("a macro or subprogram call cannot be commanded in the finishing shape of {}",
                                   written(g, profile_.gcode_system)));
-    if (finished_) alarm("PS0066", "the program ended inside the finishing shape");
+    if (finished_) alarm("PS0325", "the program ended inside the finishing shape");
     if (at == r.last) break;
     const std::int32_t next = frames_.back().pc;
     if (next < r.first || next > r.last)
-      alarm("PS0066", fmt::format("a jump out of the finishing shape N{}..N{}", r.ns, r.nf));
+      alarm("PS0325", fmt::format("a jump out of the finishing shape N{}..N{}", r.ns, r.nf));
   }
   if (keep) {
     pos_ = pos, tool_shift_ = tool_shift;
@@ -312,7 +312,7 @@ bool Interpreter::pattern_repeating_cycle() {
     if (has('D')) mrc_divisions_ = word('D').value;
   }
   if (!(mrc_divisions_ >= 1) || mrc_divisions_ != std::floor(mrc_divisions_) || mrc_divisions_ > 99999)
-    alarm("PS0062", fmt::format("{}: the number of divisions d is {} (a whole number from 1; {} in the first block, "
+    alarm("PS0321", fmt::format("{}: the number of divisions d is {} (a whole number from 1; {} in the first block, "
                                 "or No.5137)", code, mrc_divisions_, profile_.series10_format ? 'D' : 'R'));
   const ShapeRange range = shape_range(730);
   const AxisVector start = pos_;
@@ -340,6 +340,10 @@ bool Interpreter::peck_cycle(int g) {
   const char di = one_block ? 'I' : 'P', dk = one_block ? 'K' : 'Q';
   auto amount = [&](char l) {
     if (!has(l)) return 0.0;
+    if (!one_block && word(l).value < 0)
+      alarm("PS0320", fmt::format("{}: {}{:g}: Δi (P) and Δk (Q), the travel and the depth of cut, take no minus sign",
+                                  code, l, word(l).value),
+            word(l).column);
     return one_block ? std::fabs(dimension(word(l))) : increments(word(l));
   };
   const double step_x = amount(di), step_z = amount(dk);  // Δi along X (radius), Δk along Z
@@ -351,13 +355,13 @@ bool Interpreter::peck_cycle(int g) {
   axis_target(end);
   const bool moves_x = std::fabs(end[0] - pos_[0]) > 1e-9, moves_z = std::fabs(end[2] - pos_[2]) > 1e-9;
   if (moves_x && !(step_x > 0))
-    alarm("PS0062", fmt::format("{}: X moves but Δi ({}) is 0: give the {} along X", code, di,
+    alarm("PS0319", fmt::format("{}: X moves but Δi ({}) is 0: give the {} along X", code, di,
                                 g == 740 ? "travel between cuts" : "depth of each cut"));
   if (moves_z && !(step_z > 0))
-    alarm("PS0062", fmt::format("{}: Z moves but Δk ({}) is 0: give the {} along Z", code, dk,
+    alarm("PS0319", fmt::format("{}: Z moves but Δk ({}) is 0: give the {} along Z", code, dk,
                                 g == 740 ? "depth of each cut" : "travel between cuts"));
   if ((g == 740 ? moves_x : moves_z) && relief < 0)
-    alarm("PS0062", fmt::format("{}: the relief Δd at the bottom is negative; its direction follows the travel", code));
+    alarm("PS0318", fmt::format("{}: the relief Δd at the bottom is negative; its direction follows the travel", code));
   mrc::Pecking k;
   k.start = p2(pos_), k.end = p2(end);
   k.back = mrc_return_;

@@ -697,11 +697,11 @@ void Interpreter::select_lathe_offset(int number, std::uint16_t column) {
 
 // G10 P_ X_ Z_ R_ Q_ on a lathe: P 1..64 wear, P 10001..10064 geometry; U, W, C add to X, Z, R.
 void Interpreter::lathe_offset_setting() {
-  if (!has('P')) alarm("PS0114", "G10 on a lathe needs P (offset number: 1..64 wear, 10001..10064 geometry)");
+  if (!has('P')) alarm("PS0031", "G10 on a lathe needs P (offset number: 1..64 wear, 10001..10064 geometry)");
   int p = integer(word('P'), "P of G10");
   bool geometry = p > 10000;
   int n = geometry ? p - 10000 : p;
-  if (n < 1 || n > 64) alarm("PS0030", fmt::format("offset number {} out of range", p), word('P').column);
+  if (n < 1 || n > 64) alarm("PS0031", fmt::format("G10 P{}: offset number out of range", p), word('P').column);
   LatheOffset& o = lathe_offsets_[n];
   auto set = [&](char absolute, char increment, double& geo, double& wear) {
     double& field = geometry ? geo : wear;
@@ -721,10 +721,10 @@ void Interpreter::data_setting() {
     int p = has('P') ? integer(word('P'), "P of G10") : 0;
     AxisVector* set = nullptr;
     if (l == 2) {
-      if (p < 0 || p > 6) alarm("PS0114", "G10 L2 P must be 0 (external) or 1..6 (G54..G59)", word('P').column);
+      if (p < 0 || p > 6) alarm("PS0031", "G10 L2 P must be 0 (external) or 1..6 (G54..G59)", word('P').column);
       set = &work_offsets_[p];
     } else {
-      if (p < 1 || p > 300) alarm("PS0114", "G10 L20 P must be 1..300", word('P').column);
+      if (p < 1 || p > 300) alarm("PS0031", "G10 L20 P must be 1..300", word('P').column);
       set = &extended_offsets_[p];
     }
     for (const Cmd& c : cmds_) {
@@ -737,9 +737,9 @@ void Interpreter::data_setting() {
     return;
   }
   if (l == 1 || l == 10 || l == 11 || l == 12 || l == 13) {
-    if (!has('P') || !has('R')) alarm("PS0114", "G10 L10..L13 needs P (offset number) and R (value)");
+    if (!has('P') || !has('R')) alarm("PS0031", "G10 L10..L13 needs P (offset number) and R (value)");
     int p = integer(word('P'), "P of G10");
-    if (p < 1 || p > 999) alarm("PS0030", "offset number out of range", word('P').column);
+    if (p < 1 || p > 999) alarm("PS0031", fmt::format("G10 P{}: offset number out of range (1..999)", p), word('P').column);
     double v = dimension(word('R'));
     MillOffset& o = tool_offsets_[p];
     const bool wear = l == 11 || l == 13;

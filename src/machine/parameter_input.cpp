@@ -38,7 +38,7 @@ bool read_at_start(int n) { return n == 5003 || n == 5008; }
 void Interpreter::start_parameter_input() {
   for (const Cmd& c : cmds_)
     if (c.letter != 'G' && c.letter != 'L')
-      alarm("PS0114", fmt::format("G10 L52 (programmable parameter input) takes no other words: {} here", c.letter),
+      alarm("PS0231", fmt::format("G10 L52 (programmable parameter input) takes no other words: {} here", c.letter),
             c.column);
   parameter_input_ = true;
 }
@@ -61,40 +61,40 @@ void Interpreter::parameter_input_block(const nc::Block& b) {
   for (const Cmd& c : words) {
     const Cmd** slot = c.letter == 'G' ? &g : c.letter == 'P' ? &p : c.letter == 'R' ? &r : nullptr;
     if (!slot)
-      alarm("PS0114", fmt::format("address {} in programmable parameter input mode: between G10 L52 and G11 a "
+      alarm("PS0231", fmt::format("address {} in programmable parameter input mode: between G10 L52 and G11 a "
                                   "block is N_ R_ or N_ P_ R_ (or G11)", c.letter == 'c' || c.letter == 'r' || c.letter == 'a' ? ',' : c.letter),
             c.column);
-    if (*slot) alarm("PS0114", fmt::format("address {} twice in a parameter input block", c.letter), c.column);
+    if (*slot) alarm("PS0231", fmt::format("address {} twice in a parameter input block", c.letter), c.column);
     *slot = &c;
   }
   if (g) {
     if (std::lround(g->value * 10) != 110)
-      alarm("PS0114", fmt::format("G{} in programmable parameter input mode: only G11 (end of the mode) may be given "
+      alarm("PS0231", fmt::format("G{} in programmable parameter input mode: only G11 (end of the mode) may be given "
                                   "before it ends",
                                   g->value),
             g->column);
-    if (p || r) alarm("PS0114", "G11 ends programmable parameter input: give it in a block of its own", g->column);
+    if (p || r) alarm("PS0231", "G11 ends programmable parameter input: give it in a block of its own", g->column);
     parameter_input_ = false;
     return;
   }
-  if (b.sequence < 0) alarm("PS0114", "a parameter input block needs N (the parameter number): N_ R_", b.column);
-  if (!r) alarm("PS0114", fmt::format("N{}: a parameter input block needs R (the value): N_ R_", b.sequence), b.column);
+  if (b.sequence < 0) alarm("PS0231", "a parameter input block needs N (the parameter number): N_ R_", b.column);
+  if (!r) alarm("PS0231", fmt::format("N{}: a parameter input block needs R (the value): N_ R_", b.sequence), b.column);
   const int n = b.sequence;
   const bool axis = is_axis_parameter(fmt::format("{}", n)) || is_axis_parameter(fmt::format("{}#0", n));
   std::string suffix;
   if (axis) {
-    if (!p) alarm("PS0114", fmt::format("parameter No.{} is set per axis: give P (the axis number, 1..{})", n,
+    if (!p) alarm("PS0231", fmt::format("parameter No.{} is set per axis: give P (the axis number, 1..{})", n,
                                         profile_.axes.size()), r->column);
     const int a = integer(*p, "P (axis number)");
     if (a < 1 || a > static_cast<int>(profile_.axes.size()))
-      alarm("PS0114", fmt::format("P{}: the axis number is 1..{} (axes {})", a, profile_.axes.size(), profile_.axes),
+      alarm("PS0231", fmt::format("P{}: the axis number is 1..{} (axes {})", a, profile_.axes.size(), profile_.axes),
             p->column);
     suffix = fmt::format(".{}", profile_.axes[a - 1]);
   }
   bool bits = n == 1006 || n == 1008;
   for (int bit = 0; bit < 8 && !bits; ++bit) bits = modelled(profile_, fmt::format("{}#{}", n, bit));
   if (!axis && (bits || modelled(profile_, fmt::format("{}", n))) && p)
-    alarm("PS0114", fmt::format("parameter No.{} is not an axis parameter: no P", n), p->column);
+    alarm("PS0231", fmt::format("parameter No.{} is not an axis parameter: no P", n), p->column);
   if (!bits) {
     const std::string key = fmt::format("{}{}", n, suffix);
     if (!modelled(profile_, key)) {
@@ -110,7 +110,7 @@ void Interpreter::parameter_input_block(const nc::Block& b) {
   // bit type: R holds up to eight binary digits, bit 7 first
   const double v = r->value;
   if ((r->literal && r->decimal_point) || v < 0 || v != std::floor(v) || v > 11111111)
-    alarm("PS0114", fmt::format("N{} is a bit parameter: R is its bits as binary digits, bit 7 first (R00000100 "
+    alarm("PS0231", fmt::format("N{} is a bit parameter: R is its bits as binary digits, bit 7 first (R00000100 "
                                 "sets bit 2), not {}",
                                 n, v),
           r->column);
@@ -119,7 +119,7 @@ void Interpreter::parameter_input_block(const nc::Block& b) {
   for (int bit = 0; bit < 8; ++bit, digits /= 10) {
     const long d = digits % 10;
     if (d > 1)
-      alarm("PS0114", fmt::format("N{} R{}: a bit parameter's R has only the digits 0 and 1", n, static_cast<long>(v)),
+      alarm("PS0231", fmt::format("N{} R{}: a bit parameter's R has only the digits 0 and 1", n, static_cast<long>(v)),
             r->column);
     const std::string key = fmt::format("{}#{}{}", n, bit, suffix);
     if (modelled(profile_, key)) changes.emplace_back(key, static_cast<double>(d));
@@ -141,7 +141,7 @@ void Interpreter::set_parameters_by_program(int n, const std::vector<std::pair<s
     try {
       set_parameter(changed, key, value);
     } catch (const std::runtime_error& e) {
-      alarm("PS0114", fmt::format("G10 L52: {}", e.what()), column);
+      alarm("PS0231", fmt::format("G10 L52: {}", e.what()), column);
     }
   }
   if (needs_power_off(n)) {

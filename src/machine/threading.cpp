@@ -111,7 +111,7 @@ void Interpreter::multiple_threading_cycle() {
         alarm("PS0062", fmt::format("P{} of G76 is not six digits m r a (finishing passes, chamfer in 0.1 leads, "
                                     "tool angle)", v), p.column);
       if (!valid_tool_angle(v % 100))
-        alarm("PS0062", fmt::format("tool nose angle a = {} in G76 P{:06}: it must be 80, 60, 55, 30, 29 or 0",
+        alarm("PS0315", fmt::format("tool nose angle a = {} in G76 P{:06}: it must be 80, 60, 55, 30, 29 or 0",
                                     v % 100, v), p.column);
       g76_finish_count_ = v / 10000;
       thread_chamfer_ = v / 100 % 100;
@@ -138,7 +138,7 @@ void Interpreter::multiple_threading_cycle() {
     if (has('A')) {
       const int a = integer(word('A'), "A of G76 (tool nose angle)");
       if (!valid_tool_angle(a))
-        alarm("PS0062", fmt::format("tool nose angle A{} in G76: it must be 80, 60, 55, 30, 29 or 0", a),
+        alarm("PS0315", fmt::format("tool nose angle A{} in G76: it must be 80, 60, 55, 30, 29 or 0", a),
               word('A').column);
       g76_tool_angle_ = a;
     }
@@ -150,10 +150,10 @@ void Interpreter::multiple_threading_cycle() {
   const char* k_word = fcv ? "K" : "P";
   const char* d_word = fcv ? "D" : "Q";
   if (height <= 0 || first <= 0)
-    alarm("PS0062", fmt::format("G76 needs a thread height {}(k) and a depth of the first cut {}(dd) above zero "
+    alarm("PS0317", fmt::format("G76 needs a thread height {}(k) and a depth of the first cut {}(dd) above zero "
                                 "(k = {:g} mm, dd = {:g} mm)", k_word, d_word, height, first));
   if (g76_min_depth_ > height)
-    alarm("PS0062", fmt::format("the minimum depth of cut of G76 ({:g} mm: Q of the first block or No.5140) is "
+    alarm("PS0316", fmt::format("the minimum depth of cut of G76 ({:g} mm: Q of the first block or No.5140) is "
                                 "greater than the thread height {}(k) ({:g} mm)", g76_min_depth_, k_word, height));
   g76_passes(end, taper, height, first, angle);
 }

@@ -26,13 +26,13 @@ const nc::Diagnostic* warning_of(const machine::RunResult& r, const std::string&
 TEST(Accept, CalledProgramAfterTheClosingPercent) {
   // line 4 is the closing '%'; O2 on line 5 is never read, so M98 P2 finds no program
   auto r = run("O1\nM98 P2\nM30\n%\nO2\nM99\n");
-  ASSERT_EQ(r.alarm_code(), "PS0078");
+  ASSERT_EQ(r.alarm_code(), "PS0076");
   EXPECT_EQ(r.alarm_line(), 2u);
   const std::string& m = r.result.alarm->message;
   EXPECT_NE(m.find("test.nc at line 5, after the '%' of line 4"), std::string::npos) << m;
   // the same in a library file, and the ISO form of the number
   auto l = run("G65 P9001\nM30\n", machine::default_mill(), {}, {{"lib.nc", "%\n:9000\nM99\n%\n:9001\nM99\n"}});
-  ASSERT_EQ(l.alarm_code(), "PS0078");
+  ASSERT_EQ(l.alarm_code(), "PS0076");
   EXPECT_NE(l.result.alarm->message.find("lib.nc at line 5, after the '%' of line 4"), std::string::npos);
   // a program before the '%' runs; one nowhere gets the usual message
   auto ok = run("M98 P9000\nM30\n", machine::default_mill(), {}, {{"lib.nc", "%\n:9000\nM99\n%\n"}});
@@ -166,7 +166,8 @@ TEST(Accept, OtherHighSpeedFormsAlarm) {
   EXPECT_EQ(run("G05.1 Q2 X0 Y0 Z0\nM30\n").alarm_code(), "NC9001");  // smooth interpolation changes the path
   EXPECT_EQ(run("G05.1 Q3\nM30\n").alarm_code(), "NC9001");           // nano smoothing
   EXPECT_EQ(run("G05.1\nM30\n").alarm_code(), "NC9002");
-  EXPECT_EQ(run("G08 P2\nM30\n").alarm_code(), "NC9002");
+  EXPECT_EQ(run("G08 P2\nM30\n").alarm_code(), "PS0109");  // FORMAT ERROR IN G08
+  EXPECT_EQ(run("G08\nM30\n").alarm_code(), "PS0109");
   EXPECT_EQ(run("G05 P3\nM30\n").alarm_code(), "NC9001");
   EXPECT_EQ(run("G05\nM30\n").alarm_code(), "NC9001");
 }

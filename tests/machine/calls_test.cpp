@@ -72,9 +72,9 @@ TEST(Calls, M99WithSequenceNumber) {
   EXPECT_EQ(r.var(101), 1.0);
 }
 
-TEST(Calls, MissingProgramIsPS0078) {
+TEST(Calls, MissingProgramIsPS0076) {
   auto r = run("G65 P1234\n");
-  EXPECT_EQ(r.alarm_code(), "PS0078");
+  EXPECT_EQ(r.alarm_code(), "PS0076");
 }
 
 TEST(Calls, MacroNestingLimitByProfile) {

@@ -188,7 +188,7 @@ TEST(Chamfering, LatheTaperWithCcrIsOptionalAngle) {
 }
 
 TEST(Chamfering, LatheAlarms) {
-  EXPECT_EQ(test::run("G00 X20. Z2.\nG01 Z-10. K1. F0.2\nX30.\nM30\n", lathe()).alarm_code(), "PS0056");
+  EXPECT_EQ(test::run("G00 X20. Z2.\nG01 Z-10. K1. F0.2\nX30.\nM30\n", lathe()).alarm_code(), "PS0306");
   EXPECT_EQ(test::run("G00 X20. Z0.\nG01 Z-1. R2. F0.2\nX30.\nM30\n", lathe()).alarm_code(), "PS0055");
   EXPECT_EQ(test::run("G00 X20. Z0.\nG01 Z-10. I1. R2. F0.2\nX30.\nM30\n", lathe()).alarm_code(), "PS0053");
   EXPECT_EQ(test::run("G00 X20. Z0.\nG01 Z-10. R2. F0.2\nG02 X30. Z-15. R5.\nM30\n", lathe()).alarm_code(), "PS0052");

@@ -156,9 +156,9 @@ TEST(LatheCycles, G76AlarmsOfTheManual) {
   auto decimal = run("G21 G99\nG00 X24. Z5.\nG76 P0110.60\nM30\n", lathe());
   EXPECT_EQ(decimal.alarm_code(), "PS0007");
   auto angle = run("G21 G99\nG00 X24. Z5.\nG76 P011050\nM30\n", lathe());
-  EXPECT_EQ(angle.alarm_code(), "PS0062");
+  EXPECT_EQ(angle.alarm_code(), "PS0315");
   auto depth = run("G21 G99\nG00 X24. Z5.\nG76 X18.16 Z-20. P920 Q-10 F1.5\nM30\n", lathe());
-  EXPECT_EQ(depth.alarm_code(), "PS0062");
+  EXPECT_EQ(depth.alarm_code(), "PS0317");
   auto lead = run("G21 G99\nG00 X24. Z5.\nG76 X18.16 Z-20. P920 Q350\nM30\n", lathe());
   EXPECT_EQ(lead.alarm_code(), "PS0011");
 }

@@ -177,7 +177,7 @@ TEST(ParameterInput, BadBlocksAlarm) {
                            "G10 L52\nN11 R1 G11\n", "G10 L52 X1\n", "G10 L52\nN3401 R1.\n"}) {
     SCOPED_TRACE(text);
     auto r = run(std::string(text) + "G11\nM30\n");
-    EXPECT_EQ(r.alarm_code(), "PS0114");
+    EXPECT_EQ(r.alarm_code(), "PS0231");
   }
   auto r = run("G10 L50\nN3401 R1\nG11\nM30\n");
   EXPECT_EQ(r.alarm_code(), "NC9001");

@@ -405,7 +405,7 @@ TEST(Motion, LatheToolOffsetsShiftTheMachinePosition) {
   EXPECT_DOUBLE_EQ(r.var(121), 2.0);
   EXPECT_DOUBLE_EQ(r.var(122), 0.0);
   EXPECT_EQ(run("T0165\n", p).alarm_code(), "PS0030");
-  EXPECT_EQ(run("G10 P65 X1.\n", p).alarm_code(), "PS0030");
+  EXPECT_EQ(run("G10 P65 X1.\n", p).alarm_code(), "PS0031");
   EXPECT_THROW(machine::parse_profile("[machine]\ntype = \"lathe\"\n[tool_offsets]\n\"1\" = 2.0\n", "l.toml"),
                std::runtime_error);
   EXPECT_THROW(machine::parse_profile("[machine]\ntype = \"lathe\"\n[tool_offsets]\n\"1\" = { y = 2.0 }\n", "l.toml"),
