@@ -226,6 +226,10 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   r = c.Get("/assets/wb-answer.js");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
+  r = c.Get("/assets/backplot-axes.js");  // the backplot's axes, a file of their own
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("NcurveBackplotAxes"), std::string::npos);
   r = c.Get("/assets/run.html");  // not one of the workbench's
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 404);
