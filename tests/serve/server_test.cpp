@@ -351,6 +351,18 @@ TEST_F(ServerTest, GenTakesAProfilesText) {
   EXPECT_FALSE(j["error"].get<std::string>().empty());
 }
 
+// The profile's rotary axes named for the page (their ends are degrees), the ends in the moves' columns.
+TEST_F(ServerTest, RunNamesTheRotaryAxes) {
+  std::ifstream f(std::string(NCURVE_SOURCE_DIR) + "/profiles/fanuc-4axis-helicoid.toml");
+  std::stringstream toml;
+  toml << f.rdbuf();
+  json j = post("/api/run", json{{"program", "G00 A90.\nM30\n"}, {"machine", toml.str()}}.dump(), 200);
+  EXPECT_EQ(j["profile"]["rotary"], "A");
+  EXPECT_EQ(j["moves"]["a"][0], 90.0);
+  j = post("/api/run", json{{"program", "G00 X1.\nM30\n"}, {"moves", false}}.dump(), 200);
+  EXPECT_EQ(j["profile"]["rotary"], "");  // the factory mill: X Y Z
+}
+
 // "format": "binary": the same answer with each array as little-endian bytes after the JSON.
 TEST_F(ServerTest, BinaryAnswerHoldsTheArrays) {
   auto c = client();
