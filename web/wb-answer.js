@@ -38,7 +38,8 @@
     return j;
   }
   // the answer's moves as the backplot takes them (docs/html.md): motions only; a lathe's X halved
-  // to a radius on a profile p programmed in diameter
+  // to a radius on a profile p programmed in diameter; the A, B, C axes the motions move away from 0
+  // (not drawn) as `rotary`, with their range, and each motion's end of them in `rotaryEnd`
   function movesForPlot(m, p) {
     const K = m.kinds, R = K.indexOf('rapid'), LN = K.indexOf('line'), A = K.indexOf('arc'), DW = K.indexOf('dwell');
     const N = m.count, xs = p.diameter ? 0.5 : 1;
@@ -50,11 +51,22 @@
       lathe: !!p.lathe, diameter: !!p.diameter, inch: false, plane: p.lathe ? 18 : 17, alarmAt: null, last: [0, 0, 0]};
     let px = 0, py = 0, pz = 0, s = 0, a = 0, j = 0;
     const S = m.starts, AR = m.arcs;
+    // per axis of the answer's a, b, c: its column, its start and end per motion, its range
+    const other = ['a', 'b', 'c'].filter((k) => m[k]).map((k) => ({axis: k.toUpperCase(), col: m[k], starts: S[k],
+      end: new Float64Array(n), at: 0, min: Infinity, max: -Infinity}));
     for (let i = 0; i < N; i++) {
       c.before[i] = j;
-      if (s < S.index.length && S.index[s] === i) px = S.x[s] * xs, py = S.y[s], pz = S.z[s], s++;
+      if (s < S.index.length && S.index[s] === i) {
+        px = S.x[s] * xs, py = S.y[s], pz = S.z[s];
+        for (const o of other) if (o.starts) o.at = o.starts[s];
+        s++;
+      }
       const k = m.kind[i], ex = m.x[i] * xs, ey = m.y[i], ez = m.z[i];
       if (k === R || k === LN || k === A) {
+        for (const o of other) {
+          const e = o.end[j] = o.col[i];
+          o.min = Math.min(o.min, o.at, e), o.max = Math.max(o.max, o.at, e);
+        }
         c.kind[j] = k === R ? 0 : k === LN ? 1 : 2;
         c.start[3 * j] = px, c.start[3 * j + 1] = py, c.start[3 * j + 2] = pz;
         c.end[3 * j] = ex, c.end[3 * j + 1] = ey, c.end[3 * j + 2] = ez;
@@ -69,10 +81,18 @@
         c.line[j] = m.line[i], c.file[j] = m.file[i], c.feed[j] = m.f[i], c.moveOf[j] = i;
         j++;
       }
-      if (k === R || k === LN || k === A || k === DW) px = ex, py = ey, pz = ez;
+      if (k === R || k === LN || k === A || k === DW) {
+        px = ex, py = ey, pz = ez;
+        for (const o of other) o.at = o.col[i];
+      }
     }
     c.before[N] = j;
     c.last = [px, py, pz];
+    // as `run --html`'s data: degrees for a rotary axis of the profile (No.1006#0), else mm
+    const moved = other.filter((o) => o.min <= o.max && !(o.min === 0 && o.max === 0));
+    c.rotary = moved.map((o) => ({axis: o.axis, unit: (p.rotary || '').includes(o.axis) ? 'deg' : 'mm', min: o.min, max: o.max}));
+    c.rotaryEnd = new Float64Array(moved.length * n);
+    moved.forEach((o, r) => c.rotaryEnd.set(o.end, r * n));
     return c;
   }
 

@@ -210,11 +210,13 @@
     tip.style.left = Math.max(4, Math.min(x, W - w - 4)) + 'px';
     tip.style.top = Math.max(4, Math.min(y, H - h - 4)) + 'px';
   }
-  // a move's end as the program writes it: a lathe's X and Z (X a diameter where programmed so)
+  // a move's end as the program writes it: a lathe's X and Z (X a diameter where programmed so),
+  // then the A, B, C axes the run moved (not drawn), as `run --html` gives them
   function endText(i) {
     const e = [conv.end[3 * i], conv.end[3 * i + 1], conv.end[3 * i + 2]];
-    if (conv.lathe) return `X${fmt(conv.diameter ? 2 * e[0] : e[0])} Z${fmt(e[2])}`;
-    return `X${fmt(e[0])} Y${fmt(e[1])} Z${fmt(e[2])}`;
+    let text = conv.lathe ? `X${fmt(conv.diameter ? 2 * e[0] : e[0])} Z${fmt(e[2])}` : `X${fmt(e[0])} Y${fmt(e[1])} Z${fmt(e[2])}`;
+    conv.rotary.forEach((r, k) => { text += ` ${r.axis}${fmt(conv.rotaryEnd[k * conv.count + i])}`; });
+    return text;
   }
   function onClick(i) {
     W.clicked = i;
@@ -263,9 +265,15 @@
     fact('time', `${fmt(s.time_at_programmed_feed_s, 1)} s at programmed feed (the Cycle time tab: with acceleration)`);
     if (s.extent) {
       const ax = Object.keys(s.extent).sort((a, b) => 'XYZABC'.indexOf(a) - 'XYZABC'.indexOf(b));
-      // X a diameter where the profile the program ran on programs it so, marked as `ncurve run` marks it
-      const dia = answer.profile && answer.profile.diameter;
-      fact('extents', ax.map((a) => `${a}${a === 'X' && dia ? '(dia)' : ''} ${fmt(s.extent[a][0])} … ${fmt(s.extent[a][1])}`).join('   '));
+      // X a diameter where the profile the program ran on programs it so, marked as `ncurve run` marks it;
+      // a rotary axis in degrees
+      const dia = answer.profile && answer.profile.diameter, deg = (answer.profile && answer.profile.rotary) || '';
+      fact('extents', ax.map((a) => `${a}${a === 'X' && dia ? '(dia)' : ''} ${fmt(s.extent[a][0])} … ${fmt(s.extent[a][1])}${deg.includes(a) ? '°' : ''}`).join('   '));
+    }
+    // the A, B, C axes the run moved: the drawing is of X, Y and Z
+    if (conv.rotary.length) {
+      const range = (r) => `${r.axis} ${fmt(r.min)} … ${fmt(r.max)}${r.unit === 'deg' ? '°' : ' mm'}`;
+      fact('axes not drawn', `${conv.rotary.map(range).join('   ')} (the view shows X, Y and Z; hover a move for its end)`);
     }
     fact('warnings', s.warnings.length ? s.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}`).join('\n') : 'none');
     if (!answer.moves.complete) fact('moves', answer.moves.message, 'alarm');

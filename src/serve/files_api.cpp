@@ -19,6 +19,15 @@ namespace fs = std::filesystem;
 
 namespace {
 std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace) + "\n"; }
+
+// the profile's rotary axes (No.1006#0), "A" ...: in degrees, where a linear A, B, C is in mm
+std::string rotary_axes(const machine::MachineProfile& profile) {
+  std::string out;
+  for (char a : std::string_view("ABC"))
+    if (profile.axes.find(a) != std::string::npos && profile.rotary[machine::axis_index(a)].rotary) out += a;
+  return out;
+}
+
 }  // namespace
 
 json profile_json(const machine::MachineProfile& profile) {
@@ -26,7 +35,8 @@ json profile_json(const machine::MachineProfile& profile) {
               {"lathe", profile.lathe()},
               {"diameter", profile.lathe() && profile.diameter_x},
               {"axes", profile.axes},
-              {"offset_memory", std::string(1, static_cast<char>('A' + static_cast<int>(profile.offset_memory)))}};
+              {"offset_memory", std::string(1, static_cast<char>('A' + static_cast<int>(profile.offset_memory)))},
+              {"rotary", rotary_axes(profile)}};
 }
 
 Answer api_profiles(const ServeConfig& config) {
@@ -91,7 +101,7 @@ Answer page() { return asset("workbench.html"); }
 Answer asset(const std::string& name) {
   // the workbench's files and what they need, compiled in (cmake/embed_files.cmake)
   static constexpr std::string_view kServed[] = {"workbench.html", "workbench.css", "workbench.js", "wb-editor.js",
-                                                 "wb-debug.js", "wb-colour.js", "wb-answer.js", "backplot-geometry.js", "backplot.js", "backplot.css", "three.min.js",
+                                                 "wb-debug.js", "wb-colour.js", "wb-answer.js", "backplot-geometry.js", "backplot-axes.js", "backplot.js", "backplot.css", "three.min.js",
                                                  "OrbitControls.js", "example.nc", "example-lathe.nc"};
   for (std::string_view served : kServed) {
     if (served != name) continue;

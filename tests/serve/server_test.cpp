@@ -226,6 +226,10 @@ TEST_F(ServerTest, FilesProfilesAndPage) {
   r = c.Get("/assets/wb-answer.js");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
+  r = c.Get("/assets/backplot-axes.js");  // the backplot's axes, a file of their own
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("NcurveBackplotAxes"), std::string::npos);
   r = c.Get("/assets/run.html");  // not one of the workbench's
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 404);
@@ -345,6 +349,18 @@ TEST_F(ServerTest, GenTakesAProfilesText) {
   EXPECT_EQ(j["profile"]["title"], "FANUC 0i-TF 2-axis lathe");
   j = post("/api/gen", json{{"curve", "ellipse"}, {"machine", "name = \"x\"\nkind = \"drill\"\n"}}.dump(), 400);
   EXPECT_FALSE(j["error"].get<std::string>().empty());
+}
+
+// The profile's rotary axes named for the page (their ends are degrees), the ends in the moves' columns.
+TEST_F(ServerTest, RunNamesTheRotaryAxes) {
+  std::ifstream f(std::string(NCURVE_SOURCE_DIR) + "/profiles/fanuc-4axis-helicoid.toml");
+  std::stringstream toml;
+  toml << f.rdbuf();
+  json j = post("/api/run", json{{"program", "G00 A90.\nM30\n"}, {"machine", toml.str()}}.dump(), 200);
+  EXPECT_EQ(j["profile"]["rotary"], "A");
+  EXPECT_EQ(j["moves"]["a"][0], 90.0);
+  j = post("/api/run", json{{"program", "G00 X1.\nM30\n"}, {"moves", false}}.dump(), 200);
+  EXPECT_EQ(j["profile"]["rotary"], "");  // the factory mill: X Y Z
 }
 
 // "format": "binary": the same answer with each array as little-endian bytes after the JSON.

@@ -1,0 +1,90 @@
+// The workbench of `ncurve serve` on a 4-axis mill: the A axis, which the 3D view does not draw.
+//   node workbench-rotary.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
+// Serves examples/4-axis.nc on profiles/fanuc-4axis-helicoid.toml and checks, against values
+// worked out from the program's text: the Summary naming A as not drawn with its range, a hovered
+// move's end with its A; a program that leaves A at 0 shows neither. Screenshot
+// workbench-rotary.png in OUT_DIR. Exit 77 without Chromium.
+'use strict';
+const {spawn} = require('child_process');
+const fs = require('fs');
+const path = require('path');
+const {browser, checker, launch} = require('./harness.cjs');
+
+const [ncurve, src, out, modules] = process.argv.slice(2);
+const {chromium, driver} = browser(modules, out);
+const {check, counts} = checker();
+
+const file = path.join(src, 'examples/4-axis.nc');
+const machine = path.join(src, 'profiles/fanuc-4axis-helicoid.toml');
+// the program: G00 Y0. A0., G00 X0. Z25., G01 Z19. (#104-#105 = 20 - 1), then a loop of
+// `G01 X[10*SIN[2*#1]] A#1` for #1 = 2, 4 ... 360: A from 0 to 360 degrees; its 45th turn is
+// #1 = 90, X = 10 SIN[180] = 0, the program's 3 + 45 = 48th move
+const lines = fs.readFileSync(file, 'utf8').split('\n');
+const loopLine = lines.findIndex((l) => l.startsWith('G01 X[#101*SIN[#102*#1]] A#1')) + 1;
+
+(async () => {
+  const server = spawn(ncurve, ['serve', '--port', '0', '--machine', machine, file], {stdio: ['ignore', 'pipe', 'pipe']});
+  const port = await new Promise((resolve, reject) => {
+    let text = '';
+    server.stdout.on('data', (d) => {
+      text += d;
+      const m = /127\.0\.0\.1:(\d+)/.exec(text);
+      if (m) resolve(+m[1]);
+    });
+    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
+    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
+  });
+  const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
+  try {
+    const page = await context.newPage();
+    page.setDefaultTimeout(60000);
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    await page.goto(`http://127.0.0.1:${port}/`);
+    await page.waitForFunction(() => window.ncurveWorkbench && ncurveWorkbench.runs >= 1 && ncurveWorkbench.settled());
+    const fact = (name) => page.evaluate((name) => {
+      const dt = [...document.querySelectorAll('#summary dt')].find((d) => d.textContent === name);
+      return dt ? dt.nextElementSibling.textContent : null;
+    }, name);
+    check(loopLine > 0, `the loop's G01 on line ${loopLine}`);
+    check(await page.evaluate(() => ncurveWorkbench.summary.ok), 'the program completed');
+
+    // the Summary: A not drawn, 0 to 360 degrees; the extents give A in degrees too
+    const notDrawn = await fact('axes not drawn');
+    check(notDrawn !== null && notDrawn.startsWith('A 0 … 360°'), `the Summary names A as not drawn, 0 … 360°: "${notDrawn}"`);
+    const extents = await fact('extents');
+    check(/(^| )A 0 … 360°/.test(extents || ''), `the extents give A in degrees: "${extents}"`);
+
+    // the move to A90: the 45th move of the loop's line
+    const i = await page.evaluate((line) => {
+      const m = ncurveWorkbench.plot.moves;
+      for (let j = 0, seen = 0; j < m.count; j++) if (m.line[j] === line && ++seen === 45) return j;
+      return -1;
+    }, loopLine);
+    check(i >= 0, 'the 45th move of the loop');
+    await page.evaluate((i) => ncurveWorkbench.plot.hover(i), i);
+    const tip = await page.evaluate(() => document.getElementById('hover').textContent);
+    check(tip.includes(`line ${loopLine}`) && tip.includes('move 48 ') && / to X0 Y0 Z19 A90$/.test(tip),
+          `the hover text gives the move's end with its A: "${tip}"`);
+    await page.screenshot({path: path.join(out, 'workbench-rotary.png')});
+    await page.evaluate(() => ncurveWorkbench.plot.hover(-1));
+
+    // a program that leaves A at 0: nothing said of it
+    const before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', 'G00 X10. Y5. Z2.\nG01 Z-1. F100.\nM30\n');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    await page.evaluate(() => ncurveWorkbench.plot.hover(1));
+    const flat = await page.evaluate(() => document.getElementById('hover').textContent);
+    check(await fact('axes not drawn') === null && / to X10 Y5 Z-1$/.test(flat),
+          `A left at 0: not named in the Summary, not in the hover text ("${flat}")`);
+    check(errors.length === 0, `no script errors (${errors.join('; ')})`);
+  } catch (e) {
+    check(false, String(e && e.stack || e));
+  } finally {
+    await close();
+    server.kill();
+  }
+  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
+  process.exit(counts.failed ? 1 : 0);
+})();
