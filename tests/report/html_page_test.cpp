@@ -45,7 +45,7 @@ template <class T>
 std::vector<T> array(const nlohmann::json& j, const char* key) {
   const auto bytes = unbase64(j.at(key).get<std::string>());
   std::vector<T> out(bytes.size() / sizeof(T));
-  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+  if (!out.empty()) std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
   return out;
 }
 
