@@ -18,6 +18,8 @@ json parse_body(const std::string& body) {
     j = json::parse(body);
   } catch (const json::parse_error& e) {
     throw ApiError(400, fmt::format("the request body is not JSON: {}", e.what()));
+  } catch (const json::out_of_range& e) {  // a number past the range of a double: 1e400
+    throw ApiError(400, fmt::format("the request body holds a number too large: {}", e.what()));
   }
   if (!j.is_object()) throw ApiError(400, "the request body must be a JSON object ({\"program\": ...})");
   return j;

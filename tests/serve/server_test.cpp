@@ -87,6 +87,15 @@ TEST_F(ServerTest, BadJsonIsAClearError) {
   still_serving();
 }
 
+// A number beyond a double's range is refused as bad input, not an internal error
+TEST_F(ServerTest, NumberTooLargeIsAClearError) {
+  for (const char* path : {"/api/run", "/api/analyze", "/api/gen"}) {
+    json j = post(path, R"({"program": 444e440, "curve": 1e999})", 400);
+    EXPECT_NE(j["error"].get<std::string>().find("number too large"), std::string::npos) << j.dump();
+  }
+  still_serving();
+}
+
 TEST_F(ServerTest, UnknownProfileIsAClearError) {
   json j = post("/api/run", R"({"program": "M30\n", "machine": "fanuc-mil"})", 400);
   EXPECT_NE(j["error"].get<std::string>().find("unknown profile \"fanuc-mil\""), std::string::npos) << j;
