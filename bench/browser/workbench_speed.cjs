@@ -3,10 +3,9 @@
 //   node bench/browser/workbench_speed.cjs NCURVE PROGRAM NODE_MODULES [RUNS] [--trace]
 // NODE_MODULES: the browser tests' (build/tests/browser-modules/node_modules).
 'use strict';
-const {spawn} = require('child_process');
 const path = require('path');
 const os = require('os');
-const {browser, launch} = require('../../tests/browser/harness.cjs');
+const {browser, launch, serve} = require('../../tests/browser/harness.cjs');
 
 const args = process.argv.slice(2).filter((a) => !a.startsWith('--'));
 const withTrace = process.argv.includes('--trace');
@@ -15,16 +14,7 @@ const runs = +(args[3] || 3);
 const {chromium, driver} = browser(modules, path.join(os.tmpdir(), 'ncurve-bench-browser'));
 
 (async () => {
-  const server = spawn(ncurve, ['serve', '--port', '0', program], {stdio: ['ignore', 'pipe', 'inherit']});
-  const port = await new Promise((resolve, reject) => {
-    let text = '';
-    server.stdout.on('data', (d) => {
-      text += d;
-      const m = /127\.0\.0\.1:(\d+)/.exec(text);
-      if (m) resolve(+m[1]);
-    });
-    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
-  });
+  const {server, port} = await serve(ncurve, [program], 'inherit');
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
     const page = await context.newPage();

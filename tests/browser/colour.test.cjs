@@ -8,10 +8,9 @@
 // Screenshots workbench-feed.png and workbench-gen-deviation.png in OUT_DIR. Exit 77 (skipped)
 // where no Chromium is installed.
 'use strict';
-const {spawn} = require('child_process');
 const fs = require('fs');
 const path = require('path');
-const {browser, checker, launch} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -24,24 +23,10 @@ fs.writeFileSync(zigzag, ['%', 'O0001', 'G90 G17 G21', 'G00 X0. Y0. Z5.', 'G01 Z
   ...[0.5, 1, 2, 4, 8, 16, 32].map((L, k) => `X${(k % 2 ? -L : L).toFixed(1)} Y1.`), 'G90 G00 Z5.', 'M30', '%', ''].join('\n'));
 
 (async () => {
-  const server = spawn(ncurve, ['serve', '--port', '0', path.join(src, 'examples/spiral.nc'), zigzag], {stdio: ['ignore', 'pipe', 'pipe']});
-  const port = await new Promise((resolve, reject) => {
-    let text = '';
-    server.stdout.on('data', (d) => {
-      text += d;
-      const m = /127\.0\.0\.1:(\d+)/.exec(text);
-      if (m) resolve(+m[1]);
-    });
-    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
-    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
-  });
+  const {server, port} = await serve(ncurve, [path.join(src, 'examples/spiral.nc'), zigzag]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
-    const page = await context.newPage();
-    page.setDefaultTimeout(60000);
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(String(e)));
-    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    const {page, errors} = await newPage(context);
     await page.goto(`http://127.0.0.1:${port}/`);
     await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1);
     const colour = () => page.evaluate(() => ncurveWorkbench.colour);

@@ -1,9 +1,11 @@
 // What the browser tests share: Debian's Chromium (or exit 77, skipped, where there is none),
-// playwright-core from the build folder, a check that counts, and a headless launch.
+// playwright-core from the build folder, a check that counts, a headless launch, `ncurve serve` on a
+// free port and a page that collects its script errors.
 'use strict';
 const fs = require('fs');
 const os = require('os');
 const path = require('path');
+const {spawn} = require('child_process');
 
 // Chromium and the playwright driver; exits 77 when no Chromium is installed.
 function browser(modules, out) {
@@ -43,4 +45,30 @@ async function launch(driver, chromium, viewport) {
   }};
 }
 
-module.exports = {browser, checker, launch};
+// `ncurve serve --port 0 ARGS...`: the server and the port it says it listens on
+async function serve(ncurve, args, stderr = 'pipe') {
+  const server = spawn(ncurve, ['serve', '--port', '0', ...args], {stdio: ['ignore', 'pipe', stderr]});
+  const port = await new Promise((resolve, reject) => {
+    let text = '';
+    server.stdout.on('data', (d) => {
+      text += d;
+      const m = /127\.0\.0\.1:(\d+)/.exec(text);
+      if (m) resolve(+m[1]);
+    });
+    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
+    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
+  });
+  return {server, port};
+}
+
+// A new page of the context whose script errors and console errors go into `errors`
+async function newPage(context, timeout = 60000) {
+  const page = await context.newPage();
+  page.setDefaultTimeout(timeout);
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  return {page, errors};
+}
+
+module.exports = {browser, checker, launch, serve, newPage};

@@ -10,9 +10,9 @@
 // server's 400 in the status line. Screenshots workbench-gen-expr.png, workbench-machine-file.png
 // in OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
-const {spawn, execFileSync} = require('child_process');
+const {execFileSync} = require('child_process');
 const path = require('path');
-const {browser, checker, launch} = require('./harness.cjs');
+const {browser, checker, launch, serve} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -33,17 +33,7 @@ function genList() {
 
 (async () => {
   const listed = genList();
-  const server = spawn(ncurve, ['serve', '--port', '0', path.join(src, 'examples/spiral.nc')], {stdio: ['ignore', 'pipe', 'pipe']});
-  const port = await new Promise((resolve, reject) => {
-    let text = '';
-    server.stdout.on('data', (d) => {
-      text += d;
-      const m = /127\.0\.0\.1:(\d+)/.exec(text);
-      if (m) resolve(+m[1]);
-    });
-    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
-    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
-  });
+  const {server, port} = await serve(ncurve, [path.join(src, 'examples/spiral.nc')]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
     const page = await context.newPage();

@@ -5,9 +5,9 @@
 // program writes it, the G71 block making its roughing in one step, the debugger's keys, and the
 // system variables a program reads in the watch; with no FILE, the shipped lathe example. Screenshots go to OUT_DIR. Exit 77 without Chromium.
 'use strict';
-const {spawn, execFileSync} = require('child_process');
+const {execFileSync} = require('child_process');
 const path = require('path');
-const {browser, checker, launch} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -22,25 +22,9 @@ const motions = run('--format', 'jsonl').trim().split('\n').map((l) => JSON.pars
   .map((m) => ({line: m.line, kind: m.kind, start: {x: m.start[0], z: m.start[2]}, end: {x: m.end[0], z: m.end[2]}}));
 const shown = (v) => String(Number(v.toFixed(3)));  // as the page writes a number
 
-// `ncurve serve --port 0 ARGS...` and the port it says
-async function serve(...args) {
-  const server = spawn(ncurve, ['serve', '--port', '0', ...args], {stdio: ['ignore', 'pipe', 'pipe']});
-  const port = await new Promise((resolve, reject) => {
-    let text = '';
-    server.stdout.on('data', (d) => {
-      text += d;
-      const m = /127\.0\.0\.1:(\d+)/.exec(text);
-      if (m) resolve(+m[1]);
-    });
-    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
-    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
-  });
-  return {server, port};
-}
-
 // serve --machine fanuc-lathe with no FILE: the shipped lathe example, run on the lathe
 async function latheExample(context) {
-  const {server, port} = await serve('--machine', 'fanuc-lathe');
+  const {server, port} = await serve(ncurve, ['--machine', 'fanuc-lathe']);
   try {
     const page = await context.newPage();
     page.setDefaultTimeout(60000);
@@ -58,14 +42,10 @@ async function latheExample(context) {
 }
 
 (async () => {
-  const {server, port} = await serve('--machine', 'fanuc-lathe', file);
+  const {server, port} = await serve(ncurve, ['--machine', 'fanuc-lathe', file]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
-    const page = await context.newPage();
-    page.setDefaultTimeout(60000);
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(String(e)));
-    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    const {page, errors} = await newPage(context);
     await page.goto(`http://127.0.0.1:${port}/`);
     await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1);
     const W = () => page.evaluate(() => ({runs: ncurveWorkbench.runs, moveCount: ncurveWorkbench.moveCount,

@@ -5,10 +5,9 @@
 // move's end with its A; a program that leaves A at 0 shows neither. Screenshot
 // workbench-rotary.png in OUT_DIR. Exit 77 without Chromium.
 'use strict';
-const {spawn} = require('child_process');
 const fs = require('fs');
 const path = require('path');
-const {browser, checker, launch} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -23,24 +22,10 @@ const lines = fs.readFileSync(file, 'utf8').split('\n');
 const loopLine = lines.findIndex((l) => l.startsWith('G01 X[#101*SIN[#102*#1]] A#1')) + 1;
 
 (async () => {
-  const server = spawn(ncurve, ['serve', '--port', '0', '--machine', machine, file], {stdio: ['ignore', 'pipe', 'pipe']});
-  const port = await new Promise((resolve, reject) => {
-    let text = '';
-    server.stdout.on('data', (d) => {
-      text += d;
-      const m = /127\.0\.0\.1:(\d+)/.exec(text);
-      if (m) resolve(+m[1]);
-    });
-    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
-    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
-  });
+  const {server, port} = await serve(ncurve, ['--machine', machine, file]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
-    const page = await context.newPage();
-    page.setDefaultTimeout(60000);
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(String(e)));
-    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    const {page, errors} = await newPage(context);
     await page.goto(`http://127.0.0.1:${port}/`);
     await page.waitForFunction(() => window.ncurveWorkbench && ncurveWorkbench.runs >= 1 && ncurveWorkbench.settled());
     const fact = (name) => page.evaluate((name) => {

@@ -7,10 +7,10 @@
 // --machine; at 1000 x 700 the axes readable in every view; an empty editor calm. Screenshots go to
 // OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
-const {spawn, execFileSync} = require('child_process');
+const {execFileSync} = require('child_process');
 const fs = require('fs');
 const path = require('path');
-const {browser, checker, launch} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -20,24 +20,10 @@ const spiral = path.join(src, 'examples/spiral.nc');
 const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {encoding: 'utf8'}));
 
 (async () => {
-  const server = spawn(ncurve, ['serve', '--port', '0', spiral], {stdio: ['ignore', 'pipe', 'pipe']});
-  const port = await new Promise((resolve, reject) => {
-    let text = '';
-    server.stdout.on('data', (d) => {
-      text += d;
-      const m = /127\.0\.0\.1:(\d+)/.exec(text);
-      if (m) resolve(+m[1]);
-    });
-    server.on('exit', (c) => reject(new Error(`ncurve serve exited (${c})`)));
-    setTimeout(() => reject(new Error('ncurve serve did not say its port')), 10000);
-  });
+  const {server, port} = await serve(ncurve, [spiral]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
   try {
-    const page = await context.newPage();
-    page.setDefaultTimeout(60000);
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(String(e)));
-    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    const {page, errors} = await newPage(context);
     const offsite = [];
     page.on('request', (r) => { if (!r.url().startsWith(`http://127.0.0.1:${port}/`)) offsite.push(r.url()); });
     await page.goto(`http://127.0.0.1:${port}/`);
