@@ -321,6 +321,11 @@ void Interpreter::step() {
   }
   const Block& b = prog_->blocks[f.pc];
   block_ = &b;
+  // a line of nothing but comments: not counted or traced, as the source's count leaves it out
+  if (b.kind == Statement::empty && b.sequence < 0 && b.error < 0 && !b.block_skip) {
+    ++f.pc;
+    return;
+  }
   ++result_.stats.blocks;
   if (observer_) [[unlikely]] observe_block(b);
   if (b.block_skip && profile_.block_skip) {
