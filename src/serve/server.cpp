@@ -100,10 +100,16 @@ Server::Server(ServeConfig config) : config_(std::move(config)), http_(std::make
     s.Delete(path, refuse("GET, HEAD"));
   }
   // httplib's own refusals (no route, a body over the limit) get a JSON body too
-  s.set_error_handler([&c](const httplib::Request&, httplib::Response& res) {
+  s.set_error_handler([&c](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return;
     std::string message = reason(res.status);
-    if (res.status == 413) message = fmt::format("{} (at most {} bytes)", message, c.max_body);
+    // httplib reads a form-encoded body (curl -d's default type) only up to 8192 bytes
+    if (res.status == 413 && req.get_header_value("Content-Type").starts_with("application/x-www-form-urlencoded"))
+      message = fmt::format("{}: a body sent as a form (Content-Type application/x-www-form-urlencoded, curl -d's) is "
+                            "read up to {} bytes; send it as JSON (curl -H 'Content-Type: application/json' "
+                            "--data-binary @FILE), up to {} bytes",
+                            message, CPPHTTPLIB_FORM_URL_ENCODED_PAYLOAD_MAX_LENGTH, c.max_body);
+    else if (res.status == 413) message = fmt::format("{} (at most {} bytes)", message, c.max_body);
     send(res, error_answer(res.status, message));
   });
 }

@@ -96,6 +96,20 @@ TEST_F(ServerTest, NumberTooLargeIsAClearError) {
   still_serving();
 }
 
+// curl -d sends a form: past the 8192 bytes httplib reads of one, the 413 says to send JSON
+TEST_F(ServerTest, LongFormEncodedBodySaysToSendJson) {
+  auto c = client();
+  const std::string body = json{{"program", "G00 X1.\n(" + std::string(9000, 'A') + ")\nM30\n"}}.dump();
+  auto form = c.Post("/api/run", body, "application/x-www-form-urlencoded");
+  ASSERT_TRUE(form);
+  EXPECT_EQ(form->status, 413);
+  EXPECT_NE(form->body.find("Content-Type: application/json"), std::string::npos) << form->body;
+  auto as_json = c.Post("/api/run", body, "application/json");
+  ASSERT_TRUE(as_json);
+  EXPECT_EQ(as_json->status, 200) << as_json->body.substr(0, 300);
+  still_serving();
+}
+
 TEST_F(ServerTest, UnknownProfileIsAClearError) {
   json j = post("/api/run", R"({"program": "M30\n", "machine": "fanuc-mil"})", 400);
   EXPECT_NE(j["error"].get<std::string>().find("unknown profile \"fanuc-mil\""), std::string::npos) << j;
