@@ -237,8 +237,16 @@
   function showDiagnostics() {
     const box = $('diags');
     box.textContent = '';
-    for (const d of answer.diagnostics) {
-      const li = el('li', d.severity);
+    // in the order of the text (the program's file first), the alarm (the answer's last) marked
+    const alarm = answer.summary && answer.summary.alarm ? answer.diagnostics[answer.diagnostics.length - 1] : null;
+    const order = (d) => [d.file && d.file !== name ? 1 : 0, d.file || '', d.line || 0, d.column || 0];
+    const before = (a, b) => {
+      const x = order(a), y = order(b);
+      for (let k = 0; k < x.length; k++) if (x[k] !== y[k]) return x[k] < y[k] ? -1 : 1;
+      return 0;
+    };
+    for (const d of [...answer.diagnostics].sort(before)) {
+      const li = el('li', d.severity + (d === alarm ? ' alarm' : ''));
       li.append(el('span', 'where', `${d.file || ''}:${d.line}:${d.column || 1}`), el('strong', '', d.code),
         document.createTextNode(' ' + d.message));
       li.onclick = () => { if (!d.file || d.file === name) editor.selectLine(d.line); };
@@ -581,6 +589,7 @@
   async function open(fileName) {
     const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : example.url);
     name = fileName || example.name;
+    for (const id of ['gen-error', 'gen-warnings', 'gen-out']) $(id).textContent = '';  // of the generated program
     editor.setText(await r.text());
     breakpoints.clear();
     editor.setBreakpoints(breakpoints);

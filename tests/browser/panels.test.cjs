@@ -145,6 +145,12 @@ function genList() {
     check(/^warning: hyperbola is a lathe curve; without a lathe profile this is a mill program/.test(warned),
           `gen's warning shown: ${warned.slice(0, 80)}…`);
     await page.screenshot({path: path.join(out, 'workbench-gen-warning.png')});
+    // another program opened: the generated one's messages go
+    n = await runs();
+    await page.selectOption('#file', 'spiral.nc');
+    await ran(n);
+    const left = await page.evaluate(() => ['gen-error', 'gen-warnings', 'gen-out'].map((id) => document.getElementById(id).textContent).join(''));
+    check(left === '', `spiral.nc opened: Generate's messages cleared ("${left.slice(0, 60)}")`);
     await page.selectOption('#gen-curve', 'expr');
 
     // a profile from a file: the lathe's TOML, chosen through the selector's file entry

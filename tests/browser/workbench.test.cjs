@@ -207,6 +207,17 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
             `the editor holding ${JSON.stringify(empty)}: "${e.status}", ${e.moves} moves, summary "${e.summary}"`);
     }
     await page.screenshot({path: path.join(out, 'workbench-empty.png')});
+    // two bad blocks: the run alarms at line 2 and reads line 3 as a text problem, which the answer
+    // lists first; the list under the editor is in the text's order, the alarm marked
+    before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', 'G00 X1.\nG01 X[[1]\nG01 Y[[2]\nM30\n');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    const listed = await page.evaluate(() => [...document.querySelectorAll('#diags li')].map((li) =>
+      ({where: li.querySelector('.where').textContent, alarm: li.classList.contains('alarm')})));
+    const answered = await page.evaluate(() => ncurveWorkbench.diagnostics.map((d) => d.line));
+    check(answered.join() === '3,2' && listed.length === 2 && /:2:/.test(listed[0].where) && listed[0].alarm &&
+          /:3:/.test(listed[1].where) && !listed[1].alarm,
+          `the diagnostics listed by line, the alarm (line 2) first and marked: ${JSON.stringify(listed)} (answered ${answered})`);
     check(errors.length === 0, `still no script errors (${errors.join('; ')})`);
   } catch (e) {
     check(false, String(e && e.stack || e));
