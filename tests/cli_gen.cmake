@@ -82,6 +82,10 @@ run_expect(0 "run the depth-pass program" ${NCURVE} run ${OUT}/gen_passes.nc)
 expect_text("${out}" "-2.0000 .. 5.0000" "Z down to the depth")
 run_expect(1 "depth passes on a helix" ${NCURVE} gen helix --tol 0.01 --step-down 1)
 expect_text("${err}" "depth passes need a plane curve" "helix rises in Z")
+run_expect(1 "arcs of a lathe curve on the mill" ${NCURVE} gen hyperbola --form arcs -o ${OUT}/gen_hyperbola_arcs.nc)
+expect_text("${err}" "arcs on a mill are made in the XY plane (G17), and this curve moves in Z" "why: the plane")
+expect_text("${err}" "--machine fanuc-lathe" "what to do for a lathe curve")
+run_expect(0 "the same arcs on the lathe" ${NCURVE} gen hyperbola --form arcs --machine fanuc-lathe -o ${OUT}/gen_hyperbola_arcs.nc)
 
 # a curve at rest at an end of its range (zero speed at t = 0 and 180: the parabola y = 10 (1 - x^2/900)
 # traced by x = 30 cos t) is cut; a stop inside the range (a cusp) is refused with where

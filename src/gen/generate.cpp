@@ -213,7 +213,9 @@ Emitted expanded_or_arcs(const Context& c) {
   std::shared_ptr<Speculation> speculation;
   std::string method;
   if (o.form == Form::arcs) {
-    if (c.with_z) throw std::runtime_error("arcs need a plane curve; this one rises in Z (use expanded or macro)");
+    if (c.with_z)
+      throw std::runtime_error("arcs on a mill are made in the XY plane (G17), and this curve moves in Z (use expanded "
+                               "or macro; a lathe curve's arcs, in G18, come with a lathe profile: --machine fanuc-lathe)");
     path = geom::fit_arcs(c.fit);
     method = "biarcs";
   } else {
