@@ -319,7 +319,7 @@ TEST_F(ServerTest, AnalyzeAndGen) {
   ASSERT_EQ(j["warnings"].size(), 1u) << j["warnings"];
   EXPECT_TRUE(j["warnings"][0].get<std::string>().starts_with("hyperbola is a lathe curve; without a lathe profile"));
   j = post("/api/gen", R"({"curve": "hyperbola", "form": "arcs"})", 422);  // arcs of a curve in X and Z on a mill
-  EXPECT_NE(j["error"].get<std::string>().find("arcs need a plane curve"), std::string::npos) << j;
+  EXPECT_NE(j["error"].get<std::string>().find("arcs on a mill are made in the XY plane"), std::string::npos) << j;
   ASSERT_EQ(j["warnings"].size(), 1u) << j;
   j = post("/api/gen", R"({"curve": "elipse"})", 400);
   EXPECT_NE(j["error"].get<std::string>().find("ellipse"), std::string::npos) << j;
