@@ -262,6 +262,7 @@ private:
   };
   int repetitive_code(int g) const;  // the cycle a lathe G code names (x10, as in system A), else 0
   bool repetitive_cycle(int g);      // one G70..G75 block; whether the tool moved
+  bool repetitive_cycle_path(int g); // its body; a path too long for memory is NC9000 above
   ShapeRange shape_range(int g);
   std::vector<Move> walk_shape(const ShapeRange& r, int g, bool keep);
   std::vector<Move> nose_compensated(const std::vector<Move>& shape);  // G71..G73 under G41/G42

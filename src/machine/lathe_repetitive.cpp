@@ -64,6 +64,16 @@ double Interpreter::increments(const Cmd& c) const {
 }
 
 bool Interpreter::repetitive_cycle(int g) {
+  try {
+    return repetitive_cycle_path(g);
+  } catch (const mrc::PathTooLong&) {
+    alarm("NC9000", fmt::format("{} would make more than {} moves (its depth of cut, peck or travel between cuts is "
+                                "a few increments over a long way): ncurve stops it rather than fill the memory",
+                                written(g, profile_.gcode_system), mrc::kMaxCyclePath));
+  }
+}
+
+bool Interpreter::repetitive_cycle_path(int g) {
   std::uint16_t column = 0;
   for (const Cmd& c : cmds_)
     if (c.letter == 'G' && repetitive_code(static_cast<int>(std::lround(c.value * 10))) == g) column = c.column;

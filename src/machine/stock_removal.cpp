@@ -99,7 +99,7 @@ class Builder {
 public:
   explicit Builder(P2 start) : at_(start) {}
   void line(bool rapid, P2 to) {
-    if (std::hypot(to.x - at_.x, to.z - at_.z) > 1e-9) path_.push_back(Step{rapid, to, false, {}, 0});
+    if (std::hypot(to.x - at_.x, to.z - at_.z) > 1e-9) push(Step{rapid, to, false, {}, 0});
     at_ = to;
   }
   // The shape from one place to a later one, as its elements are (G00 elements as rapids if kept).
@@ -112,7 +112,7 @@ public:
       if (!e.arc) {
         line(keep_rapid && e.rapid, end);
       } else if (std::hypot(end.x - at_.x, end.z - at_.z) > 1e-9 || tb - ta > 0.5) {
-        path_.push_back(Step{false, end, true, e.centre, e.sweep * (tb - ta)});
+        push(Step{false, end, true, e.centre, e.sweep * (tb - ta)});
         at_ = end;
       }
     }
@@ -121,6 +121,10 @@ public:
   Path take() { return std::move(path_); }
 
 private:
+  void push(const Step& s) {
+    if (path_.size() >= kMaxCyclePath) throw PathTooLong();
+    path_.push_back(s);
+  }
   P2 at_;
   Path path_;
 };

@@ -3,6 +3,7 @@
 // Coordinates are mm with X as a radius. The stock removal routines are written for G71 (depth of cut
 // along X, cuts along Z); G72 is G71 with the axes exchanged (transposed()).
 #pragma once
+#include <stdexcept>
 #include <vector>
 
 namespace ncurve::machine::mrc {
@@ -84,5 +85,12 @@ struct Pecking {
   double shift = 0, peck = 0, relief = 0, back = 0;
 };
 Path peck_cycle(const Pecking& p);
+
+// A cycle's path is built whole before it is made: past this many moves it is refused (PathTooLong)
+// instead of filling the memory (a peck or a depth of cut of a few increments over a long travel).
+inline constexpr std::size_t kMaxCyclePath = 2'000'000;
+struct PathTooLong : std::length_error {
+  PathTooLong() : std::length_error("more moves than one cycle may make") {}
+};
 
 }  // namespace ncurve::machine::mrc
