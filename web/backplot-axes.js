@@ -171,22 +171,36 @@
         if (nrm[0] * mid[0] + nrm[1] * mid[1] < 0) nrm = [-nrm[0], -nrm[1]];
         const count = ticks[k].list.length;
         const gap = count > 1 ? len * ticks[k].step / (span[k] * scale[k]) : Infinity;  // one step on the screen
-        // numbers at least 48 px apart, marks at least MARK_GAP px (at 1, 2, 5, 10, 20, 50 ... steps)
-        let every = Math.max(1, Math.ceil(48 / Math.max(gap, 1e-9)));
-        if (every > 2 && every <= 5) every = 5;
-        else if (every > 5) every = 10 * Math.ceil(every / 10);
+        // numbers at least 48 px apart, on round values (1, 2, 2.5, 5 x 10^n: a 2.5 step numbered at
+        // 10s, not at its 5th ticks, 12.5s); marks at least MARK_GAP px
+        const need = 48 / Math.max(gap, 1e-9), step = ticks[k].step;
+        let every = 1;
+        if (need > 1) {
+          every = 10 * Math.ceil(need / 10);
+          const base = Math.pow(10, Math.floor(Math.log10(need * step)));
+          for (const f of [1, 2, 2.5, 5, 10, 20, 25, 50]) {
+            const v = f * base / step, r = Math.round(v);
+            if (r >= need && Math.abs(v - r) < 1e-6) { every = r; break; }
+          }
+        }
         const endOn = len < 30 && span[k] > diag * 1e-6;
         let markEvery = 1;
         for (let f = 1; markEvery * gap < MARK_GAP && markEvery < 1e6; f *= 10)
           for (const m of [1, 2, 5]) if (markEvery * gap < MARK_GAP) markEvery = m * f;
-        const first = Math.round(ticks[k].list[0] / ticks[k].step);
-        const mark = (i) => !endOn && ((first + i) % markEvery === 0 || (first + i) % every === 0);
-        const key = endOn ? 'none' : `${markEvery} ${every}`;
+        // fewer than two round values on the axis: its first and last ticks numbered instead (with
+        // any round value between them as far from both as two numbers need)
+        const ms = ticks[k].list.map((v) => Math.round(v / step));
+        const round = (m) => m % every === 0;
+        const byEnds = count >= 2 && ms.filter(round).length < 2 && (ms[count - 1] - ms[0]) >= need;
+        const numbered = (i) => (byEnds ? i === 0 || i === count - 1 ||
+          (round(ms[i]) && ms[i] - ms[0] >= need && ms[count - 1] - ms[i] >= need) : round(ms[i]));
+        const mark = (i) => !endOn && (ms[i] % markEvery === 0 || numbered(i));
+        const key = endOn ? 'none' : `${markEvery} ${every} ${byEnds}`;
         if (markLines[k].key !== key) {
           markLines[k].key = key;
           markLines[k].line.geometry.setAttribute('position', tickMarks(k, mark));
         }
-        return {d, nrm, len, every, endOn, mark};
+        return {d, nrm, len, every, endOn, mark, numbered};
       });
       const tickIndex = [0, 0, 0];
       shown = {marks: [[], [], []], numbers: [[], [], []], names: []};
@@ -208,8 +222,7 @@
           if (s.endOn && (!name || s.len < 8)) hide = true;  // a name stays unless its axis is seen end-on
           if (!name) {
             const i = tickIndex[L.axis]++;
-            const m = Math.round(ticks[L.axis].list[i] / ticks[L.axis].step);
-            if (m % s.every !== 0) hide = true;
+            if (!s.numbered(i)) hide = true;
             x += s.nrm[0] * 16, y += s.nrm[1] * 16;
           } else if (!hide) {  // beyond the axis' end, clear of its last tick, kept on the canvas
             L.el.style.display = '';  // measured as shown

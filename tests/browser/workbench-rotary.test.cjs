@@ -54,6 +54,15 @@ const loopLine = lines.findIndex((l) => l.startsWith('G01 X[#101*SIN[#102*#1]] A
           `the hover text gives the move's end with its A: "${tip}"`);
     await page.screenshot({path: path.join(out, 'workbench-rotary.png')});
     await page.evaluate(() => ncurveWorkbench.plot.hover(-1));
+    // X runs -9.994 ... 9.994, ticks -8 ... 8 every 2, too close in the iso view to number each: with
+    // only 0 a round 10, the ends are numbered too, -8 and 8
+    const xs = await page.evaluate(() => {
+      const B = ncurveWorkbench.plot;
+      B.setView('iso');
+      B.render();
+      return [...document.querySelectorAll('.ncurve-label.tick-x')].filter((e) => e.style.display !== 'none').map((e) => e.textContent);
+    });
+    check(xs.join(' ') === '-8 0 8', `the X axis numbered -8, 0, 8 in the iso view: ${xs.join(' ')}`);
 
     // a program that leaves A at 0: nothing said of it
     const before = await page.evaluate(() => ncurveWorkbench.runs);
