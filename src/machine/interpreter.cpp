@@ -460,7 +460,7 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column, st
     frame.level = frames_.back().level;
   } else {
     if (macro_depth_ >= profile_.macro_nesting)
-      alarm("PS0077", fmt::format("macro calls (G65/G66/custom codes) nested more than {} deep", profile_.macro_nesting),
+      alarm("PS0122", fmt::format("macro calls (G65/G66/custom codes) nested more than {} deep", profile_.macro_nesting),
             column);
     ++macro_depth_;
     frame.level = static_cast<std::int32_t>(locals_.size());
