@@ -70,7 +70,7 @@ bool Interpreter::canned_cycle_block() {
     q = std::fabs(dimension(word('Q')));  // "be sure to specify a positive value": the sign is ignored
   if (has('P')) {
     const int ms = integer(word('P'), "P of a canned cycle (dwell, milliseconds)");
-    if (ms < 0) alarm("PS0011", "negative dwell time", word('P').column);
+    if (ms < 0) alarm("PS0006", fmt::format("P{}: a dwell time takes no minus sign", ms), word('P').column);
     p = ms / 1000.0;
   }
   const char repeat_letter = profile_.drilling.repeat_address;
@@ -232,9 +232,12 @@ int Interpreter::cycle_repeat_count() {
   const char letter = profile_.drilling.repeat_address;
   if (!has(letter)) return 1;
   const int repeat = integer(word(letter), "the repeat count of a canned cycle");
-  if (repeat < 0 || repeat > 9999)
-    alarm("PS0045", fmt::format("{}{} of a canned cycle: the repeat count is 0 to 9999 (the manual names no "
-                                "alarm for it; ncurve stops here)", letter, repeat),
+  if (repeat < 0)
+    alarm("PS0006", fmt::format("{}{} of a canned cycle: the repeat count takes no minus sign", letter, repeat),
+          word(letter).column);
+  if (repeat > 9999)
+    alarm("PS0003", fmt::format("{}{} of a canned cycle: the repeat count has at most four digits (0 to 9999)",
+                                letter, repeat),
           word(letter).column);
   return repeat;
 }

@@ -460,7 +460,7 @@ void Interpreter::call_program(int number, Frame frame, std::uint16_t column, st
     frame.level = frames_.back().level;
   } else {
     if (macro_depth_ >= profile_.macro_nesting)
-      alarm("PS0077", fmt::format("macro calls (G65/G66/custom codes) nested more than {} deep", profile_.macro_nesting),
+      alarm("PS0122", fmt::format("macro calls (G65/G66/custom codes) nested more than {} deep", profile_.macro_nesting),
             column);
     ++macro_depth_;
     frame.level = static_cast<std::int32_t>(locals_.size());
@@ -668,7 +668,7 @@ void Interpreter::exec_nc(const Block& b) {
 
   if (has('F')) {
     double f = word('F').value;
-    if (f < 0) alarm("PS0011", "negative feed rate", word('F').column);
+    if (f < 0) alarm("PS0006", fmt::format("F{}: a feed rate takes no minus sign", f), word('F').column);
     feed_ = inch_ ? f * 25.4 : f;
   }
   if (has('S')) {  // on a lathe, S with G50 (G92 on systems B/C) is the spindle speed limit

@@ -66,7 +66,7 @@ bool Interpreter::lathe_drilling_block() {
   std::optional<double> p;
   if (has('P')) {
     const int ms = integer(word('P'), "P of a canned cycle (dwell, milliseconds)");
-    if (ms < 0) alarm("PS0011", "negative dwell time", word('P').column);
+    if (ms < 0) alarm("PS0006", fmt::format("P{}: a dwell time takes no minus sign", ms), word('P').column);
     p = ms / 1000.0;
   }
   const int repeat = cycle_repeat_count();

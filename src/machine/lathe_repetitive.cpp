@@ -267,13 +267,17 @@ bool Interpreter::stock_removal_cycle(int g) {
   mrc::Shape shape = shape_of(moves, 1);
   if (shape.empty()) alarm("PS0065", fmt::format("{}: the shape N{}..N{} has no block after the first", code, range.ns, range.nf), pcol);
   mrc::Shape cut = facing ? mrc::transposed(shape) : shape;
+  // the alarm list names the plane's axes: PS0064 the first (Z of G18's ZpXp plane), PS0329 the
+  // second (X), whichever of them the cycle cuts along
+  const char* cut_alarm = facing ? "PS0329" : "PS0064";
+  const char* depth_alarm = facing ? "PS0064" : "PS0329";
   if (const int i = mrc::first_reversal(cut, 1); i >= 0)
-    alarm_at(moves[i + 1], "PS0329",
+    alarm_at(moves[i + 1], cut_alarm,
              fmt::format("{}: the finishing shape is not monotone along {} (this block turns back); both types need it",
                          code, facing ? 'X' : 'Z'));
   if (!pockets)
     if (const int i = mrc::first_reversal(cut, 0); i >= 0)
-      alarm_at(moves[i + 1], "PS0064",
+      alarm_at(moves[i + 1], depth_alarm,
                fmt::format("{}: the finishing shape is not monotone along {} (this block turns back): type I needs "
                            "it; give both {} and {} in the first block (N{}) for type II",
                            code, facing ? 'Z' : 'X', facing ? 'Z' : 'X', facing ? 'X' : 'Z', range.ns));

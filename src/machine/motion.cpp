@@ -574,15 +574,18 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
 
 void Interpreter::dwell() {
   double seconds = 0;
+  std::uint16_t column = 0;
   if (has('P')) {
     seconds = integer(word('P'), "P of G04 (milliseconds)") / 1000.0;
+    column = word('P').column;
   } else if (has('X') || has('U')) {
     const Cmd& c = has('X') ? word('X') : word('U');
     double v = c.value;
     if (c.literal && !c.decimal_point && !profile_.decimal_calculator) v *= 0.001;  // X1000 = 1 s
     seconds = v;
+    column = c.column;
   }
-  if (seconds < 0) alarm("PS0011", "negative dwell time");
+  if (seconds < 0) alarm("PS0006", "a dwell time takes no minus sign", column);
   Move m;
   m.kind = MoveKind::dwell;
   m.start = m.end = pos_;

@@ -27,7 +27,8 @@ double Interpreter::thread_start_angle() {
   if (!has('Q')) return 0;
   const Cmd& q = word('Q');
   const int v = integer(q, "Q (threading start angle, 0.001 degree)");
-  if (v < 0 || v > 360000)
+  if (v < 0) alarm("PS0006", fmt::format("Q{} (threading start angle) takes no minus sign", v), q.column);
+  if (v > 360000)
     alarm("PS0003",
           fmt::format("Q{} (threading start angle) is outside 0..360000 (0.001 degree; the manual names no alarm "
                       "for it, ncurve stops here)",
@@ -107,9 +108,10 @@ void Interpreter::multiple_threading_cycle() {
     if (has('P')) {
       const Cmd& p = word('P');
       const int v = integer(p, "P of G76 (m r a: finishing passes, chamfer, tool angle, two digits each)");
-      if (v < 0 || v > 999999)
-        alarm("PS0062", fmt::format("P{} of G76 is not six digits m r a (finishing passes, chamfer in 0.1 leads, "
-                                    "tool angle)", v), p.column);
+      if (v < 0) alarm("PS0006", fmt::format("P{} of G76: m r a takes no minus sign", v), p.column);
+      if (v > 999999)
+        alarm("PS0003", fmt::format("P{} of G76 has more than six digits m r a (finishing passes, chamfer in 0.1 "
+                                    "leads, tool angle, two digits each)", v), p.column);
       if (!valid_tool_angle(v % 100))
         alarm("PS0315", fmt::format("tool nose angle a = {} in G76 P{:06}: it must be 80, 60, 55, 30, 29 or 0",
                                     v % 100, v), p.column);

@@ -80,7 +80,7 @@ TEST(Calls, MissingProgramIsPS0076) {
 TEST(Calls, MacroNestingLimitByProfile) {
   std::string recursive = "#100=#100+1\nG65 P3000\nM30\nO3000\n#100=#100+1\nG65 P3000\nM99\n";
   auto r = run(recursive);
-  EXPECT_EQ(r.alarm_code(), "PS0077");
+  EXPECT_EQ(r.alarm_code(), "PS0122");
   EXPECT_EQ(r.var(100), 5.0);  // main + 4 levels on a 0i
   auto p = machine::default_mill();
   p.control = machine::Control::fanuc_30i;

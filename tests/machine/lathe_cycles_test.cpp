@@ -161,6 +161,10 @@ TEST(LatheCycles, G76AlarmsOfTheManual) {
   EXPECT_EQ(depth.alarm_code(), "PS0317");
   auto lead = run("G21 G99\nG00 X24. Z5.\nG76 X18.16 Z-20. P920 Q350\nM30\n", lathe());
   EXPECT_EQ(lead.alarm_code(), "PS0011");
+  // the alarm list: PS0003 more digits than the word permits, PS0006 a minus sign where none may be
+  EXPECT_EQ(run("G21 G99\nG00 X24. Z5.\nG76 P1011060\nM30\n", lathe()).alarm_code(), "PS0003");
+  EXPECT_EQ(run("G21 G99\nG00 X24. Z5.\nG76 P-11060\nM30\n", lathe()).alarm_code(), "PS0006");
+  EXPECT_EQ(run("G21 G99\nG00 X24. Z5.\nG32 Z-10. F1.5 Q-1000\nM30\n", lathe()).alarm_code(), "PS0006");
 }
 
 TEST(LatheCycles, ThreadingParametersAreChecked) {

@@ -92,6 +92,17 @@ TEST(Motion, IncrementalAndFeed) {
   EXPECT_NEAR(ms[0].seconds, std::hypot(10, 5) / 200 * 60, 1e-12);
 }
 
+TEST(Motion, MinusSignOnFeedOrDwellIsPS0006) {
+  // PS0006 ILLEGAL USE OF MINUS SIGN: "a minus sign was specified at an NC instruction word ... where
+  // no minus sign may be specified"; PS0011 is a feed of zero
+  EXPECT_EQ(run("#1=-100.\nG01 X1. F#1\nM30\n").alarm_code(), "PS0006");
+  EXPECT_EQ(run("G04 P-100\nM30\n").alarm_code(), "PS0006");
+  EXPECT_EQ(run("G04 X-1.\nM30\n").alarm_code(), "PS0006");
+  EXPECT_EQ(run("G00 Z10.\nG82 X5. Z-10. R2. P-100 F100.\nM30\n").alarm_code(), "PS0006");
+  EXPECT_EQ(run("G00 Z10.\nG81 X5. Z-10. R2. K-1 F100.\nM30\n").alarm_code(), "PS0006");
+  EXPECT_EQ(run("G00 Z10.\nG81 X5. Z-10. R2. K10000 F100.\nM30\n").alarm_code(), "PS0003");
+}
+
 TEST(Motion, FeedZeroIsPS0011AtTheBlock) {
   auto r = run("G00 X1.\nG01 X2.\nM30\n");
   EXPECT_EQ(r.alarm_code(), "PS0011");
