@@ -36,10 +36,11 @@ void Interpreter::check_code_in_transform(int g, std::uint16_t column) const {
   const char* mode = xf_.rotating    ? "coordinate system rotation mode (G68): cancel it with G69"
                      : xf_.scaling   ? "scaling mode (G51): cancel it with G50"
                                      : "programmable mirror image mode (G51.1): cancel it with G50.1";
-  alarm("PS0010", fmt::format("{} ({}) cannot be given in {} first (the manual forbids it and names no alarm; "
-                              "ncurve stops here)",
-                              g_name(g), reference ? "reference position return" : "coordinate system change",
-                              mode),
+  // in scaling, PS0300 ILLEGAL COMMAND IN SCALING; rotation and mirror image name no alarm
+  alarm(xf_.scaling ? "PS0300" : "PS0010",
+        fmt::format("{} ({}) cannot be given in {} first{}", g_name(g),
+                    reference ? "reference position return" : "coordinate system change", mode,
+                    xf_.scaling ? "" : " (the manual forbids it and names no alarm; ncurve stops here)"),
         column);
 }
 
@@ -53,11 +54,11 @@ void Interpreter::transform_codes(std::vector<int>& one_shot) {
       if (c.letter == 'G' && std::lround(c.value * 10) == g) return c.column;
     return std::uint16_t{0};
   };
-  auto order = [&](int g, const char* what) {
-    alarm("PS0010", fmt::format("{} cannot be given in {} mode: mirror image, scaling and rotation are given "
-                                "in that order and cancelled in the reverse order (the manual names no alarm; "
-                                "ncurve stops here)",
-                                g_name(g), what),
+  auto order = [&](int g, const char* what) {  // PS0300 in scaling (ILLEGAL COMMAND IN SCALING), else none named
+    alarm(xf_.scaling ? "PS0300" : "PS0010",
+          fmt::format("{} cannot be given in {} mode: mirror image, scaling and rotation are given in that order "
+                      "and cancelled in the reverse order{}",
+                      g_name(g), what, xf_.scaling ? "" : " (the manual names no alarm; ncurve stops here)"),
           column_of(g));
   };
   auto not_in_compensation = [&](int g) {
