@@ -441,8 +441,9 @@ private:
   std::array<bool, kAxes> roll_word_{};
   AxisVector roll_value_{};
   void select_lathe_offset(int number, std::uint16_t column);
-  double offset_units(double mm) const;   // an offset as the program reads it (inches under G20)
-  double offset_mm(double value) const;   // and as it writes it
+  // an offset as the program reads it and writes it: a length in inches under G20
+  double offset_units(double mm, bool length = true) const;
+  double offset_mm(double value, bool length = true) const;
   static bool is_tip_variable(int n);     // #2301..#2364: a lathe's tool nose tip (a number)
   double* lathe_offset_field(int n);
   void lathe_offset_setting();

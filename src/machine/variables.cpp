@@ -45,9 +45,10 @@ double Interpreter::program_units(int axis, double mm) const {
   return v;
 }
 
-// An offset (tool, work) in mm as the program reads or writes it: in inches under G20.
-double Interpreter::offset_units(double mm) const { return inch_ ? mm / 25.4 : mm; }
-double Interpreter::offset_mm(double value) const { return inch_ ? value * 25.4 : value; }
+// An offset (tool, work) in mm as the program reads or writes it: a length in inches under G20; not
+// a length (a rotary axis's degrees, a tool nose tip number) as it is.
+double Interpreter::offset_units(double mm, bool length) const { return length && inch_ ? mm / 25.4 : mm; }
+double Interpreter::offset_mm(double value, bool length) const { return length && inch_ ? value * 25.4 : value; }
 bool Interpreter::is_tip_variable(int n) { return n >= 2301 && n <= 2364; }
 
 // (a look from outside the run: not a read of the program's, so not told to the observer)
@@ -142,7 +143,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
   // Offsets are kept in mm and read in the input unit, as G10 sets them and #5001.. read: under G20
   // in inches (the tool nose tip #2301.. is a number).
   if (profile_.lathe()) {
-    if (const double* field = lathe_offset_field(n)) return Value::of(is_tip_variable(n) ? *field : offset_units(*field));
+    if (const double* field = lathe_offset_field(n)) return Value::of(offset_units(*field, !is_tip_variable(n)));
   } else if (const double* field = mill_offset_field(n)) {
     return Value::of(offset_units(*field));
   }
@@ -212,7 +213,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     int set = (n - 5201) / 20;
     int a = axis_order((n - 5201) % 20);
     if (a < 0 || set > 6) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-    return Value::of(a < 3 ? offset_units(work_offsets_[set][a]) : work_offsets_[set][a]);
+    return Value::of(offset_units(work_offsets_[set][a], a < 3));
   }
   if (n >= 7001 && n <= 7960) {
     int p = (n - 7001) / 20 + 1;
@@ -220,7 +221,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     if (a < 0) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
     auto it = extended_offsets_.find(p);
     const double v = it == extended_offsets_.end() ? 0.0 : it->second[a];
-    return Value::of(a < 3 ? offset_units(v) : v);
+    return Value::of(offset_units(v, a < 3));
   }
   alarm("PS0115", fmt::format("#{} is not a variable of this control", n), column);
 }
@@ -246,7 +247,7 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
   // written in the input unit (under G20 inches), kept in mm
   if (profile_.lathe()) {
     if (double* field = lathe_offset_field(n)) {
-      *field = is_tip_variable(n) ? v.number() : offset_mm(v.number());
+      *field = offset_mm(v.number(), !is_tip_variable(n));
       return;
     }
   } else if (double* field = mill_offset_field(n)) {
@@ -264,7 +265,7 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
     int set = (n - 5201) / 20;
     int a = axis_order((n - 5201) % 20);
     if (a < 0 || set > 6) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-    work_offsets_[set][a] = a < 3 ? offset_mm(v.number()) : v.number();
+    work_offsets_[set][a] = offset_mm(v.number(), a < 3);
     set_origin();
     return;
   }
@@ -272,7 +273,7 @@ void Interpreter::write_system(int n, Value v, std::uint16_t column) {
     int p = (n - 7001) / 20 + 1;
     int a = axis_order((n - 7001) % 20);
     if (a < 0) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-    extended_offsets_[p][a] = a < 3 ? offset_mm(v.number()) : v.number();
+    extended_offsets_[p][a] = offset_mm(v.number(), a < 3);
     set_origin();
     return;
   }
