@@ -16,13 +16,7 @@
     const k = Math.min(RAMP.length - 2, Math.floor(u)), f = u - k, a = RAMP[k], b = RAMP[k + 1];
     return [0, 1, 2].map((c) => Math.round(a[c] + (b[c] - a[c]) * f));
   };
-  const el = (tag, cls, text) => {
-    const e = document.createElement(tag);
-    if (cls) e.className = cls;
-    if (text !== undefined) e.textContent = text;
-    return e;
-  };
-  const fmt = (v, digits) => (Math.abs(v) < 1e-12 ? 0 : v).toFixed(digits === undefined ? 3 : digits).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, '') || '0';
+  const {el, fmt} = NcurveDom;
 
   function create(options) {
     const {select, legend, now} = options;

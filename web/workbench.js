@@ -6,13 +6,7 @@
 (function () {
   'use strict';
   const $ = (id) => document.getElementById(id);
-  const el = (tag, cls, text) => {
-    const e = document.createElement(tag);
-    if (cls) e.className = cls;
-    if (text !== undefined) e.textContent = text;
-    return e;
-  };
-  const fmt = (v, digits) => (Math.abs(v) < 1e-12 ? 0 : v).toFixed(digits === undefined ? 3 : digits).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, '') || '0';
+  const {el, fmt} = NcurveDom;
   const DIM = [214, 219, 226];
 
   const W = window.ncurveWorkbench = {ready: false, runs: 0, moveCount: 0, diagnostics: [], timing: {}, pos: 0, error: null,
