@@ -12,12 +12,7 @@ static_assert(std::endian::native == std::endian::little, "the page reads the ar
 
 BackplotData::BackplotData(const machine::MachineProfile& profile, std::size_t limit)
     : lathe_(profile.lathe()), x_diameter_(profile.lathe() && profile.diameter_x),
-      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(limit) {
-  for (int k = 0; k < 3; ++k) {
-    other_[k] = profile.axes.find("ABC"[k]) != std::string::npos;
-    other_rotary_[k] = profile.rotary[3 + k].rotary;
-  }
-}
+      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(limit), other_(profile) {}
 
 std::uint32_t BackplotData::block_of(const machine::Move& m) {
   if (have_last_block_ && m.file == last_file_ && m.line == last_line_) return last_block_;
@@ -41,10 +36,7 @@ std::uint32_t BackplotData::block_of(const machine::Move& m) {
 void BackplotData::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
   const std::array<double, 3> a{m.start[0], m.start[1], m.start[2]}, b{m.end[0], m.end[1], m.end[2]};
-  for (int k = 0; k < 3; ++k)
-    if (other_[k])
-      other_lo_[k] = std::min({other_lo_[k], m.start[3 + k], m.end[3 + k]}),
-      other_hi_[k] = std::max({other_hi_[k], m.start[3 + k], m.end[3 + k]});
+  other_.add(m);
   if (kind_.size() >= limit_) {
     ++left_out_;
     last_ = b;
@@ -59,7 +51,7 @@ void BackplotData::on_move(const machine::Move& m) {
   feed_.push_back(static_cast<float>(m.feed));
   block_.push_back(block_of(m));
   for (int k = 0; k < 3; ++k)
-    if (other_[k]) other_end_[k].push_back(m.end[3 + k]);
+    if (other_.present[k]) other_end_[k].push_back(m.end[3 + k]);
   if (m.kind == machine::MoveKind::arc) {
     for (double v : m.center) arcs_.push_back(static_cast<float>(v));
     arcs_.push_back(static_cast<float>(m.sweep));
@@ -143,9 +135,9 @@ std::string BackplotData::json(bool inch) const {
   nlohmann::json rotary = nlohmann::json::array();
   std::vector<double> rotary_end;
   for (int k = 0; k < 3; ++k) {
-    if (!other_[k] || !(other_lo_[k] <= other_hi_[k]) || (other_lo_[k] == 0 && other_hi_[k] == 0)) continue;
-    rotary.push_back({{"axis", std::string(1, "ABC"[k])}, {"unit", other_rotary_[k] ? "deg" : "mm"},
-                      {"min", other_lo_[k]}, {"max", other_hi_[k]}});
+    if (!other_.moved(k)) continue;
+    rotary.push_back({{"axis", std::string(1, "ABC"[k])}, {"unit", other_.rotary[k] ? "deg" : "mm"},
+                      {"min", other_.lo[k]}, {"max", other_.hi[k]}});
     rotary_end.insert(rotary_end.end(), other_end_[k].begin(), other_end_[k].end());
   }
   head["rotary"] = rotary;

@@ -14,6 +14,7 @@
 
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
+#include "report/other_axes.hpp"
 
 namespace ncurve::report {
 
@@ -58,10 +59,8 @@ private:
   bool have_last_block_ = false;
   std::optional<nc::Diagnostic> alarm_;
   std::array<double, 3> alarm_at_{};
-  // the profile's A, B and C axes (the drawing is of X Y Z): whether each is there and rotary,
-  // its range over the run and its end for each motion kept
-  std::array<bool, 3> other_{}, other_rotary_{};
-  std::array<double, 3> other_lo_{INFINITY, INFINITY, INFINITY}, other_hi_{-INFINITY, -INFINITY, -INFINITY};
+  // the A, B and C axes (the drawing is of X Y Z), and each one's end for each motion kept
+  OtherAxes other_;
   std::array<std::vector<double>, 3> other_end_;
 };
 

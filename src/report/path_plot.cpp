@@ -29,20 +29,14 @@ bool view_fits(const machine::MachineProfile& profile, PlotView view) {
 PathPlot::PathPlot(const machine::MachineProfile& profile, std::size_t max_elements)
     : lathe_(profile.lathe()), x_diameter_(profile.lathe() && profile.diameter_x),
       lathe_y_(profile.lathe() && profile.axes.find('Y') != std::string::npos),
-      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(std::max<std::size_t>(max_elements, 1)) {
-  for (int k = 0; k < 3; ++k) {
-    other_[k] = profile.axes.find("ABC"[k]) != std::string::npos;
-    other_rotary_[k] = profile.rotary[3 + k].rotary;
-  }
-}
+      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(std::max<std::size_t>(max_elements, 1)),
+      other_(profile) {}
 
 namespace {
 
 // What a drawing of X, Y and Z leaves out: "A axis not drawn: 0 to 360 deg" for each of the
-// profile's A, B and C axes that was ever away from 0 (lo > hi: no motion; inch: a linear one in
-// inches); empty when there is none.
-std::string axes_not_drawn(const std::array<bool, 3>& present, const std::array<bool, 3>& rotary,
-                           const std::array<double, 3>& lo, const std::array<double, 3>& hi, bool inch) {
+// profile's A, B and C axes that moved (inch: a linear one in inches); empty when there is none.
+std::string axes_not_drawn(const OtherAxes& other, bool inch) {
   auto number = [](double v) {
     std::string s = fmt::format("{:.3f}", v);
     s.erase(s.find_last_not_of('0') + 1);
@@ -51,13 +45,14 @@ std::string axes_not_drawn(const std::array<bool, 3>& present, const std::array<
   };
   std::string out;
   for (int k = 0; k < 3; ++k) {
-    if (!present[k] || !(lo[k] <= hi[k]) || (lo[k] == 0 && hi[k] == 0)) continue;
-    const double scale = rotary[k] || !inch ? 1 : 1 / 25.4;
-    const char* unit = rotary[k] ? "deg" : inch ? "in" : "mm";
+    if (!other.moved(k)) continue;
+    const bool rotary = other.rotary[k];
+    const double lo = other.lo[k], hi = other.hi[k], scale = rotary || !inch ? 1 : 1 / 25.4;
+    const char* unit = rotary ? "deg" : inch ? "in" : "mm";
     if (!out.empty()) out += " · ";
-    out += lo[k] == hi[k] ? fmt::format("{} axis not drawn: at {} {}", "ABC"[k], number(lo[k] * scale), unit)
-                          : fmt::format("{} axis not drawn: {} to {} {}", "ABC"[k], number(lo[k] * scale),
-                                        number(hi[k] * scale), unit);
+    out += lo == hi ? fmt::format("{} axis not drawn: at {} {}", "ABC"[k], number(lo * scale), unit)
+                    : fmt::format("{} axis not drawn: {} to {} {}", "ABC"[k], number(lo * scale), number(hi * scale),
+                                  unit);
   }
   return out;
 }
@@ -78,10 +73,7 @@ bool continues(const Vec& a, const Vec& b, const Vec& c) {
 void PathPlot::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
   ++motions_;
-  for (int k = 0; k < 3; ++k)
-    if (other_[k])
-      other_lo_[k] = std::min({other_lo_[k], m.start[3 + k], m.end[3 + k]}),
-      other_hi_[k] = std::max({other_hi_[k], m.start[3 + k], m.end[3 + k]});
+  other_.add(m);
   const Vec a = xyz(m.start), b = xyz(m.end);
   for (int k = 0; k < 3; ++k) lo_[k] = std::min({lo_[k], a[k], b[k]}), hi_[k] = std::max({hi_[k], a[k], b[k]});
   last_ = b;
@@ -287,7 +279,7 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
                                                            ? "; lathe: Z across, X up"
                                                            : ""));
   // the axes the views leave out, under the heading
-  if (const std::string other = axes_not_drawn(other_, other_rotary_, other_lo_, other_hi_, o.inch); !other.empty()) {
+  if (const std::string other = axes_not_drawn(other_, o.inch); !other.empty()) {
     for (const auto& line : plot::wrap(other + " (the views show X, Y and Z)", W - 32, 12)) {
       page.text(16, top + 6, line, "start", 12, "class=\"not-drawn\" fill=\"#bf360c\"");
       top += 16;

@@ -12,6 +12,7 @@
 
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
+#include "report/other_axes.hpp"
 
 namespace ncurve::report {
 
@@ -64,9 +65,7 @@ private:
   std::array<double, 3> last_{};
   std::optional<nc::Diagnostic> alarm_;
   std::array<double, 3> alarm_at_{};
-  // the profile's A, B and C axes, not drawn: whether each is there and rotary, and its range
-  std::array<bool, 3> other_{}, other_rotary_{};
-  std::array<double, 3> other_lo_{INFINITY, INFINITY, INFINITY}, other_hi_{-INFINITY, -INFINITY, -INFINITY};
+  OtherAxes other_;  // the A, B and C axes, not drawn
 };
 
 }  // namespace ncurve::report
