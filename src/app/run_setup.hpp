@@ -34,6 +34,7 @@ struct RunSetup {
   std::size_t problems_left_out = 0;     // and how many more there are
   std::size_t unchecked_lines = 0;       // lines past those that no jump can reach, not parsed
   machine::RunOptions options;
+  std::vector<std::string> inputs;  // every file read (program, macro folders' files, profile): never an output
 };
 
 // The options naming them: program (required unless program_required is false), --machine, --lib,
