@@ -111,6 +111,10 @@ void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
   cmd->add_option("--max-seconds", in.max_seconds,
                   "stop a program that has not ended after this many seconds of running (default 60; 0: no limit)")
       ->check(non_negative("a time", "s"));
+  cmd->add_option("--max-memory", in.max_memory_mb,
+                  "refuse a program file that would take more than this many MB of memory once read (default: ten "
+                  "times its size, at least 256)")
+      ->check(CLI::Range(1.0, 1e9));
 }
 
 RunSetup prepare_run(const RunInputs& in) {
@@ -122,7 +126,9 @@ RunSetup prepare_run(const RunInputs& in) {
   if (in.machine_text) s.profile = machine::parse_profile(*in.machine_text, in.machine);
   else if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
   apply_parameters(s.profile, in.params);
-  s.lib = std::make_unique<machine::ProgramLibrary>(s.profile.parse_options());
+  nc::ParseOptions parse_options = s.profile.parse_options();
+  parse_options.max_memory = static_cast<std::size_t>(in.max_memory_mb * 1e6);
+  s.lib = std::make_unique<machine::ProgramLibrary>(parse_options);
   if (in.text) {
     s.problems = s.lib->add_text(in.program, *in.text, true);
   } else if (in.program == "-") {

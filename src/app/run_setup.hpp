@@ -22,6 +22,7 @@ struct RunInputs {
   std::vector<std::string> params;  // "6050=102"
   std::uint64_t max_steps = machine::RunOptions{}.max_steps;
   double max_seconds = machine::RunOptions{}.max_seconds;
+  double max_memory_mb = 0;  // a file's compiled form at most; 0: nc::memory_bound's default
   bool nose_centre = false;
   std::optional<std::string> text;          // the program's text, named `program` (not read from a file)
   std::optional<std::string> machine_text;  // a profile's TOML text, named `machine`
