@@ -287,7 +287,8 @@ RunResult Interpreter::run(MoveSink& sink) {
 void Interpreter::check_runaway() {
   const bool steps = result_.stats.blocks + operations_ >= options_.max_steps;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  if (!steps && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
+  const bool cancelled = options_.cancel && options_.cancel->load(std::memory_order_relaxed);
+  if (!steps && !cancelled && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
   std::string where;
   if (last_back_jump_) {
     const Block& b = *last_back_jump_;
@@ -301,6 +302,9 @@ void Interpreter::check_runaway() {
     alarm("NC9000", fmt::format("program stopped after {} steps ({} blocks and {} expression operations; raise "
                                 "--max-steps to let it run longer){}",
                                 result_.stats.blocks + operations_, result_.stats.blocks, operations_, where));
+  if (cancelled)
+    alarm("NC9000", fmt::format("program stopped after {:.0f} s, {} blocks: the run was cancelled", seconds,
+                                result_.stats.blocks));
   alarm("NC9000", fmt::format("program stopped after {:.0f} s, {} blocks (raise --max-seconds to let it run longer){}",
                               seconds, result_.stats.blocks, where));
 }
