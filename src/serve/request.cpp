@@ -88,9 +88,24 @@ app::RunSetup prepare(const app::RunInputs& in) {
   }
 }
 
+std::size_t program_blocks(std::string_view program) {
+  return static_cast<std::size_t>(std::count_if(program.begin(), program.end(),
+                                                [](char c) { return c == '\n' || c == ';'; })) +
+         1;
+}
+
+std::size_t program_memory(std::string_view program) { return program.size() + program_blocks(program) * kBlockMemory; }
+
 app::RunInputs run_inputs(const ServeConfig& config, const json& j) {
   app::RunInputs in;
   in.text = get_string(j, "program", true);
+  const std::size_t budget = config.max_body * kProgramMemoryPerBodyByte;
+  if (program_memory(*in.text) > budget)
+    throw ApiError(413, fmt::format("the program is too large to run here: its {} blocks would take about {} MB of "
+                                    "memory once read, over the {} MB the server allows a program ({} times "
+                                    "--max-body); raise --max-body, or run it with ncurve run",
+                                    program_blocks(*in.text), program_memory(*in.text) >> 20, budget >> 20,
+                                    kProgramMemoryPerBodyByte));
   in.program = get_string(j, "name").value_or("program.nc");
   if (in.program.empty() || in.program == "-") throw ApiError(400, "\"name\" names the program's file, e.g. prog.nc");
   choose_profile(config, j, in);
