@@ -63,6 +63,8 @@ public:
   }
   // The request was cut (its deadline or byte bound): what follows on the socket is not a request.
   bool cut() const { return cut_; }
+  // Bytes of the next request already read from the socket.
+  bool buffered() const { return begin_ < end_; }
 
   bool is_readable() const override { return wait(sock_, POLLIN, window(read_timeout_)); }
   bool is_writable() const override { return wait(sock_, POLLOUT, window(write_timeout_)); }
@@ -199,6 +201,8 @@ HttpServer::~HttpServer() {
 
 Connection* HttpServer::current() { return serving; }
 
+void HttpServer::widen_backlog() { ::listen(svr_sock_, SOMAXCONN); }
+
 void HttpServer::shut_down() {
   {
     std::unique_lock lock(mutex_);
@@ -238,7 +242,8 @@ bool HttpServer::process_and_close_socket(socket_t sock) {
     serving = &connection;
     DeadlineStream stream(sock, limits_, timeout(read_timeout_sec_, read_timeout_usec_),
                           timeout(write_timeout_sec_, write_timeout_usec_));
-    for (std::size_t left = keep_alive_max_count_; left > 0 && wait_for_request(sock); --left) {
+    for (std::size_t left = keep_alive_max_count_; left > 0 && (stream.buffered() || wait_for_request(sock));
+         --left) {
       stream.begin_request();
       bool closed = false;
       ok = process_request(stream, left == 1, closed, nullptr);

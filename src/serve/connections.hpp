@@ -33,6 +33,9 @@ public:
   ~HttpServer() override;
   // The connection the calling thread serves (nullptr outside a request).
   static Connection* current();
+  // Once bound: a queue of connections not yet accepted as long as the system allows (httplib
+  // asks for 5, and a burst of more waits a second for the client to try again).
+  void widen_backlog();
   // Stops listening, cancels the work under way and ends every connection: listen returns.
   void shut_down();
   bool stopping() const { return stopping_; }

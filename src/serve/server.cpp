@@ -204,6 +204,7 @@ int Server::bind(const std::string& host, int port) {
   if (bound <= 0)
     throw std::runtime_error(fmt::format("cannot listen on {}:{} (in use, or not an address of this machine)", host,
                                          port));
+  http_->widen_backlog();
   hosts_.clear();
   std::vector<std::string> names{"127.0.0.1", "localhost", "::1", host};
   names.insert(names.end(), config_.allow_hosts.begin(), config_.allow_hosts.end());
