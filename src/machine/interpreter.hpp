@@ -30,7 +30,8 @@ struct Step;
 }
 
 struct RunOptions {
-  // a runaway program is stopped after this many steps: a block is one, an expression one an operation
+  // a runaway program is stopped after this many steps: a block is one, an expression one an operation,
+  // a move past a block's first one (a cycle's holes and pecks)
   std::uint64_t max_steps = 200'000'000;
   double max_seconds = 60;  // or after this long (wall clock); 0: no limit
   std::vector<std::pair<int, double>> presets;  // --set "#100=5"
@@ -103,6 +104,8 @@ private:
   // execution
   void step();
   void check_runaway();  // --max-steps and --max-seconds
+  void count_block_move();  // a block's moves past its first count as steps
+  std::uint64_t steps() const;
   void exec_nc(const nc::Block& b);
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
@@ -395,6 +398,8 @@ private:
   std::set<std::pair<const nc::Block*, std::string>> warned_once_;  // warn_once: given already
   std::unordered_set<const nc::Block*> repeat_warned_;  // blocks already warned of a repeated address
   std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
+  std::uint64_t block_moves_ = 0;  // moves past the first of their block, counted as steps too
+  std::uint64_t moving_block_ = 0;  // the count of blocks when the last move was made
   std::chrono::steady_clock::time_point started_;
 
   // modal state

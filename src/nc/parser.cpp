@@ -8,6 +8,7 @@
 #include <iterator>
 #include <span>
 
+#include "base/bounds.hpp"
 #include "base/memory.hpp"
 #include "nc/program.hpp"
 
@@ -863,8 +864,25 @@ bool cannot_be_a_target(std::string_view raw, const Program& p) {
 
 }  // namespace
 
+std::size_t compiled_size(std::size_t text_bytes, std::size_t lines) {
+  return text_bytes + lines * (sizeof(std::size_t) + sizeof(Block) + sizeof(Word));
+}
+
+std::size_t memory_bound(std::size_t text_bytes, const ParseOptions& options) {
+  return options.max_memory ? options.max_memory : std::max<std::size_t>(10 * text_bytes, std::size_t{256} << 20);
+}
+
 ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) {
   const int max_digits = std::clamp(options.max_digits, 1, kMostDigits);
+  if (const std::size_t need = compiled_size(file->text().size(), file->line_count()),
+      bound = memory_bound(file->text().size(), options);
+      need > bound)
+    throw base::BoundExceeded(fmt::format(
+        "{}: {} lines in {:.1f} MB would take at least {:.0f} MB of memory once read ({:.0f} bytes a line), more than "
+        "the bound of {:.0f} MB ({}); --max-memory MB raises it",
+        file->name(), file->line_count(), file->text().size() / 1e6, need / 1e6,
+        static_cast<double>(need) / static_cast<double>(std::max<std::size_t>(file->line_count(), 1)), bound / 1e6,
+        options.max_memory ? "--max-memory" : "ten times the program's size, at least 256 MB"));
   ParseResult result;
   std::uint32_t line = 0;
   Program* current = nullptr;

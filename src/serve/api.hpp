@@ -24,12 +24,10 @@ struct ServeConfig {
   std::vector<std::string> allow_hosts; // names the Host header may give besides the bound address
 };
 
-// The memory a program takes once read, about: its text and kBlockMemory bytes a block (measured
-// on programs of one-word blocks). A run or analyze request whose program would take more than
-// kProgramMemoryPerBodyByte times --max-body is refused (413) before it is read.
-inline constexpr std::size_t kBlockMemory = 100;
+// A run or analyze request whose program would take more than kProgramMemoryPerBodyByte times
+// --max-body once read (nc::compiled_size of its bytes and lines) is refused (413) before it is read.
 inline constexpr std::size_t kProgramMemoryPerBodyByte = 8;
-std::size_t program_blocks(std::string_view program);  // its line and ';' ends, plus one
+std::size_t program_lines(std::string_view program);
 std::size_t program_memory(std::string_view program);
 
 // A request the API refuses: the HTTP status and what is wrong.

@@ -396,14 +396,14 @@ TEST(ServeGuard, ProgramOverTheMemoryBudgetIs413) {
   Running s(config);
   auto c = s.client();
   std::string words;
-  for (int i = 0; i < 200'000; ++i) words += "X1\n";  // 600 kB, 200,000 blocks: about 20 MB
+  for (int i = 0; i < 200'000; ++i) words += "X1\n";  // 600 kB, 200,000 blocks: 20 MB and more
   for (const char* path : {"/api/run", "/api/analyze"}) {
     auto r = c.Post(path, json{{"program", words}}.dump(), "application/json");
     ASSERT_TRUE(r) << path;
     EXPECT_EQ(r->status, 413) << path;
     const std::string error = json::parse(r->body)["error"];
     EXPECT_NE(error.find("--max-body"), std::string::npos) << error;
-    EXPECT_NE(error.find("200001 blocks"), std::string::npos) << error;
+    EXPECT_NE(error.find("200001 lines"), std::string::npos) << error;
   }
   // as many bytes in longer blocks are run
   std::string lines = "G01 F1000.\n";
@@ -412,7 +412,7 @@ TEST(ServeGuard, ProgramOverTheMemoryBudgetIs413) {
   auto r = c.Post("/api/run", json{{"program", lines}, {"moves", false}}.dump(), "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200) << r->body.substr(0, 300);
-  EXPECT_EQ(program_blocks("X1\nX2;X3"), 3u);
+  EXPECT_EQ(program_lines("X1\nX2\nX3"), 3u);
 }
 
 }  // namespace
