@@ -66,7 +66,6 @@ const char* reason(int status) {
                      "/api/curves, /api/files)";
     case 405: return "method not allowed";
     case 413: return "the request body is too large";
-    case 503: return "the server is stopping";
     default: return "the request failed";
   }
 }
@@ -158,7 +157,8 @@ std::optional<Answer> Server::refuse(const httplib::Request& req) const {
   const std::string local = req.local_port > 0 ? host_port(req.local_addr, req.local_port) : std::string();
   auto ours = [&](const std::string& host) {
     const std::string h = lower(host);
-    return (!local.empty() && h == local) || std::find(hosts_.begin(), hosts_.end(), h) != hosts_.end();
+    const bool local_host = !local.empty() && (h == local || (req.local_port == 80 && h + ":80" == local));
+    return local_host || std::find(hosts_.begin(), hosts_.end(), h) != hosts_.end();
   };
   const std::string host = req.get_header_value("Host");
   if (!ours(host))
