@@ -299,7 +299,8 @@ void Interpreter::count_block_move() {
 void Interpreter::check_runaway() {
   const bool steps = this->steps() >= options_.max_steps;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  if (!steps && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
+  const bool cancelled = options_.cancel && options_.cancel->load(std::memory_order_relaxed);
+  if (!steps && !cancelled && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
   std::string where;
   if (moving_block_ == result_.stats.blocks && block_moves_ > 0 && block_) {
     where = fmt::format("; the block at {}:{} makes move after move", prog_->file->name(), block_->line);
@@ -315,6 +316,9 @@ void Interpreter::check_runaway() {
     alarm("NC9000", fmt::format("program stopped after {} steps ({} blocks, {} moves past a block's first and {} "
                                 "expression operations; raise --max-steps to let it run longer){}",
                                 this->steps(), result_.stats.blocks, block_moves_, operations_, where));
+  if (cancelled)
+    alarm("NC9000", fmt::format("program stopped after {:.0f} s, {} blocks: the run was cancelled", seconds,
+                                result_.stats.blocks));
   alarm("NC9000", fmt::format("program stopped after {:.0f} s, {} blocks (raise --max-seconds to let it run longer){}",
                               seconds, result_.stats.blocks, where));
 }

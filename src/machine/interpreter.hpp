@@ -1,6 +1,7 @@
 // Executes a Program as a FANUC 0i/30i control would, streaming Moves to a sink.
 #pragma once
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -36,6 +37,7 @@ struct RunOptions {
   std::vector<std::pair<int, double>> presets;  // --set "#100=5"
   bool nose_centre = false;  // lathe: write the tool-nose centre's path, not the imaginary tip's
   double path_tolerance = 0.001;  // mm: G12.1/G07.1 moves are written within this of the contour (--arc-tol)
+  const std::atomic<bool>* cancel = nullptr;  // when set, the run stops (NC9000) at its next bound check
 };
 
 struct RunStats {
