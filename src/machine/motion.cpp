@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/restore.hpp"
 #include "machine/g_code_table.hpp"
 #include "machine/interpreter.hpp"
 
@@ -335,7 +336,20 @@ void Interpreter::emit_programmed(Move& m) {
   const PlaneAxes pa = plane_axes(plane_);
   const bool in_plane = m.kind == MoveKind::arc ? m.plane == plane_
                         : m.is_motion() && (m.start[pa.p] != m.end[pa.p] || m.start[pa.q] != m.end[pa.q]);
-  if (!in_plane) return comp_->other(m);
+  if (!in_plane) {
+    if (!comp_drop_ || !m.is_motion()) return comp_->other(m);
+    // the tool leaves its vector for the programmed point though the block does not move in the plane
+    block_plane_motion_ = true;
+    comp_->cancel_without_motion(m);
+    Move to = m;
+    to.start = comp_->tool_now();
+    to.length = line_length(to.start.data(), to.end.data());
+    double slowest = 0;
+    for (int a = 0; a < kAxes; ++a)
+      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(to.end[a] - to.start[a]) / profile_.rapid_rate[a]);
+    to.seconds = slowest * 60.0;
+    return comp_->element(to, 0, 0);
+  }
   block_plane_motion_ = true;
   int side = comp_suspended_ ? 0 : comp_side_;
   if (xf_on_ && xf_.reverses(pa.p, pa.q)) side = -side;  // a mirror image swaps G41 and G42
@@ -609,12 +623,13 @@ void Interpreter::reference_return(int g) {
   if (rolls_) roll_over(mid);
   remember_intermediate(mid);  // for G29 (reference_moves.cpp)
   // in offset mode the vector is cancelled at the intermediate point and restored at the next move
+  const base::RestoreOnExit<bool> restore(comp_suspended_);
   comp_suspended_ = true;
-  struct Restore {
-    bool& flag;
-    ~Restore() { flag = false; }
-  } restore{comp_suspended_};
-  linear(MoveKind::rapid, mid);
+  {
+    const base::RestoreOnExit<bool> restore_drop(comp_drop_);
+    comp_drop_ = names_plane_axis();
+    linear(MoveKind::rapid, mid);
+  }
   AxisVector ref = pos_;
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
@@ -638,9 +653,11 @@ void Interpreter::machine_coordinate_move() {
   for (int a = 0; a < kAxes; ++a) target[a] = given[a] - origin_[a] - tool_shift_[a];
   for (int a = 0; a < kAxes; ++a)
     if (given[a] == machine[a]) target[a] = pos_[a];
-  comp_suspended_ = true;  // G53 in offset mode: the vector is cancelled, restored at the next move
+  // G53 in offset mode: the vector is cancelled, restored at the next move
+  const base::RestoreOnExit<bool> restore(comp_suspended_), restore_drop(comp_drop_);
+  comp_suspended_ = true;
+  comp_drop_ = names_plane_axis();
   linear(MoveKind::rapid, target);
-  comp_suspended_ = false;
 }
 
 void Interpreter::set_coordinate_system(int g) {
