@@ -161,7 +161,9 @@ private:
   void set_origin();
   void warn_mixed_decimal_points(const nc::Program& p);
   void note_extent(const AxisVector& p);
-  double feed_seconds(double length, double mean_radius) const;
+  double minutes_per_rev(double r0, double r1) const;
+  double feed_seconds(double length, double r0, double r1) const;
+  double arc_feed_seconds(const Move& m, double planar) const;
 
   // drilling canned cycles (canned_cycles.cpp, boring_cycles.cpp, tapping_cycles.cpp)
   struct Hole;
