@@ -45,7 +45,7 @@ int gcode_for_group(int group, const Modal& m) {
       case 8: return 25;  // spindle speed fluctuation detection off
       case 9: return stroke;
       case 10: return cycle;
-      case 11: return m.return_initial ? 98 : 99;
+      case 11: return m.system == 'A' ? 0 : m.return_initial ? 98 : 99;  // A: G98/G99 are group 05
       case 16: return m.plane;
       case 21: return m.polar_interpolation ? 121 : 131;  // tenths: G12.1 / G13.1
       default: return 0;

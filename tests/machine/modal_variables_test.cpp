@@ -70,6 +70,7 @@ TEST(ModalVariables, LatheSystemA) {
   expect_reads(a, "", 4009, {{"G23", 23}, {"G22", 22}});
   expect_reads(a, "G00 X0 Z5.\n", 4010, {{"", 80}, {"G83 Z-10. R2. Q2000 F0.1", 83}, {"G80", 80}});
   expect_reads(a, "", 4016, {{"", 18}});
+  expect_reads(a, "", 4011, {{"", 0}, {"G50 X100. Z50.", 0}});
 }
 
 TEST(ModalVariables, LatheSystemsBAndC) {
