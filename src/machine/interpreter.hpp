@@ -163,7 +163,9 @@ private:
   void set_origin();
   void warn_mixed_decimal_points(const nc::Program& p);
   void note_extent(const AxisVector& p);
-  double feed_seconds(double length, double mean_radius) const;
+  double minutes_per_rev(double r0, double r1) const;
+  double feed_seconds(double length, double r0, double r1) const;
+  double arc_feed_seconds(const Move& m, double planar) const;
 
   // drilling canned cycles (canned_cycles.cpp, boring_cycles.cpp, tapping_cycles.cpp)
   struct Hole;
@@ -300,6 +302,7 @@ private:
   // ---- reference position moves, single direction positioning, skip and stored stroke checks
   // (reference_moves.cpp, single_direction.cpp, skip.cpp, stroke_check.cpp) ----
   unsigned block_axes() const;  // a bit per axis the block names (U, V, W too on system A)
+  bool names_plane_axis() const;  // of the offset plane
   void remember_intermediate(const AxisVector& mid);  // G28/G30/G30.1: the point G29 goes through
   void reference_check();                 // G27
   void return_from_reference();           // G29
@@ -461,6 +464,7 @@ private:
   std::optional<RadiusCompensation> comp_;
   int comp_side_ = 0;                  // +1 G41, -1 G42, 0 G40
   bool comp_suspended_ = false;        // G28/G30/G53 in offset mode: moves without the vector
+  bool comp_drop_ = false;             // and the vector goes even where the move stays put in the plane
   bool block_plane_motion_ = false;    // the block moved in the offset plane
   bool macro_call_block_ = false;      // the block called a macro (G65, G66, custom G/M code)
   std::optional<V2> cancel_direction_;  // I J K of a G40 block

@@ -419,7 +419,7 @@ void Interpreter::emit_cycle_path(const std::vector<mrc::Step>& path, bool trans
     const double rs = std::hypot(pos_[0] - s.centre.x, pos_[2] - s.centre.z);
     m.length = std::fabs(s.sweep) * rs;
     m.feed = feed_;
-    m.seconds = feed_seconds(m.length, s.centre.x);
+    m.seconds = arc_feed_seconds(m, m.length);
     pos_ = target;
     emit(m);
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/restore.hpp"
 #include "machine/g_code_table.hpp"
 #include "machine/interpreter.hpp"
 
@@ -335,7 +336,20 @@ void Interpreter::emit_programmed(Move& m) {
   const PlaneAxes pa = plane_axes(plane_);
   const bool in_plane = m.kind == MoveKind::arc ? m.plane == plane_
                         : m.is_motion() && (m.start[pa.p] != m.end[pa.p] || m.start[pa.q] != m.end[pa.q]);
-  if (!in_plane) return comp_->other(m);
+  if (!in_plane) {
+    if (!comp_drop_ || !m.is_motion()) return comp_->other(m);
+    // the tool leaves its vector for the programmed point though the block does not move in the plane
+    block_plane_motion_ = true;
+    comp_->cancel_without_motion(m);
+    Move to = m;
+    to.start = comp_->tool_now();
+    to.length = line_length(to.start.data(), to.end.data());
+    double slowest = 0;
+    for (int a = 0; a < kAxes; ++a)
+      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(to.end[a] - to.start[a]) / profile_.rapid_rate[a]);
+    to.seconds = slowest * 60.0;
+    return comp_->element(to, 0, 0);
+  }
   block_plane_motion_ = true;
   int side = comp_suspended_ ? 0 : comp_side_;
   if (xf_on_ && xf_.reverses(pa.p, pa.q)) side = -side;  // a mirror image swaps G41 and G42
@@ -432,16 +446,52 @@ void Interpreter::emit_event(MoveKind kind, int code) {
   emit(m);
 }
 
-// Time at the programmed feed. Feed per revolution needs the spindle speed: S, or under G96 the speed
-// that gives S m/min at the mean X radius of the move, clamped by G50 S (G92 S on systems B/C).
-double Interpreter::feed_seconds(double length, double mean_radius) const {
-  double rpm = speed_ > 0 ? speed_ : profile_.spindle_speed_for_time;
-  if (css_ && speed_ > 0) {
-    rpm = 1000.0 * speed_ / (2 * std::numbers::pi * std::max(std::fabs(mean_radius), 0.5));
-    if (max_spindle_ > 0) rpm = std::min(rpm, max_spindle_);
+// The mean of 1 / spindle speed (min/rev) along a move whose X radius runs linearly from r0 to r1:
+// S rev/min, or under G96 the speed n(r) = 1000 S / (2 pi |r|) that gives S m/min at radius r (taken
+// at 0.5 mm nearer the centre), at most G50 S (G92 S on systems B/C). Then 1/n(r) = k max(|r|, rho)
+// with k = 2 pi / (1000 S) and rho the radius below which the clamp holds: its mean in closed form.
+double Interpreter::minutes_per_rev(double r0, double r1) const {
+  if (!css_ || speed_ <= 0) {
+    const double rpm = speed_ > 0 ? speed_ : profile_.spindle_speed_for_time;
+    return rpm > 0 ? 1.0 / rpm : 0.0;
   }
-  double mm_per_min = feed_per_rev_ ? feed_ * rpm : feed_;
-  return mm_per_min > 0 ? length / mm_per_min * 60.0 : 0.0;
+  const double k = 2 * std::numbers::pi / (1000.0 * speed_);
+  const double rho = std::max(0.5, max_spindle_ > 0 ? 1.0 / (k * max_spindle_) : 0.0);
+  auto F = [rho](double r) {  // an antiderivative of max(|r|, rho), odd in r
+    const double u = std::fabs(r);
+    const double g = u <= rho ? rho * u : (u * u + rho * rho) / 2;
+    return r < 0 ? -g : g;
+  };
+  return k * (std::fabs(r1 - r0) < 1e-12 ? std::max(std::fabs(r0), rho) : (F(r1) - F(r0)) / (r1 - r0));
+}
+
+// Time at the programmed feed along a move whose X radius runs linearly from r0 to r1.
+double Interpreter::feed_seconds(double length, double r0, double r1) const {
+  if (feed_ <= 0) return 0.0;
+  return feed_per_rev_ ? length / feed_ * 60.0 * minutes_per_rev(r0, r1) : length / feed_ * 60.0;
+}
+
+// The same along an arc, whose X radius is not linear in the distance: Simpson's rule on 64 pieces of
+// equal angle (the time per mm at one point is feed_seconds at constant radius).
+double Interpreter::arc_feed_seconds(const Move& m, double planar) const {
+  const PlaneAxes pa = plane_axes(m.plane);
+  if (!feed_per_rev_ || !css_ || speed_ <= 0 || (pa.p != 0 && pa.q != 0))
+    return feed_seconds(planar, m.start[0], m.end[0]);
+  const double a0 = std::atan2(m.start[pa.q] - m.center[pa.q], m.start[pa.p] - m.center[pa.p]);
+  const double rs = std::hypot(m.start[pa.p] - m.center[pa.p], m.start[pa.q] - m.center[pa.q]);
+  const double re = std::hypot(m.end[pa.p] - m.center[pa.p], m.end[pa.q] - m.center[pa.q]);
+  auto per_mm = [&](double t) {  // at the fraction t of the arc
+    const double r = rs + (re - rs) * t, a = a0 + m.sweep * t;
+    const double x = pa.p == 0 ? m.center[0] + r * std::cos(a) : m.center[0] + r * std::sin(a);
+    return feed_seconds(1.0, x, x);
+  };
+  constexpr int kPieces = 64;
+  double sum = 0;
+  for (int i = 0; i < kPieces; ++i) {
+    const double t0 = static_cast<double>(i) / kPieces, t1 = static_cast<double>(i + 1) / kPieces;
+    sum += per_mm(t0) + 4 * per_mm((t0 + t1) / 2) + per_mm(t1);
+  }
+  return planar / kPieces / 6 * sum;
 }
 
 void Interpreter::linear(MoveKind kind, const AxisVector& target) {
@@ -455,7 +505,7 @@ void Interpreter::linear(MoveKind kind, const AxisVector& target) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
     m.feed = feed_;
     const double fed = extra_axes_ ? combined_length(pos_, target, m.length) : m.length;  // F on every axis
-    m.seconds = feed_seconds(fed, (pos_[0] + target[0]) / 2);
+    m.seconds = feed_seconds(fed, pos_[0], target[0]);
   } else {  // rapid axes move independently: the slowest axis sets the time
     double slowest = 0;
     for (int a = 0; a < kAxes; ++a)
@@ -555,7 +605,7 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
   m.feed = feed_;
   // Helical interpolation: F is the feed along the arc in the plane, the linear axis following at
   // F x its travel / the arc's length (the manuals' helical interpolation; parameter HTG = 0, factory)
-  m.seconds = feed_seconds(planar, m.center[0]);
+  m.seconds = arc_feed_seconds(m, planar);
   // extents: the quadrant points the arc passes (in G12.1/G07.1 the machine's moves give them)
   for (int k = 0; k < 4 && !developed_; ++k) {
     double ang = k * std::numbers::pi / 2;
@@ -609,12 +659,13 @@ void Interpreter::reference_return(int g) {
   if (rolls_) roll_over(mid);
   remember_intermediate(mid);  // for G29 (reference_moves.cpp)
   // in offset mode the vector is cancelled at the intermediate point and restored at the next move
+  const base::RestoreOnExit<bool> restore(comp_suspended_);
   comp_suspended_ = true;
-  struct Restore {
-    bool& flag;
-    ~Restore() { flag = false; }
-  } restore{comp_suspended_};
-  linear(MoveKind::rapid, mid);
+  {
+    const base::RestoreOnExit<bool> restore_drop(comp_drop_);
+    comp_drop_ = names_plane_axis();
+    linear(MoveKind::rapid, mid);
+  }
   AxisVector ref = pos_;
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
@@ -638,9 +689,11 @@ void Interpreter::machine_coordinate_move() {
   for (int a = 0; a < kAxes; ++a) target[a] = given[a] - origin_[a] - tool_shift_[a];
   for (int a = 0; a < kAxes; ++a)
     if (given[a] == machine[a]) target[a] = pos_[a];
-  comp_suspended_ = true;  // G53 in offset mode: the vector is cancelled, restored at the next move
+  // G53 in offset mode: the vector is cancelled, restored at the next move
+  const base::RestoreOnExit<bool> restore(comp_suspended_), restore_drop(comp_drop_);
+  comp_suspended_ = true;
+  comp_drop_ = names_plane_axis();
   linear(MoveKind::rapid, target);
-  comp_suspended_ = false;
 }
 
 void Interpreter::set_coordinate_system(int g) {

@@ -24,6 +24,13 @@ unsigned Interpreter::block_axes() const {
   return axes;
 }
 
+// A G28, G30, G29 or G53 naming an axis of the offset plane leaves the compensation vector on its
+// first move, even one that stays put in the plane (docs/compensation-spec.md section 6).
+bool Interpreter::names_plane_axis() const {
+  const PlaneAxes pa = plane_axes(plane_);
+  return (block_axes() & ((1u << pa.p) | (1u << pa.q))) != 0;
+}
+
 // The control keeps the intermediate point of each axis a G28, G30 or G30.1 names, in work
 // coordinates: after a change of coordinate system it lies at the same coordinates of the new one.
 void Interpreter::remember_intermediate(const AxisVector& mid) {
@@ -76,8 +83,9 @@ void Interpreter::return_from_reference() {
   axis_target(target);
   if (rolls_) roll_over(target);
   {
-    base::RestoreOnExit<bool> restore(comp_suspended_);
+    base::RestoreOnExit<bool> restore(comp_suspended_), restore_drop(comp_drop_);
     comp_suspended_ = true;
+    comp_drop_ = names_plane_axis();
     linear(MoveKind::rapid, mid);
   }
   linear(MoveKind::rapid, target);

@@ -52,12 +52,7 @@ void Interpreter::thread_cut(const AxisVector& to, double lead, double angle) {
   m.thread_start = angle < 0 ? -1 : static_cast<std::int32_t>(std::lround(angle * 1000));
   double along = 0;
   for (int a = 0; a < 3; ++a) along = std::max(along, std::fabs(to[a] - pos_[a]));
-  double rpm = speed_ > 0 ? speed_ : profile_.spindle_speed_for_time;
-  if (css_ && speed_ > 0) {
-    rpm = 1000.0 * speed_ / (2 * std::numbers::pi * std::max(std::fabs((pos_[0] + to[0]) / 2), 0.5));
-    if (max_spindle_ > 0) rpm = std::min(rpm, max_spindle_);
-  }
-  m.seconds = along / (lead * rpm) * 60.0;
+  m.seconds = along / lead * 60.0 * minutes_per_rev(pos_[0], to[0]);
   pos_ = to;
   emit(m);
 }

@@ -12,27 +12,56 @@ namespace ncurve::machine {
 using nc::Value;
 
 namespace {
-int gcode_for_group(int group, int motion, int plane, bool incremental, bool feed_per_rev, bool inch, bool css,
-                    int length_comp, bool modal_call, int work_index, int exact_stop, bool lathe_a, int cycle,
-                    bool return_initial) {
+// The modal state #4001..#4022 read: the G code of each group (the 0i-F / 30i-B G code tables of the
+// machining center and of the lathe, whose groups differ: G96/G97 are group 02 on a lathe, 13 on a
+// mill; the plane is 02 on a mill, 16 on a lathe; G22/G23 are 04 on a mill, 09 on a lathe).
+struct Modal {
+  bool lathe = false;
+  char system = 'A';  // lathe G code system
+  int motion = 0, plane = 17, comp_side = 0, length_comp = 49, work_index = 1, exact_stop = 64, cycle = 0;
+  bool incremental = false, feed_per_rev = false, inch = false, css = false, modal_call = false,
+       return_initial = true, stroke_check = true, polar_interpolation = false;
+};
+
+int gcode_for_group(int group, const Modal& m) {
+  const int comp = m.comp_side > 0 ? 41 : m.comp_side < 0 ? 42 : 40;
+  const int stroke = m.stroke_check ? 22 : 23;
+  const int cycle = m.cycle == 0 ? 80 : m.cycle;
   switch (group) {
-    case 1: return motion;
-    case 2: return plane;
-    case 3: return incremental ? 91 : 90;
-    case 4: return 22;
-    case 5: return lathe_a ? (feed_per_rev ? 99 : 98) : (feed_per_rev ? 95 : 94);
-    case 6: return inch ? 20 : 21;
-    case 7: return 40;
-    case 8: return length_comp;
-    case 9: return cycle == 0 ? 80 : cycle;
-    case 10: return return_initial ? 98 : 99;
+    case 1: return m.motion;
+    case 3: return m.incremental ? 91 : 90;
+    case 5: return m.lathe && m.system == 'A' ? (m.feed_per_rev ? 99 : 98) : (m.feed_per_rev ? 95 : 94);
+    case 6: return m.lathe && m.system == 'C' ? (m.inch ? 70 : 71) : (m.inch ? 20 : 21);
+    case 7: return comp;
+    case 12: return m.modal_call ? 66 : 67;
+    case 14: return m.work_index <= 6 ? 53 + m.work_index : 54;
+    case 15: return m.exact_stop;
+    default: break;
+  }
+  if (m.lathe) {
+    switch (group) {
+      case 2: return m.css ? 96 : 97;
+      case 4: return 69;  // mirror image for double turrets / balance cut off
+      case 8: return 25;  // spindle speed fluctuation detection off
+      case 9: return stroke;
+      case 10: return cycle;
+      case 11: return m.system == 'A' ? 0 : m.return_initial ? 98 : 99;  // A: G98/G99 are group 05
+      case 16: return m.plane;
+      case 21: return m.polar_interpolation ? 121 : 131;  // tenths: G12.1 / G13.1
+      default: return 0;
+    }
+  }
+  switch (group) {
+    case 2: return m.plane;
+    case 4: return stroke;
+    case 8: return m.length_comp;
+    case 9: return cycle;
+    case 10: return m.return_initial ? 98 : 99;
     case 11: return 50;
-    case 12: return modal_call ? 66 : 67;
-    case 13: return css ? 96 : 97;
-    case 14: return work_index <= 6 ? 53 + work_index : 54;
-    case 15: return exact_stop;
+    case 13: return m.css ? 96 : 97;
     case 16: return 69;
     case 17: return 15;
+    case 21: return m.polar_interpolation ? 121 : 131;
     default: return 0;
   }
 }
@@ -167,13 +196,19 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     default: break;
   }
   if (n >= 4001 && n <= 4022) {
-    bool lathe_a = profile_.lathe() && profile_.gcode_system == 'A';
     if (n == 4014 && work_index_ > 6) return Value::of(54.1);
     if (n == 4015 && exact_stop_code_ == 611) return Value::of(61.1);
     if (const auto g = transform_modal(n)) return Value::of(*g);  // G15/G16, G50/G51, G50.1/G51.1, G68/G69
-    return Value::of(gcode_for_group(n - 4000, motion_, plane_, incremental_, feed_per_rev_, inch_, css_,
-                                     length_comp_, modal_call_, work_index_, exact_stop_code_, lathe_a, cycle_,
-                                     cycle_return_initial_));
+    Modal m;
+    m.lathe = profile_.lathe();
+    m.system = profile_.gcode_system;
+    m.motion = motion_, m.plane = plane_, m.comp_side = comp_side_, m.length_comp = length_comp_;
+    m.work_index = work_index_, m.exact_stop = exact_stop_code_, m.cycle = cycle_;
+    m.incremental = incremental_, m.feed_per_rev = feed_per_rev_, m.inch = inch_, m.css = css_;
+    m.modal_call = modal_call_, m.return_initial = cycle_return_initial_, m.stroke_check = stroke2_on_;
+    m.polar_interpolation = developed_ && dev_->polar;
+    const int g = gcode_for_group(n - 4000, m);
+    return Value::of(n == 4021 ? g / 10.0 : g);
   }
   if (n >= 4101 && n <= 4130) {
     switch (n - 4100) {

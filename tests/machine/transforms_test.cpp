@@ -188,7 +188,7 @@ TEST(TransformModes, ALatheKeepsG50AsCoordinateSystemSetting) {
   EXPECT_NEAR(m[0].start[0], 50, 1e-9);  // radius
   EXPECT_NEAR(m[0].end[0], 40, 1e-9);
   EXPECT_NEAR(m[0].end[2], 40, 1e-9);
-  EXPECT_EQ(r.var(4011), 50);  // unchanged on a lathe
+  EXPECT_EQ(r.var(4011), 0);  // no scaling: a system A lathe has no group 11 (G98/G99 of B and C)
 }
 
 TEST(TransformModes, IncrementalMoveAfterG69IsWarned) {
