@@ -322,6 +322,18 @@ int program_command(const AnalyzeArgs& a) {
 
 }  // namespace
 
+motion::PlanTotals program_time(const std::string& name, const std::string& text,
+                                const machine::MachineProfile& profile) {
+  machine::ProgramLibrary lib(profile.parse_options());
+  lib.add_text(name, text, true);
+  motion::Planner planner(profile);
+  machine::Interpreter interp(profile, lib);
+  const machine::RunResult r = interp.run(planner);
+  if (!r.ok()) throw std::runtime_error(nc::format(*r.alarm));
+  planner.finish();
+  return planner.totals();
+}
+
 nlohmann::json analyze_json(const std::string& program, const machine::MachineProfile& profile,
                             const motion::PlanTotals& t, const motion::ServoSim* sim) {
   const double mean_feed = t.feed_motion_seconds > 0 ? t.feed_length / t.feed_motion_seconds * 60 : 0;

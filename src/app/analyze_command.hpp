@@ -39,6 +39,10 @@ int analyze_command(const AnalyzeArgs& args);
 // The cycle time of `analyze --json` from the planner's totals (and the servo's contour error).
 nlohmann::json analyze_json(const std::string& program, const machine::MachineProfile& profile,
                             const motion::PlanTotals& totals, const motion::ServoSim* sim);
+// The cycle time analyze estimates for a program's text on a machine (feed planning, block and macro
+// processing time). Throws std::runtime_error with the alarm when the program stops on one.
+motion::PlanTotals program_time(const std::string& name, const std::string& text,
+                                const machine::MachineProfile& profile);
 // Lets the servo model settle after the last block (five time constants of the slowest loop).
 void settle(motion::ServoSim& sim, const machine::MachineProfile& profile);
 
