@@ -37,6 +37,11 @@ printf '63*SIN[t]-7.5*SIN[6*t]+20*SIN[ATAN[SIN[5*t]]/[1.4-COS[5*t]]-t]\nSQRT[ABS
 cp examples/*.csv "$dir/corpus-rows/"
 printf '100,-5,-20\n100,5\n' >"$dir/corpus-rows/dish"
 cp profiles/*.toml tests/programs/*.toml "$dir/corpus-profiles/"
+# nesting past the bound (a dotted key of 40 parts, arrays 40 deep), refused before toml++ reads it
+printf '[machine]\nname = "deep"\n[%sb]\nx = 1\n' "$(printf 'a.%.0s' {1..40})" >"$dir/corpus-profiles/deep-key"
+printf '[machine]\nx = %s1%s\n' "$(printf '[%.0s' {1..40})" "$(printf ']%.0s' {1..40})" >"$dir/corpus-profiles/deep-array"
+# a cycle of endless pecks: its moves count as steps
+printf 'G00 X0 Y0 Z10.\nG91 G83 X1. Z-1000000. R-5. Q0.001 K1000 F100.\nM30\n' >"$dir/corpus-programs/endless-pecks.nc"
 # command lines: arguments separated by NUL bytes
 printf 'gen\x00ellipse\x00--tol\x000.01\x00--form\x00cycle' >"$dir/corpus-cli/gen"
 printf 'analyze\x00circle\x00--radius\x0050\x00--feed\x001000\x00--kv\x0030,25' >"$dir/corpus-cli/circle"

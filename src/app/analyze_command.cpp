@@ -118,7 +118,7 @@ int circle_command(const AnalyzeArgs& a) {
   const std::string held = r.feed_reached < test.feed
                                ? fmt::format(" (held to {:.6g} mm/min on this arc: figures at that feed)", r.feed_reached)
                                : "";
-  if (!a.plot.empty() && !save(a.plot, report::polar_svg(r, test, plane, subtitle), {a.in.program})) return 2;
+  if (!a.plot.empty() && !save(a.plot, report::polar_svg(r, test, plane, subtitle), {a.in.machine})) return 2;
   if (a.json) {
     nlohmann::json j;
     j["radius"] = test.radius;
@@ -208,7 +208,7 @@ int program_command(const AnalyzeArgs& a) {
   std::optional<io::OutputFile> blocks_file;
   if (!a.blocks.empty()) {
     try {
-      blocks_file.emplace(a.blocks, std::vector<std::string>{a.in.program});
+      blocks_file.emplace(a.blocks, setup.inputs);
     } catch (const io::OutputError& e) {
       std::cerr << "ncurve analyze: error: " << e.what() << "\n";
       return 2;
@@ -337,8 +337,8 @@ int program_command(const AnalyzeArgs& a) {
       std::cerr << "\n";
       return 1;
     }
-    if (!a.shape_csv.empty() && !save(a.shape_csv, shape::csv(shape->models), {a.in.program})) return 2;
-    if (!a.shape_plot.empty() && !save(a.shape_plot, shape::plot(*curve, *shape, a.tol, a.in.program), {a.in.program}))
+    if (!a.shape_csv.empty() && !save(a.shape_csv, shape::csv(shape->models), setup.inputs)) return 2;
+    if (!a.shape_plot.empty() && !save(a.shape_plot, shape::plot(*curve, *shape, a.tol, a.in.program), setup.inputs))
       return 2;
   }
   const motion::PlanTotals& t = planner.totals();
@@ -346,7 +346,7 @@ int program_command(const AnalyzeArgs& a) {
   if (!a.plot.empty()) {
     std::string title = fmt::format("{}: feed along the cutting path, cycle time {:.2f} s ({})", a.in.program,
                                     t.seconds, profile.name);
-    if (!save(a.plot, report::feed_svg(trace.samples(), title), {a.in.program})) return 2;
+    if (!save(a.plot, report::feed_svg(trace.samples(), title), setup.inputs)) return 2;
   }
   if (a.json) {
     nlohmann::json j = analyze_json(a.in.program, profile, t, sim ? &*sim : nullptr);

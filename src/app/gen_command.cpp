@@ -299,9 +299,10 @@ int gen_command(const GenArgs& a) {
   const std::string& program = a.macro_only ? r.macro : r.text;
   // "-o -" is the default: the program to standard output, the statistics to the terminal
   const std::string output = a.output == "-" ? std::string() : a.output;
-  if (!output.empty() && !save(output, program)) return 2;
+  const std::vector<std::string> inputs{a.machine_text ? std::string() : a.machine};
+  if (!output.empty() && !save(output, program, inputs)) return 2;
   const auto& s = r.stats;
-  if (!a.plot.empty() && !save(a.plot, gen::plot_svg(r.cutter_centre ? *r.cutter_centre : *curve, o, s))) return 2;
+  if (!a.plot.empty() && !save(a.plot, gen::plot_svg(r.cutter_centre ? *r.cutter_centre : *curve, o, s), inputs)) return 2;
   const GenTimes times = gen_times(*job, r);
   const std::vector<int> commons = common_variables_set(r.text);
   if (a.json) {

@@ -98,6 +98,13 @@ int helicoid_command(const HelicoidArgs& a) {
   std::optional<ContactSearch> search;
   Job job;
   std::vector<double> psis, centre_distances;
+  // refused before the search, which can take long: no output over an input
+  const std::vector<std::string> inputs{a.profile_csv, a.cutter_profile};
+  for (const std::string* out : {&a.output, &a.program, &a.plot})
+    if (io::same_file(*out, inputs)) {
+      std::cerr << "ncurve helicoid: error: " << *out << ": refusing to write over an input file\n";
+      return 2;
+    }
   try {
     const bool seed = a.example == "seed004";
     std::optional<EndProfile> profile;
@@ -307,14 +314,14 @@ int helicoid_command(const HelicoidArgs& a) {
   }
   std::string table = a.json ? contacts_json(job, *search) : a.csv ? contacts_csv(job) : contacts_text(job, *search);
   if (a.output.empty()) std::cout << table;
-  else if (!save(a.output, table)) return 2;
+  else if (!save(a.output, table, inputs)) return 2;
   if (!a.program.empty()) {
     PassOptions o;
     o.z_end = -a.length;
     o.feed = a.feed;
-    if (!save(a.program, pass_program(job, *search, o))) return 2;
+    if (!save(a.program, pass_program(job, *search, o), inputs)) return 2;
   }
-  if (!a.plot.empty() && !save(a.plot, contacts_svg(job, *search))) return 2;
+  if (!a.plot.empty() && !save(a.plot, contacts_svg(job, *search), inputs)) return 2;
   return 0;
 }
 

@@ -75,10 +75,8 @@ int run_command(const app::RunArgs& a) {
   }
   std::optional<io::OutputFile> file;
   if (!output.empty()) {
-    std::vector<std::string> inputs;
-    for (const auto& f : lib.files()) inputs.push_back(f->name());
     try {
-      file.emplace(output, inputs);
+      file.emplace(output, setup.inputs);
     } catch (const io::OutputError& e) {
       std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
       return 2;
@@ -117,10 +115,8 @@ int run_command(const app::RunArgs& a) {
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
   if (gcode) gcode->finish();
   if (!a.dprnt.empty()) {  // what the control sent up to the end or the alarm
-    std::vector<std::string> inputs;
-    for (const auto& f : lib.files()) inputs.push_back(f->name());
     try {
-      io::write_file(a.dprnt, result.output.bytes, inputs);
+      io::write_file(a.dprnt, result.output.bytes, setup.inputs);
     } catch (const io::OutputError& e) {
       std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
       return 2;
@@ -136,9 +132,9 @@ int run_command(const app::RunArgs& a) {
   rep.text_problems_left_out = setup.problems_left_out;
   rep.unchecked_lines = setup.unchecked_lines;
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
-  if (plot && !app::save_plot(a.plot, a.view, *plot, interp, rep.source, lib)) return 2;
+  if (plot && !app::save_plot(a.plot, a.view, *plot, interp, rep.source, setup.inputs)) return 2;
   if (html && !app::save_html(a.html, *html, interp.variable(4006).number() == 20, rep.source,
-                              a.json ? summary : report::summary_json(rep), lib))
+                              a.json ? summary : report::summary_json(rep), setup.inputs))
     return 2;
   if (a.format == "summary") (plot_out || (html_out && !file) ? std::cerr : out) << summary;
   if (file) {

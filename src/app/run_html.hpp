@@ -19,9 +19,7 @@ inline void add_html_option(CLI::App* run, std::string& html) {
 
 // Writes the page; false, with the reason printed, if it failed.
 inline bool save_html(const std::string& path, const report::BackplotData& data, bool inch, const std::string& source,
-                      const std::string& summary_json, const machine::ProgramLibrary& lib) {
-  std::vector<std::string> inputs;
-  for (const auto& f : lib.files()) inputs.push_back(f->name());
+                      const std::string& summary_json, const std::vector<std::string>& inputs) {
   return save(path, report::backplot_html({source, summary_json, data.json(inch)}), inputs);
 }
 

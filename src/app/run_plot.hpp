@@ -28,13 +28,12 @@ inline std::string plot_view_problem(const machine::MachineProfile& profile, con
 
 // Writes the drawing; false, with the reason printed, if it failed.
 inline bool save_plot(const std::string& path, const std::string& view, const report::PathPlot& plot,
-                      machine::Interpreter& interp, const std::string& source, const machine::ProgramLibrary& lib) {
+                      machine::Interpreter& interp, const std::string& source,
+                      const std::vector<std::string>& inputs) {
   report::PathPlotOptions o;
   if (!view.empty()) o.views = {*report::plot_view(view)};
   o.title = source;
   o.inch = interp.variable(4006).number() == 20;  // the program's units as it ended (G20/G21)
-  std::vector<std::string> inputs;
-  for (const auto& f : lib.files()) inputs.push_back(f->name());
   return save(path, plot.svg(o), inputs);
 }
 

@@ -2,8 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <iostream>
-#include <sstream>
 #include <stdexcept>
 
 #include "app/cli_checks.hpp"
@@ -27,6 +32,33 @@ std::pair<int, double> parse_set(const std::string& s) {
   } catch (const std::logic_error&) {
     throw bad();
   }
+}
+
+// All of standard input, or an error: never a program cut short where memory ran out.
+std::string read_standard_input() {
+  std::string text;
+  std::size_t size = 0;
+  try {
+    struct stat st{};  // a file redirected in: read at its size, not by doubling
+    if (::fstat(STDIN_FILENO, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)
+      text.resize(static_cast<std::size_t>(st.st_size) + (1u << 16));
+    for (;;) {
+      if (text.size() - size < (1u << 16)) text.resize(std::max<std::size_t>(text.size() * 2, 1u << 20));
+      const ssize_t got = ::read(STDIN_FILENO, text.data() + size, text.size() - size);
+      if (got == 0) break;
+      if (got < 0) {
+        if (errno == EINTR) continue;
+        throw std::runtime_error(fmt::format("cannot read the program from standard input: {}", std::strerror(errno)));
+      }
+      size += static_cast<std::size_t>(got);
+    }
+    text.resize(size);
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error(fmt::format("out of memory reading standard input ({} MB read): the program was not run; "
+                                         "give it as a file",
+                                         size >> 20));
+  }
+  return text;
 }
 
 }  // namespace
@@ -79,6 +111,10 @@ void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
   cmd->add_option("--max-seconds", in.max_seconds,
                   "stop a program that has not ended after this many seconds of running (default 60; 0: no limit)")
       ->check(non_negative("a time", "s"));
+  cmd->add_option("--max-memory", in.max_memory_mb,
+                  "refuse a program file that would take more than this many MB of memory once read (default: ten "
+                  "times its size, at least 256)")
+      ->check(CLI::Range(1.0, 1e9));
 }
 
 RunSetup prepare_run(const RunInputs& in) {
@@ -90,14 +126,13 @@ RunSetup prepare_run(const RunInputs& in) {
   if (in.machine_text) s.profile = machine::parse_profile(*in.machine_text, in.machine);
   else if (!in.machine.empty()) s.profile = machine::load_profile(in.machine);
   apply_parameters(s.profile, in.params);
-  s.lib = std::make_unique<machine::ProgramLibrary>(s.profile.parse_options());
+  nc::ParseOptions parse_options = s.profile.parse_options();
+  parse_options.max_memory = static_cast<std::size_t>(in.max_memory_mb * 1e6);
+  s.lib = std::make_unique<machine::ProgramLibrary>(parse_options);
   if (in.text) {
     s.problems = s.lib->add_text(in.program, *in.text, true);
   } else if (in.program == "-") {
-    std::ostringstream text;
-    text << std::cin.rdbuf();
-    if (std::cin.bad()) throw std::runtime_error("cannot read the program from standard input");
-    s.problems = s.lib->add_text("<stdin>", text.str(), true);
+    s.problems = s.lib->add_text("<stdin>", read_standard_input(), true);
   } else {
     s.problems = s.lib->add_file(in.program, true);
   }
@@ -107,6 +142,8 @@ RunSetup prepare_run(const RunInputs& in) {
   }
   s.problems_left_out = s.lib->problems_left_out();
   s.unchecked_lines = s.lib->unchecked_lines();
+  for (const auto& f : s.lib->files()) s.inputs.push_back(f->name());
+  if (!in.machine_text && !in.machine.empty()) s.inputs.push_back(in.machine);
   if (s.problems.size() > nc::kMaxDiagnostics) {  // the first hundred of all files together
     s.problems_left_out += s.problems.size() - nc::kMaxDiagnostics;
     s.problems.resize(nc::kMaxDiagnostics);

@@ -22,6 +22,7 @@ struct RunInputs {
   std::vector<std::string> params;  // "6050=102"
   std::uint64_t max_steps = machine::RunOptions{}.max_steps;
   double max_seconds = machine::RunOptions{}.max_seconds;
+  double max_memory_mb = 0;  // a file's compiled form at most; 0: nc::memory_bound's default
   bool nose_centre = false;
   std::optional<std::string> text;          // the program's text, named `program` (not read from a file)
   std::optional<std::string> machine_text;  // a profile's TOML text, named `machine`
@@ -34,6 +35,7 @@ struct RunSetup {
   std::size_t problems_left_out = 0;     // and how many more there are
   std::size_t unchecked_lines = 0;       // lines past those that no jump can reach, not parsed
   machine::RunOptions options;
+  std::vector<std::string> inputs;  // every file read (program, macro folders' files, profile): never an output
 };
 
 // The options naming them: program (required unless program_required is false), --machine, --lib,

@@ -12,6 +12,10 @@ void add_serve_command(CLI::App& app, ServeArgs& a) {
   cmd->add_option("--host", a.host,
                   "address to listen on (default 127.0.0.1, this machine only; 0.0.0.0 lets any machine that can "
                   "reach this one run programs here)");
+  cmd->add_option("--allow-host", a.allow_hosts,
+                  "a name this server is reached by besides --host and the loopback names (the Host header of "
+                  "a request; others are refused); may be repeated")
+      ->allow_extra_args(false);
   cmd->add_option("--machine", a.machine,
                   "the profile of a request that names none (TOML file, or a shipped one by name); default: as run, "
                   "FANUC 3-axis mill, factory parameters")

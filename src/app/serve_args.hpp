@@ -12,6 +12,7 @@ namespace ncurve::app {
 struct ServeArgs {
   int port = 8080;
   std::string host = "127.0.0.1";  // loopback only unless --host says otherwise
+  std::vector<std::string> allow_hosts;  // names a request's Host may give besides --host
   std::string machine;
   std::vector<std::string> libs;
   std::vector<std::string> files;

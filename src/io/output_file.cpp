@@ -4,12 +4,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
 
 #include <fmt/format.h>
 
@@ -18,6 +21,47 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string reason(int err) { return err ? std::strerror(err) : "write error"; }
+
+// The temporaries being written, removed by a SIGINT, SIGTERM or SIGHUP that ends the process
+// before they are renamed (unlink is safe in a signal handler; the names outlive their slot).
+std::array<std::atomic<const char*>, 16> live_temporaries{};
+
+extern "C" void remove_temporaries_and_die(int sig) {
+  for (auto& slot : live_temporaries)
+    if (const char* name = slot.load()) ::unlink(name);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+// Installs the handler for the signals whose action is still the default (a server's own stays).
+void catch_stop_signals() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+      struct sigaction old{};
+      if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
+      struct sigaction act{};
+      act.sa_handler = remove_temporaries_and_die;
+      sigemptyset(&act.sa_mask);
+      ::sigaction(sig, &act, nullptr);
+    }
+  });
+}
+
+void track(const std::string& temporary) {
+  catch_stop_signals();
+  for (auto& slot : live_temporaries) {
+    const char* expected = nullptr;
+    if (slot.compare_exchange_strong(expected, temporary.c_str())) return;
+  }
+}
+
+void untrack(const std::string& temporary) {
+  for (auto& slot : live_temporaries) {
+    const char* expected = temporary.c_str();
+    if (slot.compare_exchange_strong(expected, nullptr)) return;
+  }
+}
 
 // Creates an empty file beside `path` that no other process has; returns its name.
 std::string make_temporary(const std::string& path) {
@@ -59,12 +103,18 @@ OutputFile::OutputFile(std::string path, const std::vector<std::string>& inputs)
   struct stat st{};
   bool in_place = ::stat(path_.c_str(), &st) == 0 && !S_ISREG(st.st_mode);
   if (in_place && S_ISDIR(st.st_mode)) throw OutputError(fmt::format("{}: cannot write: it is a folder", path_));
-  if (!in_place) temporary_ = make_temporary(path_);
+  if (!in_place) {
+    temporary_ = make_temporary(path_);
+    track(temporary_);
+  }
   errno = 0;
   file_.open(in_place ? path_ : temporary_, std::ios::binary | std::ios::trunc);
   if (!file_) {
     int err = errno;
-    if (!temporary_.empty()) std::remove(temporary_.c_str());
+    if (!temporary_.empty()) {
+      untrack(temporary_);
+      std::remove(temporary_.c_str());
+    }
     temporary_.clear();
     throw OutputError(fmt::format("{}: cannot write: {}", path_, reason(err)));
   }
@@ -75,6 +125,7 @@ OutputFile::~OutputFile() {
   if (!committed_ && !temporary_.empty()) {
     file_.close();
     std::remove(temporary_.c_str());
+    untrack(temporary_);
   }
 }
 
@@ -102,6 +153,7 @@ void OutputFile::commit() {
     ::chmod(temporary_.c_str(), 0666 & ~mask);
     if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
       throw OutputError(fmt::format("{}: cannot write: {}", path_, reason(errno)));
+    untrack(temporary_);
     temporary_.clear();
   }
   committed_ = true;

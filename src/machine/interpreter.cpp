@@ -265,7 +265,7 @@ RunResult Interpreter::run(MoveSink& sink) {
     }
     started_ = std::chrono::steady_clock::now();
     while (!finished_) {
-      if (result_.stats.blocks + operations_ >= options_.max_steps || (result_.stats.blocks & 0xFFFF) == 0)
+      if (steps() >= options_.max_steps || (result_.stats.blocks & 0xFFFF) == 0)
         check_runaway();
       step();
     }
@@ -284,13 +284,28 @@ RunResult Interpreter::run(MoveSink& sink) {
   return result_;
 }
 
+std::uint64_t Interpreter::steps() const { return result_.stats.blocks + operations_ + block_moves_; }
+
+// One block making move after move (a canned cycle's holes and pecks) is bounded as a loop is.
+void Interpreter::count_block_move() {
+  if (moving_block_ != result_.stats.blocks) {
+    moving_block_ = result_.stats.blocks;
+    return;
+  }
+  ++block_moves_;
+  if (steps() >= options_.max_steps || (block_moves_ & 0xFFF) == 0) check_runaway();
+}
+
 // A runaway program stops at the loop that keeps it going, naming the option to raise.
 void Interpreter::check_runaway() {
-  const bool steps = result_.stats.blocks + operations_ >= options_.max_steps;
+  const bool steps = this->steps() >= options_.max_steps;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  if (!steps && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
+  const bool cancelled = options_.cancel && options_.cancel->load(std::memory_order_relaxed);
+  if (!steps && !cancelled && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
   std::string where;
-  if (last_back_jump_) {
+  if (moving_block_ == result_.stats.blocks && block_moves_ > 0 && block_) {
+    where = fmt::format("; the block at {}:{} makes move after move", prog_->file->name(), block_->line);
+  } else if (last_back_jump_) {
     const Block& b = *last_back_jump_;
     where = fmt::format("; it keeps looping through {}:{}", last_back_jump_prog_->file->name(), b.line);
     if (b.kind == Statement::end_loop && b.match >= 0)
@@ -299,9 +314,12 @@ void Interpreter::check_runaway() {
     block_ = last_back_jump_;
   }
   if (steps)
-    alarm("NC9000", fmt::format("program stopped after {} steps ({} blocks and {} expression operations; raise "
-                                "--max-steps to let it run longer){}",
-                                result_.stats.blocks + operations_, result_.stats.blocks, operations_, where));
+    alarm("NC9000", fmt::format("program stopped after {} steps ({} blocks, {} moves past a block's first and {} "
+                                "expression operations; raise --max-steps to let it run longer){}",
+                                this->steps(), result_.stats.blocks, block_moves_, operations_, where));
+  if (cancelled)
+    alarm("NC9000", fmt::format("program stopped after {:.0f} s, {} blocks: the run was cancelled", seconds,
+                                result_.stats.blocks));
   alarm("NC9000", fmt::format("program stopped after {:.0f} s, {} blocks (raise --max-seconds to let it run longer){}",
                               seconds, result_.stats.blocks, where));
 }

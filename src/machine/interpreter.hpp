@@ -1,6 +1,7 @@
 // Executes a Program as a FANUC 0i/30i control would, streaming Moves to a sink.
 #pragma once
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -29,12 +30,14 @@ struct Step;
 }
 
 struct RunOptions {
-  // a runaway program is stopped after this many steps: a block is one, an expression one an operation
+  // a runaway program is stopped after this many steps: a block is one, an expression one an operation,
+  // a move past a block's first one (a cycle's holes and pecks)
   std::uint64_t max_steps = 200'000'000;
   double max_seconds = 60;  // or after this long (wall clock); 0: no limit
   std::vector<std::pair<int, double>> presets;  // --set "#100=5"
   bool nose_centre = false;  // lathe: write the tool-nose centre's path, not the imaginary tip's
   double path_tolerance = 0.001;  // mm: G12.1/G07.1 moves are written within this of the contour (--arc-tol)
+  const std::atomic<bool>* cancel = nullptr;  // when set, the run stops (NC9000) at its next bound check
 };
 
 struct RunStats {
@@ -101,6 +104,8 @@ private:
   // execution
   void step();
   void check_runaway();  // --max-steps and --max-seconds
+  void count_block_move();  // a block's moves past its first count as steps
+  std::uint64_t steps() const;
   void exec_nc(const nc::Block& b);
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
@@ -395,6 +400,8 @@ private:
   std::set<std::pair<const nc::Block*, std::string>> warned_once_;  // warn_once: given already
   std::unordered_set<const nc::Block*> repeat_warned_;  // blocks already warned of a repeated address
   std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
+  std::uint64_t block_moves_ = 0;  // moves past the first of their block, counted as steps too
+  std::uint64_t moving_block_ = 0;  // the count of blocks when the last move was made
   std::chrono::steady_clock::time_point started_;
 
   // modal state

@@ -330,6 +330,7 @@ void Interpreter::note_extent(const AxisVector& p) {
 }
 
 void Interpreter::emit(Move& m) {
+  count_block_move();
   m.program = prog_ ? prog_->number : -1;
   m.file = prog_ ? prog_->file.get() : nullptr;
   m.line = block_ ? block_->line : 0;

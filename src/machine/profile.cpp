@@ -1,4 +1,5 @@
 #include "machine/profile.hpp"
+#include "machine/toml_nesting.hpp"
 
 #include <fmt/format.h>
 
@@ -517,6 +518,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
 }
 
 MachineProfile parse_profile(const std::string& toml_text, const std::string& origin) {
+  check_toml_nesting(toml_text, origin);
   toml::table root;
   try {
     root = toml::parse(toml_text, origin);

@@ -107,7 +107,14 @@ constexpr int kMostDigits = 15;
 // What the control accepts that differs between models.
 struct ParseOptions {
   int max_digits = kPortableDigits;
+  // Bytes a file may take once compiled (its text, line index, blocks and words); 0: ten times its
+  // size or 256 MB, the larger. Past it parse() throws base::BoundExceeded before compiling.
+  std::size_t max_memory = 0;
 };
+
+// What a file's compiled form takes at least: text, a line index, a block and a word a line.
+std::size_t compiled_size(std::size_t text_bytes, std::size_t lines);
+std::size_t memory_bound(std::size_t text_bytes, const ParseOptions& options);
 
 // Splits a file into programs (one per O number, or ':' number, its ISO form) and compiles each
 // block, up to the '%' that ends the file.

@@ -2,9 +2,13 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "app/shipped.hpp"
 #include "machine/profile.hpp"
@@ -87,11 +91,22 @@ Answer api_files(const ServeConfig& config) {
 Answer api_file(const ServeConfig& config, const std::string& name) {
   for (const std::string& path : config.files) {
     if (fs::path(path).filename().string() != name) continue;
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw ApiError(500, fmt::format("cannot read {}", path));
-    return Answer{200, text.str(), "text/plain; charset=utf-8"};
+    // opened without waiting and read only as a regular file: a FIFO put in its place blocks no one
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw ApiError(500, fmt::format("cannot read {}: {}", path, std::strerror(errno)));
+    struct stat st {};
+    std::string text;
+    const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    ssize_t n = 0;
+    if (regular) {
+      char buffer[1 << 16];
+      while ((n = ::read(fd, buffer, sizeof buffer)) > 0 || (n < 0 && errno == EINTR))
+        if (n > 0) text.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    if (!regular) throw ApiError(500, fmt::format("cannot read {}: not a regular file", path));
+    if (n < 0) throw ApiError(500, fmt::format("cannot read {}", path));
+    return Answer{200, std::move(text), "text/plain; charset=utf-8"};
   }
   throw ApiError(404, fmt::format("no file \"{}\" was given to ncurve serve (GET /api/files lists them)", name));
 }

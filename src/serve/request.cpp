@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "app/shipped.hpp"
+#include "nc/program.hpp"
 
 namespace ncurve::serve {
 
@@ -88,9 +89,24 @@ app::RunSetup prepare(const app::RunInputs& in) {
   }
 }
 
+std::size_t program_lines(std::string_view program) {
+  return static_cast<std::size_t>(std::count(program.begin(), program.end(), '\n')) + 1;
+}
+
+std::size_t program_memory(std::string_view program) {
+  return nc::compiled_size(program.size(), program_lines(program));
+}
+
 app::RunInputs run_inputs(const ServeConfig& config, const json& j) {
   app::RunInputs in;
   in.text = get_string(j, "program", true);
+  const std::size_t budget = config.max_body * kProgramMemoryPerBodyByte;
+  if (program_memory(*in.text) > budget)
+    throw ApiError(413, fmt::format("the program is too large to run here: its {} lines would take at least {} MB of "
+                                    "memory once read, over the {} MB the server allows a program ({} times "
+                                    "--max-body); raise --max-body, or run it with ncurve run",
+                                    program_lines(*in.text), program_memory(*in.text) >> 20, budget >> 20,
+                                    kProgramMemoryPerBodyByte));
   in.program = get_string(j, "name").value_or("program.nc");
   if (in.program.empty() || in.program == "-") throw ApiError(400, "\"name\" names the program's file, e.g. prog.nc");
   choose_profile(config, j, in);

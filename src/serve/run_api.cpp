@@ -41,7 +41,7 @@ json diagnostics(const report::RunReport& rep) {
 }
 }  // namespace
 
-Answer api_run(const ServeConfig& config, const std::string& body) {
+Answer api_run(const ServeConfig& config, const std::string& body, const std::atomic<bool>* cancel) {
   const json j = parse_body(body);
   check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "moves",
                  "trace", "trace_limit", "format"},
@@ -58,6 +58,7 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
     trace_limit = static_cast<std::size_t>(*n);
   }
   app::RunSetup setup = prepare(in);
+  setup.options.cancel = cancel;
 
   FileTable files;
   std::optional<MoveColumns> moves;
@@ -113,5 +114,7 @@ Answer api_run(const ServeConfig& config, const std::string& body) {
   bytes.append(b.data(), b.size());
   return Answer{status, std::move(bytes), "application/octet-stream"};
 }
+
+Answer api_run(const ServeConfig& config, const std::string& body) { return api_run(config, body, nullptr); }
 
 }  // namespace ncurve::serve

@@ -2,20 +2,20 @@
 
 #include <fmt/format.h>
 
+#include <pthread.h>
+#include <sys/stat.h>
+
 #include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <set>
+#include <thread>
 
 #include "serve/server.hpp"
 
 namespace ncurve::serve {
 
 namespace {
-Server* running = nullptr;
-extern "C" void on_signal(int) {
-  if (running) running->stop();
-}
 bool loopback(const std::string& host) { return host == "127.0.0.1" || host == "localhost" || host == "::1"; }
 }  // namespace
 
@@ -28,13 +28,27 @@ int serve_command(const app::ServeArgs& a) {
   c.max_seconds = a.max_seconds;
   c.max_body = static_cast<std::size_t>(a.max_body_mb * (1 << 20));
   c.max_moves = static_cast<std::size_t>(a.max_moves);
+  c.allow_hosts = a.allow_hosts;
   std::set<std::string> names;
-  for (const auto& f : c.files)
+  for (const auto& f : c.files) {
+    struct stat st {};
+    if (::stat(f.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {  // a FIFO or device would block its reader
+      std::cerr << "ncurve serve: " << f << " is not a regular file (a FIFO, a device or a folder cannot be served)\n";
+      return 2;
+    }
     if (!names.insert(std::filesystem::path(f).filename().string()).second) {
       std::cerr << "ncurve serve: two files named " << std::filesystem::path(f).filename().string()
                 << ": the page opens files by name\n";
       return 2;
     }
+  }
+  // SIGINT and SIGTERM are taken by a thread of their own, which stops the server (a handler
+  // could not: stopping takes a lock); every other thread starts with them blocked
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
   Server server(c);
   int port = 0;
   try {
@@ -50,11 +64,14 @@ int serve_command(const app::ServeArgs& a) {
   std::cout << fmt::format("ncurve serve: http://{}:{}/ (Ctrl-C stops it)\n",
                            a.host.find(':') != std::string::npos ? "[" + a.host + "]" : a.host, port)
             << std::flush;
-  running = &server;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  std::thread stopper([&] {
+    int signal = 0;
+    sigwait(&stop_signals, &signal);
+    server.stop();
+  });
   const bool ok = server.listen();
-  running = nullptr;
+  if (!ok) pthread_kill(stopper.native_handle(), SIGTERM);  // not stopped by a signal: end the stopper
+  stopper.join();
   return ok ? 0 : 2;
 }
 

@@ -128,7 +128,7 @@ Answer api_gen(const ServeConfig& config, const std::string& body) {
   return Answer{200, std::string(b.data(), b.size())};
 }
 
-Answer api_analyze(const ServeConfig& config, const std::string& body) {
+Answer api_analyze(const ServeConfig& config, const std::string& body, const std::atomic<bool>* cancel) {
   const json j = parse_body(body);
   check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "servo",
                  "moves"},
@@ -138,6 +138,7 @@ Answer api_analyze(const ServeConfig& config, const std::string& body) {
   std::optional<FeedColumns> feeds;
   if (get_bool(j, "moves", false)) feeds.emplace(config.max_moves);
   app::RunSetup setup = prepare(in);
+  setup.options.cancel = cancel;
   const machine::MachineProfile& profile = setup.profile;
   std::optional<motion::ServoSim> sim;
   if (servo) sim.emplace(profile);
@@ -186,5 +187,7 @@ Answer api_analyze(const ServeConfig& config, const std::string& body) {
   b.append(std::string_view("}\n"));
   return Answer{runaway ? 422 : 200, std::string(b.data(), b.size())};
 }
+
+Answer api_analyze(const ServeConfig& config, const std::string& body) { return api_analyze(config, body, nullptr); }
 
 }  // namespace ncurve::serve

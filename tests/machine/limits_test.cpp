@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <chrono>
 #include <limits>
 
 #include "support/run_program.hpp"
@@ -225,4 +226,37 @@ TEST(Limits, MaxSecondsStopsARunaway) {
   EXPECT_EQ(r.alarm_code(), "NC9000");
   EXPECT_NE(r.result.alarm->message.find("--max-seconds"), std::string::npos);
   EXPECT_EQ(r.alarm_line(), 3u);
+}
+
+// A canned cycle's moves count as steps: one G83 block of 10^12 pecks (Q of one increment into a
+// depth of 1000 km... 10^9 pecks a hole, K1000 holes) stops at the step bound at once, on its line.
+TEST(Limits, MaxStepsCountsTheMovesOfACycle) {
+  machine::RunOptions o;
+  o.max_steps = 1000;
+  o.max_seconds = 0;
+  auto r = run("G00 X0 Y0 Z10.\nG91 G83 X1. Z-1000000. R-5. Q0.001 K1000 F100.\nM30\n", machine::default_mill(), o);
+  ASSERT_EQ(r.alarm_code(), "NC9000");
+  EXPECT_NE(r.result.alarm->message.find("--max-steps"), std::string::npos);
+  EXPECT_NE(r.result.alarm->message.find("makes move after move"), std::string::npos);
+  EXPECT_EQ(r.alarm_line(), 2u);
+  // a peck is three or four moves; the bound stops it within its thousand steps
+  EXPECT_LE(r.result.stats.motions, 1000u);
+  EXPECT_GT(r.result.stats.motions, 900u);
+}
+
+TEST(Limits, MaxSecondsStopsACycleOfEndlessPecks) {
+  machine::RunOptions o;
+  o.max_steps = std::numeric_limits<std::uint64_t>::max();
+  o.max_seconds = 0.2;
+  machine::ProgramLibrary lib;
+  lib.add_text("test.nc", "G00 X0 Y0 Z10.\nG91 G83 X1. Z-1000000. R-5. Q0.001 K1000 F100.\nM30\n", true);
+  machine::Interpreter interp(machine::default_mill(), lib, o);
+  machine::NullSink sink;  // the moves are not kept: millions are made in the time allowed
+  const auto started = std::chrono::steady_clock::now();
+  const machine::RunResult r = interp.run(sink);
+  const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  ASSERT_TRUE(r.alarm);
+  EXPECT_EQ(r.alarm->code, "NC9000");
+  EXPECT_NE(r.alarm->message.find("--max-seconds"), std::string::npos);
+  EXPECT_LT(took, 20.0);  // not a speed measure: the run ends, where it went on for hours
 }

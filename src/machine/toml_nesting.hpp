@@ -1,0 +1,15 @@
+// A bound on how deep a TOML text nests before toml++ reads it: its parser and its tables recurse
+// once a level, so a key of 60,000 dotted parts would overflow the stack.
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace ncurve::machine {
+
+constexpr int kMaxTomlKeyParts = 32;   // a.b.c = 1: three parts
+constexpr int kMaxTomlBrackets = 32;   // [[1, 2], {x = 3}]: two levels
+
+// Throws std::runtime_error ("origin:line:column: error: ...") past either bound.
+void check_toml_nesting(std::string_view text, const std::string& origin);
+
+}  // namespace ncurve::machine
