@@ -312,3 +312,13 @@ string(JSON circle_blocks GET "${out}" shape_error blocks)
 if(circle_max GREATER 1e-9 OR NOT circle_blocks EQUAL 1)
   message(SEND_ERROR "the programmed full circle: max ${circle_max} mm over ${circle_blocks} blocks (0 over 1 by hand)")
 endif()
+# a lathe under G42 with tip 3 (nose R0.8): the convex arc R5 from X10 Z0 to X20 Z-5 (diameters)
+# about X10 Z-5, as programmed, is the curve Z = -5 + 5 cos t, X/2 = 5 + 5 sin t itself: 0 mm
+run_expect(0 "programmed lathe arc" ${NCURVE} analyze ${SRC}/tests/programs/nt_arc_t3.nc
+           --machine ${SRC}/tests/programs/nt_arc_t3.toml --curve expr --x "-5+5*COS[t]" --y "5+5*SIN[t]" --t 0:90
+           --programmed --json)
+string(JSON arc_max GET "${out}" shape_error max_mm)
+string(JSON arc_blocks GET "${out}" shape_error blocks)
+if(arc_max GREATER 1e-9 OR NOT arc_blocks EQUAL 1)
+  message(SEND_ERROR "the programmed lathe arc: max ${arc_max} mm over ${arc_blocks} blocks (0 over 1 by hand)")
+endif()
