@@ -217,6 +217,8 @@ void GcodeWriter::on_move(const Move& m) {
       break;
     case MoveKind::coolant: case MoveKind::program_stop: case MoveKind::m_code:
       line = fmt::format("M{:02}", m.code);
+      // rigid tapping allows no axis move after M29 but its cycle's; the cycle comes expanded
+      if (m.kind == MoveKind::m_code && m.code == 29) line = "(M29 RIGID TAPPING: ITS CYCLE EXPANDED BELOW)";
       break;
     case MoveKind::program_end:
       line = fmt::format("M{:02}", m.code);
