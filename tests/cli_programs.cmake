@@ -106,6 +106,23 @@ foreach(name expand_g55 work_offsets_g28 wcs_g92_cancels_g52 cc_circle_pocket dr
   endif()
 endforeach()
 
+# G103 with the shipped macros, No.6050..6059 unset: the hint names No.6051, which calls O9011 (the
+# ellipse that G103 means), and following it runs the ellipse
+set(g103 "${CMAKE_CURRENT_BINARY_DIR}/custom_g103_hint.nc")
+file(WRITE "${g103}" "G90 G00 X40. Y0.\nG01 Z-1. F200.\nG103 A40. B20. S0 E360. T0.01\nG00 Z5.\nM30\n")
+execute_process(COMMAND ${NCURVE} run "${g103}" --lib ${SRC}/macros OUTPUT_VARIABLE err ERROR_VARIABLE err RESULT_VARIABLE rc)
+string(FIND "${err}" "to make it a custom G code calling O9011, set parameter No.6051 = 103: --param 6051=103" at)
+if(NOT rc EQUAL 1 OR at EQUAL -1)
+  message(SEND_ERROR "G103 with --lib macros: exit ${rc}, the hint does not name No.6051 for O9011:\n${err}")
+  math(EXPR failures "${failures}+1")
+endif()
+execute_process(COMMAND ${NCURVE} run "${g103}" --lib ${SRC}/macros --param 6051=103 OUTPUT_QUIET ERROR_VARIABLE err
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(SEND_ERROR "G103 with --param 6051=103 as the hint says: exit ${rc}\n${err}")
+  math(EXPR failures "${failures}+1")
+endif()
+
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} program check(s) failed")
 endif()
