@@ -4,10 +4,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <fstream>
 #include <iostream>
 #include <new>
-#include <regex>
 #include <set>
 
 #include "app/analyze_command.hpp"
@@ -98,11 +98,18 @@ std::vector<int> common_variables_set(const std::string& text) {
     else if (c == ')' && depth > 0) --depth;
     else if (depth == 0) code += c;
   }
-  static const std::regex assignment(R"(#\s*(\d+)\s*=)");
-  std::set<int> set;
-  for (auto it = std::sregex_iterator(code.begin(), code.end(), assignment); it != std::sregex_iterator(); ++it) {
-    const int n = std::stoi((*it)[1].str());
-    if ((n >= 100 && n <= 199) || (n >= 500 && n <= 999)) set.insert(n);
+  std::set<int> set;  // each "#N =" (spaces allowed)
+  auto space = [&](std::size_t i) {
+    while (i < code.size() && (code[i] == ' ' || code[i] == '\t')) ++i;
+    return i;
+  };
+  for (std::size_t i = code.find('#'); i != std::string::npos; i = code.find('#', i + 1)) {
+    std::size_t k = space(i + 1);
+    long n = 0;
+    const std::size_t digits = k;
+    while (k < code.size() && std::isdigit(static_cast<unsigned char>(code[k])) && n < 100000) n = n * 10 + (code[k++] - '0');
+    if (k == digits || (k = space(k)) >= code.size() || code[k] != '=') continue;
+    if ((n >= 100 && n <= 199) || (n >= 500 && n <= 999)) set.insert(static_cast<int>(n));
   }
   return {set.begin(), set.end()};
 }
