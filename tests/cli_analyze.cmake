@@ -273,3 +273,52 @@ expect_text("${out}" "radial shape error, Joshi eqs 8-11      does not apply her
 run_expect(1 "undefined curve" ${NCURVE} analyze ${SRC}/examples/spiral.nc --curve expr --x "SQRT[t-100]" --y 0
            --t 0:360)
 expect_text("${err}" "the curve expr is undefined at t = 0; check --curve and its parameters" "undefined curve")
+
+# a program under cutter compensation (G41 D1 R5) cutting two 45-degree chords of a quarter circle
+# R20: the tool's path, 5 mm inside with its G40 lead-out, does not follow the circle, and the
+# message offers --programmed; the chords as programmed deviate 20 - 20 x 14.142 / sqrt(5.858^2 +
+# 14.142^2) = 1.522498 mm (the distance of each chord's line from the centre), lead-in and
+# lead-out set aside
+set(chords ${SRC}/tests/programs/cc_quarter_chords.nc)
+set(circle --curve expr --x "20*COS[t]" --y "20*SIN[t]" --t 0:90)
+run_expect(1 "compensated tool path" ${NCURVE} analyze ${chords} ${circle})
+expect_text("${err}" "the path measured is the tool's, radius compensation applied (G41/G42): --programmed measures the contour as programmed"
+            "the tool path is named and the programmed contour offered")
+run_expect(0 "programmed contour" ${NCURVE} analyze ${chords} ${circle} --programmed --json)
+string(JSON chord_max GET "${out}" shape_error max_mm)
+string(JSON chord_path GET "${out}" shape_error path)
+string(JSON chord_blocks GET "${out}" shape_error blocks)
+string(JSON aside_before GET "${out}" shape_error moves_set_aside 0)
+string(JSON aside_after GET "${out}" shape_error moves_set_aside 1)
+if(NOT chord_max MATCHES "^1\\.52249[7-8]" OR NOT chord_path STREQUAL "programmed" OR NOT chord_blocks EQUAL 2
+   OR NOT aside_before EQUAL 1 OR NOT aside_after EQUAL 1)
+  message(SEND_ERROR "programmed chords: max ${chord_max} (1.522498 by hand), path ${chord_path}, ${chord_blocks} "
+                     "blocks, set aside ${aside_before} and ${aside_after}")
+endif()
+run_expect(0 "programmed contour text" ${NCURVE} analyze ${chords} ${circle} --programmed)
+expect_text("${out}" "  path measured     the contour as programmed" "the text says which path")
+# a program without compensation: its path is the program's
+run_expect(0 "plain path json" ${NCURVE} analyze ${SRC}/examples/spiral.nc --curve spiral --json)
+string(JSON plain_path GET "${out}" shape_error path)
+if(NOT plain_path STREQUAL "programmed")
+  message(SEND_ERROR "spiral.nc: shape_error.path is ${plain_path}")
+endif()
+# a full circle R20 about X0 Y0 cut under G41 D1 R5 from the centre and back (its only contour
+# move the arc): as programmed, the circle itself, 0 mm from it
+run_expect(0 "programmed full circle" ${NCURVE} analyze ${SRC}/tests/programs/cc_circle_pocket.nc --curve expr
+           --x "20*COS[t]" --y "20*SIN[t]" --t 0:360 --programmed --json)
+string(JSON circle_max GET "${out}" shape_error max_mm)
+string(JSON circle_blocks GET "${out}" shape_error blocks)
+if(circle_max GREATER 1e-9 OR NOT circle_blocks EQUAL 1)
+  message(SEND_ERROR "the programmed full circle: max ${circle_max} mm over ${circle_blocks} blocks (0 over 1 by hand)")
+endif()
+# a lathe under G42 with tip 3 (nose R0.8): the convex arc R5 from X10 Z0 to X20 Z-5 (diameters)
+# about X10 Z-5, as programmed, is the curve Z = -5 + 5 cos t, X/2 = 5 + 5 sin t itself: 0 mm
+run_expect(0 "programmed lathe arc" ${NCURVE} analyze ${SRC}/tests/programs/nt_arc_t3.nc
+           --machine ${SRC}/tests/programs/nt_arc_t3.toml --curve expr --x "-5+5*COS[t]" --y "5+5*SIN[t]" --t 0:90
+           --programmed --json)
+string(JSON arc_max GET "${out}" shape_error max_mm)
+string(JSON arc_blocks GET "${out}" shape_error blocks)
+if(arc_max GREATER 1e-9 OR NOT arc_blocks EQUAL 1)
+  message(SEND_ERROR "the programmed lathe arc: max ${arc_max} mm over ${arc_blocks} blocks (0 over 1 by hand)")
+endif()

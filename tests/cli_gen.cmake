@@ -211,3 +211,71 @@ run_expect(0 "run the inch program" ${NCURVE} run ${OUT}/gen_inch.nc --format cs
 expect_text("${out}" "line,39.999920,0.000000,-1.000760," "1.5748 in and -0.0394 in in mm")
 run_expect(2 "a cycle in inches" ${NCURVE} gen ellipse --inch --form cycle)
 expect_text("${err}" "the cycles' macros (O9010..O9019) are written in mm" "no inch cycles")
+
+# the form's cycle time on the chosen machine is the one `ncurve analyze` gives its program; a
+# macro form much slower than its G01 lines is warned of, with both times
+set(cycle_prog "${OUT}/gen_cycle_seed000.nc")
+run_expect(0 "gen a cycle on seed 000" ${NCURVE} gen ellipse --a 40 --b 20 --form cycle --feed 2000
+           --machine ${SRC}/profiles/seed000.toml -o ${cycle_prog} --json)
+string(JSON gen_time GET "${out}" cycle_time_s)
+string(JSON lines_time GET "${out}" expanded_cycle_time_s)
+expect_text("${err}" "warning: the cycle form takes " "a slow cycle is warned of")
+expect_text("${err}" "times the " "the warning compares with the expanded form")
+run_expect(0 "analyze the cycle" ${NCURVE} analyze ${cycle_prog} --machine ${SRC}/profiles/seed000.toml
+           --param 6051=103 --json)
+string(JSON analyze_time GET "${out}" cycle_time_s)
+if(NOT gen_time STREQUAL analyze_time)
+  message(SEND_ERROR "gen says the cycle takes ${gen_time} s, analyze ${analyze_time} s")
+endif()
+# the expanded form's time is analyze's of the expanded program; the cycle, at 120 ms a macro statement
+# (seed 000), takes longer
+run_expect(0 "gen the lines on seed 000" ${NCURVE} gen ellipse --a 40 --b 20 --feed 2000
+           --machine ${SRC}/profiles/seed000.toml -o ${OUT}/gen_lines_seed000.nc)
+run_expect(0 "analyze the lines" ${NCURVE} analyze ${OUT}/gen_lines_seed000.nc --machine ${SRC}/profiles/seed000.toml
+           --json)
+string(JSON analyze_lines GET "${out}" cycle_time_s)
+if(NOT lines_time STREQUAL analyze_lines)
+  message(SEND_ERROR "gen says the expanded form takes ${lines_time} s, analyze ${analyze_lines} s")
+endif()
+if(gen_time LESS lines_time)
+  message(SEND_ERROR "the cycle (${gen_time} s) is not slower than the lines (${lines_time} s)")
+endif()
+run_expect(0 "gen expanded" ${NCURVE} gen ellipse --a 40 --b 20 --feed 2000 -o ${OUT}/gen_lines.nc)
+expect_text("${out}" "  cycle time " "the expanded form's time")
+string(FIND "${err}" "warning: the" slow_warned)
+if(NOT slow_warned EQUAL -1)
+  message(SEND_ERROR "the expanded form is warned of as slow:\n${err}")
+endif()
+
+# the common variables the macro form sets, read from its text: every #100..#199 / #500..#999
+# assigned outside a comment
+run_expect(0 "gen macro" ${NCURVE} gen ellipse --form macro -o ${OUT}/gen_macro_commons.nc)
+expect_text("${out}" "  common variables it sets: #100..#102, #110..#114 (what they held before the program is lost)"
+            "the macro's common variables")
+file(READ ${OUT}/gen_macro_commons.nc macro_text)
+string(REGEX REPLACE "\\([^)]*\\)" "" macro_code "${macro_text}")
+string(REGEX MATCHALL "#[0-9]+=" assigned "${macro_code}")
+list(REMOVE_DUPLICATES assigned)
+list(SORT assigned)
+if(NOT assigned STREQUAL "#100=;#101=;#102=;#110=;#111=;#112=;#113=;#114=")
+  message(SEND_ERROR "the macro form assigns ${assigned}")
+endif()
+run_expect(0 "gen macro json" ${NCURVE} gen ellipse --form macro --json)
+string(JSON commons GET "${out}" common_variables)
+string(REGEX REPLACE "[ \n]" "" commons "${commons}")
+if(NOT commons STREQUAL "[100,101,102,110,111,112,113,114]")
+  message(SEND_ERROR "gen --json common_variables: ${commons}")
+endif()
+
+# a lathe program's comment names the path written: the imaginary tip, or the nose centre
+run_expect(0 "gen lathe tip 3" ${NCURVE} gen hyperbola --machine ${SRC}/profiles/fanuc-lathe.toml --tool-radius 0.8
+           --tip 3 --form arcs)
+expect_text("${out}" "(IMAGINARY TOOL TIP 3 PATH: NOSE RADIUS 0.8 MM, THE NOSE CENTRE LEFT OF THE CURVE)"
+            "the tip's path is named")
+string(FIND "${out}" "CUTTER CENTRE" cutter)
+if(NOT cutter EQUAL -1)
+  message(SEND_ERROR "a lathe program says cutter centre:\n${out}")
+endif()
+run_expect(0 "gen lathe nose centre" ${NCURVE} gen hyperbola --machine ${SRC}/profiles/fanuc-lathe.toml
+           --tool-radius 0.8 --side right --form arcs)
+expect_text("${out}" "(NOSE CENTRE PATH: NOSE RADIUS 0.8 MM, RIGHT OF THE CURVE)" "the nose centre's path is named")

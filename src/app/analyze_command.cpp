@@ -7,8 +7,10 @@
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <numbers>
 
 #include "gen/generate.hpp"
+#include "machine/compensation.hpp"
 #include "gen/shape_models.hpp"
 #include "motion/circle.hpp"
 #include "motion/planner.hpp"
@@ -24,6 +26,31 @@
 
 namespace ncurve::app {
 namespace {
+
+// A radius-compensated move as programmed: from the programmed end of the move before to its own.
+// An arc keeps its centre (concentric with the tool's), less the imaginary tip's shift on a lathe.
+machine::Move as_programmed(const machine::Move& m, const machine::AxisVector& from, const std::array<double, 3>& tip) {
+  machine::Move p = m;
+  p.start = from;
+  p.end = m.programmed_end;
+  if (m.kind != machine::MoveKind::arc) {
+    p.length = std::hypot(p.end[0] - p.start[0], p.end[1] - p.start[1], p.end[2] - p.start[2]);
+    return p;
+  }
+  const machine::PlaneAxes pa = machine::plane_axes(m.plane);
+  for (int a = 0; a < 3; ++a) p.center[a] = m.center[a] - tip[a];
+  const double sp = p.start[pa.p] - p.center[pa.p], sq = p.start[pa.q] - p.center[pa.q];
+  const double ep = p.end[pa.p] - p.center[pa.p], eq = p.end[pa.q] - p.center[pa.q];
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  double sweep = std::atan2(sp * eq - sq * ep, sp * ep + sq * eq);
+  const bool full = std::fabs(m.sweep) > kTwoPi - 1e-9;
+  if (m.sweep > 0 && (sweep <= 1e-12 || full)) sweep += kTwoPi;
+  if (m.sweep < 0 && (sweep >= -1e-12 || full)) sweep -= kTwoPi;
+  p.sweep = sweep;
+  const double radius = (std::hypot(sp, sq) + std::hypot(ep, eq)) / 2;
+  p.length = std::hypot(std::fabs(sweep) * radius, p.end[pa.n] - p.start[pa.n]);
+  return p;
+}
 
 std::string where(const machine::Move& m) {
   return m.file ? fmt::format("{}:{}", m.file->name(), m.line) : fmt::format("line {}", m.line);
@@ -217,17 +244,48 @@ int program_command(const AnalyzeArgs& a) {
   });
   // The contour measured against the curve: feed moves (lines and arcs), and for a plane curve on a
   // mill only those that stay at one Z (plunges and retracts are not part of the contour).
+  // With --programmed, a compensated move is taken as programmed and the compensation's corner
+  // moves are left out.
   struct Tee final : machine::MoveSink {
     machine::MoveSink* planner = nullptr;
     std::vector<machine::Move>* contour = nullptr;
+    const machine::MachineProfile* profile = nullptr;
     std::size_t max_moves = 0;
     bool plane_only = false;
+    bool programmed = false;
+    bool compensated = false;            // a compensated move was met
+    machine::AxisVector at_programmed{};  // where the program put the tool, compensation aside
+    bool moved = false;
+    std::array<double, 3> tip{};          // lathe: the imaginary tip from the nose centre (X radius, Y, Z)
     std::uint64_t moves = 0;
     base::Progress progress{"ncurve analyze", "moves"};
     void on_move(const machine::Move& m) override {
       progress.at(++moves);
       planner->on_move(m);
+      if (m.kind == machine::MoveKind::tool_change && profile->lathe()) {  // T: its offset's nose radius and tip
+        auto it = profile->lathe_offsets.find(m.code % 100);
+        const machine::LatheOffset o = it == profile->lathe_offsets.end() ? machine::LatheOffset{} : it->second;
+        const machine::TipDirection d = machine::tip_direction(static_cast<int>(o.tip));
+        tip = {d.x * (o.r + o.r_wear), 0, d.z * (o.r + o.r_wear)};
+      }
+      if (!m.is_motion()) return;
+      const machine::AxisVector from = moved ? at_programmed : m.start;
+      moved = true;
+      at_programmed = m.compensated ? m.programmed_end : m.end;
+      if (m.compensated && !m.corner) compensated = true;
       if (!contour || (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc)) return;
+      // as programmed: a compensated move, and the cancel move after it from the programmed point
+      if (programmed && (m.compensated || (m.kind == machine::MoveKind::line && from != m.start))) {
+        if (m.corner) return;
+        machine::Move c = m;
+        if (!m.compensated) c.programmed_end = m.end;
+        const machine::Move p = as_programmed(c, from, tip);
+        if (p.length <= 0) return;  // a block the compensation made in two moves
+        return keep(p);
+      }
+      keep(m);
+    }
+    void keep(const machine::Move& m) {
       if (plane_only && m.end[2] != m.start[2]) return;
       if (contour->size() >= max_moves)
         throw base::BoundExceeded(fmt::format("--curve keeps every contour move to measure it: more than {}, at {}: "
@@ -237,6 +295,8 @@ int program_command(const AnalyzeArgs& a) {
     }
   } tee;
   tee.max_moves = a.max_moves;
+  tee.profile = &profile;
+  tee.programmed = a.programmed;
   std::vector<machine::Move> contour;
   tee.planner = &planner;
   if (curve) {
@@ -268,8 +328,13 @@ int program_command(const AnalyzeArgs& a) {
   std::optional<shape::Report> shape;
   if (curve) {
     shape.emplace();
+    shape->path = !tee.compensated ? shape::Path::plain : a.programmed ? shape::Path::programmed : shape::Path::tool;
     if (auto why = shape::measure(std::move(contour), *curve, profile, a.tol, *shape)) {
-      std::cerr << "ncurve analyze: " << *why << "\n";
+      std::cerr << "ncurve analyze: " << *why;
+      if (shape->path == shape::Path::tool)
+        std::cerr << "; the path measured is the tool's, radius compensation applied (G41/G42): --programmed measures "
+                     "the contour as programmed";
+      std::cerr << "\n";
       return 1;
     }
     if (!a.shape_csv.empty() && !save(a.shape_csv, shape::csv(shape->models), setup.inputs)) return 2;
@@ -321,6 +386,18 @@ int program_command(const AnalyzeArgs& a) {
 }
 
 }  // namespace
+
+motion::PlanTotals program_time(const std::string& name, const std::string& text,
+                                const machine::MachineProfile& profile) {
+  machine::ProgramLibrary lib(profile.parse_options());
+  lib.add_text(name, text, true);
+  motion::Planner planner(profile);
+  machine::Interpreter interp(profile, lib);
+  const machine::RunResult r = interp.run(planner);
+  if (!r.ok()) throw std::runtime_error(nc::format(*r.alarm));
+  planner.finish();
+  return planner.totals();
+}
 
 nlohmann::json analyze_json(const std::string& program, const machine::MachineProfile& profile,
                             const motion::PlanTotals& t, const motion::ServoSim* sim) {
@@ -398,6 +475,9 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
   cmd->add_option("--shape-csv", a.shape_csv,
                   "--curve: write each contour block's deviation and the spiral paper's chord models to this CSV file");
   cmd->add_option("--shape-plot", a.shape_plot, "--curve: SVG of the path coloured by its deviation from the curve");
+  cmd->add_flag("--programmed", a.programmed,
+                "--curve: measure the contour as programmed (the programmed ends of the moves under cutter or "
+                "tool-nose radius compensation), not the tool centre path");
   cmd->add_option("--tol", a.tol, "--curve: shape tolerance, mm; blocks beyond it are counted and marked")
       ->check(units::length_mm(units::above(0)));
   cmd->add_option("--x", a.curve.x, "--curve expr: x(t)");

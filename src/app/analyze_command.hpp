@@ -23,6 +23,7 @@ struct AnalyzeArgs {
   std::string shape_csv;   // per-block shape error and seed 000's models
   std::string shape_plot;  // SVG: path coloured by deviation
   double tol = 0;          // mm: shape tolerance to mark (0: none)
+  bool programmed = false; // --curve: the contour as programmed, not the compensated tool path
   std::size_t max_moves = 500000;  // --curve: contour moves kept (docs/analyze.md)
   double max_ticks = 50e6;         // --servo: servo periods simulated
   std::vector<std::string> kv;  // circle: KX[,KY]
@@ -39,6 +40,10 @@ int analyze_command(const AnalyzeArgs& args);
 // The cycle time of `analyze --json` from the planner's totals (and the servo's contour error).
 nlohmann::json analyze_json(const std::string& program, const machine::MachineProfile& profile,
                             const motion::PlanTotals& totals, const motion::ServoSim* sim);
+// The cycle time analyze estimates for a program's text on a machine (feed planning, block and macro
+// processing time). Throws std::runtime_error with the alarm when the program stops on one.
+motion::PlanTotals program_time(const std::string& name, const std::string& text,
+                                const machine::MachineProfile& profile);
 // Lets the servo model settle after the last block (five time constants of the slowest loop).
 void settle(motion::ServoSim& sim, const machine::MachineProfile& profile);
 

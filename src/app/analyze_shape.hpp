@@ -17,7 +17,13 @@
 
 namespace ncurve::app::shape {
 
+// The path measured: no radius compensation in the program (tool path and program are one),
+// the compensated tool path, or the contour as programmed (--programmed).
+enum class Path { plain, tool, programmed };
+inline const char* to_string(Path p) { return p == Path::tool ? "tool" : "programmed"; }
+
 struct Report {
+  Path path = Path::plain;
   gen::Options o;
   std::vector<machine::Move> contour;  // the contour proper
   std::size_t approach = 0, departure = 0;  // feed moves set aside before and after it
@@ -166,7 +172,8 @@ inline void add_json(nlohmann::json& j, const geom::Curve& curve, const Report& 
                       {"blocks", s.deviation.size()},
                       {"rms_block_max_mm", r.rms},
                       {"path_length_mm", s.path_length},
-                      {"moves_set_aside", {r.approach, r.departure}}};
+                      {"moves_set_aside", {r.approach, r.departure}},
+                      {"path", to_string(r.path)}};
   if (tol > 0) j["shape_error"]["tolerance_mm"] = tol, j["shape_error"]["blocks_beyond_tolerance"] = r.beyond_tol;
   auto model = [&](const gen::ModelError& e) {
     return nlohmann::json{{"max_mm", e.max},   {"max_error_mm", e.max_error}, {"max_relative_error", e.max_relative},
@@ -191,6 +198,11 @@ inline std::string text(const geom::Curve& curve, const Report& r, double tol) {
       "  shape error       max {:.6f} mm from {} at t = {:.6g} ({}), block at line {}; {} contour blocks, {:.3f} mm\n",
       s.max_deviation, curve.name(), s.worst_t, position(profile, s.worst_point), r.line, s.deviation.size(),
       s.path_length);
+  if (r.path == Path::tool)
+    out += "  path measured     the tool's (cutter centre, or the imaginary tip on a lathe), radius compensation "
+           "applied; --programmed measures the contour as programmed\n";
+  else if (r.path == Path::programmed)
+    out += "  path measured     the contour as programmed (the compensated moves' programmed ends, corners left out)\n";
   if (r.approach + r.departure > 0)
     out += fmt::format("                    set aside: {} feed move(s) approaching the curve, {} leaving it\n",
                        r.approach, r.departure);

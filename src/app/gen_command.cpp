@@ -4,10 +4,13 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <set>
 
+#include "app/analyze_command.hpp"
 #include "app/cli_checks.hpp"
 #include "app/curve_args.hpp"
 #include "app/save.hpp"
@@ -33,7 +36,95 @@ std::string list_curves() {
   return s;
 }
 
+// The cycle time `ncurve analyze` estimates for the program on its machine, the cycle's
+// parameters set; none if it does not run.
+std::optional<motion::PlanTotals> time_of(const gen::Options& o, const gen::Result& r) {
+  machine::MachineProfile p = o.profile;
+  try {
+    for (const auto& [key, value] : r.parameters) machine::set_parameter(p, key, value);
+    return program_time("<generated>", r.text, p);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+bool is_macro_form(gen::Form f) {
+  return f == gen::Form::macro || f == gen::Form::adaptive_macro || f == gen::Form::cycle;
+}
+
+// The program's time and, for a macro form, that of the same curve as G01 lines.
+struct GenTimes {
+  std::optional<motion::PlanTotals> form, expanded;
+};
+GenTimes gen_times(const GenJob& job, const gen::Result& r) {
+  GenTimes t;
+  t.form = time_of(job.options, r);
+  if (!t.form || !is_macro_form(job.options.form)) return t;
+  gen::Options e = job.options;
+  e.form = gen::Form::expanded;
+  e.cycle_program = 0;
+  try {
+    const gen::Result lines = gen::generate(job.curve, e);
+    if (lines.within_tolerance) t.expanded = time_of(e, lines);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception&) {
+  }
+  return t;
+}
+
+// A macro form this many times slower than the G01 lines is warned of.
+constexpr double kSlowerThanExpanded = 1.5;
+
+std::string slower_warning(const GenJob& job, const GenTimes& t) {
+  if (!t.form || !t.expanded || t.form->seconds <= kSlowerThanExpanded * t.expanded->seconds) return {};
+  return fmt::format(
+      "the {} form takes {:.1f} s on {} ({} full stops, {} macro statements of {} ms), {:.1f} times the {:.1f} s of "
+      "--form expanded ({} full stops): the control computes the points while the tool waits",
+      gen::to_string(job.options.form), t.form->seconds, job.options.profile.name, t.form->stops,
+      t.form->macro_statements, job.options.profile.motion.macro_time * 1000, t.form->seconds / t.expanded->seconds,
+      t.expanded->seconds, t.expanded->stops);
+}
+
 }  // namespace
+
+std::vector<int> common_variables_set(const std::string& text) {
+  std::string code;  // the text without comments
+  int depth = 0;
+  for (char c : text) {
+    if (c == '(') ++depth;
+    else if (c == ')' && depth > 0) --depth;
+    else if (depth == 0) code += c;
+  }
+  std::set<int> set;  // each "#N =" (spaces allowed)
+  auto space = [&](std::size_t i) {
+    while (i < code.size() && (code[i] == ' ' || code[i] == '\t')) ++i;
+    return i;
+  };
+  for (std::size_t i = code.find('#'); i != std::string::npos; i = code.find('#', i + 1)) {
+    std::size_t k = space(i + 1);
+    long n = 0;
+    const std::size_t digits = k;
+    while (k < code.size() && std::isdigit(static_cast<unsigned char>(code[k])) && n < 100000) n = n * 10 + (code[k++] - '0');
+    if (k == digits || (k = space(k)) >= code.size() || code[k] != '=') continue;
+    if ((n >= 100 && n <= 199) || (n >= 500 && n <= 999)) set.insert(static_cast<int>(n));
+  }
+  return {set.begin(), set.end()};
+}
+
+std::string variable_ranges(const std::vector<int>& v) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size();) {
+    std::size_t j = i;
+    while (j + 1 < v.size() && v[j + 1] == v[j] + 1) ++j;
+    s += fmt::format("{}#{}", s.empty() ? "" : ", ", v[i]);
+    if (j > i) s += fmt::format("{}#{}", j == i + 1 ? ", " : "..", v[j]);
+    i = j + 1;
+  }
+  return s;
+}
 
 void add_gen_command(CLI::App& app, GenArgs& a) {
   CLI::App* gen = app.add_subcommand("gen", "write a program for a curve within a guaranteed shape tolerance");
@@ -219,8 +310,14 @@ int gen_command(const GenArgs& a) {
   if (!output.empty() && !save(output, program, inputs)) return 2;
   const auto& s = r.stats;
   if (!a.plot.empty() && !save(a.plot, gen::plot_svg(r.cutter_centre ? *r.cutter_centre : *curve, o, s), inputs)) return 2;
+  const GenTimes times = gen_times(*job, r);
+  const std::vector<int> commons = common_variables_set(r.text);
   if (a.json) {
-    std::cout << gen_json(*job, r, output.empty() ? &program : nullptr).dump(2) << "\n";
+    nlohmann::json j = gen_json(*job, r, output.empty() ? &program : nullptr);
+    if (times.form) j["cycle_time_s"] = times.form->seconds;
+    if (times.expanded) j["expanded_cycle_time_s"] = times.expanded->seconds;
+    j["common_variables"] = commons;
+    std::cout << j.dump(2) << "\n";
   } else {
     if (output.empty()) std::cout << program;
     std::ostream& out = output.empty() ? std::cerr : std::cout;
@@ -233,10 +330,19 @@ int gen_command(const GenArgs& a) {
     if (s.passes > 1)
       out << fmt::format("  {} depth passes of at most {} mm to Z-{}, each measured (the figures above are the last)\n",
                          s.passes, o.step_down, o.depth);
+    if (times.form)
+      out << fmt::format("  cycle time {:.1f} s on {} ({} full stops, {} macro statements; ncurve analyze's estimate)"
+                         "{}\n",
+                         times.form->seconds, o.profile.name, times.form->stops, times.form->macro_statements,
+                         times.expanded ? fmt::format(", {:.1f} s as --form expanded", times.expanded->seconds) : "");
+    if (!commons.empty())
+      out << fmt::format("  common variables it sets: {} (what they held before the program is lost)\n",
+                         variable_ranges(commons));
     for (const auto& [key, value] : r.parameters)
       out << fmt::format("  set parameter No.{} = {} on the control (ncurve run ... --param {}={})\n", key, value, key,
                          value);
   }
+  if (const std::string w = slower_warning(*job, times); !w.empty()) std::cerr << "ncurve gen: warning: " << w << "\n";
   if (!r.within_tolerance) {
     std::cerr << fmt::format(
         "ncurve gen: error: the program deviates {:.6f} mm from the curve at t = {:.6g} (X {:.4f} Y {:.4f} Z {:.4f}), "

@@ -59,6 +59,10 @@ GenJob gen_job(const GenArgs& args, const std::vector<std::string>& extras, cons
                const std::vector<std::string>& options);
 // What gen warns of before generating (a lathe curve on a mill ...), each without "warning: ".
 std::vector<std::string> gen_warnings(const GenJob& job);
+// The common variables (#100..#199, #500..#999) a program assigns, ascending; comments are skipped.
+std::vector<int> common_variables_set(const std::string& text);
+// "#100..#102, #110" for {100, 101, 102, 110}.
+std::string variable_ranges(const std::vector<int>& numbers);
 // The statistics of `ncurve gen --json`, with the program's text when program is given.
 nlohmann::json gen_json(const GenJob& job, const gen::Result& result, const std::string* program);
 

@@ -127,9 +127,14 @@ std::string header(const geom::Curve& curve, const Options& o, const std::string
                   o.program_number, comment_text(curve.name()), comment_text(to_string(o.form)),
                   comment_text(curve.name()), comment_text(params), curve.t0(), curve.t1(), mm(o.tol),
                   comment_text(to_string(o.form)), method.empty() ? "" : ", " + comment_text(method));
-  if (o.tool_radius > 0)
-    text += fmt::format("(CUTTER CENTRE PATH: TOOL RADIUS {} MM, {} OF THE CURVE)\n", mm(o.tool_radius),
-                        o.side == Side::left ? "LEFT" : "RIGHT");
+  const char* side = o.side == Side::left ? "LEFT" : "RIGHT";
+  if (o.tool_radius > 0 && !is_lathe(o))
+    text += fmt::format("(CUTTER CENTRE PATH: TOOL RADIUS {} MM, {} OF THE CURVE)\n", mm(o.tool_radius), side);
+  else if (o.tool_radius > 0 && (o.tip == 0 || o.tip == 9))
+    text += fmt::format("(NOSE CENTRE PATH: NOSE RADIUS {} MM, {} OF THE CURVE)\n", mm(o.tool_radius), side);
+  else if (o.tool_radius > 0)  // tips 1..8: the nose centre offset, then moved to the tip
+    text += fmt::format("(IMAGINARY TOOL TIP {} PATH: NOSE RADIUS {} MM, THE NOSE CENTRE {} OF THE CURVE)\n", o.tip,
+                        mm(o.tool_radius), side);
   if (o.inch) text += "(INCH PROGRAM: COORDINATES AND FEEDS IN INCHES; THE CURVE IS IN MM)\n";
   return text;
 }

@@ -231,6 +231,7 @@ void Interpreter::warn_mixed_decimal_points(const nc::Program& program) {
 
 RunResult Interpreter::run(MoveSink& sink) {
   sink_ = &sink;
+  setup_sent_ = false;
   result_ = RunResult{};
   const nc::Program* main = library_.main();
   if (!main) {

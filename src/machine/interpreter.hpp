@@ -375,6 +375,8 @@ private:
   RunOptions options_;
   nc::EvalOptions eval_options_;
   MoveSink* sink_ = nullptr;
+  Setup setup_;              // the last one the sink was told (record)
+  bool setup_sent_ = false;
   RunResult result_;
 
   std::vector<Frame> frames_;

@@ -34,16 +34,35 @@ const char* unsupported_name(int g, const MachineProfile& p) {
   const char* what = g_code_not_simulated(g, p);  // g_code_table.cpp
   return what ? what : kindless_unsupported(g);
 }
-// PS0010 for a G code the control lacks; a whole number could be made a custom G code.
-std::string unknown_g_code(int g, const MachineProfile& p) {
+// PS0010 for a G code the control lacks. A whole number could be made a custom G code: the hint
+// names a free parameter No.6050..6059 whose program O9010..O9019 is there (the one ncurve's macros
+// give this G code, G102..G111, first), or the mapping when none is.
+std::string unknown_g_code(int g, const MachineProfile& p, const ProgramLibrary& lib) {
   std::string code = fmt::format("G{}{}", g / 10, g % 10 ? fmt::format(".{}", g % 10) : "");
   std::string text = fmt::format("{} is not a G code of this control", code);
-  if (g % 10 != 0 || g / 10 < 1 || g / 10 > 9999) return text;
-  for (int i = 0; i < static_cast<int>(p.g_code_macros.size()); ++i)
-    if (p.g_code_macros[i] == 0)
-      return text + fmt::format(" (to make it a custom G code calling O{}, set parameter No.{} = {}: "
-                                "--param {}={})", 9010 + i, 6050 + i, g / 10, 6050 + i, g / 10);
-  return text;
+  const int n = g / 10;
+  if (g % 10 != 0 || n < 1 || n > 9999) return text;
+  std::vector<int> present;
+  int free_slot = -1;
+  for (int i = 0; i < static_cast<int>(p.g_code_macros.size()); ++i) {
+    if (p.g_code_macros[i] != 0) continue;
+    if (free_slot < 0) free_slot = i;
+    if (lib.find(9010 + i)) present.push_back(i);
+  }
+  if (free_slot < 0) return text;
+  if (present.empty())
+    return text + fmt::format(" (parameters No.6050..6059 make G codes that call O9010..O9019, and none of these "
+                              "programs is in the file or a --lib folder: --param {}={} makes {} call O{})",
+                              6050 + free_slot, n, code, 9010 + free_slot);
+  int i = present.front();
+  for (int k : present)
+    if (102 + k == n) i = k;
+  std::string others;
+  for (int k : present)
+    if (k != i) others += fmt::format("{}O{}", others.empty() ? "" : ", ", 9010 + k);
+  if (!others.empty()) others = fmt::format("; No.6050..6059 call O9010..O9019, and {} are here too", others);
+  return text + fmt::format(" (to make it a custom G code calling O{}, set parameter No.{} = {}: --param {}={}{})",
+                            9010 + i, 6050 + i, n, 6050 + i, n, others);
 }
 
 }  // namespace
@@ -119,7 +138,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
       case 250: case 260: break;  // spindle speed fluctuation detection off/on: nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 450: case 460: case 470: case 480:  // tool position offset (position_offset.cpp)
-        if (lathe) alarm("PS0010", unknown_g_code(g, profile_), column);
+        if (lathe) alarm("PS0010", unknown_g_code(g, profile_, library_), column);
         position_offset_ = g / 10;
         break;
       case 170: case 180: case 190:
@@ -164,11 +183,11 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         if (g == 150 || g == 690) break;  // cancels: nothing active to cancel
         if (const char* what = unsupported_name(g, profile_))
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
-        alarm("PS0010", unknown_g_code(g, profile_), column);
+        alarm("PS0010", unknown_g_code(g, profile_, library_), column);
       case 51: case 50: case 80: case 611: high_speed_mode(g, column); break;  // high_speed.cpp
       case 71: case 121: case 131: case 1070: case 1120: case 1130:  // polar_cylindrical.cpp
         if (developed_code(g, column)) break;
-        alarm("PS0010", unknown_g_code(g, profile_), column);
+        alarm("PS0010", unknown_g_code(g, profile_, library_), column);
       case 430: case 440:
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
         length_comp_ = g / 10;
@@ -238,7 +257,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         }
         if (const char* what = unsupported_name(g, profile_))
           alarm("NC9001", fmt::format("{} is not supported yet", what), column);
-        alarm("PS0010", unknown_g_code(g, profile_), column);
+        alarm("PS0010", unknown_g_code(g, profile_, library_), column);
       }
     }
   }
@@ -391,6 +410,12 @@ void Interpreter::record(Move& m) {
     note_extent(m.end);
   }
   s.seconds += m.seconds;
+  const Setup now{work_index_, origin_, length_comp_, h_};
+  if (!setup_sent_ || !(now == setup_)) {
+    setup_ = now;
+    setup_sent_ = true;
+    sink_->on_setup(now);
+  }
   sink_->on_move(m);
 }
 

@@ -53,10 +53,22 @@ struct Move {
   bool is_motion() const { return kind == MoveKind::rapid || kind == MoveKind::line || kind == MoveKind::arc; }
 };
 
+// Where the moves after it are: the work coordinate system and tool length offset in force. An
+// expanded program sets these up to put its moves at the same machine positions.
+struct Setup {
+  int work = 1;          // 1..6 = G54..G59, 7+ = G54.1 P(work - 6)
+  AxisVector origin{};   // machine coordinates of the work zero: work offset, external, G52, G92
+  int length_comp = 49;  // 43, 44, 49
+  int h = 0;             // the H offset number of G43/G44
+  bool operator==(const Setup&) const = default;
+};
+
 class MoveSink {
 public:
   virtual ~MoveSink() = default;
   virtual void on_move(const Move& m) = 0;
+  // Before the first move and before any move whose Setup differs from the one before.
+  virtual void on_setup(const Setup&) {}
   // The run stopped on this alarm after the last move: a writer marks its output as cut off.
   virtual void stopped(const nc::Diagnostic&) {}
 };

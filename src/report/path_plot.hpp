@@ -80,6 +80,10 @@ public:
     first_.on_move(m);
     second_.on_move(m);
   }
+  void on_setup(const machine::Setup& s) override {
+    first_.on_setup(s);
+    second_.on_setup(s);
+  }
   void stopped(const nc::Diagnostic& alarm) override {
     first_.stopped(alarm);
     second_.stopped(alarm);

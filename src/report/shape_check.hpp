@@ -99,7 +99,7 @@ inline ContourSpan contour_span(const std::vector<machine::Move>& moves, const g
       s.first = i;
       break;
     }
-  for (std::size_t i = moves.size(); i > s.first + 1 && moves.size() - i < most; --i)
+  for (std::size_t i = moves.size(); i > s.first && moves.size() - i < most; --i)  // one move may be the contour
     if (distance(xyz(moves[i - 1].end), end) <= near) {
       s.last = i;
       break;

@@ -93,8 +93,50 @@ void CsvWriter::on_move(const Move& m) {
 GcodeWriter::GcodeWriter(std::ostream& out, const machine::MachineProfile& profile, const std::string& source_name)
     : out_(out), profile_(profile), frame_(profile) {
   decimals_ = profile.increment < 0.001 ? 4 : 3;
+  for (int k = 0; k < machine::kAxes; ++k) setup_.origin[k] = profile.work_offsets[0][k] + profile.work_offsets[1][k];
   out_ << "%\nO0001 (EXPANDED BY NCURVE FROM " << source_name << ")\n";
-  out_ << (profile.lathe() ? "G18 G21" : "G17 G21 G90") << "\n";
+}
+
+void GcodeWriter::on_setup(const machine::Setup& s) { setup_ = s; }
+
+// The modal line before the first move, then a block for each change of the run's setup.
+void GcodeWriter::write_setup() {
+  const machine::Setup& s = setup_;
+  const bool lathe = profile_.lathe();
+  const bool system_a = lathe && profile_.gcode_system == 'A';
+  auto work_code = [](int w) { return w <= 6 ? fmt::format("G{}", 53 + w) : fmt::format("G54.1 P{}", w - 6); };
+  auto length_code = [](const machine::Setup& t) {
+    return t.length_comp == 49 ? std::string("G49") : fmt::format("G{} H{}", t.length_comp, t.h);
+  };
+  if (!header_) {
+    per_rev_ = profile_.power_on_feed_per_rev;
+    per_rev_known_ = true;
+    const char* feed_mode = system_a ? (per_rev_ ? "G99" : "G98") : (per_rev_ ? "G95" : "G94");
+    std::string line = lathe ? fmt::format("G18 G21 G40{} {}", system_a ? "" : " G90", feed_mode)
+                             : fmt::format("G17 G21 G40 G80 G90 {}", feed_mode);
+    out_ << line << ' ' << work_code(s.work) << (lathe && s.length_comp == 49 ? "" : " " + length_code(s)) << '\n';
+    local_.assign(profile_.axes.size(), num(0));
+  } else {
+    if (s.work != written_.work) out_ << work_code(s.work) << '\n';
+    if (s.length_comp != written_.length_comp || s.h != written_.h) out_ << length_code(s) << '\n';
+  }
+  // what the origin holds beyond the profile's work offset (G52, G92, an offset changed by G10 or #5201..)
+  const machine::AxisVector& work = s.work <= 6 ? profile_.work_offsets[s.work] : machine::AxisVector{};
+  std::vector<std::string> local;
+  for (char a : profile_.axes) {
+    const int k = machine::axis_index(a);
+    const double d = s.origin[k] - profile_.work_offsets[0][k] - work[k];
+    local.push_back(num(k == 0 ? frame_.x(d) : d));
+  }
+  if (local != local_) {
+    std::string line = "G52";
+    for (std::size_t i = 0; i < local.size(); ++i) line += fmt::format(" {}{}", profile_.axes[i], local[i]);
+    out_ << line << '\n';
+    local_ = local;
+  }
+  if (!header_ || s.origin != written_.origin) at_known_.fill(false);
+  written_ = s;
+  header_ = true;
 }
 
 std::string GcodeWriter::num(double v) const {
@@ -113,12 +155,20 @@ void GcodeWriter::on_move(const Move& m) {
     last_end_ = m.end;
     moved_ = true;
   }
-  auto axes = [&](const machine::AxisVector& p) {
+  if (!header_ || !(setup_ == written_)) write_setup();
+  auto axes = [&](const machine::AxisVector& p) {  // the axes whose position changes
     std::string s;
     for (char a : profile_.axes) {
-      int k = machine::axis_index(a);
-      s += fmt::format(" {}{}", a, num(k == 0 ? frame_.x(p[k]) : p[k] + turns_[k]));
+      const int k = machine::axis_index(a);
+      if (!at_known_[k]) at_[k] = num(k == 0 ? frame_.x(m.start[k]) : m.start[k] + turns_[k]);
+      at_known_[k] = true;
+      std::string v = num(k == 0 ? frame_.x(p[k]) : p[k] + turns_[k]);
+      if (v == at_[k]) continue;
+      s += fmt::format(" {}{}", a, v);
+      at_[k] = std::move(v);
     }
+    if (s.empty())  // a move to where the tool is: a block without axis words would not move at all
+      for (char a : profile_.axes) s += fmt::format(" {}{}", a, at_[machine::axis_index(a)]);
     return s;
   };
   auto feed_mode = [&]() -> std::string {  // G94/G95 (G98/G99 on a system A lathe) before the motion code
@@ -139,8 +189,8 @@ void GcodeWriter::on_move(const Move& m) {
       motion_ = 0;
       break;
     case MoveKind::line: {
-      if (m.threading) {  // G32 (G33 on systems B/C): F is the lead whatever the feed mode; Q the start angle
-        line = (profile_.gcode_system == 'A' ? "G32" : "G33") + axes(m.end) + feed_word();
+      if (m.threading) {  // G32 (G33 on lathe systems B/C and on a mill): F is the lead whatever the feed mode; Q the start angle
+        line = (lathe && profile_.gcode_system == 'A' ? "G32" : "G33") + axes(m.end) + feed_word();
         if (m.thread_start > 0) line += fmt::format(" Q{}", m.thread_start);
         motion_ = 32;
         break;
@@ -167,6 +217,8 @@ void GcodeWriter::on_move(const Move& m) {
       break;
     case MoveKind::coolant: case MoveKind::program_stop: case MoveKind::m_code:
       line = fmt::format("M{:02}", m.code);
+      // rigid tapping allows no axis move after M29 but its cycle's; the cycle comes expanded
+      if (m.kind == MoveKind::m_code && m.code == 29) line = "(M29 RIGID TAPPING: ITS CYCLE EXPANDED BELOW)";
       break;
     case MoveKind::program_end:
       line = fmt::format("M{:02}", m.code);
@@ -177,6 +229,7 @@ void GcodeWriter::on_move(const Move& m) {
 }
 
 void GcodeWriter::stopped(const nc::Diagnostic& alarm) {
+  if (!header_) write_setup();
   // a comment holds no parentheses and, read by a control, printable upper-case text
   std::string text = fmt::format("ALARM {} AT {}:{}: {} - THE RUN STOPPED HERE", alarm.code,
                                  alarm.span.file ? alarm.span.file->name() : "", alarm.span.line, alarm.message);
@@ -191,6 +244,7 @@ void GcodeWriter::stopped(const nc::Diagnostic& alarm) {
 }
 
 void GcodeWriter::finish() {
+  if (!header_) write_setup();
   if (!ended_ && !stopped_) out_ << "M30\n";
   out_ << "%\n";
 }

@@ -1,6 +1,7 @@
 // Move sinks that write the tool path: JSON Lines, CSV points, expanded G-code.
 #pragma once
 #include <nlohmann/json_fwd.hpp>
+#include <array>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -52,17 +53,22 @@ private:
   std::vector<int> extra_;  // A, B, C of the profile: columns a, b, c after f
 };
 
-// The program the macro stands for: every move as a plain G00/G01/G02/G03 block, absolute, in mm.
+// The program the macro stands for: every move as a plain G00/G01/G02/G03 block, absolute, in mm,
+// after the modal setup the run had (plane, units, G40, G90, feed mode, work coordinate system,
+// G52 for what the run's origin adds to the profile's work offset, G43 H). A block writes only the
+// axes whose position changes.
 class GcodeWriter final : public machine::MoveSink {
 public:
   GcodeWriter(std::ostream& out, const machine::MachineProfile& profile, const std::string& source_name);
   void on_move(const machine::Move& m) override;
+  void on_setup(const machine::Setup& s) override;
   // The run stopped on an alarm: a comment naming it ends the program, without M30.
   void stopped(const nc::Diagnostic& alarm) override;
   void finish();
 
 private:
   std::string num(double v) const;
+  void write_setup();
   std::ostream& out_;
   const machine::MachineProfile& profile_;
   OutputFrame frame_;
@@ -73,9 +79,15 @@ private:
   bool per_rev_known_ = false;
   bool ended_ = false;
   bool stopped_ = false;
+  bool header_ = false;          // the modal setup line is out
+  machine::Setup setup_;         // the run's, for the next move
+  machine::Setup written_;       // the one the program has set up
+  std::vector<std::string> local_;  // the G52 offsets written, per axis of the profile
   machine::AxisVector turns_{};    // added to A, B, C: roll-over axes written as continuous angles
   machine::AxisVector last_end_{};
   bool moved_ = false;
+  std::array<std::string, machine::kAxes> at_;  // each axis's position as the program last left it
+  std::array<bool, machine::kAxes> at_known_{};  // false: at the move's start (no block yet, or a new origin)
 };
 
 // Points of an arc move (excluding its start), spaced so the chord error is within tolerance.

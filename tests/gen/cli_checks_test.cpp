@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/cli_checks.hpp"
+#include "app/gen_command.hpp"
 #include "geom/curve.hpp"
 
 using namespace ncurve::app;
@@ -93,4 +94,14 @@ TEST(CliChecks, CurveTextNamesItsParametersAndCalls) {
   EXPECT_TRUE(uses[2].called);  // followed by a bracket, past a space
   EXPECT_EQ(uses[3].name, "a");
   EXPECT_EQ(uses[3].column, 33u);
+}
+
+// gen's list of the common variables a program sets: assignments to #100..#199 and #500..#999,
+// not those in comments, nor locals and system variables.
+TEST(GenOutput, CommonVariablesSetSkipsCommentsLocalsAndSystemVariables) {
+  const std::string text = "O1000 (#105 = T)\n#100=1.\n#101 = #100+#105\n#33=2\nIF [#1 GT 0] THEN #500=3\n"
+                           "#3000=1 (#120=0)\n#199=#102\nG01 X#110\n";
+  EXPECT_EQ(common_variables_set(text), (std::vector<int>{100, 101, 199, 500}));
+  EXPECT_EQ(variable_ranges({100, 101, 102, 110, 111, 120, 500}), "#100..#102, #110, #111, #120, #500");
+  EXPECT_EQ(variable_ranges({}), "");
 }

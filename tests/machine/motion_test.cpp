@@ -46,18 +46,48 @@ TEST(Motion, DecimalPointWarningShowsTheNumberAsTheControlDoes) {
   EXPECT_EQ(call.result.warnings[0].message.find(" mm "), std::string::npos);
 }
 
-// An integer G code the control lacks names the parameter that would make it a custom G code.
+// An integer G code the control lacks: without any of O9010..O9019 the hint gives the mapping
+// No.6050..6059 -> O9010..O9019 with the first free parameter.
 TEST(Motion, UnknownGCodeNamesTheCustomGCodeParameter) {
   auto r = run("G102 X10. Y0. F100.\nM30\n");
   EXPECT_EQ(r.alarm_code(), "PS0010");
-  EXPECT_NE(r.result.alarm->message.find("set parameter No.6050 = 102: --param 6050=102"), std::string::npos)
+  EXPECT_NE(r.result.alarm->message.find("parameters No.6050..6059 make G codes that call O9010..O9019, and none of "
+                                         "these programs is in the file or a --lib folder: --param 6050=102 makes "
+                                         "G102 call O9010"),
+            std::string::npos)
       << r.result.alarm->message;
   auto p = machine::default_mill();
   p.g_code_macros[0] = 103;  // No.6050 taken: the next free one is named
   auto taken = run("G102 X10. Y0. F100.\nM30\n", p);
-  EXPECT_NE(taken.result.alarm->message.find("No.6051 = 102: --param 6051=102"), std::string::npos);
+  EXPECT_NE(taken.result.alarm->message.find("--param 6051=102 makes G102 call O9011"), std::string::npos)
+      << taken.result.alarm->message;
   auto fraction = run("G102.5 X10.\nM30\n");
   EXPECT_EQ(fraction.result.alarm->message.find("--param"), std::string::npos);
+}
+
+// O9011 in the file is called through No.6051 (No.6050 calls O9010, which is not there): the hint
+// names No.6051, and following it runs O9011.
+TEST(Motion, UnknownGCodeNamesTheParameterOfTheProgramThatExists) {
+  const std::string macro = "O9011\nG01 X#24 Y#25 F100.\nM99\n";
+  auto r = run("O0001\nG103 X10. Y5.\nM30\n" + macro);
+  ASSERT_EQ(r.alarm_code(), "PS0010");
+  EXPECT_NE(r.result.alarm->message.find("calling O9011, set parameter No.6051 = 103: --param 6051=103)"),
+            std::string::npos)
+      << r.result.alarm->message;
+  auto p = machine::default_mill();
+  p.g_code_macros[1] = 103;
+  auto followed = run("O0001\nG103 X10. Y5.\nM30\n" + macro, p);
+  ASSERT_TRUE(followed.result.ok()) << followed.result.alarm->message;
+  ASSERT_EQ(followed.motions().size(), 1u);
+  EXPECT_DOUBLE_EQ(followed.motions()[0].end[0], 10.0);
+  EXPECT_DOUBLE_EQ(followed.motions()[0].end[1], 5.0);
+  // several present (a library like macros/): the one ncurve's macros give G103, O9011, is named
+  auto lib = run("G103 X10.\nM30\n", machine::default_mill(), {},
+                 {{"O9010.nc", "O9010\nM99\n"}, {"O9011.nc", "O9011\nM99\n"}, {"O9012.nc", "O9012\nM99\n"}});
+  EXPECT_NE(lib.result.alarm->message.find("calling O9011, set parameter No.6051 = 103: --param 6051=103; "
+                                           "No.6050..6059 call O9010..O9019, and O9010, O9012 are here too)"),
+            std::string::npos)
+      << lib.result.alarm->message;
 }
 
 TEST(Motion, VariableValuesAreMillimetresAndRoundToTheIncrement) {

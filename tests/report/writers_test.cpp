@@ -105,6 +105,72 @@ TEST(Writers, ExpandedGcodeRunsToTheSamePath) {
   }
 }
 
+namespace {
+// Every motion's start and end in work coordinates: a frame the expansion left out shows as a
+// start that differs.
+void expect_same_path(const std::vector<machine::Move>& a, const std::vector<machine::Move>& b,
+                      const std::string& expanded) {
+  ASSERT_EQ(a.size(), b.size()) << expanded;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].kind, b[i].kind) << i;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(a[i].start[k], b[i].start[k], 1e-9) << i << " axis " << k << "\n" << expanded;
+      EXPECT_NEAR(a[i].end[k], b[i].end[k], 1e-9) << i << " axis " << k << "\n" << expanded;
+    }
+  }
+}
+}  // namespace
+
+// A hand-written program in G55 (X100 Y50 on the profile): the expansion starts with the modal
+// setup, G55 included, and writes only the axes that move.
+TEST(Writers, ExpandedGcodeKeepsTheWorkOffsetAndWritesTheAxesThatMove) {
+  auto p = machine::default_mill();
+  p.work_offsets[2] = {100, 50, 0, 0, 0, 0};
+  const std::string program = "G55 G90 G00 X10. Y10. Z5.\nG01 Z-1. F200.\nG01 Y20.\nG00 Z5.\nM30\n";
+  std::string g = write(program, "gcode", p);
+  EXPECT_NE(g.find("O0001 (EXPANDED BY NCURVE FROM w.nc)\nG17 G21 G40 G80 G90 G94 G55 G49\n"
+                   "G00 X10. Y10. Z5.\nG01 Z-1. F200.\nG01 Y20.\nG00 Z5.\nM30\n"),
+            std::string::npos)
+      << g;
+  // started on a machine in G91, G18 and feed per revolution, it still cuts at G55's X110 Y60
+  auto other = p;
+  other.power_on_g91 = true;
+  other.power_on_plane = 18;
+  other.power_on_feed_per_rev = true;
+  auto again = test::run(g, other);
+  ASSERT_TRUE(again.result.ok()) << nc::format(*again.result.alarm) << "\n" << g;
+  expect_same_path(test::run(program, p).motions(), again.motions(), g);
+}
+
+// G54 to G55 in the middle, then G92: each new frame is set up before the move that uses it; G92's
+// shift of the origin (-10, -10 from G55's X100) is written as the G52 that gives the same origin.
+TEST(Writers, ExpandedGcodeFollowsTheFramesOfTheRun) {
+  auto p = machine::default_mill();
+  p.work_offsets[2] = {100, 0, 0, 0, 0, 0};
+  const std::string program = "G54 G00 X10. Y0.\nG55 G00 X10.\nG92 X20. Y10.\nG01 X30. F100.\n"
+                              "G54 G00 X0.\nM30\n";
+  std::string g = write(program, "gcode", p);
+  // at G55 X10 (machine X110, Y0), G92 X20 Y10 puts the origin at X90 Y-10: 10 and 10 short of G55's
+  EXPECT_NE(g.find("G54 G49\nG00 X10.\nG55\nG00 X10.\nG52 X-10. Y-10. Z0.\nG01 X30. F100.\nG54\nG00 X0.\n"),
+            std::string::npos)
+      << g;
+  auto again = test::run(g, p);
+  ASSERT_TRUE(again.result.ok()) << nc::format(*again.result.alarm) << "\n" << g;
+  expect_same_path(test::run(program, p).motions(), again.motions(), g);
+}
+
+// G43 H1 (Z offset 20) in the run: the expansion sets it up where the run did.
+TEST(Writers, ExpandedGcodeKeepsTheToolLengthOffset) {
+  auto p = machine::default_mill();
+  p.tool_offsets[1].geometry = 20;
+  const std::string program = "T1 M06\nG43 H1 G00 Z50.\nG01 Z0. F100.\nG49 G00 Z100.\nM30\n";
+  std::string g = write(program, "gcode", p);
+  EXPECT_NE(g.find("T1 M06\nG43 H1\nG00 Z50.\nG01 Z0. F100.\nG49\nG00 Z100.\n"), std::string::npos) << g;
+  auto again = test::run(g, p);
+  ASSERT_TRUE(again.result.ok()) << nc::format(*again.result.alarm) << "\n" << g;
+  expect_same_path(test::run(program, p).motions(), again.motions(), g);
+}
+
 TEST(Writers, SummaryJsonHasTheCounts) {
   machine::ProgramLibrary lib;
   lib.add_text("s.nc", "O1\nG00 X10.\nG01 X20. F100.\nM30\n", true);
@@ -149,7 +215,8 @@ TEST(Writers, RotaryAxesInEveryFormat) {
                  "1,rapid,0.000000,0.000000,0.000000,0,0.000000\n2,rapid,0.000000,0.000000,0.000000,0,380.000000\n"
                  "3,rapid,0.000000,0.000000,0.000000,0,-30.000000\n");
   std::string g = write(program, "gcode", p);
-  EXPECT_NE(g.find("G00 X0. Y0. Z0. A380.\nG00 X0. Y0. Z0. A330.\n"), std::string::npos) << g;
+  // the first block moves nothing (every axis is at 0 already) and keeps its axes; then only A turns
+  EXPECT_NE(g.find("G00 X0. Y0. Z0. A0.\nG00 A380.\nG00 A330.\n"), std::string::npos) << g;
   std::string j = write(program, "jsonl", p);
   EXPECT_NE(j.find(R"("end_abc":[380,0,0])"), std::string::npos) << j;
   // the 3-axis header stays as it was
