@@ -415,5 +415,23 @@ TEST(ServeGuard, ProgramOverTheMemoryBudgetIs413) {
   EXPECT_EQ(program_lines("X1\nX2\nX3"), 3u);
 }
 
+// A profile of a table name of 60,000 dotted parts: 400 saying where and why; the server keeps serving.
+TEST(ServeGuard, DeeplyNestedProfileIs400) {
+  Running s(ServeConfig{});
+  auto c = s.client();
+  std::string deep = "[machine]\nname = \"deep\"\n[";
+  for (int i = 0; i < 60'000; ++i) deep += "a.";
+  deep += "b]\nx = 1\n";
+  auto r = c.Post("/api/run", json{{"program", "M30\n"}, {"machine", deep}}.dump(), "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  const std::string error = json::parse(r->body)["error"];
+  EXPECT_NE(error.find("<request>:3:65: error"), std::string::npos) << error;
+  EXPECT_NE(error.find("a dotted key of more than 32 parts"), std::string::npos) << error;
+  auto again = c.Post("/api/run", kShortRun, "application/json");
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->status, 200);
+}
+
 }  // namespace
 }  // namespace ncurve::serve
