@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "base/restore.hpp"
-#include "machine/g_code_table.hpp"
+#include "machine/g_codes.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
@@ -14,25 +14,10 @@ namespace ncurve::machine {
 namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-
-const char* kindless_unsupported(int g) {
-  switch (g) {
-    case 150: case 160: return "polar coordinates (G15/G16)";
-    case 680: return "coordinate rotation (G68)";
-    case 510: return "scaling (G51)";
-    case 511: return "programmable mirror image (G51.1)";
-    case 310: return "skip function (G31)";
-    case 330: case 320: return "threading (G32/G33)";
-    case 120: case 130: return "circle cutting (G12/G13)";
-    case 70: case 71: return "cylindrical interpolation (G07.1)";
-    case 121: case 131: return "polar coordinate interpolation (G12.1/G13.1)";
-    default: return nullptr;
-  }
-}
 // The name of a G code of the control that ncurve does not simulate, or nullptr.
 const char* unsupported_name(int g, const MachineProfile& p) {
-  const char* what = g_code_not_simulated(g, p);  // g_code_table.cpp
-  return what ? what : kindless_unsupported(g);
+  const GCode* row = g_code(g, g_machine(p));
+  return row && row->status == GStatus::not_simulated ? row->name : nullptr;
 }
 // PS0010 for a G code the control lacks; a whole number could be made a custom G code.
 std::string unknown_g_code(int g, const MachineProfile& p) {
