@@ -412,6 +412,7 @@ private:
   bool inch_ = false;
   bool feed_per_rev_ = false;
   bool css_ = false;
+  bool speed_fluctuation_check_ = false;  // G26 (on) / G25 (off): read by #4008 on a lathe
   bool exact_stop_ = false;
   bool exact_stop_once_ = false;  // G09 in the current block
   std::uint32_t statements_since_ = 0, nc_blocks_since_ = 0;  // since the previous event

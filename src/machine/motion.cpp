@@ -101,7 +101,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         one_shot.push_back(g);  // reference_moves.cpp, skip.cpp, stroke_check.cpp
         break;
       case 230: stroke_area_switch(false); break;  // G22 comes with its area (one_shot)
-      case 250: case 260: break;  // spindle speed fluctuation detection off/on: nothing on the path
+      case 250: case 260: speed_fluctuation_check_ = g == 260; break;  // nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 450: case 460: case 470: case 480:  // tool position offset (position_offset.cpp)
         if (lathe) alarm("PS0010", unknown_g_code(g, profile_), column);

@@ -32,6 +32,7 @@ int Interpreter::modal_code(int group) const {
       cycle_ == 0 ? 800 : cycle_ * 10,
       cycle_return_initial_ ? 980 : 990,
       css_ ? 960 : 970,
+      speed_fluctuation_check_ ? 260 : 250,
       modal_call_ ? 660 : 670,
       work,
       exact_stop_code_ == 611 ? 611 : exact_stop_code_ * 10,
