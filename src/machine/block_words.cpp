@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "machine/g_codes.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
@@ -46,8 +47,6 @@ int g_group(int g, bool lathe, char system) {
     default: return 0;
   }
 }
-
-std::string g_name(int g) { return fmt::format("G{:02}{}", g / 10, g % 10 ? fmt::format(".{}", g % 10) : ""); }
 
 bool takes_no_sign(char letter) {
   return letter == 'M' || letter == 'S' || letter == 'T' || letter == 'H' || letter == 'D';

@@ -220,7 +220,6 @@ private:
   bool transform_arc_words();  // R or I J K of an arc under a transform; true when G02 and G03 swap
   void transformed_cycle_levels(int axis, double& r_level, double& z_level) const;  // canned cycle R and Z
   V2 transformed_plane_vector(V2 v) const;  // G40 I J
-  std::optional<double> transform_modal(int n) const;  // #4011, #4016, #4017, #4022 on a mill
   AxisVector program_position() const;  // #5001..: the end point before the transforms
   Transforms xf_;
   bool polar_ = false;         // G16
@@ -328,6 +327,7 @@ private:
  private:
   void write_var(int n, nc::Value v, std::uint16_t column);
   nc::Value read_system(int n, std::uint16_t column);
+  int modal_code(int group) const;  // #4001..#4022 (variables.cpp)
   void write_system(int n, nc::Value v, std::uint16_t column);
   double program_units(int axis, double mm_value) const;  // for position variables
 
@@ -414,6 +414,7 @@ private:
   bool inch_ = false;
   bool feed_per_rev_ = false;
   bool css_ = false;
+  bool speed_fluctuation_check_ = false;  // G26 (on) / G25 (off): read by #4008 on a lathe
   bool exact_stop_ = false;
   bool exact_stop_once_ = false;  // G09 in the current block
   std::uint32_t statements_since_ = 0, nc_blocks_since_ = 0;  // since the previous event

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "base/restore.hpp"
-#include "machine/g_code_table.hpp"
+#include "machine/g_codes.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
@@ -14,25 +14,10 @@ namespace ncurve::machine {
 namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-
-const char* kindless_unsupported(int g) {
-  switch (g) {
-    case 150: case 160: return "polar coordinates (G15/G16)";
-    case 680: return "coordinate rotation (G68)";
-    case 510: return "scaling (G51)";
-    case 511: return "programmable mirror image (G51.1)";
-    case 310: return "skip function (G31)";
-    case 330: case 320: return "threading (G32/G33)";
-    case 120: case 130: return "circle cutting (G12/G13)";
-    case 70: case 71: return "cylindrical interpolation (G07.1)";
-    case 121: case 131: return "polar coordinate interpolation (G12.1/G13.1)";
-    default: return nullptr;
-  }
-}
 // The name of a G code of the control that ncurve does not simulate, or nullptr.
 const char* unsupported_name(int g, const MachineProfile& p) {
-  const char* what = g_code_not_simulated(g, p);  // g_code_table.cpp
-  return what ? what : kindless_unsupported(g);
+  const GCode* row = g_code(g, g_machine(p));
+  return row && row->status == GStatus::not_simulated ? row->name : nullptr;
 }
 // PS0010 for a G code the control lacks. A whole number could be made a custom G code: the hint
 // names a free parameter No.6050..6059 whose program O9010..O9019 is there (the one ncurve's macros
@@ -135,7 +120,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
         one_shot.push_back(g);  // reference_moves.cpp, skip.cpp, stroke_check.cpp
         break;
       case 230: stroke_area_switch(false); break;  // G22 comes with its area (one_shot)
-      case 250: case 260: break;  // spindle speed fluctuation detection off/on: nothing on the path
+      case 250: case 260: speed_fluctuation_check_ = g == 260; break;  // nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 450: case 460: case 470: case 480:  // tool position offset (position_offset.cpp)
         if (lathe) alarm("PS0010", unknown_g_code(g, profile_, library_), column);

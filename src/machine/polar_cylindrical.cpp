@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "machine/developed_path.hpp"
+#include "machine/g_codes.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
@@ -21,33 +22,6 @@ namespace {
 constexpr double kDeg = 180 / std::numbers::pi;
 const char* const kAxisLetters = "XYZABC";
 
-std::string g_name(int g) { return fmt::format("G{:02}{}", g / 10, g % 10 ? fmt::format(".{}", g % 10) : ""); }
-
-const char* forbidden_kind(int g, bool lathe, char system) {
-  switch (g) {
-    case 0: return "positioning";
-    case 170: case 180: case 190: return "plane selection";
-    case 270: case 280: case 290: case 300: case 301: return "reference position return";
-    case 310: case 311: case 312: case 313: case 314: return "skip function";
-    case 370: return "automatic tool length measurement";
-    case 520: case 530: case 540: case 550: case 560: case 570: case 580: case 590: case 541:
-      return "coordinate system change";
-    case 160: case 510: case 511: case 680: return "coordinate transform";
-    case 430: case 440: case 490: return "tool length compensation";
-    case 320: case 330: case 340: return "threading";
-    default: break;
-  }
-  if (g == 920 && !(lathe && system == 'A')) return "coordinate system setting";
-  if (lathe) {
-    if (system == 'A' && (g == 900 || g == 920 || g == 940)) return "single cutting cycle";
-    if (system != 'A' && (g == 770 || g == 780 || g == 790)) return "single cutting cycle";
-    if (g >= 700 && g <= 760 && g % 10 == 0) return "multiple repetitive cycle";
-    if (g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890) return "drilling canned cycle";
-  } else if (g % 10 == 0 && ((g >= 730 && g <= 760) || (g >= 810 && g <= 890))) {
-    return "drilling canned cycle";
-  }
-  return nullptr;
-}
 }  // namespace
 
 // G07.1 (71), G12.1 (121), G13.1 (131); G107 is G07.1's other name, G112 and G113 a lathe's.
@@ -205,10 +179,11 @@ void Interpreter::end_developed() {
 }
 
 void Interpreter::check_code_in_developed(int g, std::uint16_t column) const {
-  const bool lathe = profile_.lathe();
-  const char* what = forbidden_kind(g, lathe, profile_.gcode_system);
-  if (!what && lathe && profile_.gcode_system == 'A' && g == 500 && (has('X') || has('Z') || has('U') || has('W')))
-    what = "coordinate system setting";
+  const GCode* row = g_code(g, g_machine(profile_));
+  if (!row || row->kind == GKind::none) return;
+  // lathe system A G50 with axis words sets the coordinate system; G50 S alone clamps the spindle
+  if (row->kind == GKind::coordinate_setting_with_axes && !(has('X') || has('Z') || has('U') || has('W'))) return;
+  const char* what = to_string(row->kind);
   if (!what) return;
   if (!dev_->polar && g == 170 + 10 * (dev_->saved_plane - 17)) return;  // the plane in force
   alarm(dev_->polar ? "PS0146" : "PS0176",

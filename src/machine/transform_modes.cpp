@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "machine/g_codes.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
@@ -16,7 +17,6 @@ namespace ncurve::machine {
 namespace {
 const char* const kAxisLetters = "XYZABC";
 
-std::string g_name(int g) { return fmt::format("G{}{}", g / 10, g % 10 ? fmt::format(".{}", g % 10) : ""); }
 }  // namespace
 
 // Codes a transform mode forbids: "In coordinate system rotation mode [programmable mirror image
@@ -30,8 +30,10 @@ void Interpreter::check_code_in_transform(int g, std::uint16_t column) const {
                                 "G{} plane): cancel the rotation with G69 first",
                                 g / 10, xf_rotation_plane_),
           column);
-  const bool reference = g == 270 || g == 280 || g == 290 || g == 300 || g == 301;
-  const bool coordinates = (g >= 520 && g <= 590 && g % 10 == 0) || g == 541 || g == 920;
+  const GCode* row = g_code(g, g_machine(profile_));
+  const GKind kind = row ? row->kind : GKind::none;
+  const bool reference = kind == GKind::reference;
+  const bool coordinates = kind == GKind::coordinate_change || kind == GKind::coordinate_setting;
   if (!reference && !coordinates) return;
   const char* mode = xf_.rotating    ? "coordinate system rotation mode (G68): cancel it with G69"
                      : xf_.scaling   ? "scaling mode (G51): cancel it with G50"
@@ -294,17 +296,6 @@ V2 Interpreter::transformed_plane_vector(V2 v) const {
   w[pa.q] = v.y;
   w = xf_.apply_vector(w);
   return {w[pa.p], w[pa.q]};
-}
-
-std::optional<double> Interpreter::transform_modal(int n) const {
-  if (profile_.lathe()) return std::nullopt;
-  switch (n) {
-    case 4011: return xf_.scaling ? 51.0 : 50.0;
-    case 4016: return xf_.rotating ? 68.0 : 69.0;
-    case 4017: return polar_ ? 16.0 : 15.0;
-    case 4022: return xf_.mirroring() ? 51.1 : 50.1;
-    default: return std::nullopt;
-  }
 }
 
 AxisVector Interpreter::program_position() const { return xf_.active() ? xf_.invert(pos_) : pos_; }

@@ -5,67 +5,47 @@
 #include <cmath>
 #include <ctime>
 
+#include "machine/g_codes.hpp"
 #include "machine/interpreter.hpp"
 
 namespace ncurve::machine {
 
 using nc::Value;
 
-namespace {
-// The modal state #4001..#4022 read: the G code of each group (the 0i-F / 30i-B G code tables of the
-// machining center and of the lathe, whose groups differ: G96/G97 are group 02 on a lathe, 13 on a
-// mill; the plane is 02 on a mill, 16 on a lathe; G22/G23 are 04 on a mill, 09 on a lathe).
-struct Modal {
-  bool lathe = false;
-  char system = 'A';  // lathe G code system
-  int motion = 0, plane = 17, comp_side = 0, length_comp = 49, work_index = 1, exact_stop = 64, cycle = 0;
-  bool incremental = false, feed_per_rev = false, inch = false, css = false, modal_call = false,
-       return_initial = true, stroke_check = true, polar_interpolation = false;
-};
 
-int gcode_for_group(int group, const Modal& m) {
-  const int comp = m.comp_side > 0 ? 41 : m.comp_side < 0 ? 42 : 40;
-  const int stroke = m.stroke_check ? 22 : 23;
-  const int cycle = m.cycle == 0 ? 80 : m.cycle;
-  switch (group) {
-    case 1: return m.motion;
-    case 3: return m.incremental ? 91 : 90;
-    case 5: return m.lathe && m.system == 'A' ? (m.feed_per_rev ? 99 : 98) : (m.feed_per_rev ? 95 : 94);
-    case 6: return m.lathe && m.system == 'C' ? (m.inch ? 70 : 71) : (m.inch ? 20 : 21);
-    case 7: return comp;
-    case 12: return m.modal_call ? 66 : 67;
-    case 14: return m.work_index <= 6 ? 53 + m.work_index : 54;
-    case 15: return m.exact_stop;
-    default: break;
-  }
-  if (m.lathe) {
-    switch (group) {
-      case 2: return m.css ? 96 : 97;
-      case 4: return 69;  // mirror image for double turrets / balance cut off
-      case 8: return 25;  // spindle speed fluctuation detection off
-      case 9: return stroke;
-      case 10: return cycle;
-      case 11: return m.system == 'A' ? 0 : m.return_initial ? 98 : 99;  // A: G98/G99 are group 05
-      case 16: return m.plane;
-      case 21: return m.polar_interpolation ? 121 : 131;  // tenths: G12.1 / G13.1
-      default: return 0;
-    }
-  }
-  switch (group) {
-    case 2: return m.plane;
-    case 4: return stroke;
-    case 8: return m.length_comp;
-    case 9: return cycle;
-    case 10: return m.return_initial ? 98 : 99;
-    case 11: return 50;
-    case 13: return m.css ? 96 : 97;
-    case 16: return 69;
-    case 17: return 15;
-    case 21: return m.polar_interpolation ? 121 : 131;
-    default: return 0;
-  }
+// The code (x10) in force in modal group `group`, as #4001..#4022 read it: from the state ncurve
+// keeps, each code's group taken from the G-code table (the lathe's groups differ from the mill's);
+// the table's power-on code for a group ncurve does not change; 0 for a group the control lacks.
+int Interpreter::modal_code(int group) const {
+  const GMachine m = g_machine(profile_);
+  if (group == 1) return motion_ * 10;  // G60 too, modal with No.5431#0 MDL = 1
+  if (group == 3 && m == kLatheA) return incremental_ ? 910 : 900;
+  const int work = work_index_ > 6 ? 541 : 530 + 10 * work_index_;
+  const int state[] = {
+      plane_ * 10,
+      incremental_ ? 910 : 900,
+      m == kLatheA ? (feed_per_rev_ ? 990 : 980) : (feed_per_rev_ ? 950 : 940),  // before the return level
+      m == kLatheC ? (inch_ ? 700 : 710) : (inch_ ? 200 : 210),
+      comp_side_ > 0 ? 410 : comp_side_ < 0 ? 420 : 400,
+      length_comp_ * 10,
+      stroke2_on_ ? 220 : 230,
+      cycle_ == 0 ? 800 : cycle_ * 10,
+      cycle_return_initial_ ? 980 : 990,
+      css_ ? 960 : 970,
+      speed_fluctuation_check_ ? 260 : 250,
+      modal_call_ ? 660 : 670,
+      work,
+      exact_stop_code_ == 611 ? 611 : exact_stop_code_ * 10,
+      developed_ && dev_->polar ? 121 : 131,
+      xf_.scaling ? 510 : 500,
+      xf_.rotating ? 680 : 690,
+      polar_ ? 160 : 150,
+      xf_.mirroring() ? 511 : 501,
+  };
+  for (const int g : state)
+    if (g_group(g, m) == group) return g;
+  return g_initial(group, m);
 }
-}  // namespace
 
 double Interpreter::program_units(int axis, double mm) const {
   double v = mm;
@@ -195,21 +175,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
     case 3902: return Value::of(parts_required_);
     default: break;
   }
-  if (n >= 4001 && n <= 4022) {
-    if (n == 4014 && work_index_ > 6) return Value::of(54.1);
-    if (n == 4015 && exact_stop_code_ == 611) return Value::of(61.1);
-    if (const auto g = transform_modal(n)) return Value::of(*g);  // G15/G16, G50/G51, G50.1/G51.1, G68/G69
-    Modal m;
-    m.lathe = profile_.lathe();
-    m.system = profile_.gcode_system;
-    m.motion = motion_, m.plane = plane_, m.comp_side = comp_side_, m.length_comp = length_comp_;
-    m.work_index = work_index_, m.exact_stop = exact_stop_code_, m.cycle = cycle_;
-    m.incremental = incremental_, m.feed_per_rev = feed_per_rev_, m.inch = inch_, m.css = css_;
-    m.modal_call = modal_call_, m.return_initial = cycle_return_initial_, m.stroke_check = stroke2_on_;
-    m.polar_interpolation = developed_ && dev_->polar;
-    const int g = gcode_for_group(n - 4000, m);
-    return Value::of(n == 4021 ? g / 10.0 : g);
-  }
+  if (n >= 4001 && n <= 4022) return Value::of(modal_code(n - 4000) / 10.0);  // 54.1 for G54.1
   if (n >= 4101 && n <= 4130) {
     switch (n - 4100) {
       case 7: return Value::of(d_);
