@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     auto rows = io::read_number_rows(text, "fuzz.csv", 2, 2);
     if (rows.size() > 200) return 0;
-    std::vector<helicoid::Vec2> points;
+    std::vector<helicoid::V2> points;
     for (const auto& r : rows) points.push_back({r.values[0], r.values[1]});
     auto profile = helicoid::EndProfile::from_points("fuzz", points);
     (void)profile.first_hit(10, 0.5 * (profile.r_min() + profile.r_max()) * 0.1);

@@ -112,7 +112,7 @@ int helicoid_command(const HelicoidArgs& a) {
     if (!a.profile_csv.empty() + !a.profile_x.empty() + !a.profile.empty() > 1)
       throw std::runtime_error("give one end profile: --profile, --profile-x/--profile-y or --profile-csv");
     if (!a.profile_csv.empty()) {
-      std::vector<Vec2> points;
+      std::vector<V2> points;
       for (const auto& row : io::read_number_file(a.profile_csv, 2, 2)) points.push_back({row.values[0], row.values[1]});
       try {
         profile = EndProfile::from_points("points " + a.profile_csv, points);

@@ -18,15 +18,15 @@ namespace ncurve::helicoid {
 namespace {
 
 EndProfile offset_profile(const EndProfile& base, double distance) {
-  auto eval = [base, distance](double u, Vec2& p, Vec2& d) {
+  auto eval = [base, distance](double u, V2& p, V2& d) {
     auto at = [&](double v) {
-      Vec2 q = base.point(v), n = base.outward_normal(v);
-      return Vec2{q.x + distance * n.x, q.y + distance * n.y};
+      V2 q = base.point(v), n = base.outward_normal(v);
+      return q + distance * n;
     };
     p = at(u);
     constexpr double h = 1e-5;
-    Vec2 a = at(u - h), b = at(u + h);
-    d = {(b.x - a.x) / (2 * h), (b.y - a.y) / (2 * h)};
+    V2 a = at(u - h), b = at(u + h);
+    d = (b - a) / (2 * h);
   };
   return EndProfile(base.name() + " offset", eval, base.u0(), base.period(), false);
 }
@@ -101,9 +101,9 @@ ContactSearch::Distance ContactSearch::distance(double psi, double alpha, double
   out.u = hit.u;
   out.d = out.q[0] - hit.x;
   // Workpiece normal: dS/du x dS/dz of S(u, z) = (R(phi(z)) p(u), z).
-  Vec2 t = work_.profile.d1(hit.u);
+  V2 t = work_.profile.d1(hit.u);
   double c = std::cos(phi * kDeg), sn = std::sin(phi * kDeg);
-  Vec2 tw{c * t.x - sn * t.y, sn * t.x + c * t.y};
+  V2 tw = rotate(t, c, sn);
   double k = twist * kDeg;
   Vec3 n{tw.y, -tw.x, k * (tw.x * hit.x + tw.y * out.q[1])};
   if (n[0] * hit.x + n[1] * out.q[1] < 0) n = {-n[0], -n[1], -n[2]};
@@ -131,25 +131,24 @@ double ContactSearch::edge_normal_angle(const DiscCutter::Vertex& v, double alph
   // (the plane of the profile) and the rest (along the circle).
   const double ca = std::cos(alpha * kDeg), sa = std::sin(alpha * kDeg);
   const Vec3 radial{-ca, sa * e2_[1], sa * e2_[2]}, p{-n_work[0], -n_work[1], -n_work[2]};
-  const Vec2 q{p[0] * radial[0] + p[1] * radial[1] + p[2] * radial[2], p[0] * axis_[0] + p[1] * axis_[1] + p[2] * axis_[2]};
-  auto turn = [](Vec2 a, Vec2 b) { return std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y); };
+  const V2 q{p[0] * radial[0] + p[1] * radial[1] + p[2] * radial[2], p[0] * axis_[0] + p[1] * axis_[1] + p[2] * axis_[2]};
+  auto turn = [](V2 a, V2 b) { return std::atan2(cross(a, b), dot(a, b)); };
   // The nearest normal of the fan from `before` to `after` (turning left): q's own direction
   // within it, else the nearer end.
-  Vec2 u = v.before;
+  V2 u = v.before;
   const double sweep = turn(v.before, v.after), at = turn(v.before, q);
-  if (std::hypot(q.x, q.y) > 0 && at >= 0 && at <= sweep) {
-    const double len = std::hypot(q.x, q.y);
-    u = {q.x / len, q.y / len};
-  } else if (q.x * v.after.x + q.y * v.after.y > q.x * v.before.x + q.y * v.before.y) {
+  if (norm(q) > 0 && at >= 0 && at <= sweep) {
+    u = q / norm(q);
+  } else if (dot(q, v.after) > dot(q, v.before)) {
     u = v.after;
   }
-  const double dot = p[0] * (u.x * radial[0] + u.y * axis_[0]) + p[1] * (u.x * radial[1] + u.y * axis_[1]) +
+  const double cosine = p[0] * (u.x * radial[0] + u.y * axis_[0]) + p[1] * (u.x * radial[1] + u.y * axis_[1]) +
                      p[2] * (u.x * radial[2] + u.y * axis_[2]);
-  return std::acos(std::clamp(dot, -1.0, 1.0)) / kDeg;
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) / kDeg;
 }
 
 double ContactSearch::stock(const Contact& pass, double u) const {
-  const Vec2 p = work_.profile.point(u);
+  const V2 p = work_.profile.point(u);
   const double twist = work_.twist();
   // Smallest over the helix of the distance to the cutter surface: the largest of its negative.
   auto closeness = [&](double z) {

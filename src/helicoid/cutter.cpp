@@ -12,7 +12,7 @@
 namespace ncurve::helicoid {
 
 double ProfileElement::length() const {
-  if (kind == Kind::line) return std::hypot(end.x - start.x, end.y - start.y);
+  if (kind == Kind::line) return norm(end - start);
   return radius * std::abs(a1 - a0);
 }
 
@@ -23,7 +23,7 @@ DiscCutter::DiscCutter(std::vector<ProfileElement> elements) : elements_(std::mo
     if (!(e.length() > 0)) throw std::runtime_error(fmt::format("cutter profile: element {} has no length", i + 1));
     if (i > 0) {
       const auto& prev = elements_[i - 1].end;
-      if (std::hypot(prev.x - e.start.x, prev.y - e.start.y) > 1e-9)
+      if (norm(prev - e.start) > 1e-9)
         throw std::runtime_error(fmt::format("cutter profile: element {} does not start where element {} ends", i + 1, i));
     }
     starts_.push_back(total_);
@@ -40,8 +40,8 @@ DiscCutter::DiscCutter(std::vector<ProfileElement> elements) : elements_(std::mo
   }
   for (std::size_t i = 1; i < elements_.size(); ++i) {
     // travelled with the material on the left, a convex corner turns left (towards the material)
-    const Vec2 a = ends_[2 * i - 1].tangent, b = ends_[2 * i].tangent;
-    if (a.x * b.y - a.y * b.x > 1e-9) vertices_.push_back({starts_[i], ends_[2 * i - 1].normal, ends_[2 * i].normal, i});
+    const V2 a = ends_[2 * i - 1].tangent, b = ends_[2 * i].tangent;
+    if (cross(a, b) > 1e-9) vertices_.push_back({starts_[i], ends_[2 * i - 1].normal, ends_[2 * i].normal, i});
   }
 }
 
@@ -53,14 +53,14 @@ DiscCutter DiscCutter::v_insert(double diameter, double corner_radius, double in
   if (corner_radius * (1 - std::sin(half)) >= flank_depth || corner_radius >= R)
     throw std::runtime_error("cutter: the corner radius does not fit the insert");
   // Corner arc centre on the mid plane; tangent points where the flank normal is (sin half, +-cos half).
-  Vec2 c{R - corner_radius, 0};
+  V2 c{R - corner_radius, 0};
   double a = std::numbers::pi / 2 - half;
-  Vec2 t_minus{c.x + corner_radius * std::cos(a), -corner_radius * std::sin(a)};
-  Vec2 t_plus{t_minus.x, -t_minus.y};
+  V2 t_minus{c.x + corner_radius * std::cos(a), -corner_radius * std::sin(a)};
+  V2 t_plus{t_minus.x, -t_minus.y};
   // Flanks run inwards at `half` from the radial direction down to rho = R - flank_depth.
   double run = (t_minus.x - (R - flank_depth)) / std::cos(half);
-  Vec2 f_minus{R - flank_depth, t_minus.y - run * std::sin(half)};
-  Vec2 f_plus{f_minus.x, -f_minus.y};
+  V2 f_minus{R - flank_depth, t_minus.y - run * std::sin(half)};
+  V2 f_plus{f_minus.x, -f_minus.y};
   std::vector<ProfileElement> e;
   e.push_back({ProfileElement::Kind::line, f_minus, t_minus, {}, 0, 0, 0, "flank-"});
   if (corner_radius > 0) e.push_back({ProfileElement::Kind::arc, t_minus, t_plus, c, corner_radius, -a, a, "corner"});
@@ -79,7 +79,7 @@ DiscCutter from_rows(const std::vector<io::NumberRow>& rows, const std::string& 
     throw std::runtime_error(where(0) + ": list the profile from the -w side over the rim to the +w side (w grows)");
   std::vector<ProfileElement> e;
   for (std::size_t k = 0; k + 1 < rows.size(); ++k) {
-    const Vec2 a{rows[k].values[0], rows[k].values[1]}, b{rows[k + 1].values[0], rows[k + 1].values[1]};
+    const V2 a{rows[k].values[0], rows[k].values[1]}, b{rows[k + 1].values[0], rows[k + 1].values[1]};
     if (!(a.x > 0) || !(b.x > 0)) throw std::runtime_error(where(a.x > 0 ? k + 1 : k) + ": rho must be > 0 (off the cutter axis)");
     const double r = rows[k].values.size() > 2 ? rows[k].values[2] : 0;
     const std::string n = fmt::format("{}", e.size() + 1);
@@ -87,14 +87,14 @@ DiscCutter from_rows(const std::vector<io::NumberRow>& rows, const std::string& 
       e.push_back({ProfileElement::Kind::line, a, b, {}, 0, 0, 0, "line" + n});
       continue;
     }
-    const double chord = std::hypot(b.x - a.x, b.y - a.y), R = std::abs(r);
+    const double chord = norm(b - a), R = std::abs(r);
     if (!(chord > 0)) throw std::runtime_error(where(k) + ": the arc's ends coincide");
     if (R < chord / 2 - 1e-12)
       throw std::runtime_error(fmt::format("{}: arc radius {} is less than half the chord {:.6f}", where(k), R, chord / 2));
     // material on the left of the travel: a convex arc has its centre on the left of the chord
-    const Vec2 d{(b.x - a.x) / chord, (b.y - a.y) / chord}, left{-d.y, d.x};
+    const V2 left = perp((b - a) / chord);
     const double side = r > 0 ? 1 : -1, off = std::sqrt(std::max(0.0, R * R - chord * chord / 4));
-    const Vec2 c{(a.x + b.x) / 2 + side * left.x * off, (a.y + b.y) / 2 + side * left.y * off};
+    const V2 c = (a + b) / 2 + off * (side * left);
     const double a0 = std::atan2(a.y - c.y, a.x - c.x);
     double sweep = 2 * std::asin(std::min(1.0, chord / (2 * R)));
     e.push_back({ProfileElement::Kind::arc, a, b, c, R, a0, a0 + side * sweep, "arc" + n});
@@ -131,27 +131,27 @@ DiscCutter::Point DiscCutter::at_element(std::size_t i, double local) const {
   out.element = static_cast<int>(i);
   if (e.kind == ProfileElement::Kind::line) {
     double len = e.length();
-    Vec2 t{(e.end.x - e.start.x) / len, (e.end.y - e.start.y) / len};
-    out.p = {e.start.x + t.x * local, e.start.y + t.y * local};
+    V2 t = (e.end - e.start) / len;
+    out.p = e.start + local * t;
     out.tangent = t;
     out.normal = {t.y, -t.x};  // material on the left of the direction of travel
   } else {
     double dir = e.a1 > e.a0 ? 1 : -1;
     double ang = e.a0 + dir * local / e.radius;
-    Vec2 radial{std::cos(ang), std::sin(ang)};
-    out.p = {e.centre.x + e.radius * radial.x, e.centre.y + e.radius * radial.y};
-    out.tangent = {-dir * radial.y, dir * radial.x};
-    out.normal = dir > 0 ? radial : Vec2{-radial.x, -radial.y};
+    V2 radial{std::cos(ang), std::sin(ang)};
+    out.p = e.centre + e.radius * radial;
+    out.tangent = dir * perp(radial);
+    out.normal = dir > 0 ? radial : -radial;
   }
   return out;
 }
 
-double DiscCutter::signed_distance(Vec2 q) const {
+double DiscCutter::signed_distance(V2 q) const {
   double best = std::numeric_limits<double>::infinity(), sign = 1;
-  auto consider = [&](Vec2 foot, Vec2 normal) {
-    Vec2 d{q.x - foot.x, q.y - foot.y};
-    double dist = std::hypot(d.x, d.y);
-    if (dist < best) best = dist, sign = d.x * normal.x + d.y * normal.y < 0 ? -1 : 1;
+  auto consider = [&](V2 foot, V2 normal) {
+    V2 d = q - foot;
+    double dist = norm(d);
+    if (dist < best) best = dist, sign = dot(d, normal) < 0 ? -1 : 1;
   };
   for (std::size_t i = 0; i < elements_.size(); ++i) {
     const auto& e = elements_[i];
@@ -160,17 +160,16 @@ double DiscCutter::signed_distance(Vec2 q) const {
     consider(ends_[2 * i + 1].p, ends_[2 * i + 1].normal);
     if (e.kind == ProfileElement::Kind::line) {
       double len = e.length();
-      Vec2 t{(e.end.x - e.start.x) / len, (e.end.y - e.start.y) / len};
-      double along = (q.x - e.start.x) * t.x + (q.y - e.start.y) * t.y;
-      if (along > 0 && along < len) consider({e.start.x + t.x * along, e.start.y + t.y * along}, first.normal);
+      V2 t = (e.end - e.start) / len;
+      double along = dot(q - e.start, t);
+      if (along > 0 && along < len) consider(e.start + along * t, first.normal);
     } else {
       double dir = e.a1 > e.a0 ? 1 : -1;
       double ang = std::atan2(q.y - e.centre.y, q.x - e.centre.x);
       double from_start = std::remainder(dir * (ang - e.a0) - std::numbers::pi, 2 * std::numbers::pi) + std::numbers::pi;
       if (from_start < std::abs(e.a1 - e.a0)) {
-        Vec2 radial{std::cos(ang), std::sin(ang)};
-        consider({e.centre.x + e.radius * radial.x, e.centre.y + e.radius * radial.y},
-                 dir > 0 ? radial : Vec2{-radial.x, -radial.y});
+        V2 radial{std::cos(ang), std::sin(ang)};
+        consider(e.centre + e.radius * radial, dir > 0 ? radial : -radial);
       }
     }
   }

@@ -10,8 +10,8 @@ namespace ncurve::helicoid {
 
 struct ProfileElement {
   enum class Kind { line, arc } kind = Kind::line;
-  Vec2 start, end;  // (rho, w)
-  Vec2 centre;      // arc only
+  V2 start, end;  // (rho, w)
+  V2 centre;      // arc only
   double radius = 0;
   double a0 = 0, a1 = 0;  // arc only: polar angles of start and end about the centre, radians
   std::string region;     // "flank-", "corner", "flank+" ...
@@ -38,15 +38,15 @@ public:
   const std::vector<ProfileElement>& elements() const { return elements_; }
 
   struct Point {
-    Vec2 p;       // (rho, w)
-    Vec2 normal;  // outward unit normal in (rho, w)
-    Vec2 tangent; // unit, direction of growing arc length
+    V2 p;       // (rho, w)
+    V2 normal;  // outward unit normal in (rho, w)
+    V2 tangent; // unit, direction of growing arc length
     int element;
   };
   Point at(double s) const;  // s in [0, length()]
   // Distance from a point (rho, w) of a meridian half-plane to the profile: > 0 outside the
   // cutter's material, < 0 inside. For a point in space this is its distance to the surface.
-  double signed_distance(Vec2 q) const;
+  double signed_distance(V2 q) const;
   const std::string& region(double s) const { return elements_[at(s).element].region; }
   double corner_middle() const;  // arc length of the outermost point
 
@@ -55,7 +55,7 @@ public:
   // before to the one after; a surface touching the edge has its normal in that fan.
   struct Vertex {
     double s;               // arc length
-    Vec2 before, after;     // outward unit normals of the elements meeting there
+    V2 before, after;     // outward unit normals of the elements meeting there
     std::size_t element;    // the element after it
   };
   const std::vector<Vertex>& vertices() const { return vertices_; }

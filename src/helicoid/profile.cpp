@@ -22,9 +22,9 @@ constexpr int kOversample = 16;  // curve samples per cell when building the tab
 EndProfile::EndProfile(std::string name, Eval eval, double u0, double period, bool place)
     : name_(std::move(name)), eval_(std::move(eval)), u0_(u0), period_(period) {
   if (!(period_ > 0)) throw std::runtime_error(fmt::format("profile {}: empty parameter range", name_));
-  Vec2 p, d;
+  V2 p, d;
   eval_(u0_, p, d);
-  if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::hypot(p.x, p.y) < 1e-9)
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || norm(p) < 1e-9)
     throw std::runtime_error(fmt::format("profile {}: the start point u = {} is on the axis or undefined", name_, u0_));
   double turn = place ? -std::atan2(p.y, p.x) : 0;
   turn_cos_ = std::cos(turn);
@@ -35,14 +35,14 @@ EndProfile::EndProfile(std::string name, Eval eval, double u0, double period, bo
   std::vector<double> theta(samples + 1), us(samples + 1), radius(samples + 1);
   for (int k = 0; k <= samples; ++k) {
     double u = u0_ + period_ * k / samples;
-    Vec2 q = point(u);
+    V2 q = point(u);
     if (!std::isfinite(q.x) || !std::isfinite(q.y))
       throw std::runtime_error(fmt::format("profile {}: undefined at u = {:.4f}", name_, u));
     double a = std::atan2(q.y, q.x) / kDeg;
     if (k > 0) a += 360 * std::round((theta[k - 1] - a) / 360);
     theta[k] = a;
     us[k] = u;
-    radius[k] = std::hypot(q.x, q.y);
+    radius[k] = norm(q);
   }
   double winding = theta[samples] - theta[0];
   if (std::abs(std::abs(winding) - 360) > 1e-6)
@@ -84,7 +84,7 @@ EndProfile::EndProfile(std::string name, Eval eval, double u0, double period, bo
 
 EndProfile EndProfile::from_curve(std::shared_ptr<const geom::Curve> curve) {
   double u0 = curve->t0(), period = curve->t1() - curve->t0();
-  auto eval = [curve](double u, Vec2& p, Vec2& d) {
+  auto eval = [curve](double u, V2& p, V2& d) {
     auto q = curve->point(u);
     auto v = curve->d1(u);
     p = {q[0], q[1]};
@@ -93,12 +93,12 @@ EndProfile EndProfile::from_curve(std::shared_ptr<const geom::Curve> curve) {
   return EndProfile(curve->name(), eval, u0, period);
 }
 
-EndProfile EndProfile::from_points(std::string name, const std::vector<Vec2>& points) {
+EndProfile EndProfile::from_points(std::string name, const std::vector<V2>& points) {
   std::vector<std::array<double, 2>> xy;
   for (const auto& p : points) xy.push_back({p.x, p.y});
   auto spline = std::make_shared<const geom::PeriodicSpline>(xy);
   const double per_degree = spline->length() / 360;
-  auto eval = [spline, per_degree](double u, Vec2& p, Vec2& d) {
+  auto eval = [spline, per_degree](double u, V2& p, V2& d) {
     std::array<double, 2> q, v;
     spline->eval(u * per_degree, q, v);
     p = {q[0], q[1]};
@@ -108,7 +108,7 @@ EndProfile EndProfile::from_points(std::string name, const std::vector<Vec2>& po
 }
 
 EndProfile EndProfile::seed004_rotor() {
-  auto eval = [](double u_deg, Vec2& p, Vec2& d) {
+  auto eval = [](double u_deg, V2& p, V2& d) {
     const double u = u_deg * kDeg;
     const double s5 = std::sin(5 * u), c5 = std::cos(5 * u), den = 1.4 - c5;
     const double s = std::atan(s5 / den) - u;
@@ -121,32 +121,31 @@ EndProfile EndProfile::seed004_rotor() {
   return EndProfile("seed004 rotor", eval, 0, 360);
 }
 
-void EndProfile::point_and_d1(double u, Vec2& p, Vec2& d) const {
-  Vec2 rp, rd;
+void EndProfile::point_and_d1(double u, V2& p, V2& d) const {
+  V2 rp, rd;
   eval_(u, rp, rd);
-  p = {turn_cos_ * rp.x - turn_sin_ * rp.y, turn_sin_ * rp.x + turn_cos_ * rp.y};
-  d = {turn_cos_ * rd.x - turn_sin_ * rd.y, turn_sin_ * rd.x + turn_cos_ * rd.y};
+  p = rotate(rp, turn_cos_, turn_sin_);
+  d = rotate(rd, turn_cos_, turn_sin_);
 }
 
-Vec2 EndProfile::point(double u) const {
-  Vec2 p, d;
+V2 EndProfile::point(double u) const {
+  V2 p, d;
   point_and_d1(u, p, d);
   return p;
 }
 
-Vec2 EndProfile::d1(double u) const {
-  Vec2 p, d;
+V2 EndProfile::d1(double u) const {
+  V2 p, d;
   point_and_d1(u, p, d);
   return d;
 }
 
-Vec2 EndProfile::outward_normal(double u) const {
-  Vec2 p, d;
+V2 EndProfile::outward_normal(double u) const {
+  V2 p, d;
   point_and_d1(u, p, d);
-  Vec2 n{d.y, -d.x};
-  if (n.x * p.x + n.y * p.y < 0) n = {-n.x, -n.y};
-  double len = std::hypot(n.x, n.y);
-  return {n.x / len, n.y / len};
+  V2 n{d.y, -d.x};
+  if (dot(n, p) < 0) n = -n;
+  return n / norm(n);
 }
 
 double EndProfile::lookup(const std::vector<double>& table, double theta) const {
@@ -177,7 +176,7 @@ EndProfile::Hit EndProfile::first_hit(double phi, double y) const {
   const double c = std::cos(phi * kDeg), sn = std::sin(phi * kDeg);
   // H(u) < 0 outside the line, >= 0 past it; x is the turned point's abscissa.
   auto H = [&](double u, double* dH, double* x, double* dx) {
-    Vec2 p, d;
+    V2 p, d;
     point_and_d1(u, p, d);
     *dH = s * (sn * d.x + c * d.y);
     *x = c * p.x - sn * p.y;

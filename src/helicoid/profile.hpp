@@ -6,20 +6,20 @@
 #include <string>
 #include <vector>
 
+#include "geom/plane.hpp"
+
 namespace ncurve::geom {
 class Curve;
 }
 
 namespace ncurve::helicoid {
 
-struct Vec2 {
-  double x = 0, y = 0;
-};
+using geom::V2;
 
 class EndProfile {
 public:
   // Point and first derivative (per degree of u) of the unturned curve.
-  using Eval = std::function<void(double u, Vec2& point, Vec2& d1)>;
+  using Eval = std::function<void(double u, V2& point, V2& d1)>;
 
   // `period` degrees of u close the curve. It is turned about the axis so that u = u0 faces +X
   // (unless `place` is false). Throws if the curve does not wind once around the axis with every
@@ -33,16 +33,16 @@ public:
   // A closed point list (x, y in mm, in order around the axis, the last not repeating the first)
   // through which a periodic cubic spline runs; u = 0..360 degrees by chord length from the first
   // point, which is turned to face +X.
-  static EndProfile from_points(std::string name, const std::vector<Vec2>& points);
+  static EndProfile from_points(std::string name, const std::vector<V2>& points);
 
   const std::string& name() const { return name_; }
   double u0() const { return u0_; }
   double period() const { return period_; }
   double r_min() const { return r_min_; }
   double r_max() const { return r_max_; }
-  Vec2 point(double u) const;
-  Vec2 d1(double u) const;
-  Vec2 outward_normal(double u) const;  // unit
+  V2 point(double u) const;
+  V2 d1(double u) const;
+  V2 outward_normal(double u) const;  // unit
 
   struct Hit {
     bool found = false;
@@ -54,7 +54,7 @@ public:
   Hit first_hit(double phi, double y) const;
 
 private:
-  void point_and_d1(double u, Vec2& p, Vec2& d) const;
+  void point_and_d1(double u, V2& p, V2& d) const;
   double u_at_angle(double theta) const;  // table: profile polar angle (degrees) -> u
   double table_radius(double theta) const;
   double lookup(const std::vector<double>& table, double theta) const;  // periodic, linear

@@ -181,10 +181,10 @@ std::string contacts_svg(const Job& job, const ContactSearch& search) {
   plot::Page page(W, H);
   const double top = page.heading(job.title);
   // Left: the end profile (phase 0) with each contact turned back to it, equal scales.
-  std::vector<Vec2> outline;
+  std::vector<V2> outline;
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (int i = 0; i <= 720; ++i) {
-    Vec2 p = profile.point(profile.u0() + profile.period() * i / 720);
+    V2 p = profile.point(profile.u0() + profile.period() * i / 720);
     outline.push_back(p);
     x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   }
@@ -200,7 +200,7 @@ std::string contacts_svg(const Job& job, const ContactSearch& search) {
     path += fmt::format("{}{:.2f},{:.2f} ", i ? "L" : "M", f.x(outline[i].x), f.y(outline[i].y));
   std::string s = fmt::format("<path d=\"{}Z\" fill=\"#eef\" stroke=\"#336\"/>\n", path);
   for (const auto& c : job.contacts) {
-    Vec2 p = profile.point(c.u);
+    V2 p = profile.point(c.u);
     s += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"{}\"/>\n", f.x(p.x), f.y(p.y),
                      c.region == "corner" ? "#c00" : "#080");
   }

@@ -15,39 +15,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kEps = 1e-9;
 
-V2 operator+(V2 a, V2 b) { return {a.x + b.x, a.y + b.y}; }
-V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
-V2 operator*(double k, V2 a) { return {k * a.x, k * a.y}; }
-double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
-double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
-double norm(V2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
-V2 unit(V2 a) {
-  double n = norm(a);
-  return n > 0 ? V2{a.x / n, a.y / n} : V2{};
-}
-V2 perp(V2 a) { return {-a.y, a.x}; }  // a turned +90 degrees: the left normal of a direction
-
-// Points of the line a + u d on the circle (c, R).
-std::vector<V2> line_circle(V2 a, V2 d, V2 c, double R) {
-  V2 f = a - c;
-  double A = dot(d, d), B = 2 * dot(f, d), C = dot(f, f) - R * R;
-  double disc = B * B - 4 * A * C;
-  if (disc < -1e-12 * std::max(1.0, R * R) || A == 0) return {};
-  double root = std::sqrt(std::max(0.0, disc));
-  return {a + ((-B - root) / (2 * A)) * d, a + ((-B + root) / (2 * A)) * d};
-}
-
-std::vector<V2> circle_circle(V2 c1, double r1, V2 c2, double r2) {
-  V2 d = c2 - c1;
-  double D = norm(d);
-  if (D < kEps || D > r1 + r2 + 1e-9 || D < std::fabs(r1 - r2) - 1e-9) return {};
-  double a = (r1 * r1 - r2 * r2 + D * D) / (2 * D);
-  double h = std::sqrt(std::max(0.0, r1 * r1 - a * a));
-  V2 u = (1 / D) * d;
-  V2 m = c1 + a * u;
-  return {m + h * perp(u), m - h * perp(u)};
-}
-
 V2 plane_point(const AxisVector& v, const PlaneAxes& pa) { return {v[pa.p], v[pa.q]}; }
 
 }  // namespace
@@ -60,8 +27,8 @@ TipDirection tip_direction(int tip) {
 }
 
 V2 RadiusCompensation::Elem::tangent_at(V2 p) const {
-  if (!arc) return unit(e - s);
-  return static_cast<double>(dir) * unit(perp(p - c));
+  if (!arc) return sqrt_unit(e - s);
+  return static_cast<double>(dir) * sqrt_unit(perp(p - c));
 }
 
 RadiusCompensation::Elem RadiusCompensation::make(const Move& m, int side, double radius) const {
@@ -74,7 +41,7 @@ RadiusCompensation::Elem RadiusCompensation::make(const Move& m, int side, doubl
   el.r = radius;
   if (el.arc) {
     el.c = {m.center[pa_.p], m.center[pa_.q]};
-    el.R = norm(el.s - el.c);
+    el.R = sqrt_norm(el.s - el.c);
     el.dir = m.sweep >= 0 ? 1 : -1;
   }
   return el;
@@ -92,10 +59,7 @@ std::optional<V2> RadiusCompensation::intersect(const Elem& a, int side_a, doubl
   if (!a.arc && !b.arc) {
     auto [p1, d1] = offset_line(a, side_a, ra);
     auto [p2, d2] = offset_line(b, side_b, rb);
-    double den = cross(d1, d2);
-    if (std::fabs(den) < 1e-12) return std::nullopt;
-    double u = cross(p2 - p1, d2) / den;
-    return p1 + u * d1;
+    return line_line(p1, d1, p2, d2);
   }
   if (!a.arc || !b.arc) {
     const bool a_line = !a.arc;
@@ -112,7 +76,7 @@ std::optional<V2> RadiusCompensation::intersect(const Elem& a, int side_a, doubl
   }
   if (candidates.empty()) return std::nullopt;
   return *std::min_element(candidates.begin(), candidates.end(),
-                           [&](V2 x, V2 y) { return norm(x - near) < norm(y - near); });
+                           [&](V2 x, V2 y) { return sqrt_norm(x - near) < sqrt_norm(y - near); });
 }
 
 RadiusCompensation::Corner RadiusCompensation::corner(const Elem& a, const Elem& b, Joint joint) const {
@@ -176,19 +140,19 @@ RadiusCompensation::Corner RadiusCompensation::corner(const Elem& a, const Elem&
 }
 
 void RadiusCompensation::check_interference(const Elem& e, V2 from, V2 to) {
-  if (e.arc && e.side != 0 && (norm(from - e.c) < 1e-6 || norm(to - e.c) < 1e-6))
+  if (e.arc && e.side != 0 && (sqrt_norm(from - e.c) < 1e-6 || sqrt_norm(to - e.c) < 1e-6))
     fail(e.move, "PS0038",
          fmt::format("interference in circular block: the compensated arc would {} on its centre (arc radius "
                      "{:.4f} mm, offset {:g} mm on its inner side)",
-                     norm(from - e.c) < 1e-6 ? "start" : "end", e.R, e.r));
+                     sqrt_norm(from - e.c) < 1e-6 ? "start" : "end", e.R, e.r));
   if (!settings_.interference_check || e.side == 0) return;
   if (!e.arc) {
     V2 prog = e.e - e.s, comp = to - from;
-    if (norm(prog) > kEps && norm(comp) > kEps && dot(prog, comp) < 0)
+    if (sqrt_norm(prog) > kEps && sqrt_norm(comp) > kEps && dot(prog, comp) < 0)
       fail(e.move, "PS0041",
              fmt::format("interference in cutter compensation: the compensated path of this block runs against "
                          "the programmed one ({:.4f} mm back); the cutter (radius {:g} mm) would gouge",
-                         norm(comp), e.r));
+                         sqrt_norm(comp), e.r));
     return;
   }
   double R_off = e.R - e.side * e.dir * e.r;
@@ -233,7 +197,7 @@ void RadiusCompensation::emit_element(const Elem& e, V2 from, V2 to, bool plain_
     }
     if (full) sweep = e.dir > 0 ? 2 * kPi : -2 * kPi;
     m.sweep = sweep;
-    double rs = norm(from - e.c), re = norm(to - e.c);
+    double rs = sqrt_norm(from - e.c), re = sqrt_norm(to - e.c);
     double planar = std::fabs(sweep) * (rs + re) / 2;
     double dn = m.end[pa_.n] - m.start[pa_.n];
     double length = std::hypot(planar, dn);
@@ -250,7 +214,7 @@ void RadiusCompensation::emit_element(const Elem& e, V2 from, V2 to, bool plain_
 }
 
 void RadiusCompensation::emit_line(const Elem& attributed_to, V2 from, V2 to, bool corner) {
-  if (norm(to - from) < kEps) return;
+  if (sqrt_norm(to - from) < kEps) return;
   Move m = attributed_to.move;
   m.kind = attributed_to.move.kind == MoveKind::rapid ? MoveKind::rapid : MoveKind::line;
   m.start = tool_full_;
@@ -372,7 +336,7 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
     // offset path on the new side where they intersect, else both end perpendicular
     auto x = intersect(a, a.side, a.r, b, b.side, b.r, a.e);
     V2 v1 = (a.side * a.r) * perp(a.t_end()), v2 = (b.side * b.r) * perp(b.t_start());
-    if (x && norm(*x - a.e) <= 2 * std::max(a.r, b.r) + kEps) {
+    if (x && sqrt_norm(*x - a.e) <= 2 * std::max(a.r, b.r) + kEps) {
       k.end_a = k.start_b = *x;
     } else {
       k.end_a = a.e + v1;
@@ -442,7 +406,7 @@ void RadiusCompensation::block_without_motion(const Move& at) {
 void RadiusCompensation::warn_lost(const Elem& next) {
   const Lost l = *lost_;
   lost_.reset();
-  double across = next.arc ? std::fabs(norm(tool_plane_ - next.c) - next.R)
+  double across = next.arc ? std::fabs(sqrt_norm(tool_plane_ - next.c) - next.R)
                            : std::fabs(cross(tool_plane_ - next.s, next.t_start()));
   double error = across - next.r;
   std::string effect = std::fabs(error) < 1e-6 ? "no overcut or undercut"

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "geom/plane.hpp"
 #include "machine/move.hpp"
 
 namespace ncurve::machine {
@@ -30,10 +31,7 @@ struct TipDirection {
 };
 TipDirection tip_direction(int tip);
 
-// One point of the offset plane.
-struct V2 {
-  double x = 0, y = 0;
-};
+using geom::V2;  // a point of the offset plane
 
 class RadiusCompensation {
 public:

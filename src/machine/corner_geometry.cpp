@@ -14,18 +14,6 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kTol = 1e-6;                 // mm: points closer than this are one point
 constexpr double kLeastAngle = kPi / 180.0;  // the manual's 1 degree: below it nothing is inserted
 
-V2 operator+(V2 a, V2 b) { return {a.x + b.x, a.y + b.y}; }
-V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
-V2 operator*(double k, V2 a) { return {k * a.x, k * a.y}; }
-double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
-double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
-double norm(V2 a) { return std::hypot(a.x, a.y); }
-V2 unit(V2 a) {
-  const double n = norm(a);
-  return n > 0 ? V2{a.x / n, a.y / n} : V2{};
-}
-V2 left(V2 a) { return {-a.y, a.x}; }
-V2 rotate(V2 a, double t) { return {a.x * std::cos(t) - a.y * std::sin(t), a.x * std::sin(t) + a.y * std::cos(t)}; }
 int direction(const Path& p) { return p.sweep >= 0 ? 1 : -1; }
 double radius(const Path& p) { return norm(p.s - p.c); }
 
@@ -51,7 +39,7 @@ Offset offset(const Path& p, double to_left) {
   Offset o;
   if (!p.arc) {
     o.d = unit(p.e - p.s);
-    o.p = p.s + to_left * left(o.d);
+    o.p = p.s + to_left * perp(o.d);
     return o;
   }
   o.arc = true;
@@ -64,9 +52,8 @@ Offset offset(const Path& p, double to_left) {
 
 std::vector<V2> meet(const Offset& a, const Offset& b) {
   if (!a.arc && !b.arc) {
-    const double den = cross(a.d, b.d);
-    if (std::fabs(den) < 1e-12) return {};
-    return {a.p + (cross(b.p - a.p, b.d) / den) * a.d};
+    const auto x = line_line(a.p, a.d, b.p, b.d);
+    return x ? std::vector<V2>{*x} : std::vector<V2>{};
   }
   if (a.arc != b.arc) {
     const Offset& ln = a.arc ? b : a;
@@ -87,7 +74,7 @@ std::vector<V2> meet(const Offset& a, const Offset& b) {
   const double h = std::sqrt(std::max(0.0, h2));
   const V2 u = unit(d);
   const V2 base = a.c + along * u;
-  return {base + h * left(u), base - h * left(u)};
+  return {base + h * perp(u), base - h * perp(u)};
 }
 
 // Where a circle about f touches path p (f on p's offset o).
@@ -137,7 +124,7 @@ std::optional<V2> at_distance(const Path& p, double amount, bool back, double& p
 
 V2 tangent(const Path& p, V2 x) {
   if (!p.arc) return unit(p.e - p.s);
-  return direction(p) * left(unit(x - p.c));
+  return direction(p) * perp(unit(x - p.c));
 }
 
 Cut cut_corner(const Path& a, const Path& b, Kind kind, double amount) {

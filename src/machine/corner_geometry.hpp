@@ -1,9 +1,11 @@
 // Chamfering and corner R between two paths of a plane, as FANUC inserts them (,C ,R; lathe C/I/K R):
 // plane geometry only, free of the interpreter.
 #pragma once
-#include "machine/compensation.hpp"
+#include "geom/plane.hpp"
 
 namespace ncurve::machine::corner {
+
+using geom::V2;
 
 // One block's path in the plane: a line from s to e, or an arc about c turning `sweep` radians
 // (counter-clockwise positive) from s to e.

@@ -13,17 +13,13 @@ constexpr double kCentre = 1e-7;   // mm: a path this close to the centre runs t
 constexpr int kMaxDepth = 40;      // halvings of one piece
 constexpr double kArcPiece = kPi / 18;  // arcs are first cut into pieces of 10 degrees about their centre
 
-V2 sub(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
-double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
-double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
-double norm(V2 a) { return std::hypot(a.x, a.y); }
 double wrap_pi(double a) { return std::remainder(a, 2 * kPi); }  // -pi .. pi
 
 // The parameters in (0, 1) where the path runs through the centre (within kCentre).
 std::vector<double> centre_crossings(const PlanePath& path) {
   std::vector<double> out;
   if (!path.arc) {
-    const V2 d = sub(path.e, path.s);
+    const V2 d = path.e - path.s;
     const double len2 = dot(d, d);
     if (len2 < 1e-24) return out;
     const double t = -dot(path.s, d) / len2;
@@ -90,8 +86,8 @@ PlanePath PlanePath::of(const Move& m, int p, int q) {
   path.arc = true;
   path.c = {m.center[p], m.center[q]};
   path.sweep = m.sweep;
-  path.rs = norm(sub(path.s, path.c));
-  path.re = norm(sub(path.e, path.c));
+  path.rs = norm(path.s - path.c);
+  path.re = norm(path.e - path.c);
   path.a0 = std::atan2(path.s.y - path.c.y, path.s.x - path.c.x);
   return path;
 }
@@ -107,12 +103,12 @@ V2 PlanePath::at(double t) const {
 
 double PlanePath::distance(V2 point) const {
   if (!arc) {
-    const V2 d = sub(e, s);
+    const V2 d = e - s;
     const double len2 = dot(d, d);
-    const double t = len2 > 0 ? std::clamp(dot(sub(point, s), d) / len2, 0.0, 1.0) : 0.0;
-    return norm(sub(point, at(t)));
+    const double t = len2 > 0 ? std::clamp(dot(point - s, d) / len2, 0.0, 1.0) : 0.0;
+    return norm(point - at(t));
   }
-  const V2 v = sub(point, c);
+  const V2 v = point - c;
   double along = std::atan2(v.y, v.x) - a0;  // the radius at the point's angle (a spiral from rs to re)
   along = sweep >= 0 ? std::fmod(std::fmod(along, 2 * kPi) + 2 * kPi, 2 * kPi)
                      : -std::fmod(std::fmod(-along, 2 * kPi) + 2 * kPi, 2 * kPi);

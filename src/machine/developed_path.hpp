@@ -6,10 +6,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "machine/compensation.hpp"
+#include "geom/plane.hpp"
 #include "machine/move.hpp"
 
 namespace ncurve::machine {
+
+using geom::V2;
 
 // A line, or an arc about c from s sweeping `sweep` radians (counter-clockwise positive) whose
 // radius goes from rs to re, in the plane of slots (p, q); t runs from 0 (s) to 1 (e).

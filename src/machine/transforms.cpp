@@ -8,11 +8,6 @@ namespace ncurve::machine {
 
 namespace {
 constexpr double kDegree = std::numbers::pi / 180;
-
-V2 rotate(V2 v, double deg) {
-  const double c = std::cos(deg * kDegree), s = std::sin(deg * kDegree);
-  return {v.x * c - v.y * s, v.x * s + v.y * c};
-}
 }  // namespace
 
 V2 polar_point(V2 current, std::optional<double> radius, std::optional<double> angle_deg, bool incremental) {
@@ -41,7 +36,7 @@ AxisVector Transforms::mirror_and_scale(const AxisVector& program) const {
 AxisVector Transforms::apply(const AxisVector& program) const {
   AxisVector w = mirror_and_scale(program);
   if (rotating) {
-    const V2 r = rotate({w[p] - centre.x, w[q] - centre.y}, angle_deg);
+    const V2 r = geom::rotate({w[p] - centre.x, w[q] - centre.y}, angle_deg * kDegree);
     w[p] = centre.x + r.x;
     w[q] = centre.y + r.y;
   }
@@ -51,7 +46,7 @@ AxisVector Transforms::apply(const AxisVector& program) const {
 AxisVector Transforms::invert(const AxisVector& work) const {
   AxisVector w = work;
   if (rotating) {
-    const V2 r = rotate({w[p] - centre.x, w[q] - centre.y}, -angle_deg);
+    const V2 r = geom::rotate({w[p] - centre.x, w[q] - centre.y}, -angle_deg * kDegree);
     w[p] = centre.x + r.x;
     w[q] = centre.y + r.y;
   }
@@ -69,7 +64,7 @@ AxisVector Transforms::apply_vector(const AxisVector& v) const {
     if (scaling) w[a] *= factor[a];
   }
   if (rotating) {
-    const V2 r = rotate({w[p], w[q]}, angle_deg);
+    const V2 r = geom::rotate({w[p], w[q]}, angle_deg * kDegree);
     w[p] = r.x;
     w[q] = r.y;
   }

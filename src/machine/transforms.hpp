@@ -6,10 +6,12 @@
 #include <array>
 #include <optional>
 
-#include "machine/compensation.hpp"
+#include "geom/plane.hpp"
 #include "machine/profile.hpp"
 
 namespace ncurve::machine {
+
+using geom::V2;
 
 // G16: the point a polar command names, in the plane's two axes (p = first axis, q = second).
 // `current` is the programmed position, measured from the work (or G52 local) origin. Absolute

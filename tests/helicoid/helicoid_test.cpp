@@ -110,12 +110,12 @@ TEST(Helicoid, FirstHitOfTheTurnedProfile) {
     for (double y : {-12.0, 4.0, 20.0}) {
       auto h = p.first_hit(phi, y);
       ASSERT_TRUE(h.found);
-      Vec2 q = p.point(h.u);
+      V2 q = p.point(h.u);
       double c = std::cos(phi * kDeg), s = std::sin(phi * kDeg);
       EXPECT_NEAR(c * q.x - s * q.y, h.x, 1e-9);
       EXPECT_NEAR(s * q.x + c * q.y, y, 1e-9);
       for (double u = 0; u < 360; u += 0.01) {
-        Vec2 r = p.point(u);
+        V2 r = p.point(u);
         double x = c * r.x - s * r.y, yy = s * r.x + c * r.y;
         if (std::abs(yy - y) < 0.01) {
           EXPECT_LE(x, h.x + 0.01 * 40) << phi << " " << y << " " << u;
@@ -182,7 +182,7 @@ TEST(Helicoid, LeftHandIsTheMirrorImage) {
 }
 
 TEST(Helicoid, CylinderProfileTouchesAtTheTip) {
-  auto eval = [](double u, Vec2& p, Vec2& d) {
+  auto eval = [](double u, V2& p, V2& d) {
     p = {40 * std::cos(u * kDeg), 40 * std::sin(u * kDeg)};
     d = {-40 * std::sin(u * kDeg) * kDeg, 40 * std::cos(u * kDeg) * kDeg};
   };
@@ -200,7 +200,7 @@ TEST(Helicoid, CylinderProfileTouchesAtTheTip) {
 struct EccentricCircle {
   static constexpr double e = 8, rho = 30, rc = 1.2, R = 126;
   ContactSearch search() const {
-    auto eval = [](double u, Vec2& p, Vec2& d) {
+    auto eval = [](double u, V2& p, V2& d) {
       p = {e + rho * std::cos(u * kDeg), rho * std::sin(u * kDeg)};
       d = {-rho * std::sin(u * kDeg) * kDeg, rho * std::cos(u * kDeg) * kDeg};
     };
@@ -567,16 +567,16 @@ TEST(Helicoid, PointListProfileFollowsTheCurve) {
   // 360 points of the seed's rotor: the spline through them is the rotor to well under a micrometre
   // (cubic spline error ~ h^4 curvature^3 / 384), and so are the contacts.
   auto rotor = EndProfile::seed004_rotor();
-  std::vector<Vec2> points;
+  std::vector<V2> points;
   for (int k = 0; k < 360; ++k) points.push_back(rotor.point(k));
   auto spline = EndProfile::from_points("rotor points", points);
   EXPECT_NEAR(spline.r_min(), 35.5, 1e-4);
   EXPECT_NEAR(spline.r_max(), 50.5, 1e-4);
   // every point of the spline is within 1 um of the rotor (its nearest rotor point: scan, then refine)
   for (double u = 0.37; u < 360; u += 9.1) {
-    Vec2 p = spline.point(u);
+    V2 p = spline.point(u);
     auto dist = [&](double v) {
-      Vec2 q = rotor.point(v);
+      V2 q = rotor.point(v);
       return std::hypot(p.x - q.x, p.y - q.y);
     };
     double best_v = 0;
@@ -599,7 +599,7 @@ TEST(Helicoid, PointListProfileFollowsTheCurve) {
 }
 
 TEST(Helicoid, BadInput) {
-  auto eight = [](double u, Vec2& p, Vec2& d) {  // a figure eight does not wind around the axis
+  auto eight = [](double u, V2& p, V2& d) {  // a figure eight does not wind around the axis
     p = {std::sin(u * kDeg) + 0.1, std::sin(2 * u * kDeg)};
     d = {std::cos(u * kDeg) * kDeg, 2 * std::cos(2 * u * kDeg) * kDeg};
   };
