@@ -13,41 +13,6 @@ namespace ncurve::machine {
 
 namespace {
 
-// The modal group of a G code (x10), or 0 for a one-shot code and codes whose group the check
-// leaves alone. Lathe system A uses G90/G92/G94 as cycles and G98/G99 for the feed, so only the
-// groups common to every system are taken there.
-int g_group(int g, bool lathe, char system) {
-  switch (g) {
-    case 0: case 10: case 20: case 30: return 1;
-    case 170: case 180: case 190: return 2;
-    case 200: case 210: return 6;
-    case 400: case 410: case 420: return 7;
-    case 660: case 670: return 12;
-    case 960: case 970: return 13;
-    case 540: case 541: case 550: case 560: case 570: case 580: case 590: return 14;
-    default: break;
-  }
-  if (lathe && system == 'A') return 0;
-  switch (g) {
-    case 900: case 910: return 3;
-    case 940: case 950: return 5;
-    default: break;
-  }
-  if (lathe) return 0;
-  switch (g) {
-    case 430: case 440: case 490: return 8;
-    case 730: case 740: case 760: case 800: case 810: case 820: case 830: case 840: case 850: case 860:
-    case 870: case 880: case 890: return 9;
-    case 980: case 990: return 10;
-    case 500: case 510: return 11;
-    case 610: case 620: case 630: case 640: return 15;
-    case 680: case 690: return 16;
-    case 150: case 160: return 17;
-    case 501: case 511: return 22;
-    default: return 0;
-  }
-}
-
 bool takes_no_sign(char letter) {
   return letter == 'M' || letter == 'S' || letter == 'T' || letter == 'H' || letter == 'D';
 }
@@ -66,12 +31,13 @@ void Interpreter::check_block_words() {
 
   const bool strict = profile_.address_duplicate_alarm;
   // G codes of one group: the last one counts (No.3403#6 AD2 = 0), or PS5074 (AD2 = 1)
-  const bool lathe = profile_.lathe();
+  // the groups of the control's G-code table (g_codes.cpp): lathe G17 is group 16, G96 group 02
+  const GMachine machine = g_machine(profile_);
   for (std::size_t i = 0; i < g_codes_.size(); ++i) {
-    const int group = g_group(g_codes_[i], lathe, profile_.gcode_system);
+    const int group = g_group(g_codes_[i], machine);
     if (group == 0) continue;
     for (std::size_t j = i + 1; j < g_codes_.size(); ++j) {
-      if (g_group(g_codes_[j], lathe, profile_.gcode_system) != group || g_codes_[j] == g_codes_[i]) continue;
+      if (g_group(g_codes_[j], machine) != group || g_codes_[j] == g_codes_[i]) continue;
       std::uint16_t column = 0;
       for (const Cmd& c : cmds_)
         if (c.letter == 'G' && std::lround(c.value * 10) == g_codes_[j]) column = c.column;

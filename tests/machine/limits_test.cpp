@@ -185,6 +185,59 @@ TEST(Limits, AnAddressTwiceInABlock) {
   EXPECT_EQ(args.var(100), 10.0);
 }
 
+// Two G codes of one group in a block, named with the group of the control's G code list: the
+// lathe's (0i-F / 30i-B, systems A, B, C) differs from the machining center's.
+TEST(Limits, GCodesOfOneGroupFollowTheControlsTable) {
+  auto lathe = [](char system) {
+    auto p = machine::default_lathe();
+    p.gcode_system = system;
+    return p;
+  };
+  struct Case {
+    machine::MachineProfile profile;
+    const char* block;
+    const char* names;  // the two codes and their group, as the warning gives them
+  };
+  const Case cases[] = {
+      {lathe('A'), "G17 G18", "G17 and G18 of group 16"},
+      {lathe('B'), "G18 G19", "G18 and G19 of group 16"},
+      {lathe('A'), "G96 G97 S500", "G96 and G97 of group 02"},
+      {lathe('C'), "G97 G96 S100", "G97 and G96 of group 02"},
+      {lathe('A'), "G90 G00 X20. Z1.", "G90 and G00 of group 01"},
+      {lathe('A'), "G92 G00 X20. Z1.", "G92 and G00 of group 01"},
+      {lathe('A'), "G94 G00 X20. Z1.", "G94 and G00 of group 01"},
+      {lathe('A'), "G98 G99", "G98 and G99 of group 05"},
+      {lathe('A'), "G26 G25", "G26 and G25 of group 08"},
+      {lathe('A'), "G22 G23", "G22 and G23 of group 09"},
+      {lathe('A'), "G83 G80", "G83 and G80 of group 10"},
+      {lathe('B'), "G98 G99", "G98 and G99 of group 11"},
+      {lathe('C'), "G98 G99", "G98 and G99 of group 11"},
+      {lathe('A'), "G61 G64", "G61 and G64 of group 15"},
+      {lathe('A'), "G12.1 G13.1", "G12.1 and G13.1 of group 21"},
+      {lathe('C'), "G70 G71", "G70 and G71 of group 06"},
+      {machine::default_mill(), "G12.1 G13.1", "G12.1 and G13.1 of group 21"},
+      {machine::default_mill(), "G17 G18", "G17 and G18 of group 02"},
+      {machine::default_mill(), "G96 G97 S500", "G96 and G97 of group 13"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.block);
+    auto r = run(std::string(c.block) + "\nM30\n", c.profile);
+    const auto w = std::find_if(r.result.warnings.begin(), r.result.warnings.end(),
+                                [](const nc::Diagnostic& d) { return d.code == "NC2005"; });
+    ASSERT_NE(w, r.result.warnings.end());
+    EXPECT_NE(w->message.find(c.names), std::string::npos) << w->message;
+    auto strict = c.profile;
+    strict.address_duplicate_alarm = true;
+    auto s = run(std::string(c.block) + "\nM30\n", strict);
+    EXPECT_EQ(s.alarm_code(), "PS5074");
+    if (s.result.alarm) EXPECT_NE(s.result.alarm->message.find(c.names), std::string::npos) << s.result.alarm->message;
+  }
+  // different groups on a lathe: G18 (16) with G96 (02), G00 (01) with G99 (05) on system A
+  EXPECT_FALSE(warned(run("G18 G96 S100\nM30\n", lathe('A')), "NC2005"));
+  EXPECT_FALSE(warned(run("G00 G99 X20. Z1.\nM30\n", lathe('A')), "NC2005"));
+  EXPECT_FALSE(warned(run("G90 G94 G00 X20. Z1.\nM30\n", lathe('B')), "NC2005"));  // 03, 05, 01
+}
+
 // One M code a block (No.3404#7 M3B = 0): the last one counts; M3B = 1 takes up to three.
 TEST(Limits, MCodesInOneBlockFollowM3B) {
   auto one = run("M03 M08\nM30\n");
