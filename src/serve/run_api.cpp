@@ -87,7 +87,11 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   Columns columns{b, format == "binary" ? &bytes : nullptr, 8};
   const bool runaway = result.alarm && result.alarm->code == "NC9000";
   b.push_back('{');
-  if (runaway) fmt::format_to(it, "\"error\":{},\"status\":422,", json_string(result.alarm->message));
+  // the alarm names the command's options; a request sets the same bounds by its keys
+  if (runaway)
+    fmt::format_to(it, "\"error\":{},\"status\":422,",
+                   json_string(result.alarm->message + " (in a request: \"max_steps\" and \"max_seconds\", up to the "
+                                                       "server's --max-steps and --max-seconds)"));
   fmt::format_to(it, "\"summary\":{},\"diagnostics\":{}",
                  report::summary_object(rep).dump(-1, ' ', false, json::error_handler_t::replace),
                  diagnostics(rep).dump(-1, ' ', false, json::error_handler_t::replace));

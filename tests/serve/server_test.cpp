@@ -150,6 +150,7 @@ TEST_F(ServerTest, RunawayIsAnErrorStatusWithTheRun) {
   json j = post("/api/run", R"({"program": "N1 G01 X1. F100.\nGOTO 1\n", "max_steps": 1000})", 422);
   EXPECT_EQ(j["status"], 422);
   EXPECT_NE(j["error"].get<std::string>().find("stopped after 1000 steps"), std::string::npos) << j["error"];
+  EXPECT_NE(j["error"].get<std::string>().find("in a request: \"max_steps\""), std::string::npos) << j["error"];
   EXPECT_EQ(j["summary"]["alarm"]["code"], "NC9000");
   j = post("/api/run", R"({"program": "M30\n", "max_steps": 1e12})", 400);  // over the server's
   EXPECT_NE(j["error"].get<std::string>().find("max_steps"), std::string::npos);
