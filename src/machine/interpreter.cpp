@@ -290,9 +290,11 @@ std::uint64_t Interpreter::steps() const { return result_.stats.blocks + operati
 void Interpreter::count_block_move() {
   if (moving_block_ != result_.stats.blocks) {
     moving_block_ = result_.stats.blocks;
+    moves_in_block_ = 0;
     return;
   }
   ++block_moves_;
+  ++moves_in_block_;
   if (steps() >= options_.max_steps || (block_moves_ & 0xFFF) == 0) check_runaway();
 }
 
@@ -303,7 +305,9 @@ void Interpreter::check_runaway() {
   const bool cancelled = options_.cancel && options_.cancel->load(std::memory_order_relaxed);
   if (!steps && !cancelled && !(options_.max_seconds > 0 && seconds > options_.max_seconds)) return;
   std::string where;
-  if (moving_block_ == result_.stats.blocks && block_moves_ > 0 && block_) {
+  // the block being run is named when its own moves are most of the work, else the loop
+  const bool block_runs_away = moving_block_ == result_.stats.blocks && 2 * moves_in_block_ > this->steps();
+  if (block_runs_away && block_) {
     where = fmt::format("; the block at {}:{} makes move after move", prog_->file->name(), block_->line);
   } else if (last_back_jump_) {
     const Block& b = *last_back_jump_;

@@ -405,6 +405,7 @@ private:
   std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
   std::uint64_t block_moves_ = 0;  // moves past the first of their block, counted as steps too
   std::uint64_t moving_block_ = 0;  // the count of blocks when the last move was made
+  std::uint64_t moves_in_block_ = 0;  // that block's moves past its first
   std::chrono::steady_clock::time_point started_;
 
   // modal state

@@ -297,6 +297,20 @@ TEST(Limits, MaxStepsCountsTheMovesOfACycle) {
   EXPECT_GT(r.result.stats.motions, 900u);
 }
 
+// A loop of short blocks stopped just after a move is named as the loop, not its moving block,
+// whatever step the bound falls on (an earlier cycle's extra moves do not change that).
+TEST(Limits, ALoopIsNamedNotItsMovingBlock) {
+  for (std::uint64_t steps = 5000; steps < 5012; ++steps) {
+    machine::RunOptions o;
+    o.max_steps = steps;
+    auto r = run("G00 X0 Y0 Z10.\nG91 G81 X1. Z-5. R-2. K3 F100.\nG80 G90\nWHILE [1 EQ 1] DO1\nG01 X1. F1000\n"
+                 "END1\nM30\n", machine::default_mill(), o);
+    ASSERT_EQ(r.alarm_code(), "NC9000");
+    EXPECT_NE(r.result.alarm->message.find("keeps looping through test.nc:6"), std::string::npos)
+        << steps << ": " << r.result.alarm->message;
+  }
+}
+
 TEST(Limits, MaxSecondsStopsACycleOfEndlessPecks) {
   machine::RunOptions o;
   o.max_steps = std::numeric_limits<std::uint64_t>::max();
