@@ -314,14 +314,14 @@ int helicoid_command(const HelicoidArgs& a) {
   }
   std::string table = a.json ? contacts_json(job, *search) : a.csv ? contacts_csv(job) : contacts_text(job, *search);
   if (a.output.empty()) std::cout << table;
-  else if (!save(a.output, table, inputs)) return 2;
+  else if (!save(a.output, table)) return 2;
   if (!a.program.empty()) {
     PassOptions o;
     o.z_end = -a.length;
     o.feed = a.feed;
-    if (!save(a.program, pass_program(job, *search, o), inputs)) return 2;
+    if (!save(a.program, pass_program(job, *search, o))) return 2;
   }
-  if (!a.plot.empty() && !save(a.plot, contacts_svg(job, *search), inputs)) return 2;
+  if (!a.plot.empty() && !save(a.plot, contacts_svg(job, *search))) return 2;
   return 0;
 }
 
