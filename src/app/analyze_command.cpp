@@ -10,7 +10,7 @@
 #include <numbers>
 
 #include "gen/generate.hpp"
-#include "machine/compensation.hpp"
+#include "machine/path/compensation.hpp"
 #include "gen/shape_models.hpp"
 #include "motion/circle.hpp"
 #include "motion/planner.hpp"

@@ -1,6 +1,6 @@
 #include "gen/generate.hpp"
 
-#include "machine/compensation.hpp"
+#include "machine/path/compensation.hpp"
 
 #include <fmt/format.h>
 

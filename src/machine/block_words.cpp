@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "machine/g_codes.hpp"
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -19,11 +19,11 @@ bool takes_no_sign(char letter) {
 
 }  // namespace
 
-bool Interpreter::word_needs_check(char letter, double value) const {
+bool Executor::word_needs_check(char letter, double value) const {
   return (letter != 'G' && have_[letter - 'A']) || (value < 0 && takes_no_sign(letter));
 }
 
-void Interpreter::check_block_words() {
+void Executor::check_block_words() {
   // a minus sign where the address takes none: T-1 would select no tool, S-100 no speed
   for (const Cmd& c : cmds_)
     if (c.value < 0 && takes_no_sign(c.letter))
@@ -87,7 +87,7 @@ void Interpreter::check_block_words() {
 
 // A value computed for an address (X[#1*2]) within the digits the control takes (number_digits):
 // counted in least input increments for a dimension, as a whole number otherwise (PS0003).
-void Interpreter::check_word_digits(char letter, double value, bool dimension, std::uint16_t column) const {
+void Executor::check_word_digits(char letter, double value, bool dimension, std::uint16_t column) const {
   const double per_unit = !dimension ? 1.0 : inch_ ? per_unit_inch_ : per_unit_mm_;
   const double limit = digit_limit_;
   if (std::fabs(value) * per_unit < limit - 0.5) return;

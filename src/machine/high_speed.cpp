@@ -4,11 +4,11 @@
 // records whether look-ahead is on, for `ncurve analyze`.
 #include <fmt/format.h>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
-void Interpreter::high_speed_mode(int g, std::uint16_t column) {
+void Executor::high_speed_mode(int g, std::uint16_t column) {
   switch (g) {
     case 51: {  // G05.1: group 00, but the mode it sets lasts until Q0 or a reset
       if (!has('Q'))

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -70,7 +70,7 @@ std::optional<std::array<unsigned char, 4>> bprnt_number(double value, int decim
                                       static_cast<unsigned char>(u >> 8), static_cast<unsigned char>(u)};
 }
 
-void Interpreter::external_output(const nc::Block& b) {
+void Executor::external_output(const nc::Block& b) {
   ExternalOutput& out = result_.output;
   const bool parity = profile_.output_parity;
   if (b.kind == nc::Statement::popen) {

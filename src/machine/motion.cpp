@@ -7,7 +7,7 @@
 
 #include "base/restore.hpp"
 #include "machine/g_codes.hpp"
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -76,7 +76,7 @@ const char* to_string(MoveKind k) {
   return "?";
 }
 
-void Interpreter::set_origin() {
+void Executor::set_origin() {
   AxisVector old = origin_;
   const AxisVector& work = work_index_ <= 6 ? work_offsets_[work_index_] : extended_offsets_[work_index_ - 6];
   AxisVector delta{};
@@ -88,7 +88,7 @@ void Interpreter::set_origin() {
   if (comp_) comp_->move_frame(delta);
 }
 
-void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
+void Executor::handle_g_codes(std::vector<int>& one_shot) {
   const bool lathe = profile_.lathe();
   const bool system_a = lathe && profile_.gcode_system == 'A';
   exact_stop_once_ = false;
@@ -97,7 +97,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
   bool group01 = false;
   bool transform = false;  // a G15/G16, G50/G51, G50.1/G51.1, G68/G69 of a mill: transform_codes
   struct CancelCycle {  // after the block's codes: G00..G03 with G81 in one block cancel it too
-    Interpreter* self;
+    Executor* self;
     bool& group01;
     ~CancelCycle() {
       if (group01 && self->cycle_ != 0) self->cancel_canned_cycle();
@@ -250,7 +250,7 @@ void Interpreter::handle_g_codes(std::vector<int>& one_shot) {
 }
 
 // Reads axis words into target (work coordinates, mm). Returns whether any axis word was given.
-bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
+bool Executor::axis_target(AxisVector& target, bool force_absolute) {
   if (developed_hook_) [[unlikely]] return developed_axis_target(target);  // G12.1, G07.1
   if (xf_hook_ && !force_absolute) return transformed_axis_target(target);  // G16, G51.1, G51, G68
   const bool lathe = profile_.lathe();
@@ -287,7 +287,7 @@ bool Interpreter::axis_target(AxisVector& target, bool force_absolute) {
   return any;
 }
 
-void Interpreter::motion(const AxisVector& target) {
+void Executor::motion(const AxisVector& target) {
   bool swap = false;  // a mirror image reverses arcs: G02 and G03 swap
   if (xf_hook_ && (motion_ == 2 || motion_ == 3)) swap = transform_arc_words();
   switch (motion_) {
@@ -302,7 +302,7 @@ void Interpreter::motion(const AxisVector& target) {
   xf_arc_ = false;
 }
 
-void Interpreter::note_extent(const AxisVector& p) {
+void Executor::note_extent(const AxisVector& p) {
   RunStats& s = result_.stats;
   if (!s.has_extent) {
     s.min = s.max = p;
@@ -315,7 +315,7 @@ void Interpreter::note_extent(const AxisVector& p) {
   }
 }
 
-void Interpreter::emit(Move& m) {
+void Executor::emit(Move& m) {
   count_block_move();
   m.program = prog_ ? prog_->number : -1;
   m.file = prog_ ? prog_->file.get() : nullptr;
@@ -335,7 +335,7 @@ void Interpreter::emit(Move& m) {
   emit_programmed(m);
 }
 
-void Interpreter::emit_programmed(Move& m) {
+void Executor::emit_programmed(Move& m) {
   if (!compensating()) return deliver(m);
   const PlaneAxes pa = plane_axes(plane_);
   const bool in_plane = m.kind == MoveKind::arc ? m.plane == plane_
@@ -372,7 +372,7 @@ void Interpreter::emit_programmed(Move& m) {
   comp_->element(m, side, radius, cancel);
 }
 
-void Interpreter::deliver(Move& m) {
+void Executor::deliver(Move& m) {
   if (developed_) [[unlikely]] return deliver_developed(m);  // G12.1, G07.1: the machine's moves
   if (stroke_check_) [[unlikely]] check_stroke(m);  // stroke_check.cpp
   if (options_.nose_centre && profile_.lathe() && m.is_motion()) {
@@ -384,7 +384,7 @@ void Interpreter::deliver(Move& m) {
   record(m);
 }
 
-void Interpreter::record(Move& m) {
+void Executor::record(Move& m) {
   RunStats& s = result_.stats;
   ++s.by_kind[static_cast<int>(m.kind)];
   if (m.is_motion()) {
@@ -404,14 +404,14 @@ void Interpreter::record(Move& m) {
   sink_->on_move(m);
 }
 
-bool Interpreter::compensating() const {
+bool Executor::compensating() const {
   return comp_side_ != 0 || comp_->offset_mode() || comp_->tool_position().has_value();
 }
 
 // After each NC block in offset mode: a G40 (or G41/G42 from cancel mode) without motion in the
 // plane ends (starts) the offset by the start-up type's rule; any other block without such motion
 // is one the read-ahead must look past.
-void Interpreter::end_of_block_compensation(bool g40, bool g41) {
+void Executor::end_of_block_compensation(bool g40, bool g41) {
   if (!block_plane_motion_) {
     Move at;
     at.kind = motion_ == 0 ? MoveKind::rapid : MoveKind::line;
@@ -433,7 +433,7 @@ void Interpreter::end_of_block_compensation(bool g40, bool g41) {
 
 // The imaginary tool tip from the nose centre, in the G18 plane (Z, X as a radius), for the
 // active offset set's tip number and nose radius.
-V2 Interpreter::nose_tip() const {
+V2 Executor::nose_tip() const {
   auto it = lathe_offsets_.find(lathe_offset_);
   if (it == lathe_offsets_.end()) return {};
   const TipDirection d = tip_direction(static_cast<int>(it->second.tip));
@@ -442,12 +442,12 @@ V2 Interpreter::nose_tip() const {
 }
 
 // The active offset set's nose radius, geometry plus wear.
-double Interpreter::nose_radius() const {
+double Executor::nose_radius() const {
   auto it = lathe_offsets_.find(lathe_offset_);
   return it == lathe_offsets_.end() ? 0.0 : it->second.r + it->second.r_wear;
 }
 
-void Interpreter::emit_event(MoveKind kind, int code) {
+void Executor::emit_event(MoveKind kind, int code) {
   Move m;
   m.kind = kind;
   m.code = code;
@@ -456,7 +456,7 @@ void Interpreter::emit_event(MoveKind kind, int code) {
   emit(m);
 }
 
-void Interpreter::linear(MoveKind kind, const AxisVector& target) {
+void Executor::linear(MoveKind kind, const AxisVector& target) {
   Move m;
   m.kind = kind;
   m.start = pos_;
@@ -480,7 +480,7 @@ void Interpreter::linear(MoveKind kind, const AxisVector& target) {
   emit(m);
 }
 
-void Interpreter::arc(const AxisVector& target, bool clockwise) {
+void Executor::arc(const AxisVector& target, bool clockwise) {
   if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
   const PlaneAxes pa = plane_axes(plane_);
   if (profile_.lathe() && plane_ != 18 && !developed_) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
@@ -585,7 +585,7 @@ void Interpreter::arc(const AxisVector& target, bool clockwise) {
   emit(m);
 }
 
-void Interpreter::dwell() {
+void Executor::dwell() {
   double seconds = 0;
   std::uint16_t column = 0;
   if (has('P')) {
@@ -606,7 +606,7 @@ void Interpreter::dwell() {
   emit(m);
 }
 
-void Interpreter::reference_return(int g) {
+void Executor::reference_return(int g) {
   int point = 0;
   if (g == 300) {
     point = has('P') ? integer(word('P'), "P of G30") - 1 : 1;
@@ -641,7 +641,7 @@ void Interpreter::reference_return(int g) {
   linear(MoveKind::rapid, ref);
 }
 
-void Interpreter::machine_coordinate_move() {
+void Executor::machine_coordinate_move() {
   if (incremental_) return;  // G53 is ignored under G91, as on FANUC
   AxisVector target = pos_;
   AxisVector machine{};
@@ -658,7 +658,7 @@ void Interpreter::machine_coordinate_move() {
   linear(MoveKind::rapid, target);
 }
 
-void Interpreter::set_coordinate_system(int g) {
+void Executor::set_coordinate_system(int g) {
   AxisVector given = pos_;
   if (g == 520) {  // G52: local coordinate system, absolute offsets from the work zero
     AxisVector zero{};

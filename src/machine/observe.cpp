@@ -1,5 +1,5 @@
 // The interpreter's side of an ExecutionObserver: what it is told, gathered only when there is one.
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -15,27 +15,27 @@ struct Unobserved {
 };
 }  // namespace
 
-std::uint64_t Interpreter::moves_delivered() const {
+std::uint64_t Executor::moves_delivered() const {
   std::uint64_t n = 0;
   for (std::uint64_t k : result_.stats.by_kind) n += k;
   return n;
 }
 
-ModalState Interpreter::modal_state() {
+ModalState Executor::modal_state() {
   ModalState s;
   for (std::size_t i = 0; i < kModalVariables.size(); ++i) s[i] = read_system(kModalVariables[i], 0);
   return s;
 }
 
 // Only an NC block changes the modal state: after a macro statement the state read before stands.
-void Interpreter::observe_block(const nc::Block& b) {
+void Executor::observe_block(const nc::Block& b) {
   if (shape_read_) return;
   if (modal_stale_) observed_modal_ = modal_state();
   modal_stale_ = b.kind == nc::Statement::nc;
   observer_->block(*prog_, b, moves_delivered(), observed_modal_);
 }
 
-void Interpreter::observe_call(const Frame& f) {
+void Executor::observe_call(const Frame& f) {
   CallFrame c;
   c.kind = f.kind == Frame::main ? CallFrame::main : f.kind == Frame::subprogram ? CallFrame::subprogram : CallFrame::macro;
   c.program = f.prog ? f.prog->number : -1;
@@ -52,7 +52,7 @@ void Interpreter::observe_call(const Frame& f) {
     if (!f.initial[i].vacant) observer_->variable(i + 1, f.level, Value{}, f.initial[i]);
 }
 
-void Interpreter::observe_repeat(const Frame& f) {
+void Executor::observe_repeat(const Frame& f) {
   if (f.kind != Frame::macro) return;
   const auto& now = locals_[f.level];
   for (int i = 0; i < 33; ++i) {
@@ -62,7 +62,7 @@ void Interpreter::observe_repeat(const Frame& f) {
   }
 }
 
-void Interpreter::observed_write(int n, Value v, std::uint16_t column) {
+void Executor::observed_write(int n, Value v, std::uint16_t column) {
   const bool local = n >= 1 && n <= 33;
   const std::int32_t level = local ? (frames_.empty() ? 0 : frames_.back().level) : -1;
   Value old;
@@ -82,7 +82,7 @@ void Interpreter::observed_write(int n, Value v, std::uint16_t column) {
   observer->variable(n, level, old, v);
 }
 
-Value Interpreter::observed_read(int n, std::uint16_t column) {
+Value Executor::observed_read(int n, std::uint16_t column) {
   const Value v = read_system(n, column);  // (an alarm on reading is not a read)
   observer_->read(n, v);
   return v;

@@ -2,13 +2,13 @@
 // data setting (L2/L20 work offsets, L1/L10..L13 tool offsets, a lathe's P, L52 parameters).
 #include <fmt/format.h>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
 // Lathe offsets shift the tool tip: the path in work coordinates stays as programmed, the machine
 // position (#5021.., G28, G53) carries the offset (geometry + wear).
-void Interpreter::select_lathe_offset(int number, std::uint16_t column) {
+void Executor::select_lathe_offset(int number, std::uint16_t column) {
   if (number < 0 || number > 64) alarm("PS0030", fmt::format("offset number {} out of range (0..64)", number), column);
   lathe_offset_ = number;
   if (number == 0) {
@@ -21,7 +21,7 @@ void Interpreter::select_lathe_offset(int number, std::uint16_t column) {
 }
 
 // G10 P_ X_ Z_ R_ Q_ on a lathe: P 1..64 wear, P 10001..10064 geometry; U, W, C add to X, Z, R.
-void Interpreter::lathe_offset_setting() {
+void Executor::lathe_offset_setting() {
   if (!has('P')) alarm("PS0031", "G10 on a lathe needs P (offset number: 1..64 wear, 10001..10064 geometry)");
   int p = integer(word('P'), "P of G10");
   bool geometry = p > 10000;
@@ -39,7 +39,7 @@ void Interpreter::lathe_offset_setting() {
   if (has('Q')) o.tip = word('Q').value;  // takes effect at the next T code, as on FANUC
 }
 
-void Interpreter::data_setting() {
+void Executor::data_setting() {
   int l = has('L') ? integer(word('L'), "L of G10") : 0;
   if (profile_.lathe() && l == 0) return lathe_offset_setting();
   if (l == 2 || l == 20) {

@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -35,7 +35,7 @@ bool read_at_start(int n) { return n == 5003 || n == 5008; }
 
 }  // namespace
 
-void Interpreter::start_parameter_input() {
+void Executor::start_parameter_input() {
   for (const Cmd& c : cmds_)
     if (c.letter != 'G' && c.letter != 'L')
       alarm("PS0231", fmt::format("G10 L52 (programmable parameter input) takes no other words: {} here", c.letter),
@@ -43,7 +43,7 @@ void Interpreter::start_parameter_input() {
   parameter_input_ = true;
 }
 
-void Interpreter::parameter_input_block(const nc::Block& b) {
+void Executor::parameter_input_block(const nc::Block& b) {
   const Cmd* g = nullptr;
   const Cmd* p = nullptr;
   const Cmd* r = nullptr;
@@ -134,7 +134,7 @@ void Interpreter::parameter_input_block(const nc::Block& b) {
 
 // The values of one parameter input block (a bit parameter's modelled bits, or one value), checked
 // together, then made.
-void Interpreter::set_parameters_by_program(int n, const std::vector<std::pair<std::string, double>>& changes,
+void Executor::set_parameters_by_program(int n, const std::vector<std::pair<std::string, double>>& changes,
                                             std::uint16_t column) {
   MachineProfile changed = profile_;
   for (const auto& [key, value] : changes) {

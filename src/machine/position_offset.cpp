@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -23,7 +23,7 @@ double offset_factor(int g) {
 }  // namespace
 
 // After the block's G codes: what the control does with G45..G48 besides moving.
-void Interpreter::check_position_offset(const std::vector<int>& one_shot) {
+void Executor::check_position_offset(const std::vector<int>& one_shot) {
   const int g = position_offset_;
   std::uint16_t column = 0;
   for (const Cmd& c : cmds_)
@@ -62,7 +62,7 @@ void Interpreter::check_position_offset(const std::vector<int>& one_shot) {
 // factor times the offset along its own direction. A zero travel moves by the offset in G91 (the
 // sign of "X-0" gives the direction) and not at all in G90. Arcs: 1/4 and 3/4 circles by I, J, K,
 // whose centre offset grows the same way.
-void Interpreter::apply_position_offset(AxisVector& target) {
+void Executor::apply_position_offset(AxisVector& target) {
   const int g = position_offset_;
   const bool by_h = profile_.position_offset_by_h;
   const double l = offset_factor(g) * (by_h ? length_offset(h_) : radius_offset(d_));

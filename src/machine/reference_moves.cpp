@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "base/restore.hpp"
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -13,7 +13,7 @@ namespace {
 constexpr const char* kAxisLetters = "XYZABC";
 }
 
-unsigned Interpreter::block_axes() const {
+unsigned Executor::block_axes() const {
   const bool system_a = profile_.lathe() && profile_.gcode_system == 'A';
   unsigned axes = 0;
   for (const Cmd& c : cmds_) {
@@ -26,14 +26,14 @@ unsigned Interpreter::block_axes() const {
 
 // A G28, G30, G29 or G53 naming an axis of the offset plane leaves the compensation vector on its
 // first move, even one that stays put in the plane (docs/compensation-spec.md section 6).
-bool Interpreter::names_plane_axis() const {
+bool Executor::names_plane_axis() const {
   const PlaneAxes pa = plane_axes(plane_);
   return (block_axes() & ((1u << pa.p) | (1u << pa.q))) != 0;
 }
 
 // The control keeps the intermediate point of each axis a G28, G30 or G30.1 names, in work
 // coordinates: after a change of coordinate system it lies at the same coordinates of the new one.
-void Interpreter::remember_intermediate(const AxisVector& mid) {
+void Executor::remember_intermediate(const AxisVector& mid) {
   const unsigned axes = block_axes();
   for (int a = 0; a < kAxes; ++a)
     if (axes & (1u << a)) intermediate_[a] = mid[a];
@@ -42,7 +42,7 @@ void Interpreter::remember_intermediate(const AxisVector& mid) {
 
 // G27 IP: positioning at rapid to IP, then each axis named must stand at reference position 1
 // (machine coordinates, the tool offsets included: an active offset puts it elsewhere), else PS0092.
-void Interpreter::reference_check() {
+void Executor::reference_check() {
   AxisVector target = pos_;
   if (!axis_target(target)) return;
   if (compensating())
@@ -71,7 +71,7 @@ void Interpreter::reference_check() {
 // IP (G91, U, W: from the intermediate point). An axis no G28/G30 has named has no intermediate
 // point: it moves in the second step only. In offset mode the vector is cancelled at the
 // intermediate point, as in G28, and restored at the end point.
-void Interpreter::return_from_reference() {
+void Executor::return_from_reference() {
   if (intermediate_axes_ == 0)
     alarm("PS0305", "G29 needs an intermediate position: no G28, G30 or G30.1 has been given since power-on");
   const unsigned axes = block_axes();
@@ -93,7 +93,7 @@ void Interpreter::return_from_reference() {
 
 // G92.1 IP 0 (G50.3 on a system A lathe): the axes named go back to the workpiece coordinate system
 // the work zero offsets give, without the shift of G92 (G50) and G52.
-void Interpreter::workpiece_preset() {
+void Executor::workpiece_preset() {
   const unsigned axes = block_axes();
   AxisVector check = pos_;
   axis_target(check, true);  // PS0009 for an axis the machine lacks

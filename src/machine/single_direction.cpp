@@ -2,12 +2,12 @@
 // the same direction, through a stop short of the end point (docs/reference-moves.md).
 #include <fmt/format.h>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
 // A one-shot G60 block (No.5431#0 MDL = 0).
-bool Interpreter::single_direction_block() {
+bool Executor::single_direction_block() {
   AxisVector target = pos_;
   if (!axis_target(target)) return false;
   if (rolls_) roll_over(target);
@@ -19,7 +19,7 @@ bool Interpreter::single_direction_block() {
 // overrun ends moving in +), then to the end point, both at rapid. The tool stops there even when
 // it already comes from that side. An axis without an overrun, or that does not move, goes
 // straight to its end in the first move.
-void Interpreter::single_direction(const AxisVector& target) {
+void Executor::single_direction(const AxisVector& target) {
   if (cycle_ != 0)
     alarm("NC9001", "single direction positioning (G60) of a drilling canned cycle's holes is not supported yet");
   AxisVector stop = target;

@@ -2,11 +2,11 @@
 // comes, a linear move to its end point, and #5061.. hold that point (docs/reference-moves.md).
 #include <fmt/format.h>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
-bool Interpreter::skip_move(int g) {
+bool Executor::skip_move(int g) {
   const std::string code = g == 310 ? std::string("G31") : fmt::format("G31.{}", g % 10);
   if (compensating())
     alarm("PS0035", fmt::format("{} cannot be given in cutter compensation mode (G41/G42): cancel it with G40 first",

@@ -6,7 +6,7 @@
 #include <ctime>
 
 #include "machine/g_codes.hpp"
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -16,7 +16,7 @@ using nc::Value;
 // The code (x10) in force in modal group `group`, as #4001..#4022 read it: from the state ncurve
 // keeps, each code's group taken from the G-code table (the lathe's groups differ from the mill's);
 // the table's power-on code for a group ncurve does not change; 0 for a group the control lacks.
-int Interpreter::modal_code(int group) const {
+int Executor::modal_code(int group) const {
   const GMachine m = g_machine(profile_);
   if (group == 1) return motion_ * 10;  // G60 too, modal with No.5431#0 MDL = 1
   if (group == 3 && m == kLatheA) return incremental_ ? 910 : 900;
@@ -47,7 +47,7 @@ int Interpreter::modal_code(int group) const {
   return g_initial(group, m);
 }
 
-double Interpreter::program_units(int axis, double mm) const {
+double Executor::program_units(int axis, double mm) const {
   double v = mm;
   if (axis == 0 && profile_.lathe() && profile_.diameter_x) v *= 2;
   if (inch_ && axis < 3) v /= 25.4;
@@ -56,14 +56,14 @@ double Interpreter::program_units(int axis, double mm) const {
 
 // An offset (tool, work) in mm as the program reads or writes it: a length in inches under G20; not
 // a length (a rotary axis's degrees, a tool nose tip number) as it is.
-double Interpreter::offset_units(double mm, bool length) const { return length && inch_ ? mm / 25.4 : mm; }
-double Interpreter::offset_mm(double value, bool length) const { return length && inch_ ? value * 25.4 : value; }
-bool Interpreter::is_tip_variable(int n) { return n >= 2301 && n <= 2364; }
+double Executor::offset_units(double mm, bool length) const { return length && inch_ ? mm / 25.4 : mm; }
+double Executor::offset_mm(double value, bool length) const { return length && inch_ ? value * 25.4 : value; }
+bool Executor::is_tip_variable(int n) { return n >= 2301 && n <= 2364; }
 
 // (a look from outside the run: not a read of the program's, so not told to the observer)
-nc::Value Interpreter::variable(int number) { return number >= 1000 ? read_system(number, 0) : read_var(number, 0); }
+nc::Value Executor::variable(int number) { return number >= 1000 ? read_system(number, 0) : read_var(number, 0); }
 
-Value Interpreter::read_var(int n, std::uint16_t column) {
+Value Executor::read_var(int n, std::uint16_t column) {
   if (n >= 1 && n <= 33) return locals_[frames_.empty() ? 0 : frames_.back().level][n - 1];
   if ((n >= 100 && n <= common_high_) || (n >= 500 && n <= 999)) return common_[n];
   if (n == 0) return Value{};
@@ -71,7 +71,7 @@ Value Interpreter::read_var(int n, std::uint16_t column) {
   return read_system(n, column);
 }
 
-void Interpreter::write_var(int n, Value v, std::uint16_t column) {
+void Executor::write_var(int n, Value v, std::uint16_t column) {
   if (!v.vacant && (!std::isfinite(v.v) || std::fabs(v.v) > 1e47))
     alarm("PS0111", "value out of the range of a macro variable (about 1e47)", column);
   if (observer_) [[unlikely]] return observed_write(n, v, column);
@@ -90,7 +90,7 @@ void Interpreter::write_var(int n, Value v, std::uint16_t column) {
 // Mill offsets by memory type. A: #2001..#2200 and #10001..#10999, one value a number. B: wear
 // there, geometry at #2201..#2400 and #11001..#11999. C: those for H, and D wear at #12001..
 // #12999, D geometry at #13001..#13999.
-double* Interpreter::mill_offset_field(int n) {
+double* Executor::mill_offset_field(int n) {
   int k = 0, kind = 0;  // kind: 0 H/shared wear (geometry on A), 1 geometry, 2 D wear, 3 D geometry
   if (n >= 2001 && n <= 2200) k = n - 2000;
   else if (n >= 10001 && n <= 10999) k = n - 10000;
@@ -111,12 +111,12 @@ double* Interpreter::mill_offset_field(int n) {
   }
 }
 
-double Interpreter::length_offset(int n) const {
+double Executor::length_offset(int n) const {
   auto it = tool_offsets_.find(n);
   return it == tool_offsets_.end() ? 0.0 : it->second.geometry + it->second.wear;
 }
 
-double Interpreter::radius_offset(int n) const {
+double Executor::radius_offset(int n) const {
   auto it = tool_offsets_.find(n);
   if (it == tool_offsets_.end()) return 0.0;
   const MillOffset& o = it->second;
@@ -125,7 +125,7 @@ double Interpreter::radius_offset(int n) const {
 
 // FANUC T series, 64 offset sets: #2001 X wear, #2101 Z wear, #2201 R wear, #2301 tip,
 // #2701 X geometry, #2801 Z geometry, #2901 R geometry (+ offset number - 1).
-double* Interpreter::lathe_offset_field(int n) {
+double* Executor::lathe_offset_field(int n) {
   if (n < 2001 || n > 2964 || (n - 2000) % 100 == 0 || (n - 2000) % 100 > 64) return nullptr;
   LatheOffset& o = lathe_offsets_[(n - 2000) % 100];
   switch ((n - 2001) / 100) {
@@ -140,7 +140,7 @@ double* Interpreter::lathe_offset_field(int n) {
   }
 }
 
-Value Interpreter::read_system(int n, std::uint16_t column) {
+Value Executor::read_system(int n, std::uint16_t column) {
   auto axis_order = [&](int k) -> int {  // k-th axis of the profile (0-based) -> internal index
     if (k < 0 || k >= static_cast<int>(profile_.axes.size())) return -1;
     return axis_index(profile_.axes[k]);
@@ -227,7 +227,7 @@ Value Interpreter::read_system(int n, std::uint16_t column) {
   alarm("PS0115", fmt::format("#{} is not a variable of this control", n), column);
 }
 
-void Interpreter::write_system(int n, Value v, std::uint16_t column) {
+void Executor::write_system(int n, Value v, std::uint16_t column) {
   auto axis_order = [&](int k) -> int {
     if (k < 0 || k >= static_cast<int>(profile_.axes.size())) return -1;
     return axis_index(profile_.axes[k]);

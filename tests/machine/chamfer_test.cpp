@@ -6,7 +6,8 @@
 #include <numbers>
 #include <random>
 
-#include "machine/corner_geometry.hpp"
+#include "machine/path/compensation.hpp"
+#include "machine/path/corner_geometry.hpp"
 #include "support/run_program.hpp"
 
 using namespace ncurve;

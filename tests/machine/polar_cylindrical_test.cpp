@@ -12,7 +12,7 @@
 #include <random>
 #include <sstream>
 
-#include "machine/developed_path.hpp"
+#include "machine/path/developed_path.hpp"
 #include "support/run_program.hpp"
 
 using namespace ncurve;

@@ -1,7 +1,7 @@
 // The geometry of the lathe multiple repetitive cycles (src/machine/stock_removal.*): invariants of
 // the roughing passes (inside the stock, never into the shape, depths of Δd but the last) checked on
 // fixed and random shapes, and the small cases worked by hand.
-#include "machine/stock_removal.hpp"
+#include "machine/cycles/stock_removal.hpp"
 
 #include <gtest/gtest.h>
 

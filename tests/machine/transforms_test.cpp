@@ -1,6 +1,6 @@
 // The pure maths of the mill coordinate transforms (machine/transforms.hpp), against values worked
 // out by hand: cos 30 = 0.8660254, sin 30 = 0.5, and so on.
-#include "machine/transforms.hpp"
+#include "machine/frame/transforms.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "machine/transforms.hpp"
+#include "machine/frame/transforms.hpp"
 
 #include <algorithm>
 #include <cmath>

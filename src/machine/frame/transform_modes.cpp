@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "machine/g_codes.hpp"
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -23,7 +23,7 @@ const char* const kAxisLetters = "XYZABC";
 // mode], G codes related to reference position return (G27, G28, G29, G30, etc.) and those for
 // changing the coordinate system (G52 to G59, G92, etc.) must not be specified", and the plane
 // must not change in G68 mode (PS0144). Scaling is held to the same rule.
-void Interpreter::check_code_in_transform(int g, std::uint16_t column) const {
+void Executor::check_code_in_transform(int g, std::uint16_t column) const {
   if (!xf_.active()) return;
   if ((g == 170 || g == 180 || g == 190) && xf_.rotating && g / 10 != xf_rotation_plane_)
     alarm("PS0144", fmt::format("the plane cannot change (G{}) in coordinate system rotation mode (G68 in the "
@@ -49,7 +49,7 @@ void Interpreter::check_code_in_transform(int g, std::uint16_t column) const {
 // The block's G15/G16, G50.1/G51.1, G50/G51 and G68/G69, after its other G codes (so that its
 // plane and G90/G91 count). Cancels first, then mirror, scaling, rotation: the manual's order.
 // G51.1, G50.1, G51 and G68 take the block's axis words as data: the block does not move.
-void Interpreter::transform_codes(std::vector<int>& one_shot) {
+void Executor::transform_codes(std::vector<int>& one_shot) {
   auto given = [&](int g) { return std::find(g_codes_.begin(), g_codes_.end(), g) != g_codes_.end(); };
   auto column_of = [&](int g) {
     for (const Cmd& c : cmds_)
@@ -200,7 +200,7 @@ void Interpreter::transform_codes(std::vector<int>& one_shot) {
 // axis_target under G16 or a transform: the words are read in program coordinates (from the
 // programmed position, the inverse image of the machine's), polar words made Cartesian, then the
 // point is transformed. Axes the transform leaves alone keep their exact value.
-bool Interpreter::transformed_axis_target(AxisVector& target) {
+bool Executor::transformed_axis_target(AxisVector& target) {
   struct Restore {
     bool& flag;
     bool saved;
@@ -253,7 +253,7 @@ bool Interpreter::transformed_axis_target(AxisVector& target) {
 // centre offsets I J K mapped as the path is (each axis by its own factor: unequal factors leave
 // the end point off the circle, PS0020 as for any such arc). A mirror (or a negative factor) on
 // one axis of the plane reverses the arc. In G16 mode an arc is given by R.
-bool Interpreter::transform_arc_words() {
+bool Executor::transform_arc_words() {
   const PlaneAxes pa = plane_axes(plane_);
   if (polar_ && !has('R') && (has(pa.ip) || has(pa.iq)))
     alarm("PS0022", fmt::format("in polar coordinate mode (G16) give the arc's radius with R: {} and {} are not "
@@ -275,7 +275,7 @@ bool Interpreter::transform_arc_words() {
 
 // Canned cycle point R and Z (along Z, G17) under mirror or scaling: the programmed levels mapped
 // as Z coordinates. Q and the peck distances d are not scaled (the manual).
-void Interpreter::transformed_cycle_levels(int axis, double& r_level, double& z_level) const {
+void Executor::transformed_cycle_levels(int axis, double& r_level, double& z_level) const {
   auto z_of = [&](double z, bool forward) {
     AxisVector v{};
     v[axis] = z;
@@ -288,7 +288,7 @@ void Interpreter::transformed_cycle_levels(int axis, double& r_level, double& z_
   z_level = z_of(z, true);
 }
 
-V2 Interpreter::transformed_plane_vector(V2 v) const {
+V2 Executor::transformed_plane_vector(V2 v) const {
   if (!xf_.active()) return v;
   const PlaneAxes pa = plane_axes(plane_);
   AxisVector w{};
@@ -298,6 +298,6 @@ V2 Interpreter::transformed_plane_vector(V2 v) const {
   return {w[pa.p], w[pa.q]};
 }
 
-AxisVector Interpreter::program_position() const { return xf_.active() ? xf_.invert(pos_) : pos_; }
+AxisVector Executor::program_position() const { return xf_.active() ? xf_.invert(pos_) : pos_; }
 
 }  // namespace ncurve::machine

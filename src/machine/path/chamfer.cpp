@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -63,12 +63,12 @@ void cut_start(Move& m, const PlaneAxes& pa, V2 at, double part) {
 const char* axis_name(int a) { return a == 0 ? "X" : a == 1 ? "Y" : a == 2 ? "Z" : "?"; }
 }  // namespace
 
-[[noreturn]] void Interpreter::corner_alarm(const HeldCorner& h, std::string code, std::string message) const {
+[[noreturn]] void Executor::corner_alarm(const HeldCorner& h, std::string code, std::string message) const {
   throw nc::Alarm(nc::Diagnostic{nc::Severity::error, std::move(code), std::move(message),
                                  h.prog && h.block ? h.prog->span_of(*h.block, h.request.column) : span()});
 }
 
-void Interpreter::arm_corner(const AxisVector& target) {
+void Executor::arm_corner(const AxisVector& target) {
   const bool lathe = profile_.lathe();
   const PlaneAxes pa = plane_axes(plane_);
   const Cmd* comma = nullptr;  // ,C or ,R
@@ -164,7 +164,7 @@ void Interpreter::arm_corner(const AxisVector& target) {
   corner_on_ = true;
 }
 
-bool Interpreter::corner_emit(Move& m) {
+bool Executor::corner_emit(Move& m) {
   if (corner_.held) {
     if (!m.is_motion()) {  // M codes of the held block, T of the next: after the corner
       corner_.held->events.push_back(m);
@@ -188,7 +188,7 @@ bool Interpreter::corner_emit(Move& m) {
   return true;
 }
 
-void Interpreter::cut_held_corner(Move& next) {
+void Executor::cut_held_corner(Move& next) {
   HeldCorner h = std::move(*corner_.held);
   corner_.held.reset();
   const CornerRequest& rq = h.request;
@@ -282,7 +282,7 @@ void Interpreter::cut_held_corner(Move& next) {
   d_ = d_now, lathe_offset_ = offset_now;
 }
 
-void Interpreter::corner_block_end(bool program_end) {
+void Executor::corner_block_end(bool program_end) {
   const bool words = !comma_cmds_.empty();
   const std::uint16_t column = words ? comma_cmds_.front().column : 0;
   comma_cmds_.clear();

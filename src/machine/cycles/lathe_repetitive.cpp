@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "base/restore.hpp"
-#include "machine/interpreter.hpp"
-#include "machine/stock_removal.hpp"
+#include "machine/executor.hpp"
+#include "machine/cycles/stock_removal.hpp"
 
 namespace ncurve::machine {
 
@@ -53,17 +53,17 @@ mrc::Shape shape_of(const std::vector<Move>& moves, std::size_t from) {
 }
 }  // namespace
 
-int Interpreter::repetitive_code(int g) const {
+int Executor::repetitive_code(int g) const {
   if (profile_.gcode_system == 'C') return g >= 720 && g <= 780 && g % 10 == 0 ? g - 20 : 0;
   return g >= 700 && g <= 760 && g % 10 == 0 ? g : 0;
 }
 
-double Interpreter::increments(const Cmd& c) const {
+double Executor::increments(const Cmd& c) const {
   const double v = integer(c, "P/Q of G74/G75 (least input increments)") / (inch_ ? per_unit_inch_ : per_unit_mm_);
   return std::fabs(inch_ ? v * 25.4 : v);
 }
 
-bool Interpreter::repetitive_cycle(int g) {
+bool Executor::repetitive_cycle(int g) {
   try {
     return repetitive_cycle_path(g);
   } catch (const mrc::PathTooLong&) {
@@ -73,7 +73,7 @@ bool Interpreter::repetitive_cycle(int g) {
   }
 }
 
-bool Interpreter::repetitive_cycle_path(int g) {
+bool Executor::repetitive_cycle_path(int g) {
   std::uint16_t column = 0;
   for (const Cmd& c : cmds_)
     if (c.letter == 'G' && repetitive_code(static_cast<int>(std::lround(c.value * 10))) == g) column = c.column;
@@ -108,7 +108,7 @@ bool Interpreter::repetitive_cycle_path(int g) {
 }
 
 // The blocks N(ns)..N(nf) of the program holding the cycle block.
-Interpreter::ShapeRange Interpreter::shape_range(int g) {
+Executor::ShapeRange Executor::shape_range(int g) {
   ShapeRange r;
   r.ns = integer(word('P'), "P (sequence number ns)");
   r.nf = integer(word('Q'), "Q (sequence number nf)");
@@ -133,7 +133,7 @@ Interpreter::ShapeRange Interpreter::shape_range(int g) {
 
 // What the manual allows in a shape: motion G00..G03 with their words, dwell, absolute/incremental
 // and feed modes, F S T and M codes other than calls and ends.
-void Interpreter::check_shape_block(const nc::Block& b, bool first, int g) {
+void Executor::check_shape_block(const nc::Block& b, bool first, int g) {
   if (b.kind != nc::Statement::nc || (b.block_skip && profile_.block_skip)) return;
   block_ = &b;  // an alarm names this block
   const std::string code = written(g, profile_.gcode_system);
@@ -175,7 +175,7 @@ void Interpreter::check_shape_block(const nc::Block& b, bool first, int g) {
 
 // Runs blocks N(ns)..N(nf): kept as a shape (keep) or made as moves (G70). The block, its words and,
 // for a kept shape, the modal state are as before; the program goes on after the cycle block.
-std::vector<Move> Interpreter::walk_shape(const ShapeRange& r, int g, bool keep) {
+std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
   const std::vector<Cmd> cmds = cmds_;
   const auto have = have_;
   const auto slot = slot_;
@@ -228,7 +228,7 @@ std::vector<Move> Interpreter::walk_shape(const ShapeRange& r, int g, bool keep)
 }
 
 // G70 P(ns) Q(nf): the shape as programmed, its F S T in effect, then back to the start by rapid.
-void Interpreter::finishing_cycle(const ShapeRange& r) {
+void Executor::finishing_cycle(const ShapeRange& r) {
   const AxisVector start = pos_;
   walk_shape(r, 700, false);
   linear(MoveKind::rapid, start);
@@ -236,7 +236,7 @@ void Interpreter::finishing_cycle(const ShapeRange& r) {
 
 // G71 / G72: roughing in passes of Δd parallel to Z (G71) or X (G72), then along the shape moved by
 // the finishing allowance; back to the start point.
-bool Interpreter::stock_removal_cycle(int g) {
+bool Executor::stock_removal_cycle(int g) {
   const bool facing = g == 720;
   const std::string code = written(g, profile_.gcode_system);
   const double diameter = profile_.diameter_x ? 2.0 : 1.0;
@@ -299,7 +299,7 @@ bool Interpreter::stock_removal_cycle(int g) {
 // starts up from the cycle's start point (type A), every corner as in offset mode, the last block
 // ends with its vector perpendicular. The compensation in force is cancelled at the start point and
 // stays off for the cycle's own moves.
-std::vector<Move> Interpreter::nose_compensated(const std::vector<Move>& shape) {
+std::vector<Move> Executor::nose_compensated(const std::vector<Move>& shape) {
   int side = comp_side_;
   comp_->cancel_at_end();
   comp_side_ = 0;
@@ -316,7 +316,7 @@ std::vector<Move> Interpreter::nose_compensated(const std::vector<Move>& shape) 
 }
 
 // G73: the shape repeated d times, moved by the relief falling to the finishing allowance.
-bool Interpreter::pattern_repeating_cycle() {
+bool Executor::pattern_repeating_cycle() {
   const std::string code = written(730, profile_.gcode_system);
   const double diameter = profile_.diameter_x ? 2.0 : 1.0;
   const double du = has('U') ? dimension(word('U')) / diameter : 0.0, dw = has('W') ? dimension(word('W')) : 0.0;
@@ -343,7 +343,7 @@ bool Interpreter::pattern_repeating_cycle() {
 }
 
 // G74 (pecks along Z, steps along X) and G75 (pecks along X, steps along Z).
-bool Interpreter::peck_cycle(int g) {
+bool Executor::peck_cycle(int g) {
   const std::string code = written(g, profile_.gcode_system);
   const bool one_block = profile_.series10_format;
   const bool target = has('X') || has('Z') || (profile_.gcode_system == 'A' && (has('U') || has('W')));
@@ -398,7 +398,7 @@ bool Interpreter::peck_cycle(int g) {
 }
 
 // Each step of a cycle's path as a move of the cycle block, at the F in force.
-void Interpreter::emit_cycle_path(const std::vector<mrc::Step>& path, bool transposed) {
+void Executor::emit_cycle_path(const std::vector<mrc::Step>& path, bool transposed) {
   for (mrc::Step s : path) {
     if (transposed) s.end = mrc::transposed(s.end), s.centre = mrc::transposed(s.centre), s.sweep = -s.sweep;
     AxisVector target = pos_;

@@ -1,5 +1,5 @@
 // Sampling of polar (G12.1) and cylindrical (G07.1) interpolation paths (developed_path.hpp).
-#include "machine/developed_path.hpp"
+#include "machine/path/developed_path.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // and G88 boring, as the FANUC 0i-MF / 30i-B operator's manuals describe them.
 #include <fmt/format.h>
 
-#include "machine/drilling.hpp"
+#include "machine/cycles/drilling.hpp"
 
 namespace ncurve::machine {
 
@@ -21,7 +21,7 @@ Shift shift_direction(int bits, int drilling_axis) {
 }
 }  // namespace
 
-void Interpreter::boring_hole(const Hole& h) {
+void Executor::boring_hole(const Hole& h) {
   const Shift s = shift_direction(profile_.drilling.shift_direction, h.axis);
   auto shift = [&](double away) {  // rapid by Q: +1 away from the tool tip, -1 back
     AxisVector t = pos_;

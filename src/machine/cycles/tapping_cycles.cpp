@@ -7,11 +7,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "machine/drilling.hpp"
+#include "machine/cycles/drilling.hpp"
 
 namespace ncurve::machine {
 
-void Interpreter::tapping_hole(const Hole& h) {
+void Executor::tapping_hole(const Hole& h) {
   const int forward = cycle_ == 84 ? 3 : 4, reverse = cycle_ == 84 ? 4 : 3;
   auto spindle = [&](int code) { emit_event(MoveKind::spindle, code); };
   auto dwell = [&] {
@@ -72,7 +72,7 @@ void Interpreter::tapping_hole(const Hole& h) {
 }
 
 // At a rigid tapping hole: the spindle speed and the feed it needs.
-void Interpreter::rigid_tapping_check(std::uint16_t column) const {
+void Executor::rigid_tapping_check(std::uint16_t column) const {
   if (speed_ <= 0)
     alarm("PS0200", fmt::format("rigid tapping (G{}) without a spindle speed: give S with M29 (M29 S_)", cycle_),
           column);
@@ -84,7 +84,7 @@ void Interpreter::rigid_tapping_check(std::uint16_t column) const {
 
 // M29 selects rigid tapping for the G84/G74 that follows (or stands in its block); between the two
 // the manual allows neither an S command nor an axis move, nor M29 inside a tapping cycle.
-void Interpreter::rigid_tapping_words() {
+void Executor::rigid_tapping_words() {
   if (profile_.lathe()) return;
   const Cmd* m29 = nullptr;
   for (const Cmd& c : cmds_)

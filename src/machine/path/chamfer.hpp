@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "machine/corner_geometry.hpp"
+#include "machine/path/corner_geometry.hpp"
 #include "machine/move.hpp"
 #include "nc/program.hpp"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "base/restore.hpp"
-#include "machine/drilling.hpp"
+#include "machine/cycles/drilling.hpp"
 
 namespace ncurve::machine {
 
@@ -29,7 +29,7 @@ const char* lathe_cycle_name(int g) {
 //   G83 X(U) C(H) Z(W) R Q P F K M   (G87: Z(W) C(H) X(U) ...)
 // X C (Z C) position the hole, Z (X) is the bottom (W, U or G91: the distance from R), R the
 // distance from the initial level to point R, Q the depth of each peck in least input increments.
-bool Interpreter::lathe_drilling_block() {
+bool Executor::lathe_drilling_block() {
   const int g = cycle_;
   const bool face = g <= 85;
   const int ax = face ? 2 : 0;  // the drilling axis
@@ -126,7 +126,7 @@ bool Interpreter::lathe_drilling_block() {
 
 // One hole: position at the current level, clamp C (if asked), rapid to R, the cycle's motions,
 // return to the initial level (G98, system A) or to R (G99), unclamp C and dwell No.5111.
-void Interpreter::lathe_hole(const Hole& h, double q) {
+void Executor::lathe_hole(const Hole& h, double q) {
   const int g = cycle_;
   AxisVector at = h.at;
   at[h.axis] = pos_[h.axis];

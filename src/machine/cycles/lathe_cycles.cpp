@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "base/restore.hpp"
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -45,7 +45,7 @@ const char* cycle_name(int code) {
 }
 }  // namespace
 
-bool Interpreter::select_lathe_motion(int g, std::vector<int>& one_shot) {
+bool Executor::select_lathe_motion(int g, std::vector<int>& one_shot) {
   const bool system_a = profile_.gcode_system == 'A';
   const int code = system_a_code(g, system_a);
   if (code == 0) return false;
@@ -59,7 +59,7 @@ bool Interpreter::select_lathe_motion(int g, std::vector<int>& one_shot) {
   return true;
 }
 
-void Interpreter::lathe_motion(const AxisVector& target) {
+void Executor::lathe_motion(const AxisVector& target) {
   const int code = system_a_code(motion_ * 10, profile_.gcode_system == 'A');
   if (code == 32) thread_block(target);
   else if (single_cycle_code(code)) single_cycle(target);
@@ -69,7 +69,7 @@ void Interpreter::lathe_motion(const AxisVector& target) {
 //   G90: (1) rapid X to E.x + R, (2) feed to E, (3) feed X back to A.x, (4) rapid Z back to A.z
 //   G94: (1) rapid Z to E.z + R, (2) feed to E, (3) feed Z back to A.z, (4) rapid X back to A.x
 //   G92: as G90 with (2) a thread cut ending in the No.5130 chamfer and (3) at rapid traverse
-void Interpreter::single_cycle(const AxisVector& target) {
+void Executor::single_cycle(const AxisVector& target) {
   const bool system_a = profile_.gcode_system == 'A';
   const int code = system_a_code(motion_ * 10, system_a);
   const int written = motion_;

@@ -12,9 +12,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "machine/developed_path.hpp"
+#include "machine/path/developed_path.hpp"
 #include "machine/g_codes.hpp"
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -25,7 +25,7 @@ const char* const kAxisLetters = "XYZABC";
 }  // namespace
 
 // G07.1 (71), G12.1 (121), G13.1 (131); G107 is G07.1's other name, G112 and G113 a lathe's.
-bool Interpreter::developed_code(int g, std::uint16_t column) {
+bool Executor::developed_code(int g, std::uint16_t column) {
   if ((g == 1120 || g == 1130) && !profile_.lathe()) return false;  // G107 is on both
   if (g == 71 || g == 1070) return cylinder_code(column), true;
   if (g == 121 || g == 1120) return polar_start(column), true;
@@ -47,7 +47,7 @@ bool Interpreter::developed_code(int g, std::uint16_t column) {
   return true;
 }
 
-void Interpreter::polar_start(std::uint16_t column) {
+void Executor::polar_start(std::uint16_t column) {
   if (dev_)
     alarm(dev_->polar ? "PS0146" : "PS0176",
           dev_->polar ? "G12.1 in polar coordinate interpolation mode: it is on already"
@@ -94,7 +94,7 @@ void Interpreter::polar_start(std::uint16_t column) {
 }
 
 // G07.1 C<r>: on with the cylinder's radius r, off with C0.
-void Interpreter::cylinder_code(std::uint16_t column) {
+void Executor::cylinder_code(std::uint16_t column) {
   const Cmd* axis = nullptr;
   for (const Cmd& c : cmds_) {
     if (axis_index(c.letter) < 0) continue;
@@ -170,7 +170,7 @@ void Interpreter::cylinder_code(std::uint16_t column) {
   developed_ = developed_hook_ = true;
 }
 
-void Interpreter::end_developed() {
+void Executor::end_developed() {
   pos_ = dev_->machine;
   plane_ = dev_->saved_plane;
   dev_.reset();
@@ -178,7 +178,7 @@ void Interpreter::end_developed() {
   if (rolls_) wrap_rotary();
 }
 
-void Interpreter::check_code_in_developed(int g, std::uint16_t column) const {
+void Executor::check_code_in_developed(int g, std::uint16_t column) const {
   const GCode* row = g_code(g, g_machine(profile_));
   if (!row || row->kind == GKind::none) return;
   // lathe system A G50 with axis words sets the coordinate system; G50 S alone clamps the spindle
@@ -196,7 +196,7 @@ void Interpreter::check_code_in_developed(int g, std::uint16_t column) const {
 // The block's axis words in the programmed plane: the rotary axis's address is the hypothetical
 // axis (polar: a length, a radius value even where X is a diameter) or the angle on the cylinder
 // (G07.1: degrees, made the arc length r * angle).
-bool Interpreter::developed_axis_target(AxisVector& target) {
+bool Executor::developed_axis_target(AxisVector& target) {
   const bool radius_word = std::ranges::any_of(g_codes_, [](int g) { return g == 71 || g == 1070; });
   if (!dev_) {  // the block that cancelled G07.1
     developed_hook_ = false;
@@ -252,7 +252,7 @@ bool Interpreter::developed_axis_target(AxisVector& target) {
 
 // A move of the programmed plane as the machine makes it: the linear and rotary axes moving together
 // by pieces, each within the path tolerance of the contour.
-void Interpreter::deliver_developed(Move& m) {
+void Executor::deliver_developed(Move& m) {
   Developed& d = *dev_;
   if (!m.is_motion()) {
     m.start = m.end = d.machine;
@@ -330,7 +330,7 @@ void Interpreter::deliver_developed(Move& m) {
 // The rotary axis turns faster the nearer the path runs to the centre: the manual's limit is
 // F < L * R * pi / 180 (L: the nearest distance to the centre, R: the rotary axis's maximum cutting
 // feedrate in deg/min). Warned once a block.
-void Interpreter::warn_polar_speed(const Move& m, double degrees, double length, double radius) {
+void Executor::warn_polar_speed(const Move& m, double degrees, double length, double radius) {
   Developed& d = *dev_;
   if (m.feed_per_rev || m.feed <= 0 || length <= 0 || d.warned_line == m.line) return;
   const double rate = std::fabs(degrees) / length * m.feed;  // deg/min

@@ -1,4 +1,4 @@
-#include "machine/toml_nesting.hpp"
+#include "machine/profile/toml_nesting.hpp"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 // Machine profiles read from TOML: each table checked and stored in a MachineProfile; the control
 // parameters of [parameters] go through set_parameter (parameters.cpp).
 #include "machine/profile.hpp"
-#include "machine/toml_nesting.hpp"
+#include "machine/profile/toml_nesting.hpp"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 // Signs that a program was written for another machine than the profile's (see the header).
-#include "machine/profile_hints.hpp"
+#include "machine/profile/profile_hints.hpp"
 
 #include <fmt/format.h>
 

@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "base/restore.hpp"
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -18,12 +18,12 @@ bool valid_tool_angle(int a) { return a == 0 || a == 29 || a == 30 || a == 55 ||
 constexpr double kDeg = std::numbers::pi / 180;
 }  // namespace
 
-double Interpreter::increments(const Cmd& c, const char* what) const {
+double Executor::increments(const Cmd& c, const char* what) const {
   const double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
   return integer(c, what) / per_unit * (inch_ ? 25.4 : 1.0);
 }
 
-double Interpreter::thread_start_angle() {
+double Executor::thread_start_angle() {
   if (!has('Q')) return 0;
   const Cmd& q = word('Q');
   const int v = integer(q, "Q (threading start angle, 0.001 degree)");
@@ -39,7 +39,7 @@ double Interpreter::thread_start_angle() {
 
 // One thread cut from the current position: a line fed at the lead per spindle revolution. The lead
 // is along the longer axis (Z for a taper of 45 degrees or less), which sets the time.
-void Interpreter::thread_cut(const AxisVector& to, double lead, double angle) {
+void Executor::thread_cut(const AxisVector& to, double lead, double angle) {
   if (lead <= 0) alarm("PS0011", "thread lead is zero: give F (the lead, mm per revolution) in the threading block");
   Move m;
   m.kind = MoveKind::line;
@@ -60,7 +60,7 @@ void Interpreter::thread_cut(const AxisVector& to, double lead, double angle) {
 // The thread cut of a G92 or G76 pass, to `end`. With a chamfer r (No.5130 or G76's P, in 0.1 leads)
 // the tool leaves the thread r before the end point's Z and reaches it r * tan(No.5131, 45 degrees
 // when 0) out, toward the retract level out_x.
-void Interpreter::thread_pass(const AxisVector& end, double out_x, double lead, double angle) {
+void Executor::thread_pass(const AxisVector& end, double out_x, double lead, double angle) {
   const double dz = std::fabs(end[2] - pos_[2]);
   const double run = std::min(thread_chamfer_ * 0.1 * lead, dz);
   if (run <= 0) return thread_cut(end, lead, angle);
@@ -80,7 +80,7 @@ void Interpreter::thread_pass(const AxisVector& end, double out_x, double lead, 
 
 // G32 X(U) Z(W) F Q: one cut; a G32 block right after another continues its thread (no wait for the
 // spindle's one-rotation signal, Q not read).
-void Interpreter::thread_block(const AxisVector& target) {
+void Executor::thread_block(const AxisVector& target) {
   if (compensating())
     alarm("NC9001", fmt::format("threading (G{}) under {} radius compensation is not supported yet: cancel "
                                 "it with G40 before the thread",
@@ -95,7 +95,7 @@ void Interpreter::thread_block(const AxisVector& target) {
 // G76. FANUC 0i format (No.0001#1 FCV = 0): G76 P(m)(r)(a) Q(dmin) R(d); then
 // G76 X(U) Z(W) R(i) P(k) Q(dd) F(L). Series 10/11 format (FCV = 1): G76 X(U) Z(W) I(i) K(k) D(dd)
 // F(L) A(a) P(1) Q(start angle), m, r, dmin and d from the parameters.
-void Interpreter::multiple_threading_cycle() {
+void Executor::multiple_threading_cycle() {
   const bool system_a = profile_.gcode_system == 'A';
   const bool axes = has('X') || has('Z') || (system_a && (has('U') || has('W')));
   const bool fcv = profile_.series10_format;
@@ -159,7 +159,7 @@ void Interpreter::multiple_threading_cycle() {
 // pass n cuts to dd*sqrt(n) below the crest, at least dmin deeper than the pass before, until the
 // depth k - d; then m finishing passes at k. Each pass starts along the flank of the tool angle a
 // (single edge cutting), cuts with the chamfer, rapids out to A's X and back to A's Z.
-void Interpreter::g76_passes(const AxisVector& end, double taper, double height, double first, double angle) {
+void Executor::g76_passes(const AxisVector& end, double taper, double height, double first, double angle) {
   const AxisVector a = pos_;
   const double out = a[0] > end[0] ? 1.0 : a[0] < end[0] ? -1.0 : 0.0;   // from the root toward the crest
   const double back = end[2] > a[2] ? -1.0 : end[2] < a[2] ? 1.0 : 0.0;  // against the cutting direction

@@ -8,7 +8,7 @@
 #include <limits>
 #include <numbers>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -91,7 +91,7 @@ unsigned basic_axes(const std::array<bool, kAxes>& has) {  // check 2 works on X
 }
 }  // namespace
 
-void Interpreter::init_stroke_check() {
+void Executor::init_stroke_check() {
   stroke1_plus_ = profile_.stroke1_plus;
   stroke1_minus_ = profile_.stroke1_minus;
   for (int a = 0; a < kAxes; ++a) {
@@ -104,7 +104,7 @@ void Interpreter::init_stroke_check() {
 
 // G22 X Y Z I J K: the corners of the area of check 2 in machine coordinates (lathe X and I as
 // diameters), then check 2 on.
-void Interpreter::stroke_area_command() {
+void Executor::stroke_area_command() {
   const char corner[3][2] = {{'X', 'I'}, {'Y', 'J'}, {'Z', 'K'}};
   for (int a = 0; a < 3; ++a) {
     if (!has_axis_[a]) continue;
@@ -116,7 +116,7 @@ void Interpreter::stroke_area_command() {
   stroke_area_switch(true);
 }
 
-void Interpreter::stroke_area_switch(bool on) {
+void Executor::stroke_area_switch(bool on) {
   stroke2_on_ = on;
   bool area = profile_.stroke2_outside;  // outside forbidden: even an empty area forbids everything
   if (!area) {  // inside forbidden: only an area with an inside can be entered
@@ -132,7 +132,7 @@ void Interpreter::stroke_area_switch(bool on) {
 
 // The control stops the tool at the limit (No.1300#7 BFA: just before it, or just past it);
 // ncurve stops before the block's move, and names the axis, where the move would go and the limit.
-void Interpreter::check_stroke(const Move& m) const {
+void Executor::check_stroke(const Move& m) const {
   if (!m.is_motion()) return;
   auto fail = [&](std::string code, std::string message) {
     throw nc::Alarm(nc::Diagnostic{nc::Severity::error, std::move(code), std::move(message), nc::Span{m.file, m.line, 1, 1}});

@@ -1,6 +1,6 @@
-#include "machine/compensation.hpp"
+#include "machine/path/compensation.hpp"
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 #include <fmt/format.h>
 

@@ -3,7 +3,7 @@
 // turns one. FANUC 16i/18i-MB operator's manual B-63534EN, "Rotary axis roll-over".
 #include <cmath>
 
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
@@ -15,7 +15,7 @@ double within_turn(double v, double turn) {  // 0 <= result < turn
 }
 }  // namespace
 
-void Interpreter::init_rotary() {
+void Executor::init_rotary() {
   for (int a = 3; a < kAxes; ++a) {
     rotary_[a] = has_axis_[a] && profile_.rotary[a].rotary;
     rolls_ = rolls_ || (rotary_[a] && profile_.rotary[a].roll_over);
@@ -24,7 +24,7 @@ void Interpreter::init_rotary() {
 }
 
 // A rotary axis word in degrees: the least increment is the mm one whatever G20/G21 say.
-double Interpreter::angle(const Cmd& c) const {
+double Executor::angle(const Cmd& c) const {
   const double v = c.literal && !c.decimal_point && !profile_.decimal_calculator ? c.value / per_unit_mm_ : c.value;
   return round_to_increment(v, per_unit_mm_);
 }
@@ -33,7 +33,7 @@ double Interpreter::angle(const Cmd& c) const {
 // shorter way (RABx = 0; half a turn goes the positive way) or the way of the word's sign, the
 // target then being its absolute value (RABx = 1). The move's end is its start plus the turn it
 // makes, so that end - start is the travel; wrap_rotary() brings the position back afterwards.
-void Interpreter::roll_over(AxisVector& target) const {
+void Executor::roll_over(AxisVector& target) const {
   for (int a = 3; a < kAxes; ++a) {
     if (!roll_word_[a]) continue;
     const RotaryAxis& r = profile_.rotary[a];
@@ -53,14 +53,14 @@ void Interpreter::roll_over(AxisVector& target) const {
   }
 }
 
-void Interpreter::wrap_rotary() {
+void Executor::wrap_rotary() {
   for (int a = 3; a < kAxes; ++a)
     if (rotary_[a] && profile_.rotary[a].roll_over) pos_[a] = within_turn(pos_[a], profile_.rotary[a].per_turn);
 }
 
 // The length F applies to in a move that turns A, B or C: FANUC takes the vector of every axis,
 // degrees counted as mm (as inches under G20). `linear` is the X Y Z length.
-double Interpreter::combined_length(const AxisVector& from, const AxisVector& to, double linear) const {
+double Executor::combined_length(const AxisVector& from, const AxisVector& to, double linear) const {
   double sq = linear * linear;
   for (int a = 3; a < kAxes; ++a) {
     const double d = (to[a] - from[a]) * (rotary_[a] && inch_ ? 25.4 : 1.0);

@@ -1,10 +1,10 @@
 // One hole of a drilling canned cycle, as canned_cycles.cpp works it out for the cycle's motions.
 #pragma once
-#include "machine/interpreter.hpp"
+#include "machine/executor.hpp"
 
 namespace ncurve::machine {
 
-struct Interpreter::Hole {
+struct Executor::Hole {
   AxisVector at{};  // the hole position (its coordinate along the drilling axis is not used)
   int axis = 2;     // the drilling axis: 2 Z, 1 Y, 0 X
   double initial = 0, r = 0, z = 0;  // levels along the drilling axis

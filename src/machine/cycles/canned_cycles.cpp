@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "base/restore.hpp"
-#include "machine/drilling.hpp"
+#include "machine/cycles/drilling.hpp"
 
 namespace ncurve::machine {
 
@@ -33,7 +33,7 @@ const char* cycle_name(int g) {
 }  // namespace
 
 // G73..G89 in a block (x10 codes).
-void Interpreter::select_canned_cycle(int g, std::uint16_t) {
+void Executor::select_canned_cycle(int g, std::uint16_t) {
   const int code = g / 10;
   if (cycle_ == 0) {  // the initial level: where the tool is when the cycle mode starts
     cycle_initial_ = pos_;
@@ -45,7 +45,7 @@ void Interpreter::select_canned_cycle(int g, std::uint16_t) {
 
 // G80 and the group 01 codes: the cycle ends and its data (R, Z, Q, P) are cleared. Ending rigid
 // tapping clears its S as if S0 were given.
-void Interpreter::cancel_canned_cycle() {
+void Executor::cancel_canned_cycle() {
   if (rigid_tapping_) speed_ = 0;
   cycle_ = 0;
   cycle_axis_ = -1;
@@ -56,7 +56,7 @@ void Interpreter::cancel_canned_cycle() {
   rigid_tapping_ = rigid_pending_ = false;
 }
 
-bool Interpreter::canned_cycle_block() {
+bool Executor::canned_cycle_block() {
   const int g = cycle_;
   // No.5101#0 FXY = 0: Z drills whatever the plane; 1: the normal of G17/G18/G19 (the basic axis:
   // ncurve's mills have no parallel axes U V W that could name another)
@@ -156,7 +156,7 @@ bool Interpreter::canned_cycle_block() {
 // "When the G8x command and an M code are specified in the same block, the M code is executed at
 // the time of the first positioning operation": after the move to the first hole, before the rapid
 // to R; the repeats (K) make no M code. M02, M30, M98 and M99 act after the block as elsewhere.
-void Interpreter::cycle_m_codes() {
+void Executor::cycle_m_codes() {
   if (cycle_m_done_) return;
   cycle_m_done_ = true;
   for (const Cmd& c : cmds_) {
@@ -166,13 +166,13 @@ void Interpreter::cycle_m_codes() {
   }
 }
 
-void Interpreter::cycle_move(const Hole& h, MoveKind kind, double level) {
+void Executor::cycle_move(const Hole& h, MoveKind kind, double level) {
   AxisVector t = pos_;
   t[h.axis] = level;
   if (t[h.axis] != pos_[h.axis]) linear(kind, t);
 }
 
-void Interpreter::cycle_dwell() {
+void Executor::cycle_dwell() {
   Move m;
   m.kind = MoveKind::dwell;
   m.start = m.end = pos_;
@@ -182,7 +182,7 @@ void Interpreter::cycle_dwell() {
 
 // One hole: position at the current level, rapid to R, the cycle's motions, return to the initial
 // level (G98) or to R (G99).
-void Interpreter::drill_hole(const Hole& h) {
+void Executor::drill_hole(const Hole& h) {
   const int g = cycle_;
   AxisVector at = h.at;
   at[h.axis] = pos_[h.axis];
@@ -228,7 +228,7 @@ void Interpreter::drill_hole(const Hole& h) {
   }
 }
 
-int Interpreter::cycle_repeat_count() {
+int Executor::cycle_repeat_count() {
   const char letter = profile_.drilling.repeat_address;
   if (!has(letter)) return 1;
   const int repeat = integer(word(letter), "the repeat count of a canned cycle");
@@ -242,7 +242,7 @@ int Interpreter::cycle_repeat_count() {
   return repeat;
 }
 
-void Interpreter::peck_to_bottom(const Hole& h, double q, double d, bool out_to_r) {
+void Executor::peck_to_bottom(const Hole& h, double q, double d, bool out_to_r) {
   const double dir = h.into();
   double depth = h.r;  // reached so far
   for (;;) {

@@ -1,5 +1,5 @@
 // Tool paths of the lathe multiple repetitive cycles from a finishing shape (see stock_removal.hpp).
-#include "machine/stock_removal.hpp"
+#include "machine/cycles/stock_removal.hpp"
 
 #include <algorithm>
 #include <cmath>

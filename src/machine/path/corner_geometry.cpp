@@ -1,5 +1,5 @@
 // Chamfer and corner R points between lines and arcs of one plane.
-#include "machine/corner_geometry.hpp"
+#include "machine/path/corner_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>

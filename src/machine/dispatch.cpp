@@ -1,0 +1,322 @@
+// An NC block in FANUC's order: its words read, its G codes, its motion, its M codes.
+#include "machine/executor.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "machine/word_values.hpp"
+
+namespace ncurve::machine {
+
+using nc::Block;
+using nc::Value;
+
+// ---- NC blocks ----
+
+// Increments per program unit (1000 for IS-B mm) is an exact integer: dividing by it gives the
+// nearest double to the decimal value (4552 / 1000 = 4.552), where multiplying by 0.001 would not.
+double Executor::as_written(double value, bool literal, bool decimal_point) const {
+  if (!literal || decimal_point || profile_.decimal_calculator) return value;
+  return value / (inch_ ? per_unit_inch_ : per_unit_mm_);  // No.3401#0 = 0: X10 is ten increments
+}
+
+double Executor::dimension_raw(const Cmd& c) const {
+  const double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
+  return round_to_increment(as_written(c.value, c.literal, c.decimal_point), per_unit);
+}
+
+double Executor::dimension(const Cmd& c) const { return inch_ ? dimension_raw(c) * 25.4 : dimension_raw(c); }
+
+int Executor::integer(const Cmd& c, const char* what) const {
+  if (c.literal && c.decimal_point)
+    alarm("PS0007", fmt::format("{} does not take a decimal point ({}{})", what, c.letter, c.value), c.column);
+  if (!(std::fabs(c.value) < 1e9)) alarm("PS0003", fmt::format("{} value out of range", what), c.column);
+  return round_int(c.value);
+}
+
+std::vector<Executor::Arg> Executor::arguments(bool skip_p_l, int skip_g, int skip_m) const {
+  std::vector<Arg> args;
+  for (const Cmd& c : cmds_) {
+    if (c.letter == 'G') {
+      if (round_int(c.value * 10) == skip_g) continue;
+      alarm("PS0129", "G cannot be a macro argument", c.column);
+    }
+    if (skip_p_l && (c.letter == 'P' || c.letter == 'L')) continue;
+    if (c.letter == 'M' && round_int(c.value) == skip_m) continue;
+    if (c.letter == 'N' || c.letter == 'O') continue;
+    args.push_back(Arg{c.letter, c.value, c.decimal_point, c.literal});
+  }
+  return args;
+}
+
+void Executor::exec_nc(const Block& b) {
+  cmds_.clear();
+  have_.fill(false);
+  g_codes_.clear();
+  m_codes_.clear();
+  word_check_ = false;
+  for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
+    const nc::Word& w = prog_->words[i];
+    Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value};
+    if (!w.literal) {
+      Value v = eval(w.expr);
+      if (v.vacant) continue;  // a word whose value is vacant is not there at all
+      c.value = v.v;
+      check_word_digits(w.letter, c.value, scaled_address(w.letter), w.column);
+    }
+    int k = c.letter - 'A';
+    if (k >= 26) [[unlikely]] {  // ,C ,R ,A: the parser writes their letters in lower case
+      comma_cmds_.push_back(c);
+      corner_on_ = true;
+      continue;
+    }
+    if (word_needs_check(c.letter, c.value)) word_check_ = true;
+    if (c.letter == 'G') {
+      if (c.literal && c.decimal_point && c.value * 10 != std::floor(c.value * 10))
+        alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
+      g_codes_.push_back(round_int(c.value * 10));
+    } else if (c.letter == 'M') {
+      m_codes_.push_back(round_int(c.value));  // checked when acted on: G65 M1.5 is an argument
+    }
+    have_[k] = true;
+    slot_[k] = static_cast<std::uint8_t>(cmds_.size());
+    cmds_.push_back(c);
+  }
+  if (cmds_.empty()) return;
+
+  const Frame& here = frames_.back();
+  // A subprogram called by an M code (No.6071..6079) or the T code (No.6001#5): made after the block
+  // as M98 is; 0 for none.
+  int sub_call = 0, sub_call_m = -1;
+  std::uint16_t sub_call_column = 0;
+  // Macro calls take the whole block.
+  for (int g : g_codes_) {
+    if (g == 650 || g == 660) {
+      if (!has('P')) alarm("PS0076", fmt::format("G{} needs P (the program number)", g / 10), b.column);
+      int number = integer(word('P'), "P");
+      int repeat = has('L') ? integer(word('L'), "L") : 1;
+      if (repeat < 1) return;  // L0: no call
+      std::vector<Arg> args = arguments(true, g, -1);
+      if (g == 650) {
+        call_macro(number, args, repeat, false, false, b.column);
+      } else {
+        modal_call_ = true;
+        modal_calls_.push_back({number, repeat, std::move(args)});
+      }
+      return;
+    }
+    if (g == 670) {  // cancels the latest G66; the one before it, if any, is in force again
+      if (!modal_calls_.empty()) modal_calls_.pop_back();
+      modal_call_ = !modal_calls_.empty();
+      if (cmds_.size() == 1) return;
+    }
+  }
+  if (!here.custom) {
+    for (int g : g_codes_)
+      for (int i = 0; i < 10; ++i)
+        if (profile_.g_code_macros[i] != 0 && g == profile_.g_code_macros[i] * 10) {
+          std::vector<Arg> args = arguments(false, g, -1);
+          call_macro(9010 + i, args, 1, true, false, b.column);
+          return;
+        }
+    for (int m : m_codes_) {
+      for (int i = 0; i < 10; ++i)
+        if (profile_.m_code_macros[i] != 0 && m == profile_.m_code_macros[i]) {
+          std::vector<Arg> args = arguments(false, -1, m);
+          call_macro(9020 + i, args, 1, true, false, b.column);
+          return;
+        }
+      // No.6071..6079: a subprogram call as M98 makes it, so after the block's move and its other
+      // M codes; the calling M code is not given out (below)
+      for (int i = 0; i < 9; ++i)
+        if (sub_call == 0 && profile_.m_code_subprograms[i] != 0 && m == profile_.m_code_subprograms[i]) {
+          sub_call = 9001 + i;
+          sub_call_m = m;
+          sub_call_column = b.column;
+        }
+    }
+  }
+
+  if (word_check_ || g_codes_.size() > 1) check_block_words();
+  std::vector<int> one_shot;
+  handle_g_codes(one_shot);
+  if (rigid_pending_ || std::ranges::find(m_codes_, 29) != m_codes_.end()) rigid_tapping_words();
+
+  if (has('F')) {
+    double f = word('F').value;
+    if (f < 0) alarm("PS0006", fmt::format("F{}: a feed rate takes no minus sign", f), word('F').column);
+    feed_ = inch_ ? f * 25.4 : f;
+  }
+  if (has('S')) {  // on a lathe, S with G50 (G92 on systems B/C) is the spindle speed limit
+    bool limit = profile_.lathe() && std::ranges::any_of(one_shot, [](int g) { return g == 500 || g == 920; });
+    (limit ? max_spindle_ : speed_) = word('S').value;
+  }
+  if (has('H')) {
+    h_ = integer(word('H'), "H");
+    // an H alone in G43/G44 mode changes the tool length offset to the new number's value
+    const bool length_code = std::ranges::any_of(g_codes_, [](int g) { return g == 430 || g == 440 || g == 490; });
+    const bool position_offset = std::ranges::any_of(g_codes_, [](int g) { return g >= 450 && g <= 480; });
+    if (!profile_.lathe() && (length_comp_ == 43 || length_comp_ == 44) && !length_code && !position_offset)
+      tool_shift_[2] = (length_comp_ == 43 ? 1 : -1) * length_offset(h_);
+  }
+  if (has('D') && !(profile_.lathe() && profile_.series10_format)) d_ = integer(word('D'), "D");  // else a cycle's depth
+  if (has('T')) {
+    int t = integer(word('T'), "T");
+    if (profile_.t_code_calls_o9000 && !here.custom) {  // O9000 does the tool's work
+      write_var(149, Value::of(t), word('T').column);
+      if (sub_call == 0) {
+        sub_call = 9000;
+        sub_call_column = word('T').column;
+      }
+    } else {
+      tool_ = t;
+      if (profile_.lathe()) {  // a turret indexes on T; a mill changes on M06
+        select_lathe_offset(t % 100, word('T').column);
+        emit_event(MoveKind::tool_change, t);
+      }
+    }
+  }
+
+  if (position_offset_ != 0) [[unlikely]] check_position_offset(one_shot);
+  bool moved = false;
+  if (!one_shot.empty()) {
+    if (std::ranges::any_of(one_shot, [](int g) { return g != 40; })) end_lathe_cycle_data();
+    for (int g : one_shot) {
+      switch (g) {
+        case 760: multiple_threading_cycle(); moved = true; break;  // G76 on a lathe (threading.cpp)
+        case 40: dwell(); break;
+        case 280: case 300: reference_return(g); moved = true; break;
+        case 530: machine_coordinate_move(); moved = true; break;
+        case 100: data_setting(); break;
+        case 520: case 920: case 500: set_coordinate_system(g); break;
+        case 700: case 710: case 720: case 730: case 740: case 750: moved = repetitive_cycle(g) || moved; break;
+        case 270: reference_check(); moved = true; break;  // reference_moves.cpp
+        case 290: return_from_reference(); moved = true; break;
+        case 301: reference_return(g); moved = true; break;
+        case 921: workpiece_preset(); break;
+        case 600: moved = single_direction_block() || moved; break;  // single_direction.cpp
+        case 310: case 311: case 312: case 313: case 314: moved = skip_move(g) || moved; break;  // skip.cpp
+        case 220: stroke_area_command(); break;  // stroke_check.cpp
+        default: break;
+      }
+    }
+  } else if (cycle_ != 0) {
+    moved = profile_.lathe() ? lathe_drilling_block() : canned_cycle_block();
+  } else {
+    AxisVector target = pos_;
+    bool axes = axis_target(target);
+    bool full_circle_ijk = (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K'));
+    if (position_offset_ != 0) [[unlikely]] apply_position_offset(target);
+    if (axes || full_circle_ijk) {
+      if (rolls_) roll_over(target);
+      if (corner_on_ || (profile_.lathe() && (has('C') || has('I') || has('K') || has('R')))) [[unlikely]]
+        arm_corner(target);
+      motion(target);
+      moved = true;
+    }
+  }
+
+  // M codes act after the motion of their block.
+  for (const Cmd& c : cmds_) {
+    if (c.letter != 'M') continue;
+    int m = integer(c, "M");
+    last_m_ = m;
+    if (m == sub_call_m) continue;  // calls its subprogram below, as M98 does; not given out
+    if (m == cycle_clamp_m_) [[unlikely]] {  // given out by the lathe's drilling cycle at each hole
+      cycle_clamp_m_ = -1;
+      continue;
+    }
+    switch (m) {
+      case 98: {
+        if (!has('P') && has('Q')) {  // M98 Q: the block N(q) of the program being run, as a subprogram
+          const int seq = integer(word('Q'), "Q (sequence number)");
+          auto it = prog_->sequence_index.find(seq);
+          if (it == prog_->sequence_index.end())
+            alarm("PS0078", fmt::format("M98 Q{}: no block N{} in this program", seq, seq), word('Q').column);
+          const int repeat = has('L') ? integer(word('L'), "L") : 1;
+          if (repeat < 1) break;
+          Frame f;
+          f.kind = Frame::subprogram;
+          f.repeat = repeat - 1;
+          call_program(prog_->number, f, word('Q').column, static_cast<std::int32_t>(it->second));
+          return;
+        }
+        if (!has('P')) alarm("PS0076", "M98 needs P (the subprogram number) or Q (a sequence number of this program)", b.column);
+        const Cmd& p = word('P');
+        int pv = integer(p, "P");
+        int repeat = has('L') ? integer(word('L'), "L") : 1;
+        int number = pv;
+        if (!has('L') && p.literal && pv > 9999) {  // M98 P LLLL NNNN: repeat count in the upper digits
+          number = pv % 10000;
+          repeat = pv / 10000;
+        }
+        if (repeat < 1) break;
+        Frame f;
+        f.kind = Frame::subprogram;
+        f.repeat = repeat - 1;
+        call_program(number, f, p.column);
+        return;
+      }
+      case 99: {
+        std::optional<int> seq;
+        if (has('P')) seq = integer(word('P'), "P");
+        if (frames_.size() == 1) {  // M99 in the main program: run it again from the top (or from N)
+          Frame& f = frames_.back();
+          if (seq) {
+            auto it = prog_->sequence_index.find(*seq);
+            if (it == prog_->sequence_index.end()) alarm("PS0078", fmt::format("M99 P{}: no block N{}", *seq, *seq));
+            f.pc = it->second;
+          } else {
+            f.pc = 0;
+          }
+          last_back_jump_ = &b;
+          last_back_jump_prog_ = prog_;
+          return;
+        }
+        return_from_program(seq, b.column);
+        return;
+      }
+      case 2: case 30: end_program(m); return;
+      default:
+        if (!cycle_m_done_) m_code_event(m);  // else made at the hole's positioning (canned_cycles.cpp)
+        break;
+    }
+  }
+
+  if (sub_call != 0) {
+    Frame f;
+    f.kind = Frame::subprogram;
+    f.custom = true;
+    call_program(sub_call, f, sub_call_column);
+    return;
+  }
+
+  // After a move, the latest G66 in force; in a macro a G66 called, the G66 before that one (the
+  // manual's nesting of modal calls: the inner macro's moves call the outer macro).
+  if (moved && !modal_calls_.empty()) {
+    const std::size_t n = std::min(modal_calls_.size(), here.modal_limit);
+    if (n > 0) {
+      const ModalCall call = modal_calls_[n - 1];  // a copy: the macro may give G66 or G67
+      modal_limit_next_ = n - 1;
+      call_macro(call.program, call.args, call.repeat, false, true, b.column);
+    }
+  }
+}
+
+// The event of an M code that neither calls nor ends a program, as its block makes it.
+void Executor::m_code_event(int m) {
+  switch (m) {
+    case 0: case 1:
+      emit_event(MoveKind::program_stop, m);
+      if (m == 0) warn("NC2004", "M00 program stop: the control waits for cycle start here");
+      break;
+    case 3: case 4: case 5: case 19: emit_event(MoveKind::spindle, m); break;
+    case 6: emit_event(MoveKind::tool_change, tool_); break;
+    case 7: case 8: case 9: emit_event(MoveKind::coolant, m); break;
+    default: emit_event(MoveKind::m_code, m); break;
+  }
+}
+
+}  // namespace ncurve::machine
