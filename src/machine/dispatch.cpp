@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "machine/g_codes.hpp"
 #include "machine/word_values.hpp"
 
 namespace ncurve::machine {
@@ -183,25 +184,8 @@ void Executor::exec_nc(const Block& b) {
   bool moved = false;
   if (!one_shot.empty()) {
     if (std::ranges::any_of(one_shot, [](int g) { return g != 40; })) end_lathe_cycle_data();
-    for (int g : one_shot) {
-      switch (g) {
-        case 760: multiple_threading_cycle(); moved = true; break;  // G76 on a lathe (threading.cpp)
-        case 40: dwell(); break;
-        case 280: case 300: reference_return(g); moved = true; break;
-        case 530: machine_coordinate_move(); moved = true; break;
-        case 100: data_setting(); break;
-        case 520: case 920: case 500: set_coordinate_system(g); break;
-        case 700: case 710: case 720: case 730: case 740: case 750: moved = repetitive_cycle(g) || moved; break;
-        case 270: reference_check(); moved = true; break;  // reference_moves.cpp
-        case 290: return_from_reference(); moved = true; break;
-        case 301: reference_return(g); moved = true; break;
-        case 921: workpiece_preset(); break;
-        case 600: moved = single_direction_block() || moved; break;  // single_direction.cpp
-        case 310: case 311: case 312: case 313: case 314: moved = skip_move(g) || moved; break;  // skip.cpp
-        case 220: stroke_area_command(); break;  // stroke_check.cpp
-        default: break;
-      }
-    }
+    for (int g : one_shot)
+      if (const GAction act = g_action(g, g_machine(profile_))) moved = act(*this, g) || moved;
   } else if (cycle_ != 0) {
     moved = profile_.lathe() ? lathe_drilling_block() : canned_cycle_block();
   } else {

@@ -35,6 +35,38 @@ public:
   // Tell this observer each block, call, return and variable write of the next runs (null: none).
   void observe(ExecutionObserver* observer) { observer_ = observer; }
 
+  // ---- what the G-code table's actions (g_actions.cpp and a code's own file) use ----
+  struct Cmd {  // a word of the block in hand, its value evaluated
+    char letter;
+    bool decimal_point;
+    bool literal;
+    std::uint16_t column;
+    double value;
+  };
+  bool has(char letter) const { return have_[letter - 'A']; }
+  const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
+  double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
+  int integer(const Cmd& c, const char* what) const;
+  bool incremental() const { return incremental_; }
+  const MachineProfile& profile() const { return profile_; }
+  [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
+                          std::uint32_t length = 1) const;
+  void warn(std::string code, std::string message, std::uint16_t column = 0);
+  void dwell();
+  void reference_return(int g);
+  void machine_coordinate_move();
+  void set_coordinate_system(int g);
+  void data_setting();
+  bool repetitive_cycle(int g);      // one G70..G75 block; whether the tool moved
+  void multiple_threading_cycle();                 // G76 (group 00)
+  void reference_check();                 // G27
+  void return_from_reference();           // G29
+  void workpiece_preset();                // G92.1 (G50.3 on system A)
+  bool single_direction_block();          // a one-shot G60 block
+  bool skip_move(int g);                  // G31, G31 P1..P4, G31.1..G31.4
+  void stroke_area_command();             // G22 with its area
+  // ---- end of what the actions use ----
+
 private:
   struct Frame;
   struct Arg {
@@ -42,13 +74,6 @@ private:
     double value;
     bool decimal_point;
     bool literal;
-  };
-  struct Cmd {
-    char letter;
-    bool decimal_point;
-    bool literal;
-    std::uint16_t column;
-    double value;
   };
 
   // execution
@@ -76,12 +101,8 @@ private:
   bool parameter_input_ = false;
 
   // words and units
-  bool has(char letter) const { return have_[letter - 'A']; }
-  const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
-  double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
   double as_written(double value, bool literal, bool decimal_point) const;  // decimal point rule, program units
   double dimension_raw(const Cmd& c) const;  // program units, decimal point rule and rounding, no inch
-  int integer(const Cmd& c, const char* what) const;
   std::vector<Arg> arguments(bool skip_p_l, int skip_g, int skip_m) const;
   // checks on the block's words before they act (block_words.cpp)
   bool word_needs_check(char letter, double value) const;
@@ -105,11 +126,6 @@ private:
   double nose_radius() const;
   void emit_event(MoveKind kind, int code);
   void m_code_event(int m);  // spindle, coolant, M06, M00/M01 and other M codes of the block
-  void dwell();
-  void reference_return(int g);
-  void machine_coordinate_move();
-  void set_coordinate_system(int g);
-  void data_setting();
   void set_origin();
   void warn_mixed_decimal_points(const nc::Program& p);
   void note_extent(const AxisVector& p);
@@ -217,7 +233,6 @@ private:
     int ns = 0, nf = 0;
   };
   int repetitive_code(int g) const;  // the cycle a lathe G code names (x10, as in system A), else 0
-  bool repetitive_cycle(int g);      // one G70..G75 block; whether the tool moved
   bool repetitive_cycle_path(int g); // its body; a path too long for memory is NC9000 above
   ShapeRange shape_range(int g);
   std::vector<Move> walk_shape(const ShapeRange& r, int g, bool keep);
@@ -240,7 +255,6 @@ private:
   void single_cycle(const AxisVector& target);      // G90/G92/G94
   void cycle_compensation_start(int side);         // the cycle's own start-up under G41/G42
   void thread_block(const AxisVector& target);     // G32
-  void multiple_threading_cycle();                 // G76 (group 00)
   void g76_passes(const AxisVector& end, double taper, double height, double first_depth, double angle);
   void thread_pass(const AxisVector& end, double out_x, double lead, double angle);  // cut, chamfer at the end
   void thread_cut(const AxisVector& to, double lead, double angle);
@@ -253,14 +267,8 @@ private:
   unsigned block_axes() const;  // a bit per axis the block names (U, V, W too on system A)
   bool names_plane_axis() const;  // of the offset plane
   void remember_intermediate(const AxisVector& mid);  // G28/G30/G30.1: the point G29 goes through
-  void reference_check();                 // G27
-  void return_from_reference();           // G29
-  void workpiece_preset();                // G92.1 (G50.3 on system A)
-  bool single_direction_block();          // a one-shot G60 block
   void single_direction(const AxisVector& target);
-  bool skip_move(int g);                  // G31, G31 P1..P4, G31.1..G31.4
   void init_stroke_check();
-  void stroke_area_command();             // G22 with its area
   void stroke_area_switch(bool on);       // G22 / G23
   void check_stroke(const Move& m) const; // deliver(): a move past a stored stroke limit is an alarm
   AxisVector intermediate_{};
@@ -281,9 +289,6 @@ private:
   void write_system(int n, nc::Value v, std::uint16_t column);
   double program_units(int axis, double mm_value) const;  // for position variables
 
-  [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
-                          std::uint32_t length = 1) const;
-  void warn(std::string code, std::string message, std::uint16_t column = 0);
   void warn_once(std::string code, std::string message, std::uint16_t column = 0);  // once per block and code
   nc::Span span(std::uint16_t column = 0, std::uint32_t length = 1) const;
 

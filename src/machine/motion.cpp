@@ -115,10 +115,6 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
         motion_ = g / 10;
         group01 = true;  // a group 01 code ends a drilling canned cycle
         break;
-      case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
-      case 270: case 290: case 301: case 310: case 311: case 312: case 313: case 314: case 220:
-        one_shot.push_back(g);  // reference_moves.cpp, skip.cpp, stroke_check.cpp
-        break;
       case 230: stroke_area_switch(false); break;  // G22 comes with its area (one_shot)
       case 250: case 260: speed_fluctuation_check_ = g == 260; break;  // nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
@@ -196,8 +192,8 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
       case 960: css_ = true; break;
       case 970: css_ = false; break;
       case 500:
-        if (lathe && profile_.gcode_system == 'A') one_shot.push_back(g);  // coordinate system setting / max spindle
-        else if (!lathe) transform = true;                                 // scaling cancel
+        if (system_a) one_shot.push_back(g);  // coordinate system setting / max spindle speed
+        else if (!lathe) transform = true;    // scaling cancel
         break;
       default: {
         if (lathe && select_lathe_motion(g, one_shot)) {  // lathe_cycles.cpp
@@ -212,7 +208,6 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
           if (g == 910) { incremental_ = true; break; }
           if (g == 940) { feed_per_rev_ = false; break; }
           if (g == 950) { feed_per_rev_ = true; break; }
-          if (g == 920) { one_shot.push_back(g); break; }
           if (g == 980 || g == 990) {  // canned cycle return level: initial level, point R
             cycle_return_initial_ = g == 980;
             break;
@@ -232,12 +227,15 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
           else motion_ = 60, group01 = true;
           break;
         }
-        if (g == (system_a ? 503 : 921)) { one_shot.push_back(921); break; }  // workpiece coordinate system preset
         if (lathe && g >= 700 && g <= 760)
           alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
         const bool lathe_drilling = g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890;
         if (lathe ? lathe_drilling : (g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890)))) {
           select_canned_cycle(g, column);
+          break;
+        }
+        if (g_action(g, g_machine(profile_))) {  // a one-shot code with an action of its own in the table
+          one_shot.push_back(g);
           break;
         }
         if (const char* what = unsupported_name(g, profile_))
