@@ -471,12 +471,16 @@ def case(fn):
     CASES.append(fn)
     return fn
 
+def comment(text):
+    """A comment line: a comment ends at its first ')', so an aside "(X)" in the text is written "- X"."""
+    return '(%s)' % text.replace('(', '- ').replace(')', '')
+
 def mill(name, title, rule, body, param=None):
     lines = []
     if param:
         lines.append('(PARAM %s)' % param)
-    lines.append('(%s: %s)' % (name.upper(), title))
-    lines.append('(RULE: %s)' % rule)
+    lines.append(comment('%s: %s' % (name.upper(), title)))
+    lines.append(comment('RULE: %s' % rule))
     lines.append('G10 L11 P1 R5.')
     lines += body
     return lines
@@ -881,7 +885,7 @@ def cc_alarm_ps0037():
 # tip = centre + tip vector (R-TIP): tip 3 = (-r in X, -r in Z), tip 2 =
 # (+r X, -r Z), tip 8 = (-r X, 0).
 def lathe(name, title, rule, body):
-    return ['(%s: %s)' % (name.upper(), title), '(RULE: %s)' % rule, 'T0101'] + body
+    return [comment('%s: %s' % (name.upper(), title)), comment('RULE: %s' % rule), 'T0101'] + body
 
 OD_CHAMFER = ['G99 G40 G00 X16. Z5.', 'G42 G01 Z0. F0.1', 'X20. Z-2.', 'Z-15.', 'X30.', 'G40 G00 X40. Z5.', 'M30']
 OD_TAPER = ['G99 G40 G00 X16. Z5.', 'G42 G01 Z0. F0.1', 'X24. Z-12.', 'Z-20.', 'X32.', 'G40 G00 X40. Z5.', 'M30']
