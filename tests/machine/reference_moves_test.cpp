@@ -1,5 +1,5 @@
 // G27/G29/G30.1, G60, G92.1, G31, the stored stroke checks and the G codes ncurve does not simulate;
-// the hand-worked paths are in tests/programs (ref_*, g60_*, skip_*, stroke_*, wcs_preset_*).
+// the hand-worked paths are in tests/programs/reference (ref_*, g60_*, skip_*, stroke_*, wcs_preset_*).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
