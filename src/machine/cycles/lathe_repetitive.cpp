@@ -402,7 +402,7 @@ void Executor::emit_cycle_path(const std::vector<mrc::Step>& path, bool transpos
   for (mrc::Step s : path) {
     if (transposed) s.end = mrc::transposed(s.end), s.centre = mrc::transposed(s.centre), s.sweep = -s.sweep;
     AxisVector target = pos_;
-    target[0] = s.end.x, target[2] = s.end.z;
+    target[0] = s.end.x, target[2] = s.end.y;
     if (!s.arc) {
       linear(s.rapid ? MoveKind::rapid : MoveKind::line, target);
       continue;
@@ -414,9 +414,9 @@ void Executor::emit_cycle_path(const std::vector<mrc::Step>& path, bool transpos
     m.plane = 18;
     m.start = pos_;
     m.end = target;
-    m.center = {s.centre.x, pos_[1], s.centre.z};
+    m.center = {s.centre.x, pos_[1], s.centre.y};
     m.sweep = s.sweep;
-    const double rs = std::hypot(pos_[0] - s.centre.x, pos_[2] - s.centre.z);
+    const double rs = std::hypot(pos_[0] - s.centre.x, pos_[2] - s.centre.y);
     m.length = std::fabs(s.sweep) * rs;
     m.feed = feed_;
     m.seconds = arc_feed_seconds(m, m.length);
