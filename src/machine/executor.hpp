@@ -284,7 +284,8 @@ private:
   nc::Value read_var(int n, std::uint16_t column);
  private:
   void write_var(int n, nc::Value v, std::uint16_t column);
-  nc::Value read_system(int n, std::uint16_t column);
+  nc::Value read_system(int n, std::uint16_t column);  // system_variables.cpp
+  int axis_of_order(int k) const;  // the k-th axis of the profile (0-based) as an axis index, or -1
   int modal_code(int group) const;  // #4001..#4022 (variables.cpp)
   void write_system(int n, nc::Value v, std::uint16_t column);
   double program_units(int axis, double mm_value) const;  // for position variables
