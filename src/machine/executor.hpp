@@ -312,7 +312,7 @@ private:
   void add_call_stack(nc::Diagnostic& d) const;
   // the observer's side (observe.cpp): only called when there is one
   ExecutionObserver* observer_ = nullptr;
-  ModalState observed_modal_{};  // the modal state the observer was last given
+  ModalReadout observed_modal_{};  // the modal state the observer was last given
   bool modal_stale_ = true;      // an NC block ran since it was read
   bool shape_read_ = false;      // G71..G73 reading their shape: its blocks are the cycle block's
   void observe_block(const nc::Block& b);
@@ -321,7 +321,7 @@ private:
   void observed_write(int n, nc::Value v, std::uint16_t column);
   nc::Value observed_read(int n, std::uint16_t column);  // a system variable the program reads
   std::uint64_t moves_delivered() const;
-  ModalState modal_state();
+  ModalReadout modal_readout();
   std::vector<const nc::Program*> reached_;  // programs of other files entered so far (their warnings given)
 
   MachineProfile profile_;  // G10 L52 may change its parameters

@@ -256,7 +256,7 @@ RunResult Executor::run(MoveSink& sink) {
     } catch (const nc::Alarm&) {
     }
   }
-  if (observer_) observer_->finished(moves_delivered(), modal_state());
+  if (observer_) observer_->finished(moves_delivered(), modal_readout());
   sink_ = nullptr;
   return result_;
 }
