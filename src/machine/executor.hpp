@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "machine/interpreter.hpp"
+#include "machine/modal.hpp"
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
 #include "machine/frame/transforms.hpp"
@@ -47,7 +48,7 @@ public:
   const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
   double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
   int integer(const Cmd& c, const char* what) const;
-  bool incremental() const { return incremental_; }
+  bool incremental() const { return modal_.incremental; }
   const MachineProfile& profile() const { return profile_; }
   [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
                           std::uint32_t length = 1) const;
@@ -160,7 +161,6 @@ private:
 
   // AI contour control / look-ahead modes (high_speed.cpp)
   void high_speed_mode(int g, std::uint16_t column);
-  bool look_ahead_ = true;  // G05.1 Q1, G08 P1, G05 P10000 (G61.1: exact_stop_code_ 611)
   // chamfering and corner R (chamfer.cpp): the block's move waits for the next one
   void arm_corner(const AxisVector& target);  // the block's ,C ,R (lathe: C, I, K, R), before its move
   bool corner_emit(Move& m);                  // in emit(): holds the move, or cuts the held one's corner
@@ -188,7 +188,6 @@ private:
   V2 transformed_plane_vector(V2 v) const;  // G40 I J
   AxisVector program_position() const;  // #5001..: the end point before the transforms
   Transforms xf_;
-  bool polar_ = false;         // G16
   bool xf_on_ = false;         // G16 or a transform is active
   bool xf_hook_ = false;       // xf_on_, or the first move after a cancel is still to be checked
   bool xf_cancelled_ = false;  // G69, G50 or G50.1 given: the next move should be absolute
@@ -275,7 +274,6 @@ private:
   unsigned intermediate_axes_ = 0;        // axes G28/G30/G30.1 have given an intermediate point
   std::optional<AxisVector> skip_position_;  // #5061..: where the last G31 ended
   bool stroke_check_ = false;             // some stored stroke limit is in force
-  bool stroke2_on_ = true;                // G22 (check 2 on) or G23
   AxisVector stroke1_plus_{}, stroke1_minus_{}, stroke2_plus_{}, stroke2_minus_{};
   // ---- end of reference position moves ----
 
@@ -364,25 +362,13 @@ private:
   std::uint64_t moves_in_block_ = 0;  // that block's moves past its first
   std::chrono::steady_clock::time_point started_;
 
-  // modal state
-  int motion_ = 0;           // 0..3
-  int plane_ = 17;
-  bool incremental_ = false;
-  bool inch_ = false;
-  bool feed_per_rev_ = false;
-  bool css_ = false;
-  bool speed_fluctuation_check_ = false;  // G26 (on) / G25 (off): read by #4008 on a lathe
-  bool exact_stop_ = false;
+  ModalState modal_;  // modal.hpp
   bool exact_stop_once_ = false;  // G09 in the current block
   std::uint32_t statements_since_ = 0, nc_blocks_since_ = 0;  // since the previous event
-  int exact_stop_code_ = 64;
-  int length_comp_ = 49;
-  int work_index_ = 1;       // 1..6 = G54..G59, 7+ = G54.1 P(n-6)
   double feed_ = 0, speed_ = 0;
   double max_spindle_ = 0;  // G50 S on a lathe
   int tool_ = 0, h_ = 0, d_ = 0, last_m_ = -1;
   std::int32_t last_sequence_ = -1;
-  bool modal_call_ = false;  // a G66 is in force (#4012 reads 66)
   // G66 modal calls in force, the latest last: a second G66 nests inside the first, and G67 cancels
   // the latest (the manual's nesting of modal calls).
   struct ModalCall {
@@ -393,8 +379,6 @@ private:
   std::vector<ModalCall> modal_calls_;
   std::size_t modal_limit_next_ = SIZE_MAX;  // the modal_limit of the frame call_program makes next
   // drilling canned cycle (group 09): 0 = G80, else 73, 74, 76, 81..89; data kept while it is active
-  int cycle_ = 0;
-  bool cycle_return_initial_ = true;  // G98 (power-on), G99: return to the R point level
   AxisVector cycle_initial_{};        // where the cycle mode started: the initial level along the drilling axis
   int cycle_axis_ = -1;               // the drilling axis of the cycle mode, -1 before its first hole
   std::optional<double> cycle_r_, cycle_z_;  // mm as written (G91: R from the initial level, Z from R)
@@ -422,7 +406,6 @@ private:
 
   // cutter / tool-nose radius compensation
   std::optional<RadiusCompensation> comp_;
-  int comp_side_ = 0;                  // +1 G41, -1 G42, 0 G40
   bool comp_suspended_ = false;        // G28/G30/G53 in offset mode: moves without the vector
   bool comp_drop_ = false;             // and the vector goes even where the move stays put in the plane
   bool block_plane_motion_ = false;    // the block moved in the offset plane

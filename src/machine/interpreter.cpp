@@ -221,11 +221,7 @@ RunResult Executor::run(MoveSink& sink) {
   f.prog = main;
   frames_.push_back(f);
   if (observer_) observe_call(f);
-  motion_ = profile_.power_on_g01 ? 1 : 0;
-  plane_ = profile_.power_on_plane;
-  incremental_ = profile_.power_on_g91;
-  feed_per_rev_ = profile_.power_on_feed_per_rev;
-  look_ahead_ = profile_.motion.look_ahead_at_power_on;
+  modal_.power_on(profile_);
   set_origin();
   for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
   init_stroke_check();
@@ -348,13 +344,13 @@ void Executor::step() {
         parameter_input_block(b);
         break;
       }
-      const bool g40 = comp_side_ != 0;
-      const bool from_cancel = comp_side_ == 0 && !comp_->offset_mode();
+      const bool g40 = modal_.comp_side != 0;
+      const bool from_cancel = modal_.comp_side == 0 && !comp_->offset_mode();
       macro_call_block_ = false;
       exec_nc(b);
       if (corner_on_) [[unlikely]] corner_block_end();
       if (compensating() && !macro_call_block_ && !shape_moves_)
-        end_of_block_compensation(g40 && comp_side_ == 0, from_cancel && comp_side_ != 0);
+        end_of_block_compensation(g40 && modal_.comp_side == 0, from_cancel && modal_.comp_side != 0);
       break;
     }
     case Statement::go_to: jump(b, eval(b.value).number()); break;

@@ -78,7 +78,7 @@ const char* to_string(MoveKind k) {
 
 void Executor::set_origin() {
   AxisVector old = origin_;
-  const AxisVector& work = work_index_ <= 6 ? work_offsets_[work_index_] : extended_offsets_[work_index_ - 6];
+  const AxisVector& work = modal_.work_index <= 6 ? work_offsets_[modal_.work_index] : extended_offsets_[modal_.work_index - 6];
   AxisVector delta{};
   for (int a = 0; a < kAxes; ++a) {
     origin_[a] = work_offsets_[0][a] + work[a] + local_[a] + shift_[a];
@@ -100,7 +100,7 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
     Executor* self;
     bool& group01;
     ~CancelCycle() {
-      if (group01 && self->cycle_ != 0) self->cancel_canned_cycle();
+      if (group01 && self->modal_.cycle != 0) self->cancel_canned_cycle();
     }
   } cancel_cycle{this, group01};
   for (std::size_t i = 0; i < g_codes_.size(); ++i) {
@@ -112,47 +112,47 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
     if (developed_) [[unlikely]] check_code_in_developed(g, column);  // polar_cylindrical.cpp
     switch (g) {
       case 0: case 10: case 20: case 30:
-        motion_ = g / 10;
+        modal_.motion = g / 10;
         group01 = true;  // a group 01 code ends a drilling canned cycle
         break;
       case 230: stroke_area_switch(false); break;  // G22 comes with its area (one_shot)
-      case 250: case 260: speed_fluctuation_check_ = g == 260; break;  // nothing on the path
+      case 250: case 260: modal_.speed_fluctuation_check = g == 260; break;  // nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 450: case 460: case 470: case 480:  // tool position offset (position_offset.cpp)
         if (lathe) alarm("PS0010", unknown_g_code(g, profile_, library_), column);
         position_offset_ = g / 10;
         break;
       case 170: case 180: case 190:
-        if (g / 10 != plane_ && (rigid_tapping_ || rigid_pending_))
+        if (g / 10 != modal_.plane && (rigid_tapping_ || rigid_pending_))
           alarm("PS0206", fmt::format("the plane cannot change (G{}) in rigid tapping mode (after M29)", g / 10), column);
-        if (g / 10 != plane_ && compensating())
+        if (g / 10 != modal_.plane && compensating())
           alarm("PS0037", fmt::format("the plane cannot change (G{}) while cutter compensation is active: cancel it "
                                       "with G40 first",
                                       g / 10),
                 column);
-        plane_ = g / 10;
+        modal_.plane = g / 10;
         break;
       case 400:
-        if (comp_side_ != 0 || comp_->offset_mode()) {
-          comp_side_ = 0;
-          const PlaneAxes pa = plane_axes(plane_);
+        if (modal_.comp_side != 0 || comp_->offset_mode()) {
+          modal_.comp_side = 0;
+          const PlaneAxes pa = plane_axes(modal_.plane);
           if (has(pa.ip) || has(pa.iq))
             cancel_direction_ = V2{has(pa.ip) ? dimension(word(pa.ip)) : 0.0, has(pa.iq) ? dimension(word(pa.iq)) : 0.0};
           if (cancel_direction_ && xf_on_) cancel_direction_ = transformed_plane_vector(*cancel_direction_);
         }
         break;
       case 410: case 420:
-        comp_side_ = g == 410 ? 1 : -1;
+        modal_.comp_side = g == 410 ? 1 : -1;
         break;
       case 200: case 210:
         // The 30i-MA manual (8.2): G20/G21 in a block of its own at the start, before the coordinate
         // system is set, and "must not be switched during a program". ncurve converts at the switch;
         // the control changes the unit of the offsets whose numbers it keeps, so it warns.
-        if (inch_ != (g == 200) && result_.stats.feed_length + result_.stats.rapid_length > 0)
+        if (modal_.inch != (g == 200) && result_.stats.feed_length + result_.stats.rapid_length > 0)
           warn_once("NC2018", fmt::format("G{} switches the unit after the program has moved: the manual says G20 and "
                                           "G21 must not be switched during a program (the offsets then change unit)",
                                           g / 10));
-        inch_ = g == 200;
+        modal_.inch = g == 200;
         break;
       case 800: cancel_canned_cycle(); break;
       case 670: break;
@@ -171,60 +171,60 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
         alarm("PS0010", unknown_g_code(g, profile_, library_), column);
       case 430: case 440:
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
-        length_comp_ = g / 10;
+        modal_.length_comp = g / 10;
         h_ = has('H') ? static_cast<int>(std::lround(word('H').value)) : h_;
         tool_shift_[2] = (g == 430 ? 1 : -1) * length_offset(h_);
         break;
-      case 490: length_comp_ = 49; tool_shift_[2] = 0; break;
+      case 490: modal_.length_comp = 49; tool_shift_[2] = 0; break;
       case 540: case 550: case 560: case 570: case 580: case 590:
-        work_index_ = g / 10 - 53;
+        modal_.work_index = g / 10 - 53;
         set_origin();
         break;
       case 541: {
         int p = has('P') ? static_cast<int>(std::lround(word('P').value)) : 1;
         if (p < 1 || p > 300) alarm("PS0030", "G54.1 P must be 1 to 300", column);
-        work_index_ = 6 + p;
+        modal_.work_index = 6 + p;
         set_origin();
         break;
       }
-      case 610: case 620: case 630: exact_stop_ = g == 610; exact_stop_code_ = g / 10; break;
-      case 640: exact_stop_ = false; exact_stop_code_ = 64; break;
-      case 960: css_ = true; break;
-      case 970: css_ = false; break;
+      case 610: case 620: case 630: modal_.exact_stop = g == 610; modal_.exact_stop_code = g / 10; break;
+      case 640: modal_.exact_stop = false; modal_.exact_stop_code = 64; break;
+      case 960: modal_.css = true; break;
+      case 970: modal_.css = false; break;
       case 500:
         if (system_a) one_shot.push_back(g);  // coordinate system setting / max spindle speed
         else if (!lathe) transform = true;    // scaling cancel
         break;
       default: {
         if (lathe && select_lathe_motion(g, one_shot)) {  // lathe_cycles.cpp
-          group01 = group01 || motion_ == g / 10;  // G32/G90/G92/G94 end a drilling cycle, G76 does not
+          group01 = group01 || modal_.motion == g / 10;  // G32/G90/G92/G94 end a drilling cycle, G76 does not
           break;
         }
         if (system_a) {
-          if (g == 980) { feed_per_rev_ = false; break; }
-          if (g == 990) { feed_per_rev_ = true; break; }
+          if (g == 980) { modal_.feed_per_rev = false; break; }
+          if (g == 990) { modal_.feed_per_rev = true; break; }
         } else {
-          if (g == 900) { incremental_ = false; break; }
-          if (g == 910) { incremental_ = true; break; }
-          if (g == 940) { feed_per_rev_ = false; break; }
-          if (g == 950) { feed_per_rev_ = true; break; }
+          if (g == 900) { modal_.incremental = false; break; }
+          if (g == 910) { modal_.incremental = true; break; }
+          if (g == 940) { modal_.feed_per_rev = false; break; }
+          if (g == 950) { modal_.feed_per_rev = true; break; }
           if (g == 980 || g == 990) {  // canned cycle return level: initial level, point R
-            cycle_return_initial_ = g == 980;
+            modal_.cycle_return_initial = g == 980;
             break;
           }
         }
         if (lathe) {  // G70..G75 (G72..G77 in system C): lathe_repetitive.cpp
           if (const int r = repetitive_code(g); r >= 700 && r <= 750) { one_shot.push_back(r); break; }
-          if (profile_.gcode_system == 'C' && (g == 700 || g == 710)) { inch_ = g == 700; break; }
+          if (profile_.gcode_system == 'C' && (g == 700 || g == 710)) { modal_.inch = g == 700; break; }
         }
         if (!lathe && g == 330) {  // G33 thread cutting of a machining center (threading.cpp)
-          motion_ = 33;
+          modal_.motion = 33;
           group01 = true;
           break;
         }
         if (!lathe && g == 600) {  // G60: one-shot (group 00), or modal in group 01 with No.5431#0 MDL = 1
           if (!profile_.g60_modal) one_shot.push_back(g);
-          else motion_ = 60, group01 = true;
+          else modal_.motion = 60, group01 = true;
           break;
         }
         if (lathe && g >= 700 && g <= 760)
@@ -257,7 +257,7 @@ bool Executor::axis_target(AxisVector& target, bool force_absolute) {
   if (rolls_) roll_word_.fill(false);
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
-    bool incremental = incremental_ && !force_absolute;
+    bool incremental = modal_.incremental && !force_absolute;
     if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W')) {
       a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : 2;
       incremental = true;
@@ -287,8 +287,8 @@ bool Executor::axis_target(AxisVector& target, bool force_absolute) {
 
 void Executor::motion(const AxisVector& target) {
   bool swap = false;  // a mirror image reverses arcs: G02 and G03 swap
-  if (xf_hook_ && (motion_ == 2 || motion_ == 3)) swap = transform_arc_words();
-  switch (motion_) {
+  if (xf_hook_ && (modal_.motion == 2 || modal_.motion == 3)) swap = transform_arc_words();
+  switch (modal_.motion) {
     case 0: linear(MoveKind::rapid, target); break;
     case 1: linear(MoveKind::line, target); break;
     case 2: arc(target, !swap); break;
@@ -318,10 +318,10 @@ void Executor::emit(Move& m) {
   m.program = prog_ ? prog_->number : -1;
   m.file = prog_ ? prog_->file.get() : nullptr;
   m.line = block_ ? block_->line : 0;
-  m.feed_per_rev = feed_per_rev_ || m.threading;
+  m.feed_per_rev = modal_.feed_per_rev || m.threading;
   m.spindle = speed_;
-  m.exact_stop = exact_stop_ || exact_stop_once_;
-  m.lookahead = look_ahead_ || exact_stop_code_ == 611;
+  m.exact_stop = modal_.exact_stop || exact_stop_once_;
+  m.lookahead = modal_.look_ahead || modal_.exact_stop_code == 611;
   m.macro_statements = statements_since_;
   m.nc_blocks = nc_blocks_since_;
   statements_since_ = nc_blocks_since_ = 0;
@@ -335,8 +335,8 @@ void Executor::emit(Move& m) {
 
 void Executor::emit_programmed(Move& m) {
   if (!compensating()) return deliver(m);
-  const PlaneAxes pa = plane_axes(plane_);
-  const bool in_plane = m.kind == MoveKind::arc ? m.plane == plane_
+  const PlaneAxes pa = plane_axes(modal_.plane);
+  const bool in_plane = m.kind == MoveKind::arc ? m.plane == modal_.plane
                         : m.is_motion() && (m.start[pa.p] != m.end[pa.p] || m.start[pa.q] != m.end[pa.q]);
   if (!in_plane) {
     if (!comp_drop_ || !m.is_motion()) return comp_->other(m);
@@ -353,7 +353,7 @@ void Executor::emit_programmed(Move& m) {
     return comp_->element(to, 0, 0);
   }
   block_plane_motion_ = true;
-  int side = comp_suspended_ ? 0 : comp_side_;
+  int side = comp_suspended_ ? 0 : modal_.comp_side;
   if (xf_on_ && xf_.reverses(pa.p, pa.q)) side = -side;  // a mirror image swaps G41 and G42
   double radius = 0;
   if (profile_.lathe()) {
@@ -393,7 +393,7 @@ void Executor::record(Move& m) {
     note_extent(m.end);
   }
   s.seconds += m.seconds;
-  const Setup now{work_index_, origin_, length_comp_, h_};
+  const Setup now{modal_.work_index, origin_, modal_.length_comp, h_};
   if (!setup_sent_ || !(now == setup_)) {
     setup_ = now;
     setup_sent_ = true;
@@ -403,7 +403,7 @@ void Executor::record(Move& m) {
 }
 
 bool Executor::compensating() const {
-  return comp_side_ != 0 || comp_->offset_mode() || comp_->tool_position().has_value();
+  return modal_.comp_side != 0 || comp_->offset_mode() || comp_->tool_position().has_value();
 }
 
 // After each NC block in offset mode: a G40 (or G41/G42 from cancel mode) without motion in the
@@ -412,11 +412,11 @@ bool Executor::compensating() const {
 void Executor::end_of_block_compensation(bool g40, bool g41) {
   if (!block_plane_motion_) {
     Move at;
-    at.kind = motion_ == 0 ? MoveKind::rapid : MoveKind::line;
-    at.plane = static_cast<std::uint8_t>(plane_);
+    at.kind = modal_.motion == 0 ? MoveKind::rapid : MoveKind::line;
+    at.plane = static_cast<std::uint8_t>(modal_.plane);
     at.start = at.end = pos_;
     at.feed = feed_;
-    at.feed_per_rev = feed_per_rev_;
+    at.feed_per_rev = modal_.feed_per_rev;
     at.spindle = speed_;
     at.file = prog_ ? prog_->file.get() : nullptr;
     at.line = block_ ? block_->line : 0;
@@ -450,7 +450,7 @@ void Executor::emit_event(MoveKind kind, int code) {
   m.kind = kind;
   m.code = code;
   m.start = m.end = pos_;
-  m.plane = static_cast<std::uint8_t>(plane_);
+  m.plane = static_cast<std::uint8_t>(modal_.plane);
   emit(m);
 }
 
@@ -459,7 +459,7 @@ void Executor::linear(MoveKind kind, const AxisVector& target) {
   m.kind = kind;
   m.start = pos_;
   m.end = target;
-  m.plane = static_cast<std::uint8_t>(plane_);
+  m.plane = static_cast<std::uint8_t>(modal_.plane);
   m.length = line_length(pos_.data(), target.data());
   if (kind == MoveKind::line) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
@@ -480,8 +480,8 @@ void Executor::linear(MoveKind kind, const AxisVector& target) {
 
 void Executor::arc(const AxisVector& target, bool clockwise) {
   if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
-  const PlaneAxes pa = plane_axes(plane_);
-  if (profile_.lathe() && plane_ != 18 && !developed_) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
+  const PlaneAxes pa = plane_axes(modal_.plane);
+  if (profile_.lathe() && modal_.plane != 18 && !developed_) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
   const double sp = pos_[pa.p], sq = pos_[pa.q];
   const double ep = target[pa.p], eq = target[pa.q];
   const double tol = profile_.increment * 0.5 + 1e-9;
@@ -503,8 +503,8 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
                 fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} {} against "
                             "{:.4f}): the control puts the centre on the chord's midpoint and cuts a half circle of "
                             "that radius (PS0023 is for R0 only)",
-                            word('R').value, std::fabs(r) / (inch_ ? 25.4 : 1), inch_ ? "in" : "mm",
-                            half / (inch_ ? 25.4 : 1)),
+                            word('R').value, std::fabs(r) / (modal_.inch ? 25.4 : 1), modal_.inch ? "in" : "mm",
+                            half / (modal_.inch ? 25.4 : 1)),
                 word('R').column);
     double h = std::sqrt(std::max(0.0, r * r - half * half));
     // centre left of the chord for G03 with R > 0, right for G02
@@ -551,7 +551,7 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
   Move m;
   m.kind = MoveKind::arc;
   m.clockwise = clockwise;
-  m.plane = static_cast<std::uint8_t>(plane_);
+  m.plane = static_cast<std::uint8_t>(modal_.plane);
   m.start = pos_;
   m.end = target;
   m.center = {pos_[0], pos_[1], pos_[2]};
@@ -640,7 +640,7 @@ void Executor::reference_return(int g) {
 }
 
 void Executor::machine_coordinate_move() {
-  if (incremental_) return;  // G53 is ignored under G91, as on FANUC
+  if (modal_.incremental) return;  // G53 is ignored under G91, as on FANUC
   AxisVector target = pos_;
   AxisVector machine{};
   for (int a = 0; a < kAxes; ++a) machine[a] = pos_[a] + origin_[a] + tool_shift_[a];

@@ -56,7 +56,7 @@ void Executor::data_setting() {
       int a = axis_index(c.letter);
       if (a < 0 || !has_axis_[a]) continue;
       double v = dimension(c);
-      (*set)[a] = incremental_ ? (*set)[a] + v : v;
+      (*set)[a] = modal_.incremental ? (*set)[a] + v : v;
     }
     set_origin();
     return;
@@ -76,7 +76,7 @@ void Executor::data_setting() {
         field = l == 12 ? &o.d_geometry : l == 13 ? &o.d_wear : wear ? &o.wear : &o.geometry;
         break;
     }
-    *field = incremental_ ? *field + v : v;
+    *field = modal_.incremental ? *field + v : v;
     return;
   }
   if (l == 52) return start_parameter_input();  // parameter_input.cpp

@@ -27,7 +27,7 @@ unsigned Executor::block_axes() const {
 // A G28, G30, G29 or G53 naming an axis of the offset plane leaves the compensation vector on its
 // first move, even one that stays put in the plane (docs/compensation-spec.md section 6).
 bool Executor::names_plane_axis() const {
-  const PlaneAxes pa = plane_axes(plane_);
+  const PlaneAxes pa = plane_axes(modal_.plane);
   return (block_axes() & ((1u << pa.p) | (1u << pa.q))) != 0;
 }
 

@@ -20,7 +20,7 @@ bool Executor::single_direction_block() {
 // it already comes from that side. An axis without an overrun, or that does not move, goes
 // straight to its end in the first move.
 void Executor::single_direction(const AxisVector& target) {
-  if (cycle_ != 0)
+  if (modal_.cycle != 0)
     alarm("NC9001", "single direction positioning (G60) of a drilling canned cycle's holes is not supported yet");
   AxisVector stop = target;
   bool overrun = false;

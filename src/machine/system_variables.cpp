@@ -93,14 +93,14 @@ Value Executor::read_system(int n, std::uint16_t column) {
     case SystemKind::modal_words:
       switch (n - 4100) {
         case 7: return Value::of(d_);
-        case 9: return Value::of(inch_ ? feed_ / 25.4 : feed_);
+        case 9: return Value::of(modal_.inch ? feed_ / 25.4 : feed_);
         case 11: return Value::of(h_);
         case 13: return last_m_ < 0 ? Value{} : Value::of(last_m_);
         case 14: return last_sequence_ < 0 ? Value{} : Value::of(last_sequence_);
         case 15: return Value::of(prog_ && prog_->number >= 0 ? prog_->number : 0);
         case 19: return Value::of(speed_);
         case 20: return Value::of(tool_);
-        case 30: return work_index_ > 6 ? Value::of(work_index_ - 6) : Value{};
+        case 30: return modal_.work_index > 6 ? Value::of(modal_.work_index - 6) : Value{};
         default: return Value{};
       }
     case SystemKind::positions: {

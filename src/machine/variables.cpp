@@ -18,28 +18,28 @@ using nc::Value;
 // the table's power-on code for a group ncurve does not change; 0 for a group the control lacks.
 int Executor::modal_code(int group) const {
   const GMachine m = g_machine(profile_);
-  if (group == 1) return motion_ * 10;  // G60 too, modal with No.5431#0 MDL = 1
-  if (group == 3 && m == kLatheA) return incremental_ ? 910 : 900;
-  const int work = work_index_ > 6 ? 541 : 530 + 10 * work_index_;
+  if (group == 1) return modal_.motion * 10;  // G60 too, modal with No.5431#0 MDL = 1
+  if (group == 3 && m == kLatheA) return modal_.incremental ? 910 : 900;
+  const int work = modal_.work_index > 6 ? 541 : 530 + 10 * modal_.work_index;
   const int state[] = {
-      plane_ * 10,
-      incremental_ ? 910 : 900,
-      m == kLatheA ? (feed_per_rev_ ? 990 : 980) : (feed_per_rev_ ? 950 : 940),  // before the return level
-      m == kLatheC ? (inch_ ? 700 : 710) : (inch_ ? 200 : 210),
-      comp_side_ > 0 ? 410 : comp_side_ < 0 ? 420 : 400,
-      length_comp_ * 10,
-      stroke2_on_ ? 220 : 230,
-      cycle_ == 0 ? 800 : cycle_ * 10,
-      cycle_return_initial_ ? 980 : 990,
-      css_ ? 960 : 970,
-      speed_fluctuation_check_ ? 260 : 250,
-      modal_call_ ? 660 : 670,
+      modal_.plane * 10,
+      modal_.incremental ? 910 : 900,
+      m == kLatheA ? (modal_.feed_per_rev ? 990 : 980) : (modal_.feed_per_rev ? 950 : 940),  // before the return level
+      m == kLatheC ? (modal_.inch ? 700 : 710) : (modal_.inch ? 200 : 210),
+      modal_.comp_side > 0 ? 410 : modal_.comp_side < 0 ? 420 : 400,
+      modal_.length_comp * 10,
+      modal_.stroke2_on ? 220 : 230,
+      modal_.cycle == 0 ? 800 : modal_.cycle * 10,
+      modal_.cycle_return_initial ? 980 : 990,
+      modal_.css ? 960 : 970,
+      modal_.speed_fluctuation_check ? 260 : 250,
+      modal_.modal_call ? 660 : 670,
       work,
-      exact_stop_code_ == 611 ? 611 : exact_stop_code_ * 10,
+      modal_.exact_stop_code == 611 ? 611 : modal_.exact_stop_code * 10,
       developed_ && dev_->polar ? 121 : 131,
       xf_.scaling ? 510 : 500,
       xf_.rotating ? 680 : 690,
-      polar_ ? 160 : 150,
+      modal_.polar ? 160 : 150,
       xf_.mirroring() ? 511 : 501,
   };
   for (const int g : state)
@@ -50,14 +50,14 @@ int Executor::modal_code(int group) const {
 double Executor::program_units(int axis, double mm) const {
   double v = mm;
   if (axis == 0 && profile_.lathe() && profile_.diameter_x) v *= 2;
-  if (inch_ && axis < 3) v /= 25.4;
+  if (modal_.inch && axis < 3) v /= 25.4;
   return v;
 }
 
 // An offset (tool, work) in mm as the program reads or writes it: a length in inches under G20; not
 // a length (a rotary axis's degrees, a tool nose tip number) as it is.
-double Executor::offset_units(double mm, bool length) const { return length && inch_ ? mm / 25.4 : mm; }
-double Executor::offset_mm(double value, bool length) const { return length && inch_ ? value * 25.4 : value; }
+double Executor::offset_units(double mm, bool length) const { return length && modal_.inch ? mm / 25.4 : mm; }
+double Executor::offset_mm(double value, bool length) const { return length && modal_.inch ? value * 25.4 : value; }
 bool Executor::is_tip_variable(int n) { return n >= 2301 && n <= 2364; }
 
 // (a look from outside the run: not a read of the program's, so not told to the observer)

@@ -29,7 +29,7 @@ void Executor::boring_hole(const Hole& h) {
     if (t != pos_) linear(MoveKind::rapid, t);
   };
   auto oriented_stop = [&] { emit_event(MoveKind::spindle, 19); };
-  switch (cycle_) {
+  switch (modal_.cycle) {
     case 76:  // bore to Z, stop the spindle oriented, move the tip off the wall, rapid out
       cycle_move(h, MoveKind::rapid, h.r);
       cycle_move(h, MoveKind::line, h.z);

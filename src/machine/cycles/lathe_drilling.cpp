@@ -30,7 +30,7 @@ const char* lathe_cycle_name(int g) {
 // X C (Z C) position the hole, Z (X) is the bottom (W, U or G91: the distance from R), R the
 // distance from the initial level to point R, Q the depth of each peck in least input increments.
 bool Executor::lathe_drilling_block() {
-  const int g = cycle_;
+  const int g = modal_.cycle;
   const bool face = g <= 85;
   const int ax = face ? 2 : 0;  // the drilling axis
   const bool system_a = profile_.gcode_system == 'A';
@@ -54,7 +54,7 @@ bool Executor::lathe_drilling_block() {
   }
   const char absolute = face ? 'Z' : 'X', relative = face ? 'W' : 'U';
   if (has(absolute) || (system_a && has(relative))) {
-    const bool inc = system_a ? !has(absolute) : incremental_;
+    const bool inc = system_a ? !has(absolute) : modal_.incremental;
     const double v = dimension(word(has(absolute) ? absolute : relative));
     cycle_z_ = diameter ? v / 2 : v;
     cycle_z_incremental_ = inc;
@@ -92,13 +92,13 @@ bool Executor::lathe_drilling_block() {
   Hole h;
   h.axis = ax;
   h.initial = cycle_initial_[ax];
-  const bool r_incremental = system_a ? !profile_.drilling.lathe_r_absolute : incremental_;
+  const bool r_incremental = system_a ? !profile_.drilling.lathe_r_absolute : modal_.incremental;
   const double r = cycle_r_.value_or(r_incremental ? 0.0 : h.initial);
   h.r = r_incremental ? h.initial + r : r;
   h.z = cycle_z_incremental_ ? h.r + *cycle_z_ : *cycle_z_;
   // G98/G99 choose the return level in systems B and C; system A has no such codes (G98/G99 are
   // feed per minute/revolution there) and returns to the initial level
-  h.back = system_a || cycle_return_initial_ ? h.initial : h.r;
+  h.back = system_a || modal_.cycle_return_initial ? h.initial : h.r;
   // Under tool-nose radius compensation the moves are made at the programmed points, the vector
   // cancelled as for G28, and the next move restores it (as the mill's cycles do).
   const base::RestoreOnExit restore_suspended(comp_suspended_);
@@ -106,7 +106,7 @@ bool Executor::lathe_drilling_block() {
   AxisVector step{};  // K: each repeat moves again by the incremental positioning words
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
-    bool inc = incremental_;
+    bool inc = modal_.incremental;
     if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W')) {
       a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : 2;
       inc = true;
@@ -127,7 +127,7 @@ bool Executor::lathe_drilling_block() {
 // One hole: position at the current level, clamp C (if asked), rapid to R, the cycle's motions,
 // return to the initial level (G98, system A) or to R (G99), unclamp C and dwell No.5111.
 void Executor::lathe_hole(const Hole& h, double q) {
-  const int g = cycle_;
+  const int g = modal_.cycle;
   AxisVector at = h.at;
   at[h.axis] = pos_[h.axis];
   if (at != pos_) linear(MoveKind::rapid, at);

@@ -19,8 +19,8 @@ constexpr double kDeg = std::numbers::pi / 180;
 }  // namespace
 
 double Executor::increments(const Cmd& c, const char* what) const {
-  const double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
-  return integer(c, what) / per_unit * (inch_ ? 25.4 : 1.0);
+  const double per_unit = modal_.inch ? per_unit_inch_ : per_unit_mm_;
+  return integer(c, what) / per_unit * (modal_.inch ? 25.4 : 1.0);
 }
 
 double Executor::thread_start_angle() {
@@ -45,7 +45,7 @@ void Executor::thread_cut(const AxisVector& to, double lead, double angle) {
   m.kind = MoveKind::line;
   m.start = pos_;
   m.end = to;
-  m.plane = static_cast<std::uint8_t>(plane_);
+  m.plane = static_cast<std::uint8_t>(modal_.plane);
   m.length = line_length(pos_.data(), to.data());
   m.feed = lead;
   m.threading = true;
@@ -84,7 +84,7 @@ void Executor::thread_block(const AxisVector& target) {
   if (compensating())
     alarm("NC9001", fmt::format("threading (G{}) under {} radius compensation is not supported yet: cancel "
                                 "it with G40 before the thread",
-                                motion_, profile_.lathe() ? "tool-nose" : "cutter"));
+                                modal_.motion, profile_.lathe() ? "tool-nose" : "cutter"));
   const bool continues = thread_block_ != 0 && thread_block_ + 1 == result_.stats.blocks;
   double angle = thread_start_angle();
   if (continues) angle = -1;
@@ -178,10 +178,10 @@ void Executor::g76_passes(const AxisVector& end, double taper, double height, do
   }
   for (int k = 0; k < std::max(g76_finish_count_, 1); ++k) depths.push_back(height);
 
-  const base::RestoreOnExit restore_side(comp_side_);
+  const base::RestoreOnExit restore_side(modal_.comp_side);
   if (compensating()) {  // threading is not compensated: the vector is cancelled at A
     comp_->cancel_at_end();
-    comp_side_ = 0;
+    modal_.comp_side = 0;
   }
   for (double d : depths) {
     const double x = out * (height - d), z = back * (height - d) * flank;

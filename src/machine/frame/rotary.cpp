@@ -63,7 +63,7 @@ void Executor::wrap_rotary() {
 double Executor::combined_length(const AxisVector& from, const AxisVector& to, double linear) const {
   double sq = linear * linear;
   for (int a = 3; a < kAxes; ++a) {
-    const double d = (to[a] - from[a]) * (rotary_[a] && inch_ ? 25.4 : 1.0);
+    const double d = (to[a] - from[a]) * (rotary_[a] && modal_.inch ? 25.4 : 1.0);
     sq += d * d;
   }
   return std::sqrt(sq);

@@ -70,7 +70,7 @@ const char* axis_name(int a) { return a == 0 ? "X" : a == 1 ? "Y" : a == 2 ? "Z"
 
 void Executor::arm_corner(const AxisVector& target) {
   const bool lathe = profile_.lathe();
-  const PlaneAxes pa = plane_axes(plane_);
+  const PlaneAxes pa = plane_axes(modal_.plane);
   const Cmd* comma = nullptr;  // ,C or ,R
   for (const Cmd& c : comma_cmds_) {
     if (c.letter == 'a')
@@ -84,7 +84,7 @@ void Executor::arm_corner(const AxisVector& target) {
   const Cmd* c_word = ccr && has('C') && !has_axis_[5] ? &word('C') : nullptr;
   std::optional<CornerRequest> req;
   const Cmd* given = comma;
-  if (lathe && motion_ == 1) {
+  if (lathe && modal_.motion == 1) {
     if (ccr && (has(pa.ip) || has(pa.iq)))
       alarm("PS0009", fmt::format("address {} in a G01 block: with No.3405#4 CCR = 1 chamfering takes C",
                                   has(pa.ip) ? pa.ip : pa.iq),
@@ -140,7 +140,7 @@ void Executor::arm_corner(const AxisVector& target) {
   }
   if (!req && !comma && c_word) given = c_word;  // C of direct drawing dimension programming (CCR = 1)
   if (!req && given) {
-    if (motion_ == 0)
+    if (modal_.motion == 0)
       alarm("PS0052", "chamfering and corner R are commanded at the end of a G01, G02 or G03 block; this block is "
                       "G00",
             given->column);
@@ -151,11 +151,11 @@ void Executor::arm_corner(const AxisVector& target) {
     req = r;
   }
   if (!req || req->amount <= 0) return;  // ,C0: nothing to insert
-  if (comp_side_ != 0 && !comp_->offset_mode())
+  if (modal_.comp_side != 0 && !comp_->offset_mode())
     alarm("PS0039", fmt::format("CHF/CNR not allowed in G41, G42: chamfering or corner R in the start-up block of {}",
                                 lathe ? "tool-nose radius compensation" : "cutter compensation"),
           req->column);
-  if (comp_side_ == 0 && comp_->offset_mode())
+  if (modal_.comp_side == 0 && comp_->offset_mode())
     alarm("PS0039", fmt::format("CHF/CNR not allowed in G41, G42: chamfering or corner R in the block that cancels {} "
                                 "(G40)",
                                 lathe ? "tool-nose radius compensation" : "cutter compensation"),
@@ -179,7 +179,7 @@ bool Executor::corner_emit(Move& m) {
   h.prog = prog_;
   h.block = block_;
   h.step = result_.stats.blocks;
-  h.side = comp_side_;
+  h.side = modal_.comp_side;
   h.d = d_;
   h.lathe_offset = lathe_offset_;
   corner_.armed.reset();
@@ -208,9 +208,9 @@ void Executor::cut_held_corner(Move& next) {
   const double dp = next.end[pa.p] - next.start[pa.p], dq = next.end[pa.q] - next.start[pa.q];
   if (next.kind == MoveKind::line && std::fabs(dp) < kTol && std::fabs(dq) < kTol)
     alarm("PS0051", fmt::format("missing move after CNR/CHF: {} makes no move in the plane", after));
-  if (h.side != comp_side_)
+  if (h.side != modal_.comp_side)
     alarm("PS0039", fmt::format("CHF/CNR not allowed in G41, G42: {} {} {}", after,
-                                comp_side_ == 0 ? "cancels" : h.side == 0 ? "starts up" : "switches the side of",
+                                modal_.comp_side == 0 ? "cancels" : h.side == 0 ? "starts up" : "switches the side of",
                                 profile_.lathe() ? "tool-nose radius compensation" : "cutter compensation"));
   if (rq.square) {
     const int across = rq.next_axis == pa.p ? pa.q : pa.p;

@@ -117,7 +117,7 @@ void Executor::stroke_area_command() {
 }
 
 void Executor::stroke_area_switch(bool on) {
-  stroke2_on_ = on;
+  modal_.stroke2_on = on;
   bool area = profile_.stroke2_outside;  // outside forbidden: even an empty area forbids everything
   if (!area) {  // inside forbidden: only an area with an inside can be entered
     area = true;
@@ -127,7 +127,7 @@ void Executor::stroke_area_switch(bool on) {
   }
   bool limit1 = false;
   for (int a = 0; a < kAxes; ++a) limit1 = limit1 || std::isfinite(stroke1_plus_[a]) || std::isfinite(stroke1_minus_[a]);
-  stroke_check_ = limit1 || (stroke2_on_ && area);
+  stroke_check_ = limit1 || (modal_.stroke2_on && area);
 }
 
 // The control stops the tool at the limit (No.1300#7 BFA: just before it, or just past it);
@@ -160,7 +160,7 @@ void Executor::check_stroke(const Move& m) const {
                                  "coordinates), past the limit {:.4f} (No.1321)",
                                  kAxisLetters[a], kAxisLetters[a], shown(a, lo[a]), shown(a, stroke1_minus_[a])));
   }
-  if (!stroke2_on_) return;
+  if (!modal_.stroke2_on) return;
   const unsigned mask = basic_axes(has_axis_);
   auto area = [&] {
     std::string s;
