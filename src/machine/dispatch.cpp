@@ -160,7 +160,7 @@ void Executor::exec_nc(const Block& b) {
     const bool length_code = std::ranges::any_of(g_codes_, [](int g) { return g == 430 || g == 440 || g == 490; });
     const bool position_offset = std::ranges::any_of(g_codes_, [](int g) { return g >= 450 && g <= 480; });
     if (!profile_.lathe() && (modal_.length_comp == 43 || modal_.length_comp == 44) && !length_code && !position_offset)
-      tool_shift_[2] = (modal_.length_comp == 43 ? 1 : -1) * length_offset(h_);
+      coords_.tool_shift[2] = (modal_.length_comp == 43 ? 1 : -1) * length_offset(h_);
   }
   if (has('D') && !(profile_.lathe() && profile_.series10_format)) d_ = integer(word('D'), "D");  // else a cycle's depth
   if (has('T')) {
@@ -189,7 +189,7 @@ void Executor::exec_nc(const Block& b) {
   } else if (modal_.cycle != 0) {
     moved = profile_.lathe() ? lathe_drilling_block() : canned_cycle_block();
   } else {
-    AxisVector target = pos_;
+    AxisVector target = coords_.pos;
     bool axes = axis_target(target);
     bool full_circle_ijk = (modal_.motion == 2 || modal_.motion == 3) && (has('I') || has('J') || has('K'));
     if (position_offset_ != 0) [[unlikely]] apply_position_offset(target);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "machine/interpreter.hpp"
+#include "machine/coordinates.hpp"
 #include "machine/modal.hpp"
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
@@ -401,7 +402,6 @@ private:
   static bool is_tip_variable(int n);     // #2301..#2364: a lathe's tool nose tip (a number)
   double* lathe_offset_field(int n);
   void lathe_offset_setting();
-  AxisVector tool_shift_{};  // machine = work + origin + tool shift (G43/G44 on Z; lathe T offset on X, Z)
   int lathe_offset_ = 0;     // active lathe offset number (T code's last two digits)
 
   // cutter / tool-nose radius compensation
@@ -412,13 +412,7 @@ private:
   bool macro_call_block_ = false;      // the block called a macro (G65, G66, custom G/M code)
   std::optional<V2> cancel_direction_;  // I J K of a G40 block
 
-  // positions (work coordinates, mm; lathe X as a radius)
-  AxisVector pos_{};
-  AxisVector origin_{};  // machine = work + origin
-  AxisVector local_{};   // G52
-  AxisVector shift_{};   // G92 / G50
-  std::array<AxisVector, 7> work_offsets_{};
-  std::map<int, AxisVector> extended_offsets_;  // G54.1 P1..P300
+  Coordinates coords_;  // coordinates.hpp
   std::map<int, MillOffset> tool_offsets_;
   double* mill_offset_field(int n);
   double length_offset(int n) const;  // H: geometry + wear

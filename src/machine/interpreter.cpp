@@ -66,7 +66,7 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   eval_options_.adp_scale = 1.0 / profile_.increment;
   common_high_ = profile_.control == Control::fanuc_30i ? 499 : 199;
   common_.assign(1000, Value{});
-  work_offsets_ = profile_.work_offsets;
+  coords_.work_offsets = profile_.work_offsets;
   tool_offsets_ = profile_.tool_offsets;
   lathe_offsets_ = profile_.lathe_offsets;
   CompensationSettings cs;
@@ -223,7 +223,7 @@ RunResult Executor::run(MoveSink& sink) {
   if (observer_) observe_call(f);
   modal_.power_on(profile_);
   set_origin();
-  for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
+  for (int a = 0; a < kAxes; ++a) coords_.pos[a] = profile_.reference_points[0][a] - coords_.origin[a];  // power on at home
   init_stroke_check();
 
   reached_.clear();

@@ -77,14 +77,7 @@ const char* to_string(MoveKind k) {
 }
 
 void Executor::set_origin() {
-  AxisVector old = origin_;
-  const AxisVector& work = modal_.work_index <= 6 ? work_offsets_[modal_.work_index] : extended_offsets_[modal_.work_index - 6];
-  AxisVector delta{};
-  for (int a = 0; a < kAxes; ++a) {
-    origin_[a] = work_offsets_[0][a] + work[a] + local_[a] + shift_[a];
-    delta[a] = old[a] - origin_[a];
-    pos_[a] += delta[a];
-  }
+  const AxisVector delta = coords_.select(modal_.work_index);
   if (comp_) comp_->move_frame(delta);
 }
 
@@ -173,9 +166,9 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
         modal_.length_comp = g / 10;
         h_ = has('H') ? static_cast<int>(std::lround(word('H').value)) : h_;
-        tool_shift_[2] = (g == 430 ? 1 : -1) * length_offset(h_);
+        coords_.tool_shift[2] = (g == 430 ? 1 : -1) * length_offset(h_);
         break;
-      case 490: modal_.length_comp = 49; tool_shift_[2] = 0; break;
+      case 490: modal_.length_comp = 49; coords_.tool_shift[2] = 0; break;
       case 540: case 550: case 560: case 570: case 580: case 590:
         modal_.work_index = g / 10 - 53;
         set_origin();
@@ -393,7 +386,7 @@ void Executor::record(Move& m) {
     note_extent(m.end);
   }
   s.seconds += m.seconds;
-  const Setup now{modal_.work_index, origin_, modal_.length_comp, h_};
+  const Setup now{modal_.work_index, coords_.origin, modal_.length_comp, h_};
   if (!setup_sent_ || !(now == setup_)) {
     setup_ = now;
     setup_sent_ = true;
@@ -414,7 +407,7 @@ void Executor::end_of_block_compensation(bool g40, bool g41) {
     Move at;
     at.kind = modal_.motion == 0 ? MoveKind::rapid : MoveKind::line;
     at.plane = static_cast<std::uint8_t>(modal_.plane);
-    at.start = at.end = pos_;
+    at.start = at.end = coords_.pos;
     at.feed = feed_;
     at.feed_per_rev = modal_.feed_per_rev;
     at.spindle = speed_;
@@ -449,7 +442,7 @@ void Executor::emit_event(MoveKind kind, int code) {
   Move m;
   m.kind = kind;
   m.code = code;
-  m.start = m.end = pos_;
+  m.start = m.end = coords_.pos;
   m.plane = static_cast<std::uint8_t>(modal_.plane);
   emit(m);
 }
@@ -457,23 +450,23 @@ void Executor::emit_event(MoveKind kind, int code) {
 void Executor::linear(MoveKind kind, const AxisVector& target) {
   Move m;
   m.kind = kind;
-  m.start = pos_;
+  m.start = coords_.pos;
   m.end = target;
   m.plane = static_cast<std::uint8_t>(modal_.plane);
-  m.length = line_length(pos_.data(), target.data());
+  m.length = line_length(coords_.pos.data(), target.data());
   if (kind == MoveKind::line) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
     m.feed = feed_;
-    const double fed = extra_axes_ ? combined_length(pos_, target, m.length) : m.length;  // F on every axis
-    m.seconds = feed_seconds(fed, pos_[0], target[0]);
+    const double fed = extra_axes_ ? combined_length(coords_.pos, target, m.length) : m.length;  // F on every axis
+    m.seconds = feed_seconds(fed, coords_.pos[0], target[0]);
   } else {  // rapid axes move independently: the slowest axis sets the time
     double slowest = 0;
     for (int a = 0; a < kAxes; ++a)
-      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(target[a] - pos_[a]) / profile_.rapid_rate[a]);
+      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(target[a] - coords_.pos[a]) / profile_.rapid_rate[a]);
     m.feed = 0;
     m.seconds = slowest * 60.0;
   }
-  pos_ = target;
+  coords_.pos = target;
   if (rolls_) wrap_rotary();
   emit(m);
 }
@@ -482,7 +475,7 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
   if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
   const PlaneAxes pa = plane_axes(modal_.plane);
   if (profile_.lathe() && modal_.plane != 18 && !developed_) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
-  const double sp = pos_[pa.p], sq = pos_[pa.q];
+  const double sp = coords_.pos[pa.p], sq = coords_.pos[pa.q];
   const double ep = target[pa.p], eq = target[pa.q];
   const double tol = profile_.increment * 0.5 + 1e-9;
   double cp, cq;
@@ -493,7 +486,7 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
     double d = std::hypot(dx, dy);
     if (d < tol) {
       // R with the end point at the start point: FANUC makes no move
-      pos_ = target;
+      coords_.pos = target;
       return;
     }
     if (r == 0) alarm("PS0023", "arc radius R is zero", word('R').column);
@@ -552,15 +545,15 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
   m.kind = MoveKind::arc;
   m.clockwise = clockwise;
   m.plane = static_cast<std::uint8_t>(modal_.plane);
-  m.start = pos_;
+  m.start = coords_.pos;
   m.end = target;
-  m.center = {pos_[0], pos_[1], pos_[2]};
+  m.center = {coords_.pos[0], coords_.pos[1], coords_.pos[2]};
   m.center[pa.p] = cp;
   m.center[pa.q] = cq;
-  m.center[pa.n] = pos_[pa.n];
+  m.center[pa.n] = coords_.pos[pa.n];
   m.sweep = sweep;
   double planar = std::fabs(sweep) * (rs + re) / 2;
-  double dn = target[pa.n] - pos_[pa.n];
+  double dn = target[pa.n] - coords_.pos[pa.n];
   m.length = std::hypot(planar, dn);
   m.feed = feed_;
   // Helical interpolation: F is the feed along the arc in the plane, the linear axis following at
@@ -572,13 +565,13 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
     double rel = std::remainder(ang - a0, kTwoPi);
     double along = sweep > 0 ? (rel < 0 ? rel + kTwoPi : rel) : (rel > 0 ? kTwoPi - rel : -rel);
     if (along < std::fabs(sweep)) {
-      AxisVector p = pos_;
+      AxisVector p = coords_.pos;
       p[pa.p] = cp + rs * std::cos(ang);
       p[pa.q] = cq + rs * std::sin(ang);
       note_extent(p);
     }
   }
-  pos_ = target;
+  coords_.pos = target;
   if (rolls_) wrap_rotary();
   emit(m);
 }
@@ -599,7 +592,7 @@ void Executor::dwell() {
   if (seconds < 0) alarm("PS0006", "a dwell time takes no minus sign", column);
   Move m;
   m.kind = MoveKind::dwell;
-  m.start = m.end = pos_;
+  m.start = m.end = coords_.pos;
   m.seconds = seconds;
   emit(m);
 }
@@ -613,7 +606,7 @@ void Executor::reference_return(int g) {
   if (g == 301 && !profile_.floating_reference)
     alarm("NC9001", "G30.1 (floating reference position return) needs the floating reference position, which the "
                     "operator sets on the control (No.1244): give it in the profile as [reference_points] floating");
-  AxisVector mid = pos_;
+  AxisVector mid = coords_.pos;
   bool any = axis_target(mid);
   if (!any) return;
   if (rolls_) roll_over(mid);
@@ -626,7 +619,7 @@ void Executor::reference_return(int g) {
     comp_drop_ = names_plane_axis();
     linear(MoveKind::rapid, mid);
   }
-  AxisVector ref = pos_;
+  AxisVector ref = coords_.pos;
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
     if (profile_.lathe() && profile_.gcode_system == 'A') {
@@ -634,21 +627,21 @@ void Executor::reference_return(int g) {
       if (c.letter == 'W') a = 2;
     }
     if (a < 0 || !has_axis_[a]) continue;
-    ref[a] = (g == 301 ? *profile_.floating_reference : profile_.reference_points[point])[a] - origin_[a] - tool_shift_[a];
+    ref[a] = (g == 301 ? *profile_.floating_reference : profile_.reference_points[point])[a] - coords_.origin[a] - coords_.tool_shift[a];
   }
   linear(MoveKind::rapid, ref);
 }
 
 void Executor::machine_coordinate_move() {
   if (modal_.incremental) return;  // G53 is ignored under G91, as on FANUC
-  AxisVector target = pos_;
+  AxisVector target = coords_.pos;
   AxisVector machine{};
-  for (int a = 0; a < kAxes; ++a) machine[a] = pos_[a] + origin_[a] + tool_shift_[a];
+  for (int a = 0; a < kAxes; ++a) machine[a] = coords_.pos[a] + coords_.origin[a] + coords_.tool_shift[a];
   AxisVector given = machine;
   if (!axis_target(given, true)) return;
-  for (int a = 0; a < kAxes; ++a) target[a] = given[a] - origin_[a] - tool_shift_[a];
+  for (int a = 0; a < kAxes; ++a) target[a] = given[a] - coords_.origin[a] - coords_.tool_shift[a];
   for (int a = 0; a < kAxes; ++a)
-    if (given[a] == machine[a]) target[a] = pos_[a];
+    if (given[a] == machine[a]) target[a] = coords_.pos[a];
   // G53 in offset mode: the vector is cancelled, restored at the next move
   const base::RestoreOnExit<bool> restore(comp_suspended_), restore_drop(comp_drop_);
   comp_suspended_ = true;
@@ -657,7 +650,7 @@ void Executor::machine_coordinate_move() {
 }
 
 void Executor::set_coordinate_system(int g) {
-  AxisVector given = pos_;
+  AxisVector given = coords_.pos;
   if (g == 520) {  // G52: local coordinate system, absolute offsets from the work zero
     AxisVector zero{};
     AxisVector offs = zero;
@@ -673,7 +666,7 @@ void Executor::set_coordinate_system(int g) {
     if (!any) return;
     for (const Cmd& c : cmds_) {
       int a = axis_index(c.letter);
-      if (a >= 0 && has_axis_[a]) local_[a] = offs[a];
+      if (a >= 0 && has_axis_[a]) coords_.local[a] = offs[a];
     }
     set_origin();
     return;
@@ -681,21 +674,7 @@ void Executor::set_coordinate_system(int g) {
   if (g == 500 && !has('X') && !has('Z') && !has('U') && !has('W')) return;
   // G92 (G50 on a system A lathe): the current point gets the given coordinates
   if (!axis_target(given)) return;
-  // The manual's local coordinate system notes: G92 cancels the G52 offset of the axes it names
-  // (those it does not name keep theirs); the origin stays put, the local offset folds into the shift.
-  const unsigned named = block_axes();
-  AxisVector delta{};
-  for (int a = 0; a < kAxes; ++a) {
-    if (named & (1u << a)) {
-      shift_[a] += local_[a];
-      local_[a] = 0;
-    }
-    shift_[a] += pos_[a] - given[a];
-    origin_[a] += pos_[a] - given[a];
-    delta[a] = given[a] - pos_[a];
-  }
-  pos_ = given;
-  comp_->move_frame(delta);
+  comp_->move_frame(coords_.set_current(given, block_axes()));
 }
 
 }  // namespace ncurve::machine

@@ -8,7 +8,7 @@ namespace ncurve::machine {
 
 // A one-shot G60 block (No.5431#0 MDL = 0).
 bool Executor::single_direction_block() {
-  AxisVector target = pos_;
+  AxisVector target = coords_.pos;
   if (!axis_target(target)) return false;
   if (rolls_) roll_over(target);
   single_direction(target);
@@ -26,7 +26,7 @@ void Executor::single_direction(const AxisVector& target) {
   bool overrun = false;
   for (int a = 0; a < kAxes; ++a) {
     const double o = profile_.g60_overrun[a];
-    if (!has_axis_[a] || o == 0 || target[a] == pos_[a]) continue;
+    if (!has_axis_[a] || o == 0 || target[a] == coords_.pos[a]) continue;
     stop[a] = target[a] - o;
     overrun = true;
   }

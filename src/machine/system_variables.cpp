@@ -110,13 +110,13 @@ Value Executor::read_system(int n, std::uint16_t column) {
       // the current position (#5021.., #5041..) includes the cutter compensation: the tool centre (the
       // imaginary tip on a lathe) after the last move put out
       const bool offset = comp_ && (comp_->offset_mode() || comp_->tool_position());
-      const double now = offset ? comp_->tool_now()[a] : pos_[a];
+      const double now = offset ? comp_->tool_now()[a] : coords_.pos[a];
       switch (block) {
-        case 0: return Value::of(program_units(a, xf_on_ ? program_position()[a] : pos_[a]));  // before transforms
+        case 0: return Value::of(program_units(a, xf_on_ ? program_position()[a] : coords_.pos[a]));  // before transforms
         case 2: return Value::of(program_units(a, now));
-        case 1: return Value::of(program_units(a, now + origin_[a] + tool_shift_[a]));
-        case 3: return Value::of(program_units(a, skip_position_ ? (*skip_position_)[a] : pos_[a]));  // G31 (skip.cpp)
-        case 4: return Value::of(program_units(a, tool_shift_[a]));
+        case 1: return Value::of(program_units(a, now + coords_.origin[a] + coords_.tool_shift[a]));
+        case 3: return Value::of(program_units(a, skip_position_ ? (*skip_position_)[a] : coords_.pos[a]));  // G31 (skip.cpp)
+        case 4: return Value::of(program_units(a, coords_.tool_shift[a]));
         default: return Value::of(0);
       }
     }
@@ -124,13 +124,13 @@ Value Executor::read_system(int n, std::uint16_t column) {
       int set = (n - 5201) / 20;
       int a = axis_of_order((n - 5201) % 20);
       if (a < 0 || set > 6) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-      return Value::of(offset_units(work_offsets_[set][a], a < 3));
+      return Value::of(offset_units(coords_.work_offsets[set][a], a < 3));
     }
     case SystemKind::extended_offsets: {
       int a = axis_of_order((n - 7001) % 20);
       if (a < 0) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-      auto it = extended_offsets_.find((n - 7001) / 20 + 1);
-      const double v = it == extended_offsets_.end() ? 0.0 : it->second[a];
+      auto it = coords_.extended.find((n - 7001) / 20 + 1);
+      const double v = it == coords_.extended.end() ? 0.0 : it->second[a];
       return Value::of(offset_units(v, a < 3));
     }
     default: break;
@@ -177,14 +177,14 @@ void Executor::write_system(int n, Value v, std::uint16_t column) {
       int set = (n - 5201) / 20;
       int a = axis_of_order((n - 5201) % 20);
       if (a < 0 || set > 6) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-      work_offsets_[set][a] = offset_mm(v.number(), a < 3);
+      coords_.work_offsets[set][a] = offset_mm(v.number(), a < 3);
       set_origin();
       return;
     }
     case SystemKind::extended_offsets: {
       int a = axis_of_order((n - 7001) % 20);
       if (a < 0) alarm("PS0115", fmt::format("#{}: no such work offset variable", n), column);
-      extended_offsets_[(n - 7001) / 20 + 1][a] = offset_mm(v.number(), a < 3);
+      coords_.extended[(n - 7001) / 20 + 1][a] = offset_mm(v.number(), a < 3);
       set_origin();
       return;
     }

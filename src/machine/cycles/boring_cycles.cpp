@@ -24,9 +24,9 @@ Shift shift_direction(int bits, int drilling_axis) {
 void Executor::boring_hole(const Hole& h) {
   const Shift s = shift_direction(profile_.drilling.shift_direction, h.axis);
   auto shift = [&](double away) {  // rapid by Q: +1 away from the tool tip, -1 back
-    AxisVector t = pos_;
+    AxisVector t = coords_.pos;
     t[s.axis] += away * s.sign * cycle_q_;
-    if (t != pos_) linear(MoveKind::rapid, t);
+    if (t != coords_.pos) linear(MoveKind::rapid, t);
   };
   auto oriented_stop = [&] { emit_event(MoveKind::spindle, 19); };
   switch (modal_.cycle) {

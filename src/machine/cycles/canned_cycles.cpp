@@ -36,7 +36,7 @@ const char* cycle_name(int g) {
 void Executor::select_canned_cycle(int g, std::uint16_t) {
   const int code = g / 10;
   if (modal_.cycle == 0) {  // the initial level: where the tool is when the cycle mode starts
-    cycle_initial_ = pos_;
+    cycle_initial_ = coords_.pos;
     cycle_axis_ = -1;
   }
   if (code != 84 && code != 74) rigid_tapping_ = false;  // another cycle ends the rigid mode
@@ -81,8 +81,8 @@ bool Executor::canned_cycle_block() {
           word(other).column);
   const int repeat = cycle_repeat_count();
 
-  const AxisVector base = pos_;
-  AxisVector hole = pos_;
+  const AxisVector base = coords_.pos;
+  AxisVector hole = coords_.pos;
   const bool positioned = axis_target(hole);
   if (positioned || repeat == 0) {
     if (q) cycle_q_ = *q, cycle_has_q_ = true;
@@ -90,7 +90,7 @@ bool Executor::canned_cycle_block() {
   }
   if (!positioned) return false;  // data only: no hole
   if (rolls_) roll_over(hole);
-  hole[ax] = pos_[ax];             // the drilling axis word is the hole bottom, not a move
+  hole[ax] = coords_.pos[ax];             // the drilling axis word is the hole bottom, not a move
   if (repeat == 0) return false;  // K0: the data are stored, no hole is drilled
 
   const std::uint16_t gcol = [&] {
@@ -135,12 +135,12 @@ bool Executor::canned_cycle_block() {
   for (int a = 0; a < kAxes; ++a) step[a] = modal_.incremental ? hole[a] - base[a] : 0;
   for (int k = 0; k < repeat; ++k) {
     if (k > 0 && modal_.incremental && xf_on_) {  // G16, G51.1, G51, G68: the incremental command again
-      hole = pos_;
+      hole = coords_.pos;
       axis_target(hole);
-      hole[ax] = pos_[ax];
+      hole[ax] = coords_.pos[ax];
     } else if (k > 0) {  // G91: each repeat moves by the increment again; G90: the same hole
       for (int a = 0; a < kAxes; ++a)
-        if (a != ax) hole[a] = pos_[a] + step[a];
+        if (a != ax) hole[a] = coords_.pos[a] + step[a];
     }
     Hole at = h;
     at.at = hole;
@@ -167,15 +167,15 @@ void Executor::cycle_m_codes() {
 }
 
 void Executor::cycle_move(const Hole& h, MoveKind kind, double level) {
-  AxisVector t = pos_;
+  AxisVector t = coords_.pos;
   t[h.axis] = level;
-  if (t[h.axis] != pos_[h.axis]) linear(kind, t);
+  if (t[h.axis] != coords_.pos[h.axis]) linear(kind, t);
 }
 
 void Executor::cycle_dwell() {
   Move m;
   m.kind = MoveKind::dwell;
-  m.start = m.end = pos_;
+  m.start = m.end = coords_.pos;
   m.seconds = cycle_p_;
   emit(m);
 }
@@ -185,8 +185,8 @@ void Executor::cycle_dwell() {
 void Executor::drill_hole(const Hole& h) {
   const int g = modal_.cycle;
   AxisVector at = h.at;
-  at[h.axis] = pos_[h.axis];
-  if (at != pos_) linear(MoveKind::rapid, at);
+  at[h.axis] = coords_.pos[h.axis];
+  if (at != coords_.pos) linear(MoveKind::rapid, at);
   if (!m_codes_.empty()) [[unlikely]] cycle_m_codes();
   if (g == 76 || g == 87 || g == 88) return boring_hole(h);
   if (g == 84 || g == 74) return tapping_hole(h);

@@ -77,7 +77,7 @@ void Executor::single_cycle(const AxisVector& target) {
     alarm("NC9001", fmt::format("G{} ({}) in the G{} plane is not supported yet (G18 only)", written,
                                 cycle_name(code), modal_.plane));
   for (int a = 0; a < kAxes; ++a)
-    if (a != 0 && a != 2 && target[a] != pos_[a])
+    if (a != 0 && a != 2 && target[a] != coords_.pos[a])
       alarm("NC9001", fmt::format("G{} ({}) with a move of an axis other than X and Z is not supported yet", written,
                                   cycle_name(code)));
   AxisVector end = target;
@@ -89,7 +89,7 @@ void Executor::single_cycle(const AxisVector& target) {
   const double r = lathe_cycle_.r;
   const double angle = code == 92 ? thread_start_angle() : 0;
 
-  const AxisVector a = pos_;
+  const AxisVector a = coords_.pos;
   AxisVector p1 = a, p3 = end;
   if (code == 94) {
     p1[2] = end[2] + r;
@@ -115,7 +115,7 @@ void Executor::single_cycle(const AxisVector& target) {
     modal_.comp_side = side;
   }
   auto go = [&](MoveKind kind, const AxisVector& to) {
-    if (to != pos_) linear(kind, to);
+    if (to != coords_.pos) linear(kind, to);
   };
   go(MoveKind::rapid, p1);
   if (code == 92) thread_pass(end, a[0], feed_, angle);

@@ -71,13 +71,13 @@ bool Executor::lathe_drilling_block() {
   }
   const int repeat = cycle_repeat_count();
 
-  const AxisVector base = pos_;
-  AxisVector hole = pos_;
+  const AxisVector base = coords_.pos;
+  AxisVector hole = coords_.pos;
   const bool positioned = axis_target(hole);
   if ((positioned || repeat == 0) && p) cycle_p_ = *p;
   if (!positioned || repeat == 0) return false;  // data only
   if (rolls_) roll_over(hole);
-  hole[ax] = pos_[ax];  // the drilling axis word is the bottom, not a move
+  hole[ax] = coords_.pos[ax];  // the drilling axis word is the bottom, not a move
   if (!cycle_z_)
     alarm("PS0045", fmt::format("address {} not found (G{}, {}): a hole needs its bottom {}{} (the manual names "
                                 "no alarm for it; ncurve stops here)",
@@ -116,7 +116,7 @@ bool Executor::lathe_drilling_block() {
   for (int k = 0; k < repeat; ++k) {
     if (k > 0)
       for (int a = 0; a < kAxes; ++a)
-        if (a != ax) hole[a] = pos_[a] + step[a];
+        if (a != ax) hole[a] = coords_.pos[a] + step[a];
     Hole at = h;
     at.at = hole;
     lathe_hole(at, q);
@@ -129,8 +129,8 @@ bool Executor::lathe_drilling_block() {
 void Executor::lathe_hole(const Hole& h, double q) {
   const int g = modal_.cycle;
   AxisVector at = h.at;
-  at[h.axis] = pos_[h.axis];
-  if (at != pos_) linear(MoveKind::rapid, at);
+  at[h.axis] = coords_.pos[h.axis];
+  if (at != coords_.pos) linear(MoveKind::rapid, at);
   if (cycle_clamp_m_ > 0) emit_event(MoveKind::m_code, cycle_clamp_m_);
   cycle_move(h, MoveKind::rapid, h.r);
   auto dwell = [&] {
@@ -175,7 +175,7 @@ void Executor::lathe_hole(const Hole& h, double q) {
     if (profile_.drilling.c_unclamp_dwell > 0) {
       Move m;
       m.kind = MoveKind::dwell;
-      m.start = m.end = pos_;
+      m.start = m.end = coords_.pos;
       m.seconds = profile_.drilling.c_unclamp_dwell;
       emit(m);
     }

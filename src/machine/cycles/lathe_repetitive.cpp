@@ -182,7 +182,7 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
   const std::vector<int> g_codes = g_codes_, m_codes = m_codes_;
   const nc::Block* block = block_;
   const nc::Program* prog = prog_;
-  const AxisVector pos = pos_, tool_shift = tool_shift_;
+  const AxisVector pos = coords_.pos, tool_shift = coords_.tool_shift;
   const int motion = modal_.motion, tool = tool_, lathe_offset = lathe_offset_, last_m = last_m_;
   const bool incremental = modal_.incremental, feed_per_rev = modal_.feed_per_rev, css = modal_.css;
   const double feed = feed_, speed = speed_;
@@ -216,7 +216,7 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
       alarm("PS0325", fmt::format("a jump out of the finishing shape N{}..N{}", r.ns, r.nf));
   }
   if (keep) {
-    pos_ = pos, tool_shift_ = tool_shift;
+    coords_.pos = pos, coords_.tool_shift = tool_shift;
     modal_.motion = motion, tool_ = tool, lathe_offset_ = lathe_offset, last_m_ = last_m;
     modal_.incremental = incremental, modal_.feed_per_rev = feed_per_rev, modal_.css = css;
     feed_ = feed, speed_ = speed;
@@ -229,7 +229,7 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
 
 // G70 P(ns) Q(nf): the shape as programmed, its F S T in effect, then back to the start by rapid.
 void Executor::finishing_cycle(const ShapeRange& r) {
-  const AxisVector start = pos_;
+  const AxisVector start = coords_.pos;
   walk_shape(r, 700, false);
   linear(MoveKind::rapid, start);
 }
@@ -257,7 +257,7 @@ bool Executor::stock_removal_cycle(int g) {
     const bool z = l == 'Z' || (l == 'W' && profile_.gcode_system == 'A');
     if (x || z) (x != facing ? infeed_axis : other_axis) = true;
   }
-  const AxisVector start = pos_;
+  const AxisVector start = coords_.pos;
   const std::vector<Move> moves = walk_shape(range, g, true);
   if (!infeed_axis || moves.empty())
     alarm("PS0065", fmt::format("{}: the first block of the shape (N{}) must move {} (and {} too for type II)", code,
@@ -329,7 +329,7 @@ bool Executor::pattern_repeating_cycle() {
     alarm("PS0321", fmt::format("{}: the number of divisions d is {} (a whole number from 1; {} in the first block, "
                                 "or No.5137)", code, mrc_divisions_, profile_.series10_format ? 'D' : 'R'));
   const ShapeRange range = shape_range(730);
-  const AxisVector start = pos_;
+  const AxisVector start = coords_.pos;
   const std::vector<Move> moves = walk_shape(range, 730, true);
   if (moves.empty()) alarm("PS0065", fmt::format("{}: the shape N{}..N{} makes no move", code, range.ns, range.nf));
   mrc::Pattern p;
@@ -365,9 +365,9 @@ bool Executor::peck_cycle(int g) {
   if (one_block ? has('D') : has('R'))
     relief = one_block ? as_written(word('D').value, true, false) * (modal_.inch ? 25.4 : 1) : dimension(word('R'));
   if (mrc_return_ < 0) alarm("PS0062", fmt::format("{}: the return amount e is negative", code));
-  AxisVector end = pos_;
+  AxisVector end = coords_.pos;
   axis_target(end);
-  const bool moves_x = std::fabs(end[0] - pos_[0]) > 1e-9, moves_z = std::fabs(end[2] - pos_[2]) > 1e-9;
+  const bool moves_x = std::fabs(end[0] - coords_.pos[0]) > 1e-9, moves_z = std::fabs(end[2] - coords_.pos[2]) > 1e-9;
   if (moves_x && !(step_x > 0))
     alarm("PS0319", fmt::format("{}: X moves but Δi ({}) is 0: give the {} along X", code, di,
                                 g == 740 ? "travel between cuts" : "depth of each cut"));
@@ -377,7 +377,7 @@ bool Executor::peck_cycle(int g) {
   if ((g == 740 ? moves_x : moves_z) && relief < 0)
     alarm("PS0318", fmt::format("{}: the relief Δd at the bottom is negative; its direction follows the travel", code));
   mrc::Pecking k;
-  k.start = p2(pos_), k.end = p2(end);
+  k.start = p2(coords_.pos), k.end = p2(end);
   k.back = mrc_return_;
   k.relief = relief;
   if (g == 740) {
@@ -401,7 +401,7 @@ bool Executor::peck_cycle(int g) {
 void Executor::emit_cycle_path(const std::vector<mrc::Step>& path, bool transposed) {
   for (mrc::Step s : path) {
     if (transposed) s.end = mrc::transposed(s.end), s.centre = mrc::transposed(s.centre), s.sweep = -s.sweep;
-    AxisVector target = pos_;
+    AxisVector target = coords_.pos;
     target[0] = s.end.x, target[2] = s.end.y;
     if (!s.arc) {
       linear(s.rapid ? MoveKind::rapid : MoveKind::line, target);
@@ -412,15 +412,15 @@ void Executor::emit_cycle_path(const std::vector<mrc::Step>& path, bool transpos
     m.kind = MoveKind::arc;
     m.clockwise = s.sweep < 0;
     m.plane = 18;
-    m.start = pos_;
+    m.start = coords_.pos;
     m.end = target;
-    m.center = {s.centre.x, pos_[1], s.centre.y};
+    m.center = {s.centre.x, coords_.pos[1], s.centre.y};
     m.sweep = s.sweep;
-    const double rs = std::hypot(pos_[0] - s.centre.x, pos_[2] - s.centre.y);
+    const double rs = std::hypot(coords_.pos[0] - s.centre.x, coords_.pos[2] - s.centre.y);
     m.length = std::fabs(s.sweep) * rs;
     m.feed = feed_;
     m.seconds = arc_feed_seconds(m, m.length);
-    pos_ = target;
+    coords_.pos = target;
     emit(m);
   }
 }

@@ -3,7 +3,7 @@
 // (docs/polar-cylindrical.md). In either mode the program is a contour in a Cartesian plane: for
 // G12.1 the linear axis (No.5460) and a hypothetical axis addressed by the rotary axis (No.5461),
 // for G07.1 the surface of the cylinder of radius r developed flat, the rotary axis's angle read as
-// the arc length r * angle. The interpreter moves in that plane (pos_ holds it: the hypothetical or
+// the arc length r * angle. The interpreter moves in that plane (coords_.pos holds it: the hypothetical or
 // developed coordinate sits in the slot of the linear axis it stands beside), cutter compensation
 // offsets the contour there, and deliver() turns each move into the linear and rotary axes' moves.
 #include <fmt/format.h>
@@ -83,11 +83,11 @@ void Executor::polar_start(std::uint16_t column) {
   d.p = lin;
   d.q = d.slot;
   d.saved_plane = modal_.plane;
-  d.held = pos_[d.slot];
-  d.sign = pos_[lin] < 0 ? -1 : 1;
-  d.angle0 = pos_[rot];  // "the angle of 0 for the position of the tool when G12.1 is specified"
-  d.machine = pos_;
-  pos_[d.slot] = 0;  // "the virtual axis is at coordinate 0 immediately after G12.1"
+  d.held = coords_.pos[d.slot];
+  d.sign = coords_.pos[lin] < 0 ? -1 : 1;
+  d.angle0 = coords_.pos[rot];  // "the angle of 0 for the position of the tool when G12.1 is specified"
+  d.machine = coords_.pos;
+  coords_.pos[d.slot] = 0;  // "the virtual axis is at coordinate 0 immediately after G12.1"
   modal_.plane = lin == 0 ? 17 : lin == 1 ? 19 : 18;
   dev_ = d;
   developed_ = developed_hook_ = true;
@@ -158,20 +158,20 @@ void Executor::cylinder_code(std::uint16_t column) {
   d.q = pa.q;
   d.radius = r;
   d.saved_plane = modal_.plane;
-  d.machine = pos_;
+  d.machine = coords_.pos;
   if (has_axis_[slot]) {  // the linear axis the rotary axis stands beside keeps moving in a free slot
-    d.held = pos_[slot];
+    d.held = coords_.pos[slot];
     for (int k = 0; k < 3 && d.spare < 0; ++k)
       if (!has_axis_[k] && k != slot) d.spare = k;
-    if (d.spare >= 0) pos_[d.spare] = pos_[slot];
+    if (d.spare >= 0) coords_.pos[d.spare] = coords_.pos[slot];
   }
-  pos_[slot] = pos_[a] / kDeg * r;
+  coords_.pos[slot] = coords_.pos[a] / kDeg * r;
   dev_ = d;
   developed_ = developed_hook_ = true;
 }
 
 void Executor::end_developed() {
-  pos_ = dev_->machine;
+  coords_.pos = dev_->machine;
   modal_.plane = dev_->saved_plane;
   dev_.reset();
   developed_ = false;  // developed_hook_ stays for the block's axis words (G07.1 C0)

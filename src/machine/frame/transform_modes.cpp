@@ -2,7 +2,7 @@
 // them: polar coordinate command (G15/G16, group 17), programmable mirror image (G50.1/G51.1,
 // group 22), scaling (G50/G51, group 11) and coordinate system rotation (G68/G69, group 16).
 // A programmed point goes through polar -> mirror -> scaling -> rotation (transforms.hpp); cutter
-// compensation then offsets the transformed path. The machine's position (pos_) is always the
+// compensation then offsets the transformed path. The machine's position (coords_.pos) is always the
 // transformed one; the programmed position is its inverse image.
 #include <fmt/format.h>
 
@@ -150,7 +150,7 @@ void Executor::transform_codes(std::vector<int>& one_shot) {
         if (has_axis_[a]) factor[a] = p;
     }
     // the centre: X Y Z as absolute coordinates (through the mirror), else the tool's position
-    AxisVector centre = pos_;
+    AxisVector centre = coords_.pos;
     for (int a = 0; a < 3; ++a)
       if (has_axis_[a] && has(kAxisLetters[a])) {
         const double c = dimension(word(kAxisLetters[a]));
@@ -182,8 +182,8 @@ void Executor::transform_codes(std::vector<int>& one_shot) {
     for (int a : {pa.p, pa.q})
       if (has(kAxisLetters[a])) given_centre[a] = dimension(word(kAxisLetters[a]));
     const AxisVector mapped = xf_.mirror_and_scale(given_centre);
-    xf_.centre = {has(kAxisLetters[pa.p]) ? mapped[pa.p] : pos_[pa.p],
-                  has(kAxisLetters[pa.q]) ? mapped[pa.q] : pos_[pa.q]};
+    xf_.centre = {has(kAxisLetters[pa.p]) ? mapped[pa.p] : coords_.pos[pa.p],
+                  has(kAxisLetters[pa.q]) ? mapped[pa.q] : coords_.pos[pa.q]};
     // a mirror on one axis of the plane reverses the direction of rotation
     xf_.angle_deg = xf_.mirrored[pa.p] != xf_.mirrored[pa.q] ? -angle : angle;
     xf_.p = pa.p;
@@ -298,6 +298,6 @@ V2 Executor::transformed_plane_vector(V2 v) const {
   return {w[pa.p], w[pa.q]};
 }
 
-AxisVector Executor::program_position() const { return xf_.active() ? xf_.invert(pos_) : pos_; }
+AxisVector Executor::program_position() const { return xf_.active() ? xf_.invert(coords_.pos) : coords_.pos; }
 
 }  // namespace ncurve::machine

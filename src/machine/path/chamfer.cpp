@@ -106,7 +106,7 @@ void Executor::arm_corner(const AxisVector& target) {
       r.column = square->column;
       const double v = dimension(*square);
       r.amount = std::fabs(v);
-      const double dp = target[pa.p] - pos_[pa.p], dq = target[pa.q] - pos_[pa.q];
+      const double dp = target[pa.p] - coords_.pos[pa.p], dq = target[pa.q] - coords_.pos[pa.q];
       const bool along_p = std::fabs(dp) > kTol, along_q = std::fabs(dq) > kTol;
       if (along_p && along_q && !ccr)
         alarm("PS0054", fmt::format("no taper allowed after CHF/CNR: {} of chamfering or corner R needs a block "
@@ -128,10 +128,10 @@ void Executor::arm_corner(const AxisVector& target) {
                                       "{} the chamfer is {}",
                                       square->letter, axis_name(moving), axis_name(moving), wants),
                 square->column);
-        if (std::fabs(target[moving] - pos_[moving]) < r.amount - kTol)
+        if (std::fabs(target[moving] - coords_.pos[moving]) < r.amount - kTol)
           alarm("PS0055", fmt::format("missing move value in CHF/CNR: the block moves {:g} mm along {}, less than "
                                       "the {} {:g} mm",
-                                      std::fabs(target[moving] - pos_[moving]), axis_name(moving),
+                                      std::fabs(target[moving] - coords_.pos[moving]), axis_name(moving),
                                       r.kind == corner::Kind::round ? "corner R" : "chamfer", r.amount),
                 square->column);
       }

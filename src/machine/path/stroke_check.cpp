@@ -138,7 +138,7 @@ void Executor::check_stroke(const Move& m) const {
     throw nc::Alarm(nc::Diagnostic{nc::Severity::error, std::move(code), std::move(message), nc::Span{m.file, m.line, 1, 1}});
   };
   AxisVector shift{};
-  for (int a = 0; a < kAxes; ++a) shift[a] = origin_[a] + tool_shift_[a];
+  for (int a = 0; a < kAxes; ++a) shift[a] = coords_.origin[a] + coords_.tool_shift[a];
   auto machine = [&](AxisVector p) {
     for (int a = 0; a < kAxes; ++a) p[a] += shift[a];
     return p;
