@@ -83,7 +83,18 @@ private:
   void check_runaway();  // --max-steps and --max-seconds
   void count_block_move();  // a block's moves past its first count as steps
   std::uint64_t steps() const;
+  // an NC block in FANUC's order (dispatch.cpp)
+  struct SubprogramCall {  // a subprogram an M or T code calls after its block, as M98 does
+    int program = 0, m = -1;
+    std::uint16_t column = 0;
+  };
   void exec_nc(const nc::Block& b);
+  bool read_words(const nc::Block& b);
+  bool macro_call_block(const nc::Block& b, SubprogramCall& sub);
+  void word_settings(const std::vector<int>& one_shot, SubprogramCall& sub);
+  bool block_motion(const std::vector<int>& one_shot);
+  bool block_m_codes(const nc::Block& b, const SubprogramCall& sub);
+  void modal_call_after_move(const nc::Block& b);
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
   const std::vector<std::int32_t>& loops_of(const nc::Program* p);
