@@ -62,6 +62,7 @@ void Executor::exec_nc(const Block& b) {
   if (rigid_pending_ || std::ranges::find(m_codes_, 29) != m_codes_.end()) rigid_tapping_words();
   word_settings(one_shot, sub);
   const bool moved = block_motion(one_shot);
+  if (modal_.comp_side != 0 && moved && !profile_.lathe()) [[unlikely]] check_radius_offset();
   if (block_m_codes(b, sub)) return;  // M98, M99, M02, M30 leave the block
   if (sub.program != 0) {
     Frame f;
@@ -71,6 +72,32 @@ void Executor::exec_nc(const Block& b) {
     return;
   }
   if (moved && !modal_calls_.empty()) modal_call_after_move(b);
+}
+
+// G41/G42 moving with a radius offset of 0 (D0, no D, or an offset never set): the control accepts it
+// and the tool's centre runs on the programmed contour. Checked once a start-up and D number.
+void Executor::check_radius_offset() {
+  if (radius_checked_ == d_) return;
+  radius_checked_ = d_;
+  if (radius_offset(d_) != 0) return;
+  const char* code = modal_.comp_side > 0 ? "G41" : "G42";
+  std::uint16_t column = has('D') ? word('D').column : 0;
+  for (const Cmd& c : cmds_)
+    if (c.letter == 'G' && (round_int(c.value * 10) == 410 || round_int(c.value * 10) == 420)) column = c.column;
+  if (d_ == 0) {
+    warn_once("NC2070", fmt::format("{} with D0 (or no D): offset number 0 is always 0, so the tool's centre runs on "
+                                    "the programmed contour and the part is cut the tool's radius beyond it all "
+                                    "round (the control gives no alarm); give the D number of the tool's radius",
+                                    code),
+              column);
+    return;
+  }
+  const int l = profile_.offset_memory == OffsetMemory::A ? 11 : profile_.offset_memory == OffsetMemory::B ? 10 : 12;
+  warn_once("NC2071", fmt::format("{} with D{}: offset {} is 0 mm in the machine profile, so the tool's centre runs on "
+                                  "the programmed contour; give the tool's radius in the profile's [tool_offsets] or "
+                                  "with G10 L{} P{} R.. to simulate the compensated path",
+                                  code, d_, d_, l, d_),
+            column);
 }
 
 // The block's words, values evaluated; false for a block with none.

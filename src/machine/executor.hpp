@@ -95,6 +95,8 @@ private:
   bool block_motion(const std::vector<int>& one_shot);
   bool block_m_codes(const nc::Block& b, const SubprogramCall& sub);
   void modal_call_after_move(const nc::Block& b);
+  void check_radius_offset();  // NC2070: G41/G42 moving with a radius offset of 0
+  int radius_checked_ = -1;    // the D number checked since the last G40 (-1: none)
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
   const std::vector<std::int32_t>& loops_of(const nc::Program* p);

@@ -95,6 +95,7 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
         modal_.plane = g / 10;
         break;
       case 400:
+        radius_checked_ = -1;
         if (modal_.comp_side != 0 || comp_->offset_mode()) {
           modal_.comp_side = 0;
           const PlaneAxes pa = plane_axes(modal_.plane);

@@ -342,3 +342,39 @@ TEST(Compensation, TypeCShiftsInTheStartUpBlock) {
   EXPECT_EQ(mq[1].start[0], 0.0);
   expect_end(mq[1], 10, -10, "no offset left");
 }
+
+namespace {
+int count_code(const ncurve::test::Ran& r, const std::string& code) {
+  int n = 0;
+  for (const auto& w : r.result.warnings) n += w.code == code;
+  return n;
+}
+}  // namespace
+
+// G41/G42 with D0 or no D runs the tool's centre on the contour with no alarm on the control: a
+// warning at the start-up block (NC2070); a D whose offset the profile lacks says so (NC2071).
+TEST(Compensation, ZeroRadiusOffsetWarns) {
+  for (const char* start : {"G41 G01 X30. Y0 D0 F400.", "G41 G01 X30. Y0 F400.", "G42 D0 G01 X30. Y0 F400."}) {
+    auto r = run(fmt::format("G90 G00 X0 Y-20.\n{}\nY30.\nX0\nG40 Y-20.\nM30\n", start));
+    ASSERT_TRUE(r.result.ok()) << start;
+    EXPECT_EQ(count_code(r, "NC2070"), 1) << start;
+    EXPECT_EQ(r.result.warnings.front().span.line, 2u) << start;
+  }
+  auto unset = run("G90 G00 X0 Y-20.\nG41 G01 X30. Y0 D7 F400.\nY30.\nG40 X0 Y-20.\nM30\n");
+  EXPECT_EQ(count_code(unset, "NC2071"), 1);
+  EXPECT_EQ(count_code(unset, "NC2070"), 0);
+}
+
+TEST(Compensation, RadiusOffsetGivenDoesNotWarn) {
+  // D on the start-up block, or on a block of its own before the first move, or changed in offset mode
+  for (const char* prog : {"G10 L11 P1 R5.\nG90 G00 X0 Y-20.\nG41 G01 X30. Y0 D1 F400.\nY30.\nG40 X0 Y-20.\nM30\n",
+                           "G10 L11 P1 R5.\nG90 G00 X0 Y-20.\nG41\nD1\nG01 X30. Y0 F400.\nY30.\nG40 X0 Y-20.\nM30\n",
+                           "G10 L11 P1 R5.\nG10 L11 P2 R4.\nG41 G01 X30. Y0 D1 F400.\nY30. D2\nG40 X0 Y-20.\nM30\n"}) {
+    auto r = run(prog);
+    ASSERT_TRUE(r.result.ok()) << prog;
+    EXPECT_EQ(count_code(r, "NC2070") + count_code(r, "NC2071"), 0) << prog;
+  }
+  // a lathe's tool-nose radius compensation with a sharp tool is not a mistake of the program
+  auto lathe = run("G00 X40. Z5.\nG42 G01 X30. Z0 F0.2\nZ-20.\nG40 X40.\nM30\n", machine::default_lathe());
+  EXPECT_EQ(count_code(lathe, "NC2070") + count_code(lathe, "NC2071"), 0);
+}
