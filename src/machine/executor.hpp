@@ -17,6 +17,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
+#include "machine/path/statistics.hpp"
 #include "machine/frame/transforms.hpp"
 
 namespace ncurve::machine {
@@ -25,7 +26,7 @@ namespace mrc {
 struct Step;
 }
 
-class Executor {
+class Executor final : private SetupSource {
 public:
   Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options = {});
   RunResult run(MoveSink& sink);
@@ -97,8 +98,8 @@ private:
   void arc(const AxisVector& target, bool clockwise);
   void emit(Move& m);
   void emit_programmed(Move& m);  // emit() past chamfering: compensation, then deliver
-  void deliver(Move& m);  // stats and the sink: the moves as the tool makes them
-  void record(Move& m);   // deliver() past the polar and cylindrical interpolation modes
+  void deliver(Move& m);  // the path stages past compensation: the moves as the tool makes them
+  Setup setup_now() const override;  // for path_stats_
   bool compensating() const;
   void end_of_block_compensation(bool g40, bool g41);
   V2 nose_tip() const;
@@ -112,7 +113,6 @@ private:
   void data_setting();
   void set_origin();
   void warn_mixed_decimal_points(const nc::Program& p);
-  void note_extent(const AxisVector& p);
   double minutes_per_rev(double r0, double r1) const;
   double feed_seconds(double length, double r0, double r1) const;
   double arc_feed_seconds(const Move& m, double planar) const;
@@ -324,9 +324,6 @@ private:
   const ProgramLibrary& library_;
   RunOptions options_;
   nc::EvalOptions eval_options_;
-  MoveSink* sink_ = nullptr;
-  Setup setup_;              // the last one the sink was told (record)
-  bool setup_sent_ = false;
   RunResult result_;
 
   std::vector<Frame> frames_;
@@ -459,6 +456,9 @@ private:
   int g76_tool_angle_ = profile_.g76_tool_angle;
   double g76_min_depth_ = profile_.g76_min_depth;
   double g76_allowance_ = profile_.g76_allowance;
+
+  // ---- the path stages (path/stage.hpp), linked in the constructor; run() links the last to its sink ----
+  Statistics path_stats_{result_.stats, *this};
 };
 
 }  // namespace ncurve::machine

@@ -207,8 +207,8 @@ void Executor::warn_mixed_decimal_points(const nc::Program& program) {
 }
 
 RunResult Executor::run(MoveSink& sink) {
-  sink_ = &sink;
-  setup_sent_ = false;
+  path_stats_.link(sink);
+  path_stats_.restart();
   result_ = RunResult{};
   const nc::Program* main = library_.main();
   if (!main) {
@@ -257,7 +257,6 @@ RunResult Executor::run(MoveSink& sink) {
     }
   }
   if (observer_) observer_->finished(moves_delivered(), modal_state());
-  sink_ = nullptr;
   return result_;
 }
 

@@ -302,19 +302,6 @@ void Executor::motion(const AxisVector& target) {
   xf_arc_ = false;
 }
 
-void Executor::note_extent(const AxisVector& p) {
-  RunStats& s = result_.stats;
-  if (!s.has_extent) {
-    s.min = s.max = p;
-    s.has_extent = true;
-    return;
-  }
-  for (int a = 0; a < kAxes; ++a) {
-    s.min[a] = std::min(s.min[a], p[a]);
-    s.max[a] = std::max(s.max[a], p[a]);
-  }
-}
-
 void Executor::emit(Move& m) {
   count_block_move();
   m.program = prog_ ? prog_->number : -1;
@@ -381,28 +368,10 @@ void Executor::deliver(Move& m) {
     m.end[2] -= tip.x, m.end[0] -= tip.y;
     if (m.kind == MoveKind::arc) m.center[2] -= tip.x, m.center[0] -= tip.y;
   }
-  record(m);
+  path_stats_.on_move(m);
 }
 
-void Executor::record(Move& m) {
-  RunStats& s = result_.stats;
-  ++s.by_kind[static_cast<int>(m.kind)];
-  if (m.is_motion()) {
-    ++s.motions;
-    if (m.kind == MoveKind::rapid) s.rapid_length += m.length;
-    else s.feed_length += m.length;
-    if (s.motions == 1) note_extent(m.start);
-    note_extent(m.end);
-  }
-  s.seconds += m.seconds;
-  const Setup now{work_index_, origin_, length_comp_, h_};
-  if (!setup_sent_ || !(now == setup_)) {
-    setup_ = now;
-    setup_sent_ = true;
-    sink_->on_setup(now);
-  }
-  sink_->on_move(m);
-}
+Setup Executor::setup_now() const { return {work_index_, origin_, length_comp_, h_}; }
 
 bool Executor::compensating() const {
   return comp_side_ != 0 || comp_->offset_mode() || comp_->tool_position().has_value();
@@ -577,7 +546,7 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
       AxisVector p = pos_;
       p[pa.p] = cp + rs * std::cos(ang);
       p[pa.q] = cq + rs * std::sin(ang);
-      note_extent(p);
+      path_stats_.note_extent(p);
     }
   }
   pos_ = target;

@@ -256,7 +256,7 @@ void Executor::deliver_developed(Move& m) {
   Developed& d = *dev_;
   if (!m.is_motion()) {
     m.start = m.end = d.machine;
-    return record(m);
+    return path_stats_.on_move(m);
   }
   const PlanePath path = PlanePath::of(m, d.p, d.q);
   auto along = [&](double t) {  // every axis but the plane's, linearly; the plane's on the contour
@@ -323,7 +323,7 @@ void Executor::deliver_developed(Move& m) {
                                   std::min(std::fabs(piece.start[d.linear]), std::fabs(piece.end[d.linear])));
     d.machine = piece.end;
     if (stroke_check_) check_stroke(piece);  // stroke_check.cpp
-    record(piece);
+    path_stats_.on_move(piece);
   }
 }
 
