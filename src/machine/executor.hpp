@@ -17,7 +17,9 @@
 #include "machine/interpreter.hpp"
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
+#include "machine/path/nose_centre.hpp"
 #include "machine/path/statistics.hpp"
+#include "machine/path/stroke_check.hpp"
 #include "machine/frame/transforms.hpp"
 
 namespace ncurve::machine {
@@ -26,7 +28,7 @@ namespace mrc {
 struct Step;
 }
 
-class Executor final : private SetupSource {
+class Executor final : private SetupSource, StrokeFrame, NoseTipSource {
 public:
   Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options = {});
   RunResult run(MoveSink& sink);
@@ -100,6 +102,9 @@ private:
   void emit_programmed(Move& m);  // emit() past chamfering: compensation, then deliver
   void deliver(Move& m);  // the path stages past compensation: the moves as the tool makes them
   Setup setup_now() const override;  // for path_stats_
+  AxisVector machine_shift() const override;  // for path_stroke_: origin and tool shift
+  V2 nose_tip_now() const override;  // for path_nose_: the tip's offset, none in G12.1/G07.1
+  static void path_alarm(const Move& at, const std::string& code, const std::string& message);  // the stages' alarm
   bool compensating() const;
   void end_of_block_compensation(bool g40, bool g41);
   V2 nose_tip() const;
@@ -259,16 +264,11 @@ private:
   bool single_direction_block();          // a one-shot G60 block
   void single_direction(const AxisVector& target);
   bool skip_move(int g);                  // G31, G31 P1..P4, G31.1..G31.4
-  void init_stroke_check();
-  void stroke_area_command();             // G22 with its area
-  void stroke_area_switch(bool on);       // G22 / G23
-  void check_stroke(const Move& m) const; // deliver(): a move past a stored stroke limit is an alarm
+  void stroke_area_command();             // G22 with its area (stroke_area.cpp)
   AxisVector intermediate_{};
   unsigned intermediate_axes_ = 0;        // axes G28/G30/G30.1 have given an intermediate point
   std::optional<AxisVector> skip_position_;  // #5061..: where the last G31 ended
-  bool stroke_check_ = false;             // some stored stroke limit is in force
-  bool stroke2_on_ = true;                // G22 (check 2 on) or G23
-  AxisVector stroke1_plus_{}, stroke1_minus_{}, stroke2_plus_{}, stroke2_minus_{};
+  StrokeLimits stroke_;                   // stored stroke limits (path_stroke_ checks the moves)
   // ---- end of reference position moves ----
 
   // variables (variables.cpp)
@@ -279,7 +279,7 @@ private:
   nc::Value read_system(int n, std::uint16_t column);
   int modal_code(int group) const;  // #4001..#4022 (variables.cpp)
   void write_system(int n, nc::Value v, std::uint16_t column);
-  double program_units(int axis, double mm_value) const;  // for position variables
+  double program_units(int axis, double mm_value) const override;  // for position variables
 
   [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
                           std::uint32_t length = 1) const;
@@ -458,6 +458,8 @@ private:
   double g76_allowance_ = profile_.g76_allowance;
 
   // ---- the path stages (path/stage.hpp), linked in the constructor; run() links the last to its sink ----
+  StrokeCheck path_stroke_{stroke_, *this, path_alarm};
+  NoseCentre path_nose_{*this};  // linked in with --nose-centre on a lathe
   Statistics path_stats_{result_.stats, *this};
 };
 

@@ -75,6 +75,16 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   cs.blocks_without_motion = profile_.compensation.blocks_read - 2;
   cs.interference_check = profile_.compensation.interference_check;
   comp_.emplace(radius_compensation(cs, [this](Move& m) { deliver(m); }));
+  if (options_.nose_centre && profile_.lathe()) {
+    path_stroke_.link(path_nose_);
+    path_nose_.link(path_stats_);
+  } else {
+    path_stroke_.link(path_stats_);
+  }
+}
+
+void Executor::path_alarm(const Move& at, const std::string& code, const std::string& message) {
+  throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{at.file, at.line, 1, 1}});
 }
 
 // A compensation whose alarms stop the run and whose warnings join the run's, at the block of the move.
@@ -82,9 +92,7 @@ RadiusCompensation Executor::radius_compensation(CompensationSettings settings,
                                                     RadiusCompensation::Deliver deliver) {
   return RadiusCompensation(
       settings, std::move(deliver),
-      [](const Move& at, const std::string& code, const std::string& message) {
-        throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{at.file, at.line, 1, 1}});
-      },
+      path_alarm,
       [this](const Move& at, const std::string& code, const std::string& message) {
         if (result_.warnings.size() < 1000)
           result_.warnings.push_back(
@@ -228,7 +236,7 @@ RunResult Executor::run(MoveSink& sink) {
   look_ahead_ = profile_.motion.look_ahead_at_power_on;
   set_origin();
   for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
-  init_stroke_check();
+  stroke_ = StrokeLimits::power_on(profile_, has_axis_);
 
   reached_.clear();
   for (const auto& p : library_.programs())  // the main file's; a library program's when it is called

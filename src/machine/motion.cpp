@@ -119,7 +119,7 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
       case 270: case 290: case 301: case 310: case 311: case 312: case 313: case 314: case 220:
         one_shot.push_back(g);  // reference_moves.cpp, skip.cpp, stroke_check.cpp
         break;
-      case 230: stroke_area_switch(false); break;  // G22 comes with its area (one_shot)
+      case 230: stroke_.switch_area(false); break;  // G22 comes with its area (one_shot)
       case 250: case 260: speed_fluctuation_check_ = g == 260; break;  // nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 450: case 460: case 470: case 480:  // tool position offset (position_offset.cpp)
@@ -361,17 +361,18 @@ void Executor::emit_programmed(Move& m) {
 
 void Executor::deliver(Move& m) {
   if (developed_) [[unlikely]] return deliver_developed(m);  // G12.1, G07.1: the machine's moves
-  if (stroke_check_) [[unlikely]] check_stroke(m);  // stroke_check.cpp
-  if (options_.nose_centre && profile_.lathe() && m.is_motion()) {
-    const V2 tip = nose_tip();  // (Z, X): the imaginary tip from the nose centre
-    m.start[2] -= tip.x, m.start[0] -= tip.y;
-    m.end[2] -= tip.x, m.end[0] -= tip.y;
-    if (m.kind == MoveKind::arc) m.center[2] -= tip.x, m.center[0] -= tip.y;
-  }
-  path_stats_.on_move(m);
+  path_stroke_.on_move(m);
 }
 
 Setup Executor::setup_now() const { return {work_index_, origin_, length_comp_, h_}; }
+
+AxisVector Executor::machine_shift() const {
+  AxisVector shift{};
+  for (int a = 0; a < kAxes; ++a) shift[a] = origin_[a] + tool_shift_[a];
+  return shift;
+}
+
+V2 Executor::nose_tip_now() const { return developed_ ? V2{} : nose_tip(); }
 
 bool Executor::compensating() const {
   return comp_side_ != 0 || comp_->offset_mode() || comp_->tool_position().has_value();

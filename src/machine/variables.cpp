@@ -28,7 +28,7 @@ int Executor::modal_code(int group) const {
       m == kLatheC ? (inch_ ? 700 : 710) : (inch_ ? 200 : 210),
       comp_side_ > 0 ? 410 : comp_side_ < 0 ? 420 : 400,
       length_comp_ * 10,
-      stroke2_on_ ? 220 : 230,
+      stroke_.area_on ? 220 : 230,
       cycle_ == 0 ? 800 : cycle_ * 10,
       cycle_return_initial_ ? 980 : 990,
       css_ ? 960 : 970,

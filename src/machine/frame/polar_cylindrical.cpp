@@ -322,8 +322,7 @@ void Executor::deliver_developed(Move& m) {
     if (d.polar) warn_polar_speed(piece, piece.end[d.rotary] - piece.start[d.rotary], piece.length,
                                   std::min(std::fabs(piece.start[d.linear]), std::fabs(piece.end[d.linear])));
     d.machine = piece.end;
-    if (stroke_check_) check_stroke(piece);  // stroke_check.cpp
-    path_stats_.on_move(piece);
+    path_stroke_.on_move(piece);
   }
 }
 
