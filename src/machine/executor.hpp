@@ -28,7 +28,7 @@ namespace mrc {
 struct Step;
 }
 
-class Executor final : private SetupSource, StrokeFrame, NoseTipSource {
+class Executor final : private StrokeFrame, NoseTipSource {
 public:
   Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options = {});
   RunResult run(MoveSink& sink);
@@ -101,7 +101,6 @@ private:
   void emit(Move& m);
   void emit_programmed(Move& m);  // emit() past chamfering: compensation, then deliver
   void deliver(Move& m);  // the path stages past compensation: the moves as the tool makes them
-  Setup setup_now() const override;  // for path_stats_
   AxisVector machine_shift() const override;  // for path_stroke_: origin and tool shift
   V2 nose_tip_now() const override;  // for path_nose_: the tip's offset, none in G12.1/G07.1
   static void path_alarm(const Move& at, const std::string& code, const std::string& message);  // the stages' alarm
@@ -460,7 +459,7 @@ private:
   // ---- the path stages (path/stage.hpp), linked in the constructor; run() links the last to its sink ----
   StrokeCheck path_stroke_{stroke_, *this, path_alarm};
   NoseCentre path_nose_{*this};  // linked in with --nose-centre on a lathe
-  Statistics path_stats_{result_.stats, *this};
+  Statistics path_stats_{result_.stats, SetupView{&work_index_, &origin_, &length_comp_, &h_}};
 };
 
 }  // namespace ncurve::machine

@@ -364,8 +364,6 @@ void Executor::deliver(Move& m) {
   path_stroke_.on_move(m);
 }
 
-Setup Executor::setup_now() const { return {work_index_, origin_, length_comp_, h_}; }
-
 AxisVector Executor::machine_shift() const {
   AxisVector shift{};
   for (int a = 0; a < kAxes; ++a) shift[a] = origin_[a] + tool_shift_[a];

@@ -34,9 +34,10 @@ struct Recorder final : MoveSink {
   }
 };
 
-struct FixedSetup final : SetupSource {
+// The control's setup the statistics read.
+struct FixedSetup {
   Setup now;
-  Setup setup_now() const override { return now; }
+  operator SetupView() const { return {&now.work, &now.origin, &now.length_comp, &now.h}; }
 };
 
 Move motion(MoveKind kind, AxisVector from, AxisVector to, double length, double seconds, std::uint32_t line = 1) {

@@ -1,21 +1,6 @@
 #include "machine/path/statistics.hpp"
 
-#include <algorithm>
-
 namespace ncurve::machine {
-
-void Statistics::note_extent(const AxisVector& p) {
-  RunStats& s = stats_;
-  if (!s.has_extent) {
-    s.min = s.max = p;
-    s.has_extent = true;
-    return;
-  }
-  for (int a = 0; a < kAxes; ++a) {
-    s.min[a] = std::min(s.min[a], p[a]);
-    s.max[a] = std::max(s.max[a], p[a]);
-  }
-}
 
 void Statistics::on_move(const Move& m) {
   RunStats& s = stats_;
@@ -28,11 +13,10 @@ void Statistics::on_move(const Move& m) {
     note_extent(m.end);
   }
   s.seconds += m.seconds;
-  const Setup now = setup_source_.setup_now();
-  if (!setup_sent_ || !(now == setup_)) {
-    setup_ = now;
+  if (!setup_sent_ || !setup_view_.same_as(setup_)) [[unlikely]] {
+    setup_ = setup_view_.now();
     setup_sent_ = true;
-    next_->on_setup(now);
+    next_->on_setup(setup_);
   }
   next_->on_move(m);
 }
