@@ -17,6 +17,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
+#include "machine/path/developed_conversion.hpp"
 #include "machine/path/nose_centre.hpp"
 #include "machine/path/statistics.hpp"
 #include "machine/path/stroke_check.hpp"
@@ -104,6 +105,7 @@ private:
   AxisVector machine_shift() const override;  // for path_stroke_: origin and tool shift
   V2 nose_tip_now() const override;  // for path_nose_: the tip's offset, none in G12.1/G07.1
   static void path_alarm(const Move& at, const std::string& code, const std::string& message);  // the stages' alarm
+  void path_warning(const Move& at, const std::string& code, const std::string& message);  // and warning
   bool compensating() const;
   void end_of_block_compensation(bool g40, bool g41);
   V2 nose_tip() const;
@@ -188,19 +190,10 @@ private:
   // ---- end of coordinate transforms ----
 
   // ---- polar coordinate interpolation G12.1/G13.1 and cylindrical interpolation G07.1
-  // (polar_cylindrical.cpp): moves are made in the programmed plane, deliver() turns them into the
-  // linear and rotary axes' moves ----
-  struct Developed {
-    bool polar = true;         // G12.1, else G07.1
-    int rotary = 5, linear = 0;  // axes (polar: No.5461, No.5460)
-    int slot = 1;              // where the hypothetical (polar) or developed (G07.1) coordinate is kept
-    int spare = -1;            // G07.1: where the real position of the axis at `slot` is kept (-1: held)
-    int p = 0, q = 1;          // the plane's slots
-    int saved_plane = 17, sign = 1;  // sign: the linear axis's side of the centre (polar)
-    double held = 0, radius = 0;     // held: the axis at `slot`, unmoved; radius: G07.1's r
-    double angle0 = 0, angle = 0;    // polar: the rotary axis at G12.1 (deg), the angle from it (rad)
-    AxisVector machine{};            // where the machine is
-    std::uint32_t warned_line = 0;
+  // (polar_cylindrical.cpp): moves are made in the programmed plane, path_developed_ turns them into
+  // the linear and rotary axes' moves ----
+  struct Developed : DevelopedMode {  // the mode's axes (path_developed_ has them too)
+    int saved_plane = 17;
   };
   bool developed_code(int g, std::uint16_t column);  // false: g is not a code of this machine
   void polar_start(std::uint16_t column);
@@ -208,8 +201,6 @@ private:
   void end_developed();
   void check_code_in_developed(int g, std::uint16_t column) const;  // codes the modes forbid
   bool developed_axis_target(AxisVector& target);  // axis_target in the modes
-  void deliver_developed(Move& m);                 // deliver() in the modes
-  void warn_polar_speed(const Move& m, double degrees, double length, double radius);
   std::optional<Developed> dev_;
   bool developed_ = false;       // dev_ has a value
   bool developed_hook_ = false;  // axis words go to developed_axis_target
@@ -457,6 +448,10 @@ private:
   double g76_allowance_ = profile_.g76_allowance;
 
   // ---- the path stages (path/stage.hpp), linked in the constructor; run() links the last to its sink ----
+  DevelopedConversion path_developed_{options_.path_tolerance, profile_.max_cutting_feed,
+                                      [this](const Move& at, const std::string& code, const std::string& message) {
+                                        path_warning(at, code, message);
+                                      }};
   StrokeCheck path_stroke_{stroke_, *this, path_alarm};
   NoseCentre path_nose_{*this};  // linked in with --nose-centre on a lathe
   Statistics path_stats_{result_.stats, SetupView{&work_index_, &origin_, &length_comp_, &h_}};

@@ -75,6 +75,7 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   cs.blocks_without_motion = profile_.compensation.blocks_read - 2;
   cs.interference_check = profile_.compensation.interference_check;
   comp_.emplace(radius_compensation(cs, [this](Move& m) { deliver(m); }));
+  path_developed_.link(path_stroke_);
   if (options_.nose_centre && profile_.lathe()) {
     path_stroke_.link(path_nose_);
     path_nose_.link(path_stats_);
@@ -87,16 +88,18 @@ void Executor::path_alarm(const Move& at, const std::string& code, const std::st
   throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{at.file, at.line, 1, 1}});
 }
 
+void Executor::path_warning(const Move& at, const std::string& code, const std::string& message) {
+  if (result_.warnings.size() < 1000)
+    result_.warnings.push_back(nc::Diagnostic{nc::Severity::warning, code, message, nc::Span{at.file, at.line, 1, 1}});
+}
+
 // A compensation whose alarms stop the run and whose warnings join the run's, at the block of the move.
 RadiusCompensation Executor::radius_compensation(CompensationSettings settings,
                                                     RadiusCompensation::Deliver deliver) {
   return RadiusCompensation(
       settings, std::move(deliver),
-      path_alarm,
-      [this](const Move& at, const std::string& code, const std::string& message) {
-        if (result_.warnings.size() < 1000)
-          result_.warnings.push_back(
-              nc::Diagnostic{nc::Severity::warning, code, message, nc::Span{at.file, at.line, 1, 1}});
+      path_alarm, [this](const Move& at, const std::string& code, const std::string& message) {
+        path_warning(at, code, message);
       });
 }
 

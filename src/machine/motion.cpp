@@ -359,10 +359,7 @@ void Executor::emit_programmed(Move& m) {
   comp_->element(m, side, radius, cancel);
 }
 
-void Executor::deliver(Move& m) {
-  if (developed_) [[unlikely]] return deliver_developed(m);  // G12.1, G07.1: the machine's moves
-  path_stroke_.on_move(m);
-}
+void Executor::deliver(Move& m) { path_developed_.on_move(m); }
 
 AxisVector Executor::machine_shift() const {
   AxisVector shift{};

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "machine/path/developed_conversion.hpp"
 #include "machine/path/nose_centre.hpp"
 #include "machine/path/statistics.hpp"
 #include "machine/path/stroke_check.hpp"
@@ -322,4 +323,143 @@ TEST(PathNoseCentre, ShiftsMotionsByTheTip) {
   EXPECT_EQ(out.moves[1].sweep, kPi / 2);
   EXPECT_EQ(out.moves[2].start, (AxisVector{30, 0, -40}));
   EXPECT_EQ(out.moves[3].start, (AxisVector{30, 0, -40}));
+}
+
+namespace {
+// G12.1 on a machine X Y Z A B C: X the linear axis, C the rotary axis, the hypothetical axis in
+// Y's slot, the G17 plane; C was at 30 degrees when G12.1 was given, Y at 5.
+DevelopedMode polar_x_c() {
+  DevelopedMode d;
+  d.polar = true;
+  d.linear = 0;
+  d.rotary = 5;
+  d.slot = 1;
+  d.p = 0;
+  d.q = 1;
+  d.held = 5;
+  d.angle0 = 30;
+  return d;
+}
+MoveAlarm no_warning() {
+  return [](const Move&, const std::string& code, const std::string& message) {
+    ADD_FAILURE() << code << " " << message;
+  };
+}
+}  // namespace
+
+// Off, the stage passes the moves on as they are.
+TEST(PathDevelopedConversion, OffPassesMovesOn) {
+  Recorder out;
+  DevelopedConversion stage(0.001, 1e9, no_warning());
+  stage.link(out);
+  EXPECT_FALSE(stage.on());
+  const Move line = motion(MoveKind::line, {1, 2, 3}, {4, 5, 6}, std::sqrt(27.0), 1);
+  stage.on_move(line);
+  ASSERT_EQ(out.moves.size(), 1u);
+  EXPECT_EQ(out.moves[0].end, line.end);
+}
+
+// G07.1 C20. (the rotary axis C beside Y, No.1022 = 6; the G19 plane Y-Z, no Y axis on the
+// machine): 10 pi mm along the developed Y is a quarter of the cylinder's circumference 40 pi,
+// C turns 90 degrees; Z moves as programmed. A line is one piece.
+TEST(PathDevelopedConversion, CylindricalLineTurnsByArcLengthOverRadius) {
+  DevelopedMode d;
+  d.polar = false;
+  d.rotary = 5;
+  d.slot = 1;
+  d.p = 1;
+  d.q = 2;
+  d.radius = 20;
+  Recorder out;
+  DevelopedConversion stage(0.001, 1e9, no_warning());
+  stage.link(out);
+  stage.start(d, {0, 0, 0, 0, 0, 0});
+  Move line = motion(MoveKind::line, {0, 0, 0}, {0, 10 * kPi, -10}, std::hypot(10 * kPi, 10), 2, 4);
+  line.feed = 100;
+  stage.on_move(line);
+  ASSERT_EQ(out.moves.size(), 1u);
+  const Move& m = out.moves[0];
+  EXPECT_EQ(m.kind, MoveKind::line);
+  EXPECT_EQ(m.start, (AxisVector{0, 0, 0, 0, 0, 0}));
+  EXPECT_NEAR(m.end[5], 90, 1e-12);
+  EXPECT_EQ(m.end[1], 0);  // Y: the slot holds the developed coordinate; the machine has none
+  EXPECT_EQ(m.end[2], -10);
+  EXPECT_EQ(m.length, line.length);
+  EXPECT_EQ(m.seconds, 2);
+  EXPECT_EQ(stage.machine(), m.end);
+  // an event happens where the machine is
+  Move event;
+  event.kind = MoveKind::coolant;
+  stage.on_move(event);
+  ASSERT_EQ(out.moves.size(), 2u);
+  EXPECT_EQ(out.moves[1].start, m.end);
+  EXPECT_EQ(out.moves[1].end, m.end);
+  stage.stop();
+  EXPECT_FALSE(stage.on());
+}
+
+// G12.1 with the tool at X10 C30: the line from (10, 0) to (0, 10) of the polar plane ends at
+// radius 10, 90 degrees on: X10, C120. The pieces join, share out the length and the time, and
+// the last carries the block's exact stop, the first its block counts.
+TEST(PathDevelopedConversion, PolarLineEndsAtRadiusAndAngle) {
+  Recorder out;
+  DevelopedConversion stage(0.001, 1e9, no_warning());
+  stage.link(out);
+  stage.start(polar_x_c(), {10, 5, 0, 0, 0, 30});
+  Move line = motion(MoveKind::line, {10, 0, 0}, {0, 10, 0}, 10 * std::sqrt(2.0), 6, 8);
+  line.feed = 100;
+  line.exact_stop = true;
+  line.nc_blocks = 1;
+  stage.on_move(line);
+  ASSERT_GT(out.moves.size(), 2u);
+  EXPECT_EQ(out.moves.front().start, (AxisVector{10, 5, 0, 0, 0, 30}));
+  const Move& last = out.moves.back();
+  EXPECT_NEAR(last.end[0], 10, 1e-12);
+  EXPECT_NEAR(last.end[5], 120, 1e-9);
+  EXPECT_EQ(last.end[1], 5);  // Y held
+  double length = 0, seconds = 0;
+  for (std::size_t i = 0; i < out.moves.size(); ++i) {
+    const Move& p = out.moves[i];
+    if (i > 0) {
+      EXPECT_EQ(p.start, out.moves[i - 1].end);
+    }
+    EXPECT_EQ(p.exact_stop, i + 1 == out.moves.size());
+    EXPECT_EQ(p.nc_blocks, i == 0 ? 1u : 0u);
+    EXPECT_EQ(p.line, 8u);
+    // each piece's end on the line x + y = 10 of the polar plane
+    const double a = (p.end[5] - 30) * kPi / 180;
+    EXPECT_NEAR(p.end[0] * std::cos(a) + p.end[0] * std::sin(a), 10, 1e-9);
+    length += p.length;
+    seconds += p.seconds;
+  }
+  EXPECT_NEAR(length, line.length, 1e-9);
+  EXPECT_NEAR(seconds, 6, 1e-12);
+}
+
+// Through the centre, from (10, 0) to (-10, 0): the linear axis goes to X-10 and C holds at 30.
+TEST(PathDevelopedConversion, PolarLineThroughTheCentreHoldsTheAngle) {
+  Recorder out;
+  DevelopedConversion stage(0.001, 1e9, no_warning());
+  stage.link(out);
+  stage.start(polar_x_c(), {10, 5, 0, 0, 0, 30});
+  stage.on_move(motion(MoveKind::line, {10, 0, 0}, {-10, 0, 0}, 20, 1));
+  ASSERT_FALSE(out.moves.empty());
+  EXPECT_NEAR(out.moves.back().end[0], -10, 1e-12);
+  for (const Move& p : out.moves) EXPECT_NEAR(p.end[5], 30, 1e-12);
+}
+
+// Along X1 from Y-10 to Y10 at F1000 the path passes 1 mm from the centre, where C turns at
+// F / L = 1000 rad/min, 57296 deg/min: above a maximum of 1000 deg/min, warned once for the block.
+TEST(PathDevelopedConversion, PolarSpeedNearTheCentreIsWarnedOnce) {
+  Recorder out;
+  std::vector<std::string> warned;
+  DevelopedConversion stage(0.001, 1000, [&](const Move& at, const std::string& code, const std::string&) {
+    warned.push_back(code + " line " + std::to_string(at.line));
+  });
+  stage.link(out);
+  stage.start(polar_x_c(), {std::hypot(1.0, 10.0), 5, 0, 0, 0, 30});
+  Move line = motion(MoveKind::line, {1, -10, 0}, {1, 10, 0}, 20, 1.2, 12);
+  line.feed = 1000;
+  stage.on_move(line);
+  EXPECT_EQ(warned, (std::vector<std::string>{"NC2060 line 12"}));
 }
