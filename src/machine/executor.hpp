@@ -17,6 +17,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
+#include "machine/path/compensation_stage.hpp"
 #include "machine/path/developed_conversion.hpp"
 #include "machine/path/nose_centre.hpp"
 #include "machine/path/statistics.hpp"
@@ -29,7 +30,7 @@ namespace mrc {
 struct Step;
 }
 
-class Executor final : private StrokeFrame, NoseTipSource {
+class Executor final : private CompensationControl, StrokeFrame, NoseTipSource {
 public:
   Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options = {});
   RunResult run(MoveSink& sink);
@@ -100,13 +101,16 @@ private:
   void linear(MoveKind kind, const AxisVector& target);
   void arc(const AxisVector& target, bool clockwise);
   void emit(Move& m);
-  void emit_programmed(Move& m);  // emit() past chamfering: compensation, then deliver
+  void emit_programmed(Move& m) { path_comp_.on_move(m); }  // emit() past chamfering
   void deliver(Move& m);  // the path stages past compensation: the moves as the tool makes them
+  OffsetOfMove offset_of_move(const PlaneAxes& plane) const override;  // for path_comp_
+  double rapid_seconds(const AxisVector& from, const AxisVector& to) const override;
+  static CompensationSettings compensation_settings(const MachineProfile& p);
   AxisVector machine_shift() const override;  // for path_stroke_: origin and tool shift
   V2 nose_tip_now() const override;  // for path_nose_: the tip's offset, none in G12.1/G07.1
   static void path_alarm(const Move& at, const std::string& code, const std::string& message);  // the stages' alarm
   void path_warning(const Move& at, const std::string& code, const std::string& message);  // and warning
-  bool compensating() const;
+  bool compensating() const { return path_comp_.active(); }
   void end_of_block_compensation(bool g40, bool g41);
   V2 nose_tip() const;
   double nose_radius() const;
@@ -402,11 +406,10 @@ private:
   int lathe_offset_ = 0;     // active lathe offset number (T code's last two digits)
 
   // cutter / tool-nose radius compensation
-  std::optional<RadiusCompensation> comp_;
+  RadiusCompensation* comp_ = nullptr;  // path_comp_'s
   int comp_side_ = 0;                  // +1 G41, -1 G42, 0 G40
   bool comp_suspended_ = false;        // G28/G30/G53 in offset mode: moves without the vector
   bool comp_drop_ = false;             // and the vector goes even where the move stays put in the plane
-  bool block_plane_motion_ = false;    // the block moved in the offset plane
   bool macro_call_block_ = false;      // the block called a macro (G65, G66, custom G/M code)
   std::optional<V2> cancel_direction_;  // I J K of a G40 block
 
@@ -448,6 +451,12 @@ private:
   double g76_allowance_ = profile_.g76_allowance;
 
   // ---- the path stages (path/stage.hpp), linked in the constructor; run() links the last to its sink ----
+  CompensationStage path_comp_{compensation_settings(profile_),
+                                OffsetModes{&comp_side_, &comp_suspended_, &comp_drop_, &plane_, &cancel_direction_},
+                                *this, path_alarm,
+                                [this](const Move& at, const std::string& code, const std::string& message) {
+                                  path_warning(at, code, message);
+                                }};
   DevelopedConversion path_developed_{options_.path_tolerance, profile_.max_cutting_feed,
                                       [this](const Move& at, const std::string& code, const std::string& message) {
                                         path_warning(at, code, message);

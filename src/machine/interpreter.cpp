@@ -69,12 +69,8 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   work_offsets_ = profile_.work_offsets;
   tool_offsets_ = profile_.tool_offsets;
   lathe_offsets_ = profile_.lathe_offsets;
-  CompensationSettings cs;
-  cs.startup_type_b = profile_.compensation.startup_type_b;
-  cs.startup_type_c = profile_.compensation.startup_type_c;
-  cs.blocks_without_motion = profile_.compensation.blocks_read - 2;
-  cs.interference_check = profile_.compensation.interference_check;
-  comp_.emplace(radius_compensation(cs, [this](Move& m) { deliver(m); }));
+  comp_ = &path_comp_.compensation();
+  path_comp_.link(path_developed_);
   path_developed_.link(path_stroke_);
   if (options_.nose_centre && profile_.lathe()) {
     path_stroke_.link(path_nose_);
@@ -82,6 +78,15 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   } else {
     path_stroke_.link(path_stats_);
   }
+}
+
+CompensationSettings Executor::compensation_settings(const MachineProfile& p) {
+  CompensationSettings cs;
+  cs.startup_type_b = p.compensation.startup_type_b;
+  cs.startup_type_c = p.compensation.startup_type_c;
+  cs.blocks_without_motion = p.compensation.blocks_read - 2;
+  cs.interference_check = p.compensation.interference_check;
+  return cs;
 }
 
 void Executor::path_alarm(const Move& at, const std::string& code, const std::string& message) {

@@ -322,41 +322,23 @@ void Executor::emit(Move& m) {
   emit_programmed(m);
 }
 
-void Executor::emit_programmed(Move& m) {
-  if (!compensating()) return deliver(m);
-  const PlaneAxes pa = plane_axes(plane_);
-  const bool in_plane = m.kind == MoveKind::arc ? m.plane == plane_
-                        : m.is_motion() && (m.start[pa.p] != m.end[pa.p] || m.start[pa.q] != m.end[pa.q]);
-  if (!in_plane) {
-    if (!comp_drop_ || !m.is_motion()) return comp_->other(m);
-    // the tool leaves its vector for the programmed point though the block does not move in the plane
-    block_plane_motion_ = true;
-    comp_->cancel_without_motion(m);
-    Move to = m;
-    to.start = comp_->tool_now();
-    to.length = line_length(to.start.data(), to.end.data());
-    double slowest = 0;
-    for (int a = 0; a < kAxes; ++a)
-      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(to.end[a] - to.start[a]) / profile_.rapid_rate[a]);
-    to.seconds = slowest * 60.0;
-    return comp_->element(to, 0, 0);
-  }
-  block_plane_motion_ = true;
-  int side = comp_suspended_ ? 0 : comp_side_;
-  if (xf_on_ && xf_.reverses(pa.p, pa.q)) side = -side;  // a mirror image swaps G41 and G42
-  double radius = 0;
+OffsetOfMove Executor::offset_of_move(const PlaneAxes& pa) const {
+  OffsetOfMove o;
+  o.mirrored = xf_on_ && xf_.reverses(pa.p, pa.q);
   if (profile_.lathe()) {
-    radius = nose_radius();
-    comp_->set_tip(developed_ ? V2{} : nose_tip());  // G12.1, G07.1: the tool's centre
+    o.radius = nose_radius();
+    o.tip = developed_ ? V2{} : nose_tip();  // G12.1, G07.1: the tool's centre
   } else {
-    radius = radius_offset(d_);
+    o.radius = radius_offset(d_);
   }
-  if (radius < 0) {  // a negative offset puts the tool on the other side
-    radius = -radius;
-    side = -side;
-  }
-  std::optional<V2> cancel = side == 0 ? cancel_direction_ : std::nullopt;
-  comp_->element(m, side, radius, cancel);
+  return o;
+}
+
+double Executor::rapid_seconds(const AxisVector& from, const AxisVector& to) const {
+  double slowest = 0;
+  for (int a = 0; a < kAxes; ++a)
+    if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(to[a] - from[a]) / profile_.rapid_rate[a]);
+  return slowest * 60.0;
 }
 
 void Executor::deliver(Move& m) { path_developed_.on_move(m); }
@@ -369,15 +351,11 @@ AxisVector Executor::machine_shift() const {
 
 V2 Executor::nose_tip_now() const { return developed_ ? V2{} : nose_tip(); }
 
-bool Executor::compensating() const {
-  return comp_side_ != 0 || comp_->offset_mode() || comp_->tool_position().has_value();
-}
-
 // After each NC block in offset mode: a G40 (or G41/G42 from cancel mode) without motion in the
 // plane ends (starts) the offset by the start-up type's rule; any other block without such motion
 // is one the read-ahead must look past.
 void Executor::end_of_block_compensation(bool g40, bool g41) {
-  if (!block_plane_motion_) {
+  if (!path_comp_.block_moved_in_plane()) {
     Move at;
     at.kind = motion_ == 0 ? MoveKind::rapid : MoveKind::line;
     at.plane = static_cast<std::uint8_t>(plane_);
@@ -388,11 +366,9 @@ void Executor::end_of_block_compensation(bool g40, bool g41) {
     at.file = prog_ ? prog_->file.get() : nullptr;
     at.line = block_ ? block_->line : 0;
     at.program = prog_ ? prog_->number : -1;
-    if (g40) comp_->cancel_without_motion(at);
-    else if (g41) comp_->startup_without_motion(at);
-    else comp_->block_without_motion(at);
+    path_comp_.block_without_plane_motion(at, g40, g41);
   }
-  block_plane_motion_ = false;
+  path_comp_.end_block();
   cancel_direction_.reset();
 }
 

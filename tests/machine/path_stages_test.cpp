@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "machine/path/compensation_stage.hpp"
 #include "machine/path/developed_conversion.hpp"
 #include "machine/path/nose_centre.hpp"
 #include "machine/path/statistics.hpp"
@@ -462,4 +463,121 @@ TEST(PathDevelopedConversion, PolarSpeedNearTheCentreIsWarnedOnce) {
   line.feed = 1000;
   stage.on_move(line);
   EXPECT_EQ(warned, (std::vector<std::string>{"NC2060 line 12"}));
+}
+
+namespace {
+// The control's side of compensation: the modes and the offset, set by the test.
+struct FakeOffsets final : CompensationControl {
+  int side = 0, plane = 17;
+  bool suspended = false, drop = false;
+  std::optional<ncurve::geom::V2> cancel;
+  double radius = 0;
+  OffsetModes modes() { return {&side, &suspended, &drop, &plane, &cancel}; }
+  OffsetOfMove offset_of_move(const PlaneAxes&) const override { return {false, radius, std::nullopt}; }
+  double rapid_seconds(const AxisVector&, const AxisVector&) const override { return 0; }
+};
+
+// The programmed square of the FANUC manual's start-up example: from (0, 0) to (20, 10), round
+// (20, 10) (20, 50) (60, 50) (60, 10) clockwise, back to (0, 0) in the G40 block; each its own block.
+void square_blocks(FakeOffsets& control, CompensationStage& stage, int side) {
+  const AxisVector pts[] = {{0, 0, 0}, {20, 10, 0}, {20, 50, 0}, {60, 50, 0}, {60, 10, 0}, {20, 10, 0}, {0, 0, 0}};
+  for (int i = 1; i < 7; ++i) {
+    control.side = i == 6 ? 0 : side;
+    Move m = motion(MoveKind::line, pts[i - 1], pts[i], line_length(pts[i - 1].data(), pts[i].data()), 1,
+                    static_cast<std::uint32_t>(i + 1));
+    m.feed = 100;
+    stage.on_move(m);
+    stage.end_block();
+  }
+  stage.compensation().finish();
+}
+
+void expect_ends(const std::vector<Move>& ms, const std::vector<std::array<double, 2>>& ends) {
+  ASSERT_EQ(ms.size(), ends.size());
+  for (std::size_t i = 0; i < ms.size(); ++i) {
+    EXPECT_NEAR(ms[i].end[0], ends[i][0], 1e-9) << "move " << i;
+    EXPECT_NEAR(ms[i].end[1], ends[i][1], 1e-9) << "move " << i;
+  }
+}
+}  // namespace
+
+// Off (G40, no vector), the stage passes the moves on as they are.
+TEST(PathCompensation, OffPassesMovesOn) {
+  FakeOffsets control;
+  Recorder out;
+  Raised raised;
+  CompensationStage stage({}, control.modes(), control, recording_alarm(raised), no_warning());
+  stage.link(out);
+  EXPECT_FALSE(stage.active());
+  stage.on_move(motion(MoveKind::line, {0, 0, 0}, {3, 4, 0}, 5, 1));
+  ASSERT_EQ(out.moves.size(), 1u);
+  EXPECT_EQ(out.moves[0].end, (AxisVector{3, 4, 0}));
+  EXPECT_FALSE(out.moves[0].compensated);
+}
+
+// G41 D5 on the square (the tool outside, type A): start-up perpendicular to the first block's
+// direction at its end, outer corners at the offset lines' intersections, the last block before
+// G40 ends perpendicular, and the G40 block ends on the programmed point.
+TEST(PathCompensation, SquareG41TypeA) {
+  FakeOffsets control;
+  control.radius = 5;
+  Raised raised;
+  Recorder out;
+  CompensationStage stage({}, control.modes(), control, recording_alarm(raised), no_warning());
+  stage.link(out);
+  square_blocks(control, stage, 1);
+  expect_ends(out.moves, {{15, 10}, {15, 55}, {65, 55}, {65, 5}, {20, 5}, {0, 0}});
+  EXPECT_TRUE(out.moves[1].compensated);
+  EXPECT_EQ(out.moves[1].programmed_end, (AxisVector{20, 50, 0}));
+  EXPECT_EQ(out.moves[1].line, 3u);
+  EXPECT_FALSE(stage.active());
+}
+
+// G42 D5 puts the tool inside: inner corners at the offset lines' intersections (25, 45), (55, 45),
+// (55, 15); before G40, perpendicular to the last block at (20, 10): (20, 15). G41 with D-5 is the same.
+TEST(PathCompensation, NegativeOffsetSwapsTheSide) {
+  for (const auto& [side, radius] : {std::pair{-1, 5.0}, std::pair{1, -5.0}}) {
+    FakeOffsets control;
+    control.radius = radius;
+    Raised raised;
+    Recorder out;
+    CompensationStage stage({}, control.modes(), control, recording_alarm(raised), no_warning());
+    stage.link(out);
+    square_blocks(control, stage, side);
+    expect_ends(out.moves, {{25, 10}, {25, 45}, {55, 45}, {55, 15}, {20, 15}, {0, 0}});
+  }
+}
+
+// In offset mode a Z plunge at (20, 50) between Y50. and X60. (a block without motion in the plane)
+// happens where the tool centre is when the corner is known: at the outer corner (15, 55).
+TEST(PathCompensation, AMoveOffThePlaneGoesWhereTheToolIs) {
+  FakeOffsets control;
+  control.radius = 5;
+  Raised raised;
+  Recorder out;
+  CompensationStage stage({}, control.modes(), control, recording_alarm(raised), no_warning());
+  stage.link(out);
+  control.side = 1;
+  auto block = [&](AxisVector from, AxisVector to, std::uint32_t line) {
+    Move m = motion(MoveKind::line, from, to, line_length(from.data(), to.data()), 1, line);
+    m.feed = 100;
+    stage.on_move(m);
+    EXPECT_EQ(stage.block_moved_in_plane(), from[0] != to[0] || from[1] != to[1]);
+    if (!stage.block_moved_in_plane()) stage.block_without_plane_motion(m, false, false);
+    stage.end_block();
+  };
+  block({0, 0, 0}, {20, 10, 0}, 2);
+  block({20, 10, 0}, {20, 50, 0}, 3);
+  block({20, 50, 0}, {20, 50, -5}, 4);
+  block({20, 50, -5}, {60, 50, -5}, 5);
+  stage.compensation().finish();
+  ASSERT_EQ(out.moves.size(), 4u);
+  EXPECT_EQ(out.moves[2].line, 4u);
+  EXPECT_NEAR(out.moves[2].start[0], 15, 1e-9);
+  EXPECT_NEAR(out.moves[2].start[1], 55, 1e-9);
+  EXPECT_EQ(out.moves[2].start[2], 0);
+  EXPECT_NEAR(out.moves[2].end[0], 15, 1e-9);
+  EXPECT_NEAR(out.moves[2].end[1], 55, 1e-9);
+  EXPECT_EQ(out.moves[2].end[2], -5);
+  EXPECT_NEAR(out.moves[3].start[1], 55, 1e-9);
 }

@@ -184,7 +184,7 @@ bool Executor::corner_emit(Move& m) {
   h.lathe_offset = lathe_offset_;
   corner_.armed.reset();
   corner_.held = std::move(h);
-  if (compensating()) block_plane_motion_ = true;  // the block has its move, put out later
+  if (compensating()) path_comp_.note_plane_motion();  // the block has its move, put out later
   return true;
 }
 
