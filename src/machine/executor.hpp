@@ -18,6 +18,7 @@
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
 #include "machine/path/compensation_stage.hpp"
+#include "machine/path/corner_stage.hpp"
 #include "machine/path/developed_conversion.hpp"
 #include "machine/path/nose_centre.hpp"
 #include "machine/path/statistics.hpp"
@@ -30,7 +31,7 @@ namespace mrc {
 struct Step;
 }
 
-class Executor final : private CompensationControl, StrokeFrame, NoseTipSource {
+class Executor final : private CornerControl, CompensationControl, StrokeFrame, NoseTipSource {
 public:
   Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options = {});
   RunResult run(MoveSink& sink);
@@ -101,7 +102,6 @@ private:
   void linear(MoveKind kind, const AxisVector& target);
   void arc(const AxisVector& target, bool clockwise);
   void emit(Move& m);
-  void emit_programmed(Move& m) { path_comp_.on_move(m); }  // emit() past chamfering
   void deliver(Move& m);  // the path stages past compensation: the moves as the tool makes them
   OffsetOfMove offset_of_move(const PlaneAxes& plane) const override;  // for path_comp_
   double rapid_seconds(const AxisVector& from, const AxisVector& to) const override;
@@ -157,12 +157,12 @@ private:
   bool look_ahead_ = true;  // G05.1 Q1, G08 P1, G05 P10000 (G61.1: exact_stop_code_ 611)
   // chamfering and corner R (chamfer.cpp): the block's move waits for the next one
   void arm_corner(const AxisVector& target);  // the block's ,C ,R (lathe: C, I, K, R), before its move
-  bool corner_emit(Move& m);                  // in emit(): holds the move, or cuts the held one's corner
-  void cut_held_corner(Move& next);
   void corner_block_end(bool program_end = false);  // after an NC block: what it left undone is an alarm
-  [[noreturn]] void corner_alarm(const HeldCorner& h, std::string code, std::string message) const;
+  CornerContext corner_context() const override;  // for path_corner_
+  void set_offset_numbers(int d, int lathe_offset) override;
+  void move_held() override;
   std::vector<Cmd> comma_cmds_;  // the block's ,C ,R ,A words (letters c, r, a)
-  CornerState corner_;
+  bool corner_words_read_ = false;  // this block's ,C ,R words were acted on
   bool corner_on_ = false;       // comma words read, a request armed or a move held
 
   // rotary axes (rotary.cpp)
@@ -451,6 +451,10 @@ private:
   double g76_allowance_ = profile_.g76_allowance;
 
   // ---- the path stages (path/stage.hpp), linked in the constructor; run() links the last to its sink ----
+  CornerStage path_corner_{profile_.lathe(), *this,
+                            [](const nc::Span& where, const std::string& code, const std::string& message) {
+                              throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, where});
+                            }};
   CompensationStage path_comp_{compensation_settings(profile_),
                                 OffsetModes{&comp_side_, &comp_suspended_, &comp_drop_, &plane_, &cancel_direction_},
                                 *this, path_alarm,

@@ -318,8 +318,17 @@ void Executor::emit(Move& m) {
     if (m.is_motion()) shape_moves_->push_back(m);
     return;
   }
-  if (corner_on_ && corner_emit(m)) [[unlikely]] return;  // chamfering: held for the next move
-  emit_programmed(m);
+  path_corner_.on_move(m);
+}
+
+CornerContext Executor::corner_context() const {
+  return {prog_, block_, result_.stats.blocks, comp_side_, d_, lathe_offset_};
+}
+
+void Executor::set_offset_numbers(int d, int lathe_offset) { d_ = d, lathe_offset_ = lathe_offset; }
+
+void Executor::move_held() {
+  if (compensating()) path_comp_.note_plane_motion();
 }
 
 OffsetOfMove Executor::offset_of_move(const PlaneAxes& pa) const {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "machine/path/compensation_stage.hpp"
+#include "machine/path/corner_stage.hpp"
 #include "machine/path/developed_conversion.hpp"
 #include "machine/path/nose_centre.hpp"
 #include "machine/path/statistics.hpp"
@@ -580,4 +581,179 @@ TEST(PathCompensation, AMoveOffThePlaneGoesWhereTheToolIs) {
   EXPECT_NEAR(out.moves[2].end[1], 55, 1e-9);
   EXPECT_EQ(out.moves[2].end[2], -5);
   EXPECT_NEAR(out.moves[3].start[1], 55, 1e-9);
+}
+
+namespace {
+// The blocks the corner stage sees: each test's moves name them; offsets as the control has them.
+struct FakeBlocks final : CornerControl {
+  ncurve::nc::Program prog;
+  std::vector<ncurve::nc::Block> blocks = std::vector<ncurve::nc::Block>(10);
+  std::size_t now = 0;  // the block in hand, line `now`
+  int side = 0, d = 0, lathe_offset = 0;
+  std::vector<std::pair<int, int>> offsets_set;
+  int held = 0;
+  FakeBlocks() {
+    for (std::size_t i = 0; i < blocks.size(); ++i) blocks[i].line = static_cast<std::uint32_t>(i), blocks[i].column = 3;
+  }
+  CornerContext corner_context() const override { return {&prog, &blocks[now], now, side, d, lathe_offset}; }
+  void set_offset_numbers(int d_now, int offset_now) override {
+    d = d_now, lathe_offset = offset_now;
+    offsets_set.emplace_back(d_now, offset_now);
+  }
+  void move_held() override { ++held; }
+};
+
+CornerStage::Alarm span_alarm(Raised& raised, ncurve::nc::Span& where) {
+  return [&raised, &where](const ncurve::nc::Span& at, const std::string& code, const std::string& message) {
+    raised = {code, message, at.line};
+    where = at;
+    throw Stopped();
+  };
+}
+
+CornerRequest request(corner::Kind kind, double amount) {
+  CornerRequest r;
+  r.kind = kind;
+  r.amount = amount;
+  r.column = 14;
+  return r;
+}
+
+// Block 1: G01 X50. ,C5 (or ,R10) from (0, 0) at F1000 (3 s); block 2: Y50. (3 s).
+void corner_blocks(FakeBlocks& control, CornerStage& stage, const CornerRequest& r) {
+  control.now = 1;
+  stage.arm(r);
+  Move a = motion(MoveKind::line, {0, 0, 0}, {50, 0, 0}, 50, 3, 1);
+  a.feed = 1000;
+  stage.on_move(a);
+  control.now = 2;
+  Move b = motion(MoveKind::line, {50, 0, 0}, {50, 50, 0}, 50, 3, 2);
+  b.feed = 1000;
+  stage.on_move(b);
+}
+}  // namespace
+
+// Nothing armed or held: the moves pass on.
+TEST(PathCorner, NothingArmedPassesMovesOn) {
+  FakeBlocks control;
+  Raised raised;
+  ncurve::nc::Span where;
+  Recorder out;
+  CornerStage stage(false, control, span_alarm(raised, where));
+  stage.link(out);
+  stage.on_move(motion(MoveKind::line, {}, {3, 4, 0}, 5, 1));
+  ASSERT_EQ(out.moves.size(), 1u);
+  EXPECT_EQ(out.moves[0].end, (AxisVector{3, 4, 0}));
+}
+
+// ,C5 at the corner (50, 0): the first block ends 5 short, at (45, 0), the chamfer (45, 0)-(50, 5)
+// of 5 sqrt 2 mm is the first block's at its rate (3 s / 50 mm), the second block starts at (50, 5).
+TEST(PathCorner, ChamferCutsBothBlocksBack) {
+  FakeBlocks control;
+  Raised raised;
+  ncurve::nc::Span where;
+  Recorder out;
+  CornerStage stage(false, control, span_alarm(raised, where));
+  stage.link(out);
+  corner_blocks(control, stage, request(corner::Kind::chamfer, 5));
+  EXPECT_EQ(control.held, 1);
+  ASSERT_EQ(out.moves.size(), 3u);
+  EXPECT_NEAR(out.moves[0].end[0], 45, 1e-9);
+  EXPECT_NEAR(out.moves[0].length, 45, 1e-9);
+  EXPECT_NEAR(out.moves[0].seconds, 2.7, 1e-9);
+  EXPECT_EQ(out.moves[1].kind, MoveKind::line);
+  EXPECT_EQ(out.moves[1].line, 1u);
+  EXPECT_NEAR(out.moves[1].start[0], 45, 1e-9);
+  EXPECT_NEAR(out.moves[1].end[0], 50, 1e-9);
+  EXPECT_NEAR(out.moves[1].end[1], 5, 1e-9);
+  EXPECT_NEAR(out.moves[1].length, 5 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(out.moves[1].seconds, 0.06 * 5 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(out.moves[2].start[1], 5, 1e-9);
+  EXPECT_NEAR(out.moves[2].length, 45, 1e-9);
+  EXPECT_NEAR(out.moves[2].seconds, 2.7, 1e-9);
+  EXPECT_EQ(out.moves[2].line, 2u);
+}
+
+// ,R10 at the same corner: the arc about (40, 10) from (40, 0) to (50, 10), counter-clockwise,
+// a quarter of a circle, 5 pi mm.
+TEST(PathCorner, CornerRIsATangentArc) {
+  FakeBlocks control;
+  Raised raised;
+  ncurve::nc::Span where;
+  Recorder out;
+  CornerStage stage(false, control, span_alarm(raised, where));
+  stage.link(out);
+  corner_blocks(control, stage, request(corner::Kind::round, 10));
+  ASSERT_EQ(out.moves.size(), 3u);
+  EXPECT_NEAR(out.moves[0].end[0], 40, 1e-9);
+  const Move& arc = out.moves[1];
+  EXPECT_EQ(arc.kind, MoveKind::arc);
+  EXPECT_FALSE(arc.clockwise);
+  EXPECT_NEAR(arc.center[0], 40, 1e-9);
+  EXPECT_NEAR(arc.center[1], 10, 1e-9);
+  EXPECT_NEAR(arc.sweep, kPi / 2, 1e-9);
+  EXPECT_NEAR(arc.length, 5 * kPi, 1e-9);
+  EXPECT_NEAR(arc.end[0], 50, 1e-9);
+  EXPECT_NEAR(arc.end[1], 10, 1e-9);
+  EXPECT_NEAR(out.moves[2].start[1], 10, 1e-9);
+}
+
+// An event after the held move (its block's M08, the next block's T) goes out after the corner,
+// and the held block's moves go out with its own D number, the next block's restored after.
+TEST(PathCorner, EventsWaitAndTheHeldBlocksOffsetsGoOut) {
+  FakeBlocks control;
+  Raised raised;
+  ncurve::nc::Span where;
+  Recorder out;
+  CornerStage stage(false, control, span_alarm(raised, where));
+  stage.link(out);
+  control.d = 1;
+  control.now = 1;
+  stage.arm(request(corner::Kind::chamfer, 5));
+  stage.on_move(motion(MoveKind::line, {0, 0, 0}, {50, 0, 0}, 50, 3, 1));
+  Move coolant;
+  coolant.kind = MoveKind::coolant;
+  coolant.line = 1;
+  stage.on_move(coolant);
+  EXPECT_TRUE(out.moves.empty());
+  control.now = 2;
+  control.d = 2;
+  stage.on_move(motion(MoveKind::line, {50, 0, 0}, {50, 50, 0}, 50, 3, 2));
+  EXPECT_EQ(out.order, (std::vector<std::string>{"line", "line", "coolant", "line"}));
+  EXPECT_EQ(control.offsets_set, (std::vector<std::pair<int, int>>{{1, 0}, {2, 0}}));
+  EXPECT_EQ(control.d, 2);
+}
+
+// A rapid after the chamfering block is PS0052 at the block in hand (line 2, its first column).
+TEST(PathCorner, ARapidAfterTheCornerAlarms) {
+  FakeBlocks control;
+  Raised raised;
+  ncurve::nc::Span where;
+  Recorder out;
+  CornerStage stage(false, control, span_alarm(raised, where));
+  stage.link(out);
+  control.now = 1;
+  stage.arm(request(corner::Kind::chamfer, 5));
+  stage.on_move(motion(MoveKind::line, {0, 0, 0}, {50, 0, 0}, 50, 3, 1));
+  control.now = 2;
+  EXPECT_THROW(stage.on_move(motion(MoveKind::rapid, {50, 0, 0}, {50, 50, 0}, 50, 1, 2)), Stopped);
+  EXPECT_EQ(raised.code, "PS0052");
+  EXPECT_EQ(where.line, 2u);
+  EXPECT_EQ(where.column, 3u);
+  EXPECT_NE(raised.message.find("line 1"), std::string::npos) << raised.message;
+  EXPECT_TRUE(out.moves.empty());
+}
+
+// A chamfer longer than the first block is PS0055 at the request's word in the held block.
+TEST(PathCorner, AChamferThatDoesNotFitAlarmsAtItsWord) {
+  FakeBlocks control;
+  Raised raised;
+  ncurve::nc::Span where;
+  Recorder out;
+  CornerStage stage(false, control, span_alarm(raised, where));
+  stage.link(out);
+  EXPECT_THROW(corner_blocks(control, stage, request(corner::Kind::chamfer, 60)), Stopped);
+  EXPECT_EQ(raised.code, "PS0055");
+  EXPECT_EQ(where.line, 1u);
+  EXPECT_EQ(where.column, 14u);
 }
