@@ -101,15 +101,15 @@ private:
   void motion(const AxisVector& target);
   void linear(MoveKind kind, const AxisVector& target);
   void arc(const AxisVector& target, bool clockwise);
-  void emit(Move& m);
-  void deliver(Move& m);  // the path stages past compensation: the moves as the tool makes them
+  void emit(Move& m);  // the block's move or event into the path stages (path_corner_ first)
+  // what the path stages read of the control (their interfaces), and their alarms and warnings
   OffsetOfMove offset_of_move(const PlaneAxes& plane) const override;  // for path_comp_
   double rapid_seconds(const AxisVector& from, const AxisVector& to) const override;
   static CompensationSettings compensation_settings(const MachineProfile& p);
   AxisVector machine_shift() const override;  // for path_stroke_: origin and tool shift
   V2 nose_tip_now() const override;  // for path_nose_: the tip's offset, none in G12.1/G07.1
-  static void path_alarm(const Move& at, const std::string& code, const std::string& message);  // the stages' alarm
-  void path_warning(const Move& at, const std::string& code, const std::string& message);  // and warning
+  static void path_alarm(const Move& at, const std::string& code, const std::string& message);
+  void path_warning(const Move& at, const std::string& code, const std::string& message);
   bool compensating() const { return path_comp_.active(); }
   void end_of_block_compensation(bool g40, bool g41);
   V2 nose_tip() const;

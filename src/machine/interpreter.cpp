@@ -70,6 +70,7 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   tool_offsets_ = profile_.tool_offsets;
   lathe_offsets_ = profile_.lathe_offsets;
   comp_ = &path_comp_.compensation();
+  // the path stages, in order; --nose-centre's is linked in on a lathe only
   path_corner_.link(path_comp_);
   path_comp_.link(path_developed_);
   path_developed_.link(path_stroke_);

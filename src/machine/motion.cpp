@@ -350,8 +350,6 @@ double Executor::rapid_seconds(const AxisVector& from, const AxisVector& to) con
   return slowest * 60.0;
 }
 
-void Executor::deliver(Move& m) { path_developed_.on_move(m); }
-
 AxisVector Executor::machine_shift() const {
   AxisVector shift{};
   for (int a = 0; a < kAxes; ++a) shift[a] = origin_[a] + tool_shift_[a];
