@@ -29,14 +29,17 @@ fuzz() {
 }
 
 mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,cli,serve}
-cp tests/programs/*.nc examples/*.nc macros/*.nc "$dir/corpus-programs/"
+# the test programs of every folder of tests/programs (their names are unique across folders)
+find tests/programs -name '*.nc' -exec cp -t "$dir/corpus-programs/" {} +
+cp examples/*.nc macros/*.nc "$dir/corpus-programs/"
 printf 'CX+[R0+A*t/360]*COS[t]\nCY+[R0+A*t/360]*SIN[t]\n0' >"$dir/corpus-curves/spiral"
 printf 'A/COS[t]\n0\nA*TAN[t]' >"$dir/corpus-curves/hyperbola"
 printf '63*SIN[t]-7.5*SIN[6*t]+20*SIN[ATAN[SIN[5*t]]/[1.4-COS[5*t]]-t]\nSQRT[ABS[t]]*EXP[t/90]\nLN[t+1]' \
   >"$dir/corpus-curves/rotor"
 cp examples/*.csv "$dir/corpus-rows/"
 printf '100,-5,-20\n100,5\n' >"$dir/corpus-rows/dish"
-cp profiles/*.toml tests/programs/*.toml "$dir/corpus-profiles/"
+cp profiles/*.toml "$dir/corpus-profiles/"
+find tests/programs -name '*.toml' -exec cp -t "$dir/corpus-profiles/" {} +
 # nesting past the bound (a dotted key of 40 parts, arrays 40 deep), refused before toml++ reads it
 printf '[machine]\nname = "deep"\n[%sb]\nx = 1\n' "$(printf 'a.%.0s' {1..40})" >"$dir/corpus-profiles/deep-key"
 printf '[machine]\nx = %s1%s\n' "$(printf '[%.0s' {1..40})" "$(printf ']%.0s' {1..40})" >"$dir/corpus-profiles/deep-array"

@@ -279,7 +279,7 @@ expect_text("${err}" "the curve expr is undefined at t = 0; check --curve and it
 # message offers --programmed; the chords as programmed deviate 20 - 20 x 14.142 / sqrt(5.858^2 +
 # 14.142^2) = 1.522498 mm (the distance of each chord's line from the centre), lead-in and
 # lead-out set aside
-set(chords ${SRC}/tests/programs/cc_quarter_chords.nc)
+set(chords ${SRC}/tests/programs/compensation/cc_quarter_chords.nc)
 set(circle --curve expr --x "20*COS[t]" --y "20*SIN[t]" --t 0:90)
 run_expect(1 "compensated tool path" ${NCURVE} analyze ${chords} ${circle})
 expect_text("${err}" "the path measured is the tool's, radius compensation applied (G41/G42): --programmed measures the contour as programmed"
@@ -305,7 +305,7 @@ if(NOT plain_path STREQUAL "programmed")
 endif()
 # a full circle R20 about X0 Y0 cut under G41 D1 R5 from the centre and back (its only contour
 # move the arc): as programmed, the circle itself, 0 mm from it
-run_expect(0 "programmed full circle" ${NCURVE} analyze ${SRC}/tests/programs/cc_circle_pocket.nc --curve expr
+run_expect(0 "programmed full circle" ${NCURVE} analyze ${SRC}/tests/programs/compensation/cc_circle_pocket.nc --curve expr
            --x "20*COS[t]" --y "20*SIN[t]" --t 0:360 --programmed --json)
 string(JSON circle_max GET "${out}" shape_error max_mm)
 string(JSON circle_blocks GET "${out}" shape_error blocks)
@@ -314,8 +314,8 @@ if(circle_max GREATER 1e-9 OR NOT circle_blocks EQUAL 1)
 endif()
 # a lathe under G42 with tip 3 (nose R0.8): the convex arc R5 from X10 Z0 to X20 Z-5 (diameters)
 # about X10 Z-5, as programmed, is the curve Z = -5 + 5 cos t, X/2 = 5 + 5 sin t itself: 0 mm
-run_expect(0 "programmed lathe arc" ${NCURVE} analyze ${SRC}/tests/programs/nt_arc_t3.nc
-           --machine ${SRC}/tests/programs/nt_arc_t3.toml --curve expr --x "-5+5*COS[t]" --y "5+5*SIN[t]" --t 0:90
+run_expect(0 "programmed lathe arc" ${NCURVE} analyze ${SRC}/tests/programs/nose/nt_arc_t3.nc
+           --machine ${SRC}/tests/programs/nose/nt_arc_t3.toml --curve expr --x "-5+5*COS[t]" --y "5+5*SIN[t]" --t 0:90
            --programmed --json)
 string(JSON arc_max GET "${out}" shape_error max_mm)
 string(JSON arc_blocks GET "${out}" shape_error blocks)

@@ -1,10 +1,11 @@
-# Runs the ncurve command on each tests/programs/*.nc that has an expected output beside it
+# Runs the ncurve command on each tests/programs/FEATURE/*.nc that has an expected output beside it
 # (NAME.expected.csv, NAME.expected.txt for the exit code and alarm, NAME.expected.hex for the bytes
 # --dprnt writes) and compares.
 # NAME.toml is its machine profile and NAME.args holds extra options, one per line (for both).
-# `--machine NAME.toml` where tests/programs has one for the program NAME, else nothing
-function(machine_of name result)
-  set(toml "${SRC}/tests/programs/${name}.toml")
+# A program is named by its file name alone, so no two folders may hold the same NAME.
+# `--machine NAME.toml` where the folder `dir` has one for the program NAME, else nothing
+function(machine_of dir name result)
+  set(toml "${dir}/${name}.toml")
   if(EXISTS "${toml}")
     set(${result} --machine "${toml}" PARENT_SCOPE)
   else()
@@ -12,12 +13,18 @@ function(machine_of name result)
   endif()
 endfunction()
 
-file(GLOB programs "${SRC}/tests/programs/*.nc")
+file(GLOB_RECURSE programs "${SRC}/tests/programs/*.nc")
+list(SORT programs)
 set(failures 0)
 foreach(prog ${programs})
   get_filename_component(name ${prog} NAME_WE)
-  set(dir "${SRC}/tests/programs")
-  machine_of(${name} machine)
+  get_filename_component(dir ${prog} DIRECTORY)
+  if(DEFINED dir_of_${name})
+    message(SEND_ERROR "${name}: two programs of that name, in ${dir_of_${name}} and ${dir}")
+    math(EXPR failures "${failures}+1")
+  endif()
+  set(dir_of_${name} "${dir}")
+  machine_of(${dir} ${name} machine)
   set(extra "")
   if(EXISTS "${dir}/${name}.args")
     file(STRINGS "${dir}/${name}.args" extra)
@@ -84,8 +91,13 @@ function(motions_of text result)
   set(${result} "${list}" PARENT_SCOPE)
 endfunction()
 foreach(name expand_g55 work_offsets_g28 wcs_g92_cancels_g52 cc_circle_pocket drill_rigid)
-  set(dir "${SRC}/tests/programs")
-  machine_of(${name} machine)
+  set(dir "${dir_of_${name}}")
+  if(NOT dir)
+    message(SEND_ERROR "${name}.nc: not found under tests/programs")
+    math(EXPR failures "${failures}+1")
+    continue()
+  endif()
+  machine_of(${dir} ${name} machine)
   set(expanded "${CMAKE_CURRENT_BINARY_DIR}/${name}.expanded.nc")
   execute_process(COMMAND ${NCURVE} run "${dir}/${name}.nc" ${machine} --format jsonl OUTPUT_VARIABLE first)
   execute_process(COMMAND ${NCURVE} run "${dir}/${name}.nc" ${machine} --format gcode -o "${expanded}" OUTPUT_QUIET)

@@ -10,7 +10,6 @@
 #include <numbers>
 
 #include "gen/generate.hpp"
-#include "machine/path/compensation.hpp"
 #include "gen/shape_models.hpp"
 #include "motion/circle.hpp"
 #include "motion/planner.hpp"

@@ -1,6 +1,5 @@
 #include "gen/generate.hpp"
 
-#include "machine/path/compensation.hpp"
 
 #include <fmt/format.h>
 

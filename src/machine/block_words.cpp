@@ -88,14 +88,14 @@ void Executor::check_block_words() {
 // A value computed for an address (X[#1*2]) within the digits the control takes (number_digits):
 // counted in least input increments for a dimension, as a whole number otherwise (PS0003).
 void Executor::check_word_digits(char letter, double value, bool dimension, std::uint16_t column) const {
-  const double per_unit = !dimension ? 1.0 : inch_ ? per_unit_inch_ : per_unit_mm_;
+  const double per_unit = !dimension ? 1.0 : modal_.inch ? per_unit_inch_ : per_unit_mm_;
   const double limit = digit_limit_;
   if (std::fabs(value) * per_unit < limit - 0.5) return;
   const int decimals = static_cast<int>(std::lround(std::log10(per_unit)));
   alarm("PS0003",
         fmt::format("{}: the value {:g} has more digits than the control takes (at most {:.{}f}{}; {} digits, "
                     "machine profile number_digits)",
-                    letter, value, (limit - 1) / per_unit, decimals, dimension ? (inch_ ? " in" : " mm") : "",
+                    letter, value, (limit - 1) / per_unit, decimals, dimension ? (modal_.inch ? " in" : " mm") : "",
                     profile_.number_digits),
         column);
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "machine/g_codes.hpp"
 #include "machine/word_values.hpp"
 
 namespace ncurve::machine {
@@ -19,15 +20,15 @@ using nc::Value;
 // nearest double to the decimal value (4552 / 1000 = 4.552), where multiplying by 0.001 would not.
 double Executor::as_written(double value, bool literal, bool decimal_point) const {
   if (!literal || decimal_point || profile_.decimal_calculator) return value;
-  return value / (inch_ ? per_unit_inch_ : per_unit_mm_);  // No.3401#0 = 0: X10 is ten increments
+  return value / (modal_.inch ? per_unit_inch_ : per_unit_mm_);  // No.3401#0 = 0: X10 is ten increments
 }
 
 double Executor::dimension_raw(const Cmd& c) const {
-  const double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
+  const double per_unit = modal_.inch ? per_unit_inch_ : per_unit_mm_;
   return round_to_increment(as_written(c.value, c.literal, c.decimal_point), per_unit);
 }
 
-double Executor::dimension(const Cmd& c) const { return inch_ ? dimension_raw(c) * 25.4 : dimension_raw(c); }
+double Executor::dimension(const Cmd& c) const { return modal_.inch ? dimension_raw(c) * 25.4 : dimension_raw(c); }
 
 int Executor::integer(const Cmd& c, const char* what) const {
   if (c.literal && c.decimal_point)
@@ -102,14 +103,14 @@ void Executor::exec_nc(const Block& b) {
       if (g == 650) {
         call_macro(number, args, repeat, false, false, b.column);
       } else {
-        modal_call_ = true;
+        modal_.modal_call = true;
         modal_calls_.push_back({number, repeat, std::move(args)});
       }
       return;
     }
     if (g == 670) {  // cancels the latest G66; the one before it, if any, is in force again
       if (!modal_calls_.empty()) modal_calls_.pop_back();
-      modal_call_ = !modal_calls_.empty();
+      modal_.modal_call = !modal_calls_.empty();
       if (cmds_.size() == 1) return;
     }
   }
@@ -147,7 +148,7 @@ void Executor::exec_nc(const Block& b) {
   if (has('F')) {
     double f = word('F').value;
     if (f < 0) alarm("PS0006", fmt::format("F{}: a feed rate takes no minus sign", f), word('F').column);
-    feed_ = inch_ ? f * 25.4 : f;
+    feed_ = modal_.inch ? f * 25.4 : f;
   }
   if (has('S')) {  // on a lathe, S with G50 (G92 on systems B/C) is the spindle speed limit
     bool limit = profile_.lathe() && std::ranges::any_of(one_shot, [](int g) { return g == 500 || g == 920; });
@@ -158,8 +159,8 @@ void Executor::exec_nc(const Block& b) {
     // an H alone in G43/G44 mode changes the tool length offset to the new number's value
     const bool length_code = std::ranges::any_of(g_codes_, [](int g) { return g == 430 || g == 440 || g == 490; });
     const bool position_offset = std::ranges::any_of(g_codes_, [](int g) { return g >= 450 && g <= 480; });
-    if (!profile_.lathe() && (length_comp_ == 43 || length_comp_ == 44) && !length_code && !position_offset)
-      tool_shift_[2] = (length_comp_ == 43 ? 1 : -1) * length_offset(h_);
+    if (!profile_.lathe() && (modal_.length_comp == 43 || modal_.length_comp == 44) && !length_code && !position_offset)
+      coords_.tool_shift[2] = (modal_.length_comp == 43 ? 1 : -1) * length_offset(h_);
   }
   if (has('D') && !(profile_.lathe() && profile_.series10_format)) d_ = integer(word('D'), "D");  // else a cycle's depth
   if (has('T')) {
@@ -183,31 +184,14 @@ void Executor::exec_nc(const Block& b) {
   bool moved = false;
   if (!one_shot.empty()) {
     if (std::ranges::any_of(one_shot, [](int g) { return g != 40; })) end_lathe_cycle_data();
-    for (int g : one_shot) {
-      switch (g) {
-        case 760: multiple_threading_cycle(); moved = true; break;  // G76 on a lathe (threading.cpp)
-        case 40: dwell(); break;
-        case 280: case 300: reference_return(g); moved = true; break;
-        case 530: machine_coordinate_move(); moved = true; break;
-        case 100: data_setting(); break;
-        case 520: case 920: case 500: set_coordinate_system(g); break;
-        case 700: case 710: case 720: case 730: case 740: case 750: moved = repetitive_cycle(g) || moved; break;
-        case 270: reference_check(); moved = true; break;  // reference_moves.cpp
-        case 290: return_from_reference(); moved = true; break;
-        case 301: reference_return(g); moved = true; break;
-        case 921: workpiece_preset(); break;
-        case 600: moved = single_direction_block() || moved; break;  // single_direction.cpp
-        case 310: case 311: case 312: case 313: case 314: moved = skip_move(g) || moved; break;  // skip.cpp
-        case 220: stroke_area_command(); break;  // stroke_check.cpp
-        default: break;
-      }
-    }
-  } else if (cycle_ != 0) {
+    for (int g : one_shot)
+      if (const GAction act = g_action(g, g_machine(profile_))) moved = act(*this, g) || moved;
+  } else if (modal_.cycle != 0) {
     moved = profile_.lathe() ? lathe_drilling_block() : canned_cycle_block();
   } else {
-    AxisVector target = pos_;
+    AxisVector target = coords_.pos;
     bool axes = axis_target(target);
-    bool full_circle_ijk = (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K'));
+    bool full_circle_ijk = (modal_.motion == 2 || modal_.motion == 3) && (has('I') || has('J') || has('K'));
     if (position_offset_ != 0) [[unlikely]] apply_position_offset(target);
     if (axes || full_circle_ijk) {
       if (rolls_) roll_over(target);

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "machine/interpreter.hpp"
+#include "machine/coordinates.hpp"
+#include "machine/modal.hpp"
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
 #include "machine/path/compensation_stage.hpp"
@@ -41,6 +43,38 @@ public:
   // Tell this observer each block, call, return and variable write of the next runs (null: none).
   void observe(ExecutionObserver* observer) { observer_ = observer; }
 
+  // ---- what the G-code table's actions (g_actions.cpp and a code's own file) use ----
+  struct Cmd {  // a word of the block in hand, its value evaluated
+    char letter;
+    bool decimal_point;
+    bool literal;
+    std::uint16_t column;
+    double value;
+  };
+  bool has(char letter) const { return have_[letter - 'A']; }
+  const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
+  double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
+  int integer(const Cmd& c, const char* what) const;
+  bool incremental() const { return modal_.incremental; }
+  const MachineProfile& profile() const { return profile_; }
+  [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
+                          std::uint32_t length = 1) const;
+  void warn(std::string code, std::string message, std::uint16_t column = 0);
+  void dwell();
+  void reference_return(int g);
+  void machine_coordinate_move();
+  void set_coordinate_system(int g);
+  void data_setting();
+  bool repetitive_cycle(int g);      // one G70..G75 block; whether the tool moved
+  void multiple_threading_cycle();                 // G76 (group 00)
+  void reference_check();                 // G27
+  void return_from_reference();           // G29
+  void workpiece_preset();                // G92.1 (G50.3 on system A)
+  bool single_direction_block();          // a one-shot G60 block
+  bool skip_move(int g);                  // G31, G31 P1..P4, G31.1..G31.4
+  void stroke_area_command();             // G22 with its area
+  // ---- end of what the actions use ----
+
 private:
   struct Frame;
   struct Arg {
@@ -48,13 +82,6 @@ private:
     double value;
     bool decimal_point;
     bool literal;
-  };
-  struct Cmd {
-    char letter;
-    bool decimal_point;
-    bool literal;
-    std::uint16_t column;
-    double value;
   };
 
   // execution
@@ -82,12 +109,8 @@ private:
   bool parameter_input_ = false;
 
   // words and units
-  bool has(char letter) const { return have_[letter - 'A']; }
-  const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
-  double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
   double as_written(double value, bool literal, bool decimal_point) const;  // decimal point rule, program units
   double dimension_raw(const Cmd& c) const;  // program units, decimal point rule and rounding, no inch
-  int integer(const Cmd& c, const char* what) const;
   std::vector<Arg> arguments(bool skip_p_l, int skip_g, int skip_m) const;
   // checks on the block's words before they act (block_words.cpp)
   bool word_needs_check(char letter, double value) const;
@@ -116,11 +139,6 @@ private:
   double nose_radius() const;
   void emit_event(MoveKind kind, int code);
   void m_code_event(int m);  // spindle, coolant, M06, M00/M01 and other M codes of the block
-  void dwell();
-  void reference_return(int g);
-  void machine_coordinate_move();
-  void set_coordinate_system(int g);
-  void data_setting();
   void set_origin();
   void warn_mixed_decimal_points(const nc::Program& p);
   double minutes_per_rev(double r0, double r1) const;
@@ -154,7 +172,6 @@ private:
 
   // AI contour control / look-ahead modes (high_speed.cpp)
   void high_speed_mode(int g, std::uint16_t column);
-  bool look_ahead_ = true;  // G05.1 Q1, G08 P1, G05 P10000 (G61.1: exact_stop_code_ 611)
   // chamfering and corner R (chamfer.cpp): the block's move waits for the next one
   void arm_corner(const AxisVector& target);  // the block's ,C ,R (lathe: C, I, K, R), before its move
   void corner_block_end(bool program_end = false);  // after an NC block: what it left undone is an alarm
@@ -182,7 +199,6 @@ private:
   V2 transformed_plane_vector(V2 v) const;  // G40 I J
   AxisVector program_position() const;  // #5001..: the end point before the transforms
   Transforms xf_;
-  bool polar_ = false;         // G16
   bool xf_on_ = false;         // G16 or a transform is active
   bool xf_hook_ = false;       // xf_on_, or the first move after a cancel is still to be checked
   bool xf_cancelled_ = false;  // G69, G50 or G50.1 given: the next move should be absolute
@@ -216,7 +232,6 @@ private:
     int ns = 0, nf = 0;
   };
   int repetitive_code(int g) const;  // the cycle a lathe G code names (x10, as in system A), else 0
-  bool repetitive_cycle(int g);      // one G70..G75 block; whether the tool moved
   bool repetitive_cycle_path(int g); // its body; a path too long for memory is NC9000 above
   ShapeRange shape_range(int g);
   std::vector<Move> walk_shape(const ShapeRange& r, int g, bool keep);
@@ -239,7 +254,6 @@ private:
   void single_cycle(const AxisVector& target);      // G90/G92/G94
   void cycle_compensation_start(int side);         // the cycle's own start-up under G41/G42
   void thread_block(const AxisVector& target);     // G32
-  void multiple_threading_cycle();                 // G76 (group 00)
   void g76_passes(const AxisVector& end, double taper, double height, double first_depth, double angle);
   void thread_pass(const AxisVector& end, double out_x, double lead, double angle);  // cut, chamfer at the end
   void thread_cut(const AxisVector& to, double lead, double angle);
@@ -252,16 +266,13 @@ private:
   unsigned block_axes() const;  // a bit per axis the block names (U, V, W too on system A)
   bool names_plane_axis() const;  // of the offset plane
   void remember_intermediate(const AxisVector& mid);  // G28/G30/G30.1: the point G29 goes through
-  void reference_check();                 // G27
-  void return_from_reference();           // G29
-  void workpiece_preset();                // G92.1 (G50.3 on system A)
-  bool single_direction_block();          // a one-shot G60 block
   void single_direction(const AxisVector& target);
-  bool skip_move(int g);                  // G31, G31 P1..P4, G31.1..G31.4
-  void stroke_area_command();             // G22 with its area (stroke_area.cpp)
   AxisVector intermediate_{};
   unsigned intermediate_axes_ = 0;        // axes G28/G30/G30.1 have given an intermediate point
   std::optional<AxisVector> skip_position_;  // #5061..: where the last G31 ended
+  void init_stroke_check();               // stroke_area.cpp
+  void stroke_area_switch(bool on);       // G22 / G23
+  bool area_check_on() const override { return modal_.stroke2_on; }  // for path_stroke_
   StrokeLimits stroke_;                   // stored stroke limits (path_stroke_ checks the moves)
   // ---- end of reference position moves ----
 
@@ -270,14 +281,12 @@ private:
   nc::Value read_var(int n, std::uint16_t column);
  private:
   void write_var(int n, nc::Value v, std::uint16_t column);
-  nc::Value read_system(int n, std::uint16_t column);
+  nc::Value read_system(int n, std::uint16_t column);  // system_variables.cpp
+  int axis_of_order(int k) const;  // the k-th axis of the profile (0-based) as an axis index, or -1
   int modal_code(int group) const;  // #4001..#4022 (variables.cpp)
   void write_system(int n, nc::Value v, std::uint16_t column);
   double program_units(int axis, double mm_value) const override;  // for position variables
 
-  [[noreturn]] void alarm(std::string code, std::string message, std::uint16_t column = 0,
-                          std::uint32_t length = 1) const;
-  void warn(std::string code, std::string message, std::uint16_t column = 0);
   void warn_once(std::string code, std::string message, std::uint16_t column = 0);  // once per block and code
   nc::Span span(std::uint16_t column = 0, std::uint32_t length = 1) const;
 
@@ -300,7 +309,7 @@ private:
   void add_call_stack(nc::Diagnostic& d) const;
   // the observer's side (observe.cpp): only called when there is one
   ExecutionObserver* observer_ = nullptr;
-  ModalState observed_modal_{};  // the modal state the observer was last given
+  ModalReadout observed_modal_{};  // the modal state the observer was last given
   bool modal_stale_ = true;      // an NC block ran since it was read
   bool shape_read_ = false;      // G71..G73 reading their shape: its blocks are the cycle block's
   void observe_block(const nc::Block& b);
@@ -309,7 +318,7 @@ private:
   void observed_write(int n, nc::Value v, std::uint16_t column);
   nc::Value observed_read(int n, std::uint16_t column);  // a system variable the program reads
   std::uint64_t moves_delivered() const;
-  ModalState modal_state();
+  ModalReadout modal_readout();
   std::vector<const nc::Program*> reached_;  // programs of other files entered so far (their warnings given)
 
   MachineProfile profile_;  // G10 L52 may change its parameters
@@ -349,25 +358,13 @@ private:
   std::uint64_t moves_in_block_ = 0;  // that block's moves past its first
   std::chrono::steady_clock::time_point started_;
 
-  // modal state
-  int motion_ = 0;           // 0..3
-  int plane_ = 17;
-  bool incremental_ = false;
-  bool inch_ = false;
-  bool feed_per_rev_ = false;
-  bool css_ = false;
-  bool speed_fluctuation_check_ = false;  // G26 (on) / G25 (off): read by #4008 on a lathe
-  bool exact_stop_ = false;
+  ModalState modal_;  // modal.hpp
   bool exact_stop_once_ = false;  // G09 in the current block
   std::uint32_t statements_since_ = 0, nc_blocks_since_ = 0;  // since the previous event
-  int exact_stop_code_ = 64;
-  int length_comp_ = 49;
-  int work_index_ = 1;       // 1..6 = G54..G59, 7+ = G54.1 P(n-6)
   double feed_ = 0, speed_ = 0;
   double max_spindle_ = 0;  // G50 S on a lathe
   int tool_ = 0, h_ = 0, d_ = 0, last_m_ = -1;
   std::int32_t last_sequence_ = -1;
-  bool modal_call_ = false;  // a G66 is in force (#4012 reads 66)
   // G66 modal calls in force, the latest last: a second G66 nests inside the first, and G67 cancels
   // the latest (the manual's nesting of modal calls).
   struct ModalCall {
@@ -378,8 +375,6 @@ private:
   std::vector<ModalCall> modal_calls_;
   std::size_t modal_limit_next_ = SIZE_MAX;  // the modal_limit of the frame call_program makes next
   // drilling canned cycle (group 09): 0 = G80, else 73, 74, 76, 81..89; data kept while it is active
-  int cycle_ = 0;
-  bool cycle_return_initial_ = true;  // G98 (power-on), G99: return to the R point level
   AxisVector cycle_initial_{};        // where the cycle mode started: the initial level along the drilling axis
   int cycle_axis_ = -1;               // the drilling axis of the cycle mode, -1 before its first hole
   std::optional<double> cycle_r_, cycle_z_;  // mm as written (G91: R from the initial level, Z from R)
@@ -402,24 +397,16 @@ private:
   static bool is_tip_variable(int n);     // #2301..#2364: a lathe's tool nose tip (a number)
   double* lathe_offset_field(int n);
   void lathe_offset_setting();
-  AxisVector tool_shift_{};  // machine = work + origin + tool shift (G43/G44 on Z; lathe T offset on X, Z)
   int lathe_offset_ = 0;     // active lathe offset number (T code's last two digits)
 
   // cutter / tool-nose radius compensation
   RadiusCompensation* comp_ = nullptr;  // path_comp_'s
-  int comp_side_ = 0;                  // +1 G41, -1 G42, 0 G40
   bool comp_suspended_ = false;        // G28/G30/G53 in offset mode: moves without the vector
   bool comp_drop_ = false;             // and the vector goes even where the move stays put in the plane
   bool macro_call_block_ = false;      // the block called a macro (G65, G66, custom G/M code)
   std::optional<V2> cancel_direction_;  // I J K of a G40 block
 
-  // positions (work coordinates, mm; lathe X as a radius)
-  AxisVector pos_{};
-  AxisVector origin_{};  // machine = work + origin
-  AxisVector local_{};   // G52
-  AxisVector shift_{};   // G92 / G50
-  std::array<AxisVector, 7> work_offsets_{};
-  std::map<int, AxisVector> extended_offsets_;  // G54.1 P1..P300
+  Coordinates coords_;  // coordinates.hpp
   std::map<int, MillOffset> tool_offsets_;
   double* mill_offset_field(int n);
   double length_offset(int n) const;  // H: geometry + wear
@@ -456,7 +443,7 @@ private:
                               throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, where});
                             }};
   CompensationStage path_comp_{compensation_settings(profile_),
-                                OffsetModes{&comp_side_, &comp_suspended_, &comp_drop_, &plane_, &cancel_direction_},
+                                OffsetModes{&modal_.comp_side, &comp_suspended_, &comp_drop_, &modal_.plane, &cancel_direction_},
                                 *this, path_alarm,
                                 [this](const Move& at, const std::string& code, const std::string& message) {
                                   path_warning(at, code, message);
@@ -467,7 +454,7 @@ private:
                                       }};
   StrokeCheck path_stroke_{stroke_, *this, path_alarm};
   NoseCentre path_nose_{*this};  // linked in with --nose-centre on a lathe
-  Statistics path_stats_{result_.stats, SetupView{&work_index_, &origin_, &length_comp_, &h_}};
+  Statistics path_stats_{result_.stats, SetupView{&modal_.work_index, &coords_.origin, &modal_.length_comp, &h_}};
 };
 
 }  // namespace ncurve::machine

@@ -13,7 +13,7 @@ namespace ncurve::machine {
 // at 0.5 mm nearer the centre), at most G50 S (G92 S on systems B/C). Then 1/n(r) = k max(|r|, rho)
 // with k = 2 pi / (1000 S) and rho the radius below which the clamp holds: its mean in closed form.
 double Executor::minutes_per_rev(double r0, double r1) const {
-  if (!css_ || speed_ <= 0) {
+  if (!modal_.css || speed_ <= 0) {
     const double rpm = speed_ > 0 ? speed_ : profile_.spindle_speed_for_time;
     return rpm > 0 ? 1.0 / rpm : 0.0;
   }
@@ -30,14 +30,14 @@ double Executor::minutes_per_rev(double r0, double r1) const {
 // Time at the programmed feed along a move whose X radius runs linearly from r0 to r1.
 double Executor::feed_seconds(double length, double r0, double r1) const {
   if (feed_ <= 0) return 0.0;
-  return feed_per_rev_ ? length / feed_ * 60.0 * minutes_per_rev(r0, r1) : length / feed_ * 60.0;
+  return modal_.feed_per_rev ? length / feed_ * 60.0 * minutes_per_rev(r0, r1) : length / feed_ * 60.0;
 }
 
 // The same along an arc, whose X radius is not linear in the distance: Simpson's rule on 64 pieces of
 // equal angle (the time per mm at one point is feed_seconds at constant radius).
 double Executor::arc_feed_seconds(const Move& m, double planar) const {
   const PlaneAxes pa = plane_axes(m.plane);
-  if (!feed_per_rev_ || !css_ || speed_ <= 0 || (pa.p != 0 && pa.q != 0))
+  if (!modal_.feed_per_rev || !modal_.css || speed_ <= 0 || (pa.p != 0 && pa.q != 0))
     return feed_seconds(planar, m.start[0], m.end[0]);
   const double a0 = std::atan2(m.start[pa.q] - m.center[pa.q], m.start[pa.p] - m.center[pa.p]);
   const double rs = std::hypot(m.start[pa.p] - m.center[pa.p], m.start[pa.q] - m.center[pa.q]);

@@ -9,7 +9,26 @@
 
 namespace ncurve::machine {
 
+// The actions of the codes that have one (g_actions.cpp unless a code has a file of its own).
+namespace actions {
+bool dwell(Executor&, int);
+bool data_setting(Executor&, int);
+bool reference_check(Executor&, int);
+bool reference_return(Executor&, int);
+bool from_reference(Executor&, int);
+bool skip(Executor&, int);
+bool coordinate_setting(Executor&, int);
+bool workpiece_preset(Executor&, int);
+bool machine_coordinates(Executor&, int);
+bool single_direction(Executor&, int);
+bool stroke_area(Executor&, int);
+bool repetitive_cycle(Executor&, int);
+bool multiple_threading(Executor&, int);
+bool tool_retract(Executor&, int);  // tool_retract.cpp
+}  // namespace actions
+
 namespace {
+using namespace actions;
 constexpr std::uint8_t M = kMill, LA = kLatheA, LB = kLatheB, LC = kLatheC, L = LA | LB | LC, BC = LB | LC,
                        ALL = M | L;
 constexpr GStatus sim = GStatus::simulated, ns = GStatus::not_simulated, absent = GStatus::absent;
@@ -45,7 +64,7 @@ constexpr GCode kTable[] = {
     {780, BC, 1, sim, K::single_cycle, false, "threading cycle (G78)"},
     {790, BC, 1, sim, K::single_cycle, false, "end face cutting cycle (G79)"},
     // group 00: one-shot
-    {40, ALL, 0, sim, K::none, false, "dwell (G04)"},
+    {40, ALL, 0, sim, K::none, false, "dwell (G04)", dwell},
     {50, ALL, 0, sim, K::none, false, "high-precision contour control (G05)"},
     {51, ALL, 0, sim, K::none, false, "AI contour control (G05.1)"},
     {70, ALL, 0, ns, K::none, false, "cylindrical interpolation (G07.1)"},
@@ -53,24 +72,24 @@ constexpr GCode kTable[] = {
     {1070, ALL, 0, sim, K::none, false, "cylindrical interpolation (G107)"},
     {80, ALL, 0, sim, K::none, false, "advanced preview control (G08)"},
     {90, ALL, 0, sim, K::none, false, "exact stop (G09)"},
-    {100, ALL, 0, sim, K::none, false, "programmable data input (G10)"},
-    {106, ALL, 0, ns, K::none, false, "tool retract and recover (G10.6)"},
+    {100, ALL, 0, sim, K::none, false, "programmable data input (G10)", data_setting},
+    {106, ALL, 0, sim, K::none, false, "tool retract and recover (G10.6)", tool_retract},
     {109, L, 0, ns, K::none, false, "programmable switching of diameter and radius programming (G10.9)"},
     {110, ALL, 0, ns, K::none, false, "programmable parameter input (G10 L50 .. G11)"},
     {120, ALL, 0, ns, K::none, false, "circle cutting (G12/G13)"},
     {130, ALL, 0, ns, K::none, false, "circle cutting (G12/G13)"},
-    {270, ALL, 0, sim, K::reference, false, "reference position return check (G27)"},
-    {280, ALL, 0, sim, K::reference, false, "automatic reference position return (G28)"},
+    {270, ALL, 0, sim, K::reference, false, "reference position return check (G27)", reference_check},
+    {280, ALL, 0, sim, K::reference, false, "automatic reference position return (G28)", reference_return},
     {281, ALL, 0, ns, K::none, false, "in-position check disable reference position return (G28.2)"},
-    {290, ALL, 0, sim, K::reference, false, "movement from reference position (G29)"},
-    {300, ALL, 0, sim, K::reference, false, "2nd, 3rd, 4th reference position return (G30)"},
-    {301, ALL, 0, sim, K::reference, false, "floating reference position return (G30.1)"},
+    {290, ALL, 0, sim, K::reference, false, "movement from reference position (G29)", from_reference},
+    {300, ALL, 0, sim, K::reference, false, "2nd, 3rd, 4th reference position return (G30)", reference_return},
+    {301, ALL, 0, sim, K::reference, false, "floating reference position return (G30.1)", reference_return},
     {302, ALL, 0, ns, K::none, false, "in-position check disable 2nd reference position return (G30.2)"},
-    {310, ALL, 0, sim, K::skip, false, "skip function (G31)"},
-    {311, ALL, 0, sim, K::skip, false, "multi-step skip (G31.1)"},
-    {312, ALL, 0, sim, K::skip, false, "multi-step skip (G31.2)"},
-    {313, ALL, 0, sim, K::skip, false, "multi-step skip (G31.3)"},
-    {314, ALL, 0, sim, K::skip, false, "multi-step skip (G31.4)"},
+    {310, ALL, 0, sim, K::skip, false, "skip function (G31)", skip},
+    {311, ALL, 0, sim, K::skip, false, "multi-step skip (G31.1)", skip},
+    {312, ALL, 0, sim, K::skip, false, "multi-step skip (G31.2)", skip},
+    {313, ALL, 0, sim, K::skip, false, "multi-step skip (G31.3)", skip},
+    {314, ALL, 0, sim, K::skip, false, "multi-step skip (G31.4)", skip},
     {318, ALL, 0, ns, K::none, false, "EGB skip (G31.8)"},
     {319, ALL, 0, ns, K::none, false, "continuous high-speed skip (G31.9)"},
     {360, L, 0, ns, K::none, false, "automatic tool compensation (G36): ncurve does not simulate the measuring "
@@ -85,24 +104,24 @@ constexpr GCode kTable[] = {
     {460, M, 0, sim, K::none, false, "tool offset decrease (G46)"},
     {470, M, 0, sim, K::none, false, "tool offset double increase (G47)"},
     {480, M, 0, sim, K::none, false, "tool offset double decrease (G48)"},
-    {500, LA, 0, sim, K::coordinate_setting_with_axes, false, "coordinate system setting, maximum spindle speed (G50)"},
+    {500, LA, 0, sim, K::coordinate_setting_with_axes, false, "coordinate system setting, maximum spindle speed (G50)", coordinate_setting},
     {500, BC, 0, sim, K::none, false, "(G50)"},
-    {503, LA, 0, sim, K::none, false, "workpiece coordinate system preset (G50.3)"},
+    {503, LA, 0, sim, K::none, false, "workpiece coordinate system preset (G50.3)", workpiece_preset},
     {504, ALL, 0, ns, K::none, false, "synchronous control (G50.4)"},
     {514, ALL, 0, ns, K::none, false, "synchronous control (G51.4)"},
     {505, ALL, 0, ns, K::none, false, "composite control (G50.5)"},
     {515, ALL, 0, ns, K::none, false, "composite control (G51.5)"},
     {506, ALL, 0, ns, K::none, false, "superimposed control (G50.6)"},
     {516, ALL, 0, ns, K::none, false, "superimposed control (G51.6)"},
-    {520, ALL, 0, sim, K::coordinate_change, false, "local coordinate system setting (G52)"},
-    {530, ALL, 0, sim, K::coordinate_change, false, "machine coordinate system selection (G53)"},
+    {520, ALL, 0, sim, K::coordinate_change, false, "local coordinate system setting (G52)", coordinate_setting},
+    {530, ALL, 0, sim, K::coordinate_change, false, "machine coordinate system selection (G53)", machine_coordinates},
     {531, M, 0, ns, K::none, false, "tool axis direction control (G53.1)"},
     {542, M, 0, ns, K::none, false, "rotary table dynamic fixture offset (G54.2)"},
     {544, M, 0, ns, K::none, false, "workpiece setting error compensation (G54.4)"},
-    {600, M, 0, sim, K::none, false, "single direction positioning (G60)"},
+    {600, M, 0, sim, K::none, false, "single direction positioning (G60)", single_direction},
     {650, ALL, 0, sim, K::none, false, "macro call (G65)"},
-    {920, M | BC, 0, sim, K::coordinate_setting, false, "coordinate system setting (G92)"},
-    {921, M | BC, 0, sim, K::none, false, "workpiece coordinate system preset (G92.1)"},
+    {920, M | BC, 0, sim, K::coordinate_setting, false, "coordinate system setting (G92)", coordinate_setting},
+    {921, M | BC, 0, sim, K::none, false, "workpiece coordinate system preset (G92.1)", workpiece_preset},
     {911, ALL, 0, ns, K::none, false, "maximum incremental value check (G91.1)"},
     {961, ALL, 0, ns, K::none, false, "spindle indexing (G96.1)"},
     {962, ALL, 0, ns, K::none, false, "spindle indexing (G96.2)"},
@@ -114,13 +133,13 @@ constexpr GCode kTable[] = {
     {721, M, 0, ns, K::none, false, "figure copying, rotation (G72.1)"},
     {722, M, 0, ns, K::none, false, "figure copying, parallel (G72.2)"},
     // lathe multiple repetitive cycles: G70..G76 on systems A and B, G72..G78 on C
-    {700, LA | LB, 0, sim, K::repetitive_cycle, false, "finishing cycle (G70)"},
-    {710, LA | LB, 0, sim, K::repetitive_cycle, false, "stock removal in turning (G71)"},
-    {720, L, 0, sim, K::repetitive_cycle, false, "stock removal in facing (G72)"},
-    {730, L, 0, sim, K::repetitive_cycle, false, "pattern repeating (G73)"},
-    {740, L, 0, sim, K::repetitive_cycle, false, "end face peck drilling (G74)"},
-    {750, L, 0, sim, K::repetitive_cycle, false, "outer/inner diameter drilling (G75)"},
-    {760, L, 0, sim, K::repetitive_cycle, false, "multiple threading cycle (G76)"},
+    {700, LA | LB, 0, sim, K::repetitive_cycle, false, "finishing cycle (G70)", repetitive_cycle},
+    {710, LA | LB, 0, sim, K::repetitive_cycle, false, "stock removal in turning (G71)", repetitive_cycle},
+    {720, L, 0, sim, K::repetitive_cycle, false, "stock removal in facing (G72)", repetitive_cycle},
+    {730, L, 0, sim, K::repetitive_cycle, false, "pattern repeating (G73)", repetitive_cycle},
+    {740, L, 0, sim, K::repetitive_cycle, false, "end face peck drilling (G74)", repetitive_cycle},
+    {750, L, 0, sim, K::repetitive_cycle, false, "outer/inner diameter drilling (G75)", repetitive_cycle},
+    {760, L, 0, sim, K::repetitive_cycle, false, "multiple threading cycle (G76)", multiple_threading},
     // group 02 (mill) / 16 (lathe): plane selection
     {170, M, 2, sim, K::plane, false, "XpYp plane selection (G17)"},
     {180, M, 2, sim, K::plane, false, "ZpXp plane selection (G18)"},
@@ -132,9 +151,9 @@ constexpr GCode kTable[] = {
     {900, M | BC, 3, sim, K::none, false, "absolute programming (G90)"},
     {910, M | BC, 3, sim, K::none, false, "incremental programming (G91)"},
     // group 04 (mill) / 09 (lathe): stored stroke check
-    {220, M, 4, sim, K::none, false, "stored stroke check function on (G22)"},
+    {220, M, 4, sim, K::none, false, "stored stroke check function on (G22)", stroke_area},
     {230, M, 4, sim, K::none, false, "stored stroke check function off (G23)"},
-    {220, L, 9, sim, K::none, false, "stored stroke check function on (G22)"},
+    {220, L, 9, sim, K::none, false, "stored stroke check function on (G22)", stroke_area},
     {230, L, 9, sim, K::none, false, "stored stroke check function off (G23)"},
     // lathe group 04: mirror image for double turrets
     {680, L, 4, ns, K::coordinate_transform, false, "mirror image for double turrets / balance cut (G68)"},
@@ -283,6 +302,12 @@ const GCode* g_code(int g, GMachine m) {
   if (g < 0 || g >= kCodes) return nullptr;
   const int i = index().row[slot(m)][g];
   return i < 0 ? nullptr : &kTable[i];
+}
+
+GAction g_action(int g, GMachine m) {
+  const GCode* r = g_code(g, m);
+  if ((!r || !r->action) && m != kMill) r = g_code(g, kLatheA);
+  return r ? r->action : nullptr;
 }
 
 int g_group(int g, GMachine m) {

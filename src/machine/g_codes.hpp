@@ -29,6 +29,11 @@ enum class GKind : std::uint8_t {
 };
 const char* to_string(GKind k);  // "reference position return", or nullptr for none
 
+class Executor;
+// What a code does in its block, after the block's other words are read (one-shot codes, and G22
+// with its area); returns whether the tool moved. The actions live beside the state they change.
+using GAction = bool (*)(Executor& x, int g);
+
 struct GCode {
   std::int16_t code;      // x10: 121 for G12.1
   std::uint8_t machines;  // GMachine bits
@@ -37,11 +42,15 @@ struct GCode {
   GKind kind;
   bool initial;           // in force at power-on in its group (the groups ncurve does not change)
   const char* name;
+  GAction action = nullptr;
   bool one_shot() const { return group == 0; }
 };
 
 // The row of code g (x10) on machine m, or nullptr if the control has no such code.
 const GCode* g_code(int g, GMachine m);
+// The action of one-shot code g (x10) as the dispatch keeps it (a lathe's cycles as system A writes
+// them), or nullptr.
+GAction g_action(int g, GMachine m);
 // The group of g on m; 0 for a one-shot code or none.
 int g_group(int g, GMachine m);
 // The code in force at power-on in group `group` of m that ncurve keeps no state for, or 0.

@@ -16,7 +16,7 @@ void Executor::high_speed_mode(int g, std::uint16_t column) {
                         "missing Q", column);
       const int q = integer(word('Q'), "Q of G05.1");
       if (q == 0 || q == 1) {
-        look_ahead_ = q == 1;  // R (machining condition level) tunes the acceleration only
+        modal_.look_ahead = q == 1;  // R (machining condition level) tunes the acceleration only
         return;
       }
       if (q == 2) alarm("NC9001", "smooth interpolation (G05.1 Q2) is not supported yet", column);
@@ -27,7 +27,7 @@ void Executor::high_speed_mode(int g, std::uint16_t column) {
       const int p = has('P') ? integer(word('P'), "P of G08") : -1;
       if (p != 0 && p != 1)
         alarm("PS0109", "format error in G08: G08 takes P1 (look-ahead control on) or P0 (off)", column);
-      look_ahead_ = p == 1;
+      modal_.look_ahead = p == 1;
       return;
     }
     case 50: {  // G05 P10000/P0; other forms of G05 are high-speed cycle machining
@@ -36,7 +36,7 @@ void Executor::high_speed_mode(int g, std::uint16_t column) {
       if (p != 0 && p != 10000)
         alarm("NC9001", fmt::format("G05 P{} is not supported yet (P10000 and P0 switch AI contour control)", p),
               column);
-      look_ahead_ = p == 10000;
+      modal_.look_ahead = p == 10000;
       return;
     }
     case 611:  // G61.1: group 15 with G61..G64, which end it
@@ -44,8 +44,8 @@ void Executor::high_speed_mode(int g, std::uint16_t column) {
         alarm("PS0010", "G61.1 is not a G code of this control: it is the high-accuracy mode of other makers' "
                         "controls (FANUC's is G05.1 Q1); a profile with [motion] g61_1 = true takes it as look-ahead on",
               column);
-      exact_stop_ = false;
-      exact_stop_code_ = 611;
+      modal_.exact_stop = false;
+      modal_.exact_stop_code = 611;
       return;
     default: return;
   }

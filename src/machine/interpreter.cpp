@@ -66,7 +66,7 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   eval_options_.adp_scale = 1.0 / profile_.increment;
   common_high_ = profile_.control == Control::fanuc_30i ? 499 : 199;
   common_.assign(1000, Value{});
-  work_offsets_ = profile_.work_offsets;
+  coords_.work_offsets = profile_.work_offsets;
   tool_offsets_ = profile_.tool_offsets;
   lathe_offsets_ = profile_.lathe_offsets;
   comp_ = &path_comp_.compensation();
@@ -239,14 +239,10 @@ RunResult Executor::run(MoveSink& sink) {
   f.prog = main;
   frames_.push_back(f);
   if (observer_) observe_call(f);
-  motion_ = profile_.power_on_g01 ? 1 : 0;
-  plane_ = profile_.power_on_plane;
-  incremental_ = profile_.power_on_g91;
-  feed_per_rev_ = profile_.power_on_feed_per_rev;
-  look_ahead_ = profile_.motion.look_ahead_at_power_on;
+  modal_.power_on(profile_);
   set_origin();
-  for (int a = 0; a < kAxes; ++a) pos_[a] = profile_.reference_points[0][a] - origin_[a];  // power on at home
-  stroke_ = StrokeLimits::power_on(profile_, has_axis_);
+  for (int a = 0; a < kAxes; ++a) coords_.pos[a] = profile_.reference_points[0][a] - coords_.origin[a];  // power on at home
+  init_stroke_check();
 
   reached_.clear();
   for (const auto& p : library_.programs())  // the main file's; a library program's when it is called
@@ -274,7 +270,7 @@ RunResult Executor::run(MoveSink& sink) {
     } catch (const nc::Alarm&) {
     }
   }
-  if (observer_) observer_->finished(moves_delivered(), modal_state());
+  if (observer_) observer_->finished(moves_delivered(), modal_readout());
   return result_;
 }
 
@@ -365,13 +361,13 @@ void Executor::step() {
         parameter_input_block(b);
         break;
       }
-      const bool g40 = comp_side_ != 0;
-      const bool from_cancel = comp_side_ == 0 && !comp_->offset_mode();
+      const bool g40 = modal_.comp_side != 0;
+      const bool from_cancel = modal_.comp_side == 0 && !comp_->offset_mode();
       macro_call_block_ = false;
       exec_nc(b);
       if (corner_on_) [[unlikely]] corner_block_end();
       if (compensating() && !macro_call_block_ && !shape_moves_)
-        end_of_block_compensation(g40 && comp_side_ == 0, from_cancel && comp_side_ != 0);
+        end_of_block_compensation(g40 && modal_.comp_side == 0, from_cancel && modal_.comp_side != 0);
       break;
     }
     case Statement::go_to: jump(b, eval(b.value).number()); break;

@@ -77,14 +77,7 @@ const char* to_string(MoveKind k) {
 }
 
 void Executor::set_origin() {
-  AxisVector old = origin_;
-  const AxisVector& work = work_index_ <= 6 ? work_offsets_[work_index_] : extended_offsets_[work_index_ - 6];
-  AxisVector delta{};
-  for (int a = 0; a < kAxes; ++a) {
-    origin_[a] = work_offsets_[0][a] + work[a] + local_[a] + shift_[a];
-    delta[a] = old[a] - origin_[a];
-    pos_[a] += delta[a];
-  }
+  const AxisVector delta = coords_.select(modal_.work_index);
   if (comp_) comp_->move_frame(delta);
 }
 
@@ -100,7 +93,7 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
     Executor* self;
     bool& group01;
     ~CancelCycle() {
-      if (group01 && self->cycle_ != 0) self->cancel_canned_cycle();
+      if (group01 && self->modal_.cycle != 0) self->cancel_canned_cycle();
     }
   } cancel_cycle{this, group01};
   for (std::size_t i = 0; i < g_codes_.size(); ++i) {
@@ -112,51 +105,47 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
     if (developed_) [[unlikely]] check_code_in_developed(g, column);  // polar_cylindrical.cpp
     switch (g) {
       case 0: case 10: case 20: case 30:
-        motion_ = g / 10;
+        modal_.motion = g / 10;
         group01 = true;  // a group 01 code ends a drilling canned cycle
         break;
-      case 40: case 280: case 300: case 530: case 100: case 520: one_shot.push_back(g); break;
-      case 270: case 290: case 301: case 310: case 311: case 312: case 313: case 314: case 220:
-        one_shot.push_back(g);  // reference_moves.cpp, skip.cpp, stroke_check.cpp
-        break;
-      case 230: stroke_.switch_area(false); break;  // G22 comes with its area (one_shot)
-      case 250: case 260: speed_fluctuation_check_ = g == 260; break;  // nothing on the path
+      case 230: stroke_area_switch(false); break;  // G22 comes with its area (one_shot)
+      case 250: case 260: modal_.speed_fluctuation_check = g == 260; break;  // nothing on the path
       case 90: exact_stop_once_ = true; break;  // G09: one-shot exact stop, for the time planner
       case 450: case 460: case 470: case 480:  // tool position offset (position_offset.cpp)
         if (lathe) alarm("PS0010", unknown_g_code(g, profile_, library_), column);
         position_offset_ = g / 10;
         break;
       case 170: case 180: case 190:
-        if (g / 10 != plane_ && (rigid_tapping_ || rigid_pending_))
+        if (g / 10 != modal_.plane && (rigid_tapping_ || rigid_pending_))
           alarm("PS0206", fmt::format("the plane cannot change (G{}) in rigid tapping mode (after M29)", g / 10), column);
-        if (g / 10 != plane_ && compensating())
+        if (g / 10 != modal_.plane && compensating())
           alarm("PS0037", fmt::format("the plane cannot change (G{}) while cutter compensation is active: cancel it "
                                       "with G40 first",
                                       g / 10),
                 column);
-        plane_ = g / 10;
+        modal_.plane = g / 10;
         break;
       case 400:
-        if (comp_side_ != 0 || comp_->offset_mode()) {
-          comp_side_ = 0;
-          const PlaneAxes pa = plane_axes(plane_);
+        if (modal_.comp_side != 0 || comp_->offset_mode()) {
+          modal_.comp_side = 0;
+          const PlaneAxes pa = plane_axes(modal_.plane);
           if (has(pa.ip) || has(pa.iq))
             cancel_direction_ = V2{has(pa.ip) ? dimension(word(pa.ip)) : 0.0, has(pa.iq) ? dimension(word(pa.iq)) : 0.0};
           if (cancel_direction_ && xf_on_) cancel_direction_ = transformed_plane_vector(*cancel_direction_);
         }
         break;
       case 410: case 420:
-        comp_side_ = g == 410 ? 1 : -1;
+        modal_.comp_side = g == 410 ? 1 : -1;
         break;
       case 200: case 210:
         // The 30i-MA manual (8.2): G20/G21 in a block of its own at the start, before the coordinate
         // system is set, and "must not be switched during a program". ncurve converts at the switch;
         // the control changes the unit of the offsets whose numbers it keeps, so it warns.
-        if (inch_ != (g == 200) && result_.stats.feed_length + result_.stats.rapid_length > 0)
+        if (modal_.inch != (g == 200) && result_.stats.feed_length + result_.stats.rapid_length > 0)
           warn_once("NC2018", fmt::format("G{} switches the unit after the program has moved: the manual says G20 and "
                                           "G21 must not be switched during a program (the offsets then change unit)",
                                           g / 10));
-        inch_ = g == 200;
+        modal_.inch = g == 200;
         break;
       case 800: cancel_canned_cycle(); break;
       case 670: break;
@@ -175,69 +164,71 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
         alarm("PS0010", unknown_g_code(g, profile_, library_), column);
       case 430: case 440:
         if (!has('H') && h_ == 0) alarm("PS0030", fmt::format("G{} needs an H offset number", g / 10), column);
-        length_comp_ = g / 10;
+        modal_.length_comp = g / 10;
         h_ = has('H') ? static_cast<int>(std::lround(word('H').value)) : h_;
-        tool_shift_[2] = (g == 430 ? 1 : -1) * length_offset(h_);
+        coords_.tool_shift[2] = (g == 430 ? 1 : -1) * length_offset(h_);
         break;
-      case 490: length_comp_ = 49; tool_shift_[2] = 0; break;
+      case 490: modal_.length_comp = 49; coords_.tool_shift[2] = 0; break;
       case 540: case 550: case 560: case 570: case 580: case 590:
-        work_index_ = g / 10 - 53;
+        modal_.work_index = g / 10 - 53;
         set_origin();
         break;
       case 541: {
         int p = has('P') ? static_cast<int>(std::lround(word('P').value)) : 1;
         if (p < 1 || p > 300) alarm("PS0030", "G54.1 P must be 1 to 300", column);
-        work_index_ = 6 + p;
+        modal_.work_index = 6 + p;
         set_origin();
         break;
       }
-      case 610: case 620: case 630: exact_stop_ = g == 610; exact_stop_code_ = g / 10; break;
-      case 640: exact_stop_ = false; exact_stop_code_ = 64; break;
-      case 960: css_ = true; break;
-      case 970: css_ = false; break;
+      case 610: case 620: case 630: modal_.exact_stop = g == 610; modal_.exact_stop_code = g / 10; break;
+      case 640: modal_.exact_stop = false; modal_.exact_stop_code = 64; break;
+      case 960: modal_.css = true; break;
+      case 970: modal_.css = false; break;
       case 500:
-        if (lathe && profile_.gcode_system == 'A') one_shot.push_back(g);  // coordinate system setting / max spindle
-        else if (!lathe) transform = true;                                 // scaling cancel
+        if (system_a) one_shot.push_back(g);  // coordinate system setting / max spindle speed
+        else if (!lathe) transform = true;    // scaling cancel
         break;
       default: {
         if (lathe && select_lathe_motion(g, one_shot)) {  // lathe_cycles.cpp
-          group01 = group01 || motion_ == g / 10;  // G32/G90/G92/G94 end a drilling cycle, G76 does not
+          group01 = group01 || modal_.motion == g / 10;  // G32/G90/G92/G94 end a drilling cycle, G76 does not
           break;
         }
         if (system_a) {
-          if (g == 980) { feed_per_rev_ = false; break; }
-          if (g == 990) { feed_per_rev_ = true; break; }
+          if (g == 980) { modal_.feed_per_rev = false; break; }
+          if (g == 990) { modal_.feed_per_rev = true; break; }
         } else {
-          if (g == 900) { incremental_ = false; break; }
-          if (g == 910) { incremental_ = true; break; }
-          if (g == 940) { feed_per_rev_ = false; break; }
-          if (g == 950) { feed_per_rev_ = true; break; }
-          if (g == 920) { one_shot.push_back(g); break; }
+          if (g == 900) { modal_.incremental = false; break; }
+          if (g == 910) { modal_.incremental = true; break; }
+          if (g == 940) { modal_.feed_per_rev = false; break; }
+          if (g == 950) { modal_.feed_per_rev = true; break; }
           if (g == 980 || g == 990) {  // canned cycle return level: initial level, point R
-            cycle_return_initial_ = g == 980;
+            modal_.cycle_return_initial = g == 980;
             break;
           }
         }
         if (lathe) {  // G70..G75 (G72..G77 in system C): lathe_repetitive.cpp
           if (const int r = repetitive_code(g); r >= 700 && r <= 750) { one_shot.push_back(r); break; }
-          if (profile_.gcode_system == 'C' && (g == 700 || g == 710)) { inch_ = g == 700; break; }
+          if (profile_.gcode_system == 'C' && (g == 700 || g == 710)) { modal_.inch = g == 700; break; }
         }
         if (!lathe && g == 330) {  // G33 thread cutting of a machining center (threading.cpp)
-          motion_ = 33;
+          modal_.motion = 33;
           group01 = true;
           break;
         }
         if (!lathe && g == 600) {  // G60: one-shot (group 00), or modal in group 01 with No.5431#0 MDL = 1
           if (!profile_.g60_modal) one_shot.push_back(g);
-          else motion_ = 60, group01 = true;
+          else modal_.motion = 60, group01 = true;
           break;
         }
-        if (g == (system_a ? 503 : 921)) { one_shot.push_back(921); break; }  // workpiece coordinate system preset
         if (lathe && g >= 700 && g <= 760)
           alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
         const bool lathe_drilling = g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890;
         if (lathe ? lathe_drilling : (g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890)))) {
           select_canned_cycle(g, column);
+          break;
+        }
+        if (g_action(g, g_machine(profile_))) {  // a one-shot code with an action of its own in the table
+          one_shot.push_back(g);
           break;
         }
         if (const char* what = unsupported_name(g, profile_))
@@ -259,7 +250,7 @@ bool Executor::axis_target(AxisVector& target, bool force_absolute) {
   if (rolls_) roll_word_.fill(false);
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
-    bool incremental = incremental_ && !force_absolute;
+    bool incremental = modal_.incremental && !force_absolute;
     if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W')) {
       a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : 2;
       incremental = true;
@@ -289,8 +280,8 @@ bool Executor::axis_target(AxisVector& target, bool force_absolute) {
 
 void Executor::motion(const AxisVector& target) {
   bool swap = false;  // a mirror image reverses arcs: G02 and G03 swap
-  if (xf_hook_ && (motion_ == 2 || motion_ == 3)) swap = transform_arc_words();
-  switch (motion_) {
+  if (xf_hook_ && (modal_.motion == 2 || modal_.motion == 3)) swap = transform_arc_words();
+  switch (modal_.motion) {
     case 0: linear(MoveKind::rapid, target); break;
     case 1: linear(MoveKind::line, target); break;
     case 2: arc(target, !swap); break;
@@ -307,10 +298,10 @@ void Executor::emit(Move& m) {
   m.program = prog_ ? prog_->number : -1;
   m.file = prog_ ? prog_->file.get() : nullptr;
   m.line = block_ ? block_->line : 0;
-  m.feed_per_rev = feed_per_rev_ || m.threading;
+  m.feed_per_rev = modal_.feed_per_rev || m.threading;
   m.spindle = speed_;
-  m.exact_stop = exact_stop_ || exact_stop_once_;
-  m.lookahead = look_ahead_ || exact_stop_code_ == 611;
+  m.exact_stop = modal_.exact_stop || exact_stop_once_;
+  m.lookahead = modal_.look_ahead || modal_.exact_stop_code == 611;
   m.macro_statements = statements_since_;
   m.nc_blocks = nc_blocks_since_;
   statements_since_ = nc_blocks_since_ = 0;
@@ -322,7 +313,7 @@ void Executor::emit(Move& m) {
 }
 
 CornerContext Executor::corner_context() const {
-  return {prog_, block_, result_.stats.blocks, comp_side_, d_, lathe_offset_};
+  return {prog_, block_, result_.stats.blocks, modal_.comp_side, d_, lathe_offset_};
 }
 
 void Executor::set_offset_numbers(int d, int lathe_offset) { d_ = d, lathe_offset_ = lathe_offset; }
@@ -352,7 +343,7 @@ double Executor::rapid_seconds(const AxisVector& from, const AxisVector& to) con
 
 AxisVector Executor::machine_shift() const {
   AxisVector shift{};
-  for (int a = 0; a < kAxes; ++a) shift[a] = origin_[a] + tool_shift_[a];
+  for (int a = 0; a < kAxes; ++a) shift[a] = coords_.origin[a] + coords_.tool_shift[a];
   return shift;
 }
 
@@ -364,11 +355,11 @@ V2 Executor::nose_tip_now() const { return developed_ ? V2{} : nose_tip(); }
 void Executor::end_of_block_compensation(bool g40, bool g41) {
   if (!path_comp_.block_moved_in_plane()) {
     Move at;
-    at.kind = motion_ == 0 ? MoveKind::rapid : MoveKind::line;
-    at.plane = static_cast<std::uint8_t>(plane_);
-    at.start = at.end = pos_;
+    at.kind = modal_.motion == 0 ? MoveKind::rapid : MoveKind::line;
+    at.plane = static_cast<std::uint8_t>(modal_.plane);
+    at.start = at.end = coords_.pos;
     at.feed = feed_;
-    at.feed_per_rev = feed_per_rev_;
+    at.feed_per_rev = modal_.feed_per_rev;
     at.spindle = speed_;
     at.file = prog_ ? prog_->file.get() : nullptr;
     at.line = block_ ? block_->line : 0;
@@ -399,40 +390,40 @@ void Executor::emit_event(MoveKind kind, int code) {
   Move m;
   m.kind = kind;
   m.code = code;
-  m.start = m.end = pos_;
-  m.plane = static_cast<std::uint8_t>(plane_);
+  m.start = m.end = coords_.pos;
+  m.plane = static_cast<std::uint8_t>(modal_.plane);
   emit(m);
 }
 
 void Executor::linear(MoveKind kind, const AxisVector& target) {
   Move m;
   m.kind = kind;
-  m.start = pos_;
+  m.start = coords_.pos;
   m.end = target;
-  m.plane = static_cast<std::uint8_t>(plane_);
-  m.length = line_length(pos_.data(), target.data());
+  m.plane = static_cast<std::uint8_t>(modal_.plane);
+  m.length = line_length(coords_.pos.data(), target.data());
   if (kind == MoveKind::line) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
     m.feed = feed_;
-    const double fed = extra_axes_ ? combined_length(pos_, target, m.length) : m.length;  // F on every axis
-    m.seconds = feed_seconds(fed, pos_[0], target[0]);
+    const double fed = extra_axes_ ? combined_length(coords_.pos, target, m.length) : m.length;  // F on every axis
+    m.seconds = feed_seconds(fed, coords_.pos[0], target[0]);
   } else {  // rapid axes move independently: the slowest axis sets the time
     double slowest = 0;
     for (int a = 0; a < kAxes; ++a)
-      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(target[a] - pos_[a]) / profile_.rapid_rate[a]);
+      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(target[a] - coords_.pos[a]) / profile_.rapid_rate[a]);
     m.feed = 0;
     m.seconds = slowest * 60.0;
   }
-  pos_ = target;
+  coords_.pos = target;
   if (rolls_) wrap_rotary();
   emit(m);
 }
 
 void Executor::arc(const AxisVector& target, bool clockwise) {
   if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
-  const PlaneAxes pa = plane_axes(plane_);
-  if (profile_.lathe() && plane_ != 18 && !developed_) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
-  const double sp = pos_[pa.p], sq = pos_[pa.q];
+  const PlaneAxes pa = plane_axes(modal_.plane);
+  if (profile_.lathe() && modal_.plane != 18 && !developed_) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
+  const double sp = coords_.pos[pa.p], sq = coords_.pos[pa.q];
   const double ep = target[pa.p], eq = target[pa.q];
   const double tol = profile_.increment * 0.5 + 1e-9;
   double cp, cq;
@@ -443,7 +434,7 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
     double d = std::hypot(dx, dy);
     if (d < tol) {
       // R with the end point at the start point: FANUC makes no move
-      pos_ = target;
+      coords_.pos = target;
       return;
     }
     if (r == 0) alarm("PS0023", "arc radius R is zero", word('R').column);
@@ -453,8 +444,8 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
                 fmt::format("arc radius R{} is smaller than half the distance to the end point ({:.4f} {} against "
                             "{:.4f}): the control puts the centre on the chord's midpoint and cuts a half circle of "
                             "that radius (PS0023 is for R0 only)",
-                            word('R').value, std::fabs(r) / (inch_ ? 25.4 : 1), inch_ ? "in" : "mm",
-                            half / (inch_ ? 25.4 : 1)),
+                            word('R').value, std::fabs(r) / (modal_.inch ? 25.4 : 1), modal_.inch ? "in" : "mm",
+                            half / (modal_.inch ? 25.4 : 1)),
                 word('R').column);
     double h = std::sqrt(std::max(0.0, r * r - half * half));
     // centre left of the chord for G03 with R > 0, right for G02
@@ -501,16 +492,16 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
   Move m;
   m.kind = MoveKind::arc;
   m.clockwise = clockwise;
-  m.plane = static_cast<std::uint8_t>(plane_);
-  m.start = pos_;
+  m.plane = static_cast<std::uint8_t>(modal_.plane);
+  m.start = coords_.pos;
   m.end = target;
-  m.center = {pos_[0], pos_[1], pos_[2]};
+  m.center = {coords_.pos[0], coords_.pos[1], coords_.pos[2]};
   m.center[pa.p] = cp;
   m.center[pa.q] = cq;
-  m.center[pa.n] = pos_[pa.n];
+  m.center[pa.n] = coords_.pos[pa.n];
   m.sweep = sweep;
   double planar = std::fabs(sweep) * (rs + re) / 2;
-  double dn = target[pa.n] - pos_[pa.n];
+  double dn = target[pa.n] - coords_.pos[pa.n];
   m.length = std::hypot(planar, dn);
   m.feed = feed_;
   // Helical interpolation: F is the feed along the arc in the plane, the linear axis following at
@@ -522,13 +513,13 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
     double rel = std::remainder(ang - a0, kTwoPi);
     double along = sweep > 0 ? (rel < 0 ? rel + kTwoPi : rel) : (rel > 0 ? kTwoPi - rel : -rel);
     if (along < std::fabs(sweep)) {
-      AxisVector p = pos_;
+      AxisVector p = coords_.pos;
       p[pa.p] = cp + rs * std::cos(ang);
       p[pa.q] = cq + rs * std::sin(ang);
       path_stats_.note_extent(p);
     }
   }
-  pos_ = target;
+  coords_.pos = target;
   if (rolls_) wrap_rotary();
   emit(m);
 }
@@ -549,7 +540,7 @@ void Executor::dwell() {
   if (seconds < 0) alarm("PS0006", "a dwell time takes no minus sign", column);
   Move m;
   m.kind = MoveKind::dwell;
-  m.start = m.end = pos_;
+  m.start = m.end = coords_.pos;
   m.seconds = seconds;
   emit(m);
 }
@@ -563,7 +554,7 @@ void Executor::reference_return(int g) {
   if (g == 301 && !profile_.floating_reference)
     alarm("NC9001", "G30.1 (floating reference position return) needs the floating reference position, which the "
                     "operator sets on the control (No.1244): give it in the profile as [reference_points] floating");
-  AxisVector mid = pos_;
+  AxisVector mid = coords_.pos;
   bool any = axis_target(mid);
   if (!any) return;
   if (rolls_) roll_over(mid);
@@ -576,7 +567,7 @@ void Executor::reference_return(int g) {
     comp_drop_ = names_plane_axis();
     linear(MoveKind::rapid, mid);
   }
-  AxisVector ref = pos_;
+  AxisVector ref = coords_.pos;
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
     if (profile_.lathe() && profile_.gcode_system == 'A') {
@@ -584,21 +575,21 @@ void Executor::reference_return(int g) {
       if (c.letter == 'W') a = 2;
     }
     if (a < 0 || !has_axis_[a]) continue;
-    ref[a] = (g == 301 ? *profile_.floating_reference : profile_.reference_points[point])[a] - origin_[a] - tool_shift_[a];
+    ref[a] = (g == 301 ? *profile_.floating_reference : profile_.reference_points[point])[a] - coords_.origin[a] - coords_.tool_shift[a];
   }
   linear(MoveKind::rapid, ref);
 }
 
 void Executor::machine_coordinate_move() {
-  if (incremental_) return;  // G53 is ignored under G91, as on FANUC
-  AxisVector target = pos_;
+  if (modal_.incremental) return;  // G53 is ignored under G91, as on FANUC
+  AxisVector target = coords_.pos;
   AxisVector machine{};
-  for (int a = 0; a < kAxes; ++a) machine[a] = pos_[a] + origin_[a] + tool_shift_[a];
+  for (int a = 0; a < kAxes; ++a) machine[a] = coords_.pos[a] + coords_.origin[a] + coords_.tool_shift[a];
   AxisVector given = machine;
   if (!axis_target(given, true)) return;
-  for (int a = 0; a < kAxes; ++a) target[a] = given[a] - origin_[a] - tool_shift_[a];
+  for (int a = 0; a < kAxes; ++a) target[a] = given[a] - coords_.origin[a] - coords_.tool_shift[a];
   for (int a = 0; a < kAxes; ++a)
-    if (given[a] == machine[a]) target[a] = pos_[a];
+    if (given[a] == machine[a]) target[a] = coords_.pos[a];
   // G53 in offset mode: the vector is cancelled, restored at the next move
   const base::RestoreOnExit<bool> restore(comp_suspended_), restore_drop(comp_drop_);
   comp_suspended_ = true;
@@ -607,7 +598,7 @@ void Executor::machine_coordinate_move() {
 }
 
 void Executor::set_coordinate_system(int g) {
-  AxisVector given = pos_;
+  AxisVector given = coords_.pos;
   if (g == 520) {  // G52: local coordinate system, absolute offsets from the work zero
     AxisVector zero{};
     AxisVector offs = zero;
@@ -623,7 +614,7 @@ void Executor::set_coordinate_system(int g) {
     if (!any) return;
     for (const Cmd& c : cmds_) {
       int a = axis_index(c.letter);
-      if (a >= 0 && has_axis_[a]) local_[a] = offs[a];
+      if (a >= 0 && has_axis_[a]) coords_.local[a] = offs[a];
     }
     set_origin();
     return;
@@ -631,21 +622,7 @@ void Executor::set_coordinate_system(int g) {
   if (g == 500 && !has('X') && !has('Z') && !has('U') && !has('W')) return;
   // G92 (G50 on a system A lathe): the current point gets the given coordinates
   if (!axis_target(given)) return;
-  // The manual's local coordinate system notes: G92 cancels the G52 offset of the axes it names
-  // (those it does not name keep theirs); the origin stays put, the local offset folds into the shift.
-  const unsigned named = block_axes();
-  AxisVector delta{};
-  for (int a = 0; a < kAxes; ++a) {
-    if (named & (1u << a)) {
-      shift_[a] += local_[a];
-      local_[a] = 0;
-    }
-    shift_[a] += pos_[a] - given[a];
-    origin_[a] += pos_[a] - given[a];
-    delta[a] = given[a] - pos_[a];
-  }
-  pos_ = given;
-  comp_->move_frame(delta);
+  comp_->move_frame(coords_.set_current(given, block_axes()));
 }
 
 }  // namespace ncurve::machine

@@ -21,8 +21,8 @@ std::uint64_t Executor::moves_delivered() const {
   return n;
 }
 
-ModalState Executor::modal_state() {
-  ModalState s;
+ModalReadout Executor::modal_readout() {
+  ModalReadout s;
   for (std::size_t i = 0; i < kModalVariables.size(); ++i) s[i] = read_system(kModalVariables[i], 0);
   return s;
 }
@@ -30,7 +30,7 @@ ModalState Executor::modal_state() {
 // Only an NC block changes the modal state: after a macro statement the state read before stands.
 void Executor::observe_block(const nc::Block& b) {
   if (shape_read_) return;
-  if (modal_stale_) observed_modal_ = modal_state();
+  if (modal_stale_) observed_modal_ = modal_readout();
   modal_stale_ = b.kind == nc::Statement::nc;
   observer_->block(*prog_, b, moves_delivered(), observed_modal_);
 }

@@ -29,14 +29,14 @@ struct CallFrame {
 inline constexpr std::array<int, 28> kModalVariables = {
     4001, 4002, 4003, 4004, 4005, 4006, 4007, 4008, 4009, 4010, 4011, 4012, 4013, 4014,
     4015, 4016, 4017, 4018, 4019, 4020, 4021, 4022, 4107, 4109, 4111, 4113, 4119, 4120};
-using ModalState = std::array<nc::Value, kModalVariables.size()>;
+using ModalReadout = std::array<nc::Value, kModalVariables.size()>;
 
 class ExecutionObserver {
 public:
   virtual ~ExecutionObserver() = default;
   // A block starts: `moves` moves were delivered before it, `modal` is the state it starts in.
   virtual void block(const nc::Program& program, const nc::Block& block, std::uint64_t moves,
-                     const ModalState& modal) = 0;
+                     const ModalReadout& modal) = 0;
   // A call pushed this frame (during the calling block); a macro's level starts all vacant, and
   // its arguments follow as variable writes.
   virtual void entered(const CallFrame& frame) = 0;
@@ -47,7 +47,7 @@ public:
   // The program read system variable #number (not a local or common) and got `value`.
   virtual void read(int /*number*/, nc::Value /*value*/) {}
   // The run ended (completed or alarmed) after `moves` moves, in this modal state.
-  virtual void finished(std::uint64_t moves, const ModalState& modal) = 0;
+  virtual void finished(std::uint64_t moves, const ModalReadout& modal) = 0;
 };
 
 }  // namespace ncurve::machine

@@ -12,12 +12,12 @@ void Executor::select_lathe_offset(int number, std::uint16_t column) {
   if (number < 0 || number > 64) alarm("PS0030", fmt::format("offset number {} out of range (0..64)", number), column);
   lathe_offset_ = number;
   if (number == 0) {
-    tool_shift_[0] = tool_shift_[2] = 0;
+    coords_.tool_shift[0] = coords_.tool_shift[2] = 0;
     return;
   }
   const LatheOffset& o = lathe_offsets_[number];
-  tool_shift_[0] = (o.x + o.x_wear) / (profile_.diameter_x ? 2.0 : 1.0);
-  tool_shift_[2] = o.z + o.z_wear;
+  coords_.tool_shift[0] = (o.x + o.x_wear) / (profile_.diameter_x ? 2.0 : 1.0);
+  coords_.tool_shift[2] = o.z + o.z_wear;
 }
 
 // G10 P_ X_ Z_ R_ Q_ on a lathe: P 1..64 wear, P 10001..10064 geometry; U, W, C add to X, Z, R.
@@ -47,16 +47,16 @@ void Executor::data_setting() {
     AxisVector* set = nullptr;
     if (l == 2) {
       if (p < 0 || p > 6) alarm("PS0031", "G10 L2 P must be 0 (external) or 1..6 (G54..G59)", word('P').column);
-      set = &work_offsets_[p];
+      set = &coords_.work_offsets[p];
     } else {
       if (p < 1 || p > 300) alarm("PS0031", "G10 L20 P must be 1..300", word('P').column);
-      set = &extended_offsets_[p];
+      set = &coords_.extended[p];
     }
     for (const Cmd& c : cmds_) {
       int a = axis_index(c.letter);
       if (a < 0 || !has_axis_[a]) continue;
       double v = dimension(c);
-      (*set)[a] = incremental_ ? (*set)[a] + v : v;
+      (*set)[a] = modal_.incremental ? (*set)[a] + v : v;
     }
     set_origin();
     return;
@@ -76,7 +76,7 @@ void Executor::data_setting() {
         field = l == 12 ? &o.d_geometry : l == 13 ? &o.d_wear : wear ? &o.wear : &o.geometry;
         break;
     }
-    *field = incremental_ ? *field + v : v;
+    *field = modal_.incremental ? *field + v : v;
     return;
   }
   if (l == 52) return start_parameter_input();  // parameter_input.cpp

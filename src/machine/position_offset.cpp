@@ -38,11 +38,11 @@ void Executor::check_position_offset(const std::vector<int>& one_shot) {
                                 "not supported yet",
                                 g),
           column);
-  if (cycle_ != 0) {  // the manual: "G45 to G48 are ignored in canned cycle mode"
+  if (modal_.cycle != 0) {  // the manual: "G45 to G48 are ignored in canned cycle mode"
     warn_once("NC2014",
               fmt::format("G{} in canned cycle mode (G{}) is ignored, as on the control: give the tool position "
                           "offset before the cycle and cancel it after G80",
-                          g, cycle_),
+                          g, modal_.cycle),
               column);
     position_offset_ = 0;
     return;
@@ -72,12 +72,12 @@ void Executor::apply_position_offset(AxisVector& target) {
   for (const Cmd& c : cmds_) {
     const int a = axis_index(c.letter);
     if (a < 0 || a >= 3 || !has_axis_[a]) continue;
-    const double travel = programmed[a] - pos_[a];
-    if (std::fabs(travel) > tol) target[a] = pos_[a] + grown(travel, travel > 0 ? 1 : -1);
-    else if (incremental_) target[a] = pos_[a] + grown(0, std::signbit(c.value) ? -1 : 1);
+    const double travel = programmed[a] - coords_.pos[a];
+    if (std::fabs(travel) > tol) target[a] = coords_.pos[a] + grown(travel, travel > 0 ? 1 : -1);
+    else if (modal_.incremental) target[a] = coords_.pos[a] + grown(0, std::signbit(c.value) ? -1 : 1);
   }
-  if (motion_ != 2 && motion_ != 3) return;
-  const PlaneAxes pa = plane_axes(plane_);
+  if (modal_.motion != 2 && modal_.motion != 3) return;
+  const PlaneAxes pa = plane_axes(modal_.plane);
   std::uint16_t column = 0;
   for (const Cmd& c : cmds_)
     if (c.letter == 'G' && std::lround(c.value) == g) column = c.column;
@@ -88,7 +88,7 @@ void Executor::apply_position_offset(AxisVector& target) {
           word('R').column);
   const double ip = has(pa.ip) ? dimension(word(pa.ip)) : 0.0;
   const double iq = has(pa.iq) ? dimension(word(pa.iq)) : 0.0;
-  const double dp = programmed[pa.p] - pos_[pa.p], dq = programmed[pa.q] - pos_[pa.q];
+  const double dp = programmed[pa.p] - coords_.pos[pa.p], dq = programmed[pa.q] - coords_.pos[pa.q];
   // a 1/4 or 3/4 circle starting on an axis through its centre: one centre offset, the end point
   // that far from the start along both plane axes, on the centre's line
   const bool along_p = std::fabs(iq) <= tol && std::fabs(ip) > tol && std::fabs(dp - ip) <= tol;

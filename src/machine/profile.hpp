@@ -25,6 +25,15 @@ struct LatheOffset {
   double x_wear = 0, z_wear = 0, r_wear = 0, tip = 0, x = 0, z = 0, r = 0;
 };
 
+// Where the imaginary tool tip of tip number 0..9 is from the nose centre, in nose radii along X
+// and Z. The numbers follow the axes' directions: with +X up and +Z right they sit 2 6 1 / 7 0 5 /
+// 3 8 4 about the centre (an outside turning tool is 3 on either side of the spindle); 0 and 9
+// are the centre itself.
+struct TipDirection {
+  int x = 0, z = 0;
+};
+TipDirection tip_direction(int tip);  // (path/compensation.cpp)
+
 // One mill offset number. Memory A holds one value, used by H and D; memory B a geometry and a
 // wear, both used by H and D; memory C separate geometry and wear for H (length) and D (radius).
 enum class OffsetMemory { A, B, C };

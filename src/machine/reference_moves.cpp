@@ -27,7 +27,7 @@ unsigned Executor::block_axes() const {
 // A G28, G30, G29 or G53 naming an axis of the offset plane leaves the compensation vector on its
 // first move, even one that stays put in the plane (docs/compensation-spec.md section 6).
 bool Executor::names_plane_axis() const {
-  const PlaneAxes pa = plane_axes(plane_);
+  const PlaneAxes pa = plane_axes(modal_.plane);
   return (block_axes() & ((1u << pa.p) | (1u << pa.q))) != 0;
 }
 
@@ -43,7 +43,7 @@ void Executor::remember_intermediate(const AxisVector& mid) {
 // G27 IP: positioning at rapid to IP, then each axis named must stand at reference position 1
 // (machine coordinates, the tool offsets included: an active offset puts it elsewhere), else PS0092.
 void Executor::reference_check() {
-  AxisVector target = pos_;
+  AxisVector target = coords_.pos;
   if (!axis_target(target)) return;
   if (compensating())
     alarm("NC9001", "G27 in cutter compensation mode is not supported yet: cancel the compensation with G40 first, "
@@ -54,15 +54,15 @@ void Executor::reference_check() {
   const double tolerance = profile_.increment * 0.5 + 1e-9;
   for (int a = 0; a < kAxes; ++a) {
     if (!(axes & (1u << a))) continue;
-    const double machine = pos_[a] + origin_[a] + tool_shift_[a];
+    const double machine = coords_.pos[a] + coords_.origin[a] + coords_.tool_shift[a];
     const double reference = profile_.reference_points[0][a];
     if (std::fabs(machine - reference) <= tolerance) continue;
-    const char* offset = tool_shift_[a] != 0 ? "; the tool offset in force moves it by " : "";
+    const char* offset = coords_.tool_shift[a] != 0 ? "; the tool offset in force moves it by " : "";
     alarm("PS0092", fmt::format("G27: the {} axis is at {:.4f} (machine coordinates), not at reference position 1 "
                                 "({:.4f}){}{}",
                                 kAxisLetters[a], program_units(a, machine), program_units(a, reference), offset,
-                                tool_shift_[a] != 0 ? fmt::format("{:.4f}: cancel it before G27",
-                                                                  program_units(a, tool_shift_[a]))
+                                coords_.tool_shift[a] != 0 ? fmt::format("{:.4f}: cancel it before G27",
+                                                                  program_units(a, coords_.tool_shift[a]))
                                                     : ""));
   }
 }
@@ -76,7 +76,7 @@ void Executor::return_from_reference() {
     alarm("PS0305", "G29 needs an intermediate position: no G28, G30 or G30.1 has been given since power-on");
   const unsigned axes = block_axes();
   if (axes == 0) return;
-  AxisVector mid = pos_;
+  AxisVector mid = coords_.pos;
   for (int a = 0; a < kAxes; ++a)
     if ((axes & intermediate_axes_) & (1u << a)) mid[a] = intermediate_[a];
   AxisVector target = mid;  // an incremental word counts from the intermediate point
@@ -95,7 +95,7 @@ void Executor::return_from_reference() {
 // the work zero offsets give, without the shift of G92 (G50) and G52.
 void Executor::workpiece_preset() {
   const unsigned axes = block_axes();
-  AxisVector check = pos_;
+  AxisVector check = coords_.pos;
   axis_target(check, true);  // PS0009 for an axis the machine lacks
   for (const Cmd& c : cmds_) {
     const int a = axis_index(c.letter);
@@ -106,7 +106,7 @@ void Executor::workpiece_preset() {
            c.column);
   }
   for (int a = 0; a < kAxes; ++a)
-    if (axes & (1u << a)) shift_[a] = local_[a] = 0;
+    if (axes & (1u << a)) coords_.shift[a] = coords_.local[a] = 0;
   set_origin();
 }
 

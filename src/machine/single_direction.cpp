@@ -8,7 +8,7 @@ namespace ncurve::machine {
 
 // A one-shot G60 block (No.5431#0 MDL = 0).
 bool Executor::single_direction_block() {
-  AxisVector target = pos_;
+  AxisVector target = coords_.pos;
   if (!axis_target(target)) return false;
   if (rolls_) roll_over(target);
   single_direction(target);
@@ -20,13 +20,13 @@ bool Executor::single_direction_block() {
 // it already comes from that side. An axis without an overrun, or that does not move, goes
 // straight to its end in the first move.
 void Executor::single_direction(const AxisVector& target) {
-  if (cycle_ != 0)
+  if (modal_.cycle != 0)
     alarm("NC9001", "single direction positioning (G60) of a drilling canned cycle's holes is not supported yet");
   AxisVector stop = target;
   bool overrun = false;
   for (int a = 0; a < kAxes; ++a) {
     const double o = profile_.g60_overrun[a];
-    if (!has_axis_[a] || o == 0 || target[a] == pos_[a]) continue;
+    if (!has_axis_[a] || o == 0 || target[a] == coords_.pos[a]) continue;
     stop[a] = target[a] - o;
     overrun = true;
   }

@@ -21,11 +21,11 @@ bool Executor::skip_move(int g) {
   } else if (g != 310) {
     signal = fmt::format("the skip signals of {}", code);
   }
-  AxisVector target = pos_;
+  AxisVector target = coords_.pos;
   if (!axis_target(target)) return false;
   if (rolls_) roll_over(target);
   linear(MoveKind::line, target);
-  skip_position_ = pos_;
+  skip_position_ = coords_.pos;
   warn("NC2040", fmt::format("{}: ncurve does not simulate {}; the tool moves to the end point, as when the signal "
                              "never comes, and #5061.. hold it",
                              code, signal));

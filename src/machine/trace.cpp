@@ -33,7 +33,7 @@ bool ExecutionTrace::room(std::size_t more, bool mid_block) {
   return false;
 }
 
-void ExecutionTrace::note_modal(std::int64_t block, const ModalState& modal) {
+void ExecutionTrace::note_modal(std::int64_t block, const ModalReadout& modal) {
   for (std::size_t i = 0; i < modal.size(); ++i) {
     if (same(modal[i], modal_now_[i])) continue;
     modal_now_[i] = modal[i];
@@ -42,7 +42,7 @@ void ExecutionTrace::note_modal(std::int64_t block, const ModalState& modal) {
 }
 
 void ExecutionTrace::block(const nc::Program& program, const nc::Block& b, std::uint64_t moves,
-                           const ModalState& modal) {
+                           const ModalReadout& modal) {
   ++executed_;
   if (!room(1 + modal.size(), false)) return;
   const nc::SourceFile* file = program.file.get();
@@ -90,7 +90,7 @@ void ExecutionTrace::read(int number, nc::Value value) {
   reads_.push_back({block, number, v});
 }
 
-void ExecutionTrace::finished(std::uint64_t moves, const ModalState& modal) {
+void ExecutionTrace::finished(std::uint64_t moves, const ModalReadout& modal) {
   total_moves_ = moves;
   if (complete_ && !blocks_.empty()) note_modal(static_cast<std::int64_t>(blocks_.size()), modal);
 }

@@ -60,7 +60,7 @@ public:
   const std::vector<Write>& writes() const { return writes_; }
   const std::vector<Entry>& entries() const { return entries_; }
   const std::vector<Read>& reads() const { return reads_; }
-  const ModalState& initial_modal() const { return initial_modal_; }
+  const ModalReadout& initial_modal() const { return initial_modal_; }
   const std::vector<ModalChange>& modal_changes() const { return modal_; }
   std::uint64_t total_moves() const { return total_moves_; }
   std::size_t limit() const { return limit_; }
@@ -68,16 +68,16 @@ public:
   bool complete() const { return complete_; }
   std::string limit_message() const;
 
-  void block(const nc::Program& program, const nc::Block& block, std::uint64_t moves, const ModalState& modal) override;
+  void block(const nc::Program& program, const nc::Block& block, std::uint64_t moves, const ModalReadout& modal) override;
   void entered(const CallFrame& frame) override;
   void left() override;
   void variable(int number, std::int32_t level, nc::Value old, nc::Value now) override;
   void read(int number, nc::Value value) override;
-  void finished(std::uint64_t moves, const ModalState& modal) override;
+  void finished(std::uint64_t moves, const ModalReadout& modal) override;
 
 private:
   bool room(std::size_t more, bool mid_block);  // false past the limit (the trace then ends with whole blocks)
-  void note_modal(std::int64_t block, const ModalState& modal);
+  void note_modal(std::int64_t block, const ModalReadout& modal);
   std::size_t records() const {
     return blocks_.size() + writes_.size() + entries_.size() + modal_.size() + reads_.size();
   }
@@ -93,8 +93,8 @@ private:
   std::vector<Entry> entries_;
   std::vector<Read> reads_;
   std::vector<ModalChange> modal_;
-  ModalState initial_modal_{};
-  ModalState modal_now_{};
+  ModalReadout initial_modal_{};
+  ModalReadout modal_now_{};
   std::uint64_t total_moves_ = 0;
   std::uint64_t executed_ = 0;  // blocks run, recorded or not
 };

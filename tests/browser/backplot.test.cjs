@@ -206,7 +206,7 @@ async function lonelyMove(page, motions, kind) {
 
     // a lathe with a C axis: the header gives the extents in axis order (X, Z, C), not sorted
     {
-      const prog = path.join(src, 'tests/programs/lt_drill_c_axis');
+      const prog = path.join(src, 'tests/programs/lathe/lt_drill_c_axis');
       const {html} = page_of('browser_lathe_c', prog + '.nc', ['--machine', prog + '.toml']);
       const {page} = await open(context, html);
       const header = await page.textContent('#summary');

@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """What every program does, as one digest each: the moves (--format jsonl), the summary (--json),
-the messages and the exit status of `ncurve run` on every tests/programs/*.nc, examples/*.nc and
+the messages and the exit status of `ncurve run` on every tests/programs/**/*.nc, examples/*.nc and
 corpus program, compared with digests.tsv. A restructuring keeps them all; a change of behaviour
 (a defect fixed) updates the digests of the programs it changes, in the commit that makes it.
+The program's own path and its machine file's (the messages and the moves name them) are hashed as
+<program> and <machine>, so a program moved to another folder keeps its digest: only its key changes.
 
 usage: digests.py NCURVE [--update] [--corpus DIR]
 """
@@ -33,20 +35,26 @@ examples = {
 }
 
 
+def programs():
+    """the path of each tests/programs/**/*.nc under the repository, with '/' between folders, sorted"""
+    found = []
+    for folder, _, names in os.walk(os.path.join(root, "tests", "programs")):
+        rel = os.path.relpath(folder, root).replace(os.sep, "/")
+        found += [rel + "/" + name for name in names if name.endswith(".nc")]
+    return sorted(found)
+
+
 def cases():
     """(key, folder to run in, arguments after `run`)"""
-    progs = os.path.join(root, "tests", "programs")
-    for name in sorted(os.listdir(progs)):
-        if not name.endswith(".nc"):
-            continue
-        stem = name[:-3]
-        args = [os.path.join("tests", "programs", name), "--lib", "macros"]
-        if os.path.exists(os.path.join(progs, stem + ".toml")):
-            args += ["--machine", os.path.join("tests", "programs", stem + ".toml")]
-        if os.path.exists(os.path.join(progs, stem + ".args")):
-            with open(os.path.join(progs, stem + ".args")) as f:
+    for path in programs():
+        stem = path[:-3]
+        args = [path, "--lib", "macros"]
+        if os.path.exists(os.path.join(root, stem + ".toml")):
+            args += ["--machine", stem + ".toml"]
+        if os.path.exists(os.path.join(root, stem + ".args")):
+            with open(os.path.join(root, stem + ".args")) as f:
                 args += [line.rstrip("\n") for line in f if line.strip()]
-        yield "tests/programs/" + name, root, args
+        yield path, root, args
     for name in sorted(os.listdir(os.path.join(root, "examples"))):
         if name.endswith(".nc"):
             yield "examples/" + name, root, [os.path.join("examples", name)] + examples.get(name, [])
@@ -65,6 +73,24 @@ def cases():
             yield "corpus/" + cols[0], corpus, [cols[0]] + opts
 
 
+def own_paths(args):
+    """what the run's output names the program and its machine file by, and the placeholder of each"""
+    paths = [(args[0], b"<program>")]
+    if "--machine" in args:
+        machine = args[args.index("--machine") + 1]
+        if machine.endswith(".toml"):
+            paths.append((machine, b"<machine>"))
+    return paths
+
+
+def hashed(text, args):
+    """the text without the folders the run happened in, nor the program's and machine file's paths"""
+    text = text.replace(root.encode(), b"<root>").replace(corpus.encode(), b"<corpus>")
+    for path, placeholder in own_paths(args):
+        text = text.replace(path.encode(), placeholder)
+    return text
+
+
 def digest(case):
     key, cwd, args = case
     with tempfile.TemporaryDirectory() as tmp:
@@ -74,10 +100,10 @@ def digest(case):
         h = hashlib.sha256()
         h.update(b"exit %d\n" % r.returncode)
         for part in (r.stdout, r.stderr):
-            h.update(part.replace(root.encode(), b"<root>").replace(corpus.encode(), b"<corpus>"))
+            h.update(hashed(part, args))
         if os.path.exists(moves):
             with open(moves, "rb") as f:
-                h.update(f.read())
+                h.update(hashed(f.read(), args))
     return key, " ".join(args), h.hexdigest()[:16]
 
 

@@ -1,7 +1,7 @@
 // Lathe single cutting cycles (G90/G92/G94), threading (G32) and G76 beyond the point lists of
-// tests/programs/lt_*: what marks a thread cut, its time, which blocks keep or clear the cycle's data,
-// the modal G code a program reads, and how the writers show a thread. Values worked out by hand from
-// the FANUC 0i-TF / 30i-B lathe operator's manuals.
+// tests/programs/lathe/lt_*: what marks a thread cut, its time, which blocks keep or clear the
+// cycle's data, the modal G code a program reads, and how the writers show a thread. Values worked
+// out by hand from the FANUC 0i-TF / 30i-B lathe operator's manuals.
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 

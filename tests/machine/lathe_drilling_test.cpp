@@ -1,7 +1,7 @@
 // A lathe's canned cycles for drilling (G83..G85 face, G87..G89 side) beyond the point lists of
-// tests/programs/lt_drill_*: the C-axis clamp M code, Q in least input increments, R's parameters,
-// the return level of system A, what ends the mode, the alarms and tool-nose radius compensation.
-// Values worked out by hand from the FANUC 0i-TF / 30i-B lathe operator's manuals.
+// tests/programs/lathe/lt_drill_*: the C-axis clamp M code, Q in least input increments, R's
+// parameters, the return level of system A, what ends the mode, the alarms and tool-nose radius
+// compensation. Values worked out by hand from the FANUC 0i-TF / 30i-B lathe operator's manuals.
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 
@@ -70,7 +70,7 @@ TEST(LatheDrilling, QIsInLeastInputIncrements) {
 }
 
 // In system A, G98/G99 are feed per minute/revolution: the hole ends at the initial level either way.
-// In system B, G99 returns to R (tests/programs/lt_drill_g85_g89_b.nc has both).
+// In system B, G99 returns to R (tests/programs/lathe/lt_drill_g85_g89_b.nc has both).
 TEST(LatheDrilling, SystemAReturnsToTheInitialLevel) {
   for (const char* feed : {"G98 G83 Z-10. R-7. F100.", "G99 G83 Z-10. R-7. F0.1"}) {
     auto r = run(fmt::format("G21\nG00 X0. Z10.\n{}\nG80\nM30\n", feed), lathe());

@@ -18,11 +18,13 @@ using namespace ncurve::machine::path_test;
 
 namespace {
 
-// Machine = work + shift; positions shown in mm as they are.
+// Machine = work + shift; positions shown in mm as they are; check 2 on or off (G22/G23).
 struct ShiftedFrame final : StrokeFrame {
   AxisVector shift{};
+  bool area_on = false;
   AxisVector machine_shift() const override { return shift; }
   double program_units(int, double mm) const override { return mm; }
+  bool area_check_on() const override { return area_on; }
 };
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -33,7 +35,7 @@ StrokeLimits no_limits() {
   l.limit1_plus.fill(kInf);
   l.limit1_minus.fill(-kInf);
   l.area_axes = 0b111;
-  l.switch_area(false);
+  l.update(false);
   return l;
 }
 
@@ -132,7 +134,7 @@ TEST(PathStatistics, SetupBeforeTheFirstMoveAndEachChange) {
 TEST(PathStrokeCheck, Limit1AlarmsAtTheMovesBlock) {
   StrokeLimits limits = no_limits();
   limits.limit1_plus[0] = 100;
-  limits.switch_area(false);
+  limits.update(false);
   ASSERT_TRUE(limits.in_force);
   ShiftedFrame frame;
   frame.shift[0] = -50;
@@ -155,7 +157,7 @@ TEST(PathStrokeCheck, Limit1AlarmsAtTheMovesBlock) {
 TEST(PathStrokeCheck, AnArcsQuadrantPointIsChecked) {
   StrokeLimits limits = no_limits();
   limits.limit1_plus[1] = 5;
-  limits.switch_area(false);
+  limits.update(false);
   ShiftedFrame frame;
   Raised raised;
   Recorder out;
@@ -182,9 +184,10 @@ TEST(PathStrokeCheck, EnteringTheForbiddenArea) {
   StrokeLimits limits = no_limits();
   limits.area_minus = {0, 0, -1};
   limits.area_plus = {10, 10, 1};
-  limits.switch_area(true);
+  limits.update(true);
   ASSERT_TRUE(limits.in_force);
   ShiftedFrame frame;
+  frame.area_on = true;
   Raised raised;
   Recorder out;
   StrokeCheck stage(limits, frame, recording_alarm(raised));
@@ -203,8 +206,9 @@ TEST(PathStrokeCheck, LeavingTheAllowedArea) {
   limits.area_minus = {0, 0, -1};
   limits.area_plus = {10, 10, 1};
   limits.area_outside = true;
-  limits.switch_area(true);
+  limits.update(true);
   ShiftedFrame frame;
+  frame.area_on = true;
   Raised raised;
   Recorder out;
   StrokeCheck stage(limits, frame, recording_alarm(raised));
@@ -220,7 +224,7 @@ TEST(PathStrokeCheck, NothingInForcePassesEverything) {
   StrokeLimits limits = no_limits();
   limits.area_minus = {0, 0, -1};
   limits.area_plus = {10, 10, 1};
-  limits.switch_area(false);
+  limits.update(false);
   EXPECT_FALSE(limits.in_force);
   ShiftedFrame frame;
   Raised raised;
@@ -235,12 +239,12 @@ TEST(PathStrokeCheck, NothingInForcePassesEverything) {
   EXPECT_EQ(out.moves[0].end, (AxisVector{15, 5, 0}));
   // an area without an inside forbids nothing when its inside is the forbidden part
   limits.area_plus[1] = 0;
-  limits.switch_area(true);
+  limits.update(true);
   EXPECT_FALSE(limits.in_force);
 }
 
 // The profile's limits at power-on: limit 1 where plus >= minus, on the machine's axes; the area
-// with its corners in order; check 2 on unless No.3402#7 turns it off.
+// with its corners in order.
 TEST(PathStrokeCheck, PowerOnLimits) {
   MachineProfile p;
   p.stroke1_plus = {200, 100, 0, 0, 0, 0};
@@ -248,7 +252,8 @@ TEST(PathStrokeCheck, PowerOnLimits) {
   p.stroke2_plus = {-10, 0, 0, 0, 0, 0};
   p.stroke2_minus = {10, 0, 0, 0, 0, 0};
   std::array<bool, kAxes> has{true, true, true, false, false, false};
-  const StrokeLimits l = StrokeLimits::power_on(p, has);
+  StrokeLimits l = StrokeLimits::power_on(p, has);
+  l.update(false);
   EXPECT_EQ(l.limit1_plus[0], 200);
   EXPECT_EQ(l.limit1_minus[0], -200);
   EXPECT_EQ(l.limit1_plus[1], kInf);

@@ -1,7 +1,7 @@
 // Polar coordinate interpolation (G12.1) and cylindrical interpolation (G07.1): the machine's X and
-// C at each block's end against hand-worked tests/programs/*.expected.ends, and every emitted point
-// (and the machine's straight X-C motion between points) checked on the programmed contour in closed
-// form, independently of ncurve's geometry.
+// C at each block's end against hand-worked tests/programs/polar-cylindrical/*.expected.ends, and
+// every emitted point (and the machine's straight X-C motion between points) checked on the
+// programmed contour in closed form, independently of ncurve's geometry.
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 
@@ -21,6 +21,8 @@ namespace fs = std::filesystem;
 namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int X = 0, Z = 2, C = 5;
+// the hand-worked programs NAME.nc, their machines NAME.toml and their NAME.expected.ends
+const fs::path kPrograms = fs::path(NCURVE_SOURCE_DIR) / "tests" / "programs" / "polar-cylindrical";
 
 struct Pt {
   double x, y;
@@ -36,7 +38,7 @@ double seg_dist(Pt p, Pt a, Pt b) {  // distance from p to segment ab
 Pt plane_of(const machine::AxisVector& v) { return {v[X] * std::cos(v[C] * kPi / 180), v[X] * std::sin(v[C] * kPi / 180)}; }
 
 test::Ran run_file(const std::string& name, machine::RunOptions options = {}) {
-  const fs::path dir = fs::path(NCURVE_SOURCE_DIR) / "tests" / "programs";
+  const fs::path& dir = kPrograms;
   machine::MachineProfile profile = machine::load_profile((dir / (name + ".toml")).string());
   std::ifstream in(dir / (name + ".nc"));
   std::stringstream text;
@@ -49,7 +51,7 @@ void check_ends(const std::string& name) {
   SCOPED_TRACE(name);
   const test::Ran r = run_file(name);
   ASSERT_TRUE(r.result.ok()) << r.alarm_code() << " " << r.result.alarm->message;
-  const fs::path file = fs::path(NCURVE_SOURCE_DIR) / "tests" / "programs" / (name + ".expected.ends");
+  const fs::path file = kPrograms / (name + ".expected.ends");
   std::ifstream in(file);
   ASSERT_TRUE(in) << file;
   int rows = 0;
@@ -109,7 +111,7 @@ TEST(PolarInterpolation, FaceSquareStaysOnTheContour) {
 // A slot through the centre: X40 to X-40 along C0 is the linear axis going past the centre, C still.
 TEST(PolarInterpolation, ThroughTheCentreTheLinearAxisChangesSide) {
   machine::MachineProfile p = machine::load_profile(
-      (fs::path(NCURVE_SOURCE_DIR) / "tests" / "programs" / "polar_face_square.toml").string());
+      (kPrograms / "polar_face_square.toml").string());
   const test::Ran r = test::run("G98\nG00 X40. C30.\nG12.1\nG01 X-40. F100\nG13.1\nM30\n", p);
   ASSERT_TRUE(r.result.ok());
   const auto moves = r.motions();
@@ -123,7 +125,7 @@ TEST(PolarInterpolation, ThroughTheCentreTheLinearAxisChangesSide) {
 
 TEST(PolarInterpolation, AlarmsOfTheMode) {
   machine::MachineProfile p = machine::load_profile(
-      (fs::path(NCURVE_SOURCE_DIR) / "tests" / "programs" / "polar_face_square.toml").string());
+      (kPrograms / "polar_face_square.toml").string());
   EXPECT_EQ(test::run("G98\nG00 X40. C0\nT0111\nG41 G01 X30. F100\nG12.1\nM30\n", p).alarm_code(), "PS0146");
   EXPECT_EQ(test::run("G98\nG00 X40. C0\nG12.1\nT0111\nG41 G01 X30. F100\nG13.1\nM30\n", p).alarm_code(), "PS0146");
   EXPECT_EQ(test::run("G98\nG00 X40. C0\nG12.1 X20.\nM30\n", p).alarm_code(), "PS0145");
@@ -137,7 +139,7 @@ TEST(PolarInterpolation, AlarmsOfTheMode) {
 
 TEST(CylindricalInterpolation, AlarmsOfTheMode) {
   machine::MachineProfile p = machine::load_profile(
-      (fs::path(NCURVE_SOURCE_DIR) / "tests" / "programs" / "polar_face_square.toml").string());
+      (kPrograms / "polar_face_square.toml").string());
   EXPECT_EQ(test::run("G98\nG01 X40. Z0 C0 F100\nG07.1 C20.\nG02 Z-10. C90. I5.\nM30\n", p).alarm_code(), "PS0022");
   EXPECT_EQ(test::run("G98\nG01 X40. Z0 C0 F100\nG07.1 C20.\nG28 U0\nM30\n", p).alarm_code(), "PS0176");
   EXPECT_EQ(test::run("G98\nG01 X40. Z0 C0 F100\nG07.1 C20. Z3.\nM30\n", p).alarm_code(), "PS0175");

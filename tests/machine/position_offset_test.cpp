@@ -1,6 +1,7 @@
 // Tool position offset G45..G48 of a mill: what the FANUC 0i-MF / 30i-B operator's manual says
-// besides the moves (tests/programs/position_offset_g45_g48.*): H by No.5001#5 TPH, PS0042 in cutter
-// compensation, ignored in canned cycle mode, arcs only as 1/4 and 3/4 circles by I J K.
+// besides the moves (tests/programs/coordinates/position_offset_g45_g48.*): H by No.5001#5 TPH,
+// PS0042 in cutter compensation, ignored in canned cycle mode, arcs only as 1/4 and 3/4 circles by
+// I J K.
 #include <gtest/gtest.h>
 
 #include <algorithm>

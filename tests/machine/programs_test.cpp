@@ -1,6 +1,6 @@
-// Hand-checked programs: each tests/programs/NAME.expected.moves lists the motions a FANUC control
-// makes for NAME.nc, worked out from the manuals' rules (see its header). NAME.toml is the machine,
-// a "(PARAM n=v)" comment sets a parameter. Lathe X is a diameter in the file.
+// Hand-checked programs: each tests/programs/FEATURE/NAME.expected.moves lists the motions a FANUC
+// control makes for NAME.nc, worked out from the manuals' rules (see its header). NAME.toml is the
+// machine, a "(PARAM n=v)" comment sets a parameter. Lathe X is a diameter in the file.
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 
@@ -123,7 +123,8 @@ void check_program(const fs::path& expected_file) {
 
 std::vector<fs::path> expected_files() {
   std::vector<fs::path> files;
-  for (const auto& f : fs::directory_iterator(fs::path(NCURVE_SOURCE_DIR) / "tests" / "programs"))
+  // a test is named by NAME alone (Programs/HandChecked.MovesAsWorkedOut/NAME), whatever its folder
+  for (const auto& f : fs::recursive_directory_iterator(fs::path(NCURVE_SOURCE_DIR) / "tests" / "programs"))
     if (f.path().string().ends_with(".expected.moves")) files.push_back(f.path());
   std::sort(files.begin(), files.end());
   return files;

@@ -1,5 +1,5 @@
 // G27/G29/G30.1, G60, G92.1, G31, the stored stroke checks and the G codes ncurve does not simulate;
-// the hand-worked paths are in tests/programs (ref_*, g60_*, skip_*, stroke_*, wcs_preset_*).
+// the hand-worked paths are in tests/programs/reference (ref_*, g60_*, skip_*, stroke_*, wcs_preset_*).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -115,8 +115,24 @@ TEST(GCodes, SpindleSpeedFluctuationDetectionIsAccepted) {
   EXPECT_EQ(r.motions().size(), 1u);
 }
 
+// G10.6 sets the tool retract of the retraction signal; a program run gives no signal, so the block
+// moves nothing and the next move goes from where the tool was (30i-B: tool retract and recover).
+TEST(GCodes, ToolRetractSettingMovesNothing) {
+  for (const char* setting : {"G10.6 Z10.", "G91 G10.6 Z5.", "G10.6"}) {
+    auto r = run(fmt::format("G90 G00 X1. Y2. Z3.\n{}\nG90 G01 X4. F100.\nM30\n", setting));
+    ASSERT_TRUE(r.result.ok()) << setting << ": " << message(r);
+    const auto moves = r.motions();
+    ASSERT_EQ(moves.size(), 2u) << setting;
+    EXPECT_EQ(moves[1].start, (machine::AxisVector{1, 2, 3})) << setting;
+    EXPECT_EQ(moves[1].end, (machine::AxisVector{4, 2, 3})) << setting;
+  }
+  auto lathe = run("G00 X20. Z5.\nG10.6 U2.\nG01 Z-10. F0.2\nM30\n", machine::default_lathe());
+  ASSERT_TRUE(lathe.result.ok()) << message(lathe);
+  EXPECT_EQ(lathe.motions().size(), 2u);
+}
+
 TEST(GCodes, CodesOfTheControlAreNotSupportedYetNotUnknown) {
-  for (const char* code : {"G02.2", "G06.2", "G10.6", "G39", "G40.1", "G43.4", "G53.1", "G68.2", "G72.1", "G81.1",
+  for (const char* code : {"G02.2", "G06.2", "G39", "G40.1", "G43.4", "G53.1", "G68.2", "G72.1", "G81.1",
                            "G96.1", "G37"}) {
     auto r = run(fmt::format("{} X10. Z1.\nM30\n", code));
     EXPECT_EQ(r.alarm_code(), "NC9001") << code << ": " << message(r);

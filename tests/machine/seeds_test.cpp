@@ -23,7 +23,7 @@ const std::string kDir = NCURVE_SOURCE_DIR;
 
 TEST(Seed003, VerbatimProgramStopsWhereAFanucControlWould) {
   auto lathe = machine::load_profile(kDir + "/profiles/fanuc-lathe.toml");
-  auto r = test::run(slurp(kDir + "/tests/programs/seed003_hyperbola_verbatim.nc"), lathe);
+  auto r = test::run(slurp(kDir + "/tests/programs/papers/seed003_hyperbola_verbatim.nc"), lathe);
   // X#106+50.: an address takes one value; '+50.' is a number without an address
   EXPECT_EQ(r.alarm_code(), "PS0004");
   EXPECT_EQ(r.alarm_line(), 12u);
@@ -31,14 +31,14 @@ TEST(Seed003, VerbatimProgramStopsWhereAFanucControlWould) {
   ASSERT_FALSE(r.parse.empty());
   EXPECT_EQ(r.parse[0].span.line, 12u);
   // with only that fixed, the first G01 has no feed rate: F0.15 comes one block later
-  auto b = test::run(slurp(kDir + "/tests/programs/seed003_hyperbola_bracketed.nc"), lathe);
+  auto b = test::run(slurp(kDir + "/tests/programs/papers/seed003_hyperbola_bracketed.nc"), lathe);
   EXPECT_EQ(b.alarm_code(), "PS0011");
   EXPECT_EQ(b.alarm_line(), 17u);
 }
 
 TEST(Seed003, CorrectedProgramCutsTheHyperbola) {
   auto lathe = machine::load_profile(kDir + "/profiles/fanuc-lathe.toml");
-  auto r = test::run(slurp(kDir + "/tests/programs/seed003_hyperbola_corrected.nc"), lathe);
+  auto r = test::run(slurp(kDir + "/tests/programs/papers/seed003_hyperbola_corrected.nc"), lathe);
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   const double a = 100, b = 202.4;
   // the alpha sequence the program computes, in the same floating-point steps

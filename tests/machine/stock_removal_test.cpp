@@ -27,13 +27,13 @@ Shape polyline(const std::vector<P2>& pts) {
 double shape_x(const Shape& s, double z) {
   double best = 1e300;
   for (const Element& e : s) {
-    const double lo = std::min(e.start.z, e.end.z), hi = std::max(e.start.z, e.end.z);
+    const double lo = std::min(e.start.y, e.end.y), hi = std::max(e.start.y, e.end.y);
     if (z < lo - 1e-9 || z > hi + 1e-9 || hi - lo < 1e-12) continue;
     double a = 0, b = 1;  // bisection on t: Z is monotone within an element
-    const bool up = e.end.z > e.start.z;
+    const bool up = e.end.y > e.start.y;
     for (int k = 0; k < 60; ++k) {
       const double m = (a + b) / 2;
-      ((point_at(e, m).z < z) == up ? a : b) = m;
+      ((point_at(e, m).y < z) == up ? a : b) = m;
     }
     best = std::min(best, point_at(e, (a + b) / 2).x);
   }
@@ -48,14 +48,14 @@ void expect_no_gouge(const Path& path, P2 start, const Shape& s) {
       const double t = k / 20.0;
       P2 p;
       if (!st.arc) {
-        p = {at.x + t * (st.end.x - at.x), at.z + t * (st.end.z - at.z)};
+        p = {at.x + t * (st.end.x - at.x), at.y + t * (st.end.y - at.y)};
       } else {
         Element e{at, st.end, true, st.centre, st.sweep, false};
         p = point_at(e, t);
       }
-      const double c = std::min(shape_x(s, p.z - 1e-6), shape_x(s, p.z + 1e-6));
+      const double c = std::min(shape_x(s, p.y - 1e-6), shape_x(s, p.y + 1e-6));
       if (c < 1e299) {
-        EXPECT_GE(p.x, c - 1e-6) << "cuts into the shape at z " << p.z << " (x " << p.x << ", shape " << c << ")";
+        EXPECT_GE(p.x, c - 1e-6) << "cuts into the shape at z " << p.y << " (x " << p.x << ", shape " << c << ")";
       }
     }
     at = st.end;
@@ -82,10 +82,10 @@ TEST(StockRemoval, TypeIPassesAreDeltaDApartAndEndOnTheShape) {
   int cuts = 0;
   P2 at = r.start;
   for (const Step& s : p) {
-    if (!s.rapid && std::fabs(s.end.x - at.x) < 1e-12 && std::fabs(at.z - 2) < 1e-12) {
+    if (!s.rapid && std::fabs(s.end.x - at.x) < 1e-12 && std::fabs(at.y - 2) < 1e-12) {
       EXPECT_DOUBLE_EQ(s.end.x, levels[cuts]);
-      EXPECT_LE(shape_x(r.shape, s.end.z + 1e-6), s.end.x + 1e-9);  // up to its end the shape is below it
-      const double beyond = shape_x(r.shape, s.end.z - 1e-6);        // and past it above it (or ended)
+      EXPECT_LE(shape_x(r.shape, s.end.y + 1e-6), s.end.x + 1e-9);  // up to its end the shape is below it
+      const double beyond = shape_x(r.shape, s.end.y - 1e-6);        // and past it above it (or ended)
       EXPECT_TRUE(beyond > s.end.x + 1e-9) << beyond;
       ++cuts;
     }
@@ -93,7 +93,7 @@ TEST(StockRemoval, TypeIPassesAreDeltaDApartAndEndOnTheShape) {
   }
   EXPECT_EQ(cuts, 4);
   EXPECT_DOUBLE_EQ(p.back().end.x, 20);  // back to the start
-  EXPECT_DOUBLE_EQ(p.back().end.z, 2);
+  EXPECT_DOUBLE_EQ(p.back().end.y, 2);
 }
 
 TEST(StockRemoval, SpansOfAPocketedShape) {
@@ -125,9 +125,9 @@ TEST(StockRemoval, TwoPocketsAreCutOneAfterTheOther) {
   int last_pocket = 0;
   P2 at = r.start;
   for (const Step& st : p) {
-    const bool along_z = !st.rapid && std::fabs(st.end.x - at.x) < 1e-12 && std::fabs(st.end.z - at.z) > 1e-9;
+    const bool along_z = !st.rapid && std::fabs(st.end.x - at.x) < 1e-12 && std::fabs(st.end.y - at.y) > 1e-9;
     if (along_z && st.end.x < 14 - 1e-9) {
-      const int pocket = (at.z + st.end.z) / 2 > -10 ? 1 : 2;
+      const int pocket = (at.y + st.end.y) / 2 > -10 ? 1 : 2;
       EXPECT_GE(pocket, last_pocket);
       last_pocket = pocket;
     }
@@ -146,9 +146,9 @@ TEST(StockRemoval, RandomMonotoneShapesAreRoughedWithoutGouging) {
       z -= step(rng);
       pts.push_back({pts.back().x, z});
       pts.push_back({pts.back().x + rise(rng), z - rise(rng) * 0.5});
-      z = pts.back().z;
+      z = pts.back().y;
     }
-    pts.push_back({40, pts.back().z});
+    pts.push_back({40, pts.back().y});
     Roughing r;
     r.start = {30, 2};
     r.shape = polyline(pts);
@@ -185,12 +185,12 @@ TEST(StockRemoval, MonotoneChecks) {
   const double in = 25.4;
   const P2 c{1.8578562380150385 * in, -0.08199999976272664 * in};
   const P2 a0{3.7157 / 2 * in, 0}, a1{3.87 / 2 * in, -0.0542 * in};
-  const double th0 = std::atan2(a0.x - c.x, a0.z - c.z), th1 = std::atan2(a1.x - c.x, a1.z - c.z);
+  const double th0 = std::atan2(a0.x - c.x, a0.y - c.y), th1 = std::atan2(a1.x - c.x, a1.y - c.y);
   Shape corner{Element{a0, a1, true, c, th1 - th0, false}, line(a1, {3.9967 / 2 * in, -0.2301 * in})};
   EXPECT_EQ(first_reversal(corner, 1), -1);
   // the same arc carried on 5 degrees further back past its top does turn back
   const double back = th0 - 5 * std::acos(-1.0) / 180;
-  const P2 b0{c.x + 0.082 * in * std::sin(back), c.z + 0.082 * in * std::cos(back)};
+  const P2 b0{c.x + 0.082 * in * std::sin(back), c.y + 0.082 * in * std::cos(back)};
   Shape bulge{Element{b0, a1, true, c, th1 - back, false}};
   EXPECT_EQ(first_reversal(bulge, 1), 0);
 }
@@ -231,11 +231,11 @@ TEST(PeckCycle, LastPeckIsWhatIsLeft) {
   const Path p = peck_cycle(k);
   // Z-2, back -1, Z-6, back -5, Z-9, (relief 0 skipped) back to Z2
   ASSERT_EQ(p.size(), 6u);
-  EXPECT_DOUBLE_EQ(p[0].end.z, -2);
-  EXPECT_DOUBLE_EQ(p[1].end.z, -1);
-  EXPECT_DOUBLE_EQ(p[2].end.z, -6);
-  EXPECT_DOUBLE_EQ(p[4].end.z, -9);
-  EXPECT_DOUBLE_EQ(p[5].end.z, 2);
+  EXPECT_DOUBLE_EQ(p[0].end.y, -2);
+  EXPECT_DOUBLE_EQ(p[1].end.y, -1);
+  EXPECT_DOUBLE_EQ(p[2].end.y, -6);
+  EXPECT_DOUBLE_EQ(p[4].end.y, -9);
+  EXPECT_DOUBLE_EQ(p[5].end.y, 2);
 }
 
 // ---- the cycles through the interpreter ----

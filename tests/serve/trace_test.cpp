@@ -83,13 +83,13 @@ Vars rebuild(const json& trace, std::size_t k) {
 struct StopAt final : machine::ExecutionObserver {
   std::size_t k, seen = 0;
   explicit StopAt(std::size_t k) : k(k) {}
-  void block(const nc::Program&, const nc::Block&, std::uint64_t, const machine::ModalState&) override {
+  void block(const nc::Program&, const nc::Block&, std::uint64_t, const machine::ModalReadout&) override {
     if (seen++ == k) throw nc::Alarm(nc::Diagnostic{nc::Severity::error, "STOP", "stopped", {}});
   }
   void entered(const machine::CallFrame&) override {}
   void left() override {}
   void variable(int, std::int32_t, nc::Value, nc::Value) override {}
-  void finished(std::uint64_t, const machine::ModalState&) override {}
+  void finished(std::uint64_t, const machine::ModalReadout&) override {}
 };
 
 Vars truth_after(const std::string& program, std::size_t k, const std::vector<std::string>& sets) {

@@ -24,12 +24,12 @@ Shift shift_direction(int bits, int drilling_axis) {
 void Executor::boring_hole(const Hole& h) {
   const Shift s = shift_direction(profile_.drilling.shift_direction, h.axis);
   auto shift = [&](double away) {  // rapid by Q: +1 away from the tool tip, -1 back
-    AxisVector t = pos_;
+    AxisVector t = coords_.pos;
     t[s.axis] += away * s.sign * cycle_q_;
-    if (t != pos_) linear(MoveKind::rapid, t);
+    if (t != coords_.pos) linear(MoveKind::rapid, t);
   };
   auto oriented_stop = [&] { emit_event(MoveKind::spindle, 19); };
-  switch (cycle_) {
+  switch (modal_.cycle) {
     case 76:  // bore to Z, stop the spindle oriented, move the tip off the wall, rapid out
       cycle_move(h, MoveKind::rapid, h.r);
       cycle_move(h, MoveKind::line, h.z);

@@ -35,19 +35,19 @@ const char* cycle_name(int g) {
 // G73..G89 in a block (x10 codes).
 void Executor::select_canned_cycle(int g, std::uint16_t) {
   const int code = g / 10;
-  if (cycle_ == 0) {  // the initial level: where the tool is when the cycle mode starts
-    cycle_initial_ = pos_;
+  if (modal_.cycle == 0) {  // the initial level: where the tool is when the cycle mode starts
+    cycle_initial_ = coords_.pos;
     cycle_axis_ = -1;
   }
   if (code != 84 && code != 74) rigid_tapping_ = false;  // another cycle ends the rigid mode
-  cycle_ = code;
+  modal_.cycle = code;
 }
 
 // G80 and the group 01 codes: the cycle ends and its data (R, Z, Q, P) are cleared. Ending rigid
 // tapping clears its S as if S0 were given.
 void Executor::cancel_canned_cycle() {
   if (rigid_tapping_) speed_ = 0;
-  cycle_ = 0;
+  modal_.cycle = 0;
   cycle_axis_ = -1;
   cycle_r_.reset();
   cycle_z_.reset();
@@ -57,10 +57,10 @@ void Executor::cancel_canned_cycle() {
 }
 
 bool Executor::canned_cycle_block() {
-  const int g = cycle_;
+  const int g = modal_.cycle;
   // No.5101#0 FXY = 0: Z drills whatever the plane; 1: the normal of G17/G18/G19 (the basic axis:
   // ncurve's mills have no parallel axes U V W that could name another)
-  const int ax = profile_.drilling.axis_by_plane ? plane_axes(plane_).n : 2;
+  const int ax = profile_.drilling.axis_by_plane ? plane_axes(modal_.plane).n : 2;
   const char axis_letter = "XYZ"[ax];
   if (has('R')) cycle_r_ = dimension(word('R'));
   if (has(axis_letter)) cycle_z_ = dimension(word(axis_letter));
@@ -81,8 +81,8 @@ bool Executor::canned_cycle_block() {
           word(other).column);
   const int repeat = cycle_repeat_count();
 
-  const AxisVector base = pos_;
-  AxisVector hole = pos_;
+  const AxisVector base = coords_.pos;
+  AxisVector hole = coords_.pos;
   const bool positioned = axis_target(hole);
   if (positioned || repeat == 0) {
     if (q) cycle_q_ = *q, cycle_has_q_ = true;
@@ -90,7 +90,7 @@ bool Executor::canned_cycle_block() {
   }
   if (!positioned) return false;  // data only: no hole
   if (rolls_) roll_over(hole);
-  hole[ax] = pos_[ax];             // the drilling axis word is the hole bottom, not a move
+  hole[ax] = coords_.pos[ax];             // the drilling axis word is the hole bottom, not a move
   if (repeat == 0) return false;  // K0: the data are stored, no hole is drilled
 
   const std::uint16_t gcol = [&] {
@@ -102,7 +102,7 @@ bool Executor::canned_cycle_block() {
     alarm("NC9002", fmt::format("the drilling axis changed from {} to {} in cycle mode (G{} with No.5101#0 FXY = 1): "
                                 "the manual asks to cancel the canned cycle (G80) before the drilling axis changes "
                                 "and names no alarm; ncurve stops here",
-                                "XYZ"[cycle_axis_], axis_letter, plane_),
+                                "XYZ"[cycle_axis_], axis_letter, modal_.plane),
           gcol);
   if (!cycle_r_ || !cycle_z_)  // the manual on G80: "R = 0 and Z = 0 in incremental mode"
     warn_once("NC2017",
@@ -123,30 +123,30 @@ bool Executor::canned_cycle_block() {
   Hole h;
   h.axis = ax;
   h.initial = cycle_initial_[ax];
-  h.r = !cycle_r_ ? h.initial : incremental_ ? h.initial + *cycle_r_ : *cycle_r_;
-  h.z = !cycle_z_ ? h.r : incremental_ ? h.r + *cycle_z_ : *cycle_z_;
-  h.back = cycle_return_initial_ ? h.initial : h.r;
+  h.r = !cycle_r_ ? h.initial : modal_.incremental ? h.initial + *cycle_r_ : *cycle_r_;
+  h.z = !cycle_z_ ? h.r : modal_.incremental ? h.r + *cycle_z_ : *cycle_z_;
+  h.back = modal_.cycle_return_initial ? h.initial : h.r;
   h.rigid = rigid;
   // Under cutter compensation the cycle's moves are made at the programmed points, the vector
   // cancelled as for G28, and the next move restores it.
   const base::RestoreOnExit restore_suspended(comp_suspended_);
   if (compensating()) comp_suspended_ = true;
   AxisVector step{};
-  for (int a = 0; a < kAxes; ++a) step[a] = incremental_ ? hole[a] - base[a] : 0;
+  for (int a = 0; a < kAxes; ++a) step[a] = modal_.incremental ? hole[a] - base[a] : 0;
   for (int k = 0; k < repeat; ++k) {
-    if (k > 0 && incremental_ && xf_on_) {  // G16, G51.1, G51, G68: the incremental command again
-      hole = pos_;
+    if (k > 0 && modal_.incremental && xf_on_) {  // G16, G51.1, G51, G68: the incremental command again
+      hole = coords_.pos;
       axis_target(hole);
-      hole[ax] = pos_[ax];
+      hole[ax] = coords_.pos[ax];
     } else if (k > 0) {  // G91: each repeat moves by the increment again; G90: the same hole
       for (int a = 0; a < kAxes; ++a)
-        if (a != ax) hole[a] = pos_[a] + step[a];
+        if (a != ax) hole[a] = coords_.pos[a] + step[a];
     }
     Hole at = h;
     at.at = hole;
     if (xf_on_ && xf_.active()) {
       transformed_cycle_levels(ax, at.r, at.z);
-      at.back = cycle_return_initial_ ? at.initial : at.r;
+      at.back = modal_.cycle_return_initial ? at.initial : at.r;
     }
     drill_hole(at);
   }
@@ -167,15 +167,15 @@ void Executor::cycle_m_codes() {
 }
 
 void Executor::cycle_move(const Hole& h, MoveKind kind, double level) {
-  AxisVector t = pos_;
+  AxisVector t = coords_.pos;
   t[h.axis] = level;
-  if (t[h.axis] != pos_[h.axis]) linear(kind, t);
+  if (t[h.axis] != coords_.pos[h.axis]) linear(kind, t);
 }
 
 void Executor::cycle_dwell() {
   Move m;
   m.kind = MoveKind::dwell;
-  m.start = m.end = pos_;
+  m.start = m.end = coords_.pos;
   m.seconds = cycle_p_;
   emit(m);
 }
@@ -183,10 +183,10 @@ void Executor::cycle_dwell() {
 // One hole: position at the current level, rapid to R, the cycle's motions, return to the initial
 // level (G98) or to R (G99).
 void Executor::drill_hole(const Hole& h) {
-  const int g = cycle_;
+  const int g = modal_.cycle;
   AxisVector at = h.at;
-  at[h.axis] = pos_[h.axis];
-  if (at != pos_) linear(MoveKind::rapid, at);
+  at[h.axis] = coords_.pos[h.axis];
+  if (at != coords_.pos) linear(MoveKind::rapid, at);
   if (!m_codes_.empty()) [[unlikely]] cycle_m_codes();
   if (g == 76 || g == 87 || g == 88) return boring_hole(h);
   if (g == 84 || g == 74) return tapping_hole(h);

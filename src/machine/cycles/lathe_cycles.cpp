@@ -54,13 +54,13 @@ bool Executor::select_lathe_motion(int g, std::vector<int>& one_shot) {
     return true;
   }
   // X, Z, R stay while G90/G92/G94 follow one another; any other group 01 code clears them
-  if (!single_cycle_code(code) || !single_cycle_code(system_a_code(motion_ * 10, system_a))) end_lathe_cycle_data();
-  motion_ = g / 10;
+  if (!single_cycle_code(code) || !single_cycle_code(system_a_code(modal_.motion * 10, system_a))) end_lathe_cycle_data();
+  modal_.motion = g / 10;
   return true;
 }
 
 void Executor::lathe_motion(const AxisVector& target) {
-  const int code = system_a_code(motion_ * 10, profile_.gcode_system == 'A');
+  const int code = system_a_code(modal_.motion * 10, profile_.gcode_system == 'A');
   if (code == 32) thread_block(target);
   else if (single_cycle_code(code)) single_cycle(target);
 }
@@ -71,13 +71,13 @@ void Executor::lathe_motion(const AxisVector& target) {
 //   G92: as G90 with (2) a thread cut ending in the No.5130 chamfer and (3) at rapid traverse
 void Executor::single_cycle(const AxisVector& target) {
   const bool system_a = profile_.gcode_system == 'A';
-  const int code = system_a_code(motion_ * 10, system_a);
-  const int written = motion_;
-  if (plane_ != 18)
+  const int code = system_a_code(modal_.motion * 10, system_a);
+  const int written = modal_.motion;
+  if (modal_.plane != 18)
     alarm("NC9001", fmt::format("G{} ({}) in the G{} plane is not supported yet (G18 only)", written,
-                                cycle_name(code), plane_));
+                                cycle_name(code), modal_.plane));
   for (int a = 0; a < kAxes; ++a)
-    if (a != 0 && a != 2 && target[a] != pos_[a])
+    if (a != 0 && a != 2 && target[a] != coords_.pos[a])
       alarm("NC9001", fmt::format("G{} ({}) with a move of an axis other than X and Z is not supported yet", written,
                                   cycle_name(code)));
   AxisVector end = target;
@@ -89,7 +89,7 @@ void Executor::single_cycle(const AxisVector& target) {
   const double r = lathe_cycle_.r;
   const double angle = code == 92 ? thread_start_angle() : 0;
 
-  const AxisVector a = pos_;
+  const AxisVector a = coords_.pos;
   AxisVector p1 = a, p3 = end;
   if (code == 94) {
     p1[2] = end[2] + r;
@@ -101,8 +101,8 @@ void Executor::single_cycle(const AxisVector& target) {
   // Tool-nose radius compensation: the vector is cancelled at A, the cycle starts up its own offset
   // on the side the cutting pattern gives (whatever G41/G42 says) and cancels it on the return to A.
   // G92 is threaded without compensation.
-  const int programmed_side = comp_side_;
-  const base::RestoreOnExit restore_side(comp_side_);
+  const int programmed_side = modal_.comp_side;
+  const base::RestoreOnExit restore_side(modal_.comp_side);
   if (compensating()) {
     comp_->cancel_at_end();
     int side = 0;
@@ -112,16 +112,16 @@ void Executor::single_cycle(const AxisVector& target) {
       const double cross = dp * (a[0] - p1[0]) - dq * (a[2] - p1[2]);
       side = cross > 0 ? 1 : cross < 0 ? -1 : programmed_side;
     }
-    comp_side_ = side;
+    modal_.comp_side = side;
   }
   auto go = [&](MoveKind kind, const AxisVector& to) {
-    if (to != pos_) linear(kind, to);
+    if (to != coords_.pos) linear(kind, to);
   };
   go(MoveKind::rapid, p1);
   if (code == 92) thread_pass(end, a[0], feed_, angle);
   else go(MoveKind::line, end);
   go(code == 92 ? MoveKind::rapid : MoveKind::line, p3);
-  comp_side_ = 0;  // the return to A cancels the cycle's offset
+  modal_.comp_side = 0;  // the return to A cancels the cycle's offset
   go(MoveKind::rapid, a);
 }
 

@@ -30,7 +30,7 @@ const char* lathe_cycle_name(int g) {
 // X C (Z C) position the hole, Z (X) is the bottom (W, U or G91: the distance from R), R the
 // distance from the initial level to point R, Q the depth of each peck in least input increments.
 bool Executor::lathe_drilling_block() {
-  const int g = cycle_;
+  const int g = modal_.cycle;
   const bool face = g <= 85;
   const int ax = face ? 2 : 0;  // the drilling axis
   const bool system_a = profile_.gcode_system == 'A';
@@ -54,7 +54,7 @@ bool Executor::lathe_drilling_block() {
   }
   const char absolute = face ? 'Z' : 'X', relative = face ? 'W' : 'U';
   if (has(absolute) || (system_a && has(relative))) {
-    const bool inc = system_a ? !has(absolute) : incremental_;
+    const bool inc = system_a ? !has(absolute) : modal_.incremental;
     const double v = dimension(word(has(absolute) ? absolute : relative));
     cycle_z_ = diameter ? v / 2 : v;
     cycle_z_incremental_ = inc;
@@ -71,13 +71,13 @@ bool Executor::lathe_drilling_block() {
   }
   const int repeat = cycle_repeat_count();
 
-  const AxisVector base = pos_;
-  AxisVector hole = pos_;
+  const AxisVector base = coords_.pos;
+  AxisVector hole = coords_.pos;
   const bool positioned = axis_target(hole);
   if ((positioned || repeat == 0) && p) cycle_p_ = *p;
   if (!positioned || repeat == 0) return false;  // data only
   if (rolls_) roll_over(hole);
-  hole[ax] = pos_[ax];  // the drilling axis word is the bottom, not a move
+  hole[ax] = coords_.pos[ax];  // the drilling axis word is the bottom, not a move
   if (!cycle_z_)
     alarm("PS0045", fmt::format("address {} not found (G{}, {}): a hole needs its bottom {}{} (the manual names "
                                 "no alarm for it; ncurve stops here)",
@@ -92,13 +92,13 @@ bool Executor::lathe_drilling_block() {
   Hole h;
   h.axis = ax;
   h.initial = cycle_initial_[ax];
-  const bool r_incremental = system_a ? !profile_.drilling.lathe_r_absolute : incremental_;
+  const bool r_incremental = system_a ? !profile_.drilling.lathe_r_absolute : modal_.incremental;
   const double r = cycle_r_.value_or(r_incremental ? 0.0 : h.initial);
   h.r = r_incremental ? h.initial + r : r;
   h.z = cycle_z_incremental_ ? h.r + *cycle_z_ : *cycle_z_;
   // G98/G99 choose the return level in systems B and C; system A has no such codes (G98/G99 are
   // feed per minute/revolution there) and returns to the initial level
-  h.back = system_a || cycle_return_initial_ ? h.initial : h.r;
+  h.back = system_a || modal_.cycle_return_initial ? h.initial : h.r;
   // Under tool-nose radius compensation the moves are made at the programmed points, the vector
   // cancelled as for G28, and the next move restores it (as the mill's cycles do).
   const base::RestoreOnExit restore_suspended(comp_suspended_);
@@ -106,7 +106,7 @@ bool Executor::lathe_drilling_block() {
   AxisVector step{};  // K: each repeat moves again by the incremental positioning words
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
-    bool inc = incremental_;
+    bool inc = modal_.incremental;
     if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W')) {
       a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : 2;
       inc = true;
@@ -116,7 +116,7 @@ bool Executor::lathe_drilling_block() {
   for (int k = 0; k < repeat; ++k) {
     if (k > 0)
       for (int a = 0; a < kAxes; ++a)
-        if (a != ax) hole[a] = pos_[a] + step[a];
+        if (a != ax) hole[a] = coords_.pos[a] + step[a];
     Hole at = h;
     at.at = hole;
     lathe_hole(at, q);
@@ -127,10 +127,10 @@ bool Executor::lathe_drilling_block() {
 // One hole: position at the current level, clamp C (if asked), rapid to R, the cycle's motions,
 // return to the initial level (G98, system A) or to R (G99), unclamp C and dwell No.5111.
 void Executor::lathe_hole(const Hole& h, double q) {
-  const int g = cycle_;
+  const int g = modal_.cycle;
   AxisVector at = h.at;
-  at[h.axis] = pos_[h.axis];
-  if (at != pos_) linear(MoveKind::rapid, at);
+  at[h.axis] = coords_.pos[h.axis];
+  if (at != coords_.pos) linear(MoveKind::rapid, at);
   if (cycle_clamp_m_ > 0) emit_event(MoveKind::m_code, cycle_clamp_m_);
   cycle_move(h, MoveKind::rapid, h.r);
   auto dwell = [&] {
@@ -175,7 +175,7 @@ void Executor::lathe_hole(const Hole& h, double q) {
     if (profile_.drilling.c_unclamp_dwell > 0) {
       Move m;
       m.kind = MoveKind::dwell;
-      m.start = m.end = pos_;
+      m.start = m.end = coords_.pos;
       m.seconds = profile_.drilling.c_unclamp_dwell;
       emit(m);
     }

@@ -59,8 +59,8 @@ int Executor::repetitive_code(int g) const {
 }
 
 double Executor::increments(const Cmd& c) const {
-  const double v = integer(c, "P/Q of G74/G75 (least input increments)") / (inch_ ? per_unit_inch_ : per_unit_mm_);
-  return std::fabs(inch_ ? v * 25.4 : v);
+  const double v = integer(c, "P/Q of G74/G75 (least input increments)") / (modal_.inch ? per_unit_inch_ : per_unit_mm_);
+  return std::fabs(modal_.inch ? v * 25.4 : v);
 }
 
 bool Executor::repetitive_cycle(int g) {
@@ -103,7 +103,7 @@ bool Executor::repetitive_cycle_path(int g) {
   }
   // Under tool-nose radius compensation the vector is cancelled at the start point, the roughing
   // follows the compensated shape and its moves are made as computed; the next move starts up again.
-  const base::RestoreOnExit restore_side(comp_side_);
+  const base::RestoreOnExit restore_side(modal_.comp_side);
   return g == 730 ? pattern_repeating_cycle() : stock_removal_cycle(g);
 }
 
@@ -155,7 +155,7 @@ void Executor::check_shape_block(const nc::Block& b, bool first, int g) {
                                   code),
             word.column);
   }
-  const bool arc_block = arc_code || (!move_code && (motion_ == 2 || motion_ == 3));
+  const bool arc_block = arc_code || (!move_code && (modal_.motion == 2 || modal_.motion == 3));
   for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
     const nc::Word& word = prog_->words[w];
     const int m = static_cast<int>(std::lround(word.value));
@@ -182,9 +182,9 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
   const std::vector<int> g_codes = g_codes_, m_codes = m_codes_;
   const nc::Block* block = block_;
   const nc::Program* prog = prog_;
-  const AxisVector pos = pos_, tool_shift = tool_shift_;
-  const int motion = motion_, tool = tool_, lathe_offset = lathe_offset_, last_m = last_m_;
-  const bool incremental = incremental_, feed_per_rev = feed_per_rev_, css = css_;
+  const AxisVector pos = coords_.pos, tool_shift = coords_.tool_shift;
+  const int motion = modal_.motion, tool = tool_, lathe_offset = lathe_offset_, last_m = last_m_;
+  const bool incremental = modal_.incremental, feed_per_rev = modal_.feed_per_rev, css = modal_.css;
   const double feed = feed_, speed = speed_;
   const std::size_t depth = frames_.size();
   std::int32_t resume = frames_.back().pc;
@@ -216,9 +216,9 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
       alarm("PS0325", fmt::format("a jump out of the finishing shape N{}..N{}", r.ns, r.nf));
   }
   if (keep) {
-    pos_ = pos, tool_shift_ = tool_shift;
-    motion_ = motion, tool_ = tool, lathe_offset_ = lathe_offset, last_m_ = last_m;
-    incremental_ = incremental, feed_per_rev_ = feed_per_rev, css_ = css;
+    coords_.pos = pos, coords_.tool_shift = tool_shift;
+    modal_.motion = motion, tool_ = tool, lathe_offset_ = lathe_offset, last_m_ = last_m;
+    modal_.incremental = incremental, modal_.feed_per_rev = feed_per_rev, modal_.css = css;
     feed_ = feed, speed_ = speed;
   }
   cmds_ = cmds, have_ = have, slot_ = slot, g_codes_ = g_codes, m_codes_ = m_codes;
@@ -229,7 +229,7 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
 
 // G70 P(ns) Q(nf): the shape as programmed, its F S T in effect, then back to the start by rapid.
 void Executor::finishing_cycle(const ShapeRange& r) {
-  const AxisVector start = pos_;
+  const AxisVector start = coords_.pos;
   walk_shape(r, 700, false);
   linear(MoveKind::rapid, start);
 }
@@ -241,7 +241,7 @@ bool Executor::stock_removal_cycle(int g) {
   const std::string code = written(g, profile_.gcode_system);
   const double diameter = profile_.diameter_x ? 2.0 : 1.0;
   const double du = has('U') ? dimension(word('U')) / diameter : 0.0, dw = has('W') ? dimension(word('W')) : 0.0;
-  if (profile_.series10_format && has('D')) mrc_depth_ = std::fabs(as_written(word('D').value, true, false)) * (inch_ ? 25.4 : 1);
+  if (profile_.series10_format && has('D')) mrc_depth_ = std::fabs(as_written(word('D').value, true, false)) * (modal_.inch ? 25.4 : 1);
   if (!(mrc_depth_ > 0))
     alarm("PS0062", fmt::format("{}: the depth of cut Δd is {} (give it by {} in the first block, or No.5132)", code,
                                 mrc_depth_, profile_.series10_format ? 'D' : facing ? 'W' : 'U'));
@@ -257,7 +257,7 @@ bool Executor::stock_removal_cycle(int g) {
     const bool z = l == 'Z' || (l == 'W' && profile_.gcode_system == 'A');
     if (x || z) (x != facing ? infeed_axis : other_axis) = true;
   }
-  const AxisVector start = pos_;
+  const AxisVector start = coords_.pos;
   const std::vector<Move> moves = walk_shape(range, g, true);
   if (!infeed_axis || moves.empty())
     alarm("PS0065", fmt::format("{}: the first block of the shape (N{}) must move {} (and {} too for type II)", code,
@@ -281,7 +281,7 @@ bool Executor::stock_removal_cycle(int g) {
                fmt::format("{}: the finishing shape is not monotone along {} (this block turns back): type I needs "
                            "it; give both {} and {} in the first block (N{}) for type II",
                            code, facing ? 'Z' : 'X', facing ? 'Z' : 'X', facing ? 'X' : 'Z', range.ns));
-  if (comp_side_ != 0 || comp_->offset_mode()) shape = shape_of(nose_compensated(moves), 1);
+  if (modal_.comp_side != 0 || comp_->offset_mode()) shape = shape_of(nose_compensated(moves), 1);
   mrc::Roughing r;
   r.start = p2(start);
   r.shape = mrc::translated(shape, {du, dw});
@@ -300,9 +300,9 @@ bool Executor::stock_removal_cycle(int g) {
 // ends with its vector perpendicular. The compensation in force is cancelled at the start point and
 // stays off for the cycle's own moves.
 std::vector<Move> Executor::nose_compensated(const std::vector<Move>& shape) {
-  int side = comp_side_;
+  int side = modal_.comp_side;
   comp_->cancel_at_end();
-  comp_side_ = 0;
+  modal_.comp_side = 0;
   double radius = nose_radius();
   if (radius < 0) radius = -radius, side = -side;
   std::vector<Move> out;
@@ -329,12 +329,12 @@ bool Executor::pattern_repeating_cycle() {
     alarm("PS0321", fmt::format("{}: the number of divisions d is {} (a whole number from 1; {} in the first block, "
                                 "or No.5137)", code, mrc_divisions_, profile_.series10_format ? 'D' : 'R'));
   const ShapeRange range = shape_range(730);
-  const AxisVector start = pos_;
+  const AxisVector start = coords_.pos;
   const std::vector<Move> moves = walk_shape(range, 730, true);
   if (moves.empty()) alarm("PS0065", fmt::format("{}: the shape N{}..N{} makes no move", code, range.ns, range.nf));
   mrc::Pattern p;
   p.start = p2(start);
-  p.shape = shape_of(comp_side_ != 0 || comp_->offset_mode() ? nose_compensated(moves) : moves, 0);
+  p.shape = shape_of(modal_.comp_side != 0 || comp_->offset_mode() ? nose_compensated(moves) : moves, 0);
   p.relief = {mrc_relief_x_, mrc_relief_z_};
   p.allowance = {du, dw};
   p.count = static_cast<int>(mrc_divisions_);
@@ -363,11 +363,11 @@ bool Executor::peck_cycle(int g) {
   const double step_x = amount(di), step_z = amount(dk);  // Δi along X (radius), Δk along Z
   double relief = 0;
   if (one_block ? has('D') : has('R'))
-    relief = one_block ? as_written(word('D').value, true, false) * (inch_ ? 25.4 : 1) : dimension(word('R'));
+    relief = one_block ? as_written(word('D').value, true, false) * (modal_.inch ? 25.4 : 1) : dimension(word('R'));
   if (mrc_return_ < 0) alarm("PS0062", fmt::format("{}: the return amount e is negative", code));
-  AxisVector end = pos_;
+  AxisVector end = coords_.pos;
   axis_target(end);
-  const bool moves_x = std::fabs(end[0] - pos_[0]) > 1e-9, moves_z = std::fabs(end[2] - pos_[2]) > 1e-9;
+  const bool moves_x = std::fabs(end[0] - coords_.pos[0]) > 1e-9, moves_z = std::fabs(end[2] - coords_.pos[2]) > 1e-9;
   if (moves_x && !(step_x > 0))
     alarm("PS0319", fmt::format("{}: X moves but Δi ({}) is 0: give the {} along X", code, di,
                                 g == 740 ? "travel between cuts" : "depth of each cut"));
@@ -377,7 +377,7 @@ bool Executor::peck_cycle(int g) {
   if ((g == 740 ? moves_x : moves_z) && relief < 0)
     alarm("PS0318", fmt::format("{}: the relief Δd at the bottom is negative; its direction follows the travel", code));
   mrc::Pecking k;
-  k.start = p2(pos_), k.end = p2(end);
+  k.start = p2(coords_.pos), k.end = p2(end);
   k.back = mrc_return_;
   k.relief = relief;
   if (g == 740) {
@@ -388,10 +388,10 @@ bool Executor::peck_cycle(int g) {
   }
   // Tool-nose radius compensation is not applied to G74/G75 (as to G76): the vector in force is
   // cancelled at the start point, the pecks are made as programmed, the next move starts up again.
-  const base::RestoreOnExit restore_side(comp_side_);
+  const base::RestoreOnExit restore_side(modal_.comp_side);
   if (compensating()) {
     comp_->cancel_at_end();
-    comp_side_ = 0;
+    modal_.comp_side = 0;
   }
   emit_cycle_path(mrc::peck_cycle(k), g == 750);
   return true;
@@ -401,8 +401,8 @@ bool Executor::peck_cycle(int g) {
 void Executor::emit_cycle_path(const std::vector<mrc::Step>& path, bool transposed) {
   for (mrc::Step s : path) {
     if (transposed) s.end = mrc::transposed(s.end), s.centre = mrc::transposed(s.centre), s.sweep = -s.sweep;
-    AxisVector target = pos_;
-    target[0] = s.end.x, target[2] = s.end.z;
+    AxisVector target = coords_.pos;
+    target[0] = s.end.x, target[2] = s.end.y;
     if (!s.arc) {
       linear(s.rapid ? MoveKind::rapid : MoveKind::line, target);
       continue;
@@ -412,15 +412,15 @@ void Executor::emit_cycle_path(const std::vector<mrc::Step>& path, bool transpos
     m.kind = MoveKind::arc;
     m.clockwise = s.sweep < 0;
     m.plane = 18;
-    m.start = pos_;
+    m.start = coords_.pos;
     m.end = target;
-    m.center = {s.centre.x, pos_[1], s.centre.z};
+    m.center = {s.centre.x, coords_.pos[1], s.centre.y};
     m.sweep = s.sweep;
-    const double rs = std::hypot(pos_[0] - s.centre.x, pos_[2] - s.centre.z);
+    const double rs = std::hypot(coords_.pos[0] - s.centre.x, coords_.pos[2] - s.centre.y);
     m.length = std::fabs(s.sweep) * rs;
     m.feed = feed_;
     m.seconds = arc_feed_seconds(m, m.length);
-    pos_ = target;
+    coords_.pos = target;
     emit(m);
   }
 }

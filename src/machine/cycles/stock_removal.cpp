@@ -12,8 +12,8 @@ constexpr double kTol = 1e-7;  // mm: a point this close to a level is on it
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
 int sign(double v, double tol = kTol) { return v > tol ? 1 : v < -tol ? -1 : 0; }
-double radius(const Element& e) { return std::hypot(e.start.x - e.centre.x, e.start.z - e.centre.z); }
-double start_angle(const Element& e) { return std::atan2(e.start.x - e.centre.x, e.start.z - e.centre.z); }
+double radius(const Element& e) { return std::hypot(e.start.x - e.centre.x, e.start.y - e.centre.y); }
+double start_angle(const Element& e) { return std::atan2(e.start.x - e.centre.x, e.start.y - e.centre.y); }
 
 // The parameter t in (0, 1) at which an arc reaches angle theta, or -1.
 double arc_param(const Element& e, double theta) {
@@ -26,7 +26,7 @@ double arc_param(const Element& e, double theta) {
 
 // Rate of change of X (axis 0) or Z (axis 1) along the element at t.
 double rate(const Element& e, int axis, double t) {
-  if (!e.arc) return axis == 0 ? e.end.x - e.start.x : e.end.z - e.start.z;
+  if (!e.arc) return axis == 0 ? e.end.x - e.start.x : e.end.y - e.start.y;
   const double th = start_angle(e) + t * e.sweep;
   return axis == 0 ? std::cos(th) * e.sweep : -std::sin(th) * e.sweep;
 }
@@ -78,18 +78,18 @@ Loc locate(const Shape& c, P2 p) {
     const Element& e = c[i];
     double t = 0;
     if (!e.arc) {
-      const double dx = e.end.x - e.start.x, dz = e.end.z - e.start.z, len2 = dx * dx + dz * dz;
-      t = len2 > 0 ? std::clamp(((p.x - e.start.x) * dx + (p.z - e.start.z) * dz) / len2, 0.0, 1.0) : 0;
+      const double dx = e.end.x - e.start.x, dz = e.end.y - e.start.y, len2 = dx * dx + dz * dz;
+      t = len2 > 0 ? std::clamp(((p.x - e.start.x) * dx + (p.y - e.start.y) * dz) / len2, 0.0, 1.0) : 0;
     } else {
-      const double th = std::atan2(p.x - e.centre.x, p.z - e.centre.z);
+      const double th = std::atan2(p.x - e.centre.x, p.y - e.centre.y);
       t = arc_param(e, th);
       if (t < 0) {
         const P2 s = e.start, en = e.end;
-        t = std::hypot(p.x - s.x, p.z - s.z) <= std::hypot(p.x - en.x, p.z - en.z) ? 0 : 1;
+        t = std::hypot(p.x - s.x, p.y - s.y) <= std::hypot(p.x - en.x, p.y - en.y) ? 0 : 1;
       }
     }
     const P2 q = point_at(e, t);
-    const double dist = std::hypot(q.x - p.x, q.z - p.z);
+    const double dist = std::hypot(q.x - p.x, q.y - p.y);
     if (dist < best_d - 1e-12) best_d = dist, best = {i, t};
   }
   return best;
@@ -99,7 +99,7 @@ class Builder {
 public:
   explicit Builder(P2 start) : at_(start) {}
   void line(bool rapid, P2 to) {
-    if (std::hypot(to.x - at_.x, to.z - at_.z) > 1e-9) push(Step{rapid, to, false, {}, 0});
+    if (std::hypot(to.x - at_.x, to.y - at_.y) > 1e-9) push(Step{rapid, to, false, {}, 0});
     at_ = to;
   }
   // The shape from one place to a later one, as its elements are (G00 elements as rapids if kept).
@@ -111,7 +111,7 @@ public:
       const P2 end = point_at(e, tb);
       if (!e.arc) {
         line(keep_rapid && e.rapid, end);
-      } else if (std::hypot(end.x - at_.x, end.z - at_.z) > 1e-9 || tb - ta > 0.5) {
+      } else if (std::hypot(end.x - at_.x, end.y - at_.y) > 1e-9 || tb - ta > 0.5) {
         push(Step{false, end, true, e.centre, e.sweep * (tb - ta)});
         at_ = end;
       }
@@ -165,7 +165,7 @@ Loc walk(const Shape& c, Loc from, double stop, int d, bool forward) {
 double extreme_x(const Shape& c, int s, double lo, double hi, int d) {
   double best = d > 0 ? -1e300 : 1e300;
   auto take = [&](P2 p) {
-    const double u = s * p.z;
+    const double u = s * p.y;
     if (u >= lo - kTol && u <= hi + kTol) best = d > 0 ? std::max(best, p.x) : std::min(best, p.x);
   };
   for (const Element& e : c) {
@@ -174,10 +174,10 @@ double extreme_x(const Shape& c, int s, double lo, double hi, int d) {
     for (double bound : {lo, hi}) {  // where the element enters or leaves the range
       const double z = bound * s;
       if (!e.arc) {
-        const double dz = e.end.z - e.start.z;
-        if (std::fabs(dz) > 1e-12) ts.push_back(std::clamp((z - e.start.z) / dz, 0.0, 1.0));
+        const double dz = e.end.y - e.start.y;
+        if (std::fabs(dz) > 1e-12) ts.push_back(std::clamp((z - e.start.y) / dz, 0.0, 1.0));
       } else {
-        const double v = (z - e.centre.z) / radius(e);
+        const double v = (z - e.centre.y) / radius(e);
         if (std::fabs(v) <= 1)
           for (double a : {std::acos(v), -std::acos(v)})
             if (double t = arc_param(e, a); t > 0) ts.push_back(t);
@@ -189,7 +189,7 @@ double extreme_x(const Shape& c, int s, double lo, double hi, int d) {
 }
 
 int cut_direction(const Shape& c) {
-  const int s = sign(c.back().end.z - c.front().start.z);
+  const int s = sign(c.back().end.y - c.front().start.y);
   return s != 0 ? s : -1;
 }
 
@@ -206,22 +206,22 @@ int infeed_direction(const Roughing& r) {
 P2 point_at(const Element& e, double t) {
   if (t <= 0) return e.start;
   if (t >= 1) return e.end;
-  if (!e.arc) return {e.start.x + t * (e.end.x - e.start.x), e.start.z + t * (e.end.z - e.start.z)};
+  if (!e.arc) return {e.start.x + t * (e.end.x - e.start.x), e.start.y + t * (e.end.y - e.start.y)};
   const double r = radius(e), th = start_angle(e) + t * e.sweep;
-  return {e.centre.x + r * std::sin(th), e.centre.z + r * std::cos(th)};
+  return {e.centre.x + r * std::sin(th), e.centre.y + r * std::cos(th)};
 }
 
 Shape translated(const Shape& s, P2 by) {
   Shape out = s;
   for (Element& e : out) {
-    e.start.x += by.x, e.start.z += by.z;
-    e.end.x += by.x, e.end.z += by.z;
-    e.centre.x += by.x, e.centre.z += by.z;
+    e.start.x += by.x, e.start.y += by.y;
+    e.end.x += by.x, e.end.y += by.y;
+    e.centre.x += by.x, e.centre.y += by.y;
   }
   return out;
 }
 
-P2 transposed(P2 p) { return {p.z, p.x}; }
+P2 transposed(P2 p) { return {p.y, p.x}; }
 
 Shape transposed(const Shape& s) {
   Shape out = s;
@@ -246,7 +246,7 @@ int first_reversal(const Shape& s, int axis) {
   for (int i = 0; i < static_cast<int>(s.size()); ++i) {
     const Element& e = s[i];
     for (double t : turns(e, axis)) {  // an arc that turns inside itself, by more than the tolerance
-      auto along = [&](P2 p) { return axis == 0 ? p.x : p.z; };
+      auto along = [&](P2 p) { return axis == 0 ? p.x : p.y; };
       const double at = along(point_at(e, t));
       if (std::min(std::fabs(at - along(e.start)), std::fabs(at - along(e.end))) > kTol) return i;
     }
@@ -266,14 +266,14 @@ std::vector<Span> spans_at(const Shape& c, double z0, double level, int d) {
   auto allowed = [&](double x) { return d * (x - level) >= -kTol; };
   std::vector<std::pair<double, double>> r;  // allowed ranges of u = s * z
   const P2 first = c.front().start;
-  if (s * first.z > u0 + kTol && allowed(first.x)) r.emplace_back(u0, s * first.z);
+  if (s * first.y > u0 + kTol && allowed(first.x)) r.emplace_back(u0, s * first.y);
   for (const Element& e : c) {
     std::vector<double> ts{0};
     for (double t : crossings(e, level)) ts.push_back(t);
     ts.push_back(1);
     for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
       if (!allowed(point_at(e, (ts[k] + ts[k + 1]) / 2).x)) continue;
-      const double ua = s * point_at(e, ts[k]).z, ub = s * point_at(e, ts[k + 1]).z;
+      const double ua = s * point_at(e, ts[k]).y, ub = s * point_at(e, ts[k + 1]).y;
       r.emplace_back(std::min(ua, ub), std::max(ua, ub));
     }
   }
@@ -312,7 +312,7 @@ Path stock_removal(const Roughing& r) {
   const Shape& c = r.shape;
   if (c.empty()) return {};
   const int d = infeed_direction(r), s = cut_direction(c);
-  const double x0 = r.start.x, z0 = r.start.z, e = r.escape;
+  const double x0 = r.start.x, z0 = r.start.y, e = r.escape;
   const std::vector<double> grid = roughing_levels(r);
 
   if (!r.pockets) {  // type I: one cut per level from the start line, 45-degree escape, back along Z
@@ -329,7 +329,7 @@ Path stock_removal(const Roughing& r) {
       double lo, hi, top;  // u range; the level above it that has been cut
     };
     auto pass = [&](const Span& span, double level, double above) {
-      if (d * (b.at().x - above) > kTol) b.line(true, {above - d * e, b.at().z});  // out of a pocket cut before
+      if (d * (b.at().x - above) > kTol) b.line(true, {above - d * e, b.at().y});  // out of a pocket cut before
       if (std::fabs(span.a - z0) <= kTol) {
         b.line(true, {b.at().x, z0});
         b.line(r.rapid_infeed, {level, z0});
@@ -337,15 +337,15 @@ Path stock_removal(const Roughing& r) {
         const Loc wall = locate(c, {level, span.a});
         const Loc entry = walk(c, wall, above, d, false);
         const P2 top = at_loc(c, entry);
-        b.line(true, {b.at().x, top.z});
+        b.line(true, {b.at().x, top.y});
         b.line(true, top);
         b.along(c, entry, wall, false);
       }
       b.line(false, {level, span.b});
       const Loc end = locate(c, {level, span.b});
       const P2 on = at_loc(c, end);
-      if (std::hypot(on.x - level, on.z - span.b) < 1e-6) b.along(c, end, walk(c, end, above, d, true), false);
-      b.line(true, {b.at().x - d * e, b.at().z - s * e});
+      if (std::hypot(on.x - level, on.y - span.b) < 1e-6) b.along(c, end, walk(c, end, above, d, true), false);
+      b.line(true, {b.at().x - d * e, b.at().y - s * e});
     };
     auto region = [&](auto& self, Region g) -> void {
       std::vector<Region> pockets;
@@ -373,7 +373,7 @@ Path stock_removal(const Roughing& r) {
       for (const Region& p : pockets) self(self, p);
     };
     region(region, Region{s * z0, 1e300, x0});
-    if (d * (b.at().x - x0) > kTol) b.line(true, {x0, b.at().z});
+    if (d * (b.at().x - x0) > kTol) b.line(true, {x0, b.at().y});
     b.line(true, {x0, z0});
   }
   if (r.finish_pass) {  // along the shape moved by the allowance, A'' to B''
@@ -390,7 +390,7 @@ Path pattern_repeating(const Pattern& p) {
   const int n = std::max(p.count, 1);
   for (int j = 1; j <= n; ++j) {
     const double f = n > 1 ? static_cast<double>(n - j) / (n - 1) : 0.0;
-    const P2 by{p.allowance.x + p.relief.x * f, p.allowance.z + p.relief.z * f};
+    const P2 by{p.allowance.x + p.relief.x * f, p.allowance.y + p.relief.y * f};
     Shape moved = translated(p.shape, by);
     b.line(moved.front().rapid, moved.front().end);  // the first block from A to its moved end
     moved.erase(moved.begin());
@@ -402,26 +402,26 @@ Path pattern_repeating(const Pattern& p) {
 
 Path peck_cycle(const Pecking& p) {
   Builder b(p.start);
-  const int sx = sign(p.end.x - p.start.x), sz = sign(p.end.z - p.start.z);
+  const int sx = sign(p.end.x - p.start.x), sz = sign(p.end.y - p.start.y);
   const double relief = sx != 0 ? -sx * std::fabs(p.relief) : p.relief;
   double x = p.start.x;
   for (;;) {
     if (sz != 0 && p.peck > 0) {
-      for (double z = p.start.z;;) {
+      for (double z = p.start.y;;) {
         double next = z + sz * p.peck;
-        if (sz * (next - p.end.z) >= -kTol) next = p.end.z;
+        if (sz * (next - p.end.y) >= -kTol) next = p.end.y;
         b.line(false, {x, next});
-        if (next == p.end.z) break;
+        if (next == p.end.y) break;
         b.line(true, {x, next - sz * p.back});
         z = next;
       }
     }
-    b.line(true, {x + relief, p.end.z});
-    b.line(true, {x + relief, p.start.z});
+    b.line(true, {x + relief, p.end.y});
+    b.line(true, {x + relief, p.start.y});
     if (sx == 0 || !(p.shift > 0) || std::fabs(x - p.end.x) <= kTol) break;
     double next = x + sx * p.shift;
     if (sx * (next - p.end.x) >= -kTol) next = p.end.x;
-    b.line(true, {next, p.start.z});
+    b.line(true, {next, p.start.y});
     x = next;
   }
   b.line(true, p.start);

@@ -6,11 +6,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "geom/plane.hpp"
+
 namespace ncurve::machine::mrc {
 
-struct P2 {
-  double x = 0, z = 0;
-};
+// A point of the ZX plane: x is X (a radius), y is Z.
+using P2 = geom::V2;
 
 // One element of a shape: a line, or an arc about `centre` turning `sweep` radians (counter-clockwise
 // positive in the Z-X plane, Z towards X, as Move::sweep for G18). `rapid`: a G00 block.

@@ -12,7 +12,7 @@
 namespace ncurve::machine {
 
 void Executor::tapping_hole(const Hole& h) {
-  const int forward = cycle_ == 84 ? 3 : 4, reverse = cycle_ == 84 ? 4 : 3;
+  const int forward = modal_.cycle == 84 ? 3 : 4, reverse = modal_.cycle == 84 ? 4 : 3;
   auto spindle = [&](int code) { emit_event(MoveKind::spindle, code); };
   auto dwell = [&] {
     if (cycle_p_ > 0) cycle_dwell();
@@ -74,11 +74,11 @@ void Executor::tapping_hole(const Hole& h) {
 // At a rigid tapping hole: the spindle speed and the feed it needs.
 void Executor::rigid_tapping_check(std::uint16_t column) const {
   if (speed_ <= 0)
-    alarm("PS0200", fmt::format("rigid tapping (G{}) without a spindle speed: give S with M29 (M29 S_)", cycle_),
+    alarm("PS0200", fmt::format("rigid tapping (G{}) without a spindle speed: give S with M29 (M29 S_)", modal_.cycle),
           column);
   if (feed_ <= 0)
     alarm("PS0201", fmt::format("rigid tapping (G{}) without a feed: give F (mm/min under G94, the lead under G95)",
-                                cycle_),
+                                modal_.cycle),
           column);
 }
 
@@ -96,7 +96,7 @@ void Executor::rigid_tapping_words() {
     const int a = axis_index(c.letter);
     if (a >= 0 && has_axis_[a] && !axis) axis = &c;
   }
-  if (m29 && !tap_word && (cycle_ == 84 || cycle_ == 74))
+  if (m29 && !tap_word && (modal_.cycle == 84 || modal_.cycle == 74))
     alarm("PS0203", "M29 in a tapping cycle: give M29 before the G84/G74 block or in it", m29->column);
   if (!m29 && has('S') && !tap_word)
     alarm("PS0203", "an S command between M29 and G84/G74: give S with M29 (M29 S_)", word('S').column);

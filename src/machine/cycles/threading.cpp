@@ -19,8 +19,8 @@ constexpr double kDeg = std::numbers::pi / 180;
 }  // namespace
 
 double Executor::increments(const Cmd& c, const char* what) const {
-  const double per_unit = inch_ ? per_unit_inch_ : per_unit_mm_;
-  return integer(c, what) / per_unit * (inch_ ? 25.4 : 1.0);
+  const double per_unit = modal_.inch ? per_unit_inch_ : per_unit_mm_;
+  return integer(c, what) / per_unit * (modal_.inch ? 25.4 : 1.0);
 }
 
 double Executor::thread_start_angle() {
@@ -43,17 +43,17 @@ void Executor::thread_cut(const AxisVector& to, double lead, double angle) {
   if (lead <= 0) alarm("PS0011", "thread lead is zero: give F (the lead, mm per revolution) in the threading block");
   Move m;
   m.kind = MoveKind::line;
-  m.start = pos_;
+  m.start = coords_.pos;
   m.end = to;
-  m.plane = static_cast<std::uint8_t>(plane_);
-  m.length = line_length(pos_.data(), to.data());
+  m.plane = static_cast<std::uint8_t>(modal_.plane);
+  m.length = line_length(coords_.pos.data(), to.data());
   m.feed = lead;
   m.threading = true;
   m.thread_start = angle < 0 ? -1 : static_cast<std::int32_t>(std::lround(angle * 1000));
   double along = 0;
-  for (int a = 0; a < 3; ++a) along = std::max(along, std::fabs(to[a] - pos_[a]));
-  m.seconds = along / lead * 60.0 * minutes_per_rev(pos_[0], to[0]);
-  pos_ = to;
+  for (int a = 0; a < 3; ++a) along = std::max(along, std::fabs(to[a] - coords_.pos[a]));
+  m.seconds = along / lead * 60.0 * minutes_per_rev(coords_.pos[0], to[0]);
+  coords_.pos = to;
   emit(m);
 }
 
@@ -61,17 +61,17 @@ void Executor::thread_cut(const AxisVector& to, double lead, double angle) {
 // the tool leaves the thread r before the end point's Z and reaches it r * tan(No.5131, 45 degrees
 // when 0) out, toward the retract level out_x.
 void Executor::thread_pass(const AxisVector& end, double out_x, double lead, double angle) {
-  const double dz = std::fabs(end[2] - pos_[2]);
+  const double dz = std::fabs(end[2] - coords_.pos[2]);
   const double run = std::min(thread_chamfer_ * 0.1 * lead, dz);
   if (run <= 0) return thread_cut(end, lead, angle);
-  const AxisVector from = pos_;
+  const AxisVector from = coords_.pos;
   AxisVector chamfer = end;
   for (int a = 0; a < kAxes; ++a) chamfer[a] = end[a] - (end[a] - from[a]) * run / dz;
   const double theta = (profile_.thread_chamfer_angle == 0 ? 45 : profile_.thread_chamfer_angle) * kDeg;
   const double out = out_x > end[0] ? 1.0 : out_x < end[0] ? -1.0 : 0.0;
   AxisVector pulled = end;
   pulled[0] = chamfer[0] + out * run * std::tan(theta);
-  if (chamfer != pos_) {
+  if (chamfer != coords_.pos) {
     thread_cut(chamfer, lead, angle);
     angle = -1;
   }
@@ -84,7 +84,7 @@ void Executor::thread_block(const AxisVector& target) {
   if (compensating())
     alarm("NC9001", fmt::format("threading (G{}) under {} radius compensation is not supported yet: cancel "
                                 "it with G40 before the thread",
-                                motion_, profile_.lathe() ? "tool-nose" : "cutter"));
+                                modal_.motion, profile_.lathe() ? "tool-nose" : "cutter"));
   const bool continues = thread_block_ != 0 && thread_block_ + 1 == result_.stats.blocks;
   double angle = thread_start_angle();
   if (continues) angle = -1;
@@ -119,7 +119,7 @@ void Executor::multiple_threading_cycle() {
     return;
   }
   if (!axes) return;  // Series 10/11 format without an end point: nothing to cut
-  AxisVector end = pos_;
+  AxisVector end = coords_.pos;
   g76_reads_a_ = fcv;  // A is the tool angle there, not an axis
   axis_target(end);
   g76_reads_a_ = false;
@@ -160,7 +160,7 @@ void Executor::multiple_threading_cycle() {
 // depth k - d; then m finishing passes at k. Each pass starts along the flank of the tool angle a
 // (single edge cutting), cuts with the chamfer, rapids out to A's X and back to A's Z.
 void Executor::g76_passes(const AxisVector& end, double taper, double height, double first, double angle) {
-  const AxisVector a = pos_;
+  const AxisVector a = coords_.pos;
   const double out = a[0] > end[0] ? 1.0 : a[0] < end[0] ? -1.0 : 0.0;   // from the root toward the crest
   const double back = end[2] > a[2] ? -1.0 : end[2] < a[2] ? 1.0 : 0.0;  // against the cutting direction
   const double flank = std::tan(g76_tool_angle_ / 2.0 * kDeg);
@@ -178,10 +178,10 @@ void Executor::g76_passes(const AxisVector& end, double taper, double height, do
   }
   for (int k = 0; k < std::max(g76_finish_count_, 1); ++k) depths.push_back(height);
 
-  const base::RestoreOnExit restore_side(comp_side_);
+  const base::RestoreOnExit restore_side(modal_.comp_side);
   if (compensating()) {  // threading is not compensated: the vector is cancelled at A
     comp_->cancel_at_end();
-    comp_side_ = 0;
+    modal_.comp_side = 0;
   }
   for (double d : depths) {
     const double x = out * (height - d), z = back * (height - d) * flank;
@@ -190,12 +190,12 @@ void Executor::g76_passes(const AxisVector& end, double taper, double height, do
     from[2] = a[2] + z;
     to[0] += x;
     to[2] += z;
-    if (from != pos_) linear(MoveKind::rapid, from);
+    if (from != coords_.pos) linear(MoveKind::rapid, from);
     thread_pass(to, a[0], feed_, angle);
-    AxisVector up = pos_;
+    AxisVector up = coords_.pos;
     up[0] = a[0];
-    if (up != pos_) linear(MoveKind::rapid, up);
-    if (a != pos_) linear(MoveKind::rapid, a);
+    if (up != coords_.pos) linear(MoveKind::rapid, up);
+    if (a != coords_.pos) linear(MoveKind::rapid, a);
   }
 }
 

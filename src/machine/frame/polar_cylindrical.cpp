@@ -3,7 +3,7 @@
 // (docs/polar-cylindrical.md). In either mode the program is a contour in a Cartesian plane: for
 // G12.1 the linear axis (No.5460) and a hypothetical axis addressed by the rotary axis (No.5461),
 // for G07.1 the surface of the cylinder of radius r developed flat, the rotary axis's angle read as
-// the arc length r * angle. The interpreter moves in that plane (pos_ holds it: the hypothetical or
+// the arc length r * angle. The interpreter moves in that plane (coords_.pos holds it: the hypothetical or
 // developed coordinate sits in the slot of the linear axis it stands beside), cutter compensation
 // offsets the contour there, and the path stage DevelopedConversion (path/developed_conversion.hpp)
 // turns each move into the linear and rotary axes' moves.
@@ -74,7 +74,7 @@ void Executor::polar_start(std::uint16_t column) {
     alarm("PS0146", "G12.1 in cutter compensation mode: give G40 before G12.1 and start G41/G42 inside the mode",
           column);
   if (xf_on_) alarm("PS0146", "G12.1 with a coordinate transform on: cancel G16, G51, G51.1 or G68 first", column);
-  if (cycle_ != 0) alarm("PS0146", "G12.1 in a drilling canned cycle: cancel it with G80 first", column);
+  if (modal_.cycle != 0) alarm("PS0146", "G12.1 in a drilling canned cycle: cancel it with G80 first", column);
   Developed d;
   d.polar = true;
   d.linear = lin;
@@ -82,12 +82,12 @@ void Executor::polar_start(std::uint16_t column) {
   d.slot = lin == 0 ? 1 : lin == 1 ? 2 : 0;  // the hypothetical axis: Xp-Yp, Yp-Zp or Zp-Xp plane
   d.p = lin;
   d.q = d.slot;
-  d.saved_plane = plane_;
-  d.held = pos_[d.slot];
-  d.angle0 = pos_[rot];  // "the angle of 0 for the position of the tool when G12.1 is specified"
-  path_developed_.start(d, pos_);
-  pos_[d.slot] = 0;  // "the virtual axis is at coordinate 0 immediately after G12.1"
-  plane_ = lin == 0 ? 17 : lin == 1 ? 19 : 18;
+  d.saved_plane = modal_.plane;
+  d.held = coords_.pos[d.slot];
+  d.angle0 = coords_.pos[rot];  // "the angle of 0 for the position of the tool when G12.1 is specified"
+  path_developed_.start(d, coords_.pos);
+  coords_.pos[d.slot] = 0;  // "the virtual axis is at coordinate 0 immediately after G12.1"
+  modal_.plane = lin == 0 ? 17 : lin == 1 ? 19 : 18;
   dev_ = d;
   developed_ = developed_hook_ = true;
 }
@@ -134,18 +134,18 @@ void Executor::cylinder_code(std::uint16_t column) {
                                 axis->letter, axis->letter, parallel),
           axis->column);
   const int slot = parallel - 5;
-  const PlaneAxes pa = plane_axes(plane_);
+  const PlaneAxes pa = plane_axes(modal_.plane);
   if (pa.p != slot && pa.q != slot)
     alarm("PS0175", fmt::format("G07.1 {}: {} stands for {} (No.1022 = {}), which is not in the G{} plane: select "
                                 "the plane of {} and the other linear axis before G07.1",
-                                axis->letter, axis->letter, kAxisLetters[slot], parallel, plane_, kAxisLetters[slot]),
+                                axis->letter, axis->letter, kAxisLetters[slot], parallel, modal_.plane, kAxisLetters[slot]),
           column);
   if (compensating())
     alarm("PS0176", "G07.1 in cutter compensation mode: give G40 before G07.1 and start G41/G42 inside the mode",
           column);
   if (xf_on_) alarm("PS0176", "G07.1 with a coordinate transform on: cancel G16, G51, G51.1 or G68 first", column);
-  if (cycle_ != 0) alarm("PS0176", "G07.1 in a drilling canned cycle: cancel it with G80 first", column);
-  if (motion_ == 0)
+  if (modal_.cycle != 0) alarm("PS0176", "G07.1 in a drilling canned cycle: cancel it with G80 first", column);
+  if (modal_.motion == 0)
     alarm("PS0176", "G07.1 in G00 mode: cylindrical interpolation moves by G01, G02 and G03 only; give G01 in a "
                     "block before G07.1",
           column);
@@ -156,24 +156,24 @@ void Executor::cylinder_code(std::uint16_t column) {
   d.p = pa.p;
   d.q = pa.q;
   d.radius = r;
-  d.saved_plane = plane_;
-  const AxisVector machine = pos_;
+  d.saved_plane = modal_.plane;
+  const AxisVector machine = coords_.pos;
   if (has_axis_[slot]) {  // the linear axis the rotary axis stands beside keeps moving in a free slot
-    d.held = pos_[slot];
+    d.held = coords_.pos[slot];
     for (int k = 0; k < 3 && d.spare < 0; ++k)
       if (!has_axis_[k] && k != slot) d.spare = k;
-    if (d.spare >= 0) pos_[d.spare] = pos_[slot];
+    if (d.spare >= 0) coords_.pos[d.spare] = coords_.pos[slot];
   }
-  pos_[slot] = pos_[a] / kDeg * r;
+  coords_.pos[slot] = coords_.pos[a] / kDeg * r;
   path_developed_.start(d, machine);
   dev_ = d;
   developed_ = developed_hook_ = true;
 }
 
 void Executor::end_developed() {
-  pos_ = path_developed_.machine();
+  coords_.pos = path_developed_.machine();
   path_developed_.stop();
-  plane_ = dev_->saved_plane;
+  modal_.plane = dev_->saved_plane;
   dev_.reset();
   developed_ = false;  // developed_hook_ stays for the block's axis words (G07.1 C0)
   if (rolls_) wrap_rotary();
@@ -210,14 +210,14 @@ bool Executor::developed_axis_target(AxisVector& target) {
   const char* mode = d.polar ? "polar coordinate interpolation (G12.1)" : "cylindrical interpolation (G07.1)";
   const char* code = d.polar ? "PS0146" : "PS0176";
   if (rolls_) roll_word_.fill(false);
-  if (corner_on_ || (lathe && motion_ == 1 && (has('I') || has('K') || has('R'))))
+  if (corner_on_ || (lathe && modal_.motion == 1 && (has('I') || has('K') || has('R'))))
     alarm("NC9001", fmt::format("chamfering and corner R in {} mode are not supported yet", mode));
-  if (!d.polar && (motion_ == 2 || motion_ == 3) && (has('I') || has('J') || has('K')))
+  if (!d.polar && (modal_.motion == 2 || modal_.motion == 3) && (has('I') || has('J') || has('K')))
     alarm("PS0022", "in cylindrical interpolation mode (G07.1) an arc is given by its radius R, not by I, J, K");
   bool any = false;
   for (const Cmd& c : cmds_) {
     int a = axis_index(c.letter);
-    bool incremental = incremental_;
+    bool incremental = modal_.incremental;
     if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W' || (c.letter == 'H' && d.rotary == 5))) {
       a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : c.letter == 'W' ? 2 : 5;
       incremental = true;
@@ -245,9 +245,9 @@ bool Executor::developed_axis_target(AxisVector& target) {
     target[slot] = incremental ? target[slot] + v : v;
     any = true;
   }
-  if (any && (motion_ == 0 || motion_ > 3))
+  if (any && (modal_.motion == 0 || modal_.motion > 3))
     alarm(code, fmt::format("{} mode moves by G01, G02 or G03 only (the modal motion is {})", mode,
-                            motion_ == 0 ? "G00" : "a lathe cycle or threading"));
+                            modal_.motion == 0 ? "G00" : "a lathe cycle or threading"));
   return any;
 }
 

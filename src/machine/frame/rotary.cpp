@@ -38,7 +38,7 @@ void Executor::roll_over(AxisVector& target) const {
     if (!roll_word_[a]) continue;
     const RotaryAxis& r = profile_.rotary[a];
     const double turn = r.per_turn;
-    const double from = within_turn(pos_[a], turn);
+    const double from = within_turn(coords_.pos[a], turn);
     const double v = roll_value_[a];
     double travel;
     if (r.by_sign) {
@@ -49,13 +49,13 @@ void Executor::roll_over(AxisVector& target) const {
       if (travel > turn / 2) travel -= turn;
       else if (travel <= -turn / 2) travel += turn;
     }
-    target[a] = pos_[a] + travel;
+    target[a] = coords_.pos[a] + travel;
   }
 }
 
 void Executor::wrap_rotary() {
   for (int a = 3; a < kAxes; ++a)
-    if (rotary_[a] && profile_.rotary[a].roll_over) pos_[a] = within_turn(pos_[a], profile_.rotary[a].per_turn);
+    if (rotary_[a] && profile_.rotary[a].roll_over) coords_.pos[a] = within_turn(coords_.pos[a], profile_.rotary[a].per_turn);
 }
 
 // The length F applies to in a move that turns A, B or C: FANUC takes the vector of every axis,
@@ -63,7 +63,7 @@ void Executor::wrap_rotary() {
 double Executor::combined_length(const AxisVector& from, const AxisVector& to, double linear) const {
   double sq = linear * linear;
   for (int a = 3; a < kAxes; ++a) {
-    const double d = (to[a] - from[a]) * (rotary_[a] && inch_ ? 25.4 : 1.0);
+    const double d = (to[a] - from[a]) * (rotary_[a] && modal_.inch ? 25.4 : 1.0);
     sq += d * d;
   }
   return std::sqrt(sq);

@@ -2,7 +2,7 @@
 // them: polar coordinate command (G15/G16, group 17), programmable mirror image (G50.1/G51.1,
 // group 22), scaling (G50/G51, group 11) and coordinate system rotation (G68/G69, group 16).
 // A programmed point goes through polar -> mirror -> scaling -> rotation (transforms.hpp); cutter
-// compensation then offsets the transformed path. The machine's position (pos_) is always the
+// compensation then offsets the transformed path. The machine's position (coords_.pos) is always the
 // transformed one; the programmed position is its inverse image.
 #include <fmt/format.h>
 
@@ -70,7 +70,7 @@ void Executor::transform_codes(std::vector<int>& one_shot) {
                                   g_name(g)),
             column_of(g));
   };
-  if (given(150)) polar_ = false;
+  if (given(150)) modal_.polar = false;
   if (given(690) && xf_.rotating) {
     xf_.rotating = false;
     xf_rotation_deg_ = 0;
@@ -97,7 +97,7 @@ void Executor::transform_codes(std::vector<int>& one_shot) {
     if (!any) xf_.mirrored.fill(false);
     one_shot.push_back(501);
   }
-  if (given(160)) polar_ = true;
+  if (given(160)) modal_.polar = true;
   if (given(511)) {
     if (xf_.rotating || xf_.scaling) order(511, xf_.rotating ? "coordinate system rotation (G68)" : "scaling (G51)");
     not_in_compensation(511);
@@ -150,7 +150,7 @@ void Executor::transform_codes(std::vector<int>& one_shot) {
         if (has_axis_[a]) factor[a] = p;
     }
     // the centre: X Y Z as absolute coordinates (through the mirror), else the tool's position
-    AxisVector centre = pos_;
+    AxisVector centre = coords_.pos;
     for (int a = 0; a < 3; ++a)
       if (has_axis_[a] && has(kAxisLetters[a])) {
         const double c = dimension(word(kAxisLetters[a]));
@@ -166,13 +166,13 @@ void Executor::transform_codes(std::vector<int>& one_shot) {
       alarm("PS0010", "G68 in cutter compensation mode with scaling on: the manual says to give G68 before "
                       "G41/G42 (it names no alarm; ncurve stops here)",
             column_of(680));
-    const PlaneAxes pa = plane_axes(plane_);
+    const PlaneAxes pa = plane_axes(modal_.plane);
     double angle = profile_.rotation_default_deg;  // No.5410 when R is left out
     if (has('R')) {
       const Cmd& r = word('R');
       const double deg = r.literal && !r.decimal_point && !profile_.decimal_calculator ? r.value * profile_.increment
                                                                                       : r.value;
-      const bool add = profile_.rotation_angle_by_g90_g91 && incremental_;  // No.5400#0 RIN
+      const bool add = profile_.rotation_angle_by_g90_g91 && modal_.incremental;  // No.5400#0 RIN
       angle = add ? xf_rotation_deg_ + deg : deg;
     }
     xf_rotation_deg_ = angle;
@@ -182,18 +182,18 @@ void Executor::transform_codes(std::vector<int>& one_shot) {
     for (int a : {pa.p, pa.q})
       if (has(kAxisLetters[a])) given_centre[a] = dimension(word(kAxisLetters[a]));
     const AxisVector mapped = xf_.mirror_and_scale(given_centre);
-    xf_.centre = {has(kAxisLetters[pa.p]) ? mapped[pa.p] : pos_[pa.p],
-                  has(kAxisLetters[pa.q]) ? mapped[pa.q] : pos_[pa.q]};
+    xf_.centre = {has(kAxisLetters[pa.p]) ? mapped[pa.p] : coords_.pos[pa.p],
+                  has(kAxisLetters[pa.q]) ? mapped[pa.q] : coords_.pos[pa.q]};
     // a mirror on one axis of the plane reverses the direction of rotation
     xf_.angle_deg = xf_.mirrored[pa.p] != xf_.mirrored[pa.q] ? -angle : angle;
     xf_.p = pa.p;
     xf_.q = pa.q;
     xf_.rotating = true;
-    xf_rotation_plane_ = plane_;
+    xf_rotation_plane_ = modal_.plane;
     xf_cancelled_ = false;
     one_shot.push_back(680);
   }
-  xf_on_ = polar_ || xf_.active();
+  xf_on_ = modal_.polar || xf_.active();
   xf_hook_ = xf_on_ || xf_cancelled_;
 }
 
@@ -210,7 +210,7 @@ bool Executor::transformed_axis_target(AxisVector& target) {
   if (!xf_on_) {  // only the move after G69 is still to be checked
     const bool any = axis_target(target);
     if (any) {
-      if (incremental_)
+      if (modal_.incremental)
         warn("NC2012", "an incremental move right after G69: the manual says the first move after G69 must be "
                        "absolute (the control does not move correctly); ncurve moves by the increment from the "
                        "tool's position");
@@ -226,14 +226,14 @@ bool Executor::transformed_axis_target(AxisVector& target) {
   const AxisVector start = prog;
   const bool any = axis_target(prog);
   const bool g92 = std::find(g_codes_.begin(), g_codes_.end(), 920) != g_codes_.end();
-  if (polar_ && !g92) {  // G16: the plane's first axis word is the radius, the second the angle
-    const PlaneAxes pa = plane_axes(plane_);
+  if (modal_.polar && !g92) {  // G16: the plane's first axis word is the radius, the second the angle
+    const PlaneAxes pa = plane_axes(modal_.plane);
     const char rl = kAxisLetters[pa.p], al = kAxisLetters[pa.q];
     std::optional<double> radius, angle;
     if (has(rl)) radius = dimension(word(rl));
     if (has(al)) angle = dimension_raw(word(al));  // degrees: no inch conversion
     if (radius || angle) {
-      const V2 at = polar_point({start[pa.p], start[pa.q]}, radius, angle, incremental_);
+      const V2 at = polar_point({start[pa.p], start[pa.q]}, radius, angle, modal_.incremental);
       prog[pa.p] = at.x;
       prog[pa.q] = at.y;
     }
@@ -254,16 +254,16 @@ bool Executor::transformed_axis_target(AxisVector& target) {
 // the end point off the circle, PS0020 as for any such arc). A mirror (or a negative factor) on
 // one axis of the plane reverses the arc. In G16 mode an arc is given by R.
 bool Executor::transform_arc_words() {
-  const PlaneAxes pa = plane_axes(plane_);
-  if (polar_ && !has('R') && (has(pa.ip) || has(pa.iq)))
+  const PlaneAxes pa = plane_axes(modal_.plane);
+  if (modal_.polar && !has('R') && (has(pa.ip) || has(pa.iq)))
     alarm("PS0022", fmt::format("in polar coordinate mode (G16) give the arc's radius with R: {} and {} are not "
                                 "read as polar coordinates",
                                 pa.ip, pa.iq));
   xf_arc_ = xf_.active();
   if (!xf_arc_) return false;
-  if (xf_.rotating && plane_ != xf_rotation_plane_)
+  if (xf_.rotating && modal_.plane != xf_rotation_plane_)
     alarm("PS0144", fmt::format("an arc in the G{} plane in coordinate system rotation mode of the G{} plane",
-                                plane_, xf_rotation_plane_));
+                                modal_.plane, xf_rotation_plane_));
   if (has('R')) xf_arc_r_ = dimension(word('R')) * xf_.radius_factor(pa.p, pa.q);
   AxisVector offset{};
   if (has(pa.ip)) offset[pa.p] = dimension(word(pa.ip));
@@ -282,15 +282,15 @@ void Executor::transformed_cycle_levels(int axis, double& r_level, double& z_lev
     return (forward ? xf_.apply(v) : xf_.invert(v))[axis];
   };
   const double initial = z_of(cycle_initial_[axis], false);
-  const double r = !cycle_r_ ? initial : incremental_ ? initial + *cycle_r_ : *cycle_r_;  // cleared: 0 incremental
-  const double z = !cycle_z_ ? r : incremental_ ? r + *cycle_z_ : *cycle_z_;
+  const double r = !cycle_r_ ? initial : modal_.incremental ? initial + *cycle_r_ : *cycle_r_;  // cleared: 0 incremental
+  const double z = !cycle_z_ ? r : modal_.incremental ? r + *cycle_z_ : *cycle_z_;
   r_level = z_of(r, true);
   z_level = z_of(z, true);
 }
 
 V2 Executor::transformed_plane_vector(V2 v) const {
   if (!xf_.active()) return v;
-  const PlaneAxes pa = plane_axes(plane_);
+  const PlaneAxes pa = plane_axes(modal_.plane);
   AxisVector w{};
   w[pa.p] = v.x;
   w[pa.q] = v.y;
@@ -298,6 +298,6 @@ V2 Executor::transformed_plane_vector(V2 v) const {
   return {w[pa.p], w[pa.q]};
 }
 
-AxisVector Executor::program_position() const { return xf_.active() ? xf_.invert(pos_) : pos_; }
+AxisVector Executor::program_position() const { return xf_.active() ? xf_.invert(coords_.pos) : coords_.pos; }
 
 }  // namespace ncurve::machine

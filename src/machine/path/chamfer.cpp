@@ -18,7 +18,7 @@ const char* axis_name(int a) { return a == 0 ? "X" : a == 1 ? "Y" : a == 2 ? "Z"
 
 void Executor::arm_corner(const AxisVector& target) {
   const bool lathe = profile_.lathe();
-  const PlaneAxes pa = plane_axes(plane_);
+  const PlaneAxes pa = plane_axes(modal_.plane);
   const Cmd* comma = nullptr;  // ,C or ,R
   for (const Cmd& c : comma_cmds_) {
     if (c.letter == 'a')
@@ -32,7 +32,7 @@ void Executor::arm_corner(const AxisVector& target) {
   const Cmd* c_word = ccr && has('C') && !has_axis_[5] ? &word('C') : nullptr;
   std::optional<CornerRequest> req;
   const Cmd* given = comma;
-  if (lathe && motion_ == 1) {
+  if (lathe && modal_.motion == 1) {
     if (ccr && (has(pa.ip) || has(pa.iq)))
       alarm("PS0009", fmt::format("address {} in a G01 block: with No.3405#4 CCR = 1 chamfering takes C",
                                   has(pa.ip) ? pa.ip : pa.iq),
@@ -54,7 +54,7 @@ void Executor::arm_corner(const AxisVector& target) {
       r.column = square->column;
       const double v = dimension(*square);
       r.amount = std::fabs(v);
-      const double dp = target[pa.p] - pos_[pa.p], dq = target[pa.q] - pos_[pa.q];
+      const double dp = target[pa.p] - coords_.pos[pa.p], dq = target[pa.q] - coords_.pos[pa.q];
       const bool along_p = std::fabs(dp) > kTol, along_q = std::fabs(dq) > kTol;
       if (along_p && along_q && !ccr)
         alarm("PS0054", fmt::format("no taper allowed after CHF/CNR: {} of chamfering or corner R needs a block "
@@ -76,10 +76,10 @@ void Executor::arm_corner(const AxisVector& target) {
                                       "{} the chamfer is {}",
                                       square->letter, axis_name(moving), axis_name(moving), wants),
                 square->column);
-        if (std::fabs(target[moving] - pos_[moving]) < r.amount - kTol)
+        if (std::fabs(target[moving] - coords_.pos[moving]) < r.amount - kTol)
           alarm("PS0055", fmt::format("missing move value in CHF/CNR: the block moves {:g} mm along {}, less than "
                                       "the {} {:g} mm",
-                                      std::fabs(target[moving] - pos_[moving]), axis_name(moving),
+                                      std::fabs(target[moving] - coords_.pos[moving]), axis_name(moving),
                                       r.kind == corner::Kind::round ? "corner R" : "chamfer", r.amount),
                 square->column);
       }
@@ -88,7 +88,7 @@ void Executor::arm_corner(const AxisVector& target) {
   }
   if (!req && !comma && c_word) given = c_word;  // C of direct drawing dimension programming (CCR = 1)
   if (!req && given) {
-    if (motion_ == 0)
+    if (modal_.motion == 0)
       alarm("PS0052", "chamfering and corner R are commanded at the end of a G01, G02 or G03 block; this block is "
                       "G00",
             given->column);
@@ -99,11 +99,11 @@ void Executor::arm_corner(const AxisVector& target) {
     req = r;
   }
   if (!req || req->amount <= 0) return;  // ,C0: nothing to insert
-  if (comp_side_ != 0 && !comp_->offset_mode())
+  if (modal_.comp_side != 0 && !comp_->offset_mode())
     alarm("PS0039", fmt::format("CHF/CNR not allowed in G41, G42: chamfering or corner R in the start-up block of {}",
                                 lathe ? "tool-nose radius compensation" : "cutter compensation"),
           req->column);
-  if (comp_side_ == 0 && comp_->offset_mode())
+  if (modal_.comp_side == 0 && comp_->offset_mode())
     alarm("PS0039", fmt::format("CHF/CNR not allowed in G41, G42: chamfering or corner R in the block that cancels {} "
                                 "(G40)",
                                 lathe ? "tool-nose radius compensation" : "cutter compensation"),

@@ -11,6 +11,7 @@
 
 #include "geom/plane.hpp"
 #include "machine/move.hpp"
+#include "machine/profile.hpp"
 
 namespace ncurve::machine {
 
@@ -21,15 +22,6 @@ struct CompensationSettings {
   bool interference_check = true;  // No.5008#1 CNC = 0
   double corner_vector_limit = 0;  // No.5010, mm: an outer-corner vector shorter than this is left out
 };
-
-// Where the imaginary tool tip of tip number 0..9 is from the nose centre, in nose radii along X
-// and Z. The numbers follow the axes' directions: with +X up and +Z right they sit 2 6 1 / 7 0 5 /
-// 3 8 4 about the centre (an outside turning tool is 3 on either side of the spindle); 0 and 9
-// are the centre itself.
-struct TipDirection {
-  int x = 0, z = 0;
-};
-TipDirection tip_direction(int tip);
 
 using geom::V2;  // a point of the offset plane
 

@@ -102,12 +102,10 @@ StrokeLimits StrokeLimits::power_on(const MachineProfile& p, const std::array<bo
   }
   l.area_axes = basic_axes(has_axis);
   l.area_outside = p.stroke2_outside;
-  l.switch_area(!p.stroke2_off_at_power_on);
   return l;
 }
 
-void StrokeLimits::switch_area(bool on) {
-  area_on = on;
+void StrokeLimits::update(bool area_on) {
   bool area = area_outside;  // outside forbidden: even an empty area forbids everything
   if (!area) {  // inside forbidden: only an area with an inside can be entered
     area = true;
@@ -152,7 +150,7 @@ void StrokeCheck::check(const Move& m) const {
                                  "coordinates), past the limit {:.4f} (No.1321)",
                                  kAxisLetters[a], kAxisLetters[a], shown(a, lo[a]), shown(a, l.limit1_minus[a])));
   }
-  if (!l.area_on) return;
+  if (!frame_.area_check_on()) return;
   const unsigned mask = l.area_axes;
   auto area = [&] {
     std::string s;

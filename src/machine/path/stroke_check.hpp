@@ -8,20 +8,19 @@
 
 namespace ncurve::machine {
 
-// The limits in force, machine coordinates (mm, lathe X a radius). The control keeps them (G22 and
-// G23 change the area); the stage reads them.
+// The limits, machine coordinates (mm, lathe X a radius). The control keeps them (G22 sets the
+// area; whether check 2 is on is its modal state); the stage reads them.
 struct StrokeLimits {
   AxisVector limit1_plus{}, limit1_minus{};  // stored stroke limit 1: +-infinity on an axis without one
   AxisVector area_plus{}, area_minus{};      // the area of check 2, plus >= minus
   unsigned area_axes = 0;                    // the axes check 2 works on (bits of X, Y, Z)
   bool area_outside = false;                 // No.1300#0 OUT = 1: the outside of the area is forbidden
-  bool area_on = true;                       // G22 (check 2 on), or G23
   bool in_force = false;                     // some limit is: moves are checked
 
-  // The profile's limits at power-on, on the axes the machine has.
+  // The profile's limits at power-on, on the axes the machine has (update() says whether in force).
   static StrokeLimits power_on(const MachineProfile& p, const std::array<bool, kAxes>& has_axis);
-  // G22 (on, its area set first) or G23.
-  void switch_area(bool on);
+  // in_force, with check 2 on (G22, its area set first) or off (G23).
+  void update(bool area_on);
 };
 
 // What the check reads of the control's state.
@@ -29,6 +28,7 @@ class StrokeFrame {
 public:
   virtual AxisVector machine_shift() const = 0;  // machine coordinates = work coordinates + this
   virtual double program_units(int axis, double mm) const = 0;  // a position as the messages show it
+  virtual bool area_check_on() const = 0;  // G22: check 2 on
 
 protected:
   ~StrokeFrame() = default;

@@ -10,7 +10,8 @@ function states the rules it exercises and the numbers a reader can check by
 hand.
 
 Run:  python3 tests/programs/derive/derive.py      (rewrites the programs and
-      their NAME.expected.moves / NAME.expected.txt / NAME.toml beside them)
+      their NAME.expected.moves / NAME.expected.txt / NAME.toml beside them, in
+      tests/programs/compensation/ for cc_* and tests/programs/nose/ for nt_*)
 
 Conventions of the expected files (repeated in each file's '#' header):
   * one line per move the control makes, in order:
@@ -31,7 +32,12 @@ import os
 import re
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-OUT = os.path.dirname(HERE)                      # tests/programs
+PROGRAMS = os.path.dirname(HERE)                 # tests/programs
+FOLDERS = {'cc_': 'compensation', 'nt_': 'nose'}  # cutter compensation (mill), tool nose radius (lathe)
+
+def out(name, ext):
+    """tests/programs/FOLDER/NAME.EXT: the folder of the case's feature, by its name's prefix"""
+    return os.path.join(PROGRAMS, FOLDERS[name[:3]], name + ext)
 LATHE_PROFILE = os.path.join(HERE, '..', '..', '..', 'profiles', 'fanuc-lathe.toml')
 EPS = 1e-9
 
@@ -421,20 +427,20 @@ def fmt(v):
 
 def write_case(name, nc_lines, header, machine, params=None, note=''):
     params = params or {}
-    path = os.path.join(OUT, name + '.nc')
+    path = out(name, '.nc')
     with open(path, 'w') as f:
         f.write('\n'.join(nc_lines) + '\n')
     for ext in ('.expected.moves', '.expected.txt'):
-        if os.path.exists(os.path.join(OUT, name + ext)):
-            os.remove(os.path.join(OUT, name + ext))
+        if os.path.exists(out(name, ext)):
+            os.remove(out(name, ext))
     try:
         moves, _ = run(nc_lines, machine, params)
     except Alarm as a:
         b = a.blk
-        with open(os.path.join(OUT, name + '.expected.txt'), 'w') as f:
+        with open(out(name, '.expected.txt'), 'w') as f:
             f.write('exit 1\n%s\n%s.nc:%d:1\n%s\n' % (a.code, name, b.line, b.text))
         return ('alarm', a.code, b.line)
-    with open(os.path.join(OUT, name + '.expected.moves'), 'w') as f:
+    with open(out(name, '.expected.moves'), 'w') as f:
         for h in header:
             f.write('# ' + h + '\n')
         if machine['type'] == 'lathe':
@@ -454,7 +460,7 @@ def write_lathe_profile(name, r, tip):
     text = re.sub(r'^"1" = \{[^\n]*\}', '"1" = { x = 0.0, z = 0.0, r = %s, tip = %d }' % (r, tip),
                   text, count=1, flags=re.M)
     text = text.replace('# FANUC 0i-TF 2-axis lathe', '# %s: FANUC 0i-TF 2-axis lathe' % name, 1)
-    with open(os.path.join(OUT, name + '.toml'), 'w') as f:
+    with open(out(name, '.toml'), 'w') as f:
         f.write(text)
 
 
@@ -471,12 +477,16 @@ def case(fn):
     CASES.append(fn)
     return fn
 
+def comment(text):
+    """A comment line: a comment ends at its first ')', so an aside "(X)" in the text is written "- X"."""
+    return '(%s)' % text.replace('(', '- ').replace(')', '')
+
 def mill(name, title, rule, body, param=None):
     lines = []
     if param:
         lines.append('(PARAM %s)' % param)
-    lines.append('(%s: %s)' % (name.upper(), title))
-    lines.append('(RULE: %s)' % rule)
+    lines.append(comment('%s: %s' % (name.upper(), title)))
+    lines.append(comment('RULE: %s' % rule))
     lines.append('G10 L11 P1 R5.')
     lines += body
     return lines
@@ -881,7 +891,7 @@ def cc_alarm_ps0037():
 # tip = centre + tip vector (R-TIP): tip 3 = (-r in X, -r in Z), tip 2 =
 # (+r X, -r Z), tip 8 = (-r X, 0).
 def lathe(name, title, rule, body):
-    return ['(%s: %s)' % (name.upper(), title), '(RULE: %s)' % rule, 'T0101'] + body
+    return [comment('%s: %s' % (name.upper(), title)), comment('RULE: %s' % rule), 'T0101'] + body
 
 OD_CHAMFER = ['G99 G40 G00 X16. Z5.', 'G42 G01 Z0. F0.1', 'X20. Z-2.', 'Z-15.', 'X30.', 'G40 G00 X40. Z5.', 'M30']
 OD_TAPER = ['G99 G40 G00 X16. Z5.', 'G42 G01 Z0. F0.1', 'X24. Z-12.', 'Z-20.', 'X32.', 'G40 G00 X40. Z5.', 'M30']
@@ -958,7 +968,7 @@ if __name__ == '__main__':
 def selfcheck():
     """Closed-form values worked out on paper, compared with the files."""
     def move(name, idx):
-        with open(os.path.join(OUT, name + '.expected.moves')) as f:
+        with open(out(name, '.expected.moves')) as f:
             return [l.split() for l in f if not l.startswith('#')][idx]
     # start-up type B obtuse: offset line of (10,-15)->(0,0) meets x = -5
     d = unit((-10, 15)); p = mul(left(d), 5)
