@@ -53,6 +53,28 @@ std::vector<Executor::Arg> Executor::arguments(bool skip_p_l, int skip_g, int sk
 }
 
 void Executor::exec_nc(const Block& b) {
+  if (!read_words(b)) return;
+  SubprogramCall sub;
+  if (macro_call_block(b, sub)) return;  // G65, G66 and custom G/M codes take the whole block
+  if (word_check_ || g_codes_.size() > 1) check_block_words();
+  std::vector<int> one_shot;
+  handle_g_codes(one_shot);
+  if (rigid_pending_ || std::ranges::find(m_codes_, 29) != m_codes_.end()) rigid_tapping_words();
+  word_settings(one_shot, sub);
+  const bool moved = block_motion(one_shot);
+  if (block_m_codes(b, sub)) return;  // M98, M99, M02, M30 leave the block
+  if (sub.program != 0) {
+    Frame f;
+    f.kind = Frame::subprogram;
+    f.custom = true;
+    call_program(sub.program, f, sub.column);
+    return;
+  }
+  if (moved && !modal_calls_.empty()) modal_call_after_move(b);
+}
+
+// The block's words, values evaluated; false for a block with none.
+bool Executor::read_words(const Block& b) {
   cmds_.clear();
   have_.fill(false);
   g_codes_.clear();
@@ -85,20 +107,20 @@ void Executor::exec_nc(const Block& b) {
     slot_[k] = static_cast<std::uint8_t>(cmds_.size());
     cmds_.push_back(c);
   }
-  if (cmds_.empty()) return;
+  return !cmds_.empty();
+}
 
-  const Frame& here = frames_.back();
-  // A subprogram called by an M code (No.6071..6079) or the T code (No.6001#5): made after the block
-  // as M98 is; 0 for none.
-  int sub_call = 0, sub_call_m = -1;
-  std::uint16_t sub_call_column = 0;
+// G65, G66/G67 and the custom macro calls by G and M codes (No.6050.., No.6080..): true when the
+// block is a call, which takes the whole block. Notes in `sub` a subprogram an M code (No.6071..6079)
+// calls, made after the block as M98 is.
+bool Executor::macro_call_block(const Block& b, SubprogramCall& sub) {
   // Macro calls take the whole block.
   for (int g : g_codes_) {
     if (g == 650 || g == 660) {
       if (!has('P')) alarm("PS0076", fmt::format("G{} needs P (the program number)", g / 10), b.column);
       int number = integer(word('P'), "P");
       int repeat = has('L') ? integer(word('L'), "L") : 1;
-      if (repeat < 1) return;  // L0: no call
+      if (repeat < 1) return true;  // L0: no call
       std::vector<Arg> args = arguments(true, g, -1);
       if (g == 650) {
         call_macro(number, args, repeat, false, false, b.column);
@@ -106,45 +128,44 @@ void Executor::exec_nc(const Block& b) {
         modal_.modal_call = true;
         modal_calls_.push_back({number, repeat, std::move(args)});
       }
-      return;
+      return true;
     }
     if (g == 670) {  // cancels the latest G66; the one before it, if any, is in force again
       if (!modal_calls_.empty()) modal_calls_.pop_back();
       modal_.modal_call = !modal_calls_.empty();
-      if (cmds_.size() == 1) return;
+      if (cmds_.size() == 1) return true;
     }
   }
-  if (!here.custom) {
+  if (!frames_.back().custom) {
     for (int g : g_codes_)
       for (int i = 0; i < 10; ++i)
         if (profile_.g_code_macros[i] != 0 && g == profile_.g_code_macros[i] * 10) {
           std::vector<Arg> args = arguments(false, g, -1);
           call_macro(9010 + i, args, 1, true, false, b.column);
-          return;
+          return true;
         }
     for (int m : m_codes_) {
       for (int i = 0; i < 10; ++i)
         if (profile_.m_code_macros[i] != 0 && m == profile_.m_code_macros[i]) {
           std::vector<Arg> args = arguments(false, -1, m);
           call_macro(9020 + i, args, 1, true, false, b.column);
-          return;
+          return true;
         }
       // No.6071..6079: a subprogram call as M98 makes it, so after the block's move and its other
       // M codes; the calling M code is not given out (below)
       for (int i = 0; i < 9; ++i)
-        if (sub_call == 0 && profile_.m_code_subprograms[i] != 0 && m == profile_.m_code_subprograms[i]) {
-          sub_call = 9001 + i;
-          sub_call_m = m;
-          sub_call_column = b.column;
+        if (sub.program == 0 && profile_.m_code_subprograms[i] != 0 && m == profile_.m_code_subprograms[i]) {
+          sub.program = 9001 + i;
+          sub.m = m;
+          sub.column = b.column;
         }
     }
   }
+  return false;
+}
 
-  if (word_check_ || g_codes_.size() > 1) check_block_words();
-  std::vector<int> one_shot;
-  handle_g_codes(one_shot);
-  if (rigid_pending_ || std::ranges::find(m_codes_, 29) != m_codes_.end()) rigid_tapping_words();
-
+// F, S, H, D and T of the block (a T code with No.6001#5 calls O9000 after the block, in `sub`).
+void Executor::word_settings(const std::vector<int>& one_shot, SubprogramCall& sub) {
   if (has('F')) {
     double f = word('F').value;
     if (f < 0) alarm("PS0006", fmt::format("F{}: a feed rate takes no minus sign", f), word('F').column);
@@ -165,11 +186,11 @@ void Executor::exec_nc(const Block& b) {
   if (has('D') && !(profile_.lathe() && profile_.series10_format)) d_ = integer(word('D'), "D");  // else a cycle's depth
   if (has('T')) {
     int t = integer(word('T'), "T");
-    if (profile_.t_code_calls_o9000 && !here.custom) {  // O9000 does the tool's work
+    if (profile_.t_code_calls_o9000 && !frames_.back().custom) {  // O9000 does the tool's work
       write_var(149, Value::of(t), word('T').column);
-      if (sub_call == 0) {
-        sub_call = 9000;
-        sub_call_column = word('T').column;
+      if (sub.program == 0) {
+        sub.program = 9000;
+        sub.column = word('T').column;
       }
     } else {
       tool_ = t;
@@ -179,7 +200,10 @@ void Executor::exec_nc(const Block& b) {
       }
     }
   }
+}
 
+// The block's motion: its one-shot codes' actions, a canned cycle's holes, or its axis words' move.
+bool Executor::block_motion(const std::vector<int>& one_shot) {
   if (position_offset_ != 0) [[unlikely]] check_position_offset(one_shot);
   bool moved = false;
   if (!one_shot.empty()) {
@@ -201,13 +225,16 @@ void Executor::exec_nc(const Block& b) {
       moved = true;
     }
   }
+  return moved;
+}
 
-  // M codes act after the motion of their block.
+// The block's M codes, after its motion; true when one left the block (a call, a return, the end).
+bool Executor::block_m_codes(const Block& b, const SubprogramCall& sub) {
   for (const Cmd& c : cmds_) {
     if (c.letter != 'M') continue;
     int m = integer(c, "M");
     last_m_ = m;
-    if (m == sub_call_m) continue;  // calls its subprogram below, as M98 does; not given out
+    if (m == sub.m) continue;  // calls its subprogram below, as M98 does; not given out
     if (m == cycle_clamp_m_) [[unlikely]] {  // given out by the lathe's drilling cycle at each hole
       cycle_clamp_m_ = -1;
       continue;
@@ -225,7 +252,7 @@ void Executor::exec_nc(const Block& b) {
           f.kind = Frame::subprogram;
           f.repeat = repeat - 1;
           call_program(prog_->number, f, word('Q').column, static_cast<std::int32_t>(it->second));
-          return;
+          return true;
         }
         if (!has('P')) alarm("PS0076", "M98 needs P (the subprogram number) or Q (a sequence number of this program)", b.column);
         const Cmd& p = word('P');
@@ -241,7 +268,7 @@ void Executor::exec_nc(const Block& b) {
         f.kind = Frame::subprogram;
         f.repeat = repeat - 1;
         call_program(number, f, p.column);
-        return;
+        return true;
       }
       case 99: {
         std::optional<int> seq;
@@ -257,35 +284,28 @@ void Executor::exec_nc(const Block& b) {
           }
           last_back_jump_ = &b;
           last_back_jump_prog_ = prog_;
-          return;
+          return true;
         }
         return_from_program(seq, b.column);
-        return;
+        return true;
       }
-      case 2: case 30: end_program(m); return;
+      case 2: case 30: end_program(m); return true;
       default:
         if (!cycle_m_done_) m_code_event(m);  // else made at the hole's positioning (canned_cycles.cpp)
         break;
     }
   }
+  return false;
+}
 
-  if (sub_call != 0) {
-    Frame f;
-    f.kind = Frame::subprogram;
-    f.custom = true;
-    call_program(sub_call, f, sub_call_column);
-    return;
-  }
-
-  // After a move, the latest G66 in force; in a macro a G66 called, the G66 before that one (the
-  // manual's nesting of modal calls: the inner macro's moves call the outer macro).
-  if (moved && !modal_calls_.empty()) {
-    const std::size_t n = std::min(modal_calls_.size(), here.modal_limit);
-    if (n > 0) {
-      const ModalCall call = modal_calls_[n - 1];  // a copy: the macro may give G66 or G67
-      modal_limit_next_ = n - 1;
-      call_macro(call.program, call.args, call.repeat, false, true, b.column);
-    }
+// After a move, the latest G66 in force; in a macro a G66 called, the G66 before that one (the
+// manual's nesting of modal calls: the inner macro's moves call the outer macro).
+void Executor::modal_call_after_move(const Block& b) {
+  const std::size_t n = std::min(modal_calls_.size(), frames_.back().modal_limit);
+  if (n > 0) {
+    const ModalCall call = modal_calls_[n - 1];  // a copy: the macro may give G66 or G67
+    modal_limit_next_ = n - 1;
+    call_macro(call.program, call.args, call.repeat, false, true, b.column);
   }
 }
 

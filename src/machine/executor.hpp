@@ -89,7 +89,18 @@ private:
   void check_runaway();  // --max-steps and --max-seconds
   void count_block_move();  // a block's moves past its first count as steps
   std::uint64_t steps() const;
+  // an NC block in FANUC's order (dispatch.cpp)
+  struct SubprogramCall {  // a subprogram an M or T code calls after its block, as M98 does
+    int program = 0, m = -1;
+    std::uint16_t column = 0;
+  };
   void exec_nc(const nc::Block& b);
+  bool read_words(const nc::Block& b);
+  bool macro_call_block(const nc::Block& b, SubprogramCall& sub);
+  void word_settings(const std::vector<int>& one_shot, SubprogramCall& sub);
+  bool block_motion(const std::vector<int>& one_shot);
+  bool block_m_codes(const nc::Block& b, const SubprogramCall& sub);
+  void modal_call_after_move(const nc::Block& b);
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
   const std::vector<std::int32_t>& loops_of(const nc::Program* p);
@@ -262,7 +273,7 @@ private:
   // ---- end of lathe cycles ----
 
   // ---- reference position moves, single direction positioning, skip and stored stroke checks
-  // (reference_moves.cpp, single_direction.cpp, skip.cpp, stroke_check.cpp) ----
+  // (codes/: reference_moves.cpp, single_direction.cpp, skip.cpp, stroke_area.cpp) ----
   unsigned block_axes() const;  // a bit per axis the block names (U, V, W too on system A)
   bool names_plane_axis() const;  // of the offset plane
   void remember_intermediate(const AxisVector& mid);  // G28/G30/G30.1: the point G29 goes through
@@ -270,7 +281,7 @@ private:
   AxisVector intermediate_{};
   unsigned intermediate_axes_ = 0;        // axes G28/G30/G30.1 have given an intermediate point
   std::optional<AxisVector> skip_position_;  // #5061..: where the last G31 ended
-  void init_stroke_check();               // stroke_area.cpp
+  void init_stroke_check();               // the profile's limits at power-on
   void stroke_area_switch(bool on);       // G22 / G23
   bool area_check_on() const override { return modal_.stroke2_on; }  // for path_stroke_
   StrokeLimits stroke_;                   // stored stroke limits (path_stroke_ checks the moves)

@@ -9,7 +9,7 @@
 
 namespace ncurve::machine {
 
-// The actions of the codes that have one (g_actions.cpp unless a code has a file of its own).
+// The actions of the codes that have one (g_actions.cpp unless a code has a file of its own in codes/).
 namespace actions {
 bool dwell(Executor&, int);
 bool data_setting(Executor&, int);
@@ -24,7 +24,7 @@ bool single_direction(Executor&, int);
 bool stroke_area(Executor&, int);
 bool repetitive_cycle(Executor&, int);
 bool multiple_threading(Executor&, int);
-bool tool_retract(Executor&, int);  // tool_retract.cpp
+bool tool_retract(Executor&, int);  // codes/tool_retract.cpp
 }  // namespace actions
 
 namespace {

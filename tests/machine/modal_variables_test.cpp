@@ -233,3 +233,27 @@ TEST(ModalVariables, EveryCodeOfEveryGroupOnLatheSystemB) {
   expect_all(with_c(lathe('B')), "G00 X40. Z5.\n", kLatheBReads);
   expect_table_covered(machine::kLatheB, kLatheBReads);
 }
+
+// #4107..#4130: the words in force (the 30i-B table of modal information other than G codes):
+// D, F, H, the last M, the last sequence number N, the program number O, S, T, and P of G54.1.
+TEST(ModalVariables, WordsInForceOnTheMill) {
+  auto r = run("O1234\nN10 G90 G54.1 P3 G00 X0 Y0 S1200 M03 T5\nN20 G43 H2 D4 G01 X1. F250.\nN30 M08\n"
+               "#100=#4107\n#101=#4109\n#102=#4111\n#103=#4113\n#104=#4114\n#105=#4115\n#106=#4119\n"
+               "#107=#4120\n#108=#4130\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  const double want[] = {4, 250, 2, 8, 30, 1234, 1200, 5, 3};
+  for (int i = 0; i < 9; ++i) EXPECT_EQ(r.var(100 + i), want[i]) << "#" << 100 + i;
+}
+
+// On a system A lathe F is per revolution under G99 and a T code names tool and offset (T0202).
+TEST(ModalVariables, WordsInForceOnALathe) {
+  machine::MachineProfile p = machine::default_lathe();
+  p.gcode_system = 'A';
+  auto r = run("G99 G00 X40. Z5. S500 M03 T0202\nG01 Z-10. F0.2\n#100=#4109\n#101=#4119\n#102=#4120\n"
+               "#103=#4130\nM30\n", p);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_DOUBLE_EQ(r.var(100), 0.2);
+  EXPECT_EQ(r.var(101), 500);
+  EXPECT_EQ(r.var(102), 202);
+  EXPECT_TRUE(r.vacant(103));  // no G54.1 P in force
+}
