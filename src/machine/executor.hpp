@@ -19,6 +19,12 @@
 #include "machine/modal.hpp"
 #include "machine/path/chamfer.hpp"
 #include "machine/path/compensation.hpp"
+#include "machine/path/compensation_stage.hpp"
+#include "machine/path/corner_stage.hpp"
+#include "machine/path/developed_conversion.hpp"
+#include "machine/path/nose_centre.hpp"
+#include "machine/path/statistics.hpp"
+#include "machine/path/stroke_check.hpp"
 #include "machine/frame/transforms.hpp"
 
 namespace ncurve::machine {
@@ -27,7 +33,7 @@ namespace mrc {
 struct Step;
 }
 
-class Executor {
+class Executor final : private CornerControl, CompensationControl, StrokeFrame, NoseTipSource {
 public:
   Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options = {});
   RunResult run(MoveSink& sink);
@@ -131,11 +137,16 @@ private:
   void motion(const AxisVector& target);
   void linear(MoveKind kind, const AxisVector& target);
   void arc(const AxisVector& target, bool clockwise);
-  void emit(Move& m);
-  void emit_programmed(Move& m);  // emit() past chamfering: compensation, then deliver
-  void deliver(Move& m);  // stats and the sink: the moves as the tool makes them
-  void record(Move& m);   // deliver() past the polar and cylindrical interpolation modes
-  bool compensating() const;
+  void emit(Move& m);  // the block's move or event into the path stages (path_corner_ first)
+  // what the path stages read of the control (their interfaces), and their alarms and warnings
+  OffsetOfMove offset_of_move(const PlaneAxes& plane) const override;  // for path_comp_
+  double rapid_seconds(const AxisVector& from, const AxisVector& to) const override;
+  static CompensationSettings compensation_settings(const MachineProfile& p);
+  AxisVector machine_shift() const override;  // for path_stroke_: origin and tool shift
+  V2 nose_tip_now() const override;  // for path_nose_: the tip's offset, none in G12.1/G07.1
+  static void path_alarm(const Move& at, const std::string& code, const std::string& message);
+  void path_warning(const Move& at, const std::string& code, const std::string& message);
+  bool compensating() const { return path_comp_.active(); }
   void end_of_block_compensation(bool g40, bool g41);
   V2 nose_tip() const;
   double nose_radius() const;
@@ -143,7 +154,6 @@ private:
   void m_code_event(int m);  // spindle, coolant, M06, M00/M01 and other M codes of the block
   void set_origin();
   void warn_mixed_decimal_points(const nc::Program& p);
-  void note_extent(const AxisVector& p);
   double minutes_per_rev(double r0, double r1) const;
   double feed_seconds(double length, double r0, double r1) const;
   double arc_feed_seconds(const Move& m, double planar) const;
@@ -177,12 +187,12 @@ private:
   void high_speed_mode(int g, std::uint16_t column);
   // chamfering and corner R (chamfer.cpp): the block's move waits for the next one
   void arm_corner(const AxisVector& target);  // the block's ,C ,R (lathe: C, I, K, R), before its move
-  bool corner_emit(Move& m);                  // in emit(): holds the move, or cuts the held one's corner
-  void cut_held_corner(Move& next);
   void corner_block_end(bool program_end = false);  // after an NC block: what it left undone is an alarm
-  [[noreturn]] void corner_alarm(const HeldCorner& h, std::string code, std::string message) const;
+  CornerContext corner_context() const override;  // for path_corner_
+  void set_offset_numbers(int d, int lathe_offset) override;
+  void move_held() override;
   std::vector<Cmd> comma_cmds_;  // the block's ,C ,R ,A words (letters c, r, a)
-  CornerState corner_;
+  bool corner_words_read_ = false;  // this block's ,C ,R words were acted on
   bool corner_on_ = false;       // comma words read, a request armed or a move held
 
   // rotary axes (rotary.cpp)
@@ -213,19 +223,10 @@ private:
   // ---- end of coordinate transforms ----
 
   // ---- polar coordinate interpolation G12.1/G13.1 and cylindrical interpolation G07.1
-  // (polar_cylindrical.cpp): moves are made in the programmed plane, deliver() turns them into the
-  // linear and rotary axes' moves ----
-  struct Developed {
-    bool polar = true;         // G12.1, else G07.1
-    int rotary = 5, linear = 0;  // axes (polar: No.5461, No.5460)
-    int slot = 1;              // where the hypothetical (polar) or developed (G07.1) coordinate is kept
-    int spare = -1;            // G07.1: where the real position of the axis at `slot` is kept (-1: held)
-    int p = 0, q = 1;          // the plane's slots
-    int saved_plane = 17, sign = 1;  // sign: the linear axis's side of the centre (polar)
-    double held = 0, radius = 0;     // held: the axis at `slot`, unmoved; radius: G07.1's r
-    double angle0 = 0, angle = 0;    // polar: the rotary axis at G12.1 (deg), the angle from it (rad)
-    AxisVector machine{};            // where the machine is
-    std::uint32_t warned_line = 0;
+  // (polar_cylindrical.cpp): moves are made in the programmed plane, path_developed_ turns them into
+  // the linear and rotary axes' moves ----
+  struct Developed : DevelopedMode {  // the mode's axes (path_developed_ has them too)
+    int saved_plane = 17;
   };
   bool developed_code(int g, std::uint16_t column);  // false: g is not a code of this machine
   void polar_start(std::uint16_t column);
@@ -233,8 +234,6 @@ private:
   void end_developed();
   void check_code_in_developed(int g, std::uint16_t column) const;  // codes the modes forbid
   bool developed_axis_target(AxisVector& target);  // axis_target in the modes
-  void deliver_developed(Move& m);                 // deliver() in the modes
-  void warn_polar_speed(const Move& m, double degrees, double length, double radius);
   std::optional<Developed> dev_;
   bool developed_ = false;       // dev_ has a value
   bool developed_hook_ = false;  // axis words go to developed_axis_target
@@ -276,19 +275,18 @@ private:
   // ---- end of lathe cycles ----
 
   // ---- reference position moves, single direction positioning, skip and stored stroke checks
-  // (reference_moves.cpp, single_direction.cpp, skip.cpp, stroke_check.cpp) ----
+  // (codes/: reference_moves.cpp, single_direction.cpp, skip.cpp, stroke_area.cpp) ----
   unsigned block_axes() const;  // a bit per axis the block names (U, V, W too on system A)
   bool names_plane_axis() const;  // of the offset plane
   void remember_intermediate(const AxisVector& mid);  // G28/G30/G30.1: the point G29 goes through
   void single_direction(const AxisVector& target);
-  void init_stroke_check();
-  void stroke_area_switch(bool on);       // G22 / G23
-  void check_stroke(const Move& m) const; // deliver(): a move past a stored stroke limit is an alarm
   AxisVector intermediate_{};
   unsigned intermediate_axes_ = 0;        // axes G28/G30/G30.1 have given an intermediate point
   std::optional<AxisVector> skip_position_;  // #5061..: where the last G31 ended
-  bool stroke_check_ = false;             // some stored stroke limit is in force
-  AxisVector stroke1_plus_{}, stroke1_minus_{}, stroke2_plus_{}, stroke2_minus_{};
+  void init_stroke_check();               // the profile's limits at power-on
+  void stroke_area_switch(bool on);       // G22 / G23
+  bool area_check_on() const override { return modal_.stroke2_on; }  // for path_stroke_
+  StrokeLimits stroke_;                   // stored stroke limits (path_stroke_ checks the moves)
   // ---- end of reference position moves ----
 
   // variables (variables.cpp)
@@ -300,7 +298,7 @@ private:
   int axis_of_order(int k) const;  // the k-th axis of the profile (0-based) as an axis index, or -1
   int modal_code(int group) const;  // #4001..#4022 (variables.cpp)
   void write_system(int n, nc::Value v, std::uint16_t column);
-  double program_units(int axis, double mm_value) const;  // for position variables
+  double program_units(int axis, double mm_value) const override;  // for position variables
 
   void warn_once(std::string code, std::string message, std::uint16_t column = 0);  // once per block and code
   nc::Span span(std::uint16_t column = 0, std::uint32_t length = 1) const;
@@ -342,9 +340,6 @@ private:
   const ProgramLibrary& library_;
   RunOptions options_;
   nc::EvalOptions eval_options_;
-  MoveSink* sink_ = nullptr;
-  Setup setup_;              // the last one the sink was told (record)
-  bool setup_sent_ = false;
   RunResult result_;
 
   std::vector<Frame> frames_;
@@ -418,10 +413,9 @@ private:
   int lathe_offset_ = 0;     // active lathe offset number (T code's last two digits)
 
   // cutter / tool-nose radius compensation
-  std::optional<RadiusCompensation> comp_;
+  RadiusCompensation* comp_ = nullptr;  // path_comp_'s
   bool comp_suspended_ = false;        // G28/G30/G53 in offset mode: moves without the vector
   bool comp_drop_ = false;             // and the vector goes even where the move stays put in the plane
-  bool block_plane_motion_ = false;    // the block moved in the offset plane
   bool macro_call_block_ = false;      // the block called a macro (G65, G66, custom G/M code)
   std::optional<V2> cancel_direction_;  // I J K of a G40 block
 
@@ -455,6 +449,25 @@ private:
   int g76_tool_angle_ = profile_.g76_tool_angle;
   double g76_min_depth_ = profile_.g76_min_depth;
   double g76_allowance_ = profile_.g76_allowance;
+
+  // ---- the path stages (path/stage.hpp), linked in the constructor; run() links the last to its sink ----
+  CornerStage path_corner_{profile_.lathe(), *this,
+                            [](const nc::Span& where, const std::string& code, const std::string& message) {
+                              throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, where});
+                            }};
+  CompensationStage path_comp_{compensation_settings(profile_),
+                                OffsetModes{&modal_.comp_side, &comp_suspended_, &comp_drop_, &modal_.plane, &cancel_direction_},
+                                *this, path_alarm,
+                                [this](const Move& at, const std::string& code, const std::string& message) {
+                                  path_warning(at, code, message);
+                                }};
+  DevelopedConversion path_developed_{options_.path_tolerance, profile_.max_cutting_feed,
+                                      [this](const Move& at, const std::string& code, const std::string& message) {
+                                        path_warning(at, code, message);
+                                      }};
+  StrokeCheck path_stroke_{stroke_, *this, path_alarm};
+  NoseCentre path_nose_{*this};  // linked in with --nose-centre on a lathe
+  Statistics path_stats_{result_.stats, SetupView{&modal_.work_index, &coords_.origin, &modal_.length_comp, &h_}};
 };
 
 }  // namespace ncurve::machine

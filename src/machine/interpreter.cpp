@@ -69,12 +69,35 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   coords_.work_offsets = profile_.work_offsets;
   tool_offsets_ = profile_.tool_offsets;
   lathe_offsets_ = profile_.lathe_offsets;
+  comp_ = &path_comp_.compensation();
+  // the path stages, in order; --nose-centre's is linked in on a lathe only
+  path_corner_.link(path_comp_);
+  path_comp_.link(path_developed_);
+  path_developed_.link(path_stroke_);
+  if (options_.nose_centre && profile_.lathe()) {
+    path_stroke_.link(path_nose_);
+    path_nose_.link(path_stats_);
+  } else {
+    path_stroke_.link(path_stats_);
+  }
+}
+
+CompensationSettings Executor::compensation_settings(const MachineProfile& p) {
   CompensationSettings cs;
-  cs.startup_type_b = profile_.compensation.startup_type_b;
-  cs.startup_type_c = profile_.compensation.startup_type_c;
-  cs.blocks_without_motion = profile_.compensation.blocks_read - 2;
-  cs.interference_check = profile_.compensation.interference_check;
-  comp_.emplace(radius_compensation(cs, [this](Move& m) { deliver(m); }));
+  cs.startup_type_b = p.compensation.startup_type_b;
+  cs.startup_type_c = p.compensation.startup_type_c;
+  cs.blocks_without_motion = p.compensation.blocks_read - 2;
+  cs.interference_check = p.compensation.interference_check;
+  return cs;
+}
+
+void Executor::path_alarm(const Move& at, const std::string& code, const std::string& message) {
+  throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{at.file, at.line, 1, 1}});
+}
+
+void Executor::path_warning(const Move& at, const std::string& code, const std::string& message) {
+  if (result_.warnings.size() < 1000)
+    result_.warnings.push_back(nc::Diagnostic{nc::Severity::warning, code, message, nc::Span{at.file, at.line, 1, 1}});
 }
 
 // A compensation whose alarms stop the run and whose warnings join the run's, at the block of the move.
@@ -82,13 +105,8 @@ RadiusCompensation Executor::radius_compensation(CompensationSettings settings,
                                                     RadiusCompensation::Deliver deliver) {
   return RadiusCompensation(
       settings, std::move(deliver),
-      [](const Move& at, const std::string& code, const std::string& message) {
-        throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{at.file, at.line, 1, 1}});
-      },
-      [this](const Move& at, const std::string& code, const std::string& message) {
-        if (result_.warnings.size() < 1000)
-          result_.warnings.push_back(
-              nc::Diagnostic{nc::Severity::warning, code, message, nc::Span{at.file, at.line, 1, 1}});
+      path_alarm, [this](const Move& at, const std::string& code, const std::string& message) {
+        path_warning(at, code, message);
       });
 }
 
@@ -207,8 +225,8 @@ void Executor::warn_mixed_decimal_points(const nc::Program& program) {
 }
 
 RunResult Executor::run(MoveSink& sink) {
-  sink_ = &sink;
-  setup_sent_ = false;
+  path_stats_.link(sink);
+  path_stats_.restart();
   result_ = RunResult{};
   const nc::Program* main = library_.main();
   if (!main) {
@@ -253,7 +271,6 @@ RunResult Executor::run(MoveSink& sink) {
     }
   }
   if (observer_) observer_->finished(moves_delivered(), modal_readout());
-  sink_ = nullptr;
   return result_;
 }
 

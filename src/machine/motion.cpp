@@ -98,19 +98,6 @@ void Executor::motion(const AxisVector& target) {
   xf_arc_ = false;
 }
 
-void Executor::note_extent(const AxisVector& p) {
-  RunStats& s = result_.stats;
-  if (!s.has_extent) {
-    s.min = s.max = p;
-    s.has_extent = true;
-    return;
-  }
-  for (int a = 0; a < kAxes; ++a) {
-    s.min[a] = std::min(s.min[a], p[a]);
-    s.max[a] = std::max(s.max[a], p[a]);
-  }
-}
-
 void Executor::emit(Move& m) {
   count_block_move();
   m.program = prog_ ? prog_->number : -1;
@@ -127,88 +114,51 @@ void Executor::emit(Move& m) {
     if (m.is_motion()) shape_moves_->push_back(m);
     return;
   }
-  if (corner_on_ && corner_emit(m)) [[unlikely]] return;  // chamfering: held for the next move
-  emit_programmed(m);
+  path_corner_.on_move(m);
 }
 
-void Executor::emit_programmed(Move& m) {
-  if (!compensating()) return deliver(m);
-  const PlaneAxes pa = plane_axes(modal_.plane);
-  const bool in_plane = m.kind == MoveKind::arc ? m.plane == modal_.plane
-                        : m.is_motion() && (m.start[pa.p] != m.end[pa.p] || m.start[pa.q] != m.end[pa.q]);
-  if (!in_plane) {
-    if (!comp_drop_ || !m.is_motion()) return comp_->other(m);
-    // the tool leaves its vector for the programmed point though the block does not move in the plane
-    block_plane_motion_ = true;
-    comp_->cancel_without_motion(m);
-    Move to = m;
-    to.start = comp_->tool_now();
-    to.length = line_length(to.start.data(), to.end.data());
-    double slowest = 0;
-    for (int a = 0; a < kAxes; ++a)
-      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(to.end[a] - to.start[a]) / profile_.rapid_rate[a]);
-    to.seconds = slowest * 60.0;
-    return comp_->element(to, 0, 0);
-  }
-  block_plane_motion_ = true;
-  int side = comp_suspended_ ? 0 : modal_.comp_side;
-  if (xf_on_ && xf_.reverses(pa.p, pa.q)) side = -side;  // a mirror image swaps G41 and G42
-  double radius = 0;
+CornerContext Executor::corner_context() const {
+  return {prog_, block_, result_.stats.blocks, modal_.comp_side, d_, lathe_offset_};
+}
+
+void Executor::set_offset_numbers(int d, int lathe_offset) { d_ = d, lathe_offset_ = lathe_offset; }
+
+void Executor::move_held() {
+  if (compensating()) path_comp_.note_plane_motion();
+}
+
+OffsetOfMove Executor::offset_of_move(const PlaneAxes& pa) const {
+  OffsetOfMove o;
+  o.mirrored = xf_on_ && xf_.reverses(pa.p, pa.q);
   if (profile_.lathe()) {
-    radius = nose_radius();
-    comp_->set_tip(developed_ ? V2{} : nose_tip());  // G12.1, G07.1: the tool's centre
+    o.radius = nose_radius();
+    o.tip = developed_ ? V2{} : nose_tip();  // G12.1, G07.1: the tool's centre
   } else {
-    radius = radius_offset(d_);
+    o.radius = radius_offset(d_);
   }
-  if (radius < 0) {  // a negative offset puts the tool on the other side
-    radius = -radius;
-    side = -side;
-  }
-  std::optional<V2> cancel = side == 0 ? cancel_direction_ : std::nullopt;
-  comp_->element(m, side, radius, cancel);
+  return o;
 }
 
-void Executor::deliver(Move& m) {
-  if (developed_) [[unlikely]] return deliver_developed(m);  // G12.1, G07.1: the machine's moves
-  if (stroke_check_) [[unlikely]] check_stroke(m);  // stroke_check.cpp
-  if (options_.nose_centre && profile_.lathe() && m.is_motion()) {
-    const V2 tip = nose_tip();  // (Z, X): the imaginary tip from the nose centre
-    m.start[2] -= tip.x, m.start[0] -= tip.y;
-    m.end[2] -= tip.x, m.end[0] -= tip.y;
-    if (m.kind == MoveKind::arc) m.center[2] -= tip.x, m.center[0] -= tip.y;
-  }
-  record(m);
+double Executor::rapid_seconds(const AxisVector& from, const AxisVector& to) const {
+  double slowest = 0;
+  for (int a = 0; a < kAxes; ++a)
+    if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(to[a] - from[a]) / profile_.rapid_rate[a]);
+  return slowest * 60.0;
 }
 
-void Executor::record(Move& m) {
-  RunStats& s = result_.stats;
-  ++s.by_kind[static_cast<int>(m.kind)];
-  if (m.is_motion()) {
-    ++s.motions;
-    if (m.kind == MoveKind::rapid) s.rapid_length += m.length;
-    else s.feed_length += m.length;
-    if (s.motions == 1) note_extent(m.start);
-    note_extent(m.end);
-  }
-  s.seconds += m.seconds;
-  const Setup now{modal_.work_index, coords_.origin, modal_.length_comp, h_};
-  if (!setup_sent_ || !(now == setup_)) {
-    setup_ = now;
-    setup_sent_ = true;
-    sink_->on_setup(now);
-  }
-  sink_->on_move(m);
+AxisVector Executor::machine_shift() const {
+  AxisVector shift{};
+  for (int a = 0; a < kAxes; ++a) shift[a] = coords_.origin[a] + coords_.tool_shift[a];
+  return shift;
 }
 
-bool Executor::compensating() const {
-  return modal_.comp_side != 0 || comp_->offset_mode() || comp_->tool_position().has_value();
-}
+V2 Executor::nose_tip_now() const { return developed_ ? V2{} : nose_tip(); }
 
 // After each NC block in offset mode: a G40 (or G41/G42 from cancel mode) without motion in the
 // plane ends (starts) the offset by the start-up type's rule; any other block without such motion
 // is one the read-ahead must look past.
 void Executor::end_of_block_compensation(bool g40, bool g41) {
-  if (!block_plane_motion_) {
+  if (!path_comp_.block_moved_in_plane()) {
     Move at;
     at.kind = modal_.motion == 0 ? MoveKind::rapid : MoveKind::line;
     at.plane = static_cast<std::uint8_t>(modal_.plane);
@@ -219,11 +169,9 @@ void Executor::end_of_block_compensation(bool g40, bool g41) {
     at.file = prog_ ? prog_->file.get() : nullptr;
     at.line = block_ ? block_->line : 0;
     at.program = prog_ ? prog_->number : -1;
-    if (g40) comp_->cancel_without_motion(at);
-    else if (g41) comp_->startup_without_motion(at);
-    else comp_->block_without_motion(at);
+    path_comp_.block_without_plane_motion(at, g40, g41);
   }
-  block_plane_motion_ = false;
+  path_comp_.end_block();
   cancel_direction_.reset();
 }
 
@@ -373,7 +321,7 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
       AxisVector p = coords_.pos;
       p[pa.p] = cp + rs * std::cos(ang);
       p[pa.q] = cq + rs * std::sin(ang);
-      note_extent(p);
+      path_stats_.note_extent(p);
     }
   }
   coords_.pos = target;

@@ -171,6 +171,7 @@ void Executor::set_parameters_by_program(int n, const std::vector<std::pair<std:
     case 5142: g76_finish_count_ = profile_.g76_finish_count; break;
     case 5143: g76_tool_angle_ = profile_.g76_tool_angle; break;
     case 6004: eval_options_.atan_signed = profile_.atan_signed; break;
+    case 1300: stroke_.area_outside = profile_.stroke2_outside; break;
     default: break;
   }
 }

@@ -5,14 +5,14 @@
 // for G07.1 the surface of the cylinder of radius r developed flat, the rotary axis's angle read as
 // the arc length r * angle. The interpreter moves in that plane (coords_.pos holds it: the hypothetical or
 // developed coordinate sits in the slot of the linear axis it stands beside), cutter compensation
-// offsets the contour there, and deliver() turns each move into the linear and rotary axes' moves.
+// offsets the contour there, and the path stage DevelopedConversion (path/developed_conversion.hpp)
+// turns each move into the linear and rotary axes' moves.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "machine/path/developed_path.hpp"
 #include "machine/g_codes.hpp"
 #include "machine/executor.hpp"
 
@@ -84,9 +84,8 @@ void Executor::polar_start(std::uint16_t column) {
   d.q = d.slot;
   d.saved_plane = modal_.plane;
   d.held = coords_.pos[d.slot];
-  d.sign = coords_.pos[lin] < 0 ? -1 : 1;
   d.angle0 = coords_.pos[rot];  // "the angle of 0 for the position of the tool when G12.1 is specified"
-  d.machine = coords_.pos;
+  path_developed_.start(d, coords_.pos);
   coords_.pos[d.slot] = 0;  // "the virtual axis is at coordinate 0 immediately after G12.1"
   modal_.plane = lin == 0 ? 17 : lin == 1 ? 19 : 18;
   dev_ = d;
@@ -158,7 +157,7 @@ void Executor::cylinder_code(std::uint16_t column) {
   d.q = pa.q;
   d.radius = r;
   d.saved_plane = modal_.plane;
-  d.machine = coords_.pos;
+  const AxisVector machine = coords_.pos;
   if (has_axis_[slot]) {  // the linear axis the rotary axis stands beside keeps moving in a free slot
     d.held = coords_.pos[slot];
     for (int k = 0; k < 3 && d.spare < 0; ++k)
@@ -166,12 +165,14 @@ void Executor::cylinder_code(std::uint16_t column) {
     if (d.spare >= 0) coords_.pos[d.spare] = coords_.pos[slot];
   }
   coords_.pos[slot] = coords_.pos[a] / kDeg * r;
+  path_developed_.start(d, machine);
   dev_ = d;
   developed_ = developed_hook_ = true;
 }
 
 void Executor::end_developed() {
-  coords_.pos = dev_->machine;
+  coords_.pos = path_developed_.machine();
+  path_developed_.stop();
   modal_.plane = dev_->saved_plane;
   dev_.reset();
   developed_ = false;  // developed_hook_ stays for the block's axis words (G07.1 C0)
@@ -248,100 +249,6 @@ bool Executor::developed_axis_target(AxisVector& target) {
     alarm(code, fmt::format("{} mode moves by G01, G02 or G03 only (the modal motion is {})", mode,
                             modal_.motion == 0 ? "G00" : "a lathe cycle or threading"));
   return any;
-}
-
-// A move of the programmed plane as the machine makes it: the linear and rotary axes moving together
-// by pieces, each within the path tolerance of the contour.
-void Executor::deliver_developed(Move& m) {
-  Developed& d = *dev_;
-  if (!m.is_motion()) {
-    m.start = m.end = d.machine;
-    return record(m);
-  }
-  const PlanePath path = PlanePath::of(m, d.p, d.q);
-  auto along = [&](double t) {  // every axis but the plane's, linearly; the plane's on the contour
-    AxisVector v{};
-    for (int a = 0; a < kAxes; ++a) v[a] = t >= 1 ? m.end[a] : m.start[a] + t * (m.end[a] - m.start[a]);
-    const V2 at = path.at(t);
-    v[d.p] = at.x;
-    v[d.q] = at.y;
-    return v;
-  };
-  std::vector<double> ts;
-  std::vector<AxisVector> points;
-  if (d.polar) {
-    for (const PolarPoint& pp : polar_points(path, options_.path_tolerance, d.sign, d.angle)) {
-      AxisVector v = along(pp.t);
-      v[d.linear] = pp.linear;
-      v[d.rotary] = d.angle0 + pp.angle * kDeg;
-      v[d.slot] = d.held;
-      ts.push_back(pp.t);
-      points.push_back(v);
-    }
-  } else {
-    for (double t : chord_steps(path, options_.path_tolerance)) {
-      AxisVector v = along(t);
-      v[d.rotary] = v[d.slot] / d.radius * kDeg;
-      v[d.slot] = d.spare >= 0 ? v[d.spare] : d.held;
-      if (d.spare >= 0) v[d.spare] = 0;
-      ts.push_back(t);
-      points.push_back(v);
-    }
-  }
-  AxisVector programmed_end = m.programmed_end;
-  if (m.compensated) {  // the programmed end as the machine's axes, on the side the tool is
-    const V2 at{m.programmed_end[d.p], m.programmed_end[d.q]};
-    programmed_end = m.programmed_end;
-    if (d.polar) {
-      const double r = std::hypot(at.x, at.y);
-      double a = r > 0 ? std::atan2(at.y, at.x) + (d.sign < 0 ? std::numbers::pi : 0.0) : d.angle;
-      a = d.angle + std::remainder(a - d.angle, 2 * std::numbers::pi);
-      programmed_end[d.linear] = d.sign * r;
-      programmed_end[d.rotary] = d.angle0 + a * kDeg;
-      programmed_end[d.slot] = d.held;
-    } else {
-      programmed_end[d.rotary] = programmed_end[d.slot] / d.radius * kDeg;
-      programmed_end[d.slot] = d.spare >= 0 ? programmed_end[d.spare] : d.held;
-      if (d.spare >= 0) programmed_end[d.spare] = 0;
-    }
-  }
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    Move piece = m;
-    if (piece.kind == MoveKind::arc) piece.kind = MoveKind::line;
-    piece.start = d.machine;
-    piece.end = points[i];
-    piece.center = {};
-    piece.sweep = 0;
-    piece.clockwise = false;
-    const double share = ts[i] - ts[i - 1];
-    piece.length = m.length * share;
-    piece.seconds = m.seconds * share;
-    piece.programmed_end = programmed_end;
-    if (i > 1) piece.macro_statements = piece.nc_blocks = 0;
-    if (i + 1 < points.size()) piece.exact_stop = false;
-    if (d.polar) warn_polar_speed(piece, piece.end[d.rotary] - piece.start[d.rotary], piece.length,
-                                  std::min(std::fabs(piece.start[d.linear]), std::fabs(piece.end[d.linear])));
-    d.machine = piece.end;
-    if (stroke_check_) check_stroke(piece);  // stroke_check.cpp
-    record(piece);
-  }
-}
-
-// The rotary axis turns faster the nearer the path runs to the centre: the manual's limit is
-// F < L * R * pi / 180 (L: the nearest distance to the centre, R: the rotary axis's maximum cutting
-// feedrate in deg/min). Warned once a block.
-void Executor::warn_polar_speed(const Move& m, double degrees, double length, double radius) {
-  Developed& d = *dev_;
-  if (m.feed_per_rev || m.feed <= 0 || length <= 0 || d.warned_line == m.line) return;
-  const double rate = std::fabs(degrees) / length * m.feed;  // deg/min
-  if (rate <= profile_.max_cutting_feed) return;
-  d.warned_line = m.line;
-  if (result_.warnings.size() >= 1000) return;
-  result_.warnings.push_back(nc::Diagnostic{nc::Severity::warning, "NC2060", fmt::format("polar coordinate interpolation: the path passes {:.4f} mm from the centre, where {} "
-                             "turns at {:.0f} deg/min at F{:g}, above the maximum cutting feedrate {:g}; the manual "
-                             "asks for F < L x R x pi / 180",
-                             radius, kAxisLetters[d.rotary], rate, m.feed, profile_.max_cutting_feed),
-                                            nc::Span{m.file, m.line, 1, 1}});
 }
 
 }  // namespace ncurve::machine

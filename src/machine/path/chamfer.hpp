@@ -1,4 +1,4 @@
-// The interpreter's state for chamfering and corner R: a block's move waits for the next move.
+// Chamfering and corner R: the request of a block and its move, held until the next move.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -31,12 +31,6 @@ struct HeldCorner {
   int d = 0;                  // its D number and lathe offset, should the next block change them
   int lathe_offset = 0;
   std::vector<Move> events;   // events after it (M codes of its block, T of the next): after the corner
-};
-
-struct CornerState {
-  std::optional<CornerRequest> armed;  // this block's request, until its move comes
-  std::optional<HeldCorner> held;
-  bool words_read = false;             // this block's ,C ,R words were acted on
 };
 
 }  // namespace ncurve::machine

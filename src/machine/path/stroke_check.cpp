@@ -1,14 +1,14 @@
-// Stored stroke checks: limit 1 (No.1320/No.1321, OT0500/OT0501) and the area of check 2
-// (G22/G23, No.1322/No.1323, No.1300#0 OUT; OT0502/OT0503), on the moves as the tool makes them,
-// in machine coordinates. Without a limit the check costs one flag test a move (docs/reference-moves.md).
+// Stored stroke checks: the limits and the stage that checks each move against them.
+#include "machine/path/stroke_check.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include "machine/executor.hpp"
+#include <optional>
+#include <vector>
 
 namespace ncurve::machine {
 
@@ -91,54 +91,44 @@ unsigned basic_axes(const std::array<bool, kAxes>& has) {  // check 2 works on X
 }
 }  // namespace
 
-void Executor::init_stroke_check() {
-  stroke1_plus_ = profile_.stroke1_plus;
-  stroke1_minus_ = profile_.stroke1_minus;
+StrokeLimits StrokeLimits::power_on(const MachineProfile& p, const std::array<bool, kAxes>& has_axis) {
+  StrokeLimits l;
+  l.limit1_plus = p.stroke1_plus;
+  l.limit1_minus = p.stroke1_minus;
   for (int a = 0; a < kAxes; ++a) {
-    if (!has_axis_[a] || stroke1_plus_[a] < stroke1_minus_[a]) stroke1_plus_[a] = kInf, stroke1_minus_[a] = -kInf;
-    stroke2_plus_[a] = std::max(profile_.stroke2_plus[a], profile_.stroke2_minus[a]);
-    stroke2_minus_[a] = std::min(profile_.stroke2_plus[a], profile_.stroke2_minus[a]);
+    if (!has_axis[a] || l.limit1_plus[a] < l.limit1_minus[a]) l.limit1_plus[a] = kInf, l.limit1_minus[a] = -kInf;
+    l.area_plus[a] = std::max(p.stroke2_plus[a], p.stroke2_minus[a]);
+    l.area_minus[a] = std::min(p.stroke2_plus[a], p.stroke2_minus[a]);
   }
-  stroke_area_switch(!profile_.stroke2_off_at_power_on);
+  l.area_axes = basic_axes(has_axis);
+  l.area_outside = p.stroke2_outside;
+  return l;
 }
 
-// G22 X Y Z I J K: the corners of the area of check 2 in machine coordinates (lathe X and I as
-// diameters), then check 2 on.
-void Executor::stroke_area_command() {
-  const char corner[3][2] = {{'X', 'I'}, {'Y', 'J'}, {'Z', 'K'}};
-  for (int a = 0; a < 3; ++a) {
-    if (!has_axis_[a]) continue;
-    const double scale = a == 0 && profile_.lathe() && profile_.diameter_x ? 0.5 : 1.0;
-    if (has(corner[a][0])) stroke2_plus_[a] = dimension(word(corner[a][0])) * scale;
-    if (has(corner[a][1])) stroke2_minus_[a] = dimension(word(corner[a][1])) * scale;
-    if (stroke2_plus_[a] < stroke2_minus_[a]) std::swap(stroke2_plus_[a], stroke2_minus_[a]);
-  }
-  stroke_area_switch(true);
-}
-
-void Executor::stroke_area_switch(bool on) {
-  modal_.stroke2_on = on;
-  bool area = profile_.stroke2_outside;  // outside forbidden: even an empty area forbids everything
+void StrokeLimits::update(bool area_on) {
+  bool area = area_outside;  // outside forbidden: even an empty area forbids everything
   if (!area) {  // inside forbidden: only an area with an inside can be entered
     area = true;
-    const unsigned mask = basic_axes(has_axis_);
     for (int a = 0; a < 3; ++a)
-      if ((mask & (1u << a)) && !(stroke2_plus_[a] > stroke2_minus_[a])) area = false;
+      if ((area_axes & (1u << a)) && !(area_plus[a] > area_minus[a])) area = false;
   }
   bool limit1 = false;
-  for (int a = 0; a < kAxes; ++a) limit1 = limit1 || std::isfinite(stroke1_plus_[a]) || std::isfinite(stroke1_minus_[a]);
-  stroke_check_ = limit1 || (modal_.stroke2_on && area);
+  for (int a = 0; a < kAxes; ++a) limit1 = limit1 || std::isfinite(limit1_plus[a]) || std::isfinite(limit1_minus[a]);
+  in_force = limit1 || (area_on && area);
+}
+
+void StrokeCheck::fail(const Move& m, const char* code, const std::string& message) const {
+  alarm_(m, code, message);
+  throw nc::Alarm(nc::Diagnostic{nc::Severity::error, code, message, nc::Span{m.file, m.line, 1, 1}});
 }
 
 // The control stops the tool at the limit (No.1300#7 BFA: just before it, or just past it);
 // ncurve stops before the block's move, and names the axis, where the move would go and the limit.
-void Executor::check_stroke(const Move& m) const {
+void StrokeCheck::check(const Move& m) const {
   if (!m.is_motion()) return;
-  auto fail = [&](std::string code, std::string message) {
-    throw nc::Alarm(nc::Diagnostic{nc::Severity::error, std::move(code), std::move(message), nc::Span{m.file, m.line, 1, 1}});
-  };
-  AxisVector shift{};
-  for (int a = 0; a < kAxes; ++a) shift[a] = coords_.origin[a] + coords_.tool_shift[a];
+  const StrokeLimits& l = limits_;
+  auto fail = [&](const char* code, const std::string& message) { this->fail(m, code, message); };
+  const AxisVector shift = frame_.machine_shift();
   auto machine = [&](AxisVector p) {
     for (int a = 0; a < kAxes; ++a) p[a] += shift[a];
     return p;
@@ -149,35 +139,35 @@ void Executor::check_stroke(const Move& m) const {
   };
   extend(machine(m.end));
   for (double t : quadrant_fractions(m)) extend(machine(point_at(m, t)));
-  auto shown = [&](int a, double v) { return program_units(a, v); };
+  auto shown = [&](int a, double v) { return frame_.program_units(a, v); };
   for (int a = 0; a < kAxes; ++a) {
-    if (hi[a] > stroke1_plus_[a] + kEps)
+    if (hi[a] > l.limit1_plus[a] + kEps)
       fail("OT0500", fmt::format("{}+ overtravel (stored stroke limit 1): the move goes to {} {:.4f} (machine "
                                  "coordinates), past the limit {:.4f} (No.1320)",
-                                 kAxisLetters[a], kAxisLetters[a], shown(a, hi[a]), shown(a, stroke1_plus_[a])));
-    if (lo[a] < stroke1_minus_[a] - kEps)
+                                 kAxisLetters[a], kAxisLetters[a], shown(a, hi[a]), shown(a, l.limit1_plus[a])));
+    if (lo[a] < l.limit1_minus[a] - kEps)
       fail("OT0501", fmt::format("{}- overtravel (stored stroke limit 1): the move goes to {} {:.4f} (machine "
                                  "coordinates), past the limit {:.4f} (No.1321)",
-                                 kAxisLetters[a], kAxisLetters[a], shown(a, lo[a]), shown(a, stroke1_minus_[a])));
+                                 kAxisLetters[a], kAxisLetters[a], shown(a, lo[a]), shown(a, l.limit1_minus[a])));
   }
-  if (!modal_.stroke2_on) return;
-  const unsigned mask = basic_axes(has_axis_);
+  if (!frame_.area_check_on()) return;
+  const unsigned mask = l.area_axes;
   auto area = [&] {
     std::string s;
     for (int a = 0; a < 3; ++a)
       if (mask & (1u << a))
-        s += fmt::format("{}{} {:.4f}..{:.4f}", s.empty() ? "" : ", ", kAxisLetters[a], shown(a, stroke2_minus_[a]),
-                         shown(a, stroke2_plus_[a]));
+        s += fmt::format("{}{} {:.4f}..{:.4f}", s.empty() ? "" : ", ", kAxisLetters[a], shown(a, l.area_minus[a]),
+                         shown(a, l.area_plus[a]));
     return s;
   };
-  if (profile_.stroke2_outside) {  // No.1300#0 OUT = 1: the tool stays inside the area
+  if (l.area_outside) {  // No.1300#0 OUT = 1: the tool stays inside the area
     for (int a = 0; a < 3; ++a) {
       if (!(mask & (1u << a))) continue;
-      if (hi[a] > stroke2_plus_[a] + kEps)
+      if (hi[a] > l.area_plus[a] + kEps)
         fail("OT0502", fmt::format("{}+ overtravel (stored stroke check 2): the move goes to {} {:.4f} (machine "
                                    "coordinates), out of the area {} (G22, outside forbidden: No.1300#0 = 1)",
                                    kAxisLetters[a], kAxisLetters[a], shown(a, hi[a]), area()));
-      if (lo[a] < stroke2_minus_[a] - kEps)
+      if (lo[a] < l.area_minus[a] - kEps)
         fail("OT0503", fmt::format("{}- overtravel (stored stroke check 2): the move goes to {} {:.4f} (machine "
                                    "coordinates), out of the area {} (G22, outside forbidden: No.1300#0 = 1)",
                                    kAxisLetters[a], kAxisLetters[a], shown(a, lo[a]), area()));
@@ -191,7 +181,7 @@ void Executor::check_stroke(const Move& m) const {
   AxisVector from = machine(m.start);
   for (int i = 1; i <= pieces; ++i) {
     const AxisVector to = i == pieces ? machine(m.end) : machine(point_at(m, static_cast<double>(i) / pieces));
-    if (const auto e = enters_box(from, to, stroke2_minus_, stroke2_plus_, mask)) {
+    if (const auto e = enters_box(from, to, l.area_minus, l.area_plus, mask)) {
       const int a = e->axis;
       fail(e->sign > 0 ? "OT0502" : "OT0503",
            fmt::format("{}{} overtravel (stored stroke check 2): the move enters the forbidden area {} (machine "
