@@ -56,6 +56,7 @@ void Executor::exec_nc(const Block& b) {
   if (!read_words(b)) return;
   SubprogramCall sub;
   if (macro_call_block(b, sub)) return;  // G65, G66 and custom G/M codes take the whole block
+  if (vacant_word_.variable != 0) [[unlikely]] warn_vacant_word();
   if (word_check_ || g_codes_.size() > 1) check_block_words();
   std::vector<int> one_shot;
   handle_g_codes(one_shot);
@@ -100,6 +101,25 @@ void Executor::check_radius_offset() {
             column);
 }
 
+// A dimension or F word that read a vacant variable: the control ignores a word whose value is
+// vacant, and counts a vacant variable as 0 in an expression, without an alarm. A macro's own
+// arguments left out (X#24 with no X given) are its way of making a word optional: not warned.
+void Executor::warn_vacant_word() {
+  const VacantWord& v = vacant_word_;
+  if (v.ignored) {
+    if (frames_.back().kind == Frame::macro && v.variable >= 1 && v.variable <= 33) return;
+    warn_once("NC2072", fmt::format("{}: #{} is vacant, so the control ignores the word {} (the block runs as if it "
+                                    "were not written) without an alarm; check the variable",
+                                    v.letter, v.variable, v.letter),
+              v.column);
+    return;
+  }
+  warn_once("NC2072", fmt::format("{}: #{} is vacant and counts as 0 in the word's expression, which gives {}{} "
+                                  "without an alarm; check the variable",
+                                  v.letter, v.variable, v.letter, v.value),
+            v.column);
+}
+
 // The block's words, values evaluated; false for a block with none.
 bool Executor::read_words(const Block& b) {
   cmds_.clear();
@@ -107,11 +127,15 @@ bool Executor::read_words(const Block& b) {
   g_codes_.clear();
   m_codes_.clear();
   word_check_ = false;
+  vacant_word_.variable = 0;
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
     const nc::Word& w = prog_->words[i];
     Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value};
     if (!w.literal) {
-      Value v = eval(w.expr);
+      int vacant = 0;
+      Value v = eval_word(w.expr, vacant);
+      if (vacant != 0 && vacant_word_.variable == 0 && (scaled_address(w.letter) || w.letter == 'F')) [[unlikely]]
+        vacant_word_ = {vacant, w.letter, v.vacant, v.vacant ? 0.0 : v.v, w.column};
       if (v.vacant) continue;  // a word whose value is vacant is not there at all
       c.value = v.v;
       check_word_digits(w.letter, c.value, scaled_address(w.letter), w.column);

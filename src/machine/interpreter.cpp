@@ -22,6 +22,17 @@ struct VarReader {
   Value read(int n, std::uint16_t column) { return in->read_var(n, column); }
 };
 
+// A word's expression: notes the first variable it read vacant.
+struct WordVarReader {
+  Executor* in;
+  int first_vacant = 0;
+  Value read(int n, std::uint16_t column) {
+    Value v = in->read_var(n, column);
+    if (v.vacant && first_vacant == 0) first_vacant = n;
+    return v;
+  }
+};
+
 
 
 
@@ -149,7 +160,19 @@ Value Executor::eval(const nc::Expr& e) {
   VarReader reader{this};
   const nc::Instr* code = prog_->code.data();
   operations_ += e.end - e.begin;
-  nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
+  return evaluated(nc::evaluate(code + e.begin, code + e.end, reader, eval_options_));
+}
+
+Value Executor::eval_word(const nc::Expr& e, int& vacant_variable) {
+  WordVarReader reader{this};
+  const nc::Instr* code = prog_->code.data();
+  operations_ += e.end - e.begin;
+  const Value v = evaluated(nc::evaluate(code + e.begin, code + e.end, reader, eval_options_));
+  vacant_variable = reader.first_vacant;
+  return v;
+}
+
+Value Executor::evaluated(const nc::EvalResult& r) const {
   switch (r.fault) {
     case nc::EvalFault::none: return r.value;
     case nc::EvalFault::divide_by_zero: alarm("PS0112", "division by zero", r.column);

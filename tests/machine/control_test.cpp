@@ -1,6 +1,9 @@
 // Control flow: GOTO, IF, WHILE/DO/END, runaway programs.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "support/run_program.hpp"
 
 using namespace ncurve;
@@ -85,4 +88,46 @@ TEST(Control, AlarmFromProgramWithMessage) {
   EXPECT_EQ(r.alarm_code(), "MC3012");
   EXPECT_EQ(r.result.alarm->message, "DEPTH TOO BIG");
   EXPECT_EQ(r.alarm_line(), 2u);
+}
+
+namespace {
+std::vector<std::uint32_t> lines_of(const ncurve::test::Ran& r, const std::string& code) {
+  std::vector<std::uint32_t> lines;
+  for (const auto& w : r.result.warnings)
+    if (w.code == code) lines.push_back(w.span.line);
+  return lines;
+}
+}  // namespace
+
+// A vacant variable in an address word: the control ignores a word whose value is vacant and counts
+// a vacant variable as 0 in an expression, with no alarm (NC2072 names the word and the variable).
+TEST(VacantWords, AreWarnedWhereTheyChangeTheMove) {
+  auto r = run("#1=30.\n#2=20.\n#3=45.\nG00 X0 Y0\nG01 X#11 Y5. F100.\nX[#1*COS[#3]] Y[#12*SIN[#3]]\nM30\n");
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_EQ(lines_of(r, "NC2072"), (std::vector<std::uint32_t>{5, 6}));
+  const auto m = r.motions();
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m[1].end[0], 0);  // X#11 ignored: X stays
+  EXPECT_NEAR(m[2].end[0], 30 * std::cos(std::numbers::pi / 4), 0.0005);  // to the 0.001 mm increment
+  EXPECT_EQ(m[2].end[1], 0);  // #12 counted as 0
+  // a G65 bolt circle whose Y reads a vacant variable puts every hole on Y0
+  auto bolt = run("G65 P9100 R20. K4\nM30\n",
+                  machine::default_mill(), {},
+                  {{"O9100.nc", "O9100\n#10=0\nWHILE[#10LT#6]DO1\n#11=#10*360/#6\n"
+                                "G81 X[#18*COS[#11]] Y[#18*SIN[#13]] Z-5. R2. F100.\n#10=#10+1\nEND1\nG80\nM99\n"}});
+  ASSERT_TRUE(bolt.result.ok());
+  EXPECT_FALSE(lines_of(bolt, "NC2072").empty());
+}
+
+TEST(VacantWords, OptionalMacroArgumentsAndSetVariablesAreNotWarned) {
+  // X#24 Y#25 in a macro called with X only: an argument left out is how a macro makes a word optional
+  auto r = run("G00 X0 Y0\nG65 P9101 X10.\nG65 P9101 Y5.\nM30\n", machine::default_mill(), {},
+               {{"O9101.nc", "O9101\nG01 X#24 Y#25 F100.\nM99\n"}});
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_TRUE(lines_of(r, "NC2072").empty());
+  // the call block's own arguments may be vacant; and variables that are set give no warning
+  auto call = run("#1=5.\nG00 X#1 Y[#1*2]\nG65 P9101 X#30\nM30\n", machine::default_mill(), {},
+                  {{"O9101.nc", "O9101\nG01 X#24 Y#25 F100.\nM99\n"}});
+  ASSERT_TRUE(call.result.ok());
+  EXPECT_TRUE(lines_of(call, "NC2072").empty());
 }
