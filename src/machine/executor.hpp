@@ -168,6 +168,7 @@ private:
   double minutes_per_rev(double r0, double r1) const;
   double feed_seconds(double length, double r0, double r1) const;
   double arc_feed_seconds(const Move& m, double planar) const;
+  void clamp_cutting_feed(Move& m, double fed);  // NC2073: over the maximum cutting feed
 
   // drilling canned cycles (canned_cycles.cpp, boring_cycles.cpp, tapping_cycles.cpp)
   struct Hole;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "machine/executor.hpp"
 
 namespace ncurve::machine {
@@ -54,6 +56,22 @@ double Executor::arc_feed_seconds(const Move& m, double planar) const {
     sum += per_mm(t0) + 4 * per_mm((t0 + t1) / 2) + per_mm(t1);
   }
   return planar / kPieces / 6 * sum;
+}
+
+// A cutting move faster than the maximum cutting feed (the profile's [feeds] max_cutting, No.1430):
+// the control clamps the feed without an alarm, so the move takes the clamped feed's time. `fed` is
+// the length the feed is taken along (the arc in the plane for a helix).
+void Executor::clamp_cutting_feed(Move& m, double fed) {
+  const double max = profile_.max_cutting_feed;
+  if (max <= 0 || m.seconds <= 0 || fed <= 0) return;
+  const double rate = fed / m.seconds * 60.0;
+  if (rate <= max * (1 + 1e-9)) return;
+  m.seconds = fed / max * 60.0;
+  warn_once("NC2073", fmt::format("F{}{} makes {:.0f} mm/min here, over the maximum cutting feed {:.0f} mm/min (the "
+                                  "profile's [feeds] max_cutting, No.1430): the control clamps it without an alarm, "
+                                  "and the time is the clamped feed's",
+                                  modal_.inch ? feed_ / 25.4 : feed_, modal_.feed_per_rev ? " per revolution" : "",
+                                  rate, max));
 }
 
 }  // namespace ncurve::machine

@@ -212,6 +212,7 @@ void Executor::linear(MoveKind kind, const AxisVector& target) {
     m.feed = feed_;
     const double fed = extra_axes_ ? combined_length(coords_.pos, target, m.length) : m.length;  // F on every axis
     m.seconds = feed_seconds(fed, coords_.pos[0], target[0]);
+    clamp_cutting_feed(m, fed);
   } else {  // rapid axes move independently: the slowest axis sets the time
     double slowest = 0;
     for (int a = 0; a < kAxes; ++a)
@@ -312,6 +313,7 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
   // Helical interpolation: F is the feed along the arc in the plane, the linear axis following at
   // F x its travel / the arc's length (the manuals' helical interpolation; parameter HTG = 0, factory)
   m.seconds = arc_feed_seconds(m, planar);
+  clamp_cutting_feed(m, planar);
   // extents: the quadrant points the arc passes (in G12.1/G07.1 the machine's moves give them)
   for (int k = 0; k < 4 && !developed_; ++k) {
     double ang = k * std::numbers::pi / 2;

@@ -106,3 +106,41 @@ TEST(SurfaceSpeed, ArcTimeFollowsTheRadius) {
   const double integral = 150 * kPi - 100;
   EXPECT_NEAR(arcs[0].seconds, 300 * 2 * kPi / (1000 * 100) * integral, 1e-6);
 }
+
+namespace {
+int feed_clamps(const ncurve::test::Ran& r) {
+  int n = 0;
+  for (const auto& w : r.result.warnings) n += w.code == "NC2073";
+  return n;
+}
+}  // namespace
+
+// Over the maximum cutting feed the control clamps the feed (No.1430) without an alarm: the move
+// takes the clamped feed's time and ncurve warns (NC2073).
+TEST(FeedClamp, PerRevolutionOverTheMaximumIsClampedAndWarned) {
+  machine::MachineProfile p = machine::default_lathe();  // max_cutting 10000 mm/min, 1000 rev/min without S
+  auto r = run("G99 G00 X40. Z0\nG01 X28. F25.\nM30\n", p);
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_EQ(feed_clamps(r), 1);
+  const auto m = r.motions();
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_NEAR(m[1].seconds, 6.0 / 10000 * 60, 1e-12);  // 6 mm (radius) at 10000 mm/min
+  EXPECT_EQ(r.result.warnings.front().span.line, 2u);
+}
+
+TEST(FeedClamp, PerMinuteOverTheMaximumIsClampedAndWarned) {
+  auto r = run("G00 X0 Y0\nG01 X30. Y40. F20000.\nG02 X80. Y40. R25. F15000.\nM30\n");
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_EQ(feed_clamps(r), 2);
+  const auto m = r.motions();
+  EXPECT_NEAR(m[1].seconds, 50.0 / 10000 * 60, 1e-12);
+  EXPECT_NEAR(m[2].seconds, std::numbers::pi * 25 / 10000 * 60, 1e-9);
+}
+
+TEST(FeedClamp, FeedsAtOrBelowTheMaximumAreNotWarned) {
+  auto mill = run("G00 X0 Y0\nG01 X30. Y40. F10000.\nX0 F500.\nM30\n");
+  EXPECT_EQ(feed_clamps(mill), 0);
+  EXPECT_NEAR(mill.motions()[1].seconds, 50.0 / 10000 * 60, 1e-12);
+  auto lathe = run("G99 G00 X40. Z0 S1000 M03\nG01 X28. F0.2\nM30\n", machine::default_lathe());
+  EXPECT_EQ(feed_clamps(lathe), 0);
+}

@@ -420,6 +420,7 @@ void Executor::emit_cycle_path(const std::vector<mrc::Step>& path, bool transpos
     m.length = std::fabs(s.sweep) * rs;
     m.feed = feed_;
     m.seconds = arc_feed_seconds(m, m.length);
+    clamp_cutting_feed(m, m.length);
     coords_.pos = target;
     emit(m);
   }
