@@ -134,25 +134,18 @@ private:
   double feed_seconds(double length, double r0, double r1) const;
   double arc_feed_seconds(const Move& m, double planar) const;
 
-  // drilling canned cycles (canned_cycles.cpp, boring_cycles.cpp, tapping_cycles.cpp)
-  struct Hole;
+  // drilling canned cycles (canned_cycles.cpp, tapping_cycles.cpp, lathe_drilling.cpp): the block's
+  // data and alarms; the holes' motions are the expanders' of hole_cycles.hpp, through HoleOutput
+  struct HoleOutput;
   void select_canned_cycle(int g, std::uint16_t column);
   void cancel_canned_cycle();
   bool canned_cycle_block();  // a block in cycle mode: stores the data, drills when it has axis words
-  void drill_hole(const Hole& h);
   void cycle_m_codes();  // the cycle block's M codes, at its first hole's positioning
   bool cycle_m_done_ = false;  // they were: the block's M codes make no event after it
-  void cycle_move(const Hole& h, MoveKind kind, double level);  // along the drilling axis
-  void cycle_dwell();
-  // pecks of q from R to the bottom, each followed by a rapid back by d (out to R first with out_to_r)
-  void peck_to_bottom(const Hole& h, double q, double d, bool out_to_r);
   int cycle_repeat_count();  // the block's K (or L), 1 without it; PS0045 beyond 0..9999
-  void boring_hole(const Hole& h);   // G76, G87, G88
-  void tapping_hole(const Hole& h);  // G84, G74, conventional and rigid
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
   bool lathe_drilling_block();  // a lathe's G83..G85, G87..G89 (lathe_drilling.cpp)
-  void lathe_hole(const Hole& h, double q);
 
   // tool position offset G45..G48 (position_offset.cpp)
   int position_offset_ = 0;  // 45..48 given in the block (one-shot), else 0

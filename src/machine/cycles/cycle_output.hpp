@@ -1,0 +1,23 @@
+// Where a cycle's expander writes the elementary moves of its block: the interpreter implements it
+// with its own move paths, a test records the moves. Positions are work coordinates, mm.
+#pragma once
+#include "machine/profile.hpp"
+
+namespace ncurve::machine {
+
+struct CycleOutput {
+  virtual ~CycleOutput() = default;
+  virtual AxisVector position() const = 0;  // where the tool is (a rotary axis may have rolled over)
+  virtual void rapid(const AxisVector& to) = 0;
+  virtual void feed(const AxisVector& to) = 0;  // at the feed in force
+  virtual void dwell(double seconds) = 0;
+  virtual void spindle(int m) = 0;  // M03, M04, M05, M19 (oriented stop)
+  virtual void m_code(int m) = 0;   // another M code the cycle gives out (a lathe's C-axis clamp)
+  virtual void program_stop() = 0;  // the cycle stops for the operator
+  // The operator brings the tool to `to` by hand (G88); it may already be there.
+  virtual void manual_return(const AxisVector& to) = 0;
+  // A hole is positioned, before the rapid to point R: the block's M codes act here.
+  virtual void positioned() {}
+};
+
+}  // namespace ncurve::machine
