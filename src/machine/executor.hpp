@@ -136,6 +136,7 @@ private:
 
   // drilling canned cycles (canned_cycles.cpp, tapping_cycles.cpp, lathe_drilling.cpp): the block's
   // data and alarms; the holes' motions are the expanders' of hole_cycles.hpp, through HoleOutput
+  struct CycleMoves;  // CycleOutput: the expanders' moves made here (cycle_moves.hpp)
   struct HoleOutput;
   void select_canned_cycle(int g, std::uint16_t column);
   void cancel_canned_cycle();
@@ -244,11 +245,9 @@ private:
   bool select_lathe_motion(int g, std::vector<int>& one_shot);  // handle_g_codes: false if g is none of them
   void lathe_motion(const AxisVector& target);  // a block with axis words in G32/G90/G92/G94 mode
   void end_lathe_cycle_data() { lathe_cycle_ = {}; }  // one-shot codes but G04 clear X, Z, R
-  void single_cycle(const AxisVector& target);      // G90/G92/G94
+  void single_cycle(const AxisVector& target);      // G90/G92/G94: the data; the moves are turning.hpp's
   void cycle_compensation_start(int side);         // the cycle's own start-up under G41/G42
   void thread_block(const AxisVector& target);     // G32
-  void g76_passes(const AxisVector& end, double taper, double height, double first_depth, double angle);
-  void thread_pass(const AxisVector& end, double out_x, double lead, double angle);  // cut, chamfer at the end
   void thread_cut(const AxisVector& to, double lead, double angle);
   double thread_start_angle();                     // Q in 0.001 deg, degrees
   double increments(const Cmd& c, const char* what) const;  // a length written in least increments, mm

@@ -1,8 +1,9 @@
-// The drilling cycles' expanders (src/machine/cycles/hole_cycles.*) alone, without an interpreter:
-// hole data given by hand, the moves recorded and compared with the cycle descriptions of the FANUC
-// 0i-MF / 0i-TF / 30i-B operator's manuals ("Canned cycle for drilling", "Rigid tapping"), worked
-// out by hand.
+// The cycles' expanders (src/machine/cycles/hole_cycles.*, turning.*) alone, without an interpreter:
+// the cycle's data given by hand, the moves recorded and compared with the cycle descriptions of the
+// FANUC 0i-MF / 0i-TF / 30i-B operator's manuals ("Canned cycle for drilling", "Rigid tapping",
+// "Single cutting cycle", "Multiple threading cycle"), worked out by hand.
 #include "machine/cycles/hole_cycles.hpp"
+#include "machine/cycles/turning.hpp"
 
 #include <gtest/gtest.h>
 #include <fmt/format.h>
@@ -15,8 +16,9 @@ using namespace ncurve::machine;
 
 namespace {
 
-// Records each output as a line: "R x y z" rapid, "F x y z" feed, "D s" dwell, "S m" spindle,
-// "M m", "STOP", "HAND x y z" (the operator's return), "AT" (positioned).
+// Records each output as a line: "R x y z" rapid, "F x y z" feed, "T x y z lead angle" thread cut,
+// "D s" dwell, "S m" spindle, "M m", "STOP", "HAND x y z" (the operator's return), "AT"
+// (positioned), "RET" (returning).
 struct Recorder final : CycleOutput {
   AxisVector at{};
   std::vector<std::string> got;
@@ -25,12 +27,16 @@ struct Recorder final : CycleOutput {
   AxisVector position() const override { return at; }
   void rapid(const AxisVector& to) override { got.push_back("R " + xyz(at = to)); }
   void feed(const AxisVector& to) override { got.push_back("F " + xyz(at = to)); }
+  void thread(const AxisVector& to, double lead, double angle) override {
+    got.push_back(fmt::format("T {} {:g} {:g}", xyz(at = to), lead, angle));
+  }
   void dwell(double s) override { got.push_back(fmt::format("D {:g}", s)); }
   void spindle(int m) override { got.push_back(fmt::format("S {}", m)); }
   void m_code(int m) override { got.push_back(fmt::format("M {}", m)); }
   void program_stop() override { got.push_back("STOP"); }
   void manual_return(const AxisVector& to) override { got.push_back("HAND " + xyz(at = to)); }
   void positioned() override { got.push_back("AT"); }
+  void returning() override { got.push_back("RET"); }
 };
 
 // A hole drilled along Z at X10 Y20 from the tool at X0 Y0 Z50: R2, Z-10.
@@ -312,4 +318,102 @@ TEST(DrillExpander, LatheTappingAndBoring) {
   out.got.clear();
   drill::lathe_hole(h, {}, out);
   EXPECT_EQ(out.got, (Lines{"R 0 0 2", "F 0 0 -10", "F 0 0 2", "R 0 0 20"}));
+}
+
+namespace {
+// A lathe cycle from A at X30 (a radius) Z5.
+std::vector<std::string> turned(const turn::SingleCycle& c, AxisVector a = {30, 0, 5}) {
+  Recorder out;
+  out.at = a;
+  turn::single_cycle(c, out);
+  return out.got;
+}
+turn::SingleCycle single(int code, double x, double z, double r = 0) {
+  turn::SingleCycle c;
+  c.code = code;
+  c.end = {x, 0, z, 0, 0, 0};
+  c.r = r;
+  return c;
+}
+}  // namespace
+
+// G90 X20 Z-30: (1) rapid X to 20, (2) feed Z to -30, (3) feed X back to 30, (4) rapid Z back to 5.
+// With R-5 the cut starts 5 below the end's X: a taper.
+TEST(TurningExpander, G90) {
+  EXPECT_EQ(turned(single(90, 20, -30)), (Lines{"R 20 0 5", "F 20 0 -30", "F 30 0 -30", "RET", "R 30 0 5"}));
+  EXPECT_EQ(turned(single(90, 20, -30, -5)), (Lines{"R 15 0 5", "F 20 0 -30", "F 30 0 -30", "RET", "R 30 0 5"}));
+}
+
+// G94 X10 Z-2: (1) rapid Z to -2, (2) feed X to 10, (3) feed Z back to 5, (4) rapid X back to 30;
+// the face cut starts 3 below the end's Z.
+TEST(TurningExpander, G94) {
+  EXPECT_EQ(turned(single(94, 10, -2)), (Lines{"R 30 0 -2", "F 10 0 -2", "F 10 0 5", "RET", "R 30 0 5"}));
+  EXPECT_EQ(turned(single(94, 10, -2, -3)), (Lines{"R 30 0 -5", "F 10 0 -2", "F 10 0 5", "RET", "R 30 0 5"}));
+}
+
+// A at the end point's X: (1) makes no move.
+TEST(TurningExpander, NoMoveWhereTheToolIs) {
+  EXPECT_EQ(turned(single(90, 30, -30)), (Lines{"F 30 0 -30", "RET", "R 30 0 5"}));
+}
+
+// G92 X9 Z-20 F1.5 from X15: (2) a thread cut at the lead, (3) a rapid out to A's X. With a chamfer
+// of 1.0 lead (r = 10) at F2: the thread leaves 2 mm before Z-20 and reaches Z-20 2 * tan 45 = 2 out
+// (No.5131 = 60: 2 * tan 60 = 3.4641 out); the spindle angle Q is the first cut's alone.
+TEST(TurningExpander, G92Threading) {
+  auto c = single(92, 9, -20);
+  c.thread.lead = 1.5;
+  EXPECT_EQ(turned(c, {15, 0, 5}), (Lines{"R 9 0 5", "T 9 0 -20 1.5 0", "R 15 0 -20", "RET", "R 15 0 5"}));
+  c.thread = {2, 10, 0};
+  c.start_angle = 90;
+  EXPECT_EQ(turned(c, {15, 0, 5}),
+            (Lines{"R 9 0 5", "T 9 0 -18 2 90", "T 11 0 -20 2 -1", "R 15 0 -20", "RET", "R 15 0 5"}));
+  c.thread.chamfer_angle = 60;
+  EXPECT_EQ(turned(c, {15, 0, 5})[2], "T 12.4641 0 -20 2 -1");
+}
+
+// The side of the first cut that A lies on, for the cycle's own nose radius offset: turning an outer
+// diameter towards the chuck (-Z) from above is G42 (right), facing towards the centre G41 (left).
+TEST(TurningExpander, StartSide) {
+  EXPECT_EQ(turn::start_side(single(90, 20, -30), {30, 0, 5}), -1);
+  EXPECT_EQ(turn::start_side(single(94, 10, -2), {30, 0, 5}), 1);
+  EXPECT_EQ(turn::start_side(single(90, 20, 5), {30, 0, 5}), 0);
+}
+
+// G76 depths, k = 1, Δd = 0.35, dmin = 0.1, d = 0.05, m = 2: Δd * sqrt(n) while each cut is at least
+// dmin: 0.35, 0.49497 (sqrt 2), 0.60622 (sqrt 3), then dmin steps 0.70622, 0.80622, 0.90622, the
+// next (1.00622) stopped at k - d = 0.95; two finishing passes at k.
+TEST(TurningExpander, G76Depths) {
+  turn::MultipleThreading c;
+  c.height = 1;
+  c.first = 0.35;
+  c.min_depth = 0.1;
+  c.allowance = 0.05;
+  c.finish_count = 2;
+  const std::vector<double> want = {0.35, 0.494975, 0.606218, 0.706218, 0.806218, 0.906218, 0.95, 1, 1};
+  const auto got = turn::thread_depths(c);
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-6) << i;
+  c.first = 1e-9;
+  c.min_depth = 0;
+  EXPECT_THROW(turn::thread_depths(c), turn::TooManyPasses);
+}
+
+// G76 passes from A X12 Z5 to the root X8.8 Z-20, k = 1, tool angle 60: a pass at depth d starts
+// (k - d) above the root and (k - d) * tan 30 back along Z (single edge cutting along the flank),
+// cuts, rapids out to A's X and back to A. Depth 0.5: X9.3, Z shift 0.288675.
+TEST(TurningExpander, G76Passes) {
+  turn::MultipleThreading c;
+  c.end = {8.8, 0, -20, 0, 0, 0};
+  c.height = 1;
+  c.tool_angle = 60;
+  c.thread.lead = 1.5;
+  Recorder out;
+  out.at = {12, 0, 5};
+  turn::multiple_threading(c, {0.5, 1}, out);
+  EXPECT_EQ(out.got, (Lines{"R 9.3 0 5.28868", "T 9.3 0 -19.7113 1.5 0", "R 12 0 -19.7113", "R 12 0 5",
+                            "R 8.8 0 5", "T 8.8 0 -20 1.5 0", "R 12 0 -20", "R 12 0 5"}));
+  c.taper = -1;  // R(i): the start of each cut 1 lower
+  out.got.clear();
+  turn::multiple_threading(c, {1}, out);
+  EXPECT_EQ(out.got, (Lines{"R 7.8 0 5", "T 8.8 0 -20 1.5 0", "R 12 0 -20", "R 12 0 5"}));
 }

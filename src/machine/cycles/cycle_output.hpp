@@ -10,6 +10,9 @@ struct CycleOutput {
   virtual AxisVector position() const = 0;  // where the tool is (a rotary axis may have rolled over)
   virtual void rapid(const AxisVector& to) = 0;
   virtual void feed(const AxisVector& to) = 0;  // at the feed in force
+  // A thread cut at `lead` mm per spindle revolution, starting at the spindle angle `start_angle`
+  // (degrees; -1: it continues the cut before it).
+  virtual void thread(const AxisVector& to, double lead, double start_angle) = 0;
   virtual void dwell(double seconds) = 0;
   virtual void spindle(int m) = 0;  // M03, M04, M05, M19 (oriented stop)
   virtual void m_code(int m) = 0;   // another M code the cycle gives out (a lathe's C-axis clamp)
@@ -18,6 +21,8 @@ struct CycleOutput {
   virtual void manual_return(const AxisVector& to) = 0;
   // A hole is positioned, before the rapid to point R: the block's M codes act here.
   virtual void positioned() {}
+  // The cutting moves are over: the return to the start point follows (a lathe's G90, G94).
+  virtual void returning() {}
 };
 
 }  // namespace ncurve::machine
