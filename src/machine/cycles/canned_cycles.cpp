@@ -9,6 +9,7 @@
 
 #include "base/restore.hpp"
 #include "machine/cycles/drilling.hpp"
+#include "machine/cycles/hole_driller.hpp"
 
 namespace ncurve::machine {
 
@@ -124,14 +125,14 @@ bool Executor::canned_cycle_block() {
         h.at = pos_;
         axis_target(h.at);
       }
-      drill::mill_hole(h, parameters, out);
+      drill::mill_hole_to(h, parameters, out);
     }
     return true;
   }
   AxisVector step{};  // G91: each repeat moves by the increment again; G90: the same hole
   if (modal_.incremental)
     for (int a = 0; a < kAxes; ++a) step[a] = hole[a] - base[a];
-  drill::mill_holes(h, repeat, step, parameters, out);
+  drill::mill_holes_to(h, repeat, step, parameters, out);
   return true;
 }
 

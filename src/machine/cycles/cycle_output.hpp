@@ -7,7 +7,9 @@ namespace ncurve::machine {
 
 struct CycleOutput {
   virtual ~CycleOutput() = default;
-  virtual AxisVector position() const = 0;  // where the tool is (a rotary axis may have rolled over)
+  // Where the tool is. A move ends at its target, but a rotary axis (A, B, C) with roll-over may be
+  // given back within one turn: read it again after a move that turns one.
+  virtual AxisVector position() const = 0;
   virtual void rapid(const AxisVector& to) = 0;
   virtual void feed(const AxisVector& to) = 0;  // at the feed in force
   // A thread cut at `lead` mm per spindle revolution, starting at the spindle angle `start_angle`
@@ -19,7 +21,7 @@ struct CycleOutput {
   virtual void program_stop() = 0;  // the cycle stops for the operator
   // The operator brings the tool to `to` by hand (G88); it may already be there.
   virtual void manual_return(const AxisVector& to) = 0;
-  // A hole is positioned, before the rapid to point R: the block's M codes act here.
+  // A hole is positioned, before the rapid to point R: the block's M codes act here (no move).
   virtual void positioned() {}
   // The cutting moves are over: the return to the start point follows (a lathe's G90, G94).
   virtual void returning() {}

@@ -42,5 +42,6 @@ void mill_holes(const Hole& h, int count, const AxisVector& step, const Paramete
 // and dwell No.5111. q = 0: G83/G87 drill in one cut.
 void lathe_hole(const Hole& h, const Parameters& p, CycleOutput& out);
 void lathe_holes(const Hole& h, int count, const AxisVector& step, const Parameters& p, CycleOutput& out);
+// hole_driller.hpp has each of these as a template on the output type (mill_holes_to ...).
 
 }  // namespace ncurve::machine::drill
