@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,7 +20,7 @@ namespace {
 // Records each output as a line: "R x y z" rapid, "F x y z" feed, "T x y z lead angle" thread cut,
 // "D s" dwell, "S m" spindle, "M m", "STOP", "HAND x y z" (the operator's return), "AT"
 // (positioned), "RET" (returning).
-struct Recorder final : CycleOutput {
+struct Recorder : CycleOutput {
   AxisVector at{};
   std::vector<std::string> got;
 
@@ -273,6 +274,34 @@ TEST(DrillExpander, LatheFaceDrillingWithClamp) {
   drill::lathe_hole(h, p, out);
   EXPECT_EQ(out.got, (Lines{"R 0 0 20", "M 68", "R 0 0 2", "F 0 0 -10", "D 0.5", "R 0 0 20", "M 69", "D 0.2"}));
   EXPECT_EQ(out.at[5], 90);
+}
+
+// A C axis with roll-over given back within one turn after each move, as the control keeps it: the
+// moves after the positioning are made from where the output says the tool is.
+TEST(DrillExpander, RotaryRollOverIsReadBack) {
+  struct Rolling : Recorder {
+    std::vector<double> c;
+    void rapid(const AxisVector& to) override {
+      Recorder::rapid(to);
+      at[5] = std::fmod(at[5], 360.0);
+      c.push_back(at[5]);
+    }
+    void feed(const AxisVector& to) override {
+      Recorder::feed(to);
+      c.push_back(to[5]);
+    }
+  } out;
+  drill::Hole h;
+  h.code = 83;
+  h.axis = 2;
+  h.at = {0, 0, 0, 0, 0, 370};
+  h.initial = 20;
+  h.r = 2;
+  h.z = -10;
+  out.at = {0, 0, 20, 0, 0, 0};
+  drill::lathe_hole(h, {}, out);
+  EXPECT_EQ(out.got, (Lines{"R 0 0 20", "R 0 0 2", "F 0 0 -10", "R 0 0 20"}));
+  EXPECT_EQ(out.c, (std::vector<double>{10, 10, 10, 10}));
 }
 
 // A lathe's G83 with Q: No.5101#2 RTR = 0 pecks as G73 (d = No.5114), 1 as G83 (d = No.5115).
