@@ -170,25 +170,19 @@ private:
   double arc_feed_seconds(const Move& m, double planar) const;
   void clamp_cutting_feed(Move& m, double fed);  // NC2073: over the maximum cutting feed
 
-  // drilling canned cycles (canned_cycles.cpp, boring_cycles.cpp, tapping_cycles.cpp)
-  struct Hole;
+  // drilling canned cycles (canned_cycles.cpp, tapping_cycles.cpp, lathe_drilling.cpp): the block's
+  // data and alarms; the holes' motions are the expanders' of hole_cycles.hpp, through HoleOutput
+  struct CycleMoves;  // CycleOutput: the expanders' moves made here (cycle_moves.hpp)
+  struct HoleOutput;
   void select_canned_cycle(int g, std::uint16_t column);
   void cancel_canned_cycle();
   bool canned_cycle_block();  // a block in cycle mode: stores the data, drills when it has axis words
-  void drill_hole(const Hole& h);
   void cycle_m_codes();  // the cycle block's M codes, at its first hole's positioning
   bool cycle_m_done_ = false;  // they were: the block's M codes make no event after it
-  void cycle_move(const Hole& h, MoveKind kind, double level);  // along the drilling axis
-  void cycle_dwell();
-  // pecks of q from R to the bottom, each followed by a rapid back by d (out to R first with out_to_r)
-  void peck_to_bottom(const Hole& h, double q, double d, bool out_to_r);
   int cycle_repeat_count();  // the block's K (or L), 1 without it; PS0045 beyond 0..9999
-  void boring_hole(const Hole& h);   // G76, G87, G88
-  void tapping_hole(const Hole& h);  // G84, G74, conventional and rigid
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
   bool lathe_drilling_block();  // a lathe's G83..G85, G87..G89 (lathe_drilling.cpp)
-  void lathe_hole(const Hole& h, double q);
 
   // tool position offset G45..G48 (position_offset.cpp)
   int position_offset_ = 0;  // 45..48 given in the block (one-shot), else 0
@@ -276,11 +270,9 @@ private:
   bool select_lathe_motion(int g, std::vector<int>& one_shot);  // handle_g_codes: false if g is none of them
   void lathe_motion(const AxisVector& target);  // a block with axis words in G32/G90/G92/G94 mode
   void end_lathe_cycle_data() { lathe_cycle_ = {}; }  // one-shot codes but G04 clear X, Z, R
-  void single_cycle(const AxisVector& target);      // G90/G92/G94
+  void single_cycle(const AxisVector& target);      // G90/G92/G94: the data; the moves are turning.hpp's
   void cycle_compensation_start(int side);         // the cycle's own start-up under G41/G42
   void thread_block(const AxisVector& target);     // G32
-  void g76_passes(const AxisVector& end, double taper, double height, double first_depth, double angle);
-  void thread_pass(const AxisVector& end, double out_x, double lead, double angle);  // cut, chamfer at the end
   void thread_cut(const AxisVector& to, double lead, double angle);
   double thread_start_angle();                     // Q in 0.001 deg, degrees
   double increments(const Cmd& c, const char* what) const;  // a length written in least increments, mm

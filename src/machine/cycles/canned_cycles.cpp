@@ -1,7 +1,7 @@
 // Drilling canned cycles of a FANUC mill (group 09): a cycle block's data, the drilling axis, the
-// hole positions and repeats, and the motions of G73, G81..G83, G85, G86 and G89. FANUC 30i-B /
-// 0i-MF operator's manual, "Canned cycle for drilling". G76, G87, G88: boring_cycles.cpp; G84, G74
-// and rigid tapping: tapping_cycles.cpp.
+// hole positions and repeats, and the block's alarms; the holes' motions are hole_cycles.cpp's.
+// FANUC 30i-B / 0i-MF operator's manual, "Canned cycle for drilling". Rigid tapping's words and
+// checks: tapping_cycles.cpp.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -9,28 +9,9 @@
 
 #include "base/restore.hpp"
 #include "machine/cycles/drilling.hpp"
+#include "machine/cycles/hole_driller.hpp"
 
 namespace ncurve::machine {
-
-namespace {
-const char* cycle_name(int g) {
-  switch (g) {
-    case 73: return "high-speed peck drilling cycle";
-    case 74: return "left-handed tapping cycle";
-    case 76: return "fine boring cycle";
-    case 81: return "drilling cycle";
-    case 82: return "drilling cycle with dwell";
-    case 83: return "peck drilling cycle";
-    case 84: return "tapping cycle";
-    case 85: return "boring cycle";
-    case 86: return "boring cycle";
-    case 87: return "back boring cycle";
-    case 88: return "boring cycle";
-    case 89: return "boring cycle with dwell";
-    default: return "canned cycle";
-  }
-}
-}  // namespace
 
 // G73..G89 in a block (x10 codes).
 void Executor::select_canned_cycle(int g, std::uint16_t) {
@@ -120,36 +101,38 @@ bool Executor::canned_cycle_block() {
   if (rigid) rigid_tapping_check(gcol);
 
   cycle_axis_ = ax;
-  Hole h;
+  drill::Hole h;
+  h.code = g;
+  h.at = hole;
   h.axis = ax;
   h.initial = cycle_initial_[ax];
   h.r = !cycle_r_ ? h.initial : modal_.incremental ? h.initial + *cycle_r_ : *cycle_r_;
   h.z = !cycle_z_ ? h.r : modal_.incremental ? h.r + *cycle_z_ : *cycle_z_;
-  h.back = modal_.cycle_return_initial ? h.initial : h.r;
+  if (xf_on_ && xf_.active()) transformed_cycle_levels(ax, h.r, h.z);
+  h.return_initial = modal_.cycle_return_initial;
+  h.q = cycle_q_;
+  h.p = cycle_p_;
   h.rigid = rigid;
   // Under cutter compensation the cycle's moves are made at the programmed points, the vector
   // cancelled as for G28, and the next move restores it.
   const base::RestoreOnExit restore_suspended(comp_suspended_);
   if (compensating()) comp_suspended_ = true;
-  AxisVector step{};
-  for (int a = 0; a < kAxes; ++a) step[a] = modal_.incremental ? hole[a] - base[a] : 0;
-  for (int k = 0; k < repeat; ++k) {
-    if (k > 0 && modal_.incremental && xf_on_) {  // G16, G51.1, G51, G68: the incremental command again
-      hole = coords_.pos;
-      axis_target(hole);
-      hole[ax] = coords_.pos[ax];
-    } else if (k > 0) {  // G91: each repeat moves by the increment again; G90: the same hole
-      for (int a = 0; a < kAxes; ++a)
-        if (a != ax) hole[a] = coords_.pos[a] + step[a];
+  const drill::Parameters parameters = drill_parameters(profile_);
+  HoleOutput out(*this, h);
+  if (modal_.incremental && xf_on_) {  // G16, G51.1, G51, G68: each repeat takes the incremental command again
+    for (int k = 0; k < repeat; ++k) {
+      if (k > 0) {
+        h.at = coords_.pos;
+        axis_target(h.at);
+      }
+      drill::mill_hole_to(h, parameters, out);
     }
-    Hole at = h;
-    at.at = hole;
-    if (xf_on_ && xf_.active()) {
-      transformed_cycle_levels(ax, at.r, at.z);
-      at.back = modal_.cycle_return_initial ? at.initial : at.r;
-    }
-    drill_hole(at);
+    return true;
   }
+  AxisVector step{};  // G91: each repeat moves by the increment again; G90: the same hole
+  if (modal_.incremental)
+    for (int a = 0; a < kAxes; ++a) step[a] = hole[a] - base[a];
+  drill::mill_holes_to(h, repeat, step, parameters, out);
   return true;
 }
 
@@ -166,68 +149,6 @@ void Executor::cycle_m_codes() {
   }
 }
 
-void Executor::cycle_move(const Hole& h, MoveKind kind, double level) {
-  AxisVector t = coords_.pos;
-  t[h.axis] = level;
-  if (t[h.axis] != coords_.pos[h.axis]) linear(kind, t);
-}
-
-void Executor::cycle_dwell() {
-  Move m;
-  m.kind = MoveKind::dwell;
-  m.start = m.end = coords_.pos;
-  m.seconds = cycle_p_;
-  emit(m);
-}
-
-// One hole: position at the current level, rapid to R, the cycle's motions, return to the initial
-// level (G98) or to R (G99).
-void Executor::drill_hole(const Hole& h) {
-  const int g = modal_.cycle;
-  AxisVector at = h.at;
-  at[h.axis] = coords_.pos[h.axis];
-  if (at != coords_.pos) linear(MoveKind::rapid, at);
-  if (!m_codes_.empty()) [[unlikely]] cycle_m_codes();
-  if (g == 76 || g == 87 || g == 88) return boring_hole(h);
-  if (g == 84 || g == 74) return tapping_hole(h);
-  cycle_move(h, MoveKind::rapid, h.r);
-  switch (g) {
-    case 81:
-      cycle_move(h, MoveKind::line, h.z);
-      cycle_move(h, MoveKind::rapid, h.back);
-      break;
-    case 82:
-      cycle_move(h, MoveKind::line, h.z);
-      cycle_dwell();
-      cycle_move(h, MoveKind::rapid, h.back);
-      break;
-    case 73: case 83:
-      // G73: back by d to break the chip; G83: out to R, then down to d short of the last depth
-      peck_to_bottom(h, cycle_q_, g == 73 ? profile_.peck_retract : profile_.peck_clearance, g == 83);
-      cycle_move(h, MoveKind::rapid, h.back);
-      break;
-    case 85:
-      cycle_move(h, MoveKind::line, h.z);
-      cycle_move(h, MoveKind::line, h.r);
-      cycle_move(h, MoveKind::rapid, h.back);
-      break;
-    case 89:
-      cycle_move(h, MoveKind::line, h.z);
-      cycle_dwell();
-      cycle_move(h, MoveKind::line, h.r);
-      cycle_move(h, MoveKind::rapid, h.back);
-      break;
-    case 86:  // the spindle stops at the bottom and starts again at the return level
-      cycle_move(h, MoveKind::line, h.z);
-      emit_event(MoveKind::spindle, 5);
-      cycle_move(h, MoveKind::rapid, h.back);
-      emit_event(MoveKind::spindle, 3);
-      break;
-    default:
-      alarm("NC9001", fmt::format("G{} ({}) is not supported yet", g, cycle_name(g)));
-  }
-}
-
 int Executor::cycle_repeat_count() {
   const char letter = profile_.drilling.repeat_address;
   if (!has(letter)) return 1;
@@ -240,20 +161,6 @@ int Executor::cycle_repeat_count() {
                                 letter, repeat),
           word(letter).column);
   return repeat;
-}
-
-void Executor::peck_to_bottom(const Hole& h, double q, double d, bool out_to_r) {
-  const double dir = h.into();
-  double depth = h.r;  // reached so far
-  for (;;) {
-    double next = depth + dir * q;
-    if ((next - h.z) * dir >= 0) next = h.z;
-    cycle_move(h, MoveKind::line, next);
-    depth = next;
-    if (depth == h.z) return;
-    if (out_to_r) cycle_move(h, MoveKind::rapid, h.r);
-    cycle_move(h, MoveKind::rapid, depth - dir * d);
-  }
 }
 
 }  // namespace ncurve::machine

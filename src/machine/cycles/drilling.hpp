@@ -1,16 +1,31 @@
-// One hole of a drilling canned cycle, as canned_cycles.cpp works it out for the cycle's motions.
+// The Executor's side of the drilling cycles' expanders (hole_cycles.hpp).
 #pragma once
-#include "machine/executor.hpp"
+#include <fmt/format.h>
+
+#include "machine/cycles/cycle_moves.hpp"
+#include "machine/cycles/hole_cycles.hpp"
 
 namespace ncurve::machine {
 
-struct Executor::Hole {
-  AxisVector at{};  // the hole position (its coordinate along the drilling axis is not used)
-  int axis = 2;     // the drilling axis: 2 Z, 1 Y, 0 X
-  double initial = 0, r = 0, z = 0;  // levels along the drilling axis
-  double back = 0;  // where the hole ends: the initial level (G98) or point R (G99)
-  bool rigid = false;
-  double into() const { return z < r ? -1.0 : 1.0; }  // from R towards Z
+// G88's return by hand is a warning and a rapid; a mill's block M codes act at the positioning.
+struct Executor::HoleOutput final : CycleMoves {
+  HoleOutput(Executor& x, const drill::Hole& h) : CycleMoves(x), hole(h) {}
+  const drill::Hole& hole;
+
+  void manual_return(const AxisVector& to) override {
+    x.warn("NC2005", fmt::format("G88 stops at the bottom of the hole ({} {:.3f}) for the operator to bring the tool "
+                                 "back to point R by hand (JOG or handle) and press cycle start; ncurve takes that "
+                                 "as a straight rapid to R",
+                                 "XYZ"[hole.axis], hole.z));
+    CycleMoves::manual_return(to);
+  }
+  void positioned() override {
+    if (!x.m_codes_.empty()) [[unlikely]] x.cycle_m_codes();
+  }
 };
+
+inline drill::Parameters drill_parameters(const MachineProfile& p) {
+  return {p.peck_retract, p.peck_clearance, p.drilling};
+}
 
 }  // namespace ncurve::machine

@@ -1,12 +1,14 @@
 // Lathe single cutting cycles of group 01: G90 outer/inner diameter cutting, G94 end face cutting and
 // G92 threading (G77, G79, G78 on G-code systems B and C), as the FANUC 0i-TF / 30i-B lathe operator's
-// manuals describe them: four moves from the start point A and back to it, X(U) Z(W) R modal.
+// manuals describe them: four moves from the start point A and back to it (turning.cpp), X(U) Z(W) R
+// modal.
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "base/restore.hpp"
-#include "machine/executor.hpp"
+#include "machine/cycles/cycle_moves.hpp"
+#include "machine/cycles/turning.hpp"
 
 namespace ncurve::machine {
 
@@ -65,10 +67,7 @@ void Executor::lathe_motion(const AxisVector& target) {
   else if (single_cycle_code(code)) single_cycle(target);
 }
 
-// One cycle from A (the current position) to the cutting end point E:
-//   G90: (1) rapid X to E.x + R, (2) feed to E, (3) feed X back to A.x, (4) rapid Z back to A.z
-//   G94: (1) rapid Z to E.z + R, (2) feed to E, (3) feed Z back to A.z, (4) rapid X back to A.x
-//   G92: as G90 with (2) a thread cut ending in the No.5130 chamfer and (3) at rapid traverse
+// One cycle from A (the current position) to the cutting end point E (turning.hpp).
 void Executor::single_cycle(const AxisVector& target) {
   const bool system_a = profile_.gcode_system == 'A';
   const int code = system_a_code(modal_.motion * 10, system_a);
@@ -80,49 +79,34 @@ void Executor::single_cycle(const AxisVector& target) {
     if (a != 0 && a != 2 && target[a] != coords_.pos[a])
       alarm("NC9001", fmt::format("G{} ({}) with a move of an axis other than X and Z is not supported yet", written,
                                   cycle_name(code)));
-  AxisVector end = target;
-  if (has('X') || (system_a && has('U'))) lathe_cycle_.x = end[0];
-  else if (lathe_cycle_.x) end[0] = *lathe_cycle_.x;
-  if (has('Z') || (system_a && has('W'))) lathe_cycle_.z = end[2];
-  else if (lathe_cycle_.z) end[2] = *lathe_cycle_.z;
+  turn::SingleCycle c;
+  c.code = code;
+  c.end = target;
+  if (has('X') || (system_a && has('U'))) lathe_cycle_.x = c.end[0];
+  else if (lathe_cycle_.x) c.end[0] = *lathe_cycle_.x;
+  if (has('Z') || (system_a && has('W'))) lathe_cycle_.z = c.end[2];
+  else if (lathe_cycle_.z) c.end[2] = *lathe_cycle_.z;
   if (has('R')) lathe_cycle_.r = dimension(word('R'));
-  const double r = lathe_cycle_.r;
-  const double angle = code == 92 ? thread_start_angle() : 0;
+  c.r = lathe_cycle_.r;
+  c.start_angle = code == 92 ? thread_start_angle() : 0;
+  c.thread = {feed_, thread_chamfer_, profile_.thread_chamfer_angle};
 
-  const AxisVector a = coords_.pos;
-  AxisVector p1 = a, p3 = end;
-  if (code == 94) {
-    p1[2] = end[2] + r;
-    p3[2] = a[2];
-  } else {
-    p1[0] = end[0] + r;
-    p3[0] = a[0];
-  }
   // Tool-nose radius compensation: the vector is cancelled at A, the cycle starts up its own offset
-  // on the side the cutting pattern gives (whatever G41/G42 says) and cancels it on the return to A.
-  // G92 is threaded without compensation.
+  // on the side the cutting pattern gives (whatever G41/G42 says) and cancels it on the return to A
+  // (CycleMoves::returning). G92 is threaded without compensation.
   const int programmed_side = modal_.comp_side;
   const base::RestoreOnExit restore_side(modal_.comp_side);
   if (compensating()) {
     comp_->cancel_at_end();
     int side = 0;
     if (programmed_side != 0 && code != 92) {
-      // A's side of the cut (1)->(2) in the G18 plane (Z, X): left is G41
-      const double dp = end[2] - p1[2], dq = end[0] - p1[0];
-      const double cross = dp * (a[0] - p1[0]) - dq * (a[2] - p1[2]);
-      side = cross > 0 ? 1 : cross < 0 ? -1 : programmed_side;
+      side = turn::start_side(c, coords_.pos);
+      if (side == 0) side = programmed_side;
     }
     modal_.comp_side = side;
   }
-  auto go = [&](MoveKind kind, const AxisVector& to) {
-    if (to != coords_.pos) linear(kind, to);
-  };
-  go(MoveKind::rapid, p1);
-  if (code == 92) thread_pass(end, a[0], feed_, angle);
-  else go(MoveKind::line, end);
-  go(code == 92 ? MoveKind::rapid : MoveKind::line, p3);
-  modal_.comp_side = 0;  // the return to A cancels the cycle's offset
-  go(MoveKind::rapid, a);
+  CycleMoves out(*this);
+  turn::single_cycle(c, out);
 }
 
 }  // namespace ncurve::machine

@@ -1,7 +1,8 @@
 // A lathe's canned cycles for drilling (group 10): face drilling, tapping and boring along Z (G83,
 // G84, G85) and side drilling, tapping and boring along X (G87, G88, G89), as the FANUC 0i-TF /
 // 30i-B lathe operator's manuals describe them ("Canned cycle for drilling"). The codes are the same
-// in G-code systems A, B and C. docs/lathe-cycles.md, "Drilling cycles".
+// in G-code systems A, B and C. docs/lathe-cycles.md, "Drilling cycles". The block's data and
+// alarms; the holes' motions are hole_cycles.cpp's.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -89,7 +90,9 @@ bool Executor::lathe_drilling_block() {
     return c.letter == 'M' && std::lround(c.value) == clamp;
   }) ? clamp : -1;
 
-  Hole h;
+  drill::Hole h;
+  h.code = g;
+  h.at = hole;
   h.axis = ax;
   h.initial = cycle_initial_[ax];
   const bool r_incremental = system_a ? !profile_.drilling.lathe_r_absolute : modal_.incremental;
@@ -98,7 +101,10 @@ bool Executor::lathe_drilling_block() {
   h.z = cycle_z_incremental_ ? h.r + *cycle_z_ : *cycle_z_;
   // G98/G99 choose the return level in systems B and C; system A has no such codes (G98/G99 are
   // feed per minute/revolution there) and returns to the initial level
-  h.back = system_a || modal_.cycle_return_initial ? h.initial : h.r;
+  h.return_initial = system_a || modal_.cycle_return_initial;
+  h.q = q;
+  h.p = cycle_p_;
+  h.clamp_m = std::max(cycle_clamp_m_, 0);
   // Under tool-nose radius compensation the moves are made at the programmed points, the vector
   // cancelled as for G28, and the next move restores it (as the mill's cycles do).
   const base::RestoreOnExit restore_suspended(comp_suspended_);
@@ -113,73 +119,9 @@ bool Executor::lathe_drilling_block() {
     }
     if (a >= 0 && a != ax && inc) step[a] = hole[a] - base[a];
   }
-  for (int k = 0; k < repeat; ++k) {
-    if (k > 0)
-      for (int a = 0; a < kAxes; ++a)
-        if (a != ax) hole[a] = coords_.pos[a] + step[a];
-    Hole at = h;
-    at.at = hole;
-    lathe_hole(at, q);
-  }
+  HoleOutput out(*this, h);
+  drill::lathe_holes(h, repeat, step, drill_parameters(profile_), out);
   return true;
-}
-
-// One hole: position at the current level, clamp C (if asked), rapid to R, the cycle's motions,
-// return to the initial level (G98, system A) or to R (G99), unclamp C and dwell No.5111.
-void Executor::lathe_hole(const Hole& h, double q) {
-  const int g = modal_.cycle;
-  AxisVector at = h.at;
-  at[h.axis] = coords_.pos[h.axis];
-  if (at != coords_.pos) linear(MoveKind::rapid, at);
-  if (cycle_clamp_m_ > 0) emit_event(MoveKind::m_code, cycle_clamp_m_);
-  cycle_move(h, MoveKind::rapid, h.r);
-  auto dwell = [&] {
-    if (cycle_p_ > 0) cycle_dwell();
-  };
-  switch (g) {
-    case 83: case 87:
-      if (q > 0) {
-        // No.5101#2 RTR = 0: high-speed peck, back by d = No.5114 after each cut; 1: peck, out to R
-        // and back down to d = No.5115 short of the last depth
-        const bool to_r = profile_.drilling.lathe_peck_to_r;
-        peck_to_bottom(h, q, to_r ? profile_.peck_clearance : profile_.peck_retract, to_r);
-      } else {
-        cycle_move(h, MoveKind::line, h.z);
-      }
-      dwell();
-      cycle_move(h, MoveKind::rapid, h.back);
-      break;
-    case 84: case 88: {
-      // at the bottom and back at R: dwell P, then the spindle reverses (M05 first unless No.5101#6 M5T = 1)
-      auto reversal = [&](int code) {
-        dwell();
-        if (!profile_.drilling.tap_without_m05) emit_event(MoveKind::spindle, 5);
-        emit_event(MoveKind::spindle, code);
-      };
-      cycle_move(h, MoveKind::line, h.z);
-      reversal(4);
-      cycle_move(h, MoveKind::line, h.r);
-      reversal(3);
-      cycle_move(h, MoveKind::rapid, h.back);
-      break;
-    }
-    default:  // G85, G89: bore to the bottom, dwell, feed back out to R
-      cycle_move(h, MoveKind::line, h.z);
-      dwell();
-      cycle_move(h, MoveKind::line, h.r);
-      cycle_move(h, MoveKind::rapid, h.back);
-      break;
-  }
-  if (cycle_clamp_m_ > 0) {
-    emit_event(MoveKind::m_code, cycle_clamp_m_ + 1);
-    if (profile_.drilling.c_unclamp_dwell > 0) {
-      Move m;
-      m.kind = MoveKind::dwell;
-      m.start = m.end = coords_.pos;
-      m.seconds = profile_.drilling.c_unclamp_dwell;
-      emit(m);
-    }
-  }
 }
 
 }  // namespace ncurve::machine

@@ -1,7 +1,6 @@
-// Tapping cycles G84 (right-hand) and G74 (left-hand): with a floating holder, where the control
-// reverses the spindle by M codes, and rigid tapping (M29, or No.5200#0), where the spindle turns
-// with the drilling axis, with or without pecks (Q). FANUC 0i-MF / 30i-B operator's manuals,
-// "Tapping cycle" and "Rigid tapping".
+// Rigid tapping of a mill (M29, or No.5200#0, with G84/G74): the words M29 allows before its cycle
+// and what a rigid hole needs. FANUC 0i-MF / 30i-B operator's manuals, "Rigid tapping". The tapping
+// motions: hole_cycles.cpp.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,66 +9,6 @@
 #include "machine/cycles/drilling.hpp"
 
 namespace ncurve::machine {
-
-void Executor::tapping_hole(const Hole& h) {
-  const int forward = modal_.cycle == 84 ? 3 : 4, reverse = modal_.cycle == 84 ? 4 : 3;
-  auto spindle = [&](int code) { emit_event(MoveKind::spindle, code); };
-  auto dwell = [&] {
-    if (cycle_p_ > 0) cycle_dwell();
-  };
-  cycle_move(h, MoveKind::rapid, h.r);
-  if (!h.rigid) {
-    // at Z and back at R: dwell P, then the spindle reverses (M05 first unless No.5101#6 M5T = 1)
-    auto reversal = [&](int code) {
-      dwell();
-      if (!profile_.drilling.tap_without_m05) spindle(5);
-      spindle(code);
-    };
-    cycle_move(h, MoveKind::line, h.z);
-    reversal(reverse);
-    cycle_move(h, MoveKind::line, h.r);
-    reversal(forward);
-    cycle_move(h, MoveKind::rapid, h.back);
-    return;
-  }
-  // Rigid: every move in the hole is a feed with the spindle synchronised; the spindle events mark
-  // its direction. Pecks (Q): No.5200#5 PCP = 0 backs off by d = No.5213 after each cut, 1 goes
-  // out to R and back down to d short of the last depth.
-  const double dir = h.into();
-  const double d = profile_.drilling.rigid_return;
-  auto clamp_to_r = [&](double level) { return (level - h.r) * dir < 0 ? h.r : level; };
-  spindle(forward);
-  if (cycle_has_q_ && cycle_q_ > 0) {
-    double depth = h.r;
-    for (;;) {
-      double next = depth + dir * cycle_q_;
-      if ((next - h.z) * dir >= 0) next = h.z;
-      cycle_move(h, MoveKind::line, next);
-      depth = next;
-      if (depth == h.z) break;
-      spindle(reverse);
-      if (profile_.drilling.peck_to_r) {
-        cycle_move(h, MoveKind::line, h.r);
-        spindle(forward);
-        cycle_move(h, MoveKind::line, clamp_to_r(depth - dir * d));
-      } else {
-        cycle_move(h, MoveKind::line, clamp_to_r(depth - dir * d));
-        spindle(forward);
-      }
-    }
-  } else {
-    cycle_move(h, MoveKind::line, h.z);
-  }
-  // "the spindle is stopped and a dwell is performed; the spindle is then rotated in the reverse
-  // direction, the tool is retracted to point R, then the spindle is stopped"
-  spindle(5);
-  dwell();
-  spindle(reverse);
-  cycle_move(h, MoveKind::line, h.r);
-  spindle(5);
-  dwell();
-  cycle_move(h, MoveKind::rapid, h.back);
-}
 
 // At a rigid tapping hole: the spindle speed and the feed it needs.
 void Executor::rigid_tapping_check(std::uint16_t column) const {

@@ -1,21 +1,20 @@
-// Lathe threading: G32 (G33 on G-code systems B and C) thread cuts, the pass of the G92 threading
-// cycle with its chamfer, and the G76 multiple threading cycle, as the FANUC 0i-TF / 30i-B lathe
-// operator's manuals describe them. A thread cut is fed per revolution at the lead F, the feed held
+// Lathe threading: G32 (G33 on G-code systems B and C) thread cuts and the data of the G76 multiple
+// threading cycle (its passes: turning.cpp), as the FANUC 0i-TF / 30i-B lathe operator's manuals
+// describe them. A thread cut is fed per revolution at the lead F, the feed held
 // at 100 %; each is marked (Move::threading) with the spindle angle it starts at.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "base/restore.hpp"
-#include "machine/executor.hpp"
+#include "machine/cycles/cycle_moves.hpp"
+#include "machine/cycles/turning.hpp"
 
 namespace ncurve::machine {
 
 namespace {
 bool valid_tool_angle(int a) { return a == 0 || a == 29 || a == 30 || a == 55 || a == 60 || a == 80; }
-constexpr double kDeg = std::numbers::pi / 180;
 }  // namespace
 
 double Executor::increments(const Cmd& c, const char* what) const {
@@ -55,27 +54,6 @@ void Executor::thread_cut(const AxisVector& to, double lead, double angle) {
   m.seconds = along / lead * 60.0 * minutes_per_rev(coords_.pos[0], to[0]);
   coords_.pos = to;
   emit(m);
-}
-
-// The thread cut of a G92 or G76 pass, to `end`. With a chamfer r (No.5130 or G76's P, in 0.1 leads)
-// the tool leaves the thread r before the end point's Z and reaches it r * tan(No.5131, 45 degrees
-// when 0) out, toward the retract level out_x.
-void Executor::thread_pass(const AxisVector& end, double out_x, double lead, double angle) {
-  const double dz = std::fabs(end[2] - coords_.pos[2]);
-  const double run = std::min(thread_chamfer_ * 0.1 * lead, dz);
-  if (run <= 0) return thread_cut(end, lead, angle);
-  const AxisVector from = coords_.pos;
-  AxisVector chamfer = end;
-  for (int a = 0; a < kAxes; ++a) chamfer[a] = end[a] - (end[a] - from[a]) * run / dz;
-  const double theta = (profile_.thread_chamfer_angle == 0 ? 45 : profile_.thread_chamfer_angle) * kDeg;
-  const double out = out_x > end[0] ? 1.0 : out_x < end[0] ? -1.0 : 0.0;
-  AxisVector pulled = end;
-  pulled[0] = chamfer[0] + out * run * std::tan(theta);
-  if (chamfer != coords_.pos) {
-    thread_cut(chamfer, lead, angle);
-    angle = -1;
-  }
-  thread_cut(pulled, lead, angle);
 }
 
 // G32 X(U) Z(W) F Q: one cut; a G32 block right after another continues its thread (no wait for the
@@ -152,51 +130,32 @@ void Executor::multiple_threading_cycle() {
   if (g76_min_depth_ > height)
     alarm("PS0316", fmt::format("the minimum depth of cut of G76 ({:g} mm: Q of the first block or No.5140) is "
                                 "greater than the thread height {}(k) ({:g} mm)", g76_min_depth_, k_word, height));
-  g76_passes(end, taper, height, first, angle);
-}
-
-// The passes of G76 from A (the current position) to the thread's end point `end` at full depth:
-// pass n cuts to dd*sqrt(n) below the crest, at least dmin deeper than the pass before, until the
-// depth k - d; then m finishing passes at k. Each pass starts along the flank of the tool angle a
-// (single edge cutting), cuts with the chamfer, rapids out to A's X and back to A's Z.
-void Executor::g76_passes(const AxisVector& end, double taper, double height, double first, double angle) {
-  const AxisVector a = coords_.pos;
-  const double out = a[0] > end[0] ? 1.0 : a[0] < end[0] ? -1.0 : 0.0;   // from the root toward the crest
-  const double back = end[2] > a[2] ? -1.0 : end[2] < a[2] ? 1.0 : 0.0;  // against the cutting direction
-  const double flank = std::tan(g76_tool_angle_ / 2.0 * kDeg);
-  const double rough_end = height - g76_allowance_;
+  turn::MultipleThreading c;
+  c.end = end;
+  c.taper = taper;
+  c.height = height;
+  c.first = first;
+  c.min_depth = g76_min_depth_;
+  c.allowance = g76_allowance_;
+  c.finish_count = g76_finish_count_;
+  c.tool_angle = g76_tool_angle_;
+  c.thread = {feed_, thread_chamfer_, profile_.thread_chamfer_angle};
+  c.start_angle = angle;
   std::vector<double> depths;
-  for (double last = 0, n = 1; rough_end > last; ++n) {
-    double d = std::max(first * std::sqrt(n), last + g76_min_depth_);
-    if (d >= rough_end) d = rough_end;
-    depths.push_back(d);
-    last = d;
-    if (depths.size() > 100000)
-      alarm("NC9000", fmt::format("G76 would make more than 100000 passes (first depth {:g} mm, thread height {:g} "
-                                  "mm): give a larger first depth of cut or a minimum depth of cut (Q of the first "
-                                  "block, No.5140)", first, height));
+  try {
+    depths = turn::thread_depths(c);
+  } catch (const turn::TooManyPasses&) {
+    alarm("NC9000", fmt::format("G76 would make more than 100000 passes (first depth {:g} mm, thread height {:g} "
+                                "mm): give a larger first depth of cut or a minimum depth of cut (Q of the first "
+                                "block, No.5140)", first, height));
   }
-  for (int k = 0; k < std::max(g76_finish_count_, 1); ++k) depths.push_back(height);
-
   const base::RestoreOnExit restore_side(modal_.comp_side);
   if (compensating()) {  // threading is not compensated: the vector is cancelled at A
     comp_->cancel_at_end();
     modal_.comp_side = 0;
   }
-  for (double d : depths) {
-    const double x = out * (height - d), z = back * (height - d) * flank;
-    AxisVector from = a, to = end;
-    from[0] = end[0] + taper + x;
-    from[2] = a[2] + z;
-    to[0] += x;
-    to[2] += z;
-    if (from != coords_.pos) linear(MoveKind::rapid, from);
-    thread_pass(to, a[0], feed_, angle);
-    AxisVector up = coords_.pos;
-    up[0] = a[0];
-    if (up != coords_.pos) linear(MoveKind::rapid, up);
-    if (a != coords_.pos) linear(MoveKind::rapid, a);
-  }
+  CycleMoves out(*this);
+  turn::multiple_threading(c, depths, out);
 }
 
 }  // namespace ncurve::machine
