@@ -102,23 +102,13 @@ private:
   bool block_m_codes(const nc::Block& b, const SubprogramCall& sub);
   void modal_call_after_move(const nc::Block& b);
   void check_radius_offset();  // NC2070: G41/G42 moving with a radius offset of 0
-  struct VacantWord {  // the block's first dimension or F word that read a vacant variable
-    int variable = 0;  // 0: none
-    char letter = 0;
-    bool ignored = false;  // the word's value was vacant: the control ignores the word
-    double value = 0;      // else the value the vacant variable (as 0) gave it
-    std::uint16_t column = 0;
-  };
-  VacantWord vacant_word_;
   void warn_vacant_word();  // NC2072
-  int radius_checked_ = -1;    // the D number checked since the last G40 (-1: none)
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
   const std::vector<std::int32_t>& loops_of(const nc::Program* p);
   bool condition(const nc::Expr& e);
   nc::Value eval(const nc::Expr& e);
   nc::Value eval_word(const nc::Expr& e, int& vacant_variable);  // and the first variable it read vacant
-  nc::Value evaluated(const nc::EvalResult& r) const;  // the value, or the alarm of its fault
   // entry >= 0: the block of the program being run where the call starts (M98 Q)
   void call_program(int number, Frame frame, std::uint16_t column, std::int32_t entry = -1);
   void call_macro(int number, const std::vector<Arg>& args, int repeat, bool custom, bool modal, std::uint16_t column);
@@ -472,6 +462,17 @@ private:
   StrokeCheck path_stroke_{stroke_, *this, path_alarm};
   NoseCentre path_nose_{*this};  // linked in with --nose-centre on a lathe
   Statistics path_stats_{result_.stats, SetupView{&modal_.work_index, &coords_.origin, &modal_.length_comp, &h_}};
+
+  // ---- the checks of silent mistakes (cold: kept at the end, away from the hot state) ----
+  struct VacantWord {  // the block's first dimension or F word that read a vacant variable
+    int variable = 0;  // 0: none
+    char letter = 0;
+    bool ignored = false;  // the word's value was vacant: the control ignores the word
+    double value = 0;      // else the value the vacant variable (as 0) gave it
+    std::uint16_t column = 0;
+  };
+  VacantWord vacant_word_;
+  int radius_checked_ = -1;  // the D number checked since the last G40 (-1: none)
 };
 
 }  // namespace ncurve::machine

@@ -17,18 +17,13 @@ using nc::Statement;
 using nc::Value;
 
 namespace {
+// Reads a variable for an expression, noting the first variable read vacant (for a word's check).
 struct VarReader {
-  Executor* in;
-  Value read(int n, std::uint16_t column) { return in->read_var(n, column); }
-};
-
-// A word's expression: notes the first variable it read vacant.
-struct WordVarReader {
   Executor* in;
   int first_vacant = 0;
   Value read(int n, std::uint16_t column) {
     Value v = in->read_var(n, column);
-    if (v.vacant && first_vacant == 0) first_vacant = n;
+    if (v.vacant) [[unlikely]] first_vacant = first_vacant ? first_vacant : n;
     return v;
   }
 };
@@ -157,22 +152,17 @@ void Executor::warn_once(std::string code, std::string message, std::uint16_t co
 }
 
 Value Executor::eval(const nc::Expr& e) {
+  int vacant = 0;
+  return eval_word(e, vacant);
+}
+
+// The one place that runs an expression (evaluate inlined once): its value, or its fault's alarm.
+Value Executor::eval_word(const nc::Expr& e, int& vacant_variable) {
   VarReader reader{this};
   const nc::Instr* code = prog_->code.data();
   operations_ += e.end - e.begin;
-  return evaluated(nc::evaluate(code + e.begin, code + e.end, reader, eval_options_));
-}
-
-Value Executor::eval_word(const nc::Expr& e, int& vacant_variable) {
-  WordVarReader reader{this};
-  const nc::Instr* code = prog_->code.data();
-  operations_ += e.end - e.begin;
-  const Value v = evaluated(nc::evaluate(code + e.begin, code + e.end, reader, eval_options_));
+  nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
   vacant_variable = reader.first_vacant;
-  return v;
-}
-
-Value Executor::evaluated(const nc::EvalResult& r) const {
   switch (r.fault) {
     case nc::EvalFault::none: return r.value;
     case nc::EvalFault::divide_by_zero: alarm("PS0112", "division by zero", r.column);
