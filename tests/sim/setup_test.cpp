@@ -1,8 +1,12 @@
 // The setup file (src/sim/setup*, tool_library*): each key, each error with its position, the
-// default stock box.
+// default stock box, and the shipped setups.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <regex>
+#include <sstream>
 
 #include "sim/setup.hpp"
 
@@ -344,6 +348,36 @@ TEST(SimSetup, TomlErrorsAndFiles) {
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(), "/nonexistent/x.setup.toml: error: cannot open the setup file");
   }
+}
+
+// Every shipped setup reads; each names a program beside it.
+TEST(SimSetup, ShippedExamplesRead) {
+  int n = 0;
+  for (const auto& e : std::filesystem::directory_iterator(NCURVE_SOURCE_DIR "/examples")) {
+    const std::string name = e.path().filename().string();
+    if (!name.ends_with(".setup.toml")) continue;
+    ++n;
+    SCOPED_TRACE(name);
+    EXPECT_NO_THROW(read_setup(e.path().string()));
+    const std::string program = name.substr(0, name.size() - std::string(".setup.toml").size()) + ".nc";
+    EXPECT_TRUE(std::filesystem::exists(e.path().parent_path() / program)) << program;
+  }
+  EXPECT_GE(n, 2);
+}
+
+// The ```toml blocks of docs/setup.md are setups that read.
+TEST(SimSetup, DocumentedExamplesRead) {
+  std::ifstream in(NCURVE_SOURCE_DIR "/docs/setup.md");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string doc = ss.str();
+  const std::regex block("```toml\n([^`]*)```");
+  int n = 0;
+  for (std::sregex_iterator it(doc.begin(), doc.end(), block), end; it != end; ++it, ++n) {
+    SCOPED_TRACE((*it)[1].str());
+    EXPECT_NO_THROW(parse_setup((*it)[1].str(), "docs/setup.md"));
+  }
+  EXPECT_GE(n, 2);
 }
 
 namespace {
