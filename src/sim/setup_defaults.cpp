@@ -73,6 +73,8 @@ std::vector<std::string> setup_defaults(const SetupFile* setup) {
     lines.push_back("stock: the box around the cutting moves, widened by the tool's radius to the sides and below, "
                     "its top the highest level a cutting move starts from");
   if (!setup || setup->fixtures.empty()) lines.push_back("fixtures: none");
+  if (!setup || !setup->tool_in_spindle)
+    lines.push_back("tool in the spindle at the start: none; the first tool change (M06, a lathe's T) puts one in");
   lines.push_back(setup && !setup->tools.tools.empty()
                       ? "a tool not in the library: a flat end mill of its D offset's radius "
                         "(on a lathe an insert of its offset's nose radius and imaginary tip)"

@@ -228,11 +228,12 @@ insert_angle = 55
 
 TEST(SimSetup, DefaultsInWords) {
   const std::vector<std::string> none = setup_defaults(nullptr);
-  ASSERT_EQ(none.size(), 3u);
+  ASSERT_EQ(none.size(), 4u);
   EXPECT_EQ(none[0], "stock: the box around the cutting moves, widened by the tool's radius to the sides and below, "
                      "its top the highest level a cutting move starts from");
   EXPECT_EQ(none[1], "fixtures: none");
-  EXPECT_EQ(none[2], "tools: no library: each tool is a flat end mill of its D offset's radius "
+  EXPECT_EQ(none[2], "tool in the spindle at the start: none; the first tool change (M06, a lathe's T) puts one in");
+  EXPECT_EQ(none[3], "tools: no library: each tool is a flat end mill of its D offset's radius "
                      "(on a lathe an insert of its offset's nose radius and imaginary tip)");
   const SetupFile s = parse_setup(kMill, "m.toml");
   const std::vector<std::string> some = setup_defaults(&s);
@@ -285,6 +286,8 @@ TEST(SimSetup, Errors) {
             "s.toml:4:10: error: 'stock.length' must be a finite number, not nan");
   EXPECT_EQ(error_of("[stock]\nshape = \"stl\"\nfile = 3\n"), "s.toml:3:8: error: 'stock.file' must be a string");
   EXPECT_EQ(error_of("stock = 3\n"), "s.toml:1:9: error: 'stock' must be a table");
+  EXPECT_EQ(error_of("tools = 3\n"), "s.toml:1:9: error: 'tools' must be a table");
+  EXPECT_EQ(error_of("[tools]\n1 = 5\n"), "s.toml:2:5: error: 'tools.1' must be a table");
   EXPECT_EQ(error_of("inch = 1\n"), "s.toml:1:8: error: 'inch' must be true or false");
   EXPECT_EQ(error_of("tool_in_spindle = 1.5\n"),
             "s.toml:1:19: error: 'tool_in_spindle' must be a whole number from 0 to 99999999, not 1.5");
@@ -433,4 +436,23 @@ TEST(SimSetup, DefaultStockBox) {
   EXPECT_EQ(first->min, (Point3{-3, -3, -6}));
   EXPECT_EQ(first->max, (Point3{3, 3, 2}));
   EXPECT_FALSE(default_stock_box(std::vector<Move>{moves[1]}, radius));
+}
+
+// A whole turn of a helix reaches every side of its circle; a G18 arc is taken in Z and X.
+TEST(SimSetup, DefaultStockBoxOfHelixAndG18Arc) {
+  const auto none = [](int) { return 0.0; };
+  Move helix = line(MoveKind::arc, {10, 0, 0}, {10, 0, -2});
+  helix.sweep = -2 * std::numbers::pi;
+  helix.clockwise = true;
+  const std::optional<AxisBox> h = default_stock_box(std::vector<Move>{helix}, none);
+  EXPECT_EQ(h->min, (Point3{-10, -10, -2}));
+  EXPECT_EQ(h->max, (Point3{10, 10, 0}));
+  // G18: from X10 Z0 about X0 Z0 counter-clockwise about Y (Z towards X) by half a turn: through
+  // Z-10 to X-10
+  Move zx = line(MoveKind::arc, {10, 0, 0}, {-10, 0, 0});
+  zx.plane = 18;
+  zx.sweep = std::numbers::pi;
+  const std::optional<AxisBox> b = default_stock_box(std::vector<Move>{zx}, none);
+  EXPECT_EQ(b->min, (Point3{-10, 0, -10}));
+  EXPECT_EQ(b->max, (Point3{10, 0, 0}));
 }
