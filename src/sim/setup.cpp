@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "machine/profile/toml_nesting.hpp"
+#include "io/toml_nesting.hpp"
 #include "sim/setup_toml.hpp"
 
 namespace ncurve::sim {
@@ -121,7 +121,7 @@ std::vector<Fixture> read_fixtures(const Reader& r, const toml::node& node) {
 }  // namespace
 
 SetupFile parse_setup(const std::string& toml_text, const std::string& origin) {
-  machine::check_toml_nesting(toml_text, origin);
+  io::check_toml_nesting(toml_text, origin);
   toml::table root;
   try {
     root = toml::parse(toml_text, origin);

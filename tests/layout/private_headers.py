@@ -3,7 +3,6 @@
 tests/machine/ may include only the headers at the top of src/machine/ that make its API
 (interpreter.hpp, profile.hpp, library.hpp, move.hpp, observer.hpp, trace.hpp, macro_output.hpp),
 never executor.hpp, the G-code table or a header of a sub-folder (frame/, cycles/, path/, profile/).
-One exception: src/sim/ reads setup files with the profile's TOML nesting bound (profile/toml_nesting.hpp).
 
 usage: private_headers.py SOURCE_ROOT
 """
@@ -15,7 +14,6 @@ root = os.path.abspath(sys.argv[1])
 public = {"interpreter.hpp", "profile.hpp", "library.hpp", "move.hpp", "observer.hpp", "trace.hpp",
           "macro_output.hpp"}
 inside = (os.path.join("src", "machine"), os.path.join("tests", "machine"))
-shared = {os.path.join("src", "sim"): {"profile/toml_nesting.hpp"}}
 include = re.compile(r'^\s*#\s*include\s*"machine/([^"]+)"')
 found = []
 for top in ("src", "tests", "bench", "fuzz"):
@@ -30,7 +28,7 @@ for top in ("src", "tests", "bench", "fuzz"):
             with open(path, encoding="utf-8", errors="replace") as f:
                 for number, line in enumerate(f, 1):
                     m = include.match(line)
-                    if m and m.group(1) not in public and m.group(1) not in shared.get(rel_folder, ()):
+                    if m and m.group(1) not in public:
                         found.append(f"{os.path.relpath(path, root)}:{number}: includes machine/{m.group(1)}, "
                                      "a header private to src/machine/")
 for line in found:

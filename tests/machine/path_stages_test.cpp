@@ -327,7 +327,7 @@ TEST(PathDevelopedConversion, CylindricalLineTurnsByArcLengthOverRadius) {
   line.feed = 100;
   stage.on_move(line);
   ASSERT_EQ(out.moves.size(), 1u);
-  const Move& m = out.moves[0];
+  const Move m = out.moves[0];  // a copy: the next move may grow the vector
   EXPECT_EQ(m.kind, MoveKind::line);
   EXPECT_EQ(m.start, (AxisVector{0, 0, 0, 0, 0, 0}));
   EXPECT_NEAR(m.end[5], 90, 1e-12);

@@ -1,7 +1,7 @@
 // Machine profiles read from TOML: each table checked and stored in a MachineProfile; the control
 // parameters of [parameters] go through set_parameter (parameters.cpp).
 #include "machine/profile.hpp"
-#include "machine/profile/toml_nesting.hpp"
+#include "io/toml_nesting.hpp"
 
 #include <fmt/format.h>
 
@@ -253,7 +253,7 @@ void servo_table(MachineProfile& p, const toml::table& t, const std::string& ori
 }  // namespace
 
 MachineProfile parse_profile(const std::string& toml_text, const std::string& origin) {
-  check_toml_nesting(toml_text, origin);
+  io::check_toml_nesting(toml_text, origin);
   toml::table root;
   try {
     root = toml::parse(toml_text, origin);

@@ -1,10 +1,10 @@
-#include "machine/profile/toml_nesting.hpp"
+#include "io/toml_nesting.hpp"
 
 #include <fmt/format.h>
 
 #include <stdexcept>
 
-namespace ncurve::machine {
+namespace ncurve::io {
 
 void check_toml_nesting(std::string_view text, const std::string& origin) {
   int line = 1;
@@ -44,7 +44,7 @@ void check_toml_nesting(std::string_view text, const std::string& origin) {
         break;
       case '.':
         if (++parts > kMaxTomlKeyParts)
-          fail(i, fmt::format("a dotted key of more than {} parts: a machine profile's tables nest a few levels",
+          fail(i, fmt::format("a dotted key of more than {} parts: a machine profile's or a setup's tables nest a few levels",
                               kMaxTomlKeyParts));
         break;
       case '[':
@@ -72,4 +72,4 @@ void check_toml_nesting(std::string_view text, const std::string& origin) {
   }
 }
 
-}  // namespace ncurve::machine
+}  // namespace ncurve::io

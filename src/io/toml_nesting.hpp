@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace ncurve::machine {
+namespace ncurve::io {
 
 constexpr int kMaxTomlKeyParts = 32;   // a.b.c = 1: three parts
 constexpr int kMaxTomlBrackets = 32;   // [[1, 2], {x = 3}]: two levels
@@ -12,4 +12,4 @@ constexpr int kMaxTomlBrackets = 32;   // [[1, 2], {x = 3}]: two levels
 // Throws std::runtime_error ("origin:line:column: error: ...") past either bound.
 void check_toml_nesting(std::string_view text, const std::string& origin);
 
-}  // namespace ncurve::machine
+}  // namespace ncurve::io
