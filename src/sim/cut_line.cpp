@@ -23,16 +23,17 @@ struct LineMove {
 // quadratic; z is linear in t, so the lowest is at the interval's end in the falling direction.
 NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, double oy, double step,
                                    const LineMove& m) {
-  const double r2 = m.r * m.r, inv_a = 1 / m.a;
+  const double vx = m.vx, vy = m.vy, a = m.a, az = m.az, dz = m.dz, r2 = m.r * m.r, inv_a = 1 / m.a;
+  const bool falling = dz < 0;
   for (int k = 0; k < n; ++k) {
     const double ox = ox0 + k * step;
-    const double ov = ox * m.vx + oy * m.vy, oo = ox * ox + oy * oy;
-    const double disc = ov * ov - m.a * (oo - r2);
+    const double ov = ox * vx + oy * vy, oo = ox * ox + oy * oy;
+    const double disc = ov * ov - a * (oo - r2);
     const double sq = std::sqrt(std::max(disc, 0.0));
     const double lo = std::max((ov - sq) * inv_a, 0.0), hi = std::min((ov + sq) * inv_a, 1.0);
-    const double t = m.dz < 0 ? hi : lo;
-    const double z = (disc >= 0 && lo <= hi) ? m.az + t * m.dz : kUnreached;
-    h[k] = std::min(h[k], z);
+    const double t = falling ? hi : lo;
+    const bool reached = (disc >= 0) & (lo <= hi);
+    h[k] = std::min(h[k], reached ? az + t * dz : kUnreached);
   }
 }
 
@@ -41,22 +42,23 @@ NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, doub
 // axis if it enters within the segment, else the sphere at the end it entered beyond).
 NCURVE_VECTOR_CLONES void ball_row(double* __restrict h, int n, double ox0, double oy, double step,
                                    const LineMove& m) {
-  const double r2 = m.r * m.r, baba = m.a + m.dz * m.dz, inv_a = 1 / m.a, base = m.az + m.r;
+  const double vx = m.vx, vy = m.vy, a = m.a, dz = m.dz, r2 = m.r * m.r;
+  const double baba = a + dz * dz, inv_a = 1 / a, base = m.az + m.r, r2baba = r2 * baba;
   for (int k = 0; k < n; ++k) {
     const double ox = ox0 + k * step;
-    const double baoa = m.vx * ox + m.vy * oy, oo = ox * ox + oy * oy;
-    const double b = -baoa * m.dz;
-    const double c = baba * oo - baoa * baoa - r2 * baba;
-    const double disc = b * b - m.a * c;
+    const double baoa = vx * ox + vy * oy, oo = ox * ox + oy * oy;
+    const double b = -baoa * dz;
+    const double c = baba * oo - baoa * baoa - r2baba;
+    const double disc = b * b - a * c;
     const double t = (-b - std::sqrt(std::max(disc, 0.0))) * inv_a;
-    const double y = baoa + t * m.dz;
+    const double y = baoa + t * dz;
     const bool at_b = y >= baba;
-    const double ex = at_b ? ox - m.vx : ox, ey = at_b ? oy - m.vy : oy, ez = at_b ? m.dz : 0.0;
+    const double ex = at_b ? ox - vx : ox, ey = at_b ? oy - vy : oy, ez = at_b ? dz : 0.0;
     const double cap2 = r2 - ex * ex - ey * ey;
     const double zcap = ez - std::sqrt(std::max(cap2, 0.0));
-    const bool side = y > 0 && y < baba;
-    const double z = (disc >= 0 && (side || cap2 >= 0)) ? base + (side ? t : zcap) : kUnreached;
-    h[k] = std::min(h[k], z);
+    const bool side = (y > 0) & (y < baba);
+    const bool reached = (disc >= 0) & (side | (cap2 >= 0));
+    h[k] = std::min(h[k], reached ? base + (side ? t : zcap) : kUnreached);
   }
 }
 
