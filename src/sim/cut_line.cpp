@@ -1,0 +1,155 @@
+// A tool's tip along a straight line: the stadium of cells it reaches row by row, and in each
+// cell the lowest point of the swept tool on the cell's vertical line.
+#include <algorithm>
+#include <cmath>
+
+#include "base/vector_clones.hpp"
+#include "sim/lowest.hpp"
+#include "sim/zmap.hpp"
+
+namespace ncurve::sim {
+
+namespace {
+
+// The move relative to its start: the tip at A + t (vx, vy, dz), t in [0, 1].
+struct LineMove {
+  double ax, ay, az;
+  double vx, vy, dz;
+  double a;  // vx^2 + vy^2
+  double r;
+};
+
+// Flat end mill: the parameters where the cell is within R of the axis are the roots of a
+// quadratic; z is linear in t, so the lowest is at the interval's end in the falling direction.
+NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, double oy, double step,
+                                   const LineMove& m) {
+  const double vx = m.vx, vy = m.vy, a = m.a, az = m.az, dz = m.dz, r2 = m.r * m.r, inv_a = 1 / m.a;
+  const bool falling = dz < 0;
+  for (int k = 0; k < n; ++k) {
+    const double ox = ox0 + k * step;
+    const double ov = ox * vx + oy * vy, oo = ox * ox + oy * oy;
+    const double disc = ov * ov - a * (oo - r2);
+    const double sq = std::sqrt(std::max(disc, 0.0));
+    const double lo = std::max((ov - sq) * inv_a, 0.0), hi = std::min((ov + sq) * inv_a, 1.0);
+    const double t = falling ? hi : lo;
+    const bool reached = (disc >= 0) & (lo <= hi);
+    h[k] = std::min(h[k], reached ? az + t * dz : kUnreached);
+  }
+}
+
+// Ball end mill: the ball's centre sweeps a capsule of radius R; the lowest point of the
+// capsule on the vertical line is where an upward ray enters it (the infinite cylinder about the
+// axis if it enters within the segment, else the sphere at the end it entered beyond).
+NCURVE_VECTOR_CLONES void ball_row(double* __restrict h, int n, double ox0, double oy, double step,
+                                   const LineMove& m) {
+  const double vx = m.vx, vy = m.vy, a = m.a, dz = m.dz, r2 = m.r * m.r;
+  const double baba = a + dz * dz, inv_a = 1 / a, base = m.az + m.r, r2baba = r2 * baba;
+  for (int k = 0; k < n; ++k) {
+    const double ox = ox0 + k * step;
+    const double baoa = vx * ox + vy * oy, oo = ox * ox + oy * oy;
+    const double b = -baoa * dz;
+    const double c = baba * oo - baoa * baoa - r2baba;
+    const double disc = b * b - a * c;
+    const double t = (-b - std::sqrt(std::max(disc, 0.0))) * inv_a;
+    const double y = baoa + t * dz;
+    const bool at_b = y >= baba;
+    const double ex = at_b ? ox - vx : ox, ey = at_b ? oy - vy : oy, ez = at_b ? dz : 0.0;
+    const double cap2 = r2 - ex * ex - ey * ey;
+    const double zcap = ez - std::sqrt(std::max(cap2, 0.0));
+    const bool side = (y > 0) & (y < baba);
+    const bool reached = (disc >= 0) & (side | (cap2 >= 0));
+    h[k] = std::min(h[k], reached ? base + (side ? t : zcap) : kUnreached);
+  }
+}
+
+// Any tool on a level line: its lower surface at the cell's distance from the segment.
+void level_row(double* h, int n, double ox0, double oy, double step, const LineMove& m, const ToolShape& tool) {
+  for (int k = 0; k < n; ++k) {
+    const double ox = ox0 + k * step;
+    const double t = m.a > 0 ? std::clamp((ox * m.vx + oy * m.vy) / m.a, 0.0, 1.0) : 0.0;
+    const double ex = ox - t * m.vx, ey = oy - t * m.vy;
+    h[k] = std::min(h[k], m.az + tool.lower(ex * ex + ey * ey));
+  }
+}
+
+// Any tool on a vertical line: at its lower end.
+void plunge_row(double* h, int n, double ox0, double oy, double step, const LineMove& m, const ToolShape& tool) {
+  const double zlow = m.az + std::min(m.dz, 0.0);
+  for (int k = 0; k < n; ++k) {
+    const double ox = ox0 + k * step;
+    h[k] = std::min(h[k], zlow + tool.lower(ox * ox + oy * oy));
+  }
+}
+
+// Bull-nose or cone on a sloping line: z(t) + lower(u(t)) over the parameters where the cell is
+// within reach. u is a convex quadratic in t and the shape's height a convex, non-decreasing
+// function of u (bull-nose) or of sqrt(u), the distance to the axis, itself convex in t (cone):
+// the sum is convex.
+void sloping_row(double* h, int n, double ox0, double oy, double step, const LineMove& m, const ToolShape& tool) {
+  const double r2 = m.r * m.r;
+  for (int k = 0; k < n; ++k) {
+    const double ox = ox0 + k * step;
+    const double ov = ox * m.vx + oy * m.vy, oo = ox * ox + oy * oy;
+    const double disc = ov * ov - m.a * (oo - r2);
+    if (disc < 0) continue;
+    const double sq = std::sqrt(disc);
+    const double lo = std::max((ov - sq) / m.a, 0.0), hi = std::min((ov + sq) / m.a, 1.0);
+    if (lo > hi) continue;
+    auto f = [&](double t) {
+      const double ex = ox - t * m.vx, ey = oy - t * m.vy;
+      return m.az + t * m.dz + tool.lower(std::min(ex * ex + ey * ey, r2));  // within reach by construction
+    };
+    h[k] = std::min(h[k], lowest_convex(lo, hi, kLowestTolerance, f));
+  }
+}
+
+}  // namespace
+
+void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
+  LineMove m{a[0], a[1], a[2], b[0] - a[0], b[1] - a[1], b[2] - a[2], 0, tool.radius()};
+  m.a = m.vx * m.vx + m.vy * m.vy;
+  const double r = m.r, pad = 1e-9 * (1 + r);
+  const double len = std::sqrt(m.a);
+  // the outward normal of the stadium's sides
+  const double nx = len > 0 ? -m.vy / len : 0, ny = len > 0 ? m.vx / len : 0;
+  const bool plunge = m.a <= 1e-24 * (1 + m.dz * m.dz);
+  int j0, j1;
+  rows_of(std::min(a[1], b[1]) - r - pad, std::max(a[1], b[1]) + r + pad, j0, j1);
+  for (int j = j0; j < j1; ++j) {
+    const double y = cell_y(j);
+    // the row's chord of the stadium: of the end discs and the two sides
+    double xl = kUnreached, xh = -kUnreached;
+    auto disc_chord = [&](double cx, double cy) {
+      const double dy = y - cy, w2 = r * r - dy * dy;
+      if (w2 < 0) return;
+      const double w = std::sqrt(w2);
+      xl = std::min(xl, cx - w);
+      xh = std::max(xh, cx + w);
+    };
+    disc_chord(a[0], a[1]);
+    disc_chord(b[0], b[1]);
+    if (!plunge && m.vy != 0) {
+      for (double side : {-1.0, 1.0}) {
+        const double t = (y - a[1] - side * r * ny) / m.vy;
+        if (t >= 0 && t <= 1) {
+          const double x = a[0] + side * r * nx + t * m.vx;
+          xl = std::min(xl, x);
+          xh = std::max(xh, x);
+        }
+      }
+    }
+    int i0, i1;
+    cells_of(xl - pad, xh + pad, i0, i1);
+    if (i1 <= i0) continue;
+    double* hr = row(j).data() + i0;
+    const int n = i1 - i0;
+    const double ox0 = cell_x(i0) - a[0], oy = y - a[1];
+    if (plunge) plunge_row(hr, n, ox0, oy, cell(), m, tool);
+    else if (tool.kind() == ToolShape::Kind::flat) flat_row(hr, n, ox0, oy, cell(), m);
+    else if (tool.kind() == ToolShape::Kind::ball) ball_row(hr, n, ox0, oy, cell(), m);
+    else if (m.dz == 0) level_row(hr, n, ox0, oy, cell(), m, tool);
+    else sloping_row(hr, n, ox0, oy, cell(), m, tool);
+  }
+}
+
+}  // namespace ncurve::sim

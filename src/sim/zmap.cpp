@@ -1,0 +1,59 @@
+#include "sim/zmap.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace ncurve::sim {
+
+ZMap::ZMap(const Box& stock, double cell, int min_cells) : stock_(stock) {
+  const double lx = stock.max[0] - stock.min[0], ly = stock.max[1] - stock.min[1];
+  if (!(lx > 0 && ly > 0 && stock.max[2] >= stock.min[2])) throw std::invalid_argument("the stock box is empty");
+  if (cell == 0) {
+    if (min_cells < 1) throw std::invalid_argument("a Z-map needs at least one cell a side");
+    cell = std::min(lx, ly) / min_cells;
+  }
+  if (!(cell > 0) || !std::isfinite(cell)) throw std::invalid_argument("a Z-map's cell size must be positive");
+  const double nx = std::ceil(lx / cell - 1e-9), ny = std::ceil(ly / cell - 1e-9);
+  if (nx * ny > 4e8) throw std::invalid_argument("a Z-map of more than 400 million cells");
+  cell_ = cell;
+  nx_ = static_cast<int>(nx);
+  ny_ = static_cast<int>(ny);
+  // the grid centred on the stock (it overhangs by under a cell where the size is not a multiple)
+  x0_ = stock.min[0] - (nx_ * cell - lx) / 2;
+  y0_ = stock.min[1] - (ny_ * cell - ly) / 2;
+  h_.assign(static_cast<std::size_t>(nx_) * ny_, stock.max[2]);
+}
+
+double ZMap::height_at(double x, double y) const {
+  const double fi = std::floor((x - x0_) / cell_), fj = std::floor((y - y0_) / cell_);
+  if (!(fi >= 0 && fi < nx_ && fj >= 0 && fj < ny_)) return std::numeric_limits<double>::quiet_NaN();
+  return height(static_cast<int>(fi), static_cast<int>(fj));
+}
+
+double ZMap::volume_removed() const {
+  const double top = stock_.max[2], bottom = stock_.min[2];
+  double sum = 0;
+  for (double h : h_) sum += top - std::max(std::min(h, top), bottom);
+  return sum * cell_ * cell_;
+}
+
+void ZMap::rows_of(double yl, double yh, int& j0, int& j1) const {
+  j0 = j1 = 0;
+  if (!(yl <= yh)) return;
+  // centres y0 + (j + 0.5) cell in [yl, yh]
+  const double a = std::ceil((yl - y0_) / cell_ - 0.5), b = std::floor((yh - y0_) / cell_ - 0.5);
+  j0 = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(ny_)));
+  j1 = static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(ny_)));
+}
+
+void ZMap::cells_of(double xl, double xh, int& i0, int& i1) const {
+  i0 = i1 = 0;
+  if (!(xl <= xh)) return;
+  const double a = std::ceil((xl - x0_) / cell_ - 0.5), b = std::floor((xh - x0_) / cell_ - 0.5);
+  i0 = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(nx_)));
+  i1 = static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(nx_)));
+}
+
+}  // namespace ncurve::sim

@@ -1,0 +1,77 @@
+// A Z-map of the stock for a 3-axis mill: one height per cell of a square grid over the stock's XY
+// box, the height of the material on the vertical line through the cell's centre. A move lowers
+// each cell it reaches to the lowest point of the tool's swept envelope on that line, computed
+// per cell in closed form (or by an exact 1-D minimisation to kLowestTolerance): docs/verify.md.
+#pragma once
+#include <array>
+#include <span>
+#include <vector>
+
+#include "sim/tool_shape.hpp"
+
+namespace ncurve::sim {
+
+using Point3 = std::array<double, 3>;
+
+// A box stock, work coordinates, mm.
+struct Box {
+  Point3 min{}, max{};
+};
+
+// An arc in the XY plane (G17) from start_angle through sweep (radians, counter-clockwise
+// positive), its height linear in the angle from z_start to z_end (a helix when they differ).
+struct Arc {
+  double cx = 0, cy = 0;
+  double radius = 0;
+  double start_angle = 0;
+  double sweep = 0;
+  double z_start = 0, z_end = 0;
+};
+
+// A height found by minimising along a move (where no closed form is used) is within this of
+// the exact lowest point, mm.
+inline constexpr double kLowestTolerance = 1e-9;
+
+class ZMap {
+public:
+  // cell 0: the stock's shorter side in min_cells cells
+  static constexpr int kDefaultCells = 1000;
+  explicit ZMap(const Box& stock, double cell = 0, int min_cells = kDefaultCells);
+
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  double cell() const { return cell_; }
+  const Box& stock() const { return stock_; }
+  double cell_x(int i) const { return x0_ + (i + 0.5) * cell_; }
+  double cell_y(int j) const { return y0_ + (j + 0.5) * cell_; }
+
+  // The height of cell (i, j): the stock top where nothing cut it, else the lowest tool point
+  // over it (below the stock bottom where a tool went through).
+  double height(int i, int j) const { return h_[static_cast<std::size_t>(j) * nx_ + i]; }
+  // The height of the cell holding (x, y); NaN outside the map.
+  double height_at(double x, double y) const;
+  std::span<double> row(int j) { return {h_.data() + static_cast<std::size_t>(j) * nx_, static_cast<std::size_t>(nx_)}; }
+  std::span<const double> heights() const { return h_; }
+
+  // Material removed, mm^3: each cell's column from the top down to its height (not below the bottom).
+  double volume_removed() const;
+
+  // Cut with a tool whose tip moves along a straight line from a to b.
+  void cut_line(const ToolShape& tool, const Point3& a, const Point3& b);
+  // Cut with a tool whose tip moves along an arc or helix in the XY plane.
+  void cut_arc(const ToolShape& tool, const Arc& arc);
+
+  // The rows j0..j1-1 that a band of y may touch, and the cells i0..i1-1 of a row whose centres
+  // lie in [xl, xh] (empty when i1 <= i0).
+  void rows_of(double yl, double yh, int& j0, int& j1) const;
+  void cells_of(double xl, double xh, int& i0, int& i1) const;
+
+private:
+  Box stock_;
+  double cell_ = 0;
+  int nx_ = 0, ny_ = 0;
+  double x0_ = 0, y0_ = 0;
+  std::vector<double> h_;
+};
+
+}  // namespace ncurve::sim
