@@ -12,7 +12,7 @@ seconds="${1:-60}"
 source scripts/packages.sh
 ensure_packages "${tool_packages[@]}" "${test_packages[@]}" "${fuzz_packages[@]}"
 configure_sanitize
-cmake --build build-sanitize --target fuzz_run fuzz_curve fuzz_rows fuzz_profile fuzz_cli fuzz_serve
+cmake --build build-sanitize --target fuzz_run fuzz_curve fuzz_rows fuzz_profile fuzz_setup fuzz_cli fuzz_serve
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 dir=build-sanitize/fuzz
 # fuzz TARGET CORPUS SECONDS MAX_LEN: runs one target, prints its totals, or the failing input's log
@@ -28,7 +28,7 @@ fuzz() {
   fi
 }
 
-mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,cli,serve}
+mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,setups,cli,serve}
 # the test programs of every folder of tests/programs (their names are unique across folders)
 find tests/programs -name '*.nc' -exec cp -t "$dir/corpus-programs/" {} +
 cp examples/*.nc macros/*.nc "$dir/corpus-programs/"
@@ -40,6 +40,7 @@ cp examples/*.csv "$dir/corpus-rows/"
 printf '100,-5,-20\n100,5\n' >"$dir/corpus-rows/dish"
 cp profiles/*.toml "$dir/corpus-profiles/"
 find tests/programs -name '*.toml' -exec cp -t "$dir/corpus-profiles/" {} +
+cp examples/*.setup.toml "$dir/corpus-setups/"
 # nesting past the bound (a dotted key of 40 parts, arrays 40 deep), refused before toml++ reads it
 printf '[machine]\nname = "deep"\n[%sb]\nx = 1\n' "$(printf 'a.%.0s' {1..40})" >"$dir/corpus-profiles/deep-key"
 printf '[machine]\nx = %s1%s\n' "$(printf '[%.0s' {1..40})" "$(printf ']%.0s' {1..40})" >"$dir/corpus-profiles/deep-array"
@@ -61,12 +62,14 @@ printf '\x02{"curve": "ellipse", "params": {"a": 20, "b": 10}, "tol": 0.05, "for
 printf '\x02{"curve": "expr", "x": "t", "y": "SIN[t]", "t": "0:90", "tol": 0.1}' >"$dir/corpus-serve/expr"
 
 quarter=$(( (seconds + 3) / 4 ))
-# two streams on the two cores: the interpreter and the point lists; the curves, requests, profiles and
-# command line
+eighth=$(( (seconds + 7) / 8 ))
+# two streams on the two cores: the interpreter and the point lists; the curves, requests, profiles,
+# setups and command line
 { fuzz fuzz_run programs "$(( seconds - quarter ))" 8192 && fuzz fuzz_rows rows "$quarter" 4096; } &
 first=$!
 status=0
 { fuzz fuzz_curve curves "$quarter" 512 && fuzz fuzz_serve serve "$quarter" 4096 &&
-  fuzz fuzz_profile profiles "$quarter" 4096 && fuzz fuzz_cli cli "$quarter" 512; } || status=1
+  fuzz fuzz_profile profiles "$eighth" 4096 && fuzz fuzz_setup setups "$eighth" 4096 &&
+  fuzz fuzz_cli cli "$quarter" 512; } || status=1
 wait "$first" || status=1
 exit "$status"
