@@ -17,13 +17,18 @@ using nc::Statement;
 using nc::Value;
 
 namespace {
-// Reads a variable for an expression, noting the first variable read vacant (for a word's check).
 struct VarReader {
+  Executor* in;
+  Value read(int n, std::uint16_t column) { return in->read_var(n, column); }
+};
+
+// A word's expression: notes the first variable it read vacant (NC2072).
+struct WordVarReader {
   Executor* in;
   int first_vacant = 0;
   Value read(int n, std::uint16_t column) {
     Value v = in->read_var(n, column);
-    if (v.vacant) [[unlikely]] first_vacant = first_vacant ? first_vacant : n;
+    if (v.vacant && first_vacant == 0) first_vacant = n;
     return v;
   }
 };
@@ -152,13 +157,25 @@ void Executor::warn_once(std::string code, std::string message, std::uint16_t co
 }
 
 Value Executor::eval(const nc::Expr& e) {
-  int vacant = 0;
-  return eval_word(e, vacant);
+  VarReader reader{this};
+  const nc::Instr* code = prog_->code.data();
+  operations_ += e.end - e.begin;
+  nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
+  switch (r.fault) {
+    case nc::EvalFault::none: return r.value;
+    case nc::EvalFault::divide_by_zero: alarm("PS0112", "division by zero", r.column);
+    case nc::EvalFault::domain: alarm("PS0119", "argument out of the function's range", r.column);
+    case nc::EvalFault::overflow:
+      alarm("PS0111", "calculated value out of range (a macro value lies within -1e47 .. 1e47)", r.column);
+    case nc::EvalFault::not_on_this_control:
+      alarm("PS0114", "ATAN[a,b] needs a 30i control; write ATAN[a]/[b]", r.column);
+  }
+  return r.value;
 }
 
-// The one place that runs an expression (evaluate inlined once): its value, or its fault's alarm.
+// eval() noting the first variable the expression read vacant: a word's (NC2072).
 Value Executor::eval_word(const nc::Expr& e, int& vacant_variable) {
-  VarReader reader{this};
+  WordVarReader reader{this};
   const nc::Instr* code = prog_->code.data();
   operations_ += e.end - e.begin;
   nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
