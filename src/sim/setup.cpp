@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/toml_nesting.hpp"
+#include "io/toml_text.hpp"
 #include "sim/setup_toml.hpp"
 
 namespace ncurve::sim {
@@ -121,14 +121,7 @@ std::vector<Fixture> read_fixtures(const Reader& r, const toml::node& node) {
 }  // namespace
 
 SetupFile parse_setup(const std::string& toml_text, const std::string& origin) {
-  io::check_toml_nesting(toml_text, origin);
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, origin);
-  } catch (const toml::parse_error& e) {
-    throw std::runtime_error(fmt::format("{}:{}:{}: error: {}", origin, e.source().begin.line,
-                                         e.source().begin.column, e.description()));
-  }
+  const toml::table root = io::parse_toml(toml_text, origin);
   SetupFile s;
   s.origin = origin;
   // inch first: it scales every length of the file

@@ -1,7 +1,7 @@
 // Machine profiles read from TOML: each table checked and stored in a MachineProfile; the control
 // parameters of [parameters] go through set_parameter (parameters.cpp).
 #include "machine/profile.hpp"
-#include "io/toml_nesting.hpp"
+#include "io/toml_text.hpp"
 
 #include <fmt/format.h>
 
@@ -253,14 +253,7 @@ void servo_table(MachineProfile& p, const toml::table& t, const std::string& ori
 }  // namespace
 
 MachineProfile parse_profile(const std::string& toml_text, const std::string& origin) {
-  io::check_toml_nesting(toml_text, origin);
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, origin);
-  } catch (const toml::parse_error& e) {
-    throw std::runtime_error(fmt::format("{}:{}:{}: error: {}", origin, e.source().begin.line,
-                                         e.source().begin.column, e.description()));
-  }
+  const toml::table root = io::parse_toml(toml_text, origin);
   MachineProfile p;
   // [machine] first: type and axes decide how the other tables read.
   if (auto* m = root["machine"].as_table()) machine_table(p, *m, origin);

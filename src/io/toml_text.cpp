@@ -1,4 +1,4 @@
-#include "io/toml_nesting.hpp"
+#include "io/toml_text.hpp"
 
 #include <fmt/format.h>
 
@@ -69,6 +69,16 @@ void check_toml_nesting(std::string_view text, const std::string& origin) {
       default:
         break;
     }
+  }
+}
+
+toml::table parse_toml(std::string_view text, const std::string& origin) {
+  check_toml_nesting(text, origin);
+  try {
+    return toml::parse(text, origin);
+  } catch (const toml::parse_error& e) {
+    throw std::runtime_error(fmt::format("{}:{}:{}: error: {}", origin, e.source().begin.line,
+                                         e.source().begin.column, e.description()));
   }
 }
 
