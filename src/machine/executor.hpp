@@ -109,6 +109,7 @@ private:
   bool condition(const nc::Expr& e);
   nc::Value eval(const nc::Expr& e);
   nc::Value eval_word(const nc::Expr& e, int& vacant_variable);  // and the first variable it read vacant
+  template <class Reader> nc::Value evaluate_with(const nc::Expr& e, Reader& reader);  // interpreter.cpp
   // entry >= 0: the block of the program being run where the call starts (M98 Q)
   void call_program(int number, Frame frame, std::uint16_t column, std::int32_t entry = -1);
   void call_macro(int number, const std::vector<Arg>& args, int repeat, bool custom, bool modal, std::uint16_t column);
@@ -261,7 +262,6 @@ private:
   void lathe_motion(const AxisVector& target);  // a block with axis words in G32/G90/G92/G94 mode
   void end_lathe_cycle_data() { lathe_cycle_ = {}; }  // one-shot codes but G04 clear X, Z, R
   void single_cycle(const AxisVector& target);      // G90/G92/G94: the data; the moves are turning.hpp's
-  void cycle_compensation_start(int side);         // the cycle's own start-up under G41/G42
   void thread_block(const AxisVector& target);     // G32
   void thread_cut(const AxisVector& to, double lead, double angle);
   double thread_start_angle();                     // Q in 0.001 deg, degrees

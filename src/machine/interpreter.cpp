@@ -156,8 +156,9 @@ void Executor::warn_once(std::string code, std::string message, std::uint16_t co
   if (warned_once_.emplace(block_, code).second) warn(std::move(code), std::move(message), column);
 }
 
-Value Executor::eval(const nc::Expr& e) {
-  VarReader reader{this};
+// An expression run with `reader`, its fault an alarm; one instance a reader, each its own code.
+template <class Reader>
+Value Executor::evaluate_with(const nc::Expr& e, Reader& reader) {
   const nc::Instr* code = prog_->code.data();
   operations_ += e.end - e.begin;
   nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
@@ -173,23 +174,17 @@ Value Executor::eval(const nc::Expr& e) {
   return r.value;
 }
 
+Value Executor::eval(const nc::Expr& e) {
+  VarReader reader{this};
+  return evaluate_with(e, reader);
+}
+
 // eval() noting the first variable the expression read vacant: a word's (NC2072).
 Value Executor::eval_word(const nc::Expr& e, int& vacant_variable) {
   WordVarReader reader{this};
-  const nc::Instr* code = prog_->code.data();
-  operations_ += e.end - e.begin;
-  nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
+  const Value v = evaluate_with(e, reader);
   vacant_variable = reader.first_vacant;
-  switch (r.fault) {
-    case nc::EvalFault::none: return r.value;
-    case nc::EvalFault::divide_by_zero: alarm("PS0112", "division by zero", r.column);
-    case nc::EvalFault::domain: alarm("PS0119", "argument out of the function's range", r.column);
-    case nc::EvalFault::overflow:
-      alarm("PS0111", "calculated value out of range (a macro value lies within -1e47 .. 1e47)", r.column);
-    case nc::EvalFault::not_on_this_control:
-      alarm("PS0114", "ATAN[a,b] needs a 30i control; write ATAN[a]/[b]", r.column);
-  }
-  return r.value;
+  return v;
 }
 
 bool Executor::condition(const nc::Expr& e) {
