@@ -159,7 +159,12 @@ private:
   double minutes_per_rev(double r0, double r1) const;
   double feed_seconds(double length, double r0, double r1) const;
   double arc_feed_seconds(const Move& m, double planar) const;
-  void clamp_cutting_feed(Move& m, double fed);  // NC2073: over the maximum cutting feed
+  void clamp_cutting_feed(Move& m, double fed) {  // NC2073: over the maximum cutting feed (feed_time.cpp)
+    const double max = profile_.max_cutting_feed;
+    if (max > 0 && m.seconds > 0 && fed * 60.0 > max * (1 + 1e-9) * m.seconds) [[unlikely]]
+      clamp_to_max_feed(m, fed);
+  }
+  void clamp_to_max_feed(Move& m, double fed);
 
   // drilling canned cycles (canned_cycles.cpp, tapping_cycles.cpp, lathe_drilling.cpp): the block's
   // data and alarms; the holes' motions are the expanders' of hole_cycles.hpp, through HoleOutput

@@ -61,11 +61,9 @@ double Executor::arc_feed_seconds(const Move& m, double planar) const {
 // A cutting move faster than the maximum cutting feed (the profile's [feeds] max_cutting, No.1430):
 // the control clamps the feed without an alarm, so the move takes the clamped feed's time. `fed` is
 // the length the feed is taken along (the arc in the plane for a helix).
-void Executor::clamp_cutting_feed(Move& m, double fed) {
+void Executor::clamp_to_max_feed(Move& m, double fed) {
   const double max = profile_.max_cutting_feed;
-  if (max <= 0 || m.seconds <= 0 || fed <= 0) return;
   const double rate = fed / m.seconds * 60.0;
-  if (rate <= max * (1 + 1e-9)) return;
   m.seconds = fed / max * 60.0;
   warn_once("NC2073", fmt::format("F{}{} makes {:.0f} mm/min here, over the maximum cutting feed {:.0f} mm/min (the "
                                   "profile's [feeds] max_cutting, No.1430): the control clamps it without an alarm, "
