@@ -151,7 +151,7 @@ TEST(Calls, LibraryFilesFoundByTheirNumberWhateverTheirName) {
   fs::create_directories(dir);
   std::ofstream(dir / "gauge_tool_o1002.cnc") << "%\nO1002 (POCKET)\nG91 G01 X1. F100.\nM99\n%\n";
   std::ofstream(dir / "README.md") << "Only the O1002 subprogram; P1002 calls it.\n";
-  auto r = ncurve::test::run("O1001\nM98 P1002 L4\nM30\n", machine::default_mill(), {}, {}, {dir.string()});
+  auto r = ncurve::test::run("O1001\nM98 P1002 L4\nM30\n", ncurve::test::zero_offset_mill(), {}, {}, {dir.string()});
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   ASSERT_EQ(r.motions().size(), 4u);
   EXPECT_DOUBLE_EQ(r.motions().back().end[0], 4.0);

@@ -236,7 +236,7 @@ TEST(Motion, InchProgramsConvertAtTheEdge) {
 }
 
 TEST(Motion, WorkOffsetsAndPositionVariables) {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   p.work_offsets[2] = {-100, -50, 0, 0, 0, 0};  // G55
   auto r = run("G55 G00 X10. Y5.\n#100=#5001\n#101=#5021\n#102=#5222\n#103=#5241\nG54\n#104=#5001\n#5221=1.\n#105=#5001\nM30\n",
                p);
@@ -273,7 +273,7 @@ TEST(Motion, ReferenceReturnThroughIntermediatePoint) {
 }
 
 TEST(Motion, ToolLengthAndOffsetsVariables) {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   p.tool_offsets[3].geometry = 120.5;
   auto r = run("#100=#2003\n#2004=7.\n#101=#10004\nG43 H3 G00 Z10.\n#102=#5023\nM30\n", p);
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
@@ -364,7 +364,7 @@ TEST(Motion, LatheCoordinateSettingAndFeedModes) {
 }
 
 TEST(Motion, SecondReferencePoint) {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   p.reference_points[1] = {-10, -20, -30, 0, 0, 0};
   auto r = run("G00 X5. Y5. Z5.\nG30 P2 X0 Y0 Z0\nM30\n", p);
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);

@@ -9,7 +9,7 @@ using ncurve::test::run;
 
 namespace {
 machine::MachineProfile with_memory(machine::OffsetMemory m) {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   p.offset_memory = m;
   return p;
 }

@@ -13,7 +13,7 @@ TEST(Profile, ShippedProfilesLoad) {
   EXPECT_EQ(mill.axes, "XYZ");
   EXPECT_EQ(mill.g_code_macros[0], 102);
   EXPECT_DOUBLE_EQ(mill.arc_radius_tolerance, 0.020);
-  EXPECT_DOUBLE_EQ(mill.work_offsets[2][0], -200.0);
+  EXPECT_DOUBLE_EQ(mill.work_offsets[2][0], -250.0);  // G55 at the same place as G54, below machine zero
   auto lathe = load_profile(NCURVE_SOURCE_DIR "/profiles/fanuc-lathe.toml");
   EXPECT_TRUE(lathe.lathe());
   EXPECT_EQ(lathe.axes, "XZ");

@@ -83,7 +83,7 @@ TEST(StrokeCheck, LimitOneOnALatheXIsADiameter) {
 }
 
 TEST(StrokeCheck, LimitOneBelowTheMinus) {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   machine::set_parameter(p, "1321.Z", -100000);
   auto r = run("G00 Z-99.\nG01 Z-101. F100.\nM30\n", p);
   EXPECT_EQ(r.alarm_code(), "OT0501");
@@ -100,7 +100,7 @@ TEST(StrokeCheck, G23SwitchesCheckTwoOff) {
 }
 
 TEST(StrokeCheck, OutsideForbiddenWithOut1) {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   machine::set_parameter(p, "1300#0", 1);
   const std::string area = "G22 X100. Y100. Z10. I-100. J-100. K-200.\n";
   EXPECT_TRUE(run(area + "G01 X90. Y-90. F500.\nM30\n", p).result.ok());

@@ -22,7 +22,7 @@ motion::PlanTotals plan(const std::string& text, const machine::MachineProfile& 
 
 // 1000 mm/s^2 on every axis, no processing time, in position at once.
 machine::MachineProfile simple() {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   p.motion.acceleration = {1000, 1000, 1000, 1000, 1000, 1000};
   p.motion.block_time = 0;
   p.motion.macro_time = 0;

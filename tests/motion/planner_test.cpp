@@ -28,7 +28,7 @@ Planned plan(const std::string& text, const machine::MachineProfile& profile) {
 
 // A mill whose dynamics are simple numbers: 1000 mm/s^2 on every axis, no processing time.
 machine::MachineProfile simple() {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   p.decimal_calculator = true;
   p.motion.acceleration = {1000, 1000, 1000, 1000, 1000, 1000};
   p.motion.block_time = 0;

@@ -13,6 +13,7 @@
 #include "machine/library.hpp"
 #include "report/path_plot.hpp"
 #include "report/svg_plot.hpp"
+#include "support/run_program.hpp"
 
 using namespace ncurve;
 using report::plot::nice_step;
@@ -251,7 +252,7 @@ TEST(PathPlot, CountsEachKindOfElement) {
 }
 
 TEST(PathPlot, AxesOfTheMillPlane) {
-  auto d = draw(kMill, machine::default_mill(), {report::PlotView::xy});
+  auto d = draw(kMill, test::zero_offset_mill(), {report::PlotView::xy});
   EXPECT_EQ(texts(d.svg, "tick-u"), (std::vector<std::string>{"0", "20", "40", "60", "80"}));
   EXPECT_EQ(texts(d.svg, "tick-v"), (std::vector<std::string>{"0", "10", "20", "30", "40", "50", "60"}));
   EXPECT_EQ(texts(d.svg, "label-u"), (std::vector<std::string>{"X, mm"}));
@@ -348,7 +349,7 @@ TEST(PathPlot, MemoryStaysBounded) {
   program += "M30\n";
   machine::ProgramLibrary lib;
   lib.add_text("p.nc", program, true);
-  auto profile = machine::default_mill();
+  auto profile = test::zero_offset_mill();
   report::PathPlot plot(profile, 20);
   machine::Interpreter in(profile, lib);
   ASSERT_TRUE(in.run(plot).ok());

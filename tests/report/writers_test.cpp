@@ -71,7 +71,7 @@ TEST(Writers, CsvLatheXIsADiameter) {
 }
 
 TEST(Writers, JsonlOneObjectPerMove) {
-  std::string j = write("G00 X1. Y2.\nG02 X3. Y2. R1. F100.\nM30\n", "jsonl", machine::default_mill());
+  std::string j = write("G00 X1. Y2.\nG02 X3. Y2. R1. F100.\nM30\n", "jsonl", test::zero_offset_mill());
   std::istringstream in(j);
   std::string l1, l2, l3;
   std::getline(in, l1);
@@ -145,7 +145,7 @@ TEST(Writers, ExpandedGcodeKeepsTheWorkOffsetAndWritesTheAxesThatMove) {
 // G54 to G55 in the middle, then G92: each new frame is set up before the move that uses it; G92's
 // shift of the origin (-10, -10 from G55's X100) is written as the G52 that gives the same origin.
 TEST(Writers, ExpandedGcodeFollowsTheFramesOfTheRun) {
-  auto p = machine::default_mill();
+  auto p = test::zero_offset_mill();
   p.work_offsets[2] = {100, 0, 0, 0, 0, 0};
   const std::string program = "G54 G00 X10. Y0.\nG55 G00 X10.\nG92 X20. Y10.\nG01 X30. F100.\n"
                               "G54 G00 X0.\nM30\n";

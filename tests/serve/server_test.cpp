@@ -202,7 +202,8 @@ TEST_F(ServerTest, EightConcurrentClients) {
   for (int i = 0; i < 8; ++i) {
     ASSERT_FALSE(answers[i].is_null()) << "client " << i;
     EXPECT_EQ(answers[i]["summary"]["moves"]["line"], 20000);
-    EXPECT_EQ(answers[i]["summary"]["extent"]["X"][1], i + 1.0);  // (from X0, where the tool starts)
+    // the tool starts at reference position 1, machine zero: X250 of the shipped mill's G54 (X-250)
+    EXPECT_EQ(answers[i]["summary"]["extent"]["X"][1], 250.0);
     EXPECT_EQ(answers[i]["moves"]["x"][19999], i + 1.0);
     EXPECT_EQ(answers[i].contains("trace"), i % 2 == 0);
   }
@@ -305,11 +306,12 @@ TEST_F(ServerTest, RunSummaryKeys) {
 }
 
 TEST_F(ServerTest, AnalyzeAndGen) {
-  // 100 mm at F600: 10 s at the programmed feed
+  // from X250 (reference position 1 at machine zero, G54 X-250) to X100: 150 mm at F600, 15 s at the
+  // programmed feed
   json j = post("/api/analyze", R"({"program": "G01 X100. F600.\nM30\n"})", 200);
   EXPECT_EQ(j["ok"], true);
-  EXPECT_DOUBLE_EQ(j["programmed_time_s"].get<double>(), 10.0);
-  EXPECT_GE(j["cycle_time_s"].get<double>(), 10.0);
+  EXPECT_DOUBLE_EQ(j["programmed_time_s"].get<double>(), 15.0);
+  EXPECT_GE(j["cycle_time_s"].get<double>(), 15.0);
   j = post("/api/gen", R"({"curve": "ellipse", "params": {"a": 20, "b": 10}, "tol": 0.01})", 200);
   EXPECT_EQ(j["within_tolerance"], true);
   EXPECT_LE(j["max_deviation"].get<double>(), 0.01);

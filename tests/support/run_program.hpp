@@ -35,7 +35,16 @@ struct Ran {
   std::uint32_t alarm_line() const { return result.alarm ? result.alarm->span.line : 0; }
 };
 
-inline Ran run(const std::string& text, machine::MachineProfile profile = machine::default_mill(),
+// The tests' mill: the factory-parameter mill with every work offset 0, so that it powers on with the
+// tool at the work zero (reference position 1 at machine zero), as the values worked by hand in the
+// tests assume. The shipped mill (machine::default_mill()) has its G54 below machine zero.
+inline machine::MachineProfile zero_offset_mill() {
+  machine::MachineProfile p = machine::default_mill();
+  p.work_offsets = {};
+  return p;
+}
+
+inline Ran run(const std::string& text, machine::MachineProfile profile = zero_offset_mill(),
                machine::RunOptions options = {}, const std::map<std::string, std::string>& library = {},
                const std::vector<std::string>& folders = {}) {
   Ran r;

@@ -25,7 +25,15 @@ int axis_index(char letter) {
   }
 }
 
-MachineProfile default_mill() { return MachineProfile{}; }
+// The shipped mill stands as a vertical machining centre is set up: reference position 1 (where it
+// powers on and G28 goes) at machine zero, the top of Z's travel and a corner of X and Y, and the
+// work zeros G54..G59 on the table below it, all at one place (docs/profiles.md). The external
+// offset and G54.1's stay 0.
+MachineProfile default_mill() {
+  MachineProfile p;
+  for (int i = 1; i <= 6; ++i) p.work_offsets[i] = {-250, -200, -400, 0, 0, 0};
+  return p;
+}
 
 MachineProfile default_lathe() {
   MachineProfile p;

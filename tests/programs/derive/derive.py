@@ -464,13 +464,14 @@ def write_lathe_profile(name, r, tip):
         f.write(text)
 
 
-MILL = dict(type='mill', home=(0.0, 0.0, 0.0), offsets={})
+MILL = dict(type='mill', home=(250.0, 200.0, 400.0), offsets={})
 def LATHE(r, tip): return dict(type='lathe', home=(300.0, 0.0, 250.0), tools={1: (tip, r)})
 
 
 # =================================================================== cases
 # Every mill program: offset memory A, offset 1 = 5 mm (G10 L11 P1 R5.),
-# machine starts at X0 Y0 Z0 (profiles/fanuc-mill.toml reference point 1),
+# machine starts at reference point 1, machine zero: X250 Y200 Z400 of G54 (X-250 Y-200 Z-400 in
+# profiles/fanuc-mill.toml and the default mill),
 # absolute coordinates, G17.  Cites: see docs/compensation-spec.md.
 CASES = []
 def case(fn):
