@@ -278,6 +278,9 @@ private:
   unsigned block_axes() const;  // a bit per axis the block names (U, V, W too on system A)
   bool names_plane_axis() const;  // of the offset plane
   void remember_intermediate(const AxisVector& mid);  // G28/G30/G30.1: the point G29 goes through
+  // NC2074: a reference return (g x10, point 0..3 or -1 floating) whose moves from `from` through
+  // `mid` to `ref` take the tool towards the part
+  void check_return_direction(int g, int point, const AxisVector& from, const AxisVector& mid, const AxisVector& ref);
   void single_direction(const AxisVector& target);
   AxisVector intermediate_{};
   unsigned intermediate_axes_ = 0;        // axes G28/G30/G30.1 have given an intermediate point

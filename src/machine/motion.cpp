@@ -366,6 +366,7 @@ void Executor::reference_return(int g) {
   if (!any) return;
   if (rolls_) roll_over(mid);
   remember_intermediate(mid);  // for G29 (reference_moves.cpp)
+  const AxisVector from = coords_.pos;
   // in offset mode the vector is cancelled at the intermediate point and restored at the next move
   const base::RestoreOnExit<bool> restore(comp_suspended_);
   comp_suspended_ = true;
@@ -384,7 +385,9 @@ void Executor::reference_return(int g) {
     if (a < 0 || !has_axis_[a]) continue;
     ref[a] = (g == 301 ? *profile_.floating_reference : profile_.reference_points[point])[a] - coords_.origin[a] - coords_.tool_shift[a];
   }
+  const AxisVector reached = coords_.pos;  // the intermediate point as the move left the tool
   linear(MoveKind::rapid, ref);
+  check_return_direction(g, g == 301 ? -1 : point, from, reached, coords_.pos);
 }
 
 void Executor::machine_coordinate_move() {

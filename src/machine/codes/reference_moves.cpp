@@ -6,6 +6,7 @@
 
 #include "base/restore.hpp"
 #include "machine/executor.hpp"
+#include "machine/word_values.hpp"
 
 namespace ncurve::machine {
 
@@ -38,6 +39,82 @@ void Executor::remember_intermediate(const AxisVector& mid) {
   for (int a = 0; a < kAxes; ++a)
     if (axes & (1u << a)) intermediate_[a] = mid[a];
   intermediate_axes_ |= axes;
+}
+
+// NC2074: a reference position return that takes the tool towards the part. A return is there to
+// take the tool away from the part: the reference point sits where the machine builder put it, at
+// the top of a mill's Z travel and at the far ends of a lathe's X and Z. A mill's return whose Z
+// goes down, a lathe's whose X comes nearer the spindle centre line (work X0; the tool on the +X
+// side, as X up) or whose Z goes towards the chuck (-Z) and that ends at or behind the face of the
+// work zero (Z <= 0: the part lies behind it, the workpiece zero on its finished face as the
+// manuals draw it; in front of the face the tool is clear of the part) is an intermediate point
+// the program put below (inside) the tool, or a reference point the profile puts there (a profile
+// whose work offsets are 0 has its work zero at the reference point). Each leg of the return is
+// checked, once a block.
+void Executor::check_return_direction(int g, int point, const AxisVector& from, const AxisVector& mid,
+                                      const AxisVector& ref) {
+  const double tol = profile_.increment * 0.5 + 1e-9;
+  const bool lathe = profile_.lathe();
+  const char* unit = modal_.inch ? "in" : "mm";
+  // the axes a leg moves towards the part (a bit per axis) and what it does on them
+  auto towards = [&](const AxisVector& a, const AxisVector& b, unsigned& axes) {
+    std::string s;
+    auto add = [&](int axis, const std::string& what) {
+      s += s.empty() ? what : " and " + what;
+      axes |= 1u << axis;
+    };
+    if (lathe) {
+      if (b[2] > tol) return s;  // ends in front of the face
+      const double in = std::fabs(a[0]) - std::fabs(b[0]);
+      if (has_axis_[0] && in > tol)
+        add(0, fmt::format("{:.3f} {}{} in X towards the spindle centre line", program_units(0, in), unit,
+                           profile_.diameter_x ? " on the diameter" : ""));
+      if (has_axis_[2] && a[2] - b[2] > tol)
+        add(2, fmt::format("{:.3f} {} in -Z towards the chuck", program_units(2, a[2] - b[2]), unit));
+    } else if (has_axis_[2] && a[2] - b[2] > tol) {
+      add(2, fmt::format("{:.3f} {} down (-Z) towards the part", program_units(2, a[2] - b[2]), unit));
+    }
+    return s;
+  };
+  unsigned axes1 = 0, axes2 = 0;
+  const std::string leg1 = towards(from, mid, axes1), leg2 = towards(mid, ref, axes2);
+  if (leg1.empty() && leg2.empty()) return;
+
+  const std::string code = g == 280 ? "G28" : g == 301 ? "G30.1" : fmt::format("G30 P{}", point + 1);
+  const std::string target = point < 0 ? "the floating reference position" : fmt::format("reference position {}", point + 1);
+  auto where = [&](const AxisVector& p, unsigned axes, bool machine) {
+    std::string s;
+    for (int a = 0; a < kAxes; ++a)
+      if (axes & (1u << a)) {
+        const double v = machine ? p[a] + coords_.origin[a] + coords_.tool_shift[a] : p[a];
+        s += fmt::format("{}{}{:.3f}", s.empty() ? "" : " ", kAxisLetters[a], program_units(a, v));
+      }
+    return s;
+  };
+  const char* side = lathe ? "nearer the part than the tool" : "below the tool";
+  std::string message;
+  if (!leg1.empty()) {
+    const std::string straight = !lathe ? fmt::format("G91 {} Z0", code)
+                                 : profile_.gcode_system == 'A' ? fmt::format("{} U0 W0", code)
+                                                                : fmt::format("G91 {} X0 Z0", code);
+    message = fmt::format("{} rapids {} to its intermediate point {}, which the block's axis words put {} (G90: a "
+                          "position in work coordinates); the tool passes through it on its way to {}, and {} goes "
+                          "there straight from where the tool is",
+                          code, leg1, where(mid, axes1, false), side, target, straight);
+  }
+  if (!leg2.empty()) {
+    const std::string source = point < 0 ? "[reference_points] floating" : fmt::format("[reference_points] \"{}\"", point + 1);
+    message += fmt::format("{} rapids {} to {}: the reference point is {}: the profile puts it at machine {} ({}), "
+                           "which is {} in the work coordinates in force, and the tool stood at {}; a return should "
+                           "take the tool away from the part: give the machine's own reference point and work offsets "
+                           "in the profile ([reference_points], [work_offsets])",
+                           message.empty() ? code : "; then it", leg2, target, side, where(ref, axes2, true), source,
+                           where(ref, axes2, false), where(mid, axes2, false));
+  }
+  std::uint16_t column = 0;
+  for (const Cmd& c : cmds_)
+    if (c.letter == 'G' && round_int(c.value * 10) == g) column = c.column;
+  warn_once("NC2074", message, column);
 }
 
 // G27 IP: positioning at rapid to IP, then each axis named must stand at reference position 1

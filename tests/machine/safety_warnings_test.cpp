@@ -1,0 +1,195 @@
+// The shipped mill's setup (reference position 1 at machine zero above the table, G54 below it) and
+// the mistakes a control accepts without an alarm that ruin the part or the tool: a reference
+// return towards the part (NC2074). Every expected value is worked by hand from the manuals' rules
+// in the comment beside it.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/run_program.hpp"
+
+using namespace ncurve;
+using ncurve::test::run;
+
+namespace {
+int count(const test::Ran& r, const std::string& code) {
+  int n = 0;
+  for (const auto& w : r.result.warnings) n += w.code == code;
+  return n;
+}
+const nc::Diagnostic* first(const test::Ran& r, const std::string& code) {
+  for (const auto& w : r.result.warnings)
+    if (w.code == code) return &w;
+  return nullptr;
+}
+std::string text(const test::Ran& r, const std::string& code) {
+  const nc::Diagnostic* w = first(r, code);
+  return w ? w->message : "";
+}
+bool has(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
+
+// The lathe of profiles/fanuc-lathe.toml: reference position 1 at machine X150 (radius: 300 on the
+// diameter) Z250, G54 at machine zero on the spindle centre line.
+machine::MachineProfile lathe_with_home() {
+  machine::MachineProfile p = machine::default_lathe();
+  p.reference_points[0] = {150, 0, 250, 0, 0, 0};
+  return p;
+}
+}  // namespace
+
+// ---- the shipped mill ----
+
+// Reference position 1 is machine zero; G54 (G55..G59 too) is machine X-250 Y-200 Z-400, so the machine powers on
+// with the tool at X250 Y200 Z400 of G54 (0 - (-250), 0 - (-200), 0 - (-400)).
+TEST(ShippedMill, PowersOnAtMachineZeroAboveAndBesideTheWorkZero) {
+  const machine::MachineProfile mill = machine::default_mill();
+  EXPECT_EQ(mill.reference_points[0], (machine::AxisVector{0, 0, 0, 0, 0, 0}));
+  const machine::MachineProfile file = machine::load_profile(NCURVE_SOURCE_DIR "/profiles/fanuc-mill.toml");
+  EXPECT_EQ(file.reference_points[0], mill.reference_points[0]);
+  for (int g = 1; g <= 6; ++g) {  // G54..G59 at one place below machine zero, in both
+    EXPECT_EQ(mill.work_offsets[g], (machine::AxisVector{-250, -200, -400, 0, 0, 0})) << "G" << 53 + g;
+    EXPECT_EQ(file.work_offsets[g], mill.work_offsets[g]) << "G" << 53 + g;
+  }
+  // #5021..#5023 the machine position, #5041..#5043 the work position, before any move
+  auto r = run("#101=#5021\n#102=#5022\n#103=#5023\n#104=#5041\n#105=#5042\n#106=#5043\nG90 G00 X0 Y0\nM30\n", mill);
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_EQ(r.var(101), 0.0);
+  EXPECT_EQ(r.var(102), 0.0);
+  EXPECT_EQ(r.var(103), 0.0);
+  EXPECT_EQ(r.var(104), 250.0);
+  EXPECT_EQ(r.var(105), 200.0);
+  EXPECT_EQ(r.var(106), 400.0);
+  const auto m = r.motions();
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m[0].start, (machine::AxisVector{250, 200, 400, 0, 0, 0}));
+  EXPECT_EQ(m[0].end, (machine::AxisVector{0, 0, 400, 0, 0, 0}));  // Z not named: it stays at the top
+}
+
+// ---- NC2074: a reference return towards the part ----
+
+// The program on the shipped mill: after a cut at Z-5, G91 G28 Z0 goes through the point
+// where the tool is (an incremental 0) to machine Z0, which is Z400 of G54: 405 mm up. Clean.
+TEST(ReturnTowardsThePart, G91G28Z0GoesUpOnTheShippedMill) {
+  auto r = run("G90 G54 G00 X0 Y0 Z5.\nG01 Z-5. F100.\nG91 G28 Z0\nM30\n", machine::default_mill());
+  ASSERT_TRUE(r.result.ok());
+  EXPECT_EQ(count(r, "NC2074"), 0);
+  const auto m = r.motions();
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_EQ(m[2].end, (machine::AxisVector{0, 0, -5, 0, 0, 0}));   // the intermediate point: where the tool is
+  EXPECT_EQ(m[3].end, (machine::AxisVector{0, 0, 400, 0, 0, 0}));  // machine Z0 = G54 Z400
+}
+
+// G28 Z-100. under G90: the intermediate point is Z-100 of G54, 95 mm below the tool at Z-5; then up
+// to Z400. The first leg warns.
+TEST(ReturnTowardsThePart, AnAbsoluteIntermediatePointBelowTheToolWarns) {
+  auto r = run("G90 G54 G00 X0 Y0 Z5.\nG01 Z-5. F100.\nG28 Z-100.\nM30\n", machine::default_mill());
+  ASSERT_TRUE(r.result.ok());
+  ASSERT_EQ(count(r, "NC2074"), 1);
+  const nc::Diagnostic* w = first(r, "NC2074");
+  EXPECT_EQ(w->span.line, 3u);
+  EXPECT_EQ(w->span.column, 1u);
+  EXPECT_TRUE(has(w->message, "G28 rapids 95.000 mm down (-Z) towards the part to its intermediate point Z-100.000"))
+      << w->message;
+  const auto m = r.motions();
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_EQ(m[2].end[2], -100.0);
+  EXPECT_EQ(m[3].end[2], 400.0);
+}
+
+// A profile whose work offsets are 0 puts the work zero at the reference point (machine zero): the
+// tool at Z50 returns 50 mm down, onto the work zero.
+TEST(ReturnTowardsThePart, AReferencePointAtTheWorkZeroWarns) {
+  auto r = run("G90 G00 X0 Y0 Z50.\nG91 G28 Z0\nM30\n", test::zero_offset_mill());
+  ASSERT_TRUE(r.result.ok());
+  ASSERT_EQ(count(r, "NC2074"), 1);
+  const nc::Diagnostic* w = first(r, "NC2074");
+  EXPECT_EQ(w->span.line, 2u);
+  EXPECT_EQ(w->span.column, 5u);  // the G28 word
+  EXPECT_TRUE(has(w->message, "G28 rapids 50.000 mm down (-Z) towards the part to reference position 1: the "
+                              "reference point is below the tool: the profile puts it at machine Z0.000"))
+      << w->message;
+  EXPECT_TRUE(has(w->message, "which is Z0.000 in the work coordinates in force, and the tool stood at Z50.000"))
+      << w->message;
+  EXPECT_EQ(r.motions().back().end[2], 0.0);  // the control makes the move: ncurve only warns
+}
+
+// Both legs down (Z50 -> Z20 -> Z0 on the zero-offset mill): one warning for the block, naming both.
+TEST(ReturnTowardsThePart, BothLegsDownWarnOnceNamingBoth) {
+  auto r = run("G90 G00 X0 Y0 Z50.\nG28 Z20.\nM30\n", test::zero_offset_mill());
+  ASSERT_EQ(count(r, "NC2074"), 1);
+  const std::string w = text(r, "NC2074");
+  EXPECT_TRUE(has(w, "G28 rapids 30.000 mm down (-Z) towards the part to its intermediate point Z20.000")) << w;
+  EXPECT_TRUE(has(w, "then it rapids 20.000 mm down (-Z) towards the part to reference position 1")) << w;
+}
+
+// G30 P2 to a second reference position the profile puts at machine Z-450, Z-50 of G54: from Z10
+// the return goes 60 mm down.
+TEST(ReturnTowardsThePart, G30ToAReferencePositionBelowTheToolWarns) {
+  machine::MachineProfile p = machine::default_mill();
+  p.reference_points[1] = {0, 0, -450, 0, 0, 0};
+  auto r = run("G90 G00 X0 Y0 Z10.\nG91 G30 P2 Z0\nM30\n", p);
+  ASSERT_TRUE(r.result.ok());
+  ASSERT_EQ(count(r, "NC2074"), 1);
+  const std::string w = text(r, "NC2074");
+  EXPECT_TRUE(has(w, "G30 P2 rapids 60.000 mm down (-Z) towards the part to reference position 2")) << w;
+  EXPECT_TRUE(has(w, "machine Z-450.000 ([reference_points] \"2\"), which is Z-50.000 in the work coordinates")) << w;
+  EXPECT_EQ(r.motions().back().end[2], -50.0);
+}
+
+// Not warned: a return of X and Y alone (Z stays), G53 (a positioning in machine coordinates, not a
+// return), a return with the tool length offset in force (G43 H1 = 100: the tool at Z-5 is machine
+// -5 - 400 + 100 = -305; the return takes the spindle to machine Z0, which is Z300 of G54 with the
+// offset: up).
+TEST(ReturnTowardsThePart, ReturnsThatGoUpOrSidewaysAreClean) {
+  const machine::MachineProfile mill = machine::default_mill();
+  auto xy = run("G90 G00 X0 Y0 Z-5.\nG28 X0 Y0\nG53 Z-450.\nM30\n", mill);
+  ASSERT_TRUE(xy.result.ok());
+  EXPECT_EQ(count(xy, "NC2074"), 0);
+  const auto m = xy.motions();
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_EQ(m[2].end, (machine::AxisVector{250, 200, -5, 0, 0, 0}));  // machine X0 Y0, Z where it was
+  EXPECT_EQ(m[3].end[2], -50.0);                                      // G53 Z-450.: 50 mm below G54 Z0
+  auto g43 = run("G10 L11 P1 R100.\nG90 G00 G43 X0 Y0 Z50. H1\nG01 Z-5. F100.\nG91 G28 Z0\nM30\n", mill);
+  ASSERT_TRUE(g43.result.ok());
+  EXPECT_EQ(count(g43, "NC2074"), 0);
+  EXPECT_EQ(g43.motions().back().end[2], 300.0);
+}
+
+// A lathe: X up, the tool on the +X side of the spindle centre line (work X0), the chuck towards -Z.
+// From X40 (diameter) Z-20, G28 U0 W0 on the lathe of fanuc-lathe.toml goes out to X300 Z250: clean.
+// With the reference point at the work zero (a profile without one) it goes 40 mm (diameter) in X
+// onto the centre line and 5 mm towards the chuck from Z5.
+TEST(ReturnTowardsThePart, ALatheReturnIntoThePartWarns) {
+  auto home = run("G00 X40. Z5.\nG01 Z-20. F0.2\nG28 U0 W0\nM30\n", lathe_with_home());
+  ASSERT_TRUE(home.result.ok());
+  EXPECT_EQ(count(home, "NC2074"), 0);
+  EXPECT_EQ(home.motions().back().end, (machine::AxisVector{150, 0, 250, 0, 0, 0}));  // radius 150 = X300
+  auto zero = run("G00 X40. Z5.\nG28 U0 W0\nM30\n", machine::default_lathe());
+  ASSERT_TRUE(zero.result.ok());
+  ASSERT_EQ(count(zero, "NC2074"), 1);
+  const std::string w = text(zero, "NC2074");
+  EXPECT_TRUE(has(w, "G28 rapids 40.000 mm on the diameter in X towards the spindle centre line and 5.000 mm in -Z "
+                     "towards the chuck to reference position 1"))
+      << w;
+  EXPECT_TRUE(has(w, "machine X0.000 Z0.000")) << w;
+}
+
+// In front of the face (Z > 0) the tool is clear of the part: from X320 Z76 the return's X comes
+// 20 mm (diameter) nearer the centre line, to X300, but ends at Z250: clean. A second reference
+// position behind the face (machine X150 radius Z-30): from X40 Z5 the return goes 35 mm towards
+// the chuck to Z-30 (and out in X): warned for Z alone.
+TEST(ReturnTowardsThePart, ALatheReturnInFrontOfTheFaceIsClean) {
+  auto front = run("G00 X320. Z76.\nG28 U0 W0\nM30\n", lathe_with_home());
+  ASSERT_TRUE(front.result.ok());
+  EXPECT_EQ(count(front, "NC2074"), 0);
+  EXPECT_EQ(front.motions().back().end, (machine::AxisVector{150, 0, 250, 0, 0, 0}));
+  machine::MachineProfile p = lathe_with_home();
+  p.reference_points[1] = {150, 0, -30, 0, 0, 0};
+  auto behind = run("G00 X40. Z5.\nG30 P2 U0 W0\nM30\n", p);
+  ASSERT_TRUE(behind.result.ok());
+  ASSERT_EQ(count(behind, "NC2074"), 1);
+  const std::string w = text(behind, "NC2074");
+  EXPECT_TRUE(has(w, "G30 P2 rapids 35.000 mm in -Z towards the chuck to reference position 2")) << w;
+  EXPECT_FALSE(has(w, "centre line")) << w;
+}
