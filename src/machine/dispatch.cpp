@@ -101,6 +101,43 @@ void Executor::check_radius_offset() {
             column);
 }
 
+// A mill's tool change (M06, given out, or calling its subprogram or macro): the first cutting
+// move after it is checked for the tool length compensation (check_tool_length). A lathe indexes
+// its turret on T, with the offset of the T word: no M06 there.
+void Executor::note_tool_change() {
+  if (profile_.lathe()) return;
+  tool_changed_ = true;
+  changed_tool_ = tool_;
+  tool_change_line_ = span(0).line;
+  tool_change_z_ = coords_.pos[2];
+}
+
+// NC2075: the first cutting move (G01, G02, G03, a cycle's feed) after a mill's tool change, made
+// with no tool length compensation in force (G49, or G43/G44 with H0, whose offset is always 0):
+// the programmed Z is then the spindle's gauge line, and the tool's tip reaches its length below
+// it. The control gives no alarm. A G43/G44 H in force from before the change stays in force
+// across M06, as on the control (the tool change is the machine's, not a G code), and is not warned.
+// A feed move in X and Y alone at the height the tool change left the tool (CAM systems' G01 X Y
+// F before their G43 Z) is not yet a cut: the check waits for a move at a height of the program's.
+void Executor::check_tool_length(double to_z) {
+  if (coords_.pos[2] == tool_change_z_ && to_z == tool_change_z_) return;
+  tool_changed_ = false;
+  const bool compensated = modal_.length_comp == 43 || modal_.length_comp == 44;
+  if (compensated && h_ != 0) return;
+  const std::string tool = changed_tool_ != 0 ? fmt::format("T{}", changed_tool_) : std::string("the tool");
+  const std::string why = compensated ? fmt::format("G{} with H0 (offset number 0 is always 0)", modal_.length_comp)
+                                      : std::string("no tool length compensation (G49)");
+  std::uint16_t column = 0;
+  for (const Cmd& c : cmds_)
+    if (column == 0 && (c.letter == 'G' || axis_index(c.letter) >= 0)) column = c.column;
+  warn_once("NC2075", fmt::format("{} cuts with no G43 H: the programmed Z is the spindle's gauge line, not the tool "
+                                  "tip, which reaches the tool's length below it: the tool goes that much deeper than "
+                                  "programmed, into the part or the fixture (the control gives no alarm); {} is in force since the tool change (M06) at line "
+                                  "{}: give G43 H{} with the tool's length offset before the first cut",
+                                  tool, why, tool_change_line_, changed_tool_ != 0 ? changed_tool_ : 1),
+            column);
+}
+
 // A dimension or F word that read a vacant variable: the control ignores a word whose value is
 // vacant, and counts a vacant variable as 0 in an expression, without an alarm. A macro's own
 // arguments left out (X#24 with no X given) are its way of making a word optional: not warned.
@@ -198,6 +235,7 @@ bool Executor::macro_call_block(const Block& b, SubprogramCall& sub) {
     for (int m : m_codes_) {
       for (int i = 0; i < 10; ++i)
         if (profile_.m_code_macros[i] != 0 && m == profile_.m_code_macros[i]) {
+          if (m == 6) note_tool_change();  // M06 as a custom macro: the change is the macro's
           std::vector<Arg> args = arguments(false, -1, m);
           call_macro(9020 + i, args, 1, true, false, b.column);
           return true;
@@ -285,6 +323,7 @@ bool Executor::block_m_codes(const Block& b, const SubprogramCall& sub) {
     if (c.letter != 'M') continue;
     int m = integer(c, "M");
     last_m_ = m;
+    if (m == 6) note_tool_change();
     if (m == sub.m) continue;  // calls its subprogram below, as M98 does; not given out
     if (m == cycle_clamp_m_) [[unlikely]] {  // given out by the lathe's drilling cycle at each hole
       cycle_clamp_m_ = -1;

@@ -102,6 +102,8 @@ private:
   bool block_m_codes(const nc::Block& b, const SubprogramCall& sub);
   void modal_call_after_move(const nc::Block& b);
   void check_radius_offset();  // NC2070: G41/G42 moving with a radius offset of 0
+  void note_tool_change();     // a mill's M06: the first cut after it is checked (NC2075)
+  void check_tool_length(double to_z);  // NC2075: the first cut after a tool change, without G43/G44 H
   void warn_vacant_word();  // NC2072
   void exec_assignment(const nc::Block& b);
   void jump(const nc::Block& b, double sequence);
@@ -379,6 +381,7 @@ private:
   double feed_ = 0, speed_ = 0;
   double max_spindle_ = 0;  // G50 S on a lathe
   int tool_ = 0, h_ = 0, d_ = 0, last_m_ = -1;
+  bool tool_changed_ = false;  // a mill's M06 with no cutting move since (NC2075)
   std::int32_t last_sequence_ = -1;
   // G66 modal calls in force, the latest last: a second G66 nests inside the first, and G67 cancels
   // the latest (the manual's nesting of modal calls).
@@ -481,6 +484,9 @@ private:
   };
   VacantWord vacant_word_;
   int radius_checked_ = -1;  // the D number checked since the last G40 (-1: none)
+  int changed_tool_ = 0;               // the T of the last M06, the line it was made at and the
+  std::uint32_t tool_change_line_ = 0;  // Z the tool stood at then (NC2075)
+  double tool_change_z_ = 0;
 };
 
 }  // namespace ncurve::machine

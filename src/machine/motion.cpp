@@ -209,6 +209,7 @@ void Executor::linear(MoveKind kind, const AxisVector& target) {
   m.length = line_length(coords_.pos.data(), target.data());
   if (kind == MoveKind::line) {
     if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
+    if (tool_changed_) [[unlikely]] check_tool_length(target[2]);
     m.feed = feed_;
     const double fed = extra_axes_ ? combined_length(coords_.pos, target, m.length) : m.length;  // F on every axis
     m.seconds = feed_seconds(fed, coords_.pos[0], target[0]);
@@ -227,6 +228,7 @@ void Executor::linear(MoveKind kind, const AxisVector& target) {
 
 void Executor::arc(const AxisVector& target, bool clockwise) {
   if (feed_ <= 0) alarm("PS0011", "feed rate is zero: give F before or in the first G01/G02/G03 block");
+  if (tool_changed_) [[unlikely]] check_tool_length(target[2]);
   const PlaneAxes pa = plane_axes(modal_.plane);
   if (profile_.lathe() && modal_.plane != 18 && !developed_) alarm("PS0021", "a lathe cuts arcs in the G18 (ZX) plane only");
   const double sp = coords_.pos[pa.p], sq = coords_.pos[pa.q];

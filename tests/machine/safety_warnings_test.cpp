@@ -1,11 +1,13 @@
 // The shipped mill's setup (reference position 1 at machine zero above the table, G54 below it) and
 // the mistakes a control accepts without an alarm that ruin the part or the tool: a reference
-// return towards the part (NC2074). Every expected value is worked by hand from the manuals' rules
-// in the comment beside it.
+// return towards the part (NC2074), a first cut after a tool change with no tool length
+// compensation (NC2075). Every expected value is worked by hand from the manuals' rules in the
+// comment beside it.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "support/run_program.hpp"
 
@@ -192,4 +194,69 @@ TEST(ReturnTowardsThePart, ALatheReturnInFrontOfTheFaceIsClean) {
   const std::string w = text(behind, "NC2074");
   EXPECT_TRUE(has(w, "G30 P2 rapids 35.000 mm in -Z towards the chuck to reference position 2")) << w;
   EXPECT_FALSE(has(w, "centre line")) << w;
+}
+
+// ---- NC2075: the first cut after a tool change, with no G43 H ----
+
+// T1 M06, then down to Z5 and a cut to Z-5 with G49 (the power-on mode): the spindle's gauge line
+// goes to Z-5, the tool's tip its length below. Warned at the cut (line 4), naming the change's line.
+TEST(ToolChangeWithoutLengthOffset, TheFirstCutWithoutG43Warns) {
+  auto r = run("T1 M06\nG90 G54 G00 X0 Y0\nZ5.\nG01 Z-5. F100.\nX10.\nM30\n", machine::default_mill());
+  ASSERT_TRUE(r.result.ok());
+  ASSERT_EQ(count(r, "NC2075"), 1);  // the first cut only
+  const nc::Diagnostic* w = first(r, "NC2075");
+  EXPECT_EQ(w->span.line, 4u);
+  EXPECT_EQ(w->span.column, 1u);
+  EXPECT_TRUE(has(w->message, "T1 cuts with no G43 H: the programmed Z is the spindle's gauge line, not the tool tip"))
+      << w->message;
+  EXPECT_TRUE(has(w->message, "no tool length compensation (G49) is in force since the tool change (M06) at line 1"))
+      << w->message;
+  EXPECT_TRUE(has(w->message, "give G43 H1")) << w->message;
+}
+
+// G43 H0: offset number 0 is always 0, so the gauge line is programmed as without G43.
+TEST(ToolChangeWithoutLengthOffset, G43WithH0Warns) {
+  auto r = run("T4 M06\nG90 G00 G43 X0 Y0 Z5. H0\nG01 Z-5. F100.\nM30\n", machine::default_mill());
+  ASSERT_TRUE(r.result.ok());
+  ASSERT_EQ(count(r, "NC2075"), 1);
+  EXPECT_TRUE(has(text(r, "NC2075"), "T4 cuts with no G43 H")) << text(r, "NC2075");
+  EXPECT_TRUE(has(text(r, "NC2075"), "G43 with H0 (offset number 0 is always 0)")) << text(r, "NC2075");
+}
+
+// A drilling cycle's feed is a cut: G81 after T3 M06 warns at its block (line 3).
+TEST(ToolChangeWithoutLengthOffset, ACycleFeedIsACut) {
+  auto r = run("T3 M06\nG90 G00 X10. Y10. Z20.\nG81 Z-10. R2. F100.\nG80\nM30\n", machine::default_mill());
+  ASSERT_TRUE(r.result.ok());
+  ASSERT_EQ(count(r, "NC2075"), 1);
+  EXPECT_EQ(first(r, "NC2075")->span.line, 3u);
+}
+
+// Each tool change is checked: T1 and T2 both cut without G43, two warnings (lines 3 and 7).
+TEST(ToolChangeWithoutLengthOffset, EachChangeIsCheckedAgain) {
+  auto r = run("T1 M06\nG90 G00 X0 Y0 Z5.\nG01 Z-1. F100.\nG00 Z50.\nT2 M06\nG00 Z5.\nG01 Z-2.\nM30\n",
+               machine::default_mill());
+  ASSERT_EQ(count(r, "NC2075"), 2);
+  std::vector<std::uint32_t> lines;
+  for (const auto& w : r.result.warnings)
+    if (w.code == "NC2075") lines.push_back(w.span.line);
+  EXPECT_EQ(lines, (std::vector<std::uint32_t>{3, 7}));
+}
+
+// Not warned: G43 H after the change and before the cut; G43 H1 in force from before the change
+// (the control keeps the mode and its H across M06: ncurve follows it); a CAM system's G01 X Y at
+// the height the change left the tool, before its G43 Z; a program with no M06; a lathe, whose T
+// word indexes the turret with its offset.
+TEST(ToolChangeWithoutLengthOffset, LengthCompensationInForceIsClean) {
+  const machine::MachineProfile mill = machine::default_mill();
+  for (const char* program : {"T1 M06\nG90 G54 G00 G43 X0 Y0 Z5. H1\nG01 Z-5. F100.\nM30\n",
+                              "T1 M06\nG43 H1 G00 Z50.\nG01 Z-5. F100.\nG00 Z50.\nT2 M06\nG00 X10.\nG01 Z-5.\nM30\n",
+                              "T9 M06\nG01 X10. Y10. F500.\nG00 G43 Z15. H9\nG01 Z-1.\nM30\n",
+                              "G90 G00 X0 Y0 Z5.\nG01 Z-5. F100.\nM30\n"}) {
+    auto r = run(program, mill);
+    ASSERT_TRUE(r.result.ok()) << program;
+    EXPECT_EQ(count(r, "NC2075"), 0) << program;
+  }
+  auto lathe = run("T0101\nM06\nG00 X40. Z5.\nG01 Z-20. F0.2\nM30\n", machine::default_lathe());
+  ASSERT_TRUE(lathe.result.ok());
+  EXPECT_EQ(count(lathe, "NC2075"), 0);
 }
