@@ -181,6 +181,8 @@ private:
   void rigid_tapping_words();        // M29 and what may stand between it and G84/G74
   void rigid_tapping_check(std::uint16_t column) const;
   bool lathe_drilling_block();  // a lathe's G83..G85, G87..G89 (lathe_drilling.cpp)
+  // NC2076: a peck drilling hole from point R to Z in cuts of q whose d (No.5114/No.5115) is 0
+  void check_peck_d(int code, double r, double z, double q, std::uint16_t column);
 
   // tool position offset G45..G48 (position_offset.cpp)
   int position_offset_ = 0;  // 45..48 given in the block (one-shot), else 0
@@ -487,6 +489,7 @@ private:
   int changed_tool_ = 0;               // the T of the last M06, the line it was made at and the
   std::uint32_t tool_change_line_ = 0;  // Z the tool stood at then (NC2075)
   double tool_change_z_ = 0;
+  bool peck_d_checked_ = false;  // NC2076 warned in this cycle mode
 };
 
 }  // namespace ncurve::machine

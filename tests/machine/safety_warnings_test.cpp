@@ -1,8 +1,8 @@
 // The shipped mill's setup (reference position 1 at machine zero above the table, G54 below it) and
 // the mistakes a control accepts without an alarm that ruin the part or the tool: a reference
 // return towards the part (NC2074), a first cut after a tool change with no tool length
-// compensation (NC2075). Every expected value is worked by hand from the manuals' rules in the
-// comment beside it.
+// compensation (NC2075), peck drilling whose d is 0 (NC2076). Every expected value is worked by
+// hand from the manuals' rules in the comment beside it.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -259,4 +259,89 @@ TEST(ToolChangeWithoutLengthOffset, LengthCompensationInForceIsClean) {
   auto lathe = run("T0101\nM06\nG00 X40. Z5.\nG01 Z-20. F0.2\nM30\n", machine::default_lathe());
   ASSERT_TRUE(lathe.result.ok());
   EXPECT_EQ(count(lathe, "NC2075"), 0);
+}
+
+// ---- NC2076: G73 / G83 with a d of 0 ----
+
+// G83 Z-20. R2. Q5.: cuts to -3, -8, -13, -18, -20 (22 mm in cuts of 5). After each cut but the last
+// the drill goes out to R2 and rapids back down to d = No.5115 short of the depth reached; with
+// d = 0 (the profile's) exactly to it: to -3 after the first. Warned once for the cycle mode, at the
+// G83 word (column 5), not again at the second hole (line 3).
+TEST(PeckDrillingWithoutD, G83WithAClearanceOfZeroWarns) {
+  auto r = run("G90 G00 X10. Y10. Z20.\nG99 G83 Z-20. R2. Q5. F100.\nX20.\nG80\nM30\n", machine::default_mill());
+  ASSERT_TRUE(r.result.ok());
+  ASSERT_EQ(count(r, "NC2076"), 1);
+  const nc::Diagnostic* w = first(r, "NC2076");
+  EXPECT_EQ(w->span.line, 2u);
+  EXPECT_EQ(w->span.column, 5u);
+  EXPECT_TRUE(has(w->message, "G83 (peck drilling): its clearance d is 0 (No.5115 = 0 in the profile): after each "
+                              "retraction to point R the drill rapids back down to the very depth the last cut reached"))
+      << w->message;
+  EXPECT_TRUE(has(w->message, "--param 5115=1000 (1 mm)")) << w->message;
+  // the first hole: rapid to X10 Y10 (Z20), rapid to R2, feed to -3, rapid to R2, rapid to -3, feed to -8
+  const auto m = r.motions();
+  ASSERT_GE(m.size(), 7u);
+  EXPECT_EQ(m[2].kind, machine::MoveKind::line);
+  EXPECT_EQ(m[2].end[2], -3.0);
+  EXPECT_EQ(m[3].end[2], 2.0);
+  EXPECT_EQ(m[4].kind, machine::MoveKind::rapid);
+  EXPECT_EQ(m[4].end[2], -3.0);  // d = 0: onto the bottom at rapid
+  EXPECT_EQ(m[5].end[2], -8.0);
+}
+
+// G73 with No.5114 = 0: the drill does not back off; the five cuts follow one another (-3, -8, -13,
+// -18, -20), with no rapid between them.
+TEST(PeckDrillingWithoutD, G73WithARetractionOfZeroWarns) {
+  auto r = run("G90 G00 X10. Y10. Z20.\nG73 Z-20. R2. Q5. F100.\nG80\nM30\n", machine::default_mill());
+  ASSERT_TRUE(r.result.ok());
+  ASSERT_EQ(count(r, "NC2076"), 1);
+  const std::string w = text(r, "NC2076");
+  EXPECT_TRUE(has(w, "G73 (high-speed peck drilling): its retraction d after each cut of Q is 0 (No.5114 = 0 in the "
+                     "profile): the drill does not back off between the cuts"))
+      << w;
+  EXPECT_TRUE(has(w, "pauses every 5.000 mm")) << w;
+  EXPECT_TRUE(has(w, "--param 5114=500 (0.5 mm)")) << w;
+  const auto m = r.motions();
+  ASSERT_EQ(m.size(), 8u);  // to the hole, to R, five cuts, back to the initial level
+  for (int i = 2; i < 7; ++i) EXPECT_EQ(m[i].kind, machine::MoveKind::line) << i;
+  EXPECT_EQ(m[6].end[2], -20.0);
+}
+
+// Not warned: d set in the profile (G73 backs off 0.5, G83 stops 1 mm short); a hole of one cut
+// (R2 to Z-3 is 5 mm, Q5: nothing to back off from); G81.
+TEST(PeckDrillingWithoutD, ADGivenOrOneCutIsClean) {
+  machine::MachineProfile p = machine::default_mill();
+  p.peck_retract = 0.5;
+  p.peck_clearance = 1.0;
+  auto set = run("G90 G00 X10. Y10. Z20.\nG73 Z-20. R2. Q5. F100.\nG83 X20. Z-20. R2. Q5.\nG80\nM30\n", p);
+  ASSERT_TRUE(set.result.ok());
+  EXPECT_EQ(count(set, "NC2076"), 0);
+  const machine::MachineProfile mill = machine::default_mill();
+  for (const char* program : {"G90 G00 X10. Y10. Z20.\nG83 Z-3. R2. Q5. F100.\nG73 X20. Z-3. R2. Q5.\nG80\nM30\n",
+                              "G90 G00 X10. Y10. Z20.\nG81 Z-20. R2. F100.\nG80\nM30\n"}) {
+    auto r = run(program, mill);
+    ASSERT_TRUE(r.result.ok()) << program;
+    EXPECT_EQ(count(r, "NC2076"), 0) << program;
+  }
+}
+
+// A lathe's face drilling G83 with Q: No.5101#2 RTR = 0 pecks at high speed, backing off d =
+// No.5114; RTR = 1 goes out to R and back to d = No.5115 short. From Z10, R-7 puts point R at Z3;
+// Z-20 in cuts of Q6000 (6 mm): 23 mm, four cuts.
+TEST(PeckDrillingWithoutD, ALathePecksByItsRtrBit) {
+  const std::string program = "G21 G99 G00 X0. Z10.\nG83 Z-20. R-7. Q6000 F0.1\nG80\nM30\n";
+  auto high = run(program, machine::default_lathe());
+  ASSERT_TRUE(high.result.ok());
+  ASSERT_EQ(count(high, "NC2076"), 1);
+  EXPECT_TRUE(has(text(high, "NC2076"), "G83 with Q (high-speed peck drilling, No.5101#2 RTR = 0): its retraction d "
+                                        "after each cut of Q is 0 (No.5114 = 0 in the profile)"))
+      << text(high, "NC2076");
+  machine::MachineProfile to_r = machine::default_lathe();
+  to_r.drilling.lathe_peck_to_r = true;
+  auto peck = run(program, to_r);
+  ASSERT_EQ(count(peck, "NC2076"), 1);
+  EXPECT_TRUE(has(text(peck, "NC2076"), "G83 with Q (peck drilling, No.5101#2 RTR = 1): its clearance d is 0 (No.5115"))
+      << text(peck, "NC2076");
+  to_r.peck_clearance = 1.0;
+  EXPECT_EQ(count(run(program, to_r), "NC2076"), 0);
 }

@@ -22,6 +22,7 @@ void Executor::select_canned_cycle(int g, std::uint16_t) {
   }
   if (code != 84 && code != 74) rigid_tapping_ = false;  // another cycle ends the rigid mode
   modal_.cycle = code;
+  peck_d_checked_ = false;
 }
 
 // G80 and the group 01 codes: the cycle ends and its data (R, Z, Q, P) are cleared. Ending rigid
@@ -35,6 +36,43 @@ void Executor::cancel_canned_cycle() {
   cycle_q_ = cycle_p_ = 0;
   cycle_has_q_ = false;
   rigid_tapping_ = rigid_pending_ = false;
+  peck_d_checked_ = false;
+}
+
+// NC2076: peck drilling whose d is 0 in the profile, for a hole that takes more than one cut. The
+// high-speed peck (a mill's G73; a lathe's G83/G87 with Q and No.5101#2 RTR = 0) backs off d =
+// No.5114 after each cut of q: with 0 the drill does not back off at all and the chip is never
+// broken. The peck cycle (G83; the lathe's with RTR = 1) goes out to point R after each cut and
+// rapids back down to d = No.5115 short of the depth reached, where the cut goes on at feed: with 0
+// the rapid ends on the bottom of the hole, onto the chips left there. The control gives no alarm
+// for either. Once a cycle mode (the code given again starts another).
+void Executor::check_peck_d(int code, double r, double z, double q, std::uint16_t column) {
+  const bool high_speed = profile_.lathe() ? !profile_.drilling.lathe_peck_to_r : code == 73;
+  const double d = high_speed ? profile_.peck_retract : profile_.peck_clearance;
+  if (peck_d_checked_ || d != 0 || !(q > 0)) return;
+  if (std::fabs(z - r) <= q + profile_.increment * 0.5) return;  // one cut: nothing to back off from
+  peck_d_checked_ = true;
+  const int parameter = high_speed ? 5114 : 5115;
+  const std::string cycle =
+      profile_.lathe() ? fmt::format("G{} with Q ({}, No.5101#2 RTR = {})", code,
+                                     high_speed ? "high-speed peck drilling" : "peck drilling", high_speed ? 0 : 1)
+                       : fmt::format("G{} ({})", code, high_speed ? "high-speed peck drilling" : "peck drilling");
+  const std::string what =
+      high_speed ? fmt::format("its retraction d after each cut of Q is 0 (No.{} = 0 in the profile): the drill does "
+                               "not back off between the cuts, so the chip is never broken and the hole is fed to the "
+                               "bottom as one long cut that only pauses every {:.3f} {}",
+                               parameter, program_units(2, q), modal_.inch ? "in" : "mm")
+                 : fmt::format("its clearance d is 0 (No.{} = 0 in the profile): after each retraction to point R the "
+                               "drill rapids back down to the very depth the last cut reached, not d short of it, so "
+                               "it comes down at rapid onto the chips left at the bottom of the hole",
+                               parameter);
+  const long example = std::lround((high_speed ? 0.5 : 1.0) / profile_.increment);
+  for (const Cmd& c : cmds_)  // the cycle's own G word, where the block gives it
+    if (c.letter == 'G' && std::lround(c.value * 10) == code * 10) column = c.column;
+  warn_once("NC2076", fmt::format("{}: {} (the control gives no alarm); give the machine's d in increments, as "
+                                  "\"{}\" in the profile's [parameters] or --param {}={} ({} mm)",
+                                  cycle, what, parameter, parameter, example, high_speed ? "0.5" : "1"),
+            column);
 }
 
 bool Executor::canned_cycle_block() {
@@ -113,6 +151,7 @@ bool Executor::canned_cycle_block() {
   h.q = cycle_q_;
   h.p = cycle_p_;
   h.rigid = rigid;
+  if ((g == 73 || g == 83) && !peck_d_checked_) [[unlikely]] check_peck_d(g, h.r, h.z, h.q, gcol);
   // Under cutter compensation the cycle's moves are made at the programmed points, the vector
   // cancelled as for G28, and the next move restores it.
   const base::RestoreOnExit restore_suspended(comp_suspended_);

@@ -105,6 +105,7 @@ bool Executor::lathe_drilling_block() {
   h.q = q;
   h.p = cycle_p_;
   h.clamp_m = std::max(cycle_clamp_m_, 0);
+  if ((g == 83 || g == 87) && q > 0 && !peck_d_checked_) [[unlikely]] check_peck_d(g, h.r, h.z, q, gcol);
   // Under tool-nose radius compensation the moves are made at the programmed points, the vector
   // cancelled as for G28, and the next move restores it (as the mill's cycles do).
   const base::RestoreOnExit restore_suspended(comp_suspended_);
