@@ -139,6 +139,25 @@ TEST(ReturnTowardsThePart, G30ToAReferencePositionBelowTheToolWarns) {
   EXPECT_EQ(r.motions().back().end[2], -50.0);
 }
 
+// G30.1 to a floating reference position the operator set at machine Z-450 (Z-50 of G54): 60 mm
+// down from Z10. Under G20 the distances are in inches: G28 Z-1. from Z-0.1 goes 0.9 in down.
+TEST(ReturnTowardsThePart, FloatingReferenceAndInchesToo) {
+  machine::MachineProfile p = machine::default_mill();
+  p.floating_reference = machine::AxisVector{0, 0, -450, 0, 0, 0};
+  auto floating = run("G90 G00 X0 Y0 Z10.\nG91 G30.1 Z0\nM30\n", p);
+  ASSERT_TRUE(floating.result.ok());
+  ASSERT_EQ(count(floating, "NC2074"), 1);
+  EXPECT_TRUE(has(text(floating, "NC2074"), "G30.1 rapids 60.000 mm down (-Z) towards the part to the floating "
+                                            "reference position"))
+      << text(floating, "NC2074");
+  EXPECT_TRUE(has(text(floating, "NC2074"), "machine Z-450.000 ([reference_points] floating)")) << text(floating, "NC2074");
+  auto inch = run("G20 G90 G54 G00 X0 Y0 Z2.\nG01 Z-0.1 F10.\nG28 Z-1.\nM30\n", machine::default_mill());
+  ASSERT_EQ(count(inch, "NC2074"), 1);
+  EXPECT_TRUE(has(text(inch, "NC2074"), "G28 rapids 0.900 in down (-Z) towards the part to its intermediate point "
+                                        "Z-1.000"))
+      << text(inch, "NC2074");
+}
+
 // Not warned: a return of X and Y alone (Z stays), G53 (a positioning in machine coordinates, not a
 // return), a return with the tool length offset in force (G43 H1 = 100: the tool at Z-5 is machine
 // -5 - 400 + 100 = -305; the return takes the spindle to machine Z0, which is Z300 of G54 with the
