@@ -20,11 +20,19 @@
     const arc = new Float64Array(8 * arcCount);
     const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
     let lo0 = Infinity, lo1 = Infinity, lo2 = Infinity, hi0 = -Infinity, hi1 = -Infinity, hi2 = -Infinity;
+    // an axis counts from its first move on: where it stood before (on the shipped mill the
+    // reference position, far above the part) is not the program's, and the view frames the
+    // program; a cut (a feed or an arc) counts from where it starts, wherever that is
+    let m0 = false, m1 = false, m2 = false;
     for (let i = 0, s = 0; i < n; i++, s += 3) {
-      const sx = S[s], sy = S[s + 1], sz = S[s + 2], ex = E[s], ey = E[s + 1], ez = E[s + 2];
-      if (sx < lo0) lo0 = sx; if (sx > hi0) hi0 = sx; if (ex < lo0) lo0 = ex; if (ex > hi0) hi0 = ex;
-      if (sy < lo1) lo1 = sy; if (sy > hi1) hi1 = sy; if (ey < lo1) lo1 = ey; if (ey > hi1) hi1 = ey;
-      if (sz < lo2) lo2 = sz; if (sz > hi2) hi2 = sz; if (ez < lo2) lo2 = ez; if (ez > hi2) hi2 = ez;
+      const sx = S[s], sy = S[s + 1], sz = S[s + 2], ex = E[s], ey = E[s + 1], ez = E[s + 2], cut = K[i] !== 0;
+      if (m0 || cut) { if (sx < lo0) lo0 = sx; if (sx > hi0) hi0 = sx; }
+      if (m1 || cut) { if (sy < lo1) lo1 = sy; if (sy > hi1) hi1 = sy; }
+      if (m2 || cut) { if (sz < lo2) lo2 = sz; if (sz > hi2) hi2 = sz; }
+      m0 = m0 || sx !== ex || K[i] === 2, m1 = m1 || sy !== ey || K[i] === 2, m2 = m2 || sz !== ez || K[i] === 2;
+      if (m0) { if (ex < lo0) lo0 = ex; if (ex > hi0) hi0 = ex; }
+      if (m1) { if (ey < lo1) lo1 = ey; if (ey > hi1) hi1 = ey; }
+      if (m2) { if (ez < lo2) lo2 = ez; if (ez > hi2) hi2 = ez; }
       if (K[i] !== 2) continue;
       const a = 5 * AI[i], c = 8 * AI[i], plane = PLANE_AXES[A[a + 4]] || PLANE_AXES[17], p = plane[0], q = plane[1];
       const cp = A[a + p], cq = A[a + q];
@@ -40,6 +48,11 @@
         if (p === 1 || q === 1) { const y = p === 1 ? u : v; if (y < lo1) lo1 = y; if (y > hi1) hi1 = y; }
         if (p === 2 || q === 2) { const z = p === 2 ? u : v; if (z < lo2) lo2 = z; if (z > hi2) hi2 = z; }
       }
+    }
+    if (n) {  // an axis nothing counted (it never moves, no cut): where it stands
+      if (!(lo0 <= hi0)) lo0 = hi0 = S[0];
+      if (!(lo1 <= hi1)) lo1 = hi1 = S[1];
+      if (!(lo2 <= hi2)) lo2 = hi2 = S[2];
     }
     lo[0] = lo0, lo[1] = lo1, lo[2] = lo2, hi[0] = hi0, hi[1] = hi1, hi[2] = hi2;
     if (moves.alarmAt) for (let k = 0; k < 3; k++) lo[k] = Math.min(lo[k], moves.alarmAt[k]), hi[k] = Math.max(hi[k], moves.alarmAt[k]);

@@ -312,15 +312,46 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
   const double unit = o.inch ? 1 / 25.4 : 1;
   const char* units = o.inch ? "in" : "mm";
 
+  // The program's box: an axis counts from its first move on (a cut from where it starts), so where
+  // the machine stood before the program (the shipped mill's reference position, far above the
+  // part; a lathe's home) is left out and the approach from it is cut off at the panel's edge.
+  Vec lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  {
+    std::array<bool, 3> moved{};
+    auto count = [&](int k, double v) { lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v); };
+    for (const auto& e : elements_) {
+      const bool cut = e.kind != MoveKind::rapid;
+      for (int k = 0; k < 3; ++k) {
+        if (moved[k] || cut) count(k, e.a[k]);
+        moved[k] = moved[k] || e.a[k] != e.b[k] || e.kind == MoveKind::arc;
+        if (moved[k]) count(k, e.b[k]);
+      }
+      if (e.kind == MoveKind::arc) {  // its extremes, as the panels' box takes them below
+        const double r = std::hypot(e.a[0] - e.c[0], e.a[1] - e.c[1], e.a[2] - e.c[2]);
+        arc_pieces(e, std::max(r * 1e-3, 1e-9), [&](const Vec& p) {
+          for (int k = 0; k < 3; ++k) count(k, p[k]);
+        });
+      }
+    }
+    const Vec& here = elements_.empty() ? last_ : elements_.front().a;
+    for (int k = 0; k < 3; ++k)
+      if (!(lo[k] <= hi[k])) lo[k] = hi[k] = here[k];  // an axis nothing counted: where it stands
+  }
+  auto inside = [&](const Vec& p) {
+    Vec q;
+    for (int k = 0; k < 3; ++k) q[k] = std::clamp(p[k], lo[k], hi[k]);
+    return q;
+  };
+
   for (std::size_t i = 0; i < views.size() && i < 4; ++i) {
     const PlotView view = views[i];
     const ViewMap map{view, lathe_};
     Box box;
     for (const auto& e : elements_) {
-      box.add(map(e.a)), box.add(map(e.b));
+      box.add(map(inside(e.a))), box.add(map(inside(e.b)));
       if (e.kind == MoveKind::arc) {  // its extremes: a coarse sampling is within the padding
         double r = std::hypot(e.a[0] - e.c[0], e.a[1] - e.c[1], e.a[2] - e.c[2]);
-        arc_pieces(e, std::max(r * 1e-3, 1e-9), [&](const Vec& p) { box.add(map(p)); });
+        arc_pieces(e, std::max(r * 1e-3, 1e-9), [&](const Vec& p) { box.add(map(inside(p))); });
       }
     }
     if (alarm_) box.add(map(alarm_at_));
@@ -354,6 +385,27 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
     const plot::Frame f = plot::draw_panel(page, panel);
     const double res = 0.25 / f.px_per_unit();  // a quarter pixel, in mm
     std::string s = fmt::format("<g class=\"view\" fill=\"none\" stroke-width=\"1.3\" stroke-linejoin=\"round\">\n");
+    // a line's part inside the panel (Liang-Barsky), false when none is: the approach from where the
+    // machine stood before the program, which the box leaves out
+    auto clipped = [&](std::array<double, 2>& p0, std::array<double, 2>& p1) {
+      double t0 = 0, t1 = 1;
+      const double dx = p1[0] - p0[0], dy = p1[1] - p0[1];
+      const double x0 = f.left - 0.5, x1 = f.left + f.width + 0.5, y0 = f.top - 0.5, y1 = f.top + f.height + 0.5;
+      for (const auto& [p, q] : {std::pair{-dx, p0[0] - x0}, std::pair{dx, x1 - p0[0]}, std::pair{-dy, p0[1] - y0},
+                                 std::pair{dy, y1 - p0[1]}}) {
+        if (p == 0) {
+          if (q < 0) return false;
+          continue;
+        }
+        const double t = q / p;
+        if (p < 0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+        if (t0 > t1) return false;
+      }
+      if (t1 < 1) p1 = {p0[0] + t1 * dx, p0[1] + t1 * dy};
+      if (t0 > 0) p0 = {p0[0] + t0 * dx, p0[1] + t0 * dy};
+      return true;
+    };
     auto pt = [&](const Vec& p) {
       auto q = map(p);
       return fmt::format("{:.2f},{:.2f}", f.x(q[0]), f.y(q[1]));
@@ -364,6 +416,14 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
     };
     for (const auto& e : elements_) {
       std::string d;
+      if (e.kind != MoveKind::arc) {
+        const auto qa = map(e.a), qb = map(e.b);
+        std::array<double, 2> p0{f.x(qa[0]), f.y(qa[1])}, p1{f.x(qb[0]), f.y(qb[1])};
+        if (!clipped(p0, p1)) continue;
+        s += fmt::format("<path class=\"{}\" d=\"M{:.2f},{:.2f}L{:.2f},{:.2f}\" {}/>\n", css_class(e.kind), p0[0], p0[1],
+                         p1[0], p1[1], style(e.kind));
+        continue;
+      }
       to(d, 'M', e.a);
       const int facing = e.kind == MoveKind::arc ? arc_facing(e.plane, view, lathe_) : 0;
       const auto pq = machine::plane_axes(e.plane);
@@ -394,7 +454,8 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
     if (moved_ || !elements_.empty()) {
       const Vec start = elements_.empty() ? last_ : elements_.front().a;
       auto q = map(start);
-      s += fmt::format("<circle class=\"start\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"#000\"/>\n", f.x(q[0]), f.y(q[1]));
+      if (f.x(q[0]) >= f.left && f.x(q[0]) <= f.left + f.width && f.y(q[1]) >= f.top && f.y(q[1]) <= f.top + f.height)
+        s += fmt::format("<circle class=\"start\" cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3.5\" fill=\"#000\"/>\n", f.x(q[0]), f.y(q[1]));
     }
     s += "</g>\n";
     page.add(s);

@@ -109,9 +109,11 @@ async function latheExample(context) {
       await page.mouse.move(target.p.x, target.p.y);
       await page.waitForTimeout(150);
       const tip = await page.evaluate(() => document.getElementById('hover').textContent);
-      const m = motions[target.i];
+      // the move under the pointer: the one aimed at, or a move whose line passes as near the point
+      const hovered = await page.evaluate(() => ncurveWorkbench.plot.state().hovered);
+      const m = motions[hovered >= 0 ? hovered : target.i];
       check(tip.includes(`to X${shown(m.end.x)} Z${shown(m.end.z)}`) && !/ Y/.test(tip),
-            `hovering move ${target.i + 1} shows its end X${shown(m.end.x)} Z${shown(m.end.z)} (${tip})`);
+            `hovering move ${hovered + 1} (aimed at ${target.i + 1}) shows its end X${shown(m.end.x)} Z${shown(m.end.z)} (${tip})`);
       // the tip beside the pointer, inside the plot, not over the pointer nor an axis name
       const at = await page.evaluate(() => {
         const r = (e) => e.getBoundingClientRect();

@@ -298,8 +298,10 @@ TEST(PathPlot, LatheDrawsZAcrossAndXUpAsDiameter) {
   EXPECT_EQ(count(d.svg, "class=\"view\""), 1u);
   EXPECT_EQ(texts(d.svg, "label-u"), (std::vector<std::string>{"Z, mm"}));
   EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"X (diameter), mm"}));
-  EXPECT_EQ(texts(d.svg, "tick-v"), (std::vector<std::string>{"0", "20", "40", "60", "80"}));
-  EXPECT_EQ(texts(d.svg, "tick-u"), (std::vector<std::string>{"-40", "-30", "-20", "-10", "0", "10"}));
+  // the lathe's home (X0 Z0 here) is where it stood before the program: not framed. The program's
+  // X goes from 40 to 80 on the diameter, its Z from 5 to -30
+  EXPECT_EQ(texts(d.svg, "tick-v"), (std::vector<std::string>{"40", "50", "60", "70", "80"}));
+  EXPECT_EQ(texts(d.svg, "tick-u"), (std::vector<std::string>{"-30", "-25", "-20", "-15", "-10", "-5", "0", "5"}));
 }
 
 // A lathe moves in ZX: the views of Y do not fit it (a view asked for anyway draws ZX), unless
