@@ -58,7 +58,7 @@ struct ToolLibrary {
 // The tool number of a lathe's T code: the digits before its two offset digits.
 inline int lathe_tool_number(int t_code) { return t_code / 100; }
 
-// A tool without a library entry: a flat end mill of its D offset's radius; a lathe insert of its
+// A tool without a library entry: a flat end mill of a D offset's radius; a lathe insert of its
 // offset's nose radius and imaginary tip.
 MillTool default_mill_tool(double radius);
 LatheInsert default_insert(double nose_radius, int tip);

@@ -32,11 +32,36 @@ double ZMap::height_at(double x, double y) const {
   return height(static_cast<int>(fi), static_cast<int>(fj));
 }
 
+void ZMap::clear_cell(int i, int j) {
+  double& h = h_[static_cast<std::size_t>(j) * nx_ + i];
+  const double top = stock_.max[2], bottom = stock_.min[2];
+  absent_ += (std::clamp(h, bottom, top) - bottom) * cell_ * cell_;
+  h = std::min(h, bottom);
+}
+
 double ZMap::volume_removed() const {
   const double top = stock_.max[2], bottom = stock_.min[2];
   double sum = 0;
   for (double h : h_) sum += top - std::max(std::min(h, top), bottom);
-  return sum * cell_ * cell_;
+  return sum * cell_ * cell_ - absent_;
+}
+
+void ZMap::before_row(const double* h, int n) {
+  if (report_) before_.assign(h, h + n);
+}
+
+void ZMap::after_row(const double* h, int i0, int j, int n) {
+  if (!report_) return;
+  const double top = stock_.max[2], bottom = stock_.min[2];
+  double removed_sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const double was = std::min(before_[k], top);
+    if (h[k] >= was || was <= bottom) continue;
+    const double removed = was - std::max(h[k], bottom);
+    removed_sum += removed;
+    if (removed > last_.deepest) last_ = {last_.volume, removed, i0 + k, j, before_[k]};
+  }
+  last_.volume += removed_sum * cell_ * cell_;
 }
 
 void ZMap::rows_of(double yl, double yh, int& j0, int& j1) const {

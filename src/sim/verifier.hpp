@@ -1,0 +1,99 @@
+// A mill program verified against its setup: the stock cut on a Z-map by each tool in the spindle,
+// and the findings of the cut (a rapid through material, a cut deeper than the flutes, a plunge with
+// a tool that does not centre-cut, a cut with the spindle stopped or too fast for the tool).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "machine/move.hpp"
+#include "sim/setup.hpp"
+#include "sim/tool_shape.hpp"
+#include "sim/zmap.hpp"
+
+namespace ncurve::sim {
+
+// A tool as the verifier uses it: its cutting end, and what it came from.
+struct VerifyTool {
+  MillTool tool;
+  ToolShape shape;
+  bool from_library = false;  // else a flat end mill of the D offset in force
+};
+
+// The mill tools of a run by T number: the library's, and for a number it lacks a flat end mill of
+// the radius of the D offset in force when it first cuts (the profile's value); none while D is 0.
+class MillTools {
+public:
+  MillTools(const ToolLibrary& library, const machine::MachineProfile& profile);
+  const VerifyTool* get(int number, int d_offset);
+  double radius(int number, int d_offset) {
+    const VerifyTool* t = get(number, d_offset);
+    return t ? t->tool.radius() : 0;
+  }
+  // The tools asked for so far, by number (none: no tool of that number).
+  const std::map<int, std::optional<VerifyTool>>& used() const { return tools_; }
+
+private:
+  const ToolLibrary& library_;
+  const machine::MachineProfile& profile_;
+  std::map<int, std::optional<VerifyTool>> tools_;
+};
+
+struct Finding {
+  nc::Diagnostic diagnostic;  // a warning at the move's block
+  Point3 at{};                // where, work coordinates
+  double amount = 0;          // how much, mm (what the message says it is)
+};
+
+struct VerifyOptions {
+  double cell = 0;                        // Z-map cell, mm; 0: from min_cells
+  int min_cells = ZMap::kDefaultCells;    // the stock's shorter side in this many cells
+  std::size_t max_findings = 200;         // beyond: counted only
+};
+
+class Verifier final : public machine::MoveSink {
+public:
+  Verifier(const Stock& stock, MillTools& tools, std::optional<int> spindle, VerifyOptions options = {});
+  void on_move(const machine::Move& m) override;
+
+  const ZMap& map() const { return map_; }
+  const std::vector<Finding>& findings() const { return findings_; }
+  std::size_t findings_left_out() const { return left_out_; }
+  // Material removed by each T number, mm^3.
+  const std::map<int, double>& volume_by_tool() const { return volume_by_tool_; }
+  struct Counts {
+    std::uint64_t cut = 0;
+    std::uint64_t no_tool = 0;     // motion with no tool in the spindle, or a tool without a size
+    std::uint64_t not_xy_arc = 0;  // arcs in G18/G19
+    std::uint64_t rotary = 0;      // moves that turn a rotary axis (3 axes are simulated)
+  };
+  const Counts& counts() const { return counts_; }
+
+private:
+  void cut(const machine::Move& m);
+  void check(const machine::Move& m, const CutReport& r);
+  void find(const machine::Move& m, const char* code, std::string message, const CutReport& r, double amount);
+
+  ZMap map_;
+  MillTools& tools_;
+  const VerifyTool* tool_ = nullptr;
+  int tool_number_ = 0;
+  bool spindle_on_ = false;
+  VerifyOptions options_;
+  std::vector<Finding> findings_;
+  std::size_t left_out_ = 0;
+  std::map<int, double> volume_by_tool_;
+  Counts counts_;
+  std::set<std::tuple<std::string, const nc::SourceFile*, std::uint32_t>> found_at_;  // code, block
+  std::map<int, bool> speed_warned_;  // by T number
+};
+
+// The box a Z-map covers for a stock: a box itself, a cylinder's or tube's square about the Z axis.
+// None for an STL stock (not simulated yet).
+std::optional<Box> zmap_box(const Stock& stock);
+
+}  // namespace ncurve::sim
