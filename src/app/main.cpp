@@ -136,6 +136,7 @@ int run_command(const app::RunArgs& a) {
   if (gcode) gcode->finish();
   if (verify) {
     verify->finish(result);
+    if (html && verify->map()) html->set_part(sim::part_grid(*verify->map()));
     try {
       verify->write_part(setup.inputs);
     } catch (const io::OutputError& e) {

@@ -38,6 +38,8 @@ public:
   // Writes --part; throws io::OutputError.
   void write_part(const std::vector<std::string>& inputs);
   const report::VerifyReport& report() const { return report_; }
+  // The cut stock; null when nothing was verified.
+  const sim::ZMap* map() const { return verifier_ ? &verifier_->map() : nullptr; }
 
 private:
   VerifyArgs args_;

@@ -47,6 +47,27 @@ private:
 
 }  // namespace
 
+PartGrid part_grid(const ZMap& map, int most) {
+  PartGrid g;
+  const int step = std::max({1, (map.nx() + most - 1) / most, (map.ny() + most - 1) / most});
+  g.nx = (map.nx() + step - 1) / step;
+  g.ny = (map.ny() + step - 1) / step;
+  g.bottom = map.stock().min[2];
+  g.top = map.stock().max[2];
+  g.dx = g.dy = map.cell() * step;
+  // each point at the middle of its block of cells (the last block may be narrower)
+  auto middle = [&](int k, int n, auto centre) { return (centre(k * step) + centre(std::min((k + 1) * step, n) - 1)) / 2; };
+  g.x0 = middle(0, map.nx(), [&](int i) { return map.cell_x(i); });
+  g.y0 = middle(0, map.ny(), [&](int j) { return map.cell_y(j); });
+  g.heights.assign(static_cast<std::size_t>(g.nx) * g.ny, static_cast<float>(g.top));
+  for (int j = 0; j < map.ny(); ++j)
+    for (int i = 0; i < map.nx(); ++i) {
+      float& h = g.heights[static_cast<std::size_t>(j / step) * g.nx + i / step];
+      h = std::min(h, static_cast<float>(std::clamp(map.height(i, j), g.bottom, g.top)));
+    }
+  return g;
+}
+
 std::uint64_t part_stl_triangles(const ZMap& map) {
   const std::uint64_t nx = static_cast<std::uint64_t>(map.nx()), ny = static_cast<std::uint64_t>(map.ny());
   if (nx < 2 || ny < 2) return 12;  // a box

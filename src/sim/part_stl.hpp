@@ -4,10 +4,22 @@
 #pragma once
 #include <cstdint>
 #include <ostream>
+#include <vector>
 
 #include "sim/zmap.hpp"
 
 namespace ncurve::sim {
+
+// The part's top surface on a grid of at most `most` points a side for drawing: each point the
+// lowest height of the cells it stands for (a narrow groove stays visible), held between the
+// stock's bottom and top; point (i, j) at (x0 + i dx, y0 + j dy).
+struct PartGrid {
+  int nx = 0, ny = 0;
+  double x0 = 0, y0 = 0, dx = 0, dy = 0;
+  double bottom = 0, top = 0;
+  std::vector<float> heights;  // row by row, nx a row
+};
+PartGrid part_grid(const ZMap& map, int most = 400);
 
 // How many triangles write_part_stl writes for the map.
 std::uint64_t part_stl_triangles(const ZMap& map);
