@@ -58,7 +58,7 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   sim::VerifyOptions vo;
   vo.cell = args.resolution;
   try {
-    verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo);
+    verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo, setup_.fixtures);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(fmt::format("--verify: {} (--resolution {:g} mm)", e.what(), args.resolution));
   }
@@ -77,6 +77,7 @@ void RunVerification::finish(machine::RunResult& result) {
                                    : fmt::format("T{}: not in the library and no D offset in force when it cut: not cut",
                                                  number));
   if (!verifier_) return;
+  report_.fixtures = verifier_->fixtures_checked();
   for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);
 }
 

@@ -50,6 +50,7 @@ std::string verify_text(const VerifyReport& r) {
     out += fmt::format("  stock          {}{}\n", stock_words(*r.stock),
                        r.stock_default ? " (the box around the cutting moves)" : "");
   for (const std::string& t : r.tools) out += fmt::format("  tool           {}\n", t);
+  for (const std::string& f : r.fixtures) out += fmt::format("  fixture        {}\n", f);
   for (const std::string& d : r.defaults) out += fmt::format("  default        {}\n", d);
   if (!r.verifier) {
     out += fmt::format("  verified       no: {}\n", r.refused);
@@ -81,6 +82,7 @@ nlohmann::json verify_json(const VerifyReport& r) {
   j["stock"] = r.stock ? stock_json(*r.stock) : nlohmann::json(nullptr);
   j["stock_default"] = r.stock_default;
   j["tools"] = r.tools;
+  j["fixtures"] = r.fixtures;
   j["defaults"] = r.defaults;
   j["verified"] = r.verifier != nullptr;
   if (!r.verifier) {

@@ -17,6 +17,7 @@ struct VerifyReport {
   std::string refused;                      // why nothing was verified
   std::vector<std::string> defaults;        // the defaults in force, in words
   std::vector<std::string> tools;           // each tool used, in words
+  std::vector<std::string> fixtures;        // each fixture and whether it was checked
   std::string part_file;                    // where --part wrote the part
 };
 

@@ -17,12 +17,23 @@
 
 namespace ncurve::sim {
 
-// A tool as the verifier uses it: its cutting end, and what it came from.
+// A part of a tool that must not touch the stock: a flat-bottomed body of revolution whose bottom
+// is `offset` above the tip (a holder's cone as steps of cylinders inside it).
+struct ToolBody {
+  ToolShape shape;
+  double offset = 0;
+  const char* what = "";  // "shank", "holder"
+};
+
+// A tool as the verifier uses it: its cutting end, the bodies above it wider than the cut, and
+// what it came from.
 struct VerifyTool {
   MillTool tool;
   ToolShape shape;
   bool from_library = false;  // else a flat end mill of the D offset in force
+  std::vector<ToolBody> bodies;
 };
+VerifyTool verify_tool(const MillTool& t, bool from_library);
 
 // The mill tools of a run by T number: the library's, and for a number it lacks a flat end mill of
 // the radius of the D offset in force when it first cuts (the profile's value); none while D is 0.
@@ -57,7 +68,8 @@ struct VerifyOptions {
 
 class Verifier final : public machine::MoveSink {
 public:
-  Verifier(const Stock& stock, MillTools& tools, std::optional<int> spindle, VerifyOptions options = {});
+  Verifier(const Stock& stock, MillTools& tools, std::optional<int> spindle, VerifyOptions options = {},
+           const std::vector<Fixture>& fixtures = {});
   void on_move(const machine::Move& m) override;
 
   const ZMap& map() const { return map_; }
@@ -73,16 +85,31 @@ public:
   };
   const Counts& counts() const { return counts_; }
 
+  // The fixtures checked (boxes), and those not (STL, not simulated yet).
+  std::vector<std::string> fixtures_checked() const;
+
 private:
+  struct FixtureMap {
+    std::string name;
+    ZMap map;
+    bool touched = false;  // by the move before
+  };
   void cut(const machine::Move& m);
+  // What a body (shape at offset above the tip) meets along the move on the map; none when it cannot.
+  CutReport probe(ZMap& map, const machine::Move& m, const ToolShape& shape, double offset);
+  void check_bodies(const machine::Move& m);
+  void check_fixtures(const machine::Move& m);
   void check(const machine::Move& m, const CutReport& r);
-  void find(const machine::Move& m, const char* code, std::string message, const CutReport& r, double amount);
+  void find(const machine::Move& m, const char* code, std::string message, const Point3& at, double amount);
 
   ZMap map_;
+  std::vector<FixtureMap> fixtures_;
+  std::vector<std::string> unchecked_fixtures_;
   MillTools& tools_;
   const VerifyTool* tool_ = nullptr;
   int tool_number_ = 0;
   bool spindle_on_ = false;
+  bool holder_in_stock_ = false;  // after the move before
   VerifyOptions options_;
   std::vector<Finding> findings_;
   std::size_t left_out_ = 0;

@@ -47,11 +47,31 @@ double ZMap::volume_removed() const {
 }
 
 void ZMap::before_row(const double* h, int n) {
-  if (report_) before_.assign(h, h + n);
+  if (report_ || probe_) before_.assign(h, h + n);
 }
 
-void ZMap::after_row(const double* h, int i0, int j, int n) {
-  if (!report_) return;
+CutReport ZMap::probe_line(const ToolShape& tool, const Point3& a, const Point3& b) {
+  const CutReport kept = last_;
+  probe_ = true;
+  cut_line(tool, a, b);
+  probe_ = false;
+  const CutReport r = last_;
+  last_ = kept;
+  return r;
+}
+
+CutReport ZMap::probe_arc(const ToolShape& tool, const Arc& arc) {
+  const CutReport kept = last_;
+  probe_ = true;
+  cut_arc(tool, arc);
+  probe_ = false;
+  const CutReport r = last_;
+  last_ = kept;
+  return r;
+}
+
+void ZMap::after_row(double* h, int i0, int j, int n) {
+  if (!report_ && !probe_) return;
   const double top = stock_.max[2], bottom = stock_.min[2];
   double removed_sum = 0;
   for (int k = 0; k < n; ++k) {
@@ -62,6 +82,7 @@ void ZMap::after_row(const double* h, int i0, int j, int n) {
     if (removed > last_.deepest) last_ = {last_.volume, removed, i0 + k, j, before_[k]};
   }
   last_.volume += removed_sum * cell_ * cell_;
+  if (probe_) std::copy(before_.begin(), before_.begin() + n, h);
 }
 
 void ZMap::rows_of(double yl, double yh, int& j0, int& j1) const {

@@ -78,6 +78,10 @@ public:
   // row it changes is kept for the comparison).
   void report_cuts(bool on) { report_ = on; }
   const CutReport& last_cut() const { return last_; }
+  // What a cut would remove, leaving the map as it is: where a body that must not cut (a holder,
+  // a fixture's tool) would meet the material.
+  CutReport probe_line(const ToolShape& tool, const Point3& a, const Point3& b);
+  CutReport probe_arc(const ToolShape& tool, const Arc& arc);
 
   // The rows j0..j1-1 that a band of y may touch, and the cells i0..i1-1 of a row whose centres
   // lie in [xl, xh] (empty when i1 <= i0).
@@ -87,7 +91,7 @@ public:
 private:
   // Around a row's kernel: keep the cells' heights before it, then add what it removed.
   void before_row(const double* h, int n);
-  void after_row(const double* h, int i0, int j, int n);
+  void after_row(double* h, int i0, int j, int n);
 
   Box stock_;
   double cell_ = 0;
@@ -95,6 +99,7 @@ private:
   double x0_ = 0, y0_ = 0;
   std::vector<double> h_;
   bool report_ = false;
+  bool probe_ = false;
   double absent_ = 0;  // the columns clear_cell emptied, mm^3
   CutReport last_;
   std::vector<double> before_;

@@ -13,7 +13,9 @@ using namespace ncurve;
 namespace {
 
 // A 100 x 100 x 20 block, top at Z0, on 0.1 mm cells; T1 a 10 mm flat end mill with 5 mm flutes,
-// T2 a 6 mm drill, T3 a 10 mm end mill that does not cut at its centre, T4 limited to 8000 rev/min.
+// T2 a 6 mm drill, T3 a 10 mm end mill that does not cut at its centre, T4 limited to 8000 rev/min,
+// T5 in a 40 mm holder 20 mm above its tip, T6 a 3 mm cutter on a 6 mm shank with 8 mm flutes; a
+// clamp at X30..40 Y-10..10 standing 5 mm above the block.
 const char* const kSetup = R"(
 [stock]
 shape = "box"
@@ -38,6 +40,26 @@ centre_cutting = false
 kind = "flat"
 diameter = 10
 max_spindle_speed = 8000
+
+[tools.5]
+kind = "flat"
+diameter = 10
+flute_length = 20
+stick_out = 20
+holder = [{ diameter = 40, length = 30 }]
+
+[tools.6]
+kind = "flat"
+diameter = 3
+flute_length = 8
+shank_diameter = 6
+stick_out = 30
+
+[[fixtures]]
+name = "clamp"
+shape = "box"
+min = [30, -10, -20]
+max = [40, 10, 5]
 )";
 
 struct Verified {
@@ -62,7 +84,7 @@ Verified verify(const std::string& program, const char* setup_text = kSetup) {
   v.tools = std::make_unique<sim::MillTools>(v.setup.tools, test::calculator_mill());
   sim::VerifyOptions o;
   o.cell = 0.1;
-  v.verifier = std::make_unique<sim::Verifier>(*v.setup.stock, *v.tools, v.setup.tool_in_spindle, o);
+  v.verifier = std::make_unique<sim::Verifier>(*v.setup.stock, *v.tools, v.setup.tool_in_spindle, o, v.setup.fixtures);
   for (const auto& m : v.ran.moves) v.verifier->on_move(m);
   return v;
 }
@@ -212,4 +234,48 @@ TEST(Verifier, CylinderStockHasNoMaterialOutsideTheBar) {
   EXPECT_EQ(v.map().height_at(19.45, 0.05), 0);     // inside the 20 mm radius
   EXPECT_EQ(v.map().height_at(19.75, 19.75), -30);  // outside: the bottom, no material
   EXPECT_NEAR(v.map().volume_removed(), 0, 1e-6);
+}
+
+TEST(Verifier, HolderInTheStockWarns) {
+  // 25 deep with the holder's face 20 above the tip: its bottom at Z-5, 5 mm into the block beyond
+  // the 5 mm the cutter cleared round the axis
+  auto deep = verify("T5 M06\nM03 S1000\nG90 G00 X0 Y0 Z5.\nG01 Z-25. F100.\nG00 Z30.\nM30\n");
+  const auto found = deep.of("NC2085");
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0]->diagnostic.span.line, 4u);
+  EXPECT_DOUBLE_EQ(found[0]->amount, 5.0);
+  const double r = std::hypot(found[0]->at[0], found[0]->at[1]);
+  EXPECT_GT(r, 5 - 0.1);
+  EXPECT_LE(r, 20);
+  EXPECT_NE(found[0]->diagnostic.message.find("the holder (20 mm above the tip)"), std::string::npos);
+  auto shallow = verify("T5 M06\nM03 S1000\nG90 G00 X0 Y0 Z5.\nG01 Z-19.9 F100.\nG00 Z30.\nM30\n");
+  EXPECT_TRUE(shallow.of("NC2085").empty());
+}
+
+TEST(Verifier, ShankWiderThanTheCutWarns) {
+  // 10 deep with 8 mm flutes: the 6 mm shank's bottom at Z-2, 2 mm into the block outside the 3 mm hole
+  auto deep = verify("T6 M06\nM03 S1000\nG90 G00 X0 Y0 Z5.\nG01 Z-10. F100.\nG00 Z5.\nM30\n");
+  ASSERT_EQ(deep.of("NC2085").size(), 1u);
+  EXPECT_DOUBLE_EQ(deep.of("NC2085")[0]->amount, 2.0);
+  EXPECT_EQ(deep.of("NC2081").size(), 1u);  // and deeper than the flutes
+  auto ok = verify("T6 M06\nM03 S1000\nG90 G00 X0 Y0 Z5.\nG01 Z-7.5 F100.\nG00 Z5.\nM30\n");
+  EXPECT_TRUE(ok.verifier->findings().empty());
+}
+
+TEST(Verifier, ToolIntoAFixtureWarns) {
+  // at Z2 the 10 mm cutter's edge reaches X33, 3 mm into the clamp whose top is at Z5
+  auto crash = verify("T1 M06\nM03 S1000\nG90 G00 X0 Y0 Z2.\nG01 X28. F300.\nG00 Z20.\nM30\n");
+  const auto found = crash.of("NC2086");
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0]->diagnostic.span.line, 4u);
+  EXPECT_DOUBLE_EQ(found[0]->amount, 3.0);
+  EXPECT_GE(found[0]->at[0], 30);
+  EXPECT_LE(found[0]->at[0], 33);
+  EXPECT_NE(found[0]->diagnostic.message.find("'clamp'"), std::string::npos);
+  // stopping 1 mm short of it, and passing over it at Z10, are clean
+  auto near = verify("T1 M06\nM03 S1000\nG90 G00 X0 Y0 Z2.\nG01 X24. F300.\nG00 Z10.\nX50.\nM30\n");
+  EXPECT_TRUE(near.of("NC2086").empty());
+  const auto checked = near.verifier->fixtures_checked();
+  ASSERT_EQ(checked.size(), 1u);
+  EXPECT_EQ(checked[0], "clamp: checked");
 }
