@@ -48,3 +48,15 @@ run_expect(2 "--part over the program" ${NCURVE} run ${OUT}/verify-rapid.nc --ve
 run_expect(2 "--part over the setup" ${NCURVE} run ${OUT}/verify-rapid.nc --setup ${OUT}/bad.setup.toml --part ${OUT}/bad.setup.toml)
 run_expect(2 "--part to standard output" ${NCURVE} run ${SRC}/examples/spiral.nc --part -)
 expect_text("${err}" "--part needs a file of its own" "--part -")
+
+# every shipped mill example with its setup: verified, nothing found (a finding there is a fault of
+# the example or a false alarm); the 4-axis one refused, saying why
+foreach(example "custom-cycle;--lib;${SRC}/macros;--param;6050=102" "inch" "alarm;--set;#100=2" "spiral")
+  list(POP_FRONT example name)
+  run_expect(0 "${name} with its setup" ${NCURVE} run ${SRC}/examples/${name}.nc --setup ${SRC}/examples/${name}.setup.toml
+             ${example})
+  expect_text("${out}" "findings       0" "${name}: no finding")
+endforeach()
+run_expect(0 "4-axis with its setup" ${NCURVE} run ${SRC}/examples/4-axis.nc --setup ${SRC}/examples/4-axis.setup.toml
+           --machine ${SRC}/profiles/fanuc-4axis-helicoid.toml)
+expect_text("${out}" "verified       no: the program turns the A axis" "4-axis: refused, saying why")

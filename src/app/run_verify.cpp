@@ -20,6 +20,40 @@ void add_verify_options(CLI::App* run, VerifyArgs& a) {
   run->add_option("--part", a.part, "write the cut part as a binary STL file (turns on --verify)");
 }
 
+namespace {
+
+// The run before the one that cuts: the default stock box, and the first move that turns a rotary
+// axis (the Z-map is of 3 axes).
+class FirstPass final : public machine::MoveSink {
+public:
+  explicit FirstPass(sim::DefaultStockBox& box) : box_(box) {}
+  void on_move(const machine::Move& m) override {
+    box_.on_move(m);
+    if (rotary_line_ || !m.is_motion()) return;
+    for (int a = 3; a < machine::kAxes; ++a)
+      if (m.start[a] != m.end[a]) {
+        rotary_axis_ = "ABC"[a - 3];
+        rotary_line_ = m.line;
+        rotary_file_ = m.file;
+        return;
+      }
+  }
+  std::string rotary() const {
+    if (!rotary_line_) return {};
+    return fmt::format("the program turns the {} axis ({}:{} first): the material removal is of 3 axes, a "
+                       "rotary-axis program is not simulated yet",
+                       rotary_axis_, rotary_file_ ? rotary_file_->name() : "", rotary_line_);
+  }
+
+private:
+  sim::DefaultStockBox& box_;
+  char rotary_axis_ = 0;
+  std::uint32_t rotary_line_ = 0;
+  const nc::SourceFile* rotary_file_ = nullptr;
+};
+
+}  // namespace
+
 RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineProfile& profile,
                                  const machine::ProgramLibrary& lib, const machine::RunOptions& options)
     : args_(args) {
@@ -29,30 +63,40 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   }
   const sim::SetupFile* given = args.setup.empty() ? nullptr : &setup_;
   report_.defaults = sim::setup_defaults(given);
+  // nothing verified, and why; --part cannot be made then
+  auto refuse = [&](const std::string& why) {
+    report_.refused = why;
+    if (!args.part.empty()) throw std::runtime_error("--part: " + why);
+  };
   if (profile.lathe()) {
-    report_.refused = "a lathe's material removal is not simulated yet";
-    if (!args.part.empty()) throw std::runtime_error("--part: " + report_.refused);
+    refuse("a lathe's material removal is not simulated yet");
     return;
   }
   tools_ = std::make_unique<sim::MillTools>(setup_.tools, profile);
   std::optional<sim::Stock> stock = setup_.stock;
-  if (!stock) {  // a first run finds the box around the cutting moves
+  const bool rotary_axes = profile.axes.find_first_of("ABC") != std::string::npos;
+  if (!stock || rotary_axes) {  // a first run finds the box around the cutting moves, and a rotary axis turned
     sim::DefaultStockBox finder([this](int t, int d) { return tools_->radius(t, d); }, setup_.tool_in_spindle.value_or(0));
+    FirstPass pass(finder);
     machine::Interpreter first(profile, lib, options);
-    first.run(finder);
-    if (const auto box = finder.box(); box && box->max[0] > box->min[0] && box->max[1] > box->min[1]) stock = *box;
-    report_.stock_default = true;
+    first.run(pass);
+    if (const std::string why = pass.rotary(); !why.empty()) {
+      refuse(why);
+      return;
+    }
+    if (const auto box = finder.box(); !stock && box && box->max[0] > box->min[0] && box->max[1] > box->min[1]) {
+      stock = *box;
+      report_.stock_default = true;
+    }
   }
   if (!stock) {
-    report_.refused = "no default stock: the program makes no cutting move with a tool of known size (give the "
-                      "stock and the tools in a setup file, --setup)";
-    if (!args.part.empty()) throw std::runtime_error("--part: " + report_.refused);
+    refuse("no default stock: the program makes no cutting move with a tool of known size (give the stock and the "
+           "tools in a setup file, --setup)");
     return;
   }
   report_.stock = stock;
   if (std::holds_alternative<sim::StlFile>(*stock)) {
-    report_.refused = "an STL stock is not simulated yet: give a box or a cylinder";
-    if (!args.part.empty()) throw std::runtime_error("--part: " + report_.refused);
+    refuse("an STL stock is not simulated yet: give a box or a cylinder");
     return;
   }
   sim::VerifyOptions vo;
