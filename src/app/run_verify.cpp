@@ -57,11 +57,14 @@ private:
 RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineProfile& profile,
                                  const machine::ProgramLibrary& lib, const machine::RunOptions& options)
     : args_(args) {
-  if (!args.setup.empty()) {
+  if (args.setup_text) {
+    setup_ = sim::parse_setup(*args.setup_text, args.setup.empty() ? "<setup>" : args.setup);
+    report_.setup_file = args.setup.empty() ? "<setup>" : args.setup;
+  } else if (!args.setup.empty()) {
     setup_ = sim::read_setup(args.setup);
     report_.setup_file = args.setup;
   }
-  const sim::SetupFile* given = args.setup.empty() ? nullptr : &setup_;
+  const sim::SetupFile* given = report_.setup_file.empty() ? nullptr : &setup_;
   report_.defaults = sim::setup_defaults(given);
   // nothing verified, and why; --part cannot be made then
   auto refuse = [&](const std::string& why) {
@@ -101,10 +104,14 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   }
   sim::VerifyOptions vo;
   vo.cell = args.resolution;
+  vo.most_cells = args.most_cells;
+  vo.cut_moves = args.cut_moves;
   try {
     verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo, setup_.fixtures);
   } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(fmt::format("--verify: {} (--resolution {:g} mm)", e.what(), args.resolution));
+    throw std::runtime_error(fmt::format("--verify: {}: a coarser --resolution (it is {})", e.what(),
+                                         args.resolution > 0 ? fmt::format("{:g} mm", args.resolution)
+                                                             : std::string("the stock's shorter side in 1000 cells")));
   }
   report_.verifier = verifier_.get();
 }

@@ -15,11 +15,14 @@
 namespace ncurve::app {
 
 struct VerifyArgs {
-  std::string setup;        // --setup FILE
+  std::string setup;        // --setup FILE (or the name of setup_text)
+  std::optional<std::string> setup_text;  // the setup's TOML, not read from a file
   bool verify = false;      // --verify
   double resolution = 0;    // --resolution MM: the Z-map's cell; 0: the stock's shorter side in 1000 cells
   std::string part;         // --part FILE.stl
-  bool on() const { return verify || !setup.empty() || !part.empty() || resolution > 0; }
+  double most_cells = 1e8;  // the largest Z-map
+  std::uint64_t cut_moves = UINT64_MAX;  // cut only the first so many motions
+  bool on() const { return verify || !setup.empty() || setup_text || !part.empty() || resolution > 0; }
 };
 
 void add_verify_options(CLI::App* run, VerifyArgs& a);

@@ -70,6 +70,7 @@ std::string verify_text(const VerifyReport& r) {
   if (c.not_xy_arc) out += fmt::format("  not cut        {} arcs in G18/G19 (not simulated yet)\n", c.not_xy_arc);
   if (c.rotary)
     out += fmt::format("  not cut        {} moves turning a rotary axis (3 axes are simulated)\n", c.rotary);
+  if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
   out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out(),
                      v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size()) : std::string());
   if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
@@ -98,7 +99,7 @@ nlohmann::json verify_json(const VerifyReport& r) {
   j["volume_by_tool_mm3"] = by_tool;
   const auto& c = v.counts();
   j["moves_cut"] = c.cut;
-  j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_xy_arc", c.not_xy_arc}, {"rotary", c.rotary}};
+  j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_xy_arc", c.not_xy_arc}, {"rotary", c.rotary}, {"after", c.after}};
   j["findings"] = nlohmann::json::array();
   for (const sim::Finding& f : v.findings()) {
     nlohmann::json d = diagnostic_json(f.diagnostic);

@@ -88,7 +88,13 @@ namespace {
 ZMap make_map(const Stock& stock, const VerifyOptions& o) {
   const std::optional<Box> box = zmap_box(stock);
   if (!box) throw std::invalid_argument("an STL stock is not simulated yet: give a box or a cylinder");
-  ZMap map(*box, o.cell, o.min_cells);
+  double cell = o.cell;
+  const double lx = box->max[0] - box->min[0], ly = box->max[1] - box->min[1];
+  if (cell == 0 && lx > 0 && ly > 0) {  // the shorter side in min_cells cells, coarser if that is too many
+    cell = std::min(lx, ly) / o.min_cells;
+    if (lx * ly / (cell * cell) > o.most_cells) cell = std::sqrt(lx * ly / o.most_cells) * (1 + 1e-9);
+  }
+  ZMap map(*box, cell, o.min_cells, o.most_cells);
   if (const auto* c = std::get_if<Cylinder>(&stock)) {  // no material outside the bar, nor in a tube's bore
     const double r2 = c->diameter * c->diameter / 4, in2 = c->inner_diameter * c->inner_diameter / 4;
     for (int j = 0; j < map.ny(); ++j)
@@ -138,6 +144,10 @@ void Verifier::on_move(const machine::Move& m) {
 }
 
 void Verifier::cut(const machine::Move& m) {
+  if (motions_++ >= options_.cut_moves) {
+    ++counts_.after;
+    return;
+  }
   for (int a = 3; a < machine::kAxes; ++a)
     if (m.start[a] != m.end[a]) {
       ++counts_.rotary;

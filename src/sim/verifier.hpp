@@ -64,6 +64,8 @@ struct VerifyOptions {
   double cell = 0;                        // Z-map cell, mm; 0: from min_cells
   int min_cells = ZMap::kDefaultCells;    // the stock's shorter side in this many cells
   std::size_t max_findings = 200;         // beyond: counted only
+  double most_cells = 1e8;                // the largest map (8 bytes a cell)
+  std::uint64_t cut_moves = UINT64_MAX;   // only the first so many motions are cut (a debugger's step)
 };
 
 class Verifier final : public machine::MoveSink {
@@ -82,6 +84,7 @@ public:
     std::uint64_t no_tool = 0;     // motion with no tool in the spindle, or a tool without a size
     std::uint64_t not_xy_arc = 0;  // arcs in G18/G19
     std::uint64_t rotary = 0;      // moves that turn a rotary axis (3 axes are simulated)
+    std::uint64_t after = 0;       // motions past VerifyOptions::cut_moves
   };
   const Counts& counts() const { return counts_; }
 
@@ -109,6 +112,7 @@ private:
   const VerifyTool* tool_ = nullptr;
   int tool_number_ = 0;
   bool spindle_on_ = false;
+  std::uint64_t motions_ = 0;
   bool holder_in_stock_ = false;  // after the move before
   VerifyOptions options_;
   std::vector<Finding> findings_;

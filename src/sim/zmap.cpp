@@ -7,7 +7,7 @@
 
 namespace ncurve::sim {
 
-ZMap::ZMap(const Box& stock, double cell, int min_cells) : stock_(stock) {
+ZMap::ZMap(const Box& stock, double cell, int min_cells, double most_cells) : stock_(stock) {
   const double lx = stock.max[0] - stock.min[0], ly = stock.max[1] - stock.min[1];
   if (!(lx > 0 && ly > 0 && stock.max[2] >= stock.min[2])) throw std::invalid_argument("the stock box is empty");
   if (cell == 0) {
@@ -16,7 +16,10 @@ ZMap::ZMap(const Box& stock, double cell, int min_cells) : stock_(stock) {
   }
   if (!(cell > 0) || !std::isfinite(cell)) throw std::invalid_argument("a Z-map's cell size must be positive");
   const double nx = std::ceil(lx / cell - 1e-9), ny = std::ceil(ly / cell - 1e-9);
-  if (nx * ny > 4e8) throw std::invalid_argument("a Z-map of more than 400 million cells");
+  if (nx * ny > most_cells)
+    throw std::invalid_argument("a Z-map of " + std::to_string(static_cast<long long>(nx)) + " x " +
+                                std::to_string(static_cast<long long>(ny)) + " cells is more than the " +
+                                std::to_string(static_cast<long long>(most_cells)) + " allowed");
   cell_ = cell;
   nx_ = static_cast<int>(nx);
   ny_ = static_cast<int>(ny);

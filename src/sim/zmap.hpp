@@ -46,7 +46,9 @@ class ZMap {
 public:
   // cell 0: the stock's shorter side in min_cells cells
   static constexpr int kDefaultCells = 1000;
-  explicit ZMap(const Box& stock, double cell = 0, int min_cells = kDefaultCells);
+  static constexpr double kMostCells = 4e8;
+  // Throws std::invalid_argument for an empty box, a bad cell, or more than most_cells cells.
+  explicit ZMap(const Box& stock, double cell = 0, int min_cells = kDefaultCells, double most_cells = kMostCells);
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
