@@ -106,6 +106,7 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   vo.cell = args.resolution;
   vo.most_cells = args.most_cells;
   vo.cut_moves = args.cut_moves;
+  vo.profile = &profile;
   try {
     verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo, setup_.fixtures);
   } catch (const std::invalid_argument& e) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "machine/rapid_path.hpp"
 #include "report/svg_plot.hpp"
 #include "report/writers.hpp"
 
@@ -29,6 +30,7 @@ bool view_fits(const machine::MachineProfile& profile, PlotView view) {
 PathPlot::PathPlot(const machine::MachineProfile& profile, std::size_t max_elements)
     : lathe_(profile.lathe()), x_diameter_(profile.lathe() && profile.diameter_x),
       lathe_y_(profile.lathe() && profile.axes.find('Y') != std::string::npos),
+      rapid_rate_(profile.rapid_rate), linear_rapid_(profile.linear_rapid),
       machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(std::max<std::size_t>(max_elements, 1)),
       other_(profile) {}
 
@@ -72,8 +74,26 @@ bool continues(const Vec& a, const Vec& b, const Vec& c) {
 
 void PathPlot::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
+  if (m.kind == MoveKind::rapid && !linear_rapid_) {  // a dog-leg: a straight piece between corners
+    const auto path = machine::rapid_path(m.start, m.end, rapid_rate_, false);
+    if (path.size() > 2) {
+      machine::Move piece = m;
+      for (std::size_t k = 1; k < path.size(); ++k) {
+        piece.start = path[k - 1];
+        piece.end = path[k];
+        add(piece);
+      }
+      ++motions_;
+      other_.add(m);
+      return;
+    }
+  }
   ++motions_;
   other_.add(m);
+  add(m);
+}
+
+void PathPlot::add(const machine::Move& m) {
   const Vec a = xyz(m.start), b = xyz(m.end);
   for (int k = 0; k < 3; ++k) lo_[k] = std::min({lo_[k], a[k], b[k]}), hi_[k] = std::max({hi_[k], a[k], b[k]});
   last_ = b;

@@ -49,9 +49,12 @@ public:
   double simplified_within() const { return tol_; }
 
 private:
+  void add(const machine::Move& m);  // one straight piece or arc
   void compact();
   void simplify(double tol, std::size_t from);
   bool lathe_, x_diameter_, lathe_y_;  // lathe_y_: a lathe with a Y axis
+  machine::AxisVector rapid_rate_;     // rapids drawn as the machine moves them (No.1401#1)
+  bool linear_rapid_;
   int machine_plane_;
   std::size_t limit_;
   std::vector<Element> elements_;

@@ -1,5 +1,7 @@
 #include "sim/verifier.hpp"
 
+#include "machine/rapid_path.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -138,16 +140,32 @@ void Verifier::on_move(const machine::Move& m) {
     }
     case MoveKind::spindle: spindle_on_ = m.code == 3 || m.code == 4; return;
     case MoveKind::program_end: spindle_on_ = false; return;
-    case MoveKind::rapid: case MoveKind::line: case MoveKind::arc: cut(m); return;
+    case MoveKind::rapid:
+      if (options_.profile && !options_.profile->linear_rapid && motions_ < options_.cut_moves) {
+        // as the machine moves it: each axis at its own rate, a piece between corners
+        const auto path = machine::rapid_path(m.start, m.end, *options_.profile);
+        ++motions_;
+        machine::Move piece = m;
+        for (std::size_t k = 1; k < path.size(); ++k) {
+          piece.start = path[k - 1];
+          piece.end = path[k];
+          cut(piece);
+        }
+        return;
+      }
+      [[fallthrough]];
+    case MoveKind::line: case MoveKind::arc:
+      if (motions_++ >= options_.cut_moves) {
+        ++counts_.after;
+        return;
+      }
+      cut(m);
+      return;
     default: return;
   }
 }
 
 void Verifier::cut(const machine::Move& m) {
-  if (motions_++ >= options_.cut_moves) {
-    ++counts_.after;
-    return;
-  }
   for (int a = 3; a < machine::kAxes; ++a)
     if (m.start[a] != m.end[a]) {
       ++counts_.rotary;

@@ -66,6 +66,7 @@ struct VerifyOptions {
   std::size_t max_findings = 200;         // beyond: counted only
   double most_cells = 1e8;                // the largest map (8 bytes a cell)
   std::uint64_t cut_moves = UINT64_MAX;   // only the first so many motions are cut (a debugger's step)
+  const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
 };
 
 class Verifier final : public machine::MoveSink {

@@ -63,6 +63,7 @@ max = [40, 10, 5]
 )";
 
 struct Verified {
+  machine::MachineProfile profile = test::calculator_mill();
   test::Ran ran;
   sim::SetupFile setup;
   std::unique_ptr<sim::MillTools> tools;
@@ -76,14 +77,16 @@ struct Verified {
   }
 };
 
-Verified verify(const std::string& program, const char* setup_text = kSetup) {
+Verified verify(const std::string& program, const char* setup_text = kSetup, bool linear_rapid = false) {
   Verified v;
-  v.ran = test::run(program, test::calculator_mill());
+  v.profile.linear_rapid = linear_rapid;
+  v.ran = test::run(program, v.profile);
   EXPECT_TRUE(v.ran.result.ok()) << (v.ran.result.alarm ? v.ran.result.alarm->message : "");
   v.setup = sim::parse_setup(setup_text, "s.toml");
   v.tools = std::make_unique<sim::MillTools>(v.setup.tools, test::calculator_mill());
   sim::VerifyOptions o;
   o.cell = 0.1;
+  o.profile = &v.profile;
   v.verifier = std::make_unique<sim::Verifier>(*v.setup.stock, *v.tools, v.setup.tool_in_spindle, o, v.setup.fixtures);
   for (const auto& m : v.ran.moves) v.verifier->on_move(m);
   return v;
@@ -278,4 +281,17 @@ TEST(Verifier, ToolIntoAFixtureWarns) {
   const auto checked = near.verifier->fixtures_checked();
   ASSERT_EQ(checked.size(), 1u);
   EXPECT_EQ(checked[0], "clamp: checked");
+}
+
+TEST(Verifier, RapidAsTheMachineMovesIt) {
+  // G00 from X0 Z20 to X60 Z2: on the straight line the tool is above Z6.5 over the clamp (X25..45
+  // with its 5 mm radius) whose top is Z5; each axis at its own rate (15 m/min both), Z arrives at
+  // X18 and the tool crosses the clamp at Z2
+  const std::string program = "T1 M06\nM03 S1000\nG90 G00 X0 Y0 Z20.\nG00 X60. Z2.\nG00 Z20.\nM30\n";
+  auto dogleg = verify(program);
+  ASSERT_EQ(dogleg.of("NC2086").size(), 1u);
+  EXPECT_EQ(dogleg.of("NC2086")[0]->diagnostic.span.line, 4u);
+  EXPECT_DOUBLE_EQ(dogleg.of("NC2086")[0]->amount, 3.0);
+  auto straight = verify(program, kSetup, true);  // No.1401#1 = 1: linear positioning
+  EXPECT_TRUE(straight.of("NC2086").empty());
 }
