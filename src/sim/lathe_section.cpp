@@ -20,8 +20,12 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Section coordinates: IntPoint.X is Z, IntPoint.Y is X (the radius), in kSectionUnit.
+// Section coordinates in kSectionUnit: IntPoint.X is X (the radius), IntPoint.Y is Z. Clipper sweeps
+// its scan line along Y: along the spindle axis, the direction most moves of a lathe run, so that few
+// of a batch's sweeps are active on any one scan beam. Clipper's orientation (outer boundaries
+// counter-clockwise in X, Y) is clockwise with Z to the right and X up.
 cInt to_units(double mm) { return static_cast<cInt>(std::llround(mm / kSectionUnit)); }
+IntPoint section_point(double z, double x) { return {to_units(x), to_units(z)}; }
 
 bool finite(V2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
@@ -84,12 +88,12 @@ double path_area(const Path& p) {
   return a / 2 * kSectionUnit * kSectionUnit;
 }
 
-// The integral of X over the polygon, mm^3.
+// The integral of the radius over the polygon, mm^3.
 double path_moment(const Path& p) {
   double m = 0;
   for (std::size_t i = 0, n = p.size(); i < n; ++i) {
     const IntPoint &u = p[i], &v = p[(i + 1) % n];
-    m += static_cast<double>(u.X * v.Y - v.X * u.Y) * static_cast<double>(u.Y + v.Y);
+    m += static_cast<double>(u.X * v.Y - v.X * u.Y) * static_cast<double>(u.X + v.X);
   }
   return m / 6 * kSectionUnit * kSectionUnit * kSectionUnit;
 }
@@ -98,7 +102,28 @@ double path_moment(const Path& p) {
 
 struct LatheSection::State {
   Paths section;
-  Paths pending;
+  // The sweeps not yet subtracted, merged as a binary counter merges: a sweep enters at level 0 and
+  // two unions of the same level become one of the next, so that a batch of n overlapping sweeps
+  // costs some n log n edges in Clipper rather than the n^2 of one union of them all.
+  std::vector<std::pair<int, Paths>> pending;
+  int pending_sweeps = 0;
+
+  void add_sweep(Paths sweep) {
+    pending.emplace_back(0, std::move(sweep));
+    ++pending_sweeps;
+    while (pending.size() >= 2 && pending.back().first == pending[pending.size() - 2].first) {
+      auto b = std::move(pending.back());
+      pending.pop_back();
+      auto& a = pending.back();
+      ClipperLib::Clipper c;
+      c.AddPaths(a.second, ClipperLib::ptSubject, true);
+      c.AddPaths(b.second, ClipperLib::ptClip, true);
+      Paths out;
+      c.Execute(ClipperLib::ctUnion, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      a.second = std::move(out);
+      ++a.first;
+    }
+  }
   int batch = kDefaultBatch;
   bool empty = true;
   V2 lo{}, hi{};  // the stock's box, mm
@@ -113,7 +138,7 @@ LatheSection::LatheSection(const Cylinder& stock, int batch) : stock_(stock), s_
   if (!(std::isfinite(outer) && std::isfinite(inner) && std::isfinite(face) && std::isfinite(back))) return;
   s.lo = {std::clamp(back, -kSectionReach, kSectionReach), std::min(inner, kSectionReach)};
   s.hi = {std::clamp(face, -kSectionReach, kSectionReach), std::min(outer, kSectionReach)};
-  const IntPoint lo{to_units(s.lo.x), to_units(s.lo.y)}, hi{to_units(s.hi.x), to_units(s.hi.y)};
+  const IntPoint lo = section_point(s.lo.x, s.lo.y), hi = section_point(s.hi.x, s.hi.y);
   if (!(lo.X < hi.X && lo.Y < hi.Y)) return;
   s.empty = false;
   s.section = {{lo, {hi.X, lo.Y}, hi, {lo.X, hi.Y}}};
@@ -155,20 +180,21 @@ void LatheSection::cut_line(const ToolOutline& tool, V2 a, V2 b) {
   Path points;
   points.reserve(2 * tool.points.size());
   for (const V2& q : tool.points) {
-    points.emplace_back(to_units(a.x + q.x), to_units(a.y + q.y));
-    points.emplace_back(to_units(b.x + q.x), to_units(b.y + q.y));
+    points.push_back(section_point(a.x + q.x, a.y + q.y));
+    points.push_back(section_point(b.x + q.x, b.y + q.y));
   }
   Path hull = convex_hull(points);
   if (hull.empty()) return;
-  cInt low = hull[0].Y;
-  for (const IntPoint& p : hull) low = std::min(low, p.Y);
+  cInt low = hull[0].X;
+  for (const IntPoint& p : hull) low = std::min(low, p.X);
   if (low < 0) {  // the part turns: the tool cuts at |X| on the far side of the axis too
     Path mirror(hull.rbegin(), hull.rend());
-    for (IntPoint& p : mirror) p.Y = -p.Y;
-    s.pending.push_back(std::move(mirror));
+    for (IntPoint& p : mirror) p.X = -p.X;
+    s.add_sweep({std::move(hull), std::move(mirror)});
+  } else {
+    s.add_sweep({std::move(hull)});
   }
-  s.pending.push_back(std::move(hull));
-  if (static_cast<int>(s.pending.size()) >= s.batch) flush();
+  if (s.pending_sweeps >= s.batch) flush();
 }
 
 void LatheSection::cut_arc(const ToolOutline& tool, V2 a, V2 b, V2 centre, double sweep) {
@@ -190,11 +216,12 @@ void LatheSection::flush() const {
   if (s.pending.empty()) return;
   ClipperLib::Clipper c;
   c.AddPaths(s.section, ClipperLib::ptSubject, true);
-  c.AddPaths(s.pending, ClipperLib::ptClip, true);
+  for (const auto& [level, paths] : s.pending) c.AddPaths(paths, ClipperLib::ptClip, true);
   Paths out;
   c.Execute(ClipperLib::ctDifference, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   s.section = std::move(out);
   s.pending.clear();
+  s.pending_sweeps = 0;
 }
 
 double LatheSection::area() const {
@@ -222,7 +249,7 @@ std::vector<std::vector<V2>> LatheSection::polygons() const {
   for (const Path& p : s_->section) {
     std::vector<V2>& q = out.emplace_back();
     q.reserve(p.size());
-    for (const IntPoint& v : p) q.push_back({v.X * kSectionUnit, v.Y * kSectionUnit});
+    for (auto v = p.rbegin(); v != p.rend(); ++v) q.push_back({v->Y * kSectionUnit, v->X * kSectionUnit});
   }
   return out;
 }
@@ -243,13 +270,13 @@ double radius_at(const Paths& section, double z, Pick pick) {
   for (const Path& p : section)
     for (std::size_t i = 0, n = p.size(); i < n; ++i) {
       const IntPoint &a = p[i], &b = p[(i + 1) % n];
-      const double ax = static_cast<double>(a.X), bx = static_cast<double>(b.X);
-      if (u < std::min(ax, bx) || u > std::max(ax, bx)) continue;
-      if (a.X == b.X) {
-        keep(static_cast<double>(a.Y));
-        keep(static_cast<double>(b.Y));
+      const double az = static_cast<double>(a.Y), bz = static_cast<double>(b.Y);
+      if (u < std::min(az, bz) || u > std::max(az, bz)) continue;
+      if (a.Y == b.Y) {
+        keep(static_cast<double>(a.X));
+        keep(static_cast<double>(b.X));
       } else {
-        keep(a.Y + (b.Y - a.Y) * (u - ax) / (bx - ax));
+        keep(a.X + (b.X - a.X) * (u - az) / (bz - az));
       }
     }
   return any ? best * kSectionUnit : kNaN;
@@ -273,13 +300,14 @@ Mesh LatheSection::mesh(int segments) const {
   std::vector<double> cs(n), sn(n);
   for (int k = 0; k < n; ++k) cs[k] = std::cos(2 * kPi * k / n), sn[k] = std::sin(2 * kPi * k / n);
   Mesh mesh;
-  for (const Path& p : s_->section) {
+  for (const Path& clipper_path : s_->section) {
+    const Path p(clipper_path.rbegin(), clipper_path.rend());  // outer boundaries counter-clockwise in (Z, X)
     // each contour point's first vertex; a point on the axis has one, others one per step
     std::vector<std::uint32_t> first(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
       first[i] = static_cast<std::uint32_t>(mesh.vertices.size());
-      const double z = p[i].X * kSectionUnit, x = p[i].Y * kSectionUnit;
-      if (p[i].Y == 0) mesh.vertices.push_back({0, 0, z});
+      const double z = p[i].Y * kSectionUnit, x = p[i].X * kSectionUnit;
+      if (p[i].X == 0) mesh.vertices.push_back({0, 0, z});
       else
         for (int k = 0; k < n; ++k) mesh.vertices.push_back({x * cs[k], x * sn[k], z});
     }
@@ -287,7 +315,7 @@ Mesh LatheSection::mesh(int segments) const {
     // (a_k, b_k, b_k+1) and (a_k, b_k+1, a_k+1) face outwards
     for (std::size_t i = 0; i < p.size(); ++i) {
       const std::size_t j = (i + 1) % p.size();
-      const bool a_axis = p[i].Y == 0, b_axis = p[j].Y == 0;
+      const bool a_axis = p[i].X == 0, b_axis = p[j].X == 0;
       if (a_axis && b_axis) continue;
       for (int k = 0; k < n; ++k) {
         const int k1 = (k + 1) % n;

@@ -25,8 +25,9 @@ inline constexpr double kSectionReach = 10000;
 
 class LatheSection {
 public:
-  // The cuts are applied in batches of this many swept polygons (an arc makes one per chord).
-  static constexpr int kDefaultBatch = 64;
+  // The cuts are subtracted in batches of this many swept polygons (an arc makes one per chord),
+  // merged pairwise before (bench_sim measures the choice: docs/performance.md).
+  static constexpr int kDefaultBatch = 256;
 
   // The half-section of a bar or tube: Z from face - length to face, X from inner_diameter / 2 to
   // diameter / 2. A stock of no size (or a non-finite one) gives an empty section that nothing cuts.
