@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 namespace ncurve::sim {
 
@@ -299,6 +300,10 @@ Mesh LatheSection::mesh(int segments) const {
   const int n = std::clamp(segments, 3, 1 << 16);
   std::vector<double> cs(n), sn(n);
   for (int k = 0; k < n; ++k) cs[k] = std::cos(2 * kPi * k / n), sn[k] = std::sin(2 * kPi * k / n);
+  std::size_t points = 0;
+  for (const Path& p : s_->section) points += p.size();
+  if (static_cast<double>(points) * n >= std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("the part's mesh would have more vertices than an index holds: fewer segments");
   Mesh mesh;
   for (const Path& clipper_path : s_->section) {
     const Path p(clipper_path.rbegin(), clipper_path.rend());  // outer boundaries counter-clockwise in (Z, X)

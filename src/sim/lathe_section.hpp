@@ -23,6 +23,7 @@ inline constexpr double kSectionResolution = 2 * kChordError + kSectionUnit;
 // The section holds Z within +-kSectionReach and X up to it, mm; a stock beyond is cut off there.
 inline constexpr double kSectionReach = 10000;
 
+// The queries, const as they are, apply the pending cuts: one thread at a time.
 class LatheSection {
 public:
   // The cuts are subtracted in batches of this many swept polygons (an arc makes one per chord),
@@ -64,9 +65,10 @@ public:
   double outer_radius(double z) const;
   double inner_radius(double z) const;
 
-  // The part: every contour of the section revolved about Z in `segments` equal steps (3 at least),
+  // The part: every contour of the section revolved about Z in `segments` equal steps (3 to 65536),
   // a closed mesh oriented outwards (a contour point on the axis is one vertex). Its volume is the
-  // section's Pappus volume times segments sin(2 pi / segments) / (2 pi).
+  // section's Pappus volume times segments sin(2 pi / segments) / (2 pi). Throws std::length_error
+  // when its vertices would be 2^32 or more.
   Mesh mesh(int segments = 128) const;
 
 private:
