@@ -40,7 +40,7 @@ struct LatheInsert {
   double nose_radius = 0;
   int tip = 0;                 // imaginary tool nose number 0..9 (machine::tip_direction)
   double insert_angle = 80;    // included angle of the cutting point
-  double clearance_angle = 5;  // between the trailing edge and the turned surface
+  double clearance_angle = 5;  // the edge across the spindle axis past the perpendicular (a 95-degree holder: 5)
   double width = 0;            // grooving or parting blade's width; 0 for a pointed insert
   double holder_width = 0, holder_length = 0;  // 0: holder not modelled
 };
