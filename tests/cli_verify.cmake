@@ -37,9 +37,27 @@ expect_text("${out}" "default        stock: the box around the cutting moves" "t
 expect_text("${out}" "T1: not in the library and no D offset in force when it cut: not cut" "a tool of no size")
 
 # refusals
-run_expect(2 "--part of a lathe program" ${NCURVE} run ${SRC}/examples/lathe-mrc.nc --machine fanuc-lathe
-           --part ${OUT}/lathe.stl)
-expect_text("${err}" "not simulated yet" "the lathe's part refused")
+# a lathe: the bar's half-section cut by each tool, the part revolved as an STL whose size is its count's
+run_expect(0 "a lathe's part" ${NCURVE} run ${SRC}/examples/lathe-mrc.nc --machine fanuc-lathe
+           --setup ${SRC}/examples/lathe-mrc.setup.toml --part ${OUT}/lathe.stl)
+expect_text("${out}" "stock          cylinder D50, 100 long from Z0" "the lathe's stock")
+expect_text("${out}" "section        the bar's half-section" "the half-section")
+expect_text("${out}" "part           ${OUT}/lathe.stl" "the lathe's part named")
+file(READ ${OUT}/lathe.stl header LIMIT 4 OFFSET 80 HEX)
+string(SUBSTRING "${header}" 6 2 b3)
+string(SUBSTRING "${header}" 4 2 b2)
+string(SUBSTRING "${header}" 2 2 b1)
+string(SUBSTRING "${header}" 0 2 b0)
+math(EXPR triangles "0x${b3}${b2}${b1}${b0}")
+file(SIZE ${OUT}/lathe.stl size)
+math(EXPR want "84 + 50 * ${triangles}")
+if(NOT size EQUAL want OR triangles LESS 1000)
+  message(SEND_ERROR "lathe.stl: ${size} bytes for ${triangles} triangles")
+endif()
+# without a setup, a lathe's default stock: the bar round the cutting moves
+run_expect(0 "a lathe without a setup" ${NCURVE} run ${SRC}/examples/lathe-thread.nc --machine fanuc-lathe --verify)
+expect_text("${out}" "(the bar round the cutting moves)" "the default bar said")
+expect_text("${out}" "default        stock: the bar about the spindle axis" "the default bar's rule stated")
 file(WRITE ${OUT}/bad.setup.toml "[stock]\nshape = \"box\"\nmin = [0, 0, 0]\nmax = [10, -5, 1]\n")
 run_expect(2 "a bad setup" ${NCURVE} run ${SRC}/examples/spiral.nc --setup ${OUT}/bad.setup.toml)
 expect_text("${err}" "bad.setup.toml:4:7: error:" "the setup's error at its place")

@@ -6,6 +6,7 @@
 
 #include "io/output_file.hpp"
 #include "sim/part_stl.hpp"
+#include "sim/stl.hpp"
 
 namespace ncurve::app {
 
@@ -52,6 +53,31 @@ private:
   const nc::SourceFile* rotary_file_ = nullptr;
 };
 
+// A lathe's default bar: about the spindle axis, out to the largest radius a cutting move starts
+// from, its face at the largest Z one starts from, as long as the cuts go towards the chuck.
+class DefaultBar final : public machine::MoveSink {
+public:
+  void on_move(const machine::Move& m) override {
+    if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
+    radius_ = std::max(radius_, m.start[0]);
+    face_ = std::max(face_, m.start[2]);
+    low_ = std::min({low_, m.start[2], m.end[2]});
+    any_ = true;
+  }
+  std::optional<sim::Cylinder> bar() const {
+    if (!any_ || !(radius_ > 0) || !(face_ > low_)) return std::nullopt;
+    sim::Cylinder c;
+    c.diameter = 2 * radius_;
+    c.face = face_;
+    c.length = face_ - low_;
+    return c;
+  }
+
+private:
+  double radius_ = 0, face_ = -1e300, low_ = 1e300;
+  bool any_ = false;
+};
+
 }  // namespace
 
 RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineProfile& profile,
@@ -65,14 +91,14 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
     report_.setup_file = args.setup;
   }
   const sim::SetupFile* given = report_.setup_file.empty() ? nullptr : &setup_;
-  report_.defaults = sim::setup_defaults(given);
+  report_.defaults = sim::setup_defaults(given, profile.lathe());
   // nothing verified, and why; --part cannot be made then
   auto refuse = [&](const std::string& why) {
     report_.refused = why;
     if (!args.part.empty()) throw std::runtime_error("--part: " + why);
   };
   if (profile.lathe()) {
-    refuse("a lathe's material removal is not simulated yet");
+    lathe(profile, lib, options, refuse);
     return;
   }
   tools_ = std::make_unique<sim::MillTools>(setup_.tools, profile);
@@ -119,7 +145,39 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
 
 RunVerification::~RunVerification() = default;
 
-machine::MoveSink* RunVerification::sink() { return verifier_.get(); }
+void RunVerification::lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
+                            const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse) {
+  std::optional<sim::Stock> stock = setup_.stock;
+  if (!stock) {  // a first run finds the bar round the cutting moves
+    DefaultBar bar;
+    machine::Interpreter first(profile, lib, options);
+    first.run(bar);
+    if (const auto c = bar.bar()) {
+      stock = *c;
+      report_.stock_default = true;
+    }
+  }
+  if (!stock) {
+    refuse("no default stock: the program makes no cutting move (give the stock in a setup file, --setup)");
+    return;
+  }
+  report_.stock = stock;
+  const auto* bar = std::get_if<sim::Cylinder>(&*stock);
+  if (!bar) {
+    refuse("a lathe's stock is a cylinder or a tube (shape = \"cylinder\" or \"tube\")");
+    return;
+  }
+  section_ = std::make_unique<sim::LatheSection>(*bar);
+  section_sink_ = std::make_unique<sim::LatheSectionSink>(*section_, setup_.tools, profile.lathe_offsets,
+                                                          setup_.tool_in_spindle);
+  report_.section = section_.get();
+  report_.section_sink = section_sink_.get();
+}
+
+machine::MoveSink* RunVerification::sink() {
+  if (section_sink_) return section_sink_.get();
+  return verifier_.get();
+}
 
 void RunVerification::finish(machine::RunResult& result) {
   if (tools_)
@@ -134,9 +192,10 @@ void RunVerification::finish(machine::RunResult& result) {
 }
 
 void RunVerification::write_part(const std::vector<std::string>& inputs) {
-  if (args_.part.empty() || !verifier_) return;
+  if (args_.part.empty() || (!verifier_ && !section_)) return;
   io::OutputFile file(args_.part, inputs);
-  sim::write_part_stl(verifier_->map(), file.stream());
+  if (verifier_) sim::write_part_stl(verifier_->map(), file.stream());
+  else sim::write_stl(file.stream(), section_->mesh(), "ncurve part: the bar's half-section cut and revolved");
   file.commit();
   report_.part_file = args_.part;
 }

@@ -3,6 +3,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "report/verify_report.hpp"
+#include "sim/lathe_section_sink.hpp"
 
 namespace ncurve::app {
 
@@ -29,7 +31,8 @@ void add_verify_options(CLI::App* run, VerifyArgs& a);
 
 class RunVerification {
 public:
-  // Reads the setup and, without a stock in it, runs the program once to find the default box.
+  // Reads the setup and, without a stock in it, runs the program once to find the default box (a
+  // lathe's bar).
   // Throws std::runtime_error with a message for the user (a bad setup file, a part that cannot be made).
   RunVerification(const VerifyArgs& args, const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
                   const machine::RunOptions& options);
@@ -41,14 +44,19 @@ public:
   // Writes --part; throws io::OutputError.
   void write_part(const std::vector<std::string>& inputs);
   const report::VerifyReport& report() const { return report_; }
-  // The cut stock; null when nothing was verified.
+  // The cut stock of a mill; null when nothing was verified or on a lathe.
   const sim::ZMap* map() const { return verifier_ ? &verifier_->map() : nullptr; }
 
 private:
+  void lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
+             const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse);
+
   VerifyArgs args_;
   sim::SetupFile setup_;
   std::unique_ptr<sim::MillTools> tools_;
   std::unique_ptr<sim::Verifier> verifier_;
+  std::unique_ptr<sim::LatheSection> section_;  // a lathe's
+  std::unique_ptr<sim::LatheSectionSink> section_sink_;
   report::VerifyReport report_;
 };
 

@@ -48,10 +48,27 @@ std::string verify_text(const VerifyReport& r) {
   out += fmt::format("  setup          {}\n", r.setup_file.empty() ? "none (the defaults below)" : r.setup_file);
   if (r.stock)
     out += fmt::format("  stock          {}{}\n", stock_words(*r.stock),
-                       r.stock_default ? " (the box around the cutting moves)" : "");
+                       !r.stock_default                             ? ""
+                       : std::holds_alternative<sim::Cylinder>(*r.stock) ? " (the bar round the cutting moves)"
+                                                                          : " (the box around the cutting moves)");
   for (const std::string& t : r.tools) out += fmt::format("  tool           {}\n", t);
   for (const std::string& f : r.fixtures) out += fmt::format("  fixture        {}\n", f);
   for (const std::string& d : r.defaults) out += fmt::format("  default        {}\n", d);
+  if (r.section) {  // a lathe: the half-section
+    std::string by_tool;
+    for (const auto& [t, volume] : r.section_sink->volume_by_tool())
+      by_tool += fmt::format("{}T{} {:.1f}", by_tool.empty() ? "" : ", ", t, volume);
+    out += fmt::format("  section        the bar's half-section on a {:g} mm grid, within {:g} mm of the exact cut\n",
+                       sim::kSectionUnit, sim::kSectionResolution);
+    out += fmt::format("  removed        {:.1f} mm^3{}\n", r.section->volume_removed(),
+                       by_tool.empty() ? "" : " (" + by_tool + ")");
+    const auto& c = r.section_sink->counts();
+    if (c.no_tool) out += fmt::format("  not cut        {} moves with no tool (before the first T code, or T0)\n", c.no_tool);
+    if (c.not_zx_arc) out += fmt::format("  not cut        {} arcs outside G18\n", c.not_zx_arc);
+    out += "  findings       none checked on a lathe yet (the material removal and the part only)\n";
+    if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
+    return out;
+  }
   if (!r.verifier) {
     out += fmt::format("  verified       no: {}\n", r.refused);
     return out;
@@ -85,7 +102,21 @@ nlohmann::json verify_json(const VerifyReport& r) {
   j["tools"] = r.tools;
   j["fixtures"] = r.fixtures;
   j["defaults"] = r.defaults;
-  j["verified"] = r.verifier != nullptr;
+  j["verified"] = r.verifier != nullptr || r.section != nullptr;
+  if (r.section) {
+    j["section"] = {{"grid_mm", sim::kSectionUnit}, {"resolution_mm", sim::kSectionResolution}};
+    j["volume_removed_mm3"] = r.section->volume_removed();
+    nlohmann::json by_tool = nlohmann::json::object();
+    for (const auto& [t, volume] : r.section_sink->volume_by_tool()) by_tool[std::to_string(t)] = volume;
+    j["volume_by_tool_mm3"] = by_tool;
+    const auto& c = r.section_sink->counts();
+    j["moves_cut"] = c.cut;
+    j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}};
+    j["findings"] = nlohmann::json::array();
+    j["findings_left_out"] = 0;
+    j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
+    return j;
+  }
   if (!r.verifier) {
     j["refused"] = r.refused;
     return j;

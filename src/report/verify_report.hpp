@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/lathe_section_sink.hpp"
 #include "sim/verifier.hpp"
 
 namespace ncurve::report {
@@ -13,7 +14,9 @@ struct VerifyReport {
   std::string setup_file;                   // empty: no setup file
   std::optional<sim::Stock> stock;          // the stock cut
   bool stock_default = false;               // the box around the cutting moves
-  const sim::Verifier* verifier = nullptr;  // null: nothing verified (see refused)
+  const sim::Verifier* verifier = nullptr;  // a mill's; null: not verified (see refused) or a lathe
+  const sim::LatheSection* section = nullptr;            // a lathe's half-section
+  const sim::LatheSectionSink* section_sink = nullptr;
   std::string refused;                      // why nothing was verified
   std::vector<std::string> defaults;        // the defaults in force, in words
   std::vector<std::string> tools;           // each tool used, in words

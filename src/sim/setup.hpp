@@ -58,7 +58,7 @@ SetupFile parse_setup(const std::string& toml_text, const std::string& origin);
 
 // The defaults in force, in words, one a line: for no setup file (nullptr), or for what the
 // given one leaves out.
-std::vector<std::string> setup_defaults(const SetupFile* setup);
+std::vector<std::string> setup_defaults(const SetupFile* setup, bool lathe = false);
 
 // The default stock of a mill: the box around the cutting moves (lines and arcs, not rapids),
 // widened by the tool's radius to the sides and below, whose top is the highest level a cutting

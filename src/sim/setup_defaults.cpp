@@ -73,9 +73,12 @@ std::optional<AxisBox> default_stock_box(std::span<const machine::Move> moves,
   return finder.box();
 }
 
-std::vector<std::string> setup_defaults(const SetupFile* setup) {
+std::vector<std::string> setup_defaults(const SetupFile* setup, bool lathe) {
   std::vector<std::string> lines;
-  if (!setup || !setup->stock)
+  if ((!setup || !setup->stock) && lathe)
+    lines.push_back("stock: the bar about the spindle axis out to the largest radius a cutting move starts from, "
+                    "its face at the largest Z one starts from, as long as the cuts reach towards the chuck");
+  else if (!setup || !setup->stock)
     lines.push_back("stock: the box around the cutting moves, widened by the tool's radius to the sides and below, "
                     "its top the highest level a cutting move starts from");
   if (!setup || setup->fixtures.empty()) lines.push_back("fixtures: none");
