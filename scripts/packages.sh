@@ -1,7 +1,8 @@
 # Sourced by the scripts: ensure_packages PKG... installs the Debian packages not yet installed.
-# libjs-three: three.js, compiled into the page of `run --html`
+# libjs-three: three.js, compiled into the page of `run --html`; libpolyclipping-dev: Clipper, the lathe's
+# half-section (src/sim/lathe_section.cpp)
 tool_packages=(cmake ninja-build g++ pkg-config libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-               libeigen3-dev libjs-three libcpp-httplib-dev)
+               libeigen3-dev libjs-three libcpp-httplib-dev libpolyclipping-dev)
 # linuxcnc-uspace: its rs274 interpreter is the second implementation the compensation is compared with
 # chromium: the browser the pages are tested in (tests/browser, with playwright-core from npm)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev python3 linuxcnc-uspace chromium)

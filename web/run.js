@@ -66,6 +66,12 @@
     });
     fact(`extent, ${unitName}`, parts.join('   '));
   }
+  if (summary.verify && summary.verify.verified) {
+    const v = summary.verify;
+    fact('part', `${fmt(v.volume_removed_mm3 / (unit * unit * unit))} ${unitName}³ removed · ${v.findings.length + v.findings_left_out} finding${v.findings.length + v.findings_left_out === 1 ? '' : 's'}`);
+  } else if (summary.verify) {
+    fact('part', `not verified: ${summary.verify.refused}`);
+  }
   if (summary.warnings && summary.warnings.length) fact('warnings', summary.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}`).join('; '));
   // the rotary (or other A, B, C) axes: the drawing is of X, Y and Z
   if (moves.rotary.length) {
@@ -135,6 +141,7 @@
     return;
   }
 
+  if (data.part) plot.setPart(NcurveBackplot.decodePart(data.part));
   const tBuilt = performance.now();
 
   // view buttons
@@ -175,6 +182,7 @@
   swatch(`<line x1="1" y1="6" x2="27" y2="6" stroke="${hex(C[1])}" stroke-width="2"/>`, `feed ${kinds.feed}`);
   swatch(`<line x1="1" y1="6" x2="27" y2="6" stroke="${hex(C[2])}" stroke-width="2"/>`, `arc ${kinds.arc}`);
   swatch('<circle cx="14" cy="6" r="4" fill="#111"/>', 'start');
+  if (data.part) swatch('<rect x="2" y="1" width="24" height="10" fill="#d6d9de" stroke="#80858f"/>', 'part (cut stock)');
   if (data.alarm) swatch('<path d="M9 1l10 10M19 1L9 11" stroke="#d50000" stroke-width="2.5"/>', 'alarm');
   swatch('<line x1="1" y1="6" x2="27" y2="6" stroke="#d81b60" stroke-width="2"/>', 'selected block');
   legend.append(el('span', 'hint', 'drag: rotate · right-drag or shift-drag: pan · wheel: zoom · click a move: its block'));

@@ -61,7 +61,8 @@
     status('running…', '');
     let r, j;
     // the moves first, drawn as soon as they come; the trace (Debugger) by a second request after
-    const request = Object.assign(programRequest(), {format: 'binary'});
+    const request = Object.assign(programRequest(), {format: 'binary'}, await part.extras(name));
+    if (my !== seq) return;
     try {
       r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
         body: JSON.stringify(request)});
@@ -113,6 +114,24 @@
     $('status').className = 'wb-status ' + (cls || '');
   }
 
+  // the part (wb-part.js): its setup is NAME.setup.toml among the server's files, or the example's
+  const part = NcurvePart.create({
+    checkbox: $('part'),
+    setupUrl: (n) => (n === 'spiral.nc' && example.name === n && !fileNames.includes(n) ? '/assets/example.setup.toml'
+      : fileNames.includes(n.replace(/\.[^.]*$/, '') + '.setup.toml') ? '/api/files/' + encodeURIComponent(n.replace(/\.[^.]*$/, '') + '.setup.toml')
+      : null),
+    request: programRequest,
+    onPart: showPart,
+  });
+  function showPart(p, summary, moves) {
+    if (!plot) return;
+    plot.setPart(p ? NcurveBackplot.decodePart(p) : null);
+    const v = summary && summary.verify;
+    W.part = {triangles: plot.state().part, moves, volume: v && v.verified ? v.volume_removed_mm3 : null,
+      findings: v && v.verified ? v.findings.length : null, refused: v && !v.verified ? v.refused : null};
+  }
+  $('part').onchange = run;
+
   // ---- showing an answer ----
   function show(t0, traceToCome) {
     const t1 = performance.now();
@@ -133,6 +152,7 @@
       view: viewName || undefined,
       alarmLabel: s.alarm ? `${s.alarm.code} line ${s.alarm.line}` : '',
     });
+    showPart(answer.part || null, s, Infinity);
     const t3 = performance.now();  // drawn at the next frame
     buildViews();
     editor.setDiagnostics(answer.diagnostics);
@@ -243,43 +263,18 @@
       const li = el('li', d.severity + (d === alarm ? ' alarm' : ''));
       li.append(el('span', 'where', `${d.file || ''}:${d.line}:${d.column || 1}`), el('strong', '', d.code),
         document.createTextNode(' ' + d.message));
-      li.onclick = () => { if (!d.file || d.file === name) editor.selectLine(d.line); };
+      // a finding of the part: its place marked on the part too
+      const v = answer.summary && answer.summary.verify;
+      const found = v && v.findings && v.findings.find((f) => f.code === d.code && f.line === d.line && f.file === d.file);
+      li.onclick = () => {
+        if (!d.file || d.file === name) editor.selectLine(d.line);
+        if (found) plot.setTool(found.at), W.findingShown = found.at;
+      };
       box.append(li);
     }
     box.hidden = !answer.diagnostics.length;
   }
-  function showSummary() {
-    const s = answer.summary, box = $('summary');
-    box.textContent = '';
-    const fact = (k, v, cls) => box.append(el('dt', '', k), el('dd', cls || '', v));
-    if (s.none) { fact('program', 'none: the editor holds no program'); return; }
-    if (s.ok) fact('result', 'completed', 'ok');
-    else if (s.alarm) fact('result', `ALARM ${s.alarm.code} ${s.alarm.file || ''} line ${s.alarm.line}: ${s.alarm.message}`, 'alarm');
-    else fact('result', 'stopped', 'alarm');
-    if (answer.error) fact('stopped', answer.error, 'alarm');
-    fact('machine', s.machine);
-    const mv = s.moves;
-    fact('motions', `${s.motions} — ${mv.rapid} rapid, ${mv.line} feed, ${mv.arc} arc`);
-    const events = Object.keys(mv).filter((k) => !['rapid', 'line', 'arc'].includes(k) && mv[k]).map((k) => `${mv[k]} ${k.replace('_', ' ')}`);
-    if (events.length) fact('events', events.join(', '));
-    fact('blocks', `${s.blocks_executed} executed of ${s.source_blocks} in the source`);
-    fact('path', `${fmt(s.feed_length_mm)} mm at feed, ${fmt(s.rapid_length_mm)} mm rapid`);
-    fact('time', `${fmt(s.time_at_programmed_feed_s, 1)} s at programmed feed (the Cycle time tab: with acceleration)`);
-    if (s.extent) {
-      const ax = Object.keys(s.extent).sort((a, b) => 'XYZABC'.indexOf(a) - 'XYZABC'.indexOf(b));
-      // X a diameter where the profile the program ran on programs it so, marked as `ncurve run` marks it;
-      // a rotary axis in degrees
-      const dia = answer.profile && answer.profile.diameter, deg = (answer.profile && answer.profile.rotary) || '';
-      fact('extents', ax.map((a) => `${a}${a === 'X' && dia ? '(dia)' : ''} ${fmt(s.extent[a][0])} … ${fmt(s.extent[a][1])}${deg.includes(a) ? '°' : ''}`).join('   '));
-    }
-    // the A, B, C axes the run moved: the drawing is of X, Y and Z
-    if (conv.rotary.length) {
-      const range = (r) => `${r.axis} ${fmt(r.min)} … ${fmt(r.max)}${r.unit === 'deg' ? '°' : ' mm'}`;
-      fact('axes not drawn', `${conv.rotary.map(range).join('   ')} (the view shows X, Y and Z; hover a move for its end)`);
-    }
-    fact('warnings', s.warnings.length ? s.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}`).join('\n') : 'none');
-    if (!answer.moves.complete) fact('moves', answer.moves.message, 'alarm');
-  }
+  const showSummary = () => NcurveSummary.show($('summary'), answer, conv);
 
   // ---- the debugger ----
   function setupTrace() {
@@ -307,6 +302,7 @@
     plot.setColors((i) => (i >= cut ? DIM : null));
     const at = cut > 0 ? conv.end.subarray(3 * cut - 3, 3 * cut) : conv.count ? conv.start.subarray(0, 3) : null;
     plot.setTool(at ? Array.from(at) : null);
+    part.step(cut);
     // the call stack, innermost first
     const stack = $('dbg-stack');
     stack.textContent = '';
@@ -580,6 +576,7 @@
   $('trace').onchange = run;
   // the shipped example of a server given no FILE: a lathe's when its default machine is a lathe
   let example = {name: 'spiral.nc', url: '/assets/example.nc'};
+  let fileNames = [];  // GET /api/files: the programs and their setups
   async function open(fileName) {
     const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : example.url);
     name = fileName || example.name;
@@ -608,10 +605,12 @@
       for (const c of curves) $('gen-curve').add(new Option(c.name, c.name, false, c.name === 'ellipse'));
       $('gen-curve').add(new Option('expression x(t), y(t), z(t)', 'expr'));
       chooseCurve();
-      for (const f of fj.files) $('file').add(new Option(f.name, f.name));
+      fileNames = fj.files.map((f) => f.name);
+      for (const f of fj.files) if (!f.name.endsWith('.setup.toml')) $('file').add(new Option(f.name, f.name));
       if (profile().lathe) example = {name: 'lathe-hyperbola.nc', url: '/assets/example-lathe.nc'};
-      if (!fj.files.length) $('file').add(new Option(`${example.name} (example)`, ''));
-      await open(fj.files.length ? fj.files[0].name : '');
+      const programs = fileNames.filter((n) => !n.endsWith('.setup.toml'));
+      if (!programs.length) $('file').add(new Option(`${example.name} (example)`, ''));
+      await open(programs.length ? programs[0] : '');
     } catch (e) {
       W.error = String(e);
       status(`cannot start: ${e.message}`, 'alarm');

@@ -26,6 +26,7 @@ void add_commands(CLI::App& app, Commands& c) {
   run->add_option("--dprnt", a.dprnt, "write what POPEN, DPRNT, BPRNT and PCLOS send to this file, byte for byte");
   add_plot_options(run, a.plot, a.view);
   add_html_option(run, a.html);
+  add_verify_options(run, a.verify);
   c.run_command = run;
   add_gen_command(app, c.gen);
   add_helicoid_command(app, c.helicoid);

@@ -9,6 +9,7 @@
 #include "app/gen_command.hpp"
 #include "app/helicoid_command.hpp"
 #include "app/run_setup.hpp"
+#include "app/run_verify.hpp"
 #include "app/serve_args.hpp"
 
 namespace ncurve::app {
@@ -26,6 +27,7 @@ struct RunArgs {
   std::string plot;  // --plot F.svg
   std::string view;  // --view xy|xz|yz|iso
   std::string html;  // --html F.html
+  VerifyArgs verify;
 };
 
 // The commands' arguments, filled by parsing, and the subcommands to ask which one was given.

@@ -73,6 +73,23 @@ int run_command(const app::RunArgs& a) {
               << " both write to standard output; write one of them to a file\n";
     return 2;
   }
+  if (!a.verify.part.empty() && (a.verify.part == "-" || a.verify.part == output || a.verify.part == a.html ||
+                                 a.verify.part == a.plot || a.verify.part == a.dprnt)) {
+    std::cerr << "ncurve run: --part needs a file of its own (not standard output, not another output's file)\n";
+    return 2;
+  }
+  if (!a.verify.setup.empty()) setup.inputs.push_back(a.verify.setup);  // never an output
+  std::optional<app::RunVerification> verify;
+  if (a.verify.on()) {
+    try {
+      verify.emplace(a.verify, profile, lib, setup.options);
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
+      std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
+      return 2;
+    }
+  }
   std::optional<io::OutputFile> file;
   if (!output.empty()) {
     try {
@@ -106,14 +123,27 @@ int run_command(const app::RunArgs& a) {
     html.emplace(profile);
     html_tee.emplace(tee ? static_cast<machine::MoveSink&>(*tee) : *sink, *html);
   }
-  machine::MoveSink& target = html_tee ? static_cast<machine::MoveSink&>(*html_tee)
-                              : tee    ? static_cast<machine::MoveSink&>(*tee)
-                                       : *sink;
+  machine::MoveSink& shown = html_tee ? static_cast<machine::MoveSink&>(*html_tee)
+                             : tee    ? static_cast<machine::MoveSink&>(*tee)
+                                      : *sink;
+  std::optional<report::TeeSink> verify_tee;
+  if (verify && verify->sink()) verify_tee.emplace(shown, *verify->sink());
+  machine::MoveSink& target = verify_tee ? static_cast<machine::MoveSink&>(*verify_tee) : shown;
   setup.options.path_tolerance = a.arc_tol;  // G12.1/G07.1 paths as the CSV's arcs
   machine::Interpreter interp(profile, lib, setup.options);
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
   if (gcode) gcode->finish();
+  if (verify) {
+    verify->finish(result);
+    if (html && verify->map()) html->set_part(sim::part_grid(*verify->map()));
+    try {
+      verify->write_part(setup.inputs);
+    } catch (const io::OutputError& e) {
+      std::cerr << "ncurve run: error: " << nc::escape_controls(e.what()) << "\n";
+      return 2;
+    }
+  }
   if (!a.dprnt.empty()) {  // what the control sent up to the end or the alarm
     try {
       io::write_file(a.dprnt, result.output.bytes, setup.inputs);
@@ -131,6 +161,7 @@ int run_command(const app::RunArgs& a) {
   rep.text_problems = std::move(setup.problems);
   rep.text_problems_left_out = setup.problems_left_out;
   rep.unchecked_lines = setup.unchecked_lines;
+  if (verify) rep.verify = &verify->report();
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
   if (plot && !app::save_plot(a.plot, a.view, *plot, interp, rep.source, setup.inputs)) return 2;
   if (html && !app::save_html(a.html, *html, interp.variable(4006).number() == 20, rep.source,

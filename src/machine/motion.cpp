@@ -105,6 +105,7 @@ void Executor::emit(Move& m) {
   m.line = block_ ? block_->line : 0;
   m.feed_per_rev = modal_.feed_per_rev || m.threading;
   m.spindle = speed_;
+  m.d_offset = d_;
   m.exact_stop = modal_.exact_stop || exact_stop_once_;
   m.lookahead = modal_.look_ahead || modal_.exact_stop_code == 611;
   m.macro_statements = statements_since_;

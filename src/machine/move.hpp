@@ -46,6 +46,7 @@ struct Move {
   bool compensated = false;    // a cutter / tool-nose radius compensated move: end is the tool centre (tip)
   AxisVector programmed_end{}; // compensated moves: the end point as programmed
   bool corner = false;         // an extra move the compensation inserts at a corner
+  std::int32_t d_offset = 0;   // the D offset number in force (a mill's cutter radius)
   int program = -1;            // O number of the program holding the block
   const nc::SourceFile* file = nullptr;
   std::uint32_t line = 0;      // 1-based line in file

@@ -168,6 +168,7 @@ struct MachineProfile {
   std::array<int, 10> m_code_macros{};  // No.6080..6089: M code that calls O9020..O9029
   std::array<int, 9> m_code_subprograms{};  // No.6071..6079: M code that calls O9001..O9009
   AxisVector rapid_rate{15000, 15000, 15000, 3600, 3600, 3600};  // mm/min (deg/min) per axis
+  bool linear_rapid = false;  // No.1401#1 LRP: G00 on a straight line (else each axis at its own rate)
   double max_cutting_feed = 10000;  // mm/min
   double spindle_speed_for_time = 1000;  // rev/min assumed for feed per revolution when no S is active
   std::array<AxisVector, 7> work_offsets{};  // [0] external (#5201..), [1..6] G54..G59

@@ -119,6 +119,12 @@ std::string BackplotData::json(bool inch) const {
     files.push_back(e);
   }
   head["files"] = files;
+  if (part_) {
+    const sim::PartGrid& g = *part_;
+    head["part"] = {{"nx", g.nx}, {"ny", g.ny}, {"x0", g.x0}, {"y0", g.y0}, {"dx", g.dx}, {"dy", g.dy},
+                    {"bottom", g.bottom}, {"top", g.top},
+                    {"heights", base64(g.heights.data(), g.heights.size() * sizeof(float))}};
+  }
   if (alarm_) {
     nlohmann::json a;
     a["code"] = alarm_->code;

@@ -15,6 +15,7 @@
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
 #include "report/other_axes.hpp"
+#include "sim/part_stl.hpp"
 
 namespace ncurve::report {
 
@@ -34,6 +35,8 @@ public:
   // The data as one JSON object (UTF-8; a byte of a name or text that is not UTF-8 becomes U+FFFD).
   // `inch`: the program ended under G20 (the axes are labelled in inches).
   std::string json(bool inch) const;
+  // The cut part, drawn shaded under the path (run --verify).
+  void set_part(sim::PartGrid part) { part_ = std::move(part); }
 
 private:
   std::uint32_t block_of(const machine::Move& m);
@@ -62,6 +65,7 @@ private:
   // the A, B and C axes (the drawing is of X Y Z), and each one's end for each motion kept
   OtherAxes other_;
   std::array<std::vector<double>, 3> other_end_;
+  std::optional<sim::PartGrid> part_;
 };
 
 // `text` as base64 (RFC 4648, with padding).

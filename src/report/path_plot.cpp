@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "machine/rapid_path.hpp"
 #include "report/svg_plot.hpp"
 #include "report/writers.hpp"
 
@@ -29,6 +30,7 @@ bool view_fits(const machine::MachineProfile& profile, PlotView view) {
 PathPlot::PathPlot(const machine::MachineProfile& profile, std::size_t max_elements)
     : lathe_(profile.lathe()), x_diameter_(profile.lathe() && profile.diameter_x),
       lathe_y_(profile.lathe() && profile.axes.find('Y') != std::string::npos),
+      rapid_rate_(profile.rapid_rate), linear_rapid_(profile.linear_rapid),
       machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(std::max<std::size_t>(max_elements, 1)),
       other_(profile) {}
 
@@ -72,8 +74,35 @@ bool continues(const Vec& a, const Vec& b, const Vec& c) {
 
 void PathPlot::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
+  {  // the frame, of whole moves (a dog-leg's corners are the machine's, not the program's points)
+    const Vec a = xyz(m.start), b = xyz(m.end);
+    const bool cut = m.kind != MoveKind::rapid;
+    for (int k = 0; k < 3; ++k) {
+      if (axis_moved_[k] || cut) frame_lo_[k] = std::min(frame_lo_[k], a[k]), frame_hi_[k] = std::max(frame_hi_[k], a[k]);
+      axis_moved_[k] = axis_moved_[k] || a[k] != b[k] || m.kind == MoveKind::arc;
+      if (axis_moved_[k]) frame_lo_[k] = std::min(frame_lo_[k], b[k]), frame_hi_[k] = std::max(frame_hi_[k], b[k]);
+    }
+  }
+  if (m.kind == MoveKind::rapid && !linear_rapid_) {  // a dog-leg: a straight piece between corners
+    const auto path = machine::rapid_path(m.start, m.end, rapid_rate_, false);
+    if (path.size() > 2) {
+      machine::Move piece = m;
+      for (std::size_t k = 1; k < path.size(); ++k) {
+        piece.start = path[k - 1];
+        piece.end = path[k];
+        add(piece);
+      }
+      ++motions_;
+      other_.add(m);
+      return;
+    }
+  }
   ++motions_;
   other_.add(m);
+  add(m);
+}
+
+void PathPlot::add(const machine::Move& m) {
   const Vec a = xyz(m.start), b = xyz(m.end);
   for (int k = 0; k < 3; ++k) lo_[k] = std::min({lo_[k], a[k], b[k]}), hi_[k] = std::max({hi_[k], a[k], b[k]});
   last_ = b;
@@ -315,17 +344,10 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
   // The program's box: an axis counts from its first move on (a cut from where it starts), so where
   // the machine stood before the program (the shipped mill's reference position, far above the
   // part; a lathe's home) is left out and the approach from it is cut off at the panel's edge.
-  Vec lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  Vec lo = frame_lo_, hi = frame_hi_;
   {
-    std::array<bool, 3> moved{};
     auto count = [&](int k, double v) { lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v); };
     for (const auto& e : elements_) {
-      const bool cut = e.kind != MoveKind::rapid;
-      for (int k = 0; k < 3; ++k) {
-        if (moved[k] || cut) count(k, e.a[k]);
-        moved[k] = moved[k] || e.a[k] != e.b[k] || e.kind == MoveKind::arc;
-        if (moved[k]) count(k, e.b[k]);
-      }
       if (e.kind == MoveKind::arc) {  // its extremes, as the panels' box takes them below
         const double r = std::hypot(e.a[0] - e.c[0], e.a[1] - e.c[1], e.a[2] - e.c[2]);
         arc_pieces(e, std::max(r * 1e-3, 1e-9), [&](const Vec& p) {

@@ -49,9 +49,12 @@ public:
   double simplified_within() const { return tol_; }
 
 private:
+  void add(const machine::Move& m);  // one straight piece or arc
   void compact();
   void simplify(double tol, std::size_t from);
   bool lathe_, x_diameter_, lathe_y_;  // lathe_y_: a lathe with a Y axis
+  machine::AxisVector rapid_rate_;     // rapids drawn as the machine moves them (No.1401#1)
+  bool linear_rapid_;
   int machine_plane_;
   std::size_t limit_;
   std::vector<Element> elements_;
@@ -61,6 +64,9 @@ private:
   std::size_t fresh_ = 0;  // elements from here on were added since the last pass
   bool given_up_ = false;  // simplifying no longer saves enough: further moves are counted only
   std::array<double, 3> lo_{INFINITY, INFINITY, INFINITY}, hi_{-INFINITY, -INFINITY, -INFINITY};
+  // what the views frame: each axis from its first move on, a cut from where it starts (svg())
+  std::array<double, 3> frame_lo_{INFINITY, INFINITY, INFINITY}, frame_hi_{-INFINITY, -INFINITY, -INFINITY};
+  std::array<bool, 3> axis_moved_{};
   bool moved_ = false;
   std::array<double, 3> last_{};
   std::optional<nc::Diagnostic> alarm_;

@@ -1,5 +1,6 @@
 #include "report/summary.hpp"
 
+#include "report/verify_report.hpp"
 #include "report/writers.hpp"
 
 #include <fmt/format.h>
@@ -81,6 +82,7 @@ std::string summary_text(const RunReport& r) {
                        printed.lines.size() + printed.lines_left_out);
   for (const auto& line : printed.lines) out += fmt::format("    \"{}\"\n", line);
   if (printed.lines_left_out) out += fmt::format("    ... and {} more lines not shown\n", printed.lines_left_out);
+  if (r.verify) out += verify_text(*r.verify);
   for (const auto& w : res.warnings) out += nc::format(w) + "\n";
   if (res.alarm) out += nc::format(*res.alarm) + "\n";
   out += res.ok() ? "  result         completed\n" : "  result         ALARM: execution stopped at the block above\n";
@@ -138,6 +140,7 @@ nlohmann::json summary_object(const RunReport& r) {
   j["text_problems_left_out"] = r.text_problems_left_out;  // found beyond the first 100, counted only
   j["unchecked_lines"] = r.unchecked_lines;  // past those: lines no jump can reach, not parsed
   j["alarm"] = res.alarm ? diagnostic_json(*res.alarm) : nlohmann::json(nullptr);
+  if (r.verify) j["verify"] = verify_json(*r.verify);
   j["ok"] = res.ok();
   return j;
 }

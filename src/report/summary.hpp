@@ -19,6 +19,8 @@ struct SourceStats {
 // Counts the files given (typically the main file only, as seed 000's Table 2 does).
 SourceStats source_stats(const machine::ProgramLibrary& lib, const nc::SourceFile* file);
 
+struct VerifyReport;
+
 struct RunReport {
   std::string source;
   const machine::MachineProfile* profile = nullptr;
@@ -27,6 +29,7 @@ struct RunReport {
   std::vector<nc::Diagnostic> text_problems;  // syntax found by the parser, anywhere in the programs
   std::size_t text_problems_left_out = 0;     // found beyond those, counted only
   std::size_t unchecked_lines = 0;            // lines past those that can never run, not parsed
+  const VerifyReport* verify = nullptr;       // --setup, --verify: the part
 };
 
 std::string summary_text(const RunReport& r);

@@ -27,6 +27,8 @@ struct ServeConfig {
 // A run or analyze request whose program would take more than kProgramMemoryPerBodyByte times
 // --max-body once read (nc::compiled_size of its bytes and lines) is refused (413) before it is read.
 inline constexpr std::size_t kProgramMemoryPerBodyByte = 8;
+// The largest Z-map a run request may cut (8 bytes a cell).
+inline constexpr double kMostPartCells = 4e6;
 std::size_t program_lines(std::string_view program);
 std::size_t program_memory(std::string_view program);
 

@@ -6,6 +6,9 @@
 #include <new>
 #include <optional>
 
+#include "app/run_verify.hpp"
+#include "report/backplot_data.hpp"
+#include "report/path_plot.hpp"
 #include "report/summary.hpp"
 #include "serve/api.hpp"
 #include "serve/move_columns.hpp"
@@ -44,7 +47,7 @@ json diagnostics(const report::RunReport& rep) {
 Answer api_run(const ServeConfig& config, const std::string& body, const std::atomic<bool>* cancel) {
   const json j = parse_body(body);
   check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "moves",
-                 "trace", "trace_limit", "format"},
+                 "trace", "trace_limit", "format", "verify", "setup", "setup_name", "resolution", "cut_moves"},
              "POST /api/run");
   const app::RunInputs in = run_inputs(config, j);
   const bool want_moves = get_bool(j, "moves", true);
@@ -59,6 +62,30 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   }
   app::RunSetup setup = prepare(in);
   setup.options.cancel = cancel;
+  // the part: the setup's stock (or the default box) cut by the moves, its findings among the warnings
+  app::VerifyArgs va;
+  va.verify = get_bool(j, "verify", false);
+  va.setup_text = get_string(j, "setup");
+  va.setup = get_string(j, "setup_name").value_or(va.setup_text ? "setup.toml" : "");
+  if (auto r = get_number(j, "resolution")) {
+    if (!(*r >= 1e-3 && *r <= 1e3)) throw ApiError(400, "\"resolution\" is a Z-map cell of 0.001 to 1000 mm");
+    va.resolution = *r;
+  }
+  if (auto n = get_number(j, "cut_moves")) {
+    if (!(*n >= 0 && *n <= 1e15)) throw ApiError(400, "\"cut_moves\" is a count of motions, 0 or more");
+    va.cut_moves = static_cast<std::uint64_t>(*n);
+  }
+  va.most_cells = kMostPartCells;
+  std::optional<app::RunVerification> verify;
+  if (va.on()) {
+    try {
+      verify.emplace(va, setup.profile, *setup.lib, setup.options);
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw ApiError(400, e.what());
+    }
+  }
 
   FileTable files;
   std::optional<MoveColumns> moves;
@@ -68,7 +95,11 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   if (want_trace) trace.emplace(trace_limit);
   machine::Interpreter interp(setup.profile, *setup.lib, setup.options);
   if (trace) interp.observe(&*trace);
-  const machine::RunResult result = interp.run(moves ? static_cast<machine::MoveSink&>(*moves) : no_moves);
+  machine::MoveSink& shown = moves ? static_cast<machine::MoveSink&>(*moves) : no_moves;
+  std::optional<report::TeeSink> tee;
+  if (verify && verify->sink()) tee.emplace(shown, *verify->sink());
+  machine::RunResult result = interp.run(tee ? static_cast<machine::MoveSink&>(*tee) : shown);
+  if (verify) verify->finish(result);
 
   report::RunReport rep;
   rep.source = in.program;
@@ -78,6 +109,7 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   rep.text_problems = std::move(setup.problems);
   rep.text_problems_left_out = setup.problems_left_out;
   rep.unchecked_lines = setup.unchecked_lines;
+  if (verify) rep.verify = &verify->report();
 
   fmt::memory_buffer b;
   auto it = fmt::appender(b);
@@ -103,6 +135,14 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   if (trace) {
     b.append(std::string_view(",\"trace\":"));
     write_trace_json(columns, *trace, files);
+  }
+  if (verify && verify->map()) {
+    const sim::PartGrid g = sim::part_grid(*verify->map());
+    fmt::format_to(it, ",\"part\":{}",
+                   json{{"nx", g.nx}, {"ny", g.ny}, {"x0", g.x0}, {"y0", g.y0}, {"dx", g.dx}, {"dy", g.dy},
+                        {"bottom", g.bottom}, {"top", g.top},
+                        {"heights", report::base64(g.heights.data(), g.heights.size() * sizeof(float))}}
+                       .dump());
   }
   b.append(std::string_view(",\"files\":["));
   for (std::size_t i = 0; i < files.names().size(); ++i) {

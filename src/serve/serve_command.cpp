@@ -42,6 +42,15 @@ int serve_command(const app::ServeArgs& a) {
       return 2;
     }
   }
+  // a program's setup beside it (NAME.setup.toml) is offered too: the page's Part cuts its stock
+  for (std::size_t i = 0, n = c.files.size(); i < n; ++i) {
+    const std::filesystem::path p(c.files[i]);
+    if (p.extension() != ".nc") continue;
+    const std::filesystem::path setup = p.parent_path() / (p.stem().string() + ".setup.toml");
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(setup, ec) && names.insert(setup.filename().string()).second)
+      c.files.push_back(setup.string());
+  }
   // SIGINT and SIGTERM are taken by a thread of their own, which stops the server (a handler
   // could not: stopping takes a lock); every other thread starts with them blocked
   sigset_t stop_signals;

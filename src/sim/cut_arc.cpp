@@ -199,6 +199,7 @@ double lowest_on_arc(const ArcCell& c, const ToolShape& tool) {
 }  // namespace
 
 void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
+  last_ = {};
   const double r = tool.radius(), rho = arc.radius, pad = 1e-9 * (1 + r + rho);
   const double length = std::abs(arc.sweep), dir = arc.sweep < 0 ? -1.0 : 1.0;
   if (!(rho >= 0) || !std::isfinite(length)) return;
@@ -234,7 +235,9 @@ void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
     const double w = std::sqrt(w2);
     int i0, i1;
     cells_of(std::max(bx0 - r, arc.cx - w) - pad, std::min(bx1 + r, arc.cx + w) + pad, i0, i1);
+    if (i1 <= i0) continue;
     double* hr = row(j).data();
+    before_row(hr + i0, i1 - i0);
     for (int i = i0; i < i1; ++i) {
       const double dx = cell_x(i) - arc.cx;
       c.d = std::hypot(dx, dy);
@@ -245,6 +248,7 @@ void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
       c.beta = beta;
       hr[i] = std::min(hr[i], lowest_on_arc(c, tool));
     }
+    after_row(hr + i0, i0, j, i1 - i0);
   }
 }
 

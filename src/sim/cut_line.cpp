@@ -106,6 +106,7 @@ void sloping_row(double* h, int n, double ox0, double oy, double step, const Lin
 }  // namespace
 
 void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
+  last_ = {};
   LineMove m{a[0], a[1], a[2], b[0] - a[0], b[1] - a[1], b[2] - a[2], 0, tool.radius()};
   m.a = m.vx * m.vx + m.vy * m.vy;
   const double r = m.r, pad = 1e-9 * (1 + r);
@@ -144,11 +145,13 @@ void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
     double* hr = row(j).data() + i0;
     const int n = i1 - i0;
     const double ox0 = cell_x(i0) - a[0], oy = y - a[1];
+    before_row(hr, n);
     if (plunge) plunge_row(hr, n, ox0, oy, cell(), m, tool);
     else if (tool.kind() == ToolShape::Kind::flat) flat_row(hr, n, ox0, oy, cell(), m);
     else if (tool.kind() == ToolShape::Kind::ball) ball_row(hr, n, ox0, oy, cell(), m);
     else if (m.dz == 0) level_row(hr, n, ox0, oy, cell(), m, tool);
     else sloping_row(hr, n, ox0, oy, cell(), m, tool);
+    after_row(hr, i0, j, n);
   }
 }
 

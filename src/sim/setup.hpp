@@ -58,12 +58,27 @@ SetupFile parse_setup(const std::string& toml_text, const std::string& origin);
 
 // The defaults in force, in words, one a line: for no setup file (nullptr), or for what the
 // given one leaves out.
-std::vector<std::string> setup_defaults(const SetupFile* setup);
+std::vector<std::string> setup_defaults(const SetupFile* setup, bool lathe = false);
 
 // The default stock of a mill: the box around the cutting moves (lines and arcs, not rapids),
 // widened by the tool's radius to the sides and below, whose top is the highest level a cutting
 // move starts from. tool_radius(T) gives each tool's radius; the tool changes at each tool_change
-// move (its code), first_tool is in the spindle before the first. None without a cutting move.
+// move (its code), first_tool is in the spindle before the first; tool_radius(T, D) has the D
+// offset in force at the move too. None without a cutting move.
+class DefaultStockBox final : public machine::MoveSink {
+public:
+  DefaultStockBox(std::function<double(int, int)> tool_radius, int first_tool = 0)
+      : tool_radius_(std::move(tool_radius)), tool_(first_tool) {}
+  void on_move(const machine::Move& m) override;
+  std::optional<AxisBox> box() const;
+
+private:
+  std::function<double(int, int)> tool_radius_;
+  int tool_;
+  std::optional<AxisBox> box_;
+  double top_ = 0;
+};
+
 std::optional<AxisBox> default_stock_box(std::span<const machine::Move> moves,
                                          const std::function<double(int)>& tool_radius, int first_tool = 0);
 

@@ -40,46 +40,55 @@ AxisBox extent(const machine::Move& m) {
 
 }  // namespace
 
-std::optional<AxisBox> default_stock_box(std::span<const machine::Move> moves,
-                                         const std::function<double(int)>& tool_radius, int first_tool) {
-  int tool = first_tool;
-  std::optional<AxisBox> box;
-  double top = 0;
-  for (const machine::Move& m : moves) {
-    if (m.kind == machine::MoveKind::tool_change) tool = m.code;
-    if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) continue;
-    const double r = std::max(tool_radius(tool), 0.0);
-    AxisBox e = extent(m);
-    for (int i = 0; i < 3; ++i) e.min[i] -= r;
-    for (int i = 0; i < 2; ++i) e.max[i] += r;
-    if (!box) {
-      box = e;
-      top = m.start[2];
-      continue;
-    }
-    for (int i = 0; i < 3; ++i) {
-      box->min[i] = std::min(box->min[i], e.min[i]);
-      box->max[i] = std::max(box->max[i], e.max[i]);
-    }
-    top = std::max(top, m.start[2]);
+void DefaultStockBox::on_move(const machine::Move& m) {
+  if (m.kind == machine::MoveKind::tool_change) tool_ = m.code;
+  if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
+  const double r = std::max(tool_radius_(tool_, m.d_offset), 0.0);
+  AxisBox e = extent(m);
+  for (int i = 0; i < 3; ++i) e.min[i] -= r;
+  for (int i = 0; i < 2; ++i) e.max[i] += r;
+  if (!box_) {
+    box_ = e;
+    top_ = m.start[2];
+    return;
   }
-  if (box) box->max[2] = top;
-  return box;
+  for (int i = 0; i < 3; ++i) {
+    box_->min[i] = std::min(box_->min[i], e.min[i]);
+    box_->max[i] = std::max(box_->max[i], e.max[i]);
+  }
+  top_ = std::max(top_, m.start[2]);
 }
 
-std::vector<std::string> setup_defaults(const SetupFile* setup) {
+std::optional<AxisBox> DefaultStockBox::box() const {
+  if (!box_) return std::nullopt;
+  AxisBox b = *box_;
+  b.max[2] = top_;
+  return b;
+}
+
+std::optional<AxisBox> default_stock_box(std::span<const machine::Move> moves,
+                                         const std::function<double(int)>& tool_radius, int first_tool) {
+  DefaultStockBox finder([&](int t, int) { return tool_radius(t); }, first_tool);
+  for (const machine::Move& m : moves) finder.on_move(m);
+  return finder.box();
+}
+
+std::vector<std::string> setup_defaults(const SetupFile* setup, bool lathe) {
   std::vector<std::string> lines;
-  if (!setup || !setup->stock)
+  if ((!setup || !setup->stock) && lathe)
+    lines.push_back("stock: the bar about the spindle axis out to the largest radius a cutting move starts from, "
+                    "its face at the largest Z one starts from, as long as the cuts reach towards the chuck");
+  else if (!setup || !setup->stock)
     lines.push_back("stock: the box around the cutting moves, widened by the tool's radius to the sides and below, "
                     "its top the highest level a cutting move starts from");
   if (!setup || setup->fixtures.empty()) lines.push_back("fixtures: none");
   if (!setup || !setup->tool_in_spindle)
     lines.push_back("tool in the spindle at the start: none; the first tool change (M06, a lathe's T) puts one in");
   lines.push_back(setup && !setup->tools.tools.empty()
-                      ? "a tool not in the library: a flat end mill of its D offset's radius "
-                        "(on a lathe an insert of its offset's nose radius and imaginary tip)"
-                      : "tools: no library: each tool is a flat end mill of its D offset's radius "
-                        "(on a lathe an insert of its offset's nose radius and imaginary tip)");
+                      ? "a tool not in the library: a flat end mill of the radius of the D offset in force when it "
+                        "first cuts (on a lathe an insert of its offset's nose radius and imaginary tip)"
+                      : "tools: no library: each tool is a flat end mill of the radius of the D offset in force when "
+                        "it first cuts (on a lathe an insert of its offset's nose radius and imaginary tip)");
   if (setup)
     for (const std::string& d : setup->defaulted) lines.push_back(d);
   return lines;

@@ -40,7 +40,7 @@ struct LatheInsert {
   double nose_radius = 0;
   int tip = 0;                 // imaginary tool nose number 0..9 (machine::tip_direction)
   double insert_angle = 80;    // included angle of the cutting point
-  double clearance_angle = 5;  // between the trailing edge and the turned surface
+  double clearance_angle = 5;  // the edge across the spindle axis past the perpendicular (a 95-degree holder: 5)
   double width = 0;            // grooving or parting blade's width; 0 for a pointed insert
   double holder_width = 0, holder_length = 0;  // 0: holder not modelled
 };
@@ -58,7 +58,7 @@ struct ToolLibrary {
 // The tool number of a lathe's T code: the digits before its two offset digits.
 inline int lathe_tool_number(int t_code) { return t_code / 100; }
 
-// A tool without a library entry: a flat end mill of its D offset's radius; a lathe insert of its
+// A tool without a library entry: a flat end mill of a D offset's radius; a lathe insert of its
 // offset's nose radius and imaginary tip.
 MillTool default_mill_tool(double radius);
 LatheInsert default_insert(double nose_radius, int tip);

@@ -7,7 +7,7 @@
 
 namespace ncurve::sim {
 
-ZMap::ZMap(const Box& stock, double cell, int min_cells) : stock_(stock) {
+ZMap::ZMap(const Box& stock, double cell, int min_cells, double most_cells) : stock_(stock) {
   const double lx = stock.max[0] - stock.min[0], ly = stock.max[1] - stock.min[1];
   if (!(lx > 0 && ly > 0 && stock.max[2] >= stock.min[2])) throw std::invalid_argument("the stock box is empty");
   if (cell == 0) {
@@ -16,7 +16,10 @@ ZMap::ZMap(const Box& stock, double cell, int min_cells) : stock_(stock) {
   }
   if (!(cell > 0) || !std::isfinite(cell)) throw std::invalid_argument("a Z-map's cell size must be positive");
   const double nx = std::ceil(lx / cell - 1e-9), ny = std::ceil(ly / cell - 1e-9);
-  if (nx * ny > 4e8) throw std::invalid_argument("a Z-map of more than 400 million cells");
+  if (nx * ny > most_cells)
+    throw std::invalid_argument("a Z-map of " + std::to_string(static_cast<long long>(nx)) + " x " +
+                                std::to_string(static_cast<long long>(ny)) + " cells is more than the " +
+                                std::to_string(static_cast<long long>(most_cells)) + " allowed");
   cell_ = cell;
   nx_ = static_cast<int>(nx);
   ny_ = static_cast<int>(ny);
@@ -32,11 +35,57 @@ double ZMap::height_at(double x, double y) const {
   return height(static_cast<int>(fi), static_cast<int>(fj));
 }
 
+void ZMap::clear_cell(int i, int j) {
+  double& h = h_[static_cast<std::size_t>(j) * nx_ + i];
+  const double top = stock_.max[2], bottom = stock_.min[2];
+  absent_ += (std::clamp(h, bottom, top) - bottom) * cell_ * cell_;
+  h = std::min(h, bottom);
+}
+
 double ZMap::volume_removed() const {
   const double top = stock_.max[2], bottom = stock_.min[2];
   double sum = 0;
   for (double h : h_) sum += top - std::max(std::min(h, top), bottom);
-  return sum * cell_ * cell_;
+  return sum * cell_ * cell_ - absent_;
+}
+
+void ZMap::before_row(const double* h, int n) {
+  if (report_ || probe_) before_.assign(h, h + n);
+}
+
+CutReport ZMap::probe_line(const ToolShape& tool, const Point3& a, const Point3& b) {
+  const CutReport kept = last_;
+  probe_ = true;
+  cut_line(tool, a, b);
+  probe_ = false;
+  const CutReport r = last_;
+  last_ = kept;
+  return r;
+}
+
+CutReport ZMap::probe_arc(const ToolShape& tool, const Arc& arc) {
+  const CutReport kept = last_;
+  probe_ = true;
+  cut_arc(tool, arc);
+  probe_ = false;
+  const CutReport r = last_;
+  last_ = kept;
+  return r;
+}
+
+void ZMap::after_row(double* h, int i0, int j, int n) {
+  if (!report_ && !probe_) return;
+  const double top = stock_.max[2], bottom = stock_.min[2];
+  double removed_sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const double was = std::min(before_[k], top);
+    if (h[k] >= was || was <= bottom) continue;
+    const double removed = was - std::max(h[k], bottom);
+    removed_sum += removed;
+    if (removed > last_.deepest) last_ = {last_.volume, removed, i0 + k, j, before_[k]};
+  }
+  last_.volume += removed_sum * cell_ * cell_;
+  if (probe_) std::copy(before_.begin(), before_.begin() + n, h);
 }
 
 void ZMap::rows_of(double yl, double yh, int& j0, int& j1) const {

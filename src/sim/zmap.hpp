@@ -28,6 +28,16 @@ struct Arc {
   double z_start = 0, z_end = 0;
 };
 
+// What one cut removed, when the map was asked to report it (report_cuts): material counts
+// between the stock's bottom and top.
+struct CutReport {
+  double volume = 0;  // mm^3
+  double deepest = 0; // the most material removed on one cell's line, mm
+  int i = -1, j = -1; // that cell
+  double from = 0;    // that cell's height before the cut
+  bool removed() const { return deepest > 0; }
+};
+
 // A height found by minimising along a move (where no closed form is used) is within this of
 // the exact lowest point, mm.
 inline constexpr double kLowestTolerance = 1e-9;
@@ -36,7 +46,9 @@ class ZMap {
 public:
   // cell 0: the stock's shorter side in min_cells cells
   static constexpr int kDefaultCells = 1000;
-  explicit ZMap(const Box& stock, double cell = 0, int min_cells = kDefaultCells);
+  static constexpr double kMostCells = 4e8;
+  // Throws std::invalid_argument for an empty box, a bad cell, or more than most_cells cells.
+  explicit ZMap(const Box& stock, double cell = 0, int min_cells = kDefaultCells, double most_cells = kMostCells);
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
@@ -53,6 +65,9 @@ public:
   std::span<double> row(int j) { return {h_.data() + static_cast<std::size_t>(j) * nx_, static_cast<std::size_t>(nx_)}; }
   std::span<const double> heights() const { return h_; }
 
+  // A cell of the box where the stock has no material (outside a bar): down to the bottom before
+  // any cut, and not counted as removed.
+  void clear_cell(int i, int j);
   // Material removed, mm^3: each cell's column from the top down to its height (not below the bottom).
   double volume_removed() const;
 
@@ -61,17 +76,35 @@ public:
   // Cut with a tool whose tip moves along an arc or helix in the XY plane.
   void cut_arc(const ToolShape& tool, const Arc& arc);
 
+  // From now on each cut_line and cut_arc reports what it removed in last_cut() (a copy of each
+  // row it changes is kept for the comparison).
+  void report_cuts(bool on) { report_ = on; }
+  const CutReport& last_cut() const { return last_; }
+  // What a cut would remove, leaving the map as it is: where a body that must not cut (a holder,
+  // a fixture's tool) would meet the material.
+  CutReport probe_line(const ToolShape& tool, const Point3& a, const Point3& b);
+  CutReport probe_arc(const ToolShape& tool, const Arc& arc);
+
   // The rows j0..j1-1 that a band of y may touch, and the cells i0..i1-1 of a row whose centres
   // lie in [xl, xh] (empty when i1 <= i0).
   void rows_of(double yl, double yh, int& j0, int& j1) const;
   void cells_of(double xl, double xh, int& i0, int& i1) const;
 
 private:
+  // Around a row's kernel: keep the cells' heights before it, then add what it removed.
+  void before_row(const double* h, int n);
+  void after_row(double* h, int i0, int j, int n);
+
   Box stock_;
   double cell_ = 0;
   int nx_ = 0, ny_ = 0;
   double x0_ = 0, y0_ = 0;
   std::vector<double> h_;
+  bool report_ = false;
+  bool probe_ = false;
+  double absent_ = 0;  // the columns clear_cell emptied, mm^3
+  CutReport last_;
+  std::vector<double> before_;
 };
 
 }  // namespace ncurve::sim

@@ -204,6 +204,34 @@ async function lonelyMove(page, motions, kind) {
       await page.close();
     }
 
+    // run --setup --html: the cut part shaded under the path, the groove darker than the top
+    {
+      const {html, summary} = page_of('browser_part', path.join(src, 'examples/spiral.nc'),
+                                      ['--setup', path.join(src, 'examples/spiral.setup.toml'), '--resolution', '0.1']);
+      const {page, errors} = await open(context, html);
+      const part = await page.evaluate(() => window.ncurveBackplot.plot.state().part);
+      // 400 x 400 points: 2 * 399^2 triangles on top and 2 a boundary edge on the walls
+      check(part === 2 * 399 * 399 + 2 * 4 * 399, `part: the mesh of the 400 x 400 cells drawn (${part} triangles)`);
+      const header = await page.textContent('#summary');
+      check(header.includes('mm³ removed') && header.includes('0 findings'), `part: the header says what was removed: "${header.slice(0, 400)}"`);
+      await page.evaluate(() => window.ncurveBackplot.plot.setView('top'));
+      await page.evaluate(() => window.ncurveBackplot.plot.render());
+      // the groove's floor (0.5 deep, the deepest) is darker than the untouched top beside it
+      const shade = async (p) => {
+        const at = await page.evaluate((p) => window.ncurveBackplot.screenOfPoint(p), p);
+        const png = decodePng(await page.screenshot({clip: {x: at.x - 1, y: at.y - 1, width: 3, height: 3}}));
+        return png.px[4 * png.channels] + png.px[4 * png.channels + 1] + png.px[4 * png.channels + 2];
+      };
+      const floor = await shade([-7.3, -3.0, -0.5]), top = await shade([-3.0, -6.0, 0]);
+      check(floor + 60 < top, `part: the groove (${floor}) drawn darker than the top (${top})`);
+      await page.screenshot({path: path.join(out, 'browser_part.png')});
+      check(errors.length === 0 && summary.verify.verified, `part: no script errors (${errors.join('; ')})`);
+      await page.close();
+      const plain = await open(context, page_of('browser_no_part', path.join(src, 'examples/spiral.nc'), []).html);
+      check((await plain.page.evaluate(() => window.ncurveBackplot.plot.state().part)) === 0, 'part: none without --verify');
+      await plain.page.close();
+    }
+
     // a lathe with a C axis: the header gives the extents in axis order (X, Z, C), not sorted
     {
       const prog = path.join(src, 'tests/programs/lathe/lt_drill_c_axis');

@@ -12,7 +12,7 @@ import sys
 
 root = os.path.abspath(sys.argv[1])
 public = {"interpreter.hpp", "profile.hpp", "library.hpp", "move.hpp", "observer.hpp", "trace.hpp",
-          "macro_output.hpp"}
+          "macro_output.hpp", "rapid_path.hpp"}
 inside = (os.path.join("src", "machine"), os.path.join("tests", "machine"))
 include = re.compile(r'^\s*#\s*include\s*"machine/([^"]+)"')
 found = []

@@ -240,7 +240,7 @@ M30
 )";
 
 TEST(PathPlot, CountsEachKindOfElement) {
-  auto d = draw(kMill, machine::default_mill(), {report::PlotView::xy});
+  auto d = draw(kMill, test::zero_offset_mill(), {report::PlotView::xy});
   ASSERT_TRUE(d.ok);
   EXPECT_EQ(count(d.svg, "class=\"rapid\""), 3u);
   EXPECT_EQ(count(d.svg, "class=\"feed\""), 3u);

@@ -233,13 +233,13 @@ TEST(SimSetup, DefaultsInWords) {
                      "its top the highest level a cutting move starts from");
   EXPECT_EQ(none[1], "fixtures: none");
   EXPECT_EQ(none[2], "tool in the spindle at the start: none; the first tool change (M06, a lathe's T) puts one in");
-  EXPECT_EQ(none[3], "tools: no library: each tool is a flat end mill of its D offset's radius "
-                     "(on a lathe an insert of its offset's nose radius and imaginary tip)");
+  EXPECT_EQ(none[3], "tools: no library: each tool is a flat end mill of the radius of the D offset in force when "
+                     "it first cuts (on a lathe an insert of its offset's nose radius and imaginary tip)");
   const SetupFile s = parse_setup(kMill, "m.toml");
   const std::vector<std::string> some = setup_defaults(&s);
   ASSERT_GE(some.size(), 2u);
-  EXPECT_EQ(some[0], "a tool not in the library: a flat end mill of its D offset's radius "
-                     "(on a lathe an insert of its offset's nose radius and imaginary tip)");
+  EXPECT_EQ(some[0], "a tool not in the library: a flat end mill of the radius of the D offset in force when it "
+                     "first cuts (on a lathe an insert of its offset's nose radius and imaginary tip)");
   EXPECT_EQ(some[1], "tools.2 (bull-nose): stick_out = 64 mm (4 x the diameter), flute_length = 64 mm (the stick-out: "
                      "all of it cuts), shank_diameter = 16 mm (the diameter), no holder (its contacts are not checked), "
                      "centre_cutting = true");

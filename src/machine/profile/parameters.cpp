@@ -90,6 +90,7 @@ constexpr const char* kSupportedParameters[] = {
     "0100#2",
     "0100#3",
     "1300#0",
+    "1401#1",
     "3401#0",
     "3402#0",
     "3402#3",
@@ -194,6 +195,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   }
   else if (key == "5431#0") p.g60_modal = bit();
   else if (key == "1300#0") p.stroke2_outside = bit();
+  else if (key == "1401#1") p.linear_rapid = bit();
   else if (key == "3402#7") p.stroke2_off_at_power_on = bit();
   else if (key == "3401#0") p.decimal_calculator = bit();
   else if (key == "3403#5") p.arc_without_centre_alarm = bit();

@@ -280,6 +280,7 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
         if (f == "rapid") p.rapid_rate = axis_vector(origin, fn, f, p.axes);
         else if (f == "max_cutting") p.max_cutting_feed = number(origin, fn, f);
         else if (f == "spindle_speed_for_time") p.spindle_speed_for_time = number(origin, fn, f);
+        else if (f == "linear_rapid") p.linear_rapid = flag(origin, fn, f);
         else fail(origin, fn, fmt::format("unknown key '{}' in [feeds]", f));
       }
     } else if (key == "motion") {

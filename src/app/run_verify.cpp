@@ -1,0 +1,203 @@
+#include "app/run_verify.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "io/output_file.hpp"
+#include "sim/part_stl.hpp"
+#include "sim/stl.hpp"
+
+namespace ncurve::app {
+
+void add_verify_options(CLI::App* run, VerifyArgs& a) {
+  run->add_option("--setup", a.setup, "the stock, fixtures and tool library (TOML, docs/setup.md); turns on --verify")
+      ->check(CLI::ExistingFile);
+  run->add_flag("--verify", a.verify,
+                "cut the stock with the moves and report what goes wrong (a rapid through material, a cut deeper "
+                "than the flutes, ...); without --setup the stock is the box around the cutting moves");
+  run->add_option("--resolution", a.resolution, "the Z-map's cell size, mm (default: the stock's shorter side in 1000 cells)")
+      ->check(CLI::Range(1e-4, 1e4));
+  run->add_option("--part", a.part, "write the cut part as a binary STL file (turns on --verify)");
+}
+
+namespace {
+
+// The run before the one that cuts: the default stock box, and the first move that turns a rotary
+// axis (the Z-map is of 3 axes).
+class FirstPass final : public machine::MoveSink {
+public:
+  explicit FirstPass(sim::DefaultStockBox& box) : box_(box) {}
+  void on_move(const machine::Move& m) override {
+    box_.on_move(m);
+    if (rotary_line_ || !m.is_motion()) return;
+    for (int a = 3; a < machine::kAxes; ++a)
+      if (m.start[a] != m.end[a]) {
+        rotary_axis_ = "ABC"[a - 3];
+        rotary_line_ = m.line;
+        rotary_file_ = m.file;
+        return;
+      }
+  }
+  std::string rotary() const {
+    if (!rotary_line_) return {};
+    return fmt::format("the program turns the {} axis ({}:{} first): the material removal is of 3 axes, a "
+                       "rotary-axis program is not simulated yet",
+                       rotary_axis_, rotary_file_ ? rotary_file_->name() : "", rotary_line_);
+  }
+
+private:
+  sim::DefaultStockBox& box_;
+  char rotary_axis_ = 0;
+  std::uint32_t rotary_line_ = 0;
+  const nc::SourceFile* rotary_file_ = nullptr;
+};
+
+// A lathe's default bar: about the spindle axis, out to the largest radius a cutting move starts
+// from, its face at the largest Z one starts from, as long as the cuts go towards the chuck.
+class DefaultBar final : public machine::MoveSink {
+public:
+  void on_move(const machine::Move& m) override {
+    if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
+    radius_ = std::max(radius_, m.start[0]);
+    face_ = std::max(face_, m.start[2]);
+    low_ = std::min({low_, m.start[2], m.end[2]});
+    any_ = true;
+  }
+  std::optional<sim::Cylinder> bar() const {
+    if (!any_ || !(radius_ > 0) || !(face_ > low_)) return std::nullopt;
+    sim::Cylinder c;
+    c.diameter = 2 * radius_;
+    c.face = face_;
+    c.length = face_ - low_;
+    return c;
+  }
+
+private:
+  double radius_ = 0, face_ = -1e300, low_ = 1e300;
+  bool any_ = false;
+};
+
+}  // namespace
+
+RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineProfile& profile,
+                                 const machine::ProgramLibrary& lib, const machine::RunOptions& options)
+    : args_(args) {
+  if (args.setup_text) {
+    setup_ = sim::parse_setup(*args.setup_text, args.setup.empty() ? "<setup>" : args.setup);
+    report_.setup_file = args.setup.empty() ? "<setup>" : args.setup;
+  } else if (!args.setup.empty()) {
+    setup_ = sim::read_setup(args.setup);
+    report_.setup_file = args.setup;
+  }
+  const sim::SetupFile* given = report_.setup_file.empty() ? nullptr : &setup_;
+  report_.defaults = sim::setup_defaults(given, profile.lathe());
+  // nothing verified, and why; --part cannot be made then
+  auto refuse = [&](const std::string& why) {
+    report_.refused = why;
+    if (!args.part.empty()) throw std::runtime_error("--part: " + why);
+  };
+  if (profile.lathe()) {
+    lathe(profile, lib, options, refuse);
+    return;
+  }
+  tools_ = std::make_unique<sim::MillTools>(setup_.tools, profile);
+  std::optional<sim::Stock> stock = setup_.stock;
+  const bool rotary_axes = profile.axes.find_first_of("ABC") != std::string::npos;
+  if (!stock || rotary_axes) {  // a first run finds the box around the cutting moves, and a rotary axis turned
+    sim::DefaultStockBox finder([this](int t, int d) { return tools_->radius(t, d); }, setup_.tool_in_spindle.value_or(0));
+    FirstPass pass(finder);
+    machine::Interpreter first(profile, lib, options);
+    first.run(pass);
+    if (const std::string why = pass.rotary(); !why.empty()) {
+      refuse(why);
+      return;
+    }
+    if (const auto box = finder.box(); !stock && box && box->max[0] > box->min[0] && box->max[1] > box->min[1]) {
+      stock = *box;
+      report_.stock_default = true;
+    }
+  }
+  if (!stock) {
+    refuse("no default stock: the program makes no cutting move with a tool of known size (give the stock and the "
+           "tools in a setup file, --setup)");
+    return;
+  }
+  report_.stock = stock;
+  if (std::holds_alternative<sim::StlFile>(*stock)) {
+    refuse("an STL stock is not simulated yet: give a box or a cylinder");
+    return;
+  }
+  sim::VerifyOptions vo;
+  vo.cell = args.resolution;
+  vo.most_cells = args.most_cells;
+  vo.cut_moves = args.cut_moves;
+  vo.profile = &profile;
+  try {
+    verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo, setup_.fixtures);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(fmt::format("--verify: {}: a coarser --resolution (it is {})", e.what(),
+                                         args.resolution > 0 ? fmt::format("{:g} mm", args.resolution)
+                                                             : std::string("the stock's shorter side in 1000 cells")));
+  }
+  report_.verifier = verifier_.get();
+}
+
+RunVerification::~RunVerification() = default;
+
+void RunVerification::lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
+                            const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse) {
+  std::optional<sim::Stock> stock = setup_.stock;
+  if (!stock) {  // a first run finds the bar round the cutting moves
+    DefaultBar bar;
+    machine::Interpreter first(profile, lib, options);
+    first.run(bar);
+    if (const auto c = bar.bar()) {
+      stock = *c;
+      report_.stock_default = true;
+    }
+  }
+  if (!stock) {
+    refuse("no default stock: the program makes no cutting move (give the stock in a setup file, --setup)");
+    return;
+  }
+  report_.stock = stock;
+  const auto* bar = std::get_if<sim::Cylinder>(&*stock);
+  if (!bar) {
+    refuse("a lathe's stock is a cylinder or a tube (shape = \"cylinder\" or \"tube\")");
+    return;
+  }
+  section_ = std::make_unique<sim::LatheSection>(*bar);
+  section_sink_ = std::make_unique<sim::LatheSectionSink>(*section_, setup_.tools, profile.lathe_offsets,
+                                                          setup_.tool_in_spindle);
+  report_.section = section_.get();
+  report_.section_sink = section_sink_.get();
+}
+
+machine::MoveSink* RunVerification::sink() {
+  if (section_sink_) return section_sink_.get();
+  return verifier_.get();
+}
+
+void RunVerification::finish(machine::RunResult& result) {
+  if (tools_)
+    for (const auto& [number, tool] : tools_->used())
+      report_.tools.push_back(tool ? sim::describe(number, tool->tool) +
+                                         (tool->from_library ? "" : " (default: the D offset in force)")
+                                   : fmt::format("T{}: not in the library and no D offset in force when it cut: not cut",
+                                                 number));
+  if (!verifier_) return;
+  report_.fixtures = verifier_->fixtures_checked();
+  for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);
+}
+
+void RunVerification::write_part(const std::vector<std::string>& inputs) {
+  if (args_.part.empty() || (!verifier_ && !section_)) return;
+  io::OutputFile file(args_.part, inputs);
+  if (verifier_) sim::write_part_stl(verifier_->map(), file.stream());
+  else sim::write_stl(file.stream(), section_->mesh(), "ncurve part: the bar's half-section cut and revolved");
+  file.commit();
+  report_.part_file = args_.part;
+}
+
+}  // namespace ncurve::app

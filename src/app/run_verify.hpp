@@ -1,0 +1,63 @@
+// `ncurve run --setup FILE --verify --resolution MM --part FILE.stl`: the program's moves cut into the
+// stock of its setup (or the default box), the findings added to the run's warnings.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "machine/interpreter.hpp"
+#include "machine/library.hpp"
+#include "report/verify_report.hpp"
+#include "sim/lathe_section_sink.hpp"
+
+namespace ncurve::app {
+
+struct VerifyArgs {
+  std::string setup;        // --setup FILE (or the name of setup_text)
+  std::optional<std::string> setup_text;  // the setup's TOML, not read from a file
+  bool verify = false;      // --verify
+  double resolution = 0;    // --resolution MM: the Z-map's cell; 0: the stock's shorter side in 1000 cells
+  std::string part;         // --part FILE.stl
+  double most_cells = 1e8;  // the largest Z-map
+  std::uint64_t cut_moves = UINT64_MAX;  // cut only the first so many motions
+  bool on() const { return verify || !setup.empty() || setup_text || !part.empty() || resolution > 0; }
+};
+
+void add_verify_options(CLI::App* run, VerifyArgs& a);
+
+class RunVerification {
+public:
+  // Reads the setup and, without a stock in it, runs the program once to find the default box (a
+  // lathe's bar).
+  // Throws std::runtime_error with a message for the user (a bad setup file, a part that cannot be made).
+  RunVerification(const VerifyArgs& args, const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
+                  const machine::RunOptions& options);
+  ~RunVerification();
+  // The sink the run's moves go to as well; null when nothing is verified (the report says why).
+  machine::MoveSink* sink();
+  // After the run: the findings join the run's warnings.
+  void finish(machine::RunResult& result);
+  // Writes --part; throws io::OutputError.
+  void write_part(const std::vector<std::string>& inputs);
+  const report::VerifyReport& report() const { return report_; }
+  // The cut stock of a mill; null when nothing was verified or on a lathe.
+  const sim::ZMap* map() const { return verifier_ ? &verifier_->map() : nullptr; }
+
+private:
+  void lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
+             const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse);
+
+  VerifyArgs args_;
+  sim::SetupFile setup_;
+  std::unique_ptr<sim::MillTools> tools_;
+  std::unique_ptr<sim::Verifier> verifier_;
+  std::unique_ptr<sim::LatheSection> section_;  // a lathe's
+  std::unique_ptr<sim::LatheSectionSink> section_sink_;
+  report::VerifyReport report_;
+};
+
+}  // namespace ncurve::app

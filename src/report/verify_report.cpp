@@ -1,0 +1,146 @@
+#include "report/verify_report.hpp"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "report/summary.hpp"
+
+namespace ncurve::report {
+
+namespace {
+
+std::string stock_words(const sim::Stock& s) {
+  if (const auto* b = std::get_if<sim::AxisBox>(&s))
+    return fmt::format("box X{:g}..{:g} Y{:g}..{:g} Z{:g}..{:g}", b->min[0], b->max[0], b->min[1], b->max[1], b->min[2],
+                       b->max[2]);
+  if (const auto* c = std::get_if<sim::Cylinder>(&s))
+    return c->inner_diameter > 0
+               ? fmt::format("tube D{:g} bore {:g}, {:g} long from Z{:g}", c->diameter, c->inner_diameter, c->length,
+                             c->face)
+               : fmt::format("cylinder D{:g}, {:g} long from Z{:g}", c->diameter, c->length, c->face);
+  return "STL " + std::get<sim::StlFile>(s).path;
+}
+
+nlohmann::json stock_json(const sim::Stock& s) {
+  nlohmann::json j;
+  if (const auto* b = std::get_if<sim::AxisBox>(&s)) {
+    j["shape"] = "box";
+    j["min"] = b->min;
+    j["max"] = b->max;
+  } else if (const auto* c = std::get_if<sim::Cylinder>(&s)) {
+    j["shape"] = c->inner_diameter > 0 ? "tube" : "cylinder";
+    j["diameter"] = c->diameter;
+    if (c->inner_diameter > 0) j["inner_diameter"] = c->inner_diameter;
+    j["length"] = c->length;
+    j["face"] = c->face;
+  } else {
+    j["shape"] = "stl";
+    j["file"] = std::get<sim::StlFile>(s).path;
+  }
+  return j;
+}
+
+}  // namespace
+
+std::string verify_text(const VerifyReport& r) {
+  std::string out;
+  out += fmt::format("  setup          {}\n", r.setup_file.empty() ? "none (the defaults below)" : r.setup_file);
+  if (r.stock)
+    out += fmt::format("  stock          {}{}\n", stock_words(*r.stock),
+                       !r.stock_default                             ? ""
+                       : std::holds_alternative<sim::Cylinder>(*r.stock) ? " (the bar round the cutting moves)"
+                                                                          : " (the box around the cutting moves)");
+  for (const std::string& t : r.tools) out += fmt::format("  tool           {}\n", t);
+  for (const std::string& f : r.fixtures) out += fmt::format("  fixture        {}\n", f);
+  for (const std::string& d : r.defaults) out += fmt::format("  default        {}\n", d);
+  if (r.section) {  // a lathe: the half-section
+    std::string by_tool;
+    for (const auto& [t, volume] : r.section_sink->volume_by_tool())
+      by_tool += fmt::format("{}T{} {:.1f}", by_tool.empty() ? "" : ", ", t, volume);
+    out += fmt::format("  section        the bar's half-section on a {:g} mm grid, within {:g} mm of the exact cut\n",
+                       sim::kSectionUnit, sim::kSectionResolution);
+    out += fmt::format("  removed        {:.1f} mm^3{}\n", r.section->volume_removed(),
+                       by_tool.empty() ? "" : " (" + by_tool + ")");
+    const auto& c = r.section_sink->counts();
+    if (c.no_tool) out += fmt::format("  not cut        {} moves with no tool (before the first T code, or T0)\n", c.no_tool);
+    if (c.not_zx_arc) out += fmt::format("  not cut        {} arcs outside G18\n", c.not_zx_arc);
+    out += "  findings       none checked on a lathe yet (the material removal and the part only)\n";
+    if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
+    return out;
+  }
+  if (!r.verifier) {
+    out += fmt::format("  verified       no: {}\n", r.refused);
+    return out;
+  }
+  const sim::Verifier& v = *r.verifier;
+  const sim::ZMap& map = v.map();
+  out += fmt::format("  Z-map          {} x {} cells of {:.4f} mm\n", map.nx(), map.ny(), map.cell());
+  std::string by_tool;
+  for (const auto& [t, volume] : v.volume_by_tool()) by_tool += fmt::format("{}T{} {:.1f}", by_tool.empty() ? "" : ", ", t, volume);
+  out += fmt::format("  removed        {:.1f} mm^3{}\n", map.volume_removed(), by_tool.empty() ? "" : " (" + by_tool + ")");
+  const auto& c = v.counts();
+  if (c.no_tool)
+    out += fmt::format("  not cut        {} moves with no tool in the spindle or a tool of no size (tool_in_spindle, "
+                       "[tools.N] in the setup)\n",
+                       c.no_tool);
+  if (c.not_xy_arc) out += fmt::format("  not cut        {} arcs in G18/G19 (not simulated yet)\n", c.not_xy_arc);
+  if (c.rotary)
+    out += fmt::format("  not cut        {} moves turning a rotary axis (3 axes are simulated)\n", c.rotary);
+  if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
+  out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out(),
+                     v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size()) : std::string());
+  if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
+  return out;
+}
+
+nlohmann::json verify_json(const VerifyReport& r) {
+  nlohmann::json j;
+  j["setup"] = r.setup_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.setup_file);
+  j["stock"] = r.stock ? stock_json(*r.stock) : nlohmann::json(nullptr);
+  j["stock_default"] = r.stock_default;
+  j["tools"] = r.tools;
+  j["fixtures"] = r.fixtures;
+  j["defaults"] = r.defaults;
+  j["verified"] = r.verifier != nullptr || r.section != nullptr;
+  if (r.section) {
+    j["section"] = {{"grid_mm", sim::kSectionUnit}, {"resolution_mm", sim::kSectionResolution}};
+    j["volume_removed_mm3"] = r.section->volume_removed();
+    nlohmann::json by_tool = nlohmann::json::object();
+    for (const auto& [t, volume] : r.section_sink->volume_by_tool()) by_tool[std::to_string(t)] = volume;
+    j["volume_by_tool_mm3"] = by_tool;
+    const auto& c = r.section_sink->counts();
+    j["moves_cut"] = c.cut;
+    j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}};
+    j["findings"] = nlohmann::json::array();
+    j["findings_left_out"] = 0;
+    j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
+    return j;
+  }
+  if (!r.verifier) {
+    j["refused"] = r.refused;
+    return j;
+  }
+  const sim::Verifier& v = *r.verifier;
+  const sim::ZMap& map = v.map();
+  j["zmap"] = {{"cells", {map.nx(), map.ny()}}, {"cell_mm", map.cell()}};
+  j["volume_removed_mm3"] = map.volume_removed();
+  nlohmann::json by_tool = nlohmann::json::object();
+  for (const auto& [t, volume] : v.volume_by_tool()) by_tool[std::to_string(t)] = volume;
+  j["volume_by_tool_mm3"] = by_tool;
+  const auto& c = v.counts();
+  j["moves_cut"] = c.cut;
+  j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_xy_arc", c.not_xy_arc}, {"rotary", c.rotary}, {"after", c.after}};
+  j["findings"] = nlohmann::json::array();
+  for (const sim::Finding& f : v.findings()) {
+    nlohmann::json d = diagnostic_json(f.diagnostic);
+    d["at"] = f.at;
+    d["amount"] = f.amount;
+    j["findings"].push_back(d);
+  }
+  j["findings_left_out"] = v.findings_left_out();
+  j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
+  return j;
+}
+
+}  // namespace ncurve::report

@@ -1,0 +1,31 @@
+// What `ncurve run --setup/--verify` found: the stock and the tools it cut with, the defaults that
+// stood in for a setup, the material removed, and why nothing was verified when it was not.
+#pragma once
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+#include "sim/lathe_section_sink.hpp"
+#include "sim/verifier.hpp"
+
+namespace ncurve::report {
+
+struct VerifyReport {
+  std::string setup_file;                   // empty: no setup file
+  std::optional<sim::Stock> stock;          // the stock cut
+  bool stock_default = false;               // the box around the cutting moves
+  const sim::Verifier* verifier = nullptr;  // a mill's; null: not verified (see refused) or a lathe
+  const sim::LatheSection* section = nullptr;            // a lathe's half-section
+  const sim::LatheSectionSink* section_sink = nullptr;
+  std::string refused;                      // why nothing was verified
+  std::vector<std::string> defaults;        // the defaults in force, in words
+  std::vector<std::string> tools;           // each tool used, in words
+  std::vector<std::string> fixtures;        // each fixture and whether it was checked
+  std::string part_file;                    // where --part wrote the part
+};
+
+// The summary's lines for it (two spaces in, as the summary's), and its JSON object.
+std::string verify_text(const VerifyReport& r);
+nlohmann::json verify_json(const VerifyReport& r);
+
+}  // namespace ncurve::report

@@ -1,0 +1,337 @@
+#include "sim/lathe_section.hpp"
+
+#include <clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace ncurve::sim {
+
+using geom::V2;
+using ClipperLib::cInt;
+using ClipperLib::IntPoint;
+using ClipperLib::Path;
+using ClipperLib::Paths;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Section coordinates in kSectionUnit: IntPoint.X is X (the radius), IntPoint.Y is Z. Clipper sweeps
+// its scan line along Y: along the spindle axis, the direction most moves of a lathe run, so that few
+// of a batch's sweeps are active on any one scan beam. Clipper's orientation (outer boundaries
+// counter-clockwise in X, Y) is clockwise with Z to the right and X up.
+cInt to_units(double mm) { return static_cast<cInt>(std::llround(mm / kSectionUnit)); }
+IntPoint section_point(double z, double x) { return {to_units(x), to_units(z)}; }
+
+bool finite(V2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// Twice the signed area of the triangle o, a, b (exact: coordinates are below 2^31 in size).
+cInt cross(const IntPoint& o, const IntPoint& a, const IntPoint& b) {
+  return (a.X - o.X) * (b.Y - o.Y) - (a.Y - o.Y) * (b.X - o.X);
+}
+
+// The convex hull of the points, counter-clockwise, by Andrew's monotone chain (collinear points
+// dropped). The input is sorted in place.
+Path convex_hull(Path& p) {
+  std::sort(p.begin(), p.end(), [](const IntPoint& a, const IntPoint& b) { return a.X != b.X ? a.X < b.X : a.Y < b.Y; });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return {};
+  Path h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {  // lower hull
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {  // upper hull
+    while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  h.resize(k - 1);
+  return h.size() >= 3 ? h : Path{};
+}
+
+// The part of the segment a..b inside the box (Liang-Barsky); false when none is.
+bool clip_segment(V2& a, V2& b, V2 lo, V2 hi) {
+  double t0 = 0, t1 = 1;
+  const V2 d = b - a;
+  const double p[4] = {-d.x, d.x, -d.y, d.y};
+  const double q[4] = {a.x - lo.x, hi.x - a.x, a.y - lo.y, hi.y - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double r = q[i] / p[i];
+    if (p[i] < 0) t0 = std::max(t0, r);
+    else t1 = std::min(t1, r);
+    if (t0 > t1) return false;
+  }
+  const V2 a0 = a;
+  if (t0 > 0) a = a0 + t0 * d;
+  if (t1 < 1) b = a0 + t1 * d;
+  // rounding (a segment of 1e300 mm) may leave a point outside: into the box
+  a = {std::clamp(a.x, lo.x, hi.x), std::clamp(a.y, lo.y, hi.y)};
+  b = {std::clamp(b.x, lo.x, hi.x), std::clamp(b.y, lo.y, hi.y)};
+  return true;
+}
+
+double path_area(const Path& p) {
+  double a = 0;
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const IntPoint &u = p[i], &v = p[(i + 1) % n];
+    a += static_cast<double>(u.X * v.Y - v.X * u.Y);
+  }
+  return a / 2 * kSectionUnit * kSectionUnit;
+}
+
+// The integral of the radius over the polygon, mm^3.
+double path_moment(const Path& p) {
+  double m = 0;
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const IntPoint &u = p[i], &v = p[(i + 1) % n];
+    m += static_cast<double>(u.X * v.Y - v.X * u.Y) * static_cast<double>(u.X + v.X);
+  }
+  return m / 6 * kSectionUnit * kSectionUnit * kSectionUnit;
+}
+
+}  // namespace
+
+struct LatheSection::State {
+  Paths section;
+  // The sweeps not yet subtracted, merged as a binary counter merges: a sweep enters at level 0 and
+  // two unions of the same level become one of the next, so that a batch of n overlapping sweeps
+  // costs some n log n edges in Clipper rather than the n^2 of one union of them all.
+  std::vector<std::pair<int, Paths>> pending;
+  int pending_sweeps = 0;
+
+  void add_sweep(Paths sweep) {
+    pending.emplace_back(0, std::move(sweep));
+    ++pending_sweeps;
+    while (pending.size() >= 2 && pending.back().first == pending[pending.size() - 2].first) {
+      auto b = std::move(pending.back());
+      pending.pop_back();
+      auto& a = pending.back();
+      ClipperLib::Clipper c;
+      c.AddPaths(a.second, ClipperLib::ptSubject, true);
+      c.AddPaths(b.second, ClipperLib::ptClip, true);
+      Paths out;
+      c.Execute(ClipperLib::ctUnion, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      a.second = std::move(out);
+      ++a.first;
+    }
+  }
+  int batch = kDefaultBatch;
+  bool empty = true;
+  V2 lo{}, hi{};  // the stock's box, mm
+  double area0 = 0, moment0 = 0;
+};
+
+LatheSection::LatheSection(const Cylinder& stock, int batch) : stock_(stock), s_(std::make_unique<State>()) {
+  State& s = *s_;
+  s.batch = std::max(batch, 1);
+  const double outer = stock.diameter / 2, inner = std::max(stock.inner_diameter / 2, 0.0);
+  const double face = stock.face, back = stock.face - stock.length;
+  if (!(std::isfinite(outer) && std::isfinite(inner) && std::isfinite(face) && std::isfinite(back))) return;
+  s.lo = {std::clamp(back, -kSectionReach, kSectionReach), std::min(inner, kSectionReach)};
+  s.hi = {std::clamp(face, -kSectionReach, kSectionReach), std::min(outer, kSectionReach)};
+  const IntPoint lo = section_point(s.lo.x, s.lo.y), hi = section_point(s.hi.x, s.hi.y);
+  if (!(lo.X < hi.X && lo.Y < hi.Y)) return;
+  s.empty = false;
+  s.section = {{lo, {hi.X, lo.Y}, hi, {lo.X, hi.Y}}};
+  s.area0 = path_area(s.section[0]);
+  s.moment0 = path_moment(s.section[0]);
+}
+
+LatheSection::~LatheSection() = default;
+LatheSection::LatheSection(LatheSection&&) noexcept = default;
+LatheSection& LatheSection::operator=(LatheSection&&) noexcept = default;
+
+bool LatheSection::cut(const ToolOutline& tool, const machine::Move& m) {
+  if (!m.is_motion()) return false;
+  const V2 a{m.start[2], m.start[0]}, b{m.end[2], m.end[0]};
+  if (m.kind != machine::MoveKind::arc) {
+    if (!finite(a) || !finite(b)) return false;
+    cut_line(tool, a, b);
+    return true;
+  }
+  const V2 c{m.center[2], m.center[0]};
+  if (m.plane != 18 || !finite(a) || !finite(b) || !finite(c) || !std::isfinite(m.sweep)) return false;
+  cut_arc(tool, a, b, c, m.sweep);
+  return true;
+}
+
+void LatheSection::cut_line(const ToolOutline& tool, V2 a, V2 b) {
+  State& s = *s_;
+  if (s.empty || tool.empty() || !finite(a) || !finite(b)) return;
+  // where the programmed point must be for the tool (or its mirror image across the axis) to reach
+  // the stock's box
+  V2 tlo = tool.points[0], thi = tool.points[0];
+  for (const V2& q : tool.points) {
+    tlo = {std::min(tlo.x, q.x), std::min(tlo.y, q.y)};
+    thi = {std::max(thi.x, q.x), std::max(thi.y, q.y)};
+  }
+  const double margin = kSectionUnit;
+  const V2 lo{s.lo.x - thi.x - margin, -s.hi.y - thi.y - margin}, hi{s.hi.x - tlo.x + margin, s.hi.y - tlo.y + margin};
+  if (!clip_segment(a, b, lo, hi)) return;
+  Path points;
+  points.reserve(2 * tool.points.size());
+  for (const V2& q : tool.points) {
+    points.push_back(section_point(a.x + q.x, a.y + q.y));
+    points.push_back(section_point(b.x + q.x, b.y + q.y));
+  }
+  Path hull = convex_hull(points);
+  if (hull.empty()) return;
+  cInt low = hull[0].X;
+  for (const IntPoint& p : hull) low = std::min(low, p.X);
+  if (low < 0) {  // the part turns: the tool cuts at |X| on the far side of the axis too
+    Path mirror(hull.rbegin(), hull.rend());
+    for (IntPoint& p : mirror) p.X = -p.X;
+    s.add_sweep({std::move(hull), std::move(mirror)});
+  } else {
+    s.add_sweep({std::move(hull)});
+  }
+  if (s.pending_sweeps >= s.batch) flush();
+}
+
+void LatheSection::cut_arc(const ToolOutline& tool, V2 a, V2 b, V2 centre, double sweep) {
+  if (s_->empty || tool.empty() || !finite(a) || !finite(b) || !finite(centre) || !std::isfinite(sweep)) return;
+  const double r0 = geom::norm(a - centre), r1 = geom::norm(b - centre);
+  const double a0 = std::atan2(a.y - centre.y, a.x - centre.x);
+  const int n = arc_chords(std::max(r0, r1), std::fabs(sweep));
+  V2 p = a;
+  for (int k = 1; k <= n; ++k) {
+    const double t = static_cast<double>(k) / n, angle = a0 + sweep * t, r = r0 + (r1 - r0) * t;
+    const V2 q = k == n ? b : centre + r * V2{std::cos(angle), std::sin(angle)};
+    cut_line(tool, p, q);
+    p = q;
+  }
+}
+
+void LatheSection::flush() const {
+  State& s = *s_;
+  if (s.pending.empty()) return;
+  ClipperLib::Clipper c;
+  c.AddPaths(s.section, ClipperLib::ptSubject, true);
+  for (const auto& [level, paths] : s.pending) c.AddPaths(paths, ClipperLib::ptClip, true);
+  Paths out;
+  c.Execute(ClipperLib::ctDifference, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  s.section = std::move(out);
+  s.pending.clear();
+  s.pending_sweeps = 0;
+}
+
+double LatheSection::area() const {
+  flush();
+  double a = 0;
+  for (const Path& p : s_->section) a += path_area(p);
+  return a;
+}
+
+double LatheSection::area_removed() const { return s_->area0 - area(); }
+
+double LatheSection::volume() const {
+  flush();
+  double m = 0;
+  for (const Path& p : s_->section) m += path_moment(p);
+  return 2 * kPi * m;
+}
+
+double LatheSection::volume_removed() const { return 2 * kPi * s_->moment0 - volume(); }
+
+std::vector<std::vector<V2>> LatheSection::polygons() const {
+  flush();
+  std::vector<std::vector<V2>> out;
+  out.reserve(s_->section.size());
+  for (const Path& p : s_->section) {
+    std::vector<V2>& q = out.emplace_back();
+    q.reserve(p.size());
+    for (auto v = p.rbegin(); v != p.rend(); ++v) q.push_back({v->Y * kSectionUnit, v->X * kSectionUnit});
+  }
+  return out;
+}
+
+namespace {
+
+// The radii where the line Z = z crosses the section's boundary, in units; `pick` keeps one.
+template <class Pick>
+double radius_at(const Paths& section, double z, Pick pick) {
+  if (!std::isfinite(z)) return kNaN;
+  const double u = z / kSectionUnit;
+  bool any = false;
+  double best = 0;
+  auto keep = [&](double y) {
+    best = any ? pick(best, y) : y;
+    any = true;
+  };
+  for (const Path& p : section)
+    for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+      const IntPoint &a = p[i], &b = p[(i + 1) % n];
+      const double az = static_cast<double>(a.Y), bz = static_cast<double>(b.Y);
+      if (u < std::min(az, bz) || u > std::max(az, bz)) continue;
+      if (a.Y == b.Y) {
+        keep(static_cast<double>(a.X));
+        keep(static_cast<double>(b.X));
+      } else {
+        keep(a.X + (b.X - a.X) * (u - az) / (bz - az));
+      }
+    }
+  return any ? best * kSectionUnit : kNaN;
+}
+
+}  // namespace
+
+double LatheSection::outer_radius(double z) const {
+  flush();
+  return radius_at(s_->section, z, [](double a, double b) { return std::max(a, b); });
+}
+
+double LatheSection::inner_radius(double z) const {
+  flush();
+  return radius_at(s_->section, z, [](double a, double b) { return std::min(a, b); });
+}
+
+Mesh LatheSection::mesh(int segments) const {
+  flush();
+  const int n = std::clamp(segments, 3, 1 << 16);
+  std::vector<double> cs(n), sn(n);
+  for (int k = 0; k < n; ++k) cs[k] = std::cos(2 * kPi * k / n), sn[k] = std::sin(2 * kPi * k / n);
+  std::size_t points = 0;
+  for (const Path& p : s_->section) points += p.size();
+  if (static_cast<double>(points) * n >= std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("the part's mesh would have more vertices than an index holds: fewer segments");
+  Mesh mesh;
+  for (const Path& clipper_path : s_->section) {
+    const Path p(clipper_path.rbegin(), clipper_path.rend());  // outer boundaries counter-clockwise in (Z, X)
+    // each contour point's first vertex; a point on the axis has one, others one per step
+    std::vector<std::uint32_t> first(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      first[i] = static_cast<std::uint32_t>(mesh.vertices.size());
+      const double z = p[i].Y * kSectionUnit, x = p[i].X * kSectionUnit;
+      if (p[i].X == 0) mesh.vertices.push_back({0, 0, z});
+      else
+        for (int k = 0; k < n; ++k) mesh.vertices.push_back({x * cs[k], x * sn[k], z});
+    }
+    // the band each edge a -> b sweeps: with the section's interior on the edge's left (Z right, X up),
+    // (a_k, b_k, b_k+1) and (a_k, b_k+1, a_k+1) face outwards
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::size_t j = (i + 1) % p.size();
+      const bool a_axis = p[i].X == 0, b_axis = p[j].X == 0;
+      if (a_axis && b_axis) continue;
+      for (int k = 0; k < n; ++k) {
+        const int k1 = (k + 1) % n;
+        const std::uint32_t ak = first[i] + (a_axis ? 0 : k), ak1 = first[i] + (a_axis ? 0 : k1);
+        const std::uint32_t bk = first[j] + (b_axis ? 0 : k), bk1 = first[j] + (b_axis ? 0 : k1);
+        if (!b_axis) mesh.triangles.push_back({ak, bk, bk1});
+        if (!a_axis) mesh.triangles.push_back({ak, bk1, ak1});
+      }
+    }
+  }
+  return mesh;
+}
+
+}  // namespace ncurve::sim

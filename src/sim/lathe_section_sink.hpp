@@ -1,0 +1,54 @@
+// The move stream of a lathe cut into its half-section: each rapid, line, thread cut and ZX arc with
+// the tool the turret holds (rapids cut too; telling that apart is the checks' work).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+
+#include "machine/move.hpp"
+#include "machine/profile.hpp"
+#include "sim/insert_shape.hpp"
+#include "sim/lathe_section.hpp"
+#include "sim/tool_library.hpp"
+
+namespace ncurve::sim {
+
+class LatheSectionSink final : public machine::MoveSink {
+public:
+  // The tool changes on each tool change event, a lathe's T code (T0203: tool 2, offset 3). Its shape
+  // is the library's entry for the tool number (lathe_tool_number), else the default insert of the
+  // offset set's nose radius (geometry plus wear) and tip (an offset the machine does not hold: a
+  // sharp point of tip 0); tool number 0 is no tool. `t_code` is the T code in force before the first
+  // tool change.
+  LatheSectionSink(LatheSection& section, ToolLibrary tools, std::map<int, machine::LatheOffset> offsets = {},
+                   std::optional<int> t_code = std::nullopt, InsertSize size = {});
+
+  void on_move(const machine::Move& m) override;
+
+  struct Counts {
+    std::uint64_t cut = 0;         // moves cut into the section
+    std::uint64_t no_tool = 0;     // motion before the first T code, or with tool number 0
+    std::uint64_t not_zx_arc = 0;  // arcs in G17/G19, not simulated
+    std::uint64_t not_finite = 0;  // a coordinate that is not a finite number
+  };
+  const Counts& counts() const { return counts_; }
+
+  // The volume each tool number removed, mm^3 (the rapids with it included).
+  std::map<int, double> volume_by_tool() const;
+
+private:
+  void change_tool(int t_code);
+
+  LatheSection& section_;
+  ToolLibrary tools_;
+  std::map<int, machine::LatheOffset> offsets_;
+  InsertSize size_;
+  std::map<int, ToolOutline> outlines_;  // by T code
+  const ToolOutline* tool_ = nullptr;
+  int tool_number_ = 0;
+  double volume_at_change_ = 0;
+  std::map<int, double> volume_by_tool_;
+  Counts counts_;
+};
+
+}  // namespace ncurve::sim

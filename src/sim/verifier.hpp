@@ -1,0 +1,131 @@
+// A mill program verified against its setup: the stock cut on a Z-map by each tool in the spindle,
+// and the findings of the cut (a rapid through material, a cut deeper than the flutes, a plunge with
+// a tool that does not centre-cut, a cut with the spindle stopped or too fast for the tool).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "machine/move.hpp"
+#include "sim/setup.hpp"
+#include "sim/tool_shape.hpp"
+#include "sim/zmap.hpp"
+
+namespace ncurve::sim {
+
+// A part of a tool that must not touch the stock: a flat-bottomed body of revolution whose bottom
+// is `offset` above the tip (a holder's cone as steps of cylinders inside it).
+struct ToolBody {
+  ToolShape shape;
+  double offset = 0;
+  const char* what = "";  // "shank", "holder"
+};
+
+// A tool as the verifier uses it: its cutting end, the bodies above it wider than the cut, and
+// what it came from.
+struct VerifyTool {
+  MillTool tool;
+  ToolShape shape;
+  bool from_library = false;  // else a flat end mill of the D offset in force
+  std::vector<ToolBody> bodies;
+};
+VerifyTool verify_tool(const MillTool& t, bool from_library);
+
+// The mill tools of a run by T number: the library's, and for a number it lacks a flat end mill of
+// the radius of the D offset in force when it first cuts (the profile's value); none while D is 0.
+class MillTools {
+public:
+  MillTools(const ToolLibrary& library, const machine::MachineProfile& profile);
+  const VerifyTool* get(int number, int d_offset);
+  double radius(int number, int d_offset) {
+    const VerifyTool* t = get(number, d_offset);
+    return t ? t->tool.radius() : 0;
+  }
+  // The tools asked for so far, by number (none: no tool of that number).
+  const std::map<int, std::optional<VerifyTool>>& used() const { return tools_; }
+
+private:
+  const ToolLibrary& library_;
+  const machine::MachineProfile& profile_;
+  std::map<int, std::optional<VerifyTool>> tools_;
+};
+
+struct Finding {
+  nc::Diagnostic diagnostic;  // a warning at the move's block
+  Point3 at{};                // where, work coordinates
+  double amount = 0;          // how much, mm (what the message says it is)
+};
+
+struct VerifyOptions {
+  double cell = 0;                        // Z-map cell, mm; 0: from min_cells
+  int min_cells = ZMap::kDefaultCells;    // the stock's shorter side in this many cells
+  std::size_t max_findings = 200;         // beyond: counted only
+  double most_cells = 1e8;                // the largest map (8 bytes a cell)
+  std::uint64_t cut_moves = UINT64_MAX;   // only the first so many motions are cut (a debugger's step)
+  const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
+};
+
+class Verifier final : public machine::MoveSink {
+public:
+  Verifier(const Stock& stock, MillTools& tools, std::optional<int> spindle, VerifyOptions options = {},
+           const std::vector<Fixture>& fixtures = {});
+  void on_move(const machine::Move& m) override;
+
+  const ZMap& map() const { return map_; }
+  const std::vector<Finding>& findings() const { return findings_; }
+  std::size_t findings_left_out() const { return left_out_; }
+  // Material removed by each T number, mm^3.
+  const std::map<int, double>& volume_by_tool() const { return volume_by_tool_; }
+  struct Counts {
+    std::uint64_t cut = 0;
+    std::uint64_t no_tool = 0;     // motion with no tool in the spindle, or a tool without a size
+    std::uint64_t not_xy_arc = 0;  // arcs in G18/G19
+    std::uint64_t rotary = 0;      // moves that turn a rotary axis (3 axes are simulated)
+    std::uint64_t after = 0;       // motions past VerifyOptions::cut_moves
+  };
+  const Counts& counts() const { return counts_; }
+
+  // The fixtures checked (boxes), and those not (STL, not simulated yet).
+  std::vector<std::string> fixtures_checked() const;
+
+private:
+  struct FixtureMap {
+    std::string name;
+    ZMap map;
+    bool touched = false;  // by the move before
+  };
+  void cut(const machine::Move& m);
+  // What a body (shape at offset above the tip) meets along the move on the map; none when it cannot.
+  CutReport probe(ZMap& map, const machine::Move& m, const ToolShape& shape, double offset);
+  void check_bodies(const machine::Move& m);
+  void check_fixtures(const machine::Move& m);
+  void check(const machine::Move& m, const CutReport& r);
+  void find(const machine::Move& m, const char* code, std::string message, const Point3& at, double amount);
+
+  ZMap map_;
+  std::vector<FixtureMap> fixtures_;
+  std::vector<std::string> unchecked_fixtures_;
+  MillTools& tools_;
+  const VerifyTool* tool_ = nullptr;
+  int tool_number_ = 0;
+  bool spindle_on_ = false;
+  std::uint64_t motions_ = 0;
+  bool holder_in_stock_ = false;  // after the move before
+  VerifyOptions options_;
+  std::vector<Finding> findings_;
+  std::size_t left_out_ = 0;
+  std::map<int, double> volume_by_tool_;
+  Counts counts_;
+  std::set<std::tuple<std::string, const nc::SourceFile*, std::uint32_t>> found_at_;  // code, block
+  std::map<int, bool> speed_warned_;  // by T number
+};
+
+// The box a Z-map covers for a stock: a box itself, a cylinder's or tube's square about the Z axis.
+// None for an STL stock (not simulated yet).
+std::optional<Box> zmap_box(const Stock& stock);
+
+}  // namespace ncurve::sim

@@ -1,0 +1,100 @@
+// POST /api/run with "verify" and "setup": the part cut, its findings among the diagnostics, the
+// part's grid, a debugger's step (cut_moves), and the bounds.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "serve/api.hpp"
+
+namespace ncurve::serve {
+namespace {
+
+using nlohmann::json;
+
+// a 40 x 40 x 20 block, top at Z0; T1 a 10 mm end mill in the spindle
+const char* const kSetup = R"(tool_in_spindle = 1
+[stock]
+shape = "box"
+min = [-20, -20, -20]
+max = [20, 20, 0]
+[tools.1]
+kind = "flat"
+diameter = 10
+)";
+// a slot 1 deep from X-10 to X10, then a rapid 2 mm into the block at X0 Y10 (line 7)
+const char* const kProgram =
+    "M03 S1000\nG90 G00 X-10. Y0 Z5.\nG01 Z-1. F200.\nX10.\nG00 Z5.\nG00 X0 Y10.\nG00 Z-2.\nG00 Z5.\nM30\n";
+
+// the answer, or the refusal as the server sends it
+Answer call(const json& request) {
+  try {
+    return api_run(ServeConfig{}, request.dump());
+  } catch (const ApiError& e) {
+    return Answer{e.status, e.what()};
+  }
+}
+
+json run(json request) {
+  const Answer a = call(request);
+  EXPECT_EQ(a.status, 200) << a.body;
+  return json::parse(a.body);
+}
+
+TEST(PartApi, VerifyCutsTheSetupsStockAndListsTheFindings) {
+  const json r = run({{"program", kProgram}, {"name", "slot.nc"}, {"setup", kSetup}, {"resolution", 0.1}});
+  const json& v = r["summary"]["verify"];
+  ASSERT_TRUE(v["verified"].get<bool>());
+  EXPECT_EQ(v["zmap"]["cells"], json::array({400, 400}));
+  // the slot: 20 x 10 x 1 with round ends (pi 25), and the rapid's 2 mm deep disc of radius 5
+  const double exact = 20 * 10 * 1 + M_PI * 25 * 1 + M_PI * 25 * 2;
+  EXPECT_NEAR(v["volume_removed_mm3"].get<double>(), exact, 0.1 * 1.5 * (40 + 4 * M_PI * 5 + 2 * M_PI * 5));
+  ASSERT_EQ(v["findings"].size(), 1u);
+  EXPECT_EQ(v["findings"][0]["code"], "NC2080");
+  EXPECT_EQ(v["findings"][0]["line"], 7);
+  bool listed = false;  // the editor's list has it
+  for (const json& d : r["diagnostics"]) listed |= d["code"] == "NC2080" && d["line"] == 7;
+  EXPECT_TRUE(listed);
+  const json& part = r["part"];
+  EXPECT_EQ(part["nx"], 400);
+  EXPECT_EQ(part["ny"], 400);
+  EXPECT_DOUBLE_EQ(part["top"].get<double>(), 0);
+  EXPECT_EQ(part["heights"].get<std::string>().size(), (400u * 400u * 4u + 2u) / 3u * 4u);  // base64 of float32
+}
+
+TEST(PartApi, CutMovesStopsAtADebuggersStep) {
+  // the first three motions: the rapid over, the plunge and the slot; not the rapid into the block
+  const json r = run({{"program", kProgram}, {"setup", kSetup}, {"resolution", 0.1}, {"cut_moves", 3}, {"moves", false}});
+  const json& v = r["summary"]["verify"];
+  EXPECT_EQ(v["findings"].size(), 0u);
+  EXPECT_EQ(v["moves_not_cut"]["after"], 4);  // of the seven motions
+  const double slot = 20 * 10 * 1 + M_PI * 25 * 1;
+  EXPECT_NEAR(v["volume_removed_mm3"].get<double>(), slot, 0.1 * 1.5 * (40 + 2 * M_PI * 5));
+  const json none = run({{"program", kProgram}, {"setup", kSetup}, {"resolution", 0.1}, {"cut_moves", 0}});
+  EXPECT_EQ(none["summary"]["verify"]["volume_removed_mm3"], 0);
+}
+
+TEST(PartApi, BoundsAndBadSetups) {
+  // a map finer than the server allows is refused, naming the bound; the default fits within it
+  Answer fine = call({{"program", kProgram}, {"setup", kSetup}, {"resolution", 0.001}});
+  EXPECT_EQ(fine.status, 400);
+  EXPECT_NE(fine.body.find("allowed"), std::string::npos) << fine.body;
+  const json wide = run({{"program", kProgram},
+                         {"setup", "tool_in_spindle = 1\n[stock]\nshape = \"box\"\nmin = [-2000, -20, -20]\n"
+                                   "max = [2000, 20, 0]\n[tools.1]\nkind = \"flat\"\ndiameter = 10\n"}});
+  const json& cells = wide["summary"]["verify"]["zmap"]["cells"];
+  EXPECT_LE(cells[0].get<double>() * cells[1].get<double>(), kMostPartCells);
+  // a setup with an error: 400, the error at its line and column of the setup named
+  Answer bad = call({{"program", kProgram}, {"setup", "[stock]\nshape = \"ball\"\n"}, {"setup_name", "job.setup.toml"}});
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_NE(bad.body.find("job.setup.toml:2:"), std::string::npos) << bad.body;
+  // without "verify" or "setup" there is no part
+  const json plain = run({{"program", kProgram}});
+  EXPECT_FALSE(plain.contains("part"));
+  EXPECT_FALSE(plain["summary"].contains("verify"));
+}
+
+}  // namespace
+}  // namespace ncurve::serve
