@@ -1,9 +1,11 @@
 // libFuzzer target: any bytes as a program, parsed and run with a step limit on a mill or a lathe
 // (the first byte's lowest bit) whose offsets carry cutter and nose radii (D1..D9, lathe offsets 1..9
 // with a nose radius and an imaginary tip), so that G41/G42 compensation runs; every move goes to
-// the CSV, JSON Lines and G-code writers at once, writing to memory.
+// the CSV, JSON Lines and G-code writers at once, writing to memory; on the mill every move is
+// also cut into a small Z-map by a verifier with a tool in a holder and a clamp to meet.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -11,6 +13,7 @@
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
 #include "report/writers.hpp"
+#include "sim/verifier.hpp"
 
 namespace {
 
@@ -34,14 +37,36 @@ machine::MachineProfile fuzz_profile(bool lathe) {
   return p;
 }
 
+// A 200 x 200 x 50 block on 100 x 100 cells, T1 a ball in a holder, a clamp beside the block.
+const char* const kSetup = R"(tool_in_spindle = 1
+[stock]
+shape = "box"
+min = [-100, -100, -50]
+max = [100, 100, 0]
+[[fixtures]]
+name = "clamp"
+shape = "box"
+min = [100, -20, -50]
+max = [130, 20, 10]
+[tools.1]
+kind = "ball"
+diameter = 8
+flute_length = 16
+stick_out = 30
+shank_diameter = 10
+holder = [{ diameter = 30, length = 20 }, { diameter = [30, 40], length = 10 }]
+)";
+
 struct AllWriters final : machine::MoveSink {
   std::ostringstream csv_text, jsonl_text, gcode_text;
   report::CsvWriter csv;
   report::JsonlWriter jsonl;
   report::GcodeWriter gcode;
+  machine::MoveSink* verify = nullptr;
   explicit AllWriters(const machine::MachineProfile& p)
       : csv(csv_text, p, 0.001), jsonl(jsonl_text, p), gcode(gcode_text, p, "fuzz.nc") {}
   void on_move(const machine::Move& m) override {
+    if (verify) verify->on_move(m);
     csv.on_move(m);
     jsonl.on_move(m);
     gcode.on_move(m);
@@ -73,6 +98,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.max_steps = 20000;
   machine::Interpreter interp(profile, lib, options);
   AllWriters sink(profile);
+  static const sim::SetupFile setup = sim::parse_setup(kSetup, "fuzz.setup.toml");
+  sim::MillTools tools(setup.tools, profile);
+  sim::VerifyOptions vo;
+  vo.min_cells = 100;
+  vo.profile = &profile;
+  std::optional<sim::Verifier> verifier;
+  if (!profile.lathe()) {
+    verifier.emplace(*setup.stock, tools, setup.tool_in_spindle, vo, setup.fixtures);
+    sink.verify = &*verifier;
+  }
   try {
     machine::RunResult result = interp.run(sink);
     if (result.alarm) sink.stopped(*result.alarm);

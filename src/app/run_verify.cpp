@@ -172,6 +172,7 @@ void RunVerification::lathe(const machine::MachineProfile& profile, const machin
                                                           setup_.tool_in_spindle);
   report_.section = section_.get();
   report_.section_sink = section_sink_.get();
+  for (const sim::Fixture& f : setup_.fixtures) report_.fixtures.push_back(f.name + ": not checked on a lathe yet");
 }
 
 machine::MoveSink* RunVerification::sink() {
@@ -186,6 +187,14 @@ void RunVerification::finish(machine::RunResult& result) {
                                          (tool->from_library ? "" : " (default: the D offset in force)")
                                    : fmt::format("T{}: not in the library and no D offset in force when it cut: not cut",
                                                  number));
+  if (section_sink_)  // a lathe's turret: the tools that cut
+    for (const auto& [number, volume] : section_sink_->volume_by_tool()) {
+      const auto it = setup_.tools.tools.find(number);
+      report_.tools.push_back(it != setup_.tools.tools.end()
+                                  ? sim::describe(number, it->second)
+                                  : fmt::format("T{}: not in the library: the insert of its offset's nose radius and tip",
+                                                number));
+    }
   if (!verifier_) return;
   report_.fixtures = verifier_->fixtures_checked();
   for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);

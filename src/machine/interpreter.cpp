@@ -221,6 +221,7 @@ void Executor::warn_mixed_decimal_points(const nc::Program& program) {
         if (!word.literal || !scaled_address(word.letter)) continue;
         if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
         if (word.letter == 'Q' && profile_.lathe()) continue;  // and a start angle (G32, G92), a depth in increments (G76)
+        if (word.letter == 'R' && profile_.lathe() && block_has_g(*p, b, 730, 730)) continue;  // G73 R: divisions
         if (word.letter == 'Q' && !profile_.lathe() && block_has_g(*p, b, 330, 330)) continue;  // G33's start angle
         if (word.letter == 'Q' && calls_subprogram(*p, b)) continue;  // M98 Q: a sequence number
         if (word.decimal_point) with = with ? with : &word;

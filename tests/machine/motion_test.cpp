@@ -30,6 +30,11 @@ TEST(Motion, DecimalPointRule) {
   auto seq = run("G00 X10.\nM98 Q102\nM30\nN102 G00 Y5.\nM99\n");
   ASSERT_TRUE(seq.result.ok()) << seq.result.alarm->message;
   for (const auto& w : seq.result.warnings) EXPECT_NE(w.code, "NC2001") << nc::format(w);
+  // a lathe's G73 R is the number of divisions (a count, not a length): R3 beside decimal points is not mixed
+  auto g73 = run("G00 X60. Z2.\nG73 U5. W0.5 R3\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X40.\nG01 Z-20.\n"
+                 "N20 X60.\nM30\n", machine::default_lathe());
+  ASSERT_TRUE(g73.result.ok()) << g73.result.alarm->message;
+  for (const auto& w : g73.result.warnings) EXPECT_NE(w.code, "NC2001") << nc::format(w);
 }
 
 // The warning quotes the number as the control shows it (118 increments of 0.001 mm = 0.118) and
