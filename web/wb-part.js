@@ -38,7 +38,8 @@
           if (stepAbort) stepAbort.abort();
           stepAbort = new AbortController();
           const base = request();
-          const body = Object.assign(base, await api.extras(base.name), {moves: false, cut_moves: moves});
+          // the drawing has at most 400 points a side: a map as fine is enough for a step
+          const body = Object.assign(base, await api.extras(base.name), {moves: false, cut_moves: moves, cells: 400});
           try {
             const r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'},
               signal: stepAbort.signal, body: JSON.stringify(body)});

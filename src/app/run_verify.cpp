@@ -131,6 +131,7 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   sim::VerifyOptions vo;
   vo.cell = args.resolution;
   vo.most_cells = args.most_cells;
+  if (args.cells > 0) vo.min_cells = args.cells;
   vo.cut_moves = args.cut_moves;
   vo.profile = &profile;
   try {

@@ -23,6 +23,7 @@ struct VerifyArgs {
   double resolution = 0;    // --resolution MM: the Z-map's cell; 0: the stock's shorter side in 1000 cells
   std::string part;         // --part FILE.stl
   double most_cells = 1e8;  // the largest Z-map
+  int cells = 0;            // the stock's shorter side in so many cells (0: 1000), unless resolution
   std::uint64_t cut_moves = UINT64_MAX;  // cut only the first so many motions
   bool on() const { return verify || !setup.empty() || setup_text || !part.empty() || resolution > 0; }
 };

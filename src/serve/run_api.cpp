@@ -2,6 +2,7 @@
 // execution trace.
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <new>
 #include <optional>
@@ -47,7 +48,7 @@ json diagnostics(const report::RunReport& rep) {
 Answer api_run(const ServeConfig& config, const std::string& body, const std::atomic<bool>* cancel) {
   const json j = parse_body(body);
   check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "moves",
-                 "trace", "trace_limit", "format", "verify", "setup", "setup_name", "resolution", "cut_moves"},
+                 "trace", "trace_limit", "format", "verify", "setup", "setup_name", "resolution", "cells", "cut_moves"},
              "POST /api/run");
   const app::RunInputs in = run_inputs(config, j);
   const bool want_moves = get_bool(j, "moves", true);
@@ -70,6 +71,10 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   if (auto r = get_number(j, "resolution")) {
     if (!(*r >= 1e-3 && *r <= 1e3)) throw ApiError(400, "\"resolution\" is a Z-map cell of 0.001 to 1000 mm");
     va.resolution = *r;
+  }
+  if (auto n = get_number(j, "cells")) {
+    if (!(*n >= 10 && *n <= 2000 && *n == std::floor(*n))) throw ApiError(400, "\"cells\" is a whole 10 to 2000");
+    va.cells = static_cast<int>(*n);
   }
   if (auto n = get_number(j, "cut_moves")) {
     if (!(*n >= 0 && *n <= 1e15)) throw ApiError(400, "\"cut_moves\" is a count of motions, 0 or more");

@@ -195,10 +195,8 @@ void Verifier::cut(const machine::Move& m) {
   }
   ++counts_.cut;
   const CutReport r = map_.last_cut();
-  if (r.removed()) {
-    volume_by_tool_[tool_number_] += r.volume;
-    check(m, r);
-  }
+  if (r.removed()) volume_by_tool_[tool_number_] += r.volume;
+  if (r.deepest > kFindingDepth) check(m, r);
   if (!tool_->bodies.empty()) check_bodies(m);
   if (!fixtures_.empty()) check_fixtures(m);
 }
@@ -232,7 +230,7 @@ void Verifier::check_bodies(const machine::Move& m) {
   holder_in_stock_ = false;
   for (const ToolBody& body : tool_->bodies) {
     const CutReport r = probe(map_, m, body.shape, body.offset);
-    if (!r.removed()) continue;
+    if (!(r.deepest > kFindingDepth)) continue;
     holder_in_stock_ = true;
     if (was_in) return;  // the same contact going on: said at the move that made it
     const std::string what = std::string(body.what) == "shank"
@@ -252,12 +250,12 @@ void Verifier::check_fixtures(const machine::Move& m) {
   for (FixtureMap& f : fixtures_) {
     CutReport r = probe(f.map, m, tool_->shape, 0);
     const char* what = "cutting end";
-    for (std::size_t k = 0; !r.removed() && k < tool_->bodies.size(); ++k) {
+    for (std::size_t k = 0; !(r.deepest > kFindingDepth) && k < tool_->bodies.size(); ++k) {
       r = probe(f.map, m, tool_->bodies[k].shape, tool_->bodies[k].offset);
       what = tool_->bodies[k].what;
     }
     const bool was_in = f.touched;
-    f.touched = r.removed();
+    f.touched = r.deepest > kFindingDepth;
     if (!f.touched || was_in) continue;  // a contact going on was said at the move that made it
     const std::string message =
         fmt::format("T{}'s {} meets the fixture '{}' at X{:.3f} Y{:.3f}, {:.3f} mm below its top: a crash",

@@ -60,6 +60,10 @@ struct Finding {
   double amount = 0;          // how much, mm (what the message says it is)
 };
 
+// Material a finding is about lies deeper than this on some cell's line, mm: less is the rounding
+// between the kernels (and no chip).
+inline constexpr double kFindingDepth = 1e-3;
+
 struct VerifyOptions {
   double cell = 0;                        // Z-map cell, mm; 0: from min_cells
   int min_cells = ZMap::kDefaultCells;    // the stock's shorter side in this many cells

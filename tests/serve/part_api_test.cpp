@@ -90,6 +90,11 @@ TEST(PartApi, BoundsAndBadSetups) {
   Answer bad = call({{"program", kProgram}, {"setup", "[stock]\nshape = \"ball\"\n"}, {"setup_name", "job.setup.toml"}});
   EXPECT_EQ(bad.status, 400);
   EXPECT_NE(bad.body.find("job.setup.toml:2:"), std::string::npos) << bad.body;
+  // "cells": the shorter side in so many cells (a debugger's step asks 400); a bad count is a 400
+  const json coarse = run({{"program", kProgram}, {"setup", kSetup}, {"cells", 100}});
+  EXPECT_EQ(coarse["summary"]["verify"]["zmap"]["cells"], json::array({100, 100}));
+  EXPECT_EQ(call({{"program", kProgram}, {"setup", kSetup}, {"cells", 5}}).status, 400);
+  EXPECT_EQ(call({{"program", kProgram}, {"setup", kSetup}, {"cells", 100.5}}).status, 400);
   // without "verify" or "setup" there is no part
   const json plain = run({{"program", kProgram}});
   EXPECT_FALSE(plain.contains("part"));
