@@ -496,7 +496,16 @@
           part = partMesh(p, toWorld);
           scene.add(part);
           partLights.forEach((l) => scene.add(l));
+          // the camera's depth range widened to hold the whole part, which may reach far past the path
+          part.geometry.computeBoundingSphere();
+          const s = part.geometry.boundingSphere, reach = s.center.length() + s.radius;
+          camera.near = -reach - 1;
+          camera.far = 8 * radius + 1 + reach;
+        } else {
+          camera.near = 0;
+          camera.far = 8 * radius + 1;
         }
+        camera.updateProjectionMatrix();
         requestRender();
       },
       highlight(list) {
