@@ -196,6 +196,8 @@ void RunVerification::finish(machine::RunResult& result) {
                                   : fmt::format("T{}: not in the library: the insert of its offset's nose radius and tip",
                                                 number));
     }
+  if (section_sink_)
+    for (const sim::Finding& f : section_sink_->findings()) result.warnings.push_back(f.diagnostic);
   if (!verifier_) return;
   report_.fixtures = verifier_->fixtures_checked();
   for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);

@@ -65,7 +65,10 @@ std::string verify_text(const VerifyReport& r) {
     const auto& c = r.section_sink->counts();
     if (c.no_tool) out += fmt::format("  not cut        {} moves with no tool (before the first T code, or T0)\n", c.no_tool);
     if (c.not_zx_arc) out += fmt::format("  not cut        {} arcs outside G18\n", c.not_zx_arc);
-    out += "  findings       none checked on a lathe yet (the material removal and the part only)\n";
+    const auto& found = r.section_sink->findings();
+    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material)\n",
+                       found.size() + r.section_sink->findings_left_out(),
+                       r.section_sink->findings_left_out() ? fmt::format(" ({} listed)", found.size()) : std::string());
     if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
     return out;
   }
@@ -113,7 +116,13 @@ nlohmann::json verify_json(const VerifyReport& r) {
     j["moves_cut"] = c.cut;
     j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}};
     j["findings"] = nlohmann::json::array();
-    j["findings_left_out"] = 0;
+    for (const sim::Finding& f : r.section_sink->findings()) {
+      nlohmann::json d = diagnostic_json(f.diagnostic);
+      d["at"] = f.at;
+      d["amount"] = f.amount;
+      j["findings"].push_back(d);
+    }
+    j["findings_left_out"] = r.section_sink->findings_left_out();
     j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
     return j;
   }

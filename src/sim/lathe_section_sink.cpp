@@ -1,6 +1,9 @@
 #include "sim/lathe_section_sink.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <numbers>
 
 namespace ncurve::sim {
 
@@ -51,8 +54,34 @@ void LatheSectionSink::on_move(const machine::Move& m) {
     ++counts_.not_zx_arc;
     return;
   }
-  if (section_.cut(*tool_, m)) ++counts_.cut;
-  else ++counts_.not_finite;
+  if (m.kind != MoveKind::rapid) {
+    if (section_.cut(*tool_, m)) ++counts_.cut;
+    else ++counts_.not_finite;
+    return;
+  }
+  // a rapid: the section's area before and after it says whether it went through material
+  const double before = section_.area();
+  if (!section_.cut(*tool_, m)) {
+    ++counts_.not_finite;
+    return;
+  }
+  ++counts_.cut;
+  const double removed = before - section_.area();
+  const double length = std::hypot(m.end[0] - m.start[0], m.end[2] - m.start[2]);
+  if (!(removed > 1e-3 * std::max(length, 1.0))) return;
+  if (!found_at_.insert({m.file, m.line}).second) return;  // once a block
+  if (findings_.size() >= 200) {
+    ++left_out_;
+    return;
+  }
+  const double volume = 2 * std::numbers::pi * removed * std::max(0.5 * (m.start[0] + m.end[0]), 0.0);
+  findings_.push_back(finding_at(
+      m, "NC2080",
+      fmt::format("a rapid removes material: {:.3f} mm^2 of the bar's half-section (about {:.1f} mm^3) on its way from "
+                  "Z{:.3f} at radius {:.3f} to Z{:.3f} at radius {:.3f}; at rapid rate the insert or the part breaks: "
+                  "feed into material (G01) or keep the rapid clear",
+                  removed, volume, m.start[2], m.start[0], m.end[2], m.end[0]),
+      {m.end[0], m.end[1], m.end[2]}, removed));
 }
 
 std::map<int, double> LatheSectionSink::volume_by_tool() const {

@@ -4,9 +4,12 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
+#include <vector>
 
 #include "machine/move.hpp"
 #include "machine/profile.hpp"
+#include "sim/finding.hpp"
 #include "sim/insert_shape.hpp"
 #include "sim/lathe_section.hpp"
 #include "sim/tool_library.hpp"
@@ -36,6 +39,11 @@ public:
   // The volume each tool number removed, mm^3 (the rapids with it included).
   std::map<int, double> volume_by_tool() const;
 
+  // NC2080: the rapids that removed material (more than 1 um times the rapid's length of section
+  // area), once a block, the first 200.
+  const std::vector<Finding>& findings() const { return findings_; }
+  std::size_t findings_left_out() const { return left_out_; }
+
 private:
   void change_tool(int t_code);
 
@@ -49,6 +57,9 @@ private:
   double volume_at_change_ = 0;
   std::map<int, double> volume_by_tool_;
   Counts counts_;
+  std::vector<Finding> findings_;
+  std::size_t left_out_ = 0;
+  std::set<std::pair<const nc::SourceFile*, std::uint32_t>> found_at_;
 };
 
 }  // namespace ncurve::sim

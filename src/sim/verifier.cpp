@@ -26,20 +26,27 @@ ToolShape shape_of(const MillTool& t) {
 // Where a cut or probe found the most material: the cell's centre at the depth reached.
 Point3 where(const ZMap& map, const CutReport& r) { return {map.cell_x(r.i), map.cell_y(r.j), r.from - r.deepest}; }
 
-// The block of a move's line as a span: its first non-blank column to its end.
-nc::Span block_span(const machine::Move& m) {
-  nc::Span s;
+}  // namespace
+
+Finding finding_at(const machine::Move& m, const std::string& code, std::string message,
+                   const std::array<double, 3>& at, double amount) {
+  Finding f;
+  f.diagnostic.severity = nc::Severity::warning;
+  f.diagnostic.code = code;
+  f.diagnostic.message = std::move(message);
+  nc::Span& s = f.diagnostic.span;  // the block's line from its first non-blank column
   s.file = m.file;
   s.line = m.line;
-  if (!m.file || m.line == 0) return s;
-  const std::string_view text = m.file->line(m.line);
-  const std::size_t first = text.find_first_not_of(" \t");
-  s.column = static_cast<std::uint32_t>(first == std::string_view::npos ? 1 : first + 1);
-  s.length = static_cast<std::uint32_t>(std::max<std::size_t>(1, text.size() - std::min(first, text.size())));
-  return s;
+  if (m.file && m.line != 0) {
+    const std::string_view text = m.file->line(m.line);
+    const std::size_t first = text.find_first_not_of(" \t");
+    s.column = static_cast<std::uint32_t>(first == std::string_view::npos ? 1 : first + 1);
+    s.length = static_cast<std::uint32_t>(std::max<std::size_t>(1, text.size() - std::min(first, text.size())));
+  }
+  f.at = at;
+  f.amount = amount;
+  return f;
 }
-
-}  // namespace
 
 VerifyTool verify_tool(const MillTool& t, bool from_library) {
   VerifyTool v{t, shape_of(t), from_library, {}};
@@ -316,14 +323,7 @@ void Verifier::find(const machine::Move& m, const char* code, std::string messag
     ++left_out_;
     return;
   }
-  Finding f;
-  f.diagnostic.severity = nc::Severity::warning;
-  f.diagnostic.code = code;
-  f.diagnostic.message = std::move(message);
-  f.diagnostic.span = block_span(m);
-  f.at = at;
-  f.amount = amount;
-  findings_.push_back(std::move(f));
+  findings_.push_back(finding_at(m, code, std::move(message), at, amount));
 }
 
 }  // namespace ncurve::sim

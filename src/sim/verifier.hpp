@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "machine/move.hpp"
+#include "sim/finding.hpp"
 #include "sim/setup.hpp"
 #include "sim/tool_shape.hpp"
 #include "sim/zmap.hpp"
@@ -52,12 +53,6 @@ private:
   const ToolLibrary& library_;
   const machine::MachineProfile& profile_;
   std::map<int, std::optional<VerifyTool>> tools_;
-};
-
-struct Finding {
-  nc::Diagnostic diagnostic;  // a warning at the move's block
-  Point3 at{};                // where, work coordinates
-  double amount = 0;          // how much, mm (what the message says it is)
 };
 
 // Material a finding is about lies deeper than this on some cell's line, mm: less is the rounding

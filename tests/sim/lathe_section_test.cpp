@@ -476,3 +476,31 @@ TEST(LatheSection, BadInputsNeverCrash) {
   sink.on_move(m);
   EXPECT_EQ(sink.counts().no_tool, 1u);
 }
+
+// NC2080 on a lathe: a rapid into a D50 bar is found at its block with the section area it took; a
+// rapid outside the bar and one back along a diameter just turned are clean.
+TEST(LatheSectionSink, RapidIntoTheBarIsFound) {
+  auto profile = machine::default_lathe();
+  auto r = test::run("G21 G99 G18\nT0101\nG00 X60. Z2.\nG00 X52. Z2.\nG00 X40. Z-10.\nG00 X60. Z2.\n"
+                     "G00 X44. Z2.\nG01 Z-30. F0.2\nG00 Z2.\nG00 X100. Z50.\nM30\n",
+                     profile);
+  ASSERT_TRUE(r.result.ok());
+  ToolLibrary lib;
+  LatheInsert turn;
+  turn.nose_radius = 0.4;
+  turn.tip = 3;
+  lib.tools[1] = turn;
+  LatheSection section(bar(50, 100));
+  LatheSectionSink sink(section, lib);
+  for (const auto& m : r.moves) sink.on_move(m);
+  ASSERT_EQ(sink.findings().size(), 1u);
+  const Finding& f = sink.findings()[0];
+  EXPECT_EQ(f.diagnostic.code, "NC2080");
+  EXPECT_EQ(f.diagnostic.span.line, 5u);  // G00 X40. Z-10.: from radius 30 at Z2 into the bar of radius 25
+  // the tip's straight path enters the bar at radius 25 at Z-4 (30 - 5/6 x 6) and ends at Z-10 radius
+  // 20: the triangle under it, 6 x 5 / 2 = 15 mm^2, is cut (less the nose's rounding, 0.4^2 (1 - pi/4));
+  // a tip-3 insert lies at Z and radius at or above its tip's, so no more than the bar's corner
+  // Z -10..0, radius 20..25 (50 mm^2) is
+  EXPECT_GT(f.amount, 15 - 0.04);
+  EXPECT_LE(f.amount, 50 + 1e-3);
+}
