@@ -5,6 +5,9 @@
 (function (global) {
   'use strict';
 
+  // The setup file of program `name`: NAME.setup.toml.
+  const setupName = (name) => name.replace(/\.[^.]*$/, '') + '.setup.toml';
+
   // checkbox: the "Part" box; setupUrl(name): where the setup of program `name` is, or null;
   // request(): the run request of the program shown; onPart(part, summary): a part to draw (null: none)
   function create({checkbox, setupUrl, request, onPart}) {
@@ -27,7 +30,7 @@
       async extras(name) {
         if (!checkbox.checked) return {};
         const setup = await setupOf(name);
-        return setup === null ? {verify: true} : {verify: true, setup, setup_name: name.replace(/\.[^.]*$/, '') + '.setup.toml'};
+        return setup === null ? {verify: true} : {verify: true, setup, setup_name: setupName(name)};
       },
       // the part as cut by the first `moves` motions (a debugger's step), a little after the last call
       step(moves) {
@@ -53,5 +56,5 @@
     return api;
   }
 
-  global.NcurvePart = {create};
+  global.NcurvePart = {create, setupName};
 })(window);

@@ -118,7 +118,7 @@
   const part = NcurvePart.create({
     checkbox: $('part'),
     setupUrl: (n) => (n === 'spiral.nc' && example.name === n && !fileNames.includes(n) ? '/assets/example.setup.toml'
-      : fileNames.includes(n.replace(/\.[^.]*$/, '') + '.setup.toml') ? '/api/files/' + encodeURIComponent(n.replace(/\.[^.]*$/, '') + '.setup.toml')
+      : fileNames.includes(NcurvePart.setupName(n)) ? '/api/files/' + encodeURIComponent(NcurvePart.setupName(n))
       : null),
     request: programRequest,
     onPart: showPart,

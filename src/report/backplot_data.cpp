@@ -97,6 +97,11 @@ std::string dump(const nlohmann::json& j) { return j.dump(-1, ' ', false, nlohma
 
 }  // namespace
 
+nlohmann::json part_json(const sim::PartGrid& g) {
+  return {{"nx", g.nx}, {"ny", g.ny}, {"x0", g.x0}, {"y0", g.y0}, {"dx", g.dx}, {"dy", g.dy}, {"bottom", g.bottom},
+          {"top", g.top}, {"heights", base64(g.heights.data(), g.heights.size() * sizeof(float))}};
+}
+
 std::string BackplotData::json(bool inch) const {
   nlohmann::json head;
   head["version"] = 1;
@@ -119,12 +124,7 @@ std::string BackplotData::json(bool inch) const {
     files.push_back(e);
   }
   head["files"] = files;
-  if (part_) {
-    const sim::PartGrid& g = *part_;
-    head["part"] = {{"nx", g.nx}, {"ny", g.ny}, {"x0", g.x0}, {"y0", g.y0}, {"dx", g.dx}, {"dy", g.dy},
-                    {"bottom", g.bottom}, {"top", g.top},
-                    {"heights", base64(g.heights.data(), g.heights.size() * sizeof(float))}};
-  }
+  if (part_) head["part"] = part_json(*part_);
   if (alarm_) {
     nlohmann::json a;
     a["code"] = alarm_->code;

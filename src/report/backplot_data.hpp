@@ -12,6 +12,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
 #include "report/other_axes.hpp"
@@ -67,6 +69,10 @@ private:
   std::array<std::vector<double>, 3> other_end_;
   std::optional<sim::PartGrid> part_;
 };
+
+// The cut part's grid as the pages take it: {nx, ny, x0, y0, dx, dy, bottom, top, heights (base64 of
+// float32)} (docs/html.md).
+nlohmann::json part_json(const sim::PartGrid& grid);
 
 // `text` as base64 (RFC 4648, with padding).
 std::string base64(const void* data, std::size_t bytes);

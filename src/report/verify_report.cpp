@@ -41,6 +41,31 @@ nlohmann::json stock_json(const sim::Stock& s) {
   return j;
 }
 
+// "T1 12.3, T2 4.5": the material each tool removed, mm^3.
+std::string by_tool_text(const std::map<int, double>& by_tool) {
+  std::string out;
+  for (const auto& [t, volume] : by_tool) out += fmt::format("{}T{} {:.1f}", out.empty() ? "" : ", ", t, volume);
+  return out;
+}
+
+nlohmann::json by_tool_json(const std::map<int, double>& by_tool) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [t, volume] : by_tool) j[std::to_string(t)] = volume;
+  return j;
+}
+
+// Each finding as a diagnostic with where (`at`) and how much (`amount`).
+nlohmann::json findings_json(const std::vector<sim::Finding>& findings) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const sim::Finding& f : findings) {
+    nlohmann::json d = diagnostic_json(f.diagnostic);
+    d["at"] = f.at;
+    d["amount"] = f.amount;
+    j.push_back(d);
+  }
+  return j;
+}
+
 }  // namespace
 
 std::string verify_text(const VerifyReport& r) {
@@ -55,9 +80,7 @@ std::string verify_text(const VerifyReport& r) {
   for (const std::string& f : r.fixtures) out += fmt::format("  fixture        {}\n", f);
   for (const std::string& d : r.defaults) out += fmt::format("  default        {}\n", d);
   if (r.section) {  // a lathe: the half-section
-    std::string by_tool;
-    for (const auto& [t, volume] : r.section_sink->volume_by_tool())
-      by_tool += fmt::format("{}T{} {:.1f}", by_tool.empty() ? "" : ", ", t, volume);
+    const std::string by_tool = by_tool_text(r.section_sink->volume_by_tool());
     out += fmt::format("  section        the bar's half-section on a {:g} mm grid, within {:g} mm of the exact cut\n",
                        sim::kSectionUnit, sim::kSectionResolution);
     out += fmt::format("  removed        {:.1f} mm^3{}\n", r.section->volume_removed(),
@@ -79,8 +102,7 @@ std::string verify_text(const VerifyReport& r) {
   const sim::Verifier& v = *r.verifier;
   const sim::ZMap& map = v.map();
   out += fmt::format("  Z-map          {} x {} cells of {:.4f} mm\n", map.nx(), map.ny(), map.cell());
-  std::string by_tool;
-  for (const auto& [t, volume] : v.volume_by_tool()) by_tool += fmt::format("{}T{} {:.1f}", by_tool.empty() ? "" : ", ", t, volume);
+  const std::string by_tool = by_tool_text(v.volume_by_tool());
   out += fmt::format("  removed        {:.1f} mm^3{}\n", map.volume_removed(), by_tool.empty() ? "" : " (" + by_tool + ")");
   const auto& c = v.counts();
   if (c.no_tool)
@@ -109,19 +131,11 @@ nlohmann::json verify_json(const VerifyReport& r) {
   if (r.section) {
     j["section"] = {{"grid_mm", sim::kSectionUnit}, {"resolution_mm", sim::kSectionResolution}};
     j["volume_removed_mm3"] = r.section->volume_removed();
-    nlohmann::json by_tool = nlohmann::json::object();
-    for (const auto& [t, volume] : r.section_sink->volume_by_tool()) by_tool[std::to_string(t)] = volume;
-    j["volume_by_tool_mm3"] = by_tool;
+    j["volume_by_tool_mm3"] = by_tool_json(r.section_sink->volume_by_tool());
     const auto& c = r.section_sink->counts();
     j["moves_cut"] = c.cut;
     j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}};
-    j["findings"] = nlohmann::json::array();
-    for (const sim::Finding& f : r.section_sink->findings()) {
-      nlohmann::json d = diagnostic_json(f.diagnostic);
-      d["at"] = f.at;
-      d["amount"] = f.amount;
-      j["findings"].push_back(d);
-    }
+    j["findings"] = findings_json(r.section_sink->findings());
     j["findings_left_out"] = r.section_sink->findings_left_out();
     j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
     return j;
@@ -134,19 +148,11 @@ nlohmann::json verify_json(const VerifyReport& r) {
   const sim::ZMap& map = v.map();
   j["zmap"] = {{"cells", {map.nx(), map.ny()}}, {"cell_mm", map.cell()}};
   j["volume_removed_mm3"] = map.volume_removed();
-  nlohmann::json by_tool = nlohmann::json::object();
-  for (const auto& [t, volume] : v.volume_by_tool()) by_tool[std::to_string(t)] = volume;
-  j["volume_by_tool_mm3"] = by_tool;
+  j["volume_by_tool_mm3"] = by_tool_json(v.volume_by_tool());
   const auto& c = v.counts();
   j["moves_cut"] = c.cut;
   j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_xy_arc", c.not_xy_arc}, {"rotary", c.rotary}, {"after", c.after}};
-  j["findings"] = nlohmann::json::array();
-  for (const sim::Finding& f : v.findings()) {
-    nlohmann::json d = diagnostic_json(f.diagnostic);
-    d["at"] = f.at;
-    d["amount"] = f.amount;
-    j["findings"].push_back(d);
-  }
+  j["findings"] = findings_json(v.findings());
   j["findings_left_out"] = v.findings_left_out();
   j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
   return j;

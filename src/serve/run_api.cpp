@@ -142,12 +142,7 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
     write_trace_json(columns, *trace, files);
   }
   if (verify && verify->map()) {
-    const sim::PartGrid g = sim::part_grid(*verify->map());
-    fmt::format_to(it, ",\"part\":{}",
-                   json{{"nx", g.nx}, {"ny", g.ny}, {"x0", g.x0}, {"y0", g.y0}, {"dx", g.dx}, {"dy", g.dy},
-                        {"bottom", g.bottom}, {"top", g.top},
-                        {"heights", report::base64(g.heights.data(), g.heights.size() * sizeof(float))}}
-                       .dump());
+    fmt::format_to(it, ",\"part\":{}", report::part_json(sim::part_grid(*verify->map())).dump());
   }
   b.append(std::string_view(",\"files\":["));
   for (std::size_t i = 0; i < files.names().size(); ++i) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace ncurve::sim {
@@ -21,6 +22,28 @@ ToolShape shape_of(const MillTool& t) {
     case MillKind::flat: case MillKind::tap: break;
   }
   return ToolShape::flat(r);
+}
+
+// The tool tip's path of a line or an XY arc lifted by `lift`, as the map takes it; none for an
+// arc in G18/G19.
+struct TipPath {
+  Point3 a, b;
+  std::optional<Arc> arc;
+};
+std::optional<TipPath> tip_path(const machine::Move& m, double lift = 0) {
+  TipPath p{{m.start[0], m.start[1], m.start[2] + lift}, {m.end[0], m.end[1], m.end[2] + lift}, std::nullopt};
+  if (m.kind != machine::MoveKind::arc) return p;
+  if (m.plane != 17) return std::nullopt;
+  Arc arc;
+  arc.cx = m.center[0];
+  arc.cy = m.center[1];
+  arc.radius = std::hypot(p.a[0] - arc.cx, p.a[1] - arc.cy);
+  arc.start_angle = std::atan2(p.a[1] - arc.cy, p.a[0] - arc.cx);
+  arc.sweep = m.sweep;
+  arc.z_start = p.a[2];
+  arc.z_end = p.b[2];
+  p.arc = arc;
+  return p;
 }
 
 // Where a cut or probe found the most material: the cell's centre at the depth reached.
@@ -183,23 +206,13 @@ void Verifier::cut(const machine::Move& m) {
     ++counts_.no_tool;
     return;
   }
-  const Point3 a{m.start[0], m.start[1], m.start[2]}, b{m.end[0], m.end[1], m.end[2]};
-  if (m.kind != machine::MoveKind::arc) {
-    map_.cut_line(tool_->shape, a, b);
-  } else if (m.plane == 17) {
-    Arc arc;
-    arc.cx = m.center[0];
-    arc.cy = m.center[1];
-    arc.radius = std::hypot(a[0] - arc.cx, a[1] - arc.cy);
-    arc.start_angle = std::atan2(a[1] - arc.cy, a[0] - arc.cx);
-    arc.sweep = m.sweep;
-    arc.z_start = a[2];
-    arc.z_end = b[2];
-    map_.cut_arc(tool_->shape, arc);
-  } else {
+  const std::optional<TipPath> path = tip_path(m);
+  if (!path) {
     ++counts_.not_xy_arc;
     return;
   }
+  if (path->arc) map_.cut_arc(tool_->shape, *path->arc);
+  else map_.cut_line(tool_->shape, path->a, path->b);
   ++counts_.cut;
   const CutReport r = map_.last_cut();
   if (r.removed()) volume_by_tool_[tool_number_] += r.volume;
@@ -219,17 +232,9 @@ CutReport Verifier::probe(ZMap& map, const machine::Move& m, const ToolShape& sh
   if (m.kind != machine::MoveKind::arc &&
       (x1 + reach < b.min[0] || x0 - reach > b.max[0] || y1 + reach < b.min[1] || y0 - reach > b.max[1]))
     return {};
-  const Point3 a{m.start[0], m.start[1], m.start[2] + offset}, e{m.end[0], m.end[1], m.end[2] + offset};
-  if (m.kind != machine::MoveKind::arc) return map.probe_line(shape, a, e);
-  Arc arc;
-  arc.cx = m.center[0];
-  arc.cy = m.center[1];
-  arc.radius = std::hypot(a[0] - arc.cx, a[1] - arc.cy);
-  arc.start_angle = std::atan2(a[1] - arc.cy, a[0] - arc.cx);
-  arc.sweep = m.sweep;
-  arc.z_start = a[2];
-  arc.z_end = e[2];
-  return map.probe_arc(shape, arc);
+  const std::optional<TipPath> path = tip_path(m, offset);
+  if (!path) return {};
+  return path->arc ? map.probe_arc(shape, *path->arc) : map.probe_line(shape, path->a, path->b);
 }
 
 void Verifier::check_bodies(const machine::Move& m) {

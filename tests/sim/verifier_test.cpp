@@ -315,3 +315,32 @@ TEST(Verifier, RetractOutOfASlopingBallCutIsClean) {
   EXPECT_TRUE(v.verifier->findings().empty()) << v.verifier->findings()[0].diagnostic.message;
   EXPECT_GT(v.verifier->map().volume_removed(), 0);
 }
+
+// The move stream cut with the tool in the spindle by T number: lines, arcs and rapids cut, the
+// moves before the first M06 and a G18 arc counted, not cut.
+TEST(Verifier, ProgramCutsWithTheToolInTheSpindle) {
+  // a slot with T1 (flat, R 5), then T2 (ball, R 3) round a G03 half circle, one G18 arc left out
+  auto r = test::run(
+      "G90 G17 G00 X20. Y50. Z5.\nG01 Z-3. F500.\nX80.\nG00 Z5.\nT1 M06\nG00 X20. Y50.\nG01 Z-3. F500.\nX80.\n"
+      "G00 Z5.\nT2 M06\nG00 X40. Y20.\nG01 Z-1.\nG03 X60. Y20. R10.\nG18 G02 X70. Z-1. R5.\nM30\n",
+      test::calculator_mill());
+  ASSERT_TRUE(r.result.ok());
+  const sim::SetupFile setup = sim::parse_setup(
+      "[tools.1]\nkind = \"flat\"\ndiameter = 10\n[tools.2]\nkind = \"ball\"\ndiameter = 6\n", "s.toml");
+  sim::MillTools tools(setup.tools, test::calculator_mill());
+  sim::Verifier v(sim::AxisBox{{0, 0, -20}, {100, 100, 0}}, tools, std::nullopt);
+  const sim::ZMap& map = v.map();
+  for (const auto& m : r.moves) v.on_move(m);
+  EXPECT_EQ(v.counts().no_tool, 4u);  // before the first M06
+  EXPECT_EQ(v.counts().not_xy_arc, 1u);
+  EXPECT_EQ(v.counts().cut, 7u);
+  EXPECT_EQ(map.height_at(50.05, 50.05), -3);
+  EXPECT_EQ(map.height_at(50.05, 56.05), 0);
+  // the ball's arc (G03 from the left through the bottom): its tip at Z-1 on the circle of radius
+  // 10 about (50, 20); the cell's distance from the circle is 10 - D
+  const double d = 10 - std::hypot(0.05, 9.95);
+  EXPECT_NEAR(map.height_at(50.05, 10.05), -1 + 3 - std::sqrt(9 - d * d), 1e-9);
+  EXPECT_EQ(map.height_at(50.05, 30.05), 0);
+  const double exact = 60 * 10 * 3 + std::numbers::pi * 25 * 3;
+  EXPECT_GT(map.volume_removed(), exact);
+}
