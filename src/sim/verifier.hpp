@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "machine/move.hpp"
+#include "sim/cut_log.hpp"
 #include "sim/finding.hpp"
 #include "sim/setup.hpp"
 #include "sim/tool_shape.hpp"
@@ -88,6 +89,9 @@ public:
   };
   const Counts& counts() const { return counts_; }
 
+  // Keep every cut in `log` as well (for measuring walls afterwards).
+  void log_cuts(CutLog* log) { log_ = log; }
+
   // The fixtures checked (boxes), and those not (STL, not simulated yet).
   std::vector<std::string> fixtures_checked() const;
 
@@ -121,6 +125,7 @@ private:
   Counts counts_;
   std::set<std::tuple<std::string, const nc::SourceFile*, std::uint32_t>> found_at_;  // code, block
   std::map<int, bool> speed_warned_;  // by T number
+  CutLog* log_ = nullptr;
 };
 
 // The box a Z-map covers for a stock: a box itself, a cylinder's or tube's square about the Z axis.
