@@ -67,6 +67,7 @@ struct VerifyOptions {
   double most_cells = 1e8;                // the largest map (8 bytes a cell)
   std::uint64_t cut_moves = UINT64_MAX;   // only the first so many motions are cut (a debugger's step)
   const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
+  bool check_reference = true;  // NC2089 (with a profile): off where the stock is a guess (the default box)
 };
 
 class Verifier final : public machine::MoveSink {
@@ -74,6 +75,8 @@ public:
   Verifier(const Stock& stock, MillTools& tools, std::optional<int> spindle, VerifyOptions options = {},
            const std::vector<Fixture>& fixtures = {});
   void on_move(const machine::Move& m) override;
+  // A new work zero: the reference point is checked against the stock at the next motion.
+  void on_setup(const machine::Setup& s) override;
 
   const ZMap& map() const { return map_; }
   const std::vector<Finding>& findings() const { return findings_; }
@@ -108,6 +111,7 @@ private:
   void check_fixtures(const machine::Move& m);
   void check(const machine::Move& m, const CutReport& r);
   void find(const machine::Move& m, const char* code, std::string message, const Point3& at, double amount);
+  void check_reference(const machine::Move& m);
 
   ZMap map_;
   std::vector<FixtureMap> fixtures_;
@@ -126,6 +130,8 @@ private:
   std::set<std::tuple<std::string, const nc::SourceFile*, std::uint32_t>> found_at_;  // code, block
   std::map<int, bool> speed_warned_;  // by T number
   CutLog* log_ = nullptr;
+  std::optional<machine::AxisVector> origin_;  // the work zero in machine coordinates, to check the reference point
+  bool reference_found_ = false;               // NC2089 is said once
 };
 
 // The box a Z-map covers for a stock: a box itself, a cylinder's or tube's square about the Z axis.
