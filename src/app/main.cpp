@@ -25,6 +25,7 @@
 #include "machine/profile.hpp"
 #include "report/path_plot.hpp"
 #include "report/summary.hpp"
+#include "report/verify_report.hpp"
 #include "report/writers.hpp"
 #include "serve/serve_command.hpp"
 
@@ -143,7 +144,10 @@ int run_command(const app::RunArgs& a) {
   if (gcode) gcode->finish();
   if (verify) {
     verify->finish(result);
-    if (html && verify->map()) html->set_part(sim::part_grid(*verify->map()));
+    if (html && verify->map()) {
+      html->set_part(sim::part_grid(*verify->map()));
+      if (verify->report().curve) html->set_deviation(report::deviation_json(*verify->report().curve));
+    }
     try {
       verify->write_part(setup.inputs);
     } catch (const io::OutputError& e) {
