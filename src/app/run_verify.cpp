@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "io/output_file.hpp"
+#include "sim/mesh_top.hpp"
+#include "sim/stl_read.hpp"
 #include "sim/part_stl.hpp"
 #include "sim/stl.hpp"
 
@@ -19,6 +21,11 @@ void add_verify_options(CLI::App* run, VerifyArgs& a) {
   run->add_option("--resolution", a.resolution, "the Z-map's cell size, mm (default: the stock's shorter side in 1000 cells)")
       ->check(CLI::Range(1e-4, 1e4));
   run->add_option("--part", a.part, "write the cut part as a binary STL file (turns on --verify)");
+  auto* design = run->add_option("--design", a.design,
+                                 "a mill: the design solid (STL, mm); warn where the cut gouges it or leaves stock on "
+                                 "it beyond --tol (turns on --verify)")
+                     ->check(CLI::ExistingFile);
+  run->add_option("--tol", a.tol, "--design's tolerance, mm (default 0.01)")->check(CLI::Range(1e-6, 1e3))->needs(design);
 }
 
 namespace {
@@ -96,7 +103,12 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   auto refuse = [&](const std::string& why) {
     report_.refused = why;
     if (!args.part.empty()) throw std::runtime_error("--part: " + why);
+    if (!args.design.empty()) throw std::runtime_error("--design: " + why);
   };
+  if (!args.design.empty() && profile.lathe())
+    throw std::runtime_error("--design: the check against a design is a mill's (on its Z-map), not a lathe's yet");
+  std::optional<sim::Mesh> design;  // read before the runs: its errors first
+  if (!args.design.empty()) design = sim::read_stl(args.design);
   if (profile.lathe()) {
     lathe(profile, lib, options, refuse);
     return;
@@ -134,6 +146,7 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   if (args.cells > 0) vo.min_cells = args.cells;
   vo.cut_moves = args.cut_moves;
   vo.profile = &profile;
+  vo.mark_cells = design.has_value();
   try {
     verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo, setup_.fixtures);
   } catch (const std::invalid_argument& e) {
@@ -142,6 +155,7 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
                                                              : std::string("the stock's shorter side in 1000 cells")));
   }
   report_.verifier = verifier_.get();
+  if (design) design_top_ = sim::mesh_top(*design, verifier_->map());
 }
 
 RunVerification::~RunVerification() = default;
@@ -201,6 +215,13 @@ void RunVerification::finish(machine::RunResult& result) {
   if (!verifier_) return;
   report_.fixtures = verifier_->fixtures_checked();
   for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);
+  if (args_.design.empty()) return;
+  const sim::ZMap& map = verifier_->map();
+  design_ = sim::check_design({&map, design_top_, map.cut_by(), verifier_->cut_blocks(), verifier_->last_block(),
+                               args_.design, args_.tol});
+  for (const sim::Finding& f : design_->findings) result.warnings.push_back(f.diagnostic);
+  report_.design = &*design_;
+  report_.design_file = args_.design;
 }
 
 void RunVerification::write_part(const std::vector<std::string>& inputs) {

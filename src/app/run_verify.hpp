@@ -12,6 +12,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "report/verify_report.hpp"
+#include "sim/design_check.hpp"
 #include "sim/lathe_section_sink.hpp"
 
 namespace ncurve::app {
@@ -22,10 +23,12 @@ struct VerifyArgs {
   bool verify = false;      // --verify
   double resolution = 0;    // --resolution MM: the Z-map's cell; 0: the stock's shorter side in 1000 cells
   std::string part;         // --part FILE.stl
+  std::string design;       // --design FILE.stl: the gouge and stock left against it (a mill)
+  double tol = 0.01;        // --tol MM: the design's tolerance
   double most_cells = 1e8;  // the largest Z-map
   int cells = 0;            // the stock's shorter side in so many cells (0: 1000), unless resolution
   std::uint64_t cut_moves = UINT64_MAX;  // cut only the first so many motions
-  bool on() const { return verify || !setup.empty() || setup_text || !part.empty() || resolution > 0; }
+  bool on() const { return verify || !setup.empty() || setup_text || !part.empty() || resolution > 0 || !design.empty(); }
 };
 
 void add_verify_options(CLI::App* run, VerifyArgs& a);
@@ -58,6 +61,8 @@ private:
   std::unique_ptr<sim::Verifier> verifier_;
   std::unique_ptr<sim::LatheSection> section_;  // a lathe's
   std::unique_ptr<sim::LatheSectionSink> section_sink_;
+  std::vector<double> design_top_;  // --design's top on the map's grid
+  std::optional<sim::DesignResult> design_;
   report::VerifyReport report_;
 };
 

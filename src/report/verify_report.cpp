@@ -66,6 +66,16 @@ nlohmann::json findings_json(const std::vector<sim::Finding>& findings) {
   return j;
 }
 
+std::string extreme_text(const sim::DesignExtreme& e) {
+  if (e.cells == 0) return "none beyond the tolerance";
+  return fmt::format("{:.3f} mm at X{:.3f} Y{:.3f} Z{:.3f} ({} cells beyond the tolerance)", e.amount, e.at[0], e.at[1],
+                     e.at[2], e.cells);
+}
+
+nlohmann::json extreme_json(const sim::DesignExtreme& e) {
+  return {{"amount_mm", e.amount}, {"at", e.cells ? nlohmann::json(e.at) : nlohmann::json(nullptr)}, {"cells", e.cells}};
+}
+
 }  // namespace
 
 std::string verify_text(const VerifyReport& r) {
@@ -113,8 +123,15 @@ std::string verify_text(const VerifyReport& r) {
   if (c.rotary)
     out += fmt::format("  not cut        {} moves turning a rotary axis (3 axes are simulated)\n", c.rotary);
   if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
-  out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out(),
-                     v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size()) : std::string());
+  if (r.design) {
+    out += fmt::format("  design         {}, tol {:g} mm, exact to the cell ({:.4f} mm)\n", r.design_file, r.design->tol,
+                       map.cell());
+    out += fmt::format("  gouge          {}\n", extreme_text(r.design->gouge));
+    out += fmt::format("  stock left     {}\n", extreme_text(r.design->stock_left));
+  }
+  const std::size_t listed = v.findings().size() + (r.design ? r.design->findings.size() : 0);
+  const std::size_t left_out = v.findings_left_out() + (r.design ? r.design->left_out : 0);
+  out += fmt::format("  findings       {}{}\n", listed + left_out, left_out ? fmt::format(" ({} listed)", listed) : std::string());
   if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
   return out;
 }
@@ -154,6 +171,12 @@ nlohmann::json verify_json(const VerifyReport& r) {
   j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_xy_arc", c.not_xy_arc}, {"rotary", c.rotary}, {"after", c.after}};
   j["findings"] = findings_json(v.findings());
   j["findings_left_out"] = v.findings_left_out();
+  if (r.design) {
+    for (auto& f : findings_json(r.design->findings)) j["findings"].push_back(f);
+    j["findings_left_out"] = v.findings_left_out() + r.design->left_out;
+    j["design"] = {{"file", r.design_file}, {"tol_mm", r.design->tol}, {"cell_mm", map.cell()},
+                   {"gouge", extreme_json(r.design->gouge)}, {"stock_left", extreme_json(r.design->stock_left)}};
+  }
   j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
   return j;
 }

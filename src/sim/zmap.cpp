@@ -35,11 +35,21 @@ double ZMap::height_at(double x, double y) const {
   return height(static_cast<int>(fi), static_cast<int>(fj));
 }
 
-void ZMap::clear_cell(int i, int j) {
+void ZMap::clear_cell(int i, int j) { start_cell(i, j, stock_.min[2]); }
+
+void ZMap::start_cell(int i, int j, double height) {
   double& h = h_[static_cast<std::size_t>(j) * nx_ + i];
   const double top = stock_.max[2], bottom = stock_.min[2];
-  absent_ += (std::clamp(h, bottom, top) - bottom) * cell_ * cell_;
-  h = std::min(h, bottom);
+  const double to = height > bottom ? height : bottom;  // NaN: none
+  if (!(to < h)) return;
+  absent_ += (std::clamp(h, bottom, top) - std::clamp(to, bottom, top)) * cell_ * cell_;
+  h = to;
+}
+
+void ZMap::mark_cuts(std::uint32_t id) {
+  if (cut_by_.empty()) cut_by_.assign(h_.size(), kNoCut);
+  cut_id_ = id;
+  report_ = true;
 }
 
 double ZMap::volume_removed() const {
@@ -75,6 +85,11 @@ CutReport ZMap::probe_arc(const ToolShape& tool, const Arc& arc) {
 
 void ZMap::after_row(double* h, int i0, int j, int n) {
   if (!report_ && !probe_) return;
+  if (!probe_ && !cut_by_.empty()) {
+    std::uint32_t* by = cut_by_.data() + static_cast<std::size_t>(j) * nx_ + i0;
+    for (int k = 0; k < n; ++k)
+      if (h[k] < before_[k]) by[k] = cut_id_;
+  }
   const double top = stock_.max[2], bottom = stock_.min[2];
   double removed_sum = 0;
   for (int k = 0; k < n; ++k) {
