@@ -136,10 +136,6 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
     return;
   }
   report_.stock = stock;
-  if (std::holds_alternative<sim::StlFile>(*stock)) {
-    refuse("an STL stock is not simulated yet: give a box or a cylinder");
-    return;
-  }
   sim::VerifyOptions vo;
   vo.cell = args.resolution;
   vo.most_cells = args.most_cells;
