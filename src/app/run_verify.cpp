@@ -93,6 +93,13 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   if (args.setup_text) {
     setup_ = sim::parse_setup(*args.setup_text, args.setup.empty() ? "<setup>" : args.setup);
     report_.setup_file = args.setup.empty() ? "<setup>" : args.setup;
+    // a setup sent as text (the server's) may name no file to be read
+    bool stl = setup_.stock && std::holds_alternative<sim::StlFile>(*setup_.stock);
+    for (const sim::Fixture& f : setup_.fixtures) stl = stl || std::holds_alternative<sim::StlFile>(f.shape);
+    if (stl)
+      throw std::runtime_error(fmt::format("{}: error: an STL stock or fixture names a file, and a setup sent as text "
+                                           "reads none (give a box)",
+                                           report_.setup_file));
   } else if (!args.setup.empty()) {
     setup_ = sim::read_setup(args.setup);
     report_.setup_file = args.setup;

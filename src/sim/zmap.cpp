@@ -1,5 +1,7 @@
 #include "sim/zmap.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,10 +18,9 @@ ZMap::ZMap(const Box& stock, double cell, int min_cells, double most_cells) : st
   }
   if (!(cell > 0) || !std::isfinite(cell)) throw std::invalid_argument("a Z-map's cell size must be positive");
   const double nx = std::ceil(lx / cell - 1e-9), ny = std::ceil(ly / cell - 1e-9);
-  if (nx * ny > most_cells)
-    throw std::invalid_argument("a Z-map of " + std::to_string(static_cast<long long>(nx)) + " x " +
-                                std::to_string(static_cast<long long>(ny)) + " cells is more than the " +
-                                std::to_string(static_cast<long long>(most_cells)) + " allowed");
+  if (!(nx * ny <= most_cells))  // (NaN too)
+    throw std::invalid_argument(
+        fmt::format("a Z-map of {:.0f} x {:.0f} cells is more than the {:.0f} allowed", nx, ny, most_cells));
   cell_ = cell;
   nx_ = static_cast<int>(nx);
   ny_ = static_cast<int>(ny);
