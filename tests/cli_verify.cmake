@@ -143,3 +143,10 @@ file(WRITE ${OUT}/stl-stock.setup.toml "[stock]\nshape = \"stl\"\nfile = \"stock
 run_expect(0 "an STL stock" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/stl-stock.setup.toml --design ${OUT}/design.stl)
 expect_text("${out}" "stock          STL ${OUT}/stock.stl" "the STL stock named")
 expect_text("${out}" "(850000 cells beyond the tolerance)" "the same stock left as the box's")
+# the STL files read are inputs: no output is written over them
+run_expect(2 "--part over the design" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/stl-stock.setup.toml
+           --design ${OUT}/design.stl --part ${OUT}/design.stl)
+run_expect(2 "-o over the STL stock" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/stl-stock.setup.toml
+           --format csv -o ${OUT}/stock.stl)
+file(READ ${OUT}/stock.stl head LIMIT 9)
+expect_text("${head}" "solid box" "the stock's STL kept")

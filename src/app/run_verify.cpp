@@ -163,6 +163,16 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
 
 RunVerification::~RunVerification() = default;
 
+std::vector<std::string> RunVerification::stl_files() const {
+  std::vector<std::string> out;
+  if (setup_.stock)
+    if (const auto* s = std::get_if<sim::StlFile>(&*setup_.stock)) out.push_back(s->path);
+  for (const sim::Fixture& f : setup_.fixtures)
+    if (const auto* s = std::get_if<sim::StlFile>(&f.shape)) out.push_back(s->path);
+  if (!args_.design.empty()) out.push_back(args_.design);
+  return out;
+}
+
 void RunVerification::lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
                             const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse) {
   std::optional<sim::Stock> stock = setup_.stock;

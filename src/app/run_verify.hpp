@@ -48,6 +48,8 @@ public:
   // Writes --part; throws io::OutputError.
   void write_part(const std::vector<std::string>& inputs);
   const report::VerifyReport& report() const { return report_; }
+  // The STL files read: the setup's stock and fixtures, --design.
+  std::vector<std::string> stl_files() const;
   // The cut stock of a mill; null when nothing was verified or on a lathe.
   const sim::ZMap* map() const { return verifier_ ? &verifier_->map() : nullptr; }
 
