@@ -6,6 +6,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <random>
+
 #include "sim/design_check.hpp"
 #include "sim/mesh_top.hpp"
 #include "support/meshes.hpp"
@@ -136,4 +139,49 @@ TEST(DesignCheck, AWallWithinTheToleranceIsNoFalseAlarm) {
   const Checked tight = check(channel(2.03));
   ASSERT_EQ(tight.of("NC2087").size(), 2u);
   EXPECT_NEAR(tight.result.gouge.amount, 0.04, 1e-9);
+}
+
+TEST(DesignCheck, RandomPartsAgainstEveryCellSearched) {
+  // an independent reference: every cell of the map searched (no rings), the rule as stated:
+  // within ceil(min(vertical / cell, tol / cell + 2)) cells, the nearest centre on the other side
+  std::mt19937 random(2087);
+  std::uniform_int_distribution<int> level(0, 8);
+  const double cell = 0.5, tol = 0.3;
+  for (int round = 0; round < 20; ++round) {
+    sim::ZMap map(sim::Box{{0, 0, -10}, {15, 15, 0}}, cell);  // 30 x 30
+    const int nx = map.nx(), ny = map.ny();
+    std::vector<double> design(static_cast<std::size_t>(nx) * ny);
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        map.start_cell(i, j, -0.25 * level(random));  // plateaus, so that equal heights occur
+        design[static_cast<std::size_t>(j) * nx + i] = level(random) == 8 ? -INFINITY : -0.25 * level(random);
+      }
+    const std::vector<std::uint32_t> by(design.size(), 0);
+    const sim::BlockAt block{nullptr, 1};
+    const sim::DesignResult r = sim::check_design({&map, design, by, {&block, 1}, {nullptr, 2}, "d.stl", tol});
+    sim::DesignExtreme gouge, left;
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const double h = map.height(i, j), d = design[static_cast<std::size_t>(j) * nx + i];
+        const bool cuts = h < d - tol;
+        const double floor = std::max(d, -10.0), vertical = cuts ? d - h : h - floor;
+        if (!cuts && !(h > floor + tol)) continue;
+        const double reach = std::ceil(std::min(vertical / cell, tol / cell + 2));
+        double amount = vertical;
+        for (int jj = 0; jj < ny; ++jj)
+          for (int ii = 0; ii < nx; ++ii) {
+            const double far = std::hypot(ii - i, jj - j), t = design[static_cast<std::size_t>(jj) * nx + ii];
+            if (far <= reach && (cuts ? t <= h + 1e-9 : t >= h - 1e-9)) amount = std::min(amount, far * cell);
+          }
+        if (!(amount > tol)) continue;
+        sim::DesignExtreme& e = cuts ? gouge : left;
+        ++e.cells;
+        e.amount = std::max(e.amount, amount);
+      }
+    EXPECT_EQ(r.gouge.cells, gouge.cells) << round;
+    EXPECT_EQ(r.stock_left.cells, left.cells) << round;
+    EXPECT_NEAR(r.gouge.amount, gouge.amount, 1e-12) << round;
+    EXPECT_NEAR(r.stock_left.amount, left.amount, 1e-12) << round;
+    EXPECT_GT(gouge.cells + left.cells, 0u);
+  }
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -167,4 +168,46 @@ TEST(MeshTop, PyramidHeightsAtTheCellCentres) {
       }
     }
   EXPECT_EQ(covered, 26 * 26);  // centres +-0.375 .. +-9.375
+}
+
+TEST(MeshTop, RandomTrianglesAgainstAVerticalRayEachOne) {
+  // an independent reference: each cell centre's vertical ray against every triangle by
+  // Moller-Trumbore (the ray from below, z along it), the highest hit
+  std::mt19937 random(36);
+  std::uniform_real_distribution<double> xy(-10, 10), z(-5, 5);
+  sim::Mesh m;
+  for (int t = 0; t < 40; ++t) {
+    const auto n = static_cast<std::uint32_t>(m.vertices.size());
+    for (int v = 0; v < 3; ++v) m.vertices.push_back({xy(random), xy(random), z(random)});
+    m.triangles.push_back({n, n + 1, n + 2});
+  }
+  const sim::ZMap grid(sim::Box{{-10, -10, -5}, {10, 10, 5}}, 0.37);
+  const std::vector<double> top = sim::mesh_top(m, grid);
+  int covered = 0;
+  for (int j = 0; j < grid.ny(); ++j)
+    for (int i = 0; i < grid.nx(); ++i) {
+      const double ox = grid.cell_x(i), oy = grid.cell_y(j), oz = -100;  // the ray (ox, oy, oz) + s (0, 0, 1)
+      double best = -std::numeric_limits<double>::infinity();
+      for (const auto& t : m.triangles) {
+        const sim::Point3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+        const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double p[3] = {-e2[1], e2[0], 0};  // (0, 0, 1) x e2
+        const double det = e1[0] * p[0] + e1[1] * p[1];
+        if (std::abs(det) < 1e-12) continue;
+        const double s[3] = {ox - a[0], oy - a[1], oz - a[2]};
+        const double u = (s[0] * p[0] + s[1] * p[1]) / det;
+        const double q[3] = {s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2], s[0] * e1[1] - s[1] * e1[0]};
+        const double v = q[2] / det;
+        if (u < 0 || v < 0 || u + v > 1) continue;
+        best = std::max(best, oz + (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det);
+      }
+      const double got = top[static_cast<std::size_t>(j) * grid.nx() + i];
+      if (std::isinf(best)) {
+        EXPECT_TRUE(std::isinf(got)) << i << " " << j;
+      } else {
+        ++covered;
+        EXPECT_NEAR(got, best, 1e-9) << i << " " << j;
+      }
+    }
+  EXPECT_GT(covered, 1000);  // of 55 x 55
 }
