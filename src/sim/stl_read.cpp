@@ -57,6 +57,14 @@ Mesh parse_binary(std::string_view bytes, const std::string& origin, double scal
   return mesh;
 }
 
+// A word of the file as a message shows it: 40 characters at most, control bytes as '?'.
+std::string shown(std::string_view w) {
+  std::string s(w.substr(0, 40));
+  for (char& c : s)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
+  return w.size() > 40 ? s + "..." : s;
+}
+
 // An ASCII STL's words, each with its line and column.
 class Words {
 public:
@@ -82,7 +90,8 @@ public:
     const std::string_view w = next(what);
     double v = 0;
     const char* end = w.data() + w.size();
-    const auto [p, ec] = std::from_chars(w.data(), end, v);
+    const char* from = w.size() > 1 && w[0] == '+' && w[1] != '-' ? w.data() + 1 : w.data();  // "+1.5" too
+    const auto [p, ec] = std::from_chars(from, end, v);
     if (ec == std::errc::result_out_of_range) fail_word(fmt::format("{} '{}' is out of range", what, shown(w)));
     if (ec != std::errc() || p != end) fail_word(fmt::format("'{}' where {} (a number) was expected", shown(w), what));
     if (!std::isfinite(v)) fail_word(fmt::format("{} is {}, not a finite number", what, shown(w)));
@@ -96,12 +105,6 @@ public:
   }
 
 private:
-  static std::string shown(std::string_view w) {
-    std::string s(w.substr(0, 40));
-    for (char& c : s)
-      if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
-    return w.size() > 40 ? s + "..." : s;
-  }
   void skip() {
     for (; at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_])); ++at_)
       if (text_[at_] == '\n') ++line_, line_start_ = at_ + 1;
@@ -127,7 +130,7 @@ Mesh parse_ascii(std::string_view text, const std::string& origin, double scale)
         w.rest_of_line();
         break;
       }
-      if (word != "facet") w.fail_word(fmt::format("'{}' where 'facet' or 'endsolid' was expected", word.substr(0, 40)));
+      if (word != "facet") w.fail_word(fmt::format("'{}' where 'facet' or 'endsolid' was expected", shown(word)));
       if (mesh.triangles.size() >= kMostStlTriangles)
         w.fail_word(fmt::format("more than {} triangles: too large a file", kMostStlTriangles));
       w.expect("normal");

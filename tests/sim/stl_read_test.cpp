@@ -93,6 +93,9 @@ TEST(StlRead, AsciiWrittenByHand) {
   const sim::Mesh m = sim::parse_stl(kAsciiTetra, "tetra.stl");
   ASSERT_EQ(m.triangles.size(), 4u);
   EXPECT_EQ(m.vertices[m.triangles[3][2]], (sim::Point3{0, 0, 10}));  // 1e1
+  std::string plus = kAsciiTetra;  // a sign before a number, as some writers put it
+  plus.replace(plus.find("vertex 10 0 0"), 13, "vertex +1.0e+001 -0 +0");
+  EXPECT_EQ(sim::parse_stl(plus, "plus.stl").vertices[2], (sim::Point3{10, 0, 0}));
   EXPECT_DOUBLE_EQ(sim::enclosed_volume(m), 1000.0 / 6);  // the corner tetrahedron, 10^3 / 6
   // two solids in one file, names after solid and endsolid, CRLF line ends
   std::string two = std::string(kAsciiTetra) + kAsciiTetra;
