@@ -107,7 +107,8 @@ ascii_box(${OUT}/design.stl -20 20 -20 20 -10 0)
 file(WRITE ${OUT}/design.setup.toml "[stock]\nshape = \"box\"\nmin = [-20, -20, -10]\nmax = [20, 20, 0.5]\n[tools.1]\nkind = \"flat\"\ndiameter = 6\n")
 file(WRITE ${OUT}/design.nc "T1 M06\nM03 S1000\nG90 G00 X-25. Y0 Z5.\nG43 H1 Z5.\nG01 Z-0.5 F300.\nX25.\nG00 Z5.\nM30\n")
 run_expect(0 "run --design" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/design.setup.toml --design ${OUT}/design.stl)
-expect_text("${out}" "design         ${OUT}/design.stl, tol 0.01 mm, exact to the cell (0.0400 mm)" "the design named")
+expect_text("${out}" "design         ${OUT}/design.stl, tol 0.01 mm, exact to the cell (0.0400 mm); findings 2"
+            "the design named, its findings counted")
 # the slot 6 wide: 150 rows of cells beyond the tolerance, 1000 cells each; the rest of the top stock left
 expect_text("${out}" "gouge          0.500 mm at X" "the gouge")
 expect_text("${out}" "(150000 cells beyond the tolerance)" "the slot's cells")
@@ -115,7 +116,7 @@ expect_text("${out}" "stock left     0.500 mm at X" "the stock left")
 expect_text("${out}" "(850000 cells beyond the tolerance)" "the rest of the top")
 expect_text("${out}" "design.nc:6:1: warning: NC2087 the cut goes 0.500 mm into the design" "NC2087 at the slot's block")
 expect_text("${out}" "design.nc:8:1: warning: NC2088 at the end 0.500 mm of stock is left" "NC2088 at M30")
-expect_text("${out}" "findings       2" "both counted")
+expect_text("${out}" "findings       0" "none of the verifier's own")
 run_expect(0 "run --design --json" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/design.setup.toml --design ${OUT}/design.stl
            --tol 0.6 --json)
 expect_text("${out}" "\"design\": {" "the design in --json")
@@ -133,8 +134,6 @@ expect_text("${err}" "flat.stl: error: every vertex of the STL has Z = 0: a flat
 file(WRITE ${OUT}/short.stl "solid bad\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertx 1 0 0\n")
 run_expect(2 "a bad ASCII design" ${NCURVE} run ${OUT}/design.nc --design ${OUT}/short.stl)
 expect_text("${err}" "short.stl:5:4: error: 'vertx' where 'vertex' was expected" "the word's line and column")
-run_expect(2 "--tol without --design" ${NCURVE} run ${OUT}/design.nc --tol 0.1)
-expect_text("${err}" "--tol requires --design" "--tol alone")
 run_expect(2 "--design on a lathe" ${NCURVE} run ${SRC}/examples/lathe-mrc.nc --machine fanuc-lathe --design ${OUT}/design.stl)
 expect_text("${err}" "--design: the check against a design is a mill's" "a lathe refused")
 # an STL stock: the same block as an STL, the same cut

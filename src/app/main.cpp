@@ -48,6 +48,13 @@ int run_command(const app::RunArgs& a) {
     std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
     return 2;
   }
+  if (a.verify.curve.name.empty() && !a.verify.curve_extras.empty()) {
+    const std::string& word = a.verify.curve_extras.front();
+    const auto near = word.rfind("--", 0) == 0 ? app::nearest_name(word.substr(2), a.verify.curve.options) : std::nullopt;
+    std::cerr << "ncurve run: unexpected argument '" << nc::escape_controls(word) << "'"
+              << (near ? " (did you mean --" + *near + "?)" : "") << "\n";
+    return 2;
+  }
   const machine::MachineProfile& profile = setup.profile;
   machine::ProgramLibrary& lib = *setup.lib;
   if (const std::string why = app::plot_view_problem(profile, a.view); !why.empty()) {
@@ -208,7 +215,12 @@ int ncurve_main(int argc, char** argv) {
     std::cout << app::man_page(app, NCURVE_VERSION);
     return 0;
   }
-  if (c.run_command->parsed()) return run_command(c.run);
+  if (c.run_command->parsed()) {
+    c.run.verify.curve_extras = c.run_command->remaining();
+    c.run.verify.curve.command = "ncurve run";
+    c.run.verify.curve.options = app::long_options(*c.run_command);
+    return run_command(c.run);
+  }
   if (c.gen.command->parsed()) return app::gen_command(c.gen);
   if (c.helicoid.command->parsed()) return app::helicoid_command(c.helicoid);
   if (c.analyze.command->parsed()) return app::analyze_command(c.analyze);

@@ -196,7 +196,26 @@ double lowest_on_arc(const ArcCell& c, const ToolShape& tool) {
   return best;
 }
 
+// The arc seen from the vertical line through (x, y).
+ArcCell arc_cell(const Arc& arc, double x, double y) {
+  const double length = std::abs(arc.sweep), dir = arc.sweep < 0 ? -1.0 : 1.0;
+  ArcCell c{arc.radius, 0, 0, length, arc.z_start, length > 0 ? (arc.z_end - arc.z_start) / length : 0};
+  const double dx = x - arc.cx, dy = y - arc.cy;
+  c.d = std::hypot(dx, dy);
+  // the point's angle phi; beta = dir (start - phi), wrapped
+  const double phi = c.d > 0 ? std::atan2(dy, dx) : 0;
+  double beta = std::remainder(dir * (arc.start_angle - phi), kTwoPi);
+  if (beta >= std::numbers::pi) beta -= kTwoPi;
+  c.beta = beta;
+  return c;
+}
+
 }  // namespace
+
+double lowest_over(const ToolShape& tool, const Arc& arc, double x, double y) {
+  if (!(arc.radius >= 0) || !std::isfinite(arc.sweep)) return kUnreached;
+  return lowest_on_arc(arc_cell(arc, x, y), tool);
+}
 
 void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
   last_ = {};
@@ -227,7 +246,6 @@ void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
   const double outer = rho + r;
   int j0, j1;
   rows_of(by0 - r - pad, by1 + r + pad, j0, j1);
-  ArcCell c{rho, 0, 0, length, arc.z_start, length > 0 ? (arc.z_end - arc.z_start) / length : 0};
   for (int j = j0; j < j1; ++j) {
     const double y = cell_y(j), dy = y - arc.cy;
     const double w2 = outer * outer - dy * dy;
@@ -238,16 +256,7 @@ void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
     if (i1 <= i0) continue;
     double* hr = row(j).data();
     before_row(hr + i0, i1 - i0);
-    for (int i = i0; i < i1; ++i) {
-      const double dx = cell_x(i) - arc.cx;
-      c.d = std::hypot(dx, dy);
-      // the cell's angle phi; beta = dir (start - phi), wrapped
-      const double phi = c.d > 0 ? std::atan2(dy, dx) : 0;
-      double beta = std::remainder(dir * (arc.start_angle - phi), kTwoPi);
-      if (beta >= std::numbers::pi) beta -= kTwoPi;
-      c.beta = beta;
-      hr[i] = std::min(hr[i], lowest_on_arc(c, tool));
-    }
+    for (int i = i0; i < i1; ++i) hr[i] = std::min(hr[i], lowest_on_arc(arc_cell(arc, cell_x(i), y), tool));
     after_row(hr + i0, i0, j, i1 - i0);
   }
 }

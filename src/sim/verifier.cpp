@@ -223,6 +223,7 @@ void Verifier::cut(const machine::Move& m) {
   }
   if (path->arc) map_.cut_arc(tool_->shape, *path->arc);
   else map_.cut_line(tool_->shape, path->a, path->b);
+  if (log_) log_->add(tool_->shape, path->a, path->b, path->arc, m);
   ++counts_.cut;
   const CutReport r = map_.last_cut();
   if (r.removed()) volume_by_tool_[tool_number_] += r.volume;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "machine/move.hpp"
+#include "sim/cut_log.hpp"
 #include "sim/finding.hpp"
 #include "sim/setup.hpp"
 #include "sim/tool_shape.hpp"
@@ -96,6 +97,9 @@ public:
   };
   const Counts& counts() const { return counts_; }
 
+  // Keep every cut in `log` as well (for measuring walls afterwards).
+  void log_cuts(CutLog* log) { log_ = log; }
+
   // Each fixture, checked.
   std::vector<std::string> fixtures_checked() const;
 
@@ -135,6 +139,7 @@ private:
   std::map<int, bool> speed_warned_;  // by T number
   std::vector<BlockAt> cut_blocks_;
   BlockAt last_block_;
+  CutLog* log_ = nullptr;
 };
 
 // The box a Z-map covers for a stock: a box itself, a cylinder's or tube's square about the Z axis.

@@ -43,6 +43,11 @@ struct CutReport {
 // the exact lowest point, mm.
 inline constexpr double kLowestTolerance = 1e-9;
 
+// The lowest point of a tool's swept envelope on the vertical line through (x, y), the height a
+// cell centred there would take (kUnreached where the tool does not pass over it).
+double lowest_over(const ToolShape& tool, const Point3& a, const Point3& b, double x, double y);
+double lowest_over(const ToolShape& tool, const Arc& arc, double x, double y);
+
 class ZMap {
 public:
   // cell 0: the stock's shorter side in min_cells cells
