@@ -9,9 +9,9 @@
 
 namespace ncurve::sim {
 
-// The most triangles read from one file (a binary STL of 1 GB): a larger file is refused before
-// anything is allocated for it.
-inline constexpr std::size_t kMostStlTriangles = 20'000'000;
+// The most triangles read from one file (a binary STL of 500 MB, 840 MB as a Mesh): a larger file
+// is refused before anything is allocated for it.
+inline constexpr std::size_t kMostStlTriangles = 10'000'000;
 
 // The mesh of an STL file's bytes, every coordinate times `scale` (25.4: a file in inches); three
 // vertices a triangle (no vertex shared), the normals ignored. A file whose size is exactly that of
