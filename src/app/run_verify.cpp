@@ -178,6 +178,7 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   vo.cut_moves = args.cut_moves;
   vo.profile = &profile;
   vo.mark_cells = design.has_value();
+  vo.check_reference = !report_.stock_default;
   try {
     verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo, setup_.fixtures);
   } catch (const std::invalid_argument& e) {

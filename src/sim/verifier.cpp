@@ -164,9 +164,38 @@ Verifier::Verifier(const Stock& stock, MillTools& tools, std::optional<int> spin
   }
 }
 
+void Verifier::on_setup(const machine::Setup& s) {
+  if (!reference_found_) origin_ = s.origin;
+}
+
+// NC2089: reference position 1 (where G28 takes the tool and where a machine starts) inside the
+// stock in the work coordinates in force: the profile's reference point or work offsets, or the
+// setup's stock, are not the machine's. The spindle's gauge point is checked, which the tool's
+// tip is at or below.
+void Verifier::check_reference(const machine::Move& m) {
+  const machine::AxisVector origin = *origin_;
+  origin_.reset();
+  const machine::AxisVector& ref = options_.profile->reference_points[0];
+  const Point3 p{ref[0] - origin[0], ref[1] - origin[1], ref[2] - origin[2]};
+  const Box& b = map_.stock();
+  const double depth = b.max[2] - p[2];
+  if (p[0] < b.min[0] || p[0] > b.max[0] || p[1] < b.min[1] || p[1] > b.max[1] || p[2] < b.min[2] ||
+      !(depth > kFindingDepth))
+    return;
+  find(m, "NC2089",
+       fmt::format("the machine's reference position 1 is inside the stock in the work coordinates in force: "
+                   "X{:.3f} Y{:.3f} Z{:.3f}, {:.3f} mm below the stock's top; G28 would drive the tool into the part "
+                   "and the machine starts there: give the machine's own reference point and work offsets in the "
+                   "profile ([reference_points], [work_offsets]) or the stock where it is clamped (the setup)",
+                   p[0], p[1], p[2], depth),
+       p, depth);
+  reference_found_ = true;
+}
+
 void Verifier::on_move(const machine::Move& m) {
   using machine::MoveKind;
   if (m.line != 0) last_block_ = {m.file, m.line};
+  if (origin_ && options_.profile && options_.check_reference && m.is_motion()) check_reference(m);
   switch (m.kind) {
     case MoveKind::tool_change: {
       tool_number_ = m.code;

@@ -68,6 +68,7 @@ struct VerifyOptions {
   std::uint64_t cut_moves = UINT64_MAX;   // only the first so many motions are cut (a debugger's step)
   const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
   bool mark_cells = false;  // keep the block that last lowered each cell (a design's check)
+  bool check_reference = true;  // NC2089 (with a profile): off where the stock is a guess (the default box)
 };
 
 // A block of the program: where a finding found after the run is said.
@@ -82,6 +83,8 @@ public:
   Verifier(const Stock& stock, MillTools& tools, std::optional<int> spindle, VerifyOptions options = {},
            const std::vector<Fixture>& fixtures = {});
   void on_move(const machine::Move& m) override;
+  // A new work zero: the reference point is checked against the stock at the next motion.
+  void on_setup(const machine::Setup& s) override;
 
   const ZMap& map() const { return map_; }
   const std::vector<Finding>& findings() const { return findings_; }
@@ -121,6 +124,7 @@ private:
   void check_fixtures(const machine::Move& m);
   void check(const machine::Move& m, const CutReport& r);
   void find(const machine::Move& m, const char* code, std::string message, const Point3& at, double amount);
+  void check_reference(const machine::Move& m);
 
   ZMap map_;
   std::vector<FixtureMap> fixtures_;
@@ -140,6 +144,8 @@ private:
   std::vector<BlockAt> cut_blocks_;
   BlockAt last_block_;
   CutLog* log_ = nullptr;
+  std::optional<machine::AxisVector> origin_;  // the work zero in machine coordinates, to check the reference point
+  bool reference_found_ = false;               // NC2089 is said once
 };
 
 // The box a Z-map covers for a stock: a box itself, a cylinder's or tube's square about the Z axis.
