@@ -91,6 +91,7 @@ int run_command(const app::RunArgs& a) {
   if (a.verify.on()) {
     try {
       verify.emplace(a.verify, profile, lib, setup.options);
+      for (const std::string& f : verify->stl_files()) setup.inputs.push_back(f);  // never an output
     } catch (const std::bad_alloc&) {
       throw;
     } catch (const std::exception& e) {

@@ -67,6 +67,16 @@ nlohmann::json findings_json(const std::vector<sim::Finding>& findings) {
   return j;
 }
 
+std::string extreme_text(const sim::DesignExtreme& e) {
+  if (e.cells == 0) return "none beyond the tolerance";
+  return fmt::format("{:.3f} mm at X{:.3f} Y{:.3f} Z{:.3f} ({} cells beyond the tolerance)", e.amount, e.at[0], e.at[1],
+                     e.at[2], e.cells);
+}
+
+nlohmann::json extreme_json(const sim::DesignExtreme& e) {
+  return {{"amount_mm", e.amount}, {"at", e.cells ? nlohmann::json(e.at) : nlohmann::json(nullptr)}, {"cells", e.cells}};
+}
+
 const char* design_words(sim::WallDesign d) {
   return d == sim::WallDesign::groove ? "groove: the tool's axis on the curve" : "edge: the part's wall on the curve";
 }
@@ -197,6 +207,13 @@ std::string verify_text(const VerifyReport& r) {
   out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out() + walls,
                      v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size() + walls) : std::string());
   if (r.curve) out += curve_text(*r.curve, 15);
+  if (r.design) {
+    out += fmt::format("  design         {}, tol {:g} mm, exact to the cell ({:.4f} mm); findings {}{}\n", r.design_file,
+                       r.design->tol, map.cell(), r.design->findings.size() + r.design->left_out,
+                       r.design->left_out ? fmt::format(" ({} listed)", r.design->findings.size()) : std::string());
+    out += fmt::format("  gouge          {}\n", extreme_text(r.design->gouge));
+    out += fmt::format("  stock left     {}\n", extreme_text(r.design->stock_left));
+  }
   if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
   return out;
 }
@@ -240,6 +257,14 @@ nlohmann::json verify_json(const VerifyReport& r) {
   j["findings_left_out"] = v.findings_left_out();
   j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
   if (r.curve) j["curve"] = curve_json(*r.curve);
+  if (r.design)
+    j["design"] = {{"file", r.design_file},
+                   {"tol_mm", r.design->tol},
+                   {"cell_mm", map.cell()},
+                   {"gouge", extreme_json(r.design->gouge)},
+                   {"stock_left", extreme_json(r.design->stock_left)},
+                   {"findings", findings_json(r.design->findings)},
+                   {"findings_left_out", r.design->left_out}};
   return j;
 }
 

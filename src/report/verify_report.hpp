@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/design_check.hpp"
 #include "sim/curve_walls.hpp"
 #include "sim/lathe_section_sink.hpp"
 #include "sim/verifier.hpp"
@@ -34,6 +35,8 @@ struct VerifyReport {
   std::vector<std::string> tools;           // each tool used, in words
   std::vector<std::string> fixtures;        // each fixture and whether it was checked
   std::string part_file;                    // where --part wrote the part
+  const sim::DesignResult* design = nullptr;  // --design's check, after the run
+  std::string design_file;
   std::optional<CurveCheck> curve;
 };
 

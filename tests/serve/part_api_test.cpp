@@ -90,6 +90,16 @@ TEST(PartApi, BoundsAndBadSetups) {
   Answer bad = call({{"program", kProgram}, {"setup", "[stock]\nshape = \"ball\"\n"}, {"setup_name", "job.setup.toml"}});
   EXPECT_EQ(bad.status, 400);
   EXPECT_NE(bad.body.find("job.setup.toml:2:"), std::string::npos) << bad.body;
+  // an STL stock or fixture names a file on the server: a setup sent as text reads none, 400
+  for (const char* stl : {"[stock]\nshape = \"stl\"\nfile = \"/etc/passwd\"\n",
+                          "[[fixtures]]\nname = \"f\"\nshape = \"stl\"\nfile = \"/etc/passwd\"\n"}) {
+    Answer named = call({{"program", kProgram}, {"setup", stl}, {"setup_name", "job.setup.toml"}});
+    EXPECT_EQ(named.status, 400);
+    EXPECT_NE(named.body.find("job.setup.toml: error: an STL stock or fixture names a file, and a setup sent as text "
+                              "reads none"),
+              std::string::npos)
+        << named.body;
+  }
   // "cells": the shorter side in so many cells (a debugger's step asks 400); a bad count is a 400
   const json coarse = run({{"program", kProgram}, {"setup", kSetup}, {"cells", 100}});
   EXPECT_EQ(coarse["summary"]["verify"]["zmap"]["cells"], json::array({100, 100}));
