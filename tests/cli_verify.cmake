@@ -116,7 +116,7 @@ expect_text("${out}" "stock left     0.500 mm at X" "the stock left")
 expect_text("${out}" "(850000 cells beyond the tolerance)" "the rest of the top")
 expect_text("${out}" "design.nc:6:1: warning: NC2087 the cut goes 0.500 mm into the design" "NC2087 at the slot's block")
 expect_text("${out}" "design.nc:8:1: warning: NC2088 at the end 0.500 mm of stock is left" "NC2088 at M30")
-expect_text("${out}" "findings       0" "none of the verifier's own")
+expect_text("${out}" "findings       2" "the design's listed with the verifier's")
 run_expect(0 "run --design --json" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/design.setup.toml --design ${OUT}/design.stl
            --tol 0.6 --json)
 expect_text("${out}" "\"design\": {" "the design in --json")
