@@ -145,6 +145,7 @@ int run_command(const app::RunArgs& a) {
   if (gcode) gcode->finish();
   if (verify) {
     verify->finish(result);
+    if (plot && verify->map()) plot->set_part(sim::part_grid(*verify->map()));
     if (html && verify->map()) {
       html->set_part(sim::part_grid(*verify->map()));
       if (verify->report().curve) html->set_deviation(report::deviation_json(*verify->report().curve));
