@@ -201,8 +201,10 @@ void RunVerification::lathe(const machine::MachineProfile& profile, const machin
     return;
   }
   section_ = std::make_unique<sim::LatheSection>(*bar);
+  sim::LatheSinkOptions so;
+  so.profile = &profile;
   section_sink_ = std::make_unique<sim::LatheSectionSink>(*section_, setup_.tools, profile.lathe_offsets,
-                                                          setup_.tool_in_spindle);
+                                                          setup_.tool_in_spindle, so);
   report_.section = section_.get();
   report_.section_sink = section_sink_.get();
   for (const sim::Fixture& f : setup_.fixtures) report_.fixtures.push_back(f.name + ": not checked on a lathe yet");

@@ -1,10 +1,13 @@
 // The move stream of a lathe cut into its half-section: each rapid, line, thread cut and ZX arc with
 // the tool the turret holds (rapids cut too; telling that apart is the checks' work).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include "machine/move.hpp"
@@ -16,15 +19,22 @@
 
 namespace ncurve::sim {
 
+// What the sink needs beyond the tools: how the machine moves a rapid, and the insert's size.
+struct LatheSinkOptions {
+  const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
+  InsertSize size;
+};
+
 class LatheSectionSink final : public machine::MoveSink {
 public:
   // The tool changes on each tool change event, a lathe's T code (T0203: tool 2, offset 3). Its shape
   // is the library's entry for the tool number (lathe_tool_number), else the default insert of the
   // offset set's nose radius (geometry plus wear) and tip (an offset the machine does not hold: a
   // sharp point of tip 0); tool number 0 is no tool. `t_code` is the T code in force before the first
-  // tool change.
+  // tool change. A rapid is cut along the path the profile's positioning gives it (non-linear: the
+  // dog-leg of each axis at its own rate), straight without a profile.
   LatheSectionSink(LatheSection& section, ToolLibrary tools, std::map<int, machine::LatheOffset> offsets = {},
-                   std::optional<int> t_code = std::nullopt, InsertSize size = {});
+                   std::optional<int> t_code = std::nullopt, LatheSinkOptions options = {});
 
   void on_move(const machine::Move& m) override;
 
@@ -40,17 +50,20 @@ public:
   std::map<int, double> volume_by_tool() const;
 
   // NC2080: the rapids that removed material (more than 1 um times the rapid's length of section
-  // area), once a block, the first 200.
+  // area, the length of its path), once a block and code, the first 200.
   const std::vector<Finding>& findings() const { return findings_; }
   std::size_t findings_left_out() const { return left_out_; }
 
 private:
   void change_tool(int t_code);
+  void rapid(const machine::Move& m);
+  void find(const machine::Move& m, const char* code, std::string message, const std::array<double, 3>& at,
+            double amount);
 
   LatheSection& section_;
   ToolLibrary tools_;
   std::map<int, machine::LatheOffset> offsets_;
-  InsertSize size_;
+  LatheSinkOptions options_;
   std::map<int, ToolOutline> outlines_;  // by T code
   const ToolOutline* tool_ = nullptr;
   int tool_number_ = 0;
@@ -59,7 +72,7 @@ private:
   Counts counts_;
   std::vector<Finding> findings_;
   std::size_t left_out_ = 0;
-  std::set<std::pair<const nc::SourceFile*, std::uint32_t>> found_at_;
+  std::set<std::tuple<std::string, const nc::SourceFile*, std::uint32_t>> found_at_;  // code, block
 };
 
 }  // namespace ncurve::sim

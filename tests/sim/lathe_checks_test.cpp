@@ -1,0 +1,120 @@
+// The lathe's checks beyond the cut: a rapid moved as the machine moves it (NC2080 along its dog-leg),
+// the holder meeting the bar (NC2085) and the tool meeting a fixture (NC2086). The expected areas are
+// worked by hand from the tools' outlines (docs/verify.md, "Lathe: the checks").
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "sim/lathe_section.hpp"
+#include "sim/lathe_section_sink.hpp"
+#include "support/run_program.hpp"
+
+using namespace ncurve;
+using namespace ncurve::sim;
+
+namespace {
+
+Cylinder bar(double diameter, double length, double face = 0) {
+  Cylinder c;
+  c.diameter = diameter;
+  c.length = length;
+  c.face = face;
+  return c;
+}
+
+// A tip-3 insert of nose radius r in T1.
+ToolLibrary turning(double r, double holder_width = 0, double holder_length = 0) {
+  LatheInsert i;
+  i.nose_radius = r;
+  i.tip = 3;
+  i.holder_width = holder_width;
+  i.holder_length = holder_length;
+  ToolLibrary lib;
+  lib.tools[1] = i;
+  return lib;
+}
+
+// A lathe whose X and Z rapid at the same rate, its positioning linear or not.
+machine::MachineProfile lathe(bool linear_rapid) {
+  machine::MachineProfile p = machine::default_lathe();
+  p.rapid_rate[0] = p.rapid_rate[2] = 20000;
+  p.linear_rapid = linear_rapid;
+  return p;
+}
+
+struct Checked {
+  std::vector<Finding> findings;
+  LatheSectionSink::Counts counts;
+  double area_removed = 0;
+  std::vector<const Finding*> of(const std::string& code) const {
+    std::vector<const Finding*> out;
+    for (const Finding& f : findings)
+      if (f.diagnostic.code == code) out.push_back(&f);
+    return out;
+  }
+};
+
+// The program run on the profile and its moves given to a sink on the bar; `rapids` is the profile
+// the sink moves rapids by (none: straight).
+Checked check(const std::string& program, const Cylinder& stock, const ToolLibrary& lib,
+              const machine::MachineProfile& profile, const machine::MachineProfile* rapids) {
+  auto r = test::run(program, profile);
+  EXPECT_TRUE(r.result.ok());
+  LatheSection section(stock);
+  LatheSinkOptions o;
+  o.profile = rapids;
+  LatheSectionSink sink(section, lib, {}, std::nullopt, o);
+  for (const auto& m : r.moves) sink.on_move(m);
+  return {sink.findings(), sink.counts(), section.area_removed()};
+}
+
+// From radius 40 at Z-20 (beside a D50 bar, outside it) to radius 20 at Z10 (in front of its face).
+// X programmed as a diameter.
+const char* kDogLeg = "G21 G99 G18\nG00 X80. Z-20.\nT0101\nG00 X40. Z10.\nM30\n";
+
+}  // namespace
+
+// Non-linear positioning with X and Z at the same rate: X (20 to go) arrives first, so the tip runs
+// at 45 degrees from (Z-20, radius 40) to the corner (Z0, radius 20), then along Z to Z10. The
+// diagonal crosses the bar's corner: the triangle (Z0, r20), (Z0, r25), (Z-5, r25), 12.5 mm^2, less
+// the band the nose does not reach. A tip-3 insert lies at and above and right of its tip, and its
+// nose circle of radius r about tip + (r, r) reaches r (sqrt 2 - 1) short of the tip's line across a
+// 45-degree move: the triangle's hypotenuse (5 / sqrt 2 from its right angle) moves in by that much,
+// and the area scales by the square of the height left. The straight line (its Z0 at radius 26.67)
+// misses the bar.
+TEST(LatheChecks, RapidDogLegCrossesTheBar) {
+  const double r = 0.4;
+  const double h = 5 / std::sqrt(2.0), w = r * (std::sqrt(2.0) - 1);
+  const double expected = 12.5 * ((h - w) / h) * ((h - w) / h);  // 11.356
+  const auto profile = lathe(false);
+  const Checked c = check(kDogLeg, bar(50, 100), turning(r), profile, &profile);
+  ASSERT_EQ(c.of("NC2080").size(), 1u);
+  const Finding& f = *c.of("NC2080")[0];
+  EXPECT_EQ(f.diagnostic.span.line, 4u);
+  EXPECT_NEAR(f.amount, expected, 0.01);
+  EXPECT_NEAR(c.area_removed, expected, 0.01);
+  EXPECT_NE(f.diagnostic.message.find("corner at Z0.000 radius 20.000"), std::string::npos) << f.diagnostic.message;
+}
+
+// The same rapid with linear positioning (No.1401#1 = 1), or cut straight (no profile), stays clear.
+TEST(LatheChecks, RapidStraightLineMissesTheBar) {
+  const auto linear = lathe(true);
+  const Checked c = check(kDogLeg, bar(50, 100), turning(0.4), linear, &linear);
+  EXPECT_TRUE(c.findings.empty());
+  EXPECT_EQ(c.area_removed, 0);
+  const Checked straight = check(kDogLeg, bar(50, 100), turning(0.4), linear, nullptr);
+  EXPECT_TRUE(straight.findings.empty());
+}
+
+// With the fanuc-lathe's rates (X 20000, Z 24000 mm/min) the corner moves: X arrives after 20 / 20000
+// min, when Z has gone 24, at Z4: the diagonal (slope 20 / 24) crosses radius 25 at Z-2 and Z0 at
+// radius 23.33; the triangle (Z0, r23.33), (Z0, r25), (Z-2, r25) is 1.667 mm^2 less the nose's band.
+TEST(LatheChecks, RapidDogLegFollowsEachAxisRate) {
+  auto profile = lathe(false);
+  profile.rapid_rate[2] = 24000;
+  const Checked c = check(kDogLeg, bar(50, 100), turning(0), profile, &profile);
+  ASSERT_EQ(c.of("NC2080").size(), 1u);
+  EXPECT_NEAR(c.of("NC2080")[0]->amount, 0.5 * 2 * (25 - 20 - 20.0 * 4 / 24), 1e-3);
+}
