@@ -24,24 +24,25 @@ void LatheSectionSink::change_tool(int t_code) {
   }
   tool_number_ = lathe_tool_number(t_code);
   tool_ = nullptr;
+  holder_in_ = false;
   if (tool_number_ == 0) return;
   auto it = outlines_.find(t_code);
   if (it == outlines_.end()) {
-    ToolOutline outline;
+    TurretTool tool;
     if (auto t = tools_.tools.find(tool_number_); t != tools_.tools.end()) {
-      outline = tool_outline(t->second, options_.size);
+      tool.cutting = tool_outline(t->second, options_.size);
+      tool.bodies = lathe_bodies(t->second, tool.cutting);
     } else {
       auto o = offsets_.find(t_code % 100);
       const machine::LatheOffset offset = o == offsets_.end() ? machine::LatheOffset{} : o->second;
       const double tip = offset.tip;
-      outline = insert_outline(
+      tool.cutting = insert_outline(
           default_insert(offset.r + offset.r_wear, std::isfinite(tip) && tip >= 0 && tip <= 9 ? static_cast<int>(tip) : 0),
           options_.size);
     }
-    it = outlines_.emplace(t_code, std::move(outline)).first;
+    it = outlines_.emplace(t_code, std::move(tool)).first;
   }
-  tool_ = &it->second;
-  if (!tool_ || tool_->empty()) tool_ = nullptr;
+  tool_ = it->second.cutting.empty() ? nullptr : &it->second;
 }
 
 void LatheSectionSink::on_move(const machine::Move& m) {
@@ -56,9 +57,44 @@ void LatheSectionSink::on_move(const machine::Move& m) {
     ++counts_.not_zx_arc;
     return;
   }
+  holder_was_ = holder_in_;
+  holder_in_ = false;
   if (m.kind == MoveKind::rapid) return rapid(m);
-  if (section_.cut(*tool_, m)) ++counts_.cut;
-  else ++counts_.not_finite;
+  if (!section_.cut(tool_->cutting, m)) {
+    ++counts_.not_finite;
+    return;
+  }
+  ++counts_.cut;
+  check_bodies(m, m);
+}
+
+namespace {
+
+// The length of the tip's path along a line or an arc of the ZX plane, mm.
+double path_length(const machine::Move& m) {
+  if (m.kind != machine::MoveKind::arc) return std::hypot(m.end[0] - m.start[0], m.end[2] - m.start[2]);
+  const double r0 = std::hypot(m.start[0] - m.center[0], m.start[2] - m.center[2]);
+  const double r1 = std::hypot(m.end[0] - m.center[0], m.end[2] - m.center[2]);
+  return std::fabs(m.sweep) * std::max(r0, r1);
+}
+
+}  // namespace
+
+void LatheSectionSink::check_bodies(const machine::Move& m, const machine::Move& piece) {
+  const double limit = 1e-3 * std::max(path_length(piece), 1.0);
+  for (const LatheBody& body : tool_->bodies) {
+    const LatheSection::Overlap o = section_.overlap(body.outline, piece);
+    if (!(o.area > limit)) continue;
+    holder_in_ = true;
+    if (holder_was_) return;  // the same contact going on: said at the move that made it
+    find(m, "NC2085",
+         fmt::format("the {} of T{} meets the bar: {:.3f} mm^2 of the half-section inside it along the move, about "
+                     "Z{:.3f} radius {:.3f} (Z{:.3f}..{:.3f}, radius {:.3f}..{:.3f}): a crash; cut less deep at once or "
+                     "hold the insert so that the holder clears the part",
+                     body.what, tool_number_, o.area, o.centroid.x, o.centroid.y, o.lo.x, o.hi.x, o.lo.y, o.hi.y),
+         {o.centroid.y, 0, o.centroid.x}, o.area);
+    return;
+  }
 }
 
 void LatheSectionSink::rapid(const machine::Move& m) {
@@ -78,8 +114,9 @@ void LatheSectionSink::rapid(const machine::Move& m) {
   for (std::size_t k = 1; k < path.size(); ++k) {
     leg.start = path[k - 1];
     leg.end = path[k];
-    section_.cut(*tool_, leg);
-    length += std::hypot(leg.end[0] - leg.start[0], leg.end[2] - leg.start[2]);
+    section_.cut(tool_->cutting, leg);
+    length += path_length(leg);
+    check_bodies(m, leg);
   }
   ++counts_.cut;
   const double removed = before - section_.area();

@@ -14,6 +14,7 @@
 #include "machine/profile.hpp"
 #include "sim/finding.hpp"
 #include "sim/insert_shape.hpp"
+#include "sim/lathe_holder.hpp"
 #include "sim/lathe_section.hpp"
 #include "sim/tool_library.hpp"
 
@@ -49,13 +50,21 @@ public:
   // The volume each tool number removed, mm^3 (the rapids with it included).
   std::map<int, double> volume_by_tool() const;
 
-  // NC2080: the rapids that removed material (more than 1 um times the rapid's length of section
-  // area, the length of its path), once a block and code, the first 200.
+  // The findings, once a block and code, the first 200:
+  // - NC2080: a rapid that removed material (more than 1 um times the length of its path of section
+  //   area);
+  // - NC2085: the holder (lathe_holder.hpp) swept into material at the move, after its cut (more than
+  //   1 um times the move's length, at least 1 mm, of area), said at the move that makes the contact.
   const std::vector<Finding>& findings() const { return findings_; }
   std::size_t findings_left_out() const { return left_out_; }
 
 private:
+  struct TurretTool {
+    ToolOutline cutting;
+    std::vector<LatheBody> bodies;
+  };
   void change_tool(int t_code);
+  void check_bodies(const machine::Move& m, const machine::Move& piece);
   void rapid(const machine::Move& m);
   void find(const machine::Move& m, const char* code, std::string message, const std::array<double, 3>& at,
             double amount);
@@ -64,8 +73,9 @@ private:
   ToolLibrary tools_;
   std::map<int, machine::LatheOffset> offsets_;
   LatheSinkOptions options_;
-  std::map<int, ToolOutline> outlines_;  // by T code
-  const ToolOutline* tool_ = nullptr;
+  std::map<int, TurretTool> outlines_;  // by T code
+  const TurretTool* tool_ = nullptr;
+  bool holder_was_ = false, holder_in_ = false;  // in material after the move before, after this one
   int tool_number_ = 0;
   double volume_at_change_ = 0;
   std::map<int, double> volume_by_tool_;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -117,4 +118,46 @@ TEST(LatheChecks, RapidDogLegFollowsEachAxisRate) {
   const Checked c = check(kDogLeg, bar(50, 100), turning(0), profile, &profile);
   ASSERT_EQ(c.of("NC2080").size(), 1u);
   EXPECT_NEAR(c.of("NC2080")[0]->amount, 0.5 * 2 * (25 - 20 - 20.0 * 4 / 24), 1e-3);
+}
+
+namespace {
+
+// A sharp 80-degree insert in a 95-degree holder (tip 3, clearance 5) reaches, from its tip, 12.7 /
+// sin 80 along each edge: its far corner is (cos 5 + sin 5) times that above the tip and beyond it in
+// Z, and its holder's shank starts there and runs up (+X) from the tip's Z towards +Z.
+double insert_height() {
+  const double deg = std::numbers::pi / 180;
+  return 12.7 / std::sin(80 * deg) * (std::cos(5 * deg) + std::sin(5 * deg));  // 13.970
+}
+
+std::string turn_pass(double diameter) {
+  return "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X" + std::to_string(diameter) +
+         " Z2.\nG01 Z-30. F0.2\nG00 Z2.\nG00 X100.\nM30\n";
+}
+
+}  // namespace
+
+// One pass 16 deep into a D50 bar (to radius 9) from Z2 to Z-30: the insert takes up to radius
+// 9 + 13.970 = 22.970, and the shank (25 wide, 150 long) sweeps from there up over Z-30..27; the bar's
+// ring of radius 22.970..25 over Z-30..0 is inside it: 30 x 2.030 mm^2, at the G01. The G00 back
+// along Z keeps the contact (not listed again).
+TEST(LatheChecks, HolderMeetsTheBar) {
+  const auto profile = machine::default_lathe();
+  const Checked c = check(turn_pass(18), bar(50, 100), turning(0, 25, 150), profile, nullptr);
+  ASSERT_EQ(c.of("NC2085").size(), 1u);
+  const Finding& f = *c.of("NC2085")[0];
+  EXPECT_EQ(f.diagnostic.span.line, 5u);
+  EXPECT_NEAR(f.amount, 30 * (25 - 9 - insert_height()), 1e-3);
+  EXPECT_NEAR(f.at[2], -15, 1e-3);  // the centroid of the ring's section
+  EXPECT_NEAR(f.at[0], (25 + 9 + insert_height()) / 2, 1e-3);
+  EXPECT_NE(f.diagnostic.message.find("the holder of T1 meets the bar"), std::string::npos) << f.diagnostic.message;
+  EXPECT_TRUE(c.of("NC2080").empty());
+}
+
+// The same pass 13.9 deep (to radius 11.1): the shank starts at 25.07, above the bar; and 16 deep
+// with no holder in the library: nothing to check.
+TEST(LatheChecks, HolderClearOfTheBar) {
+  const auto profile = machine::default_lathe();
+  EXPECT_TRUE(check(turn_pass(22.2), bar(50, 100), turning(0, 25, 150), profile, nullptr).findings.empty());
+  EXPECT_TRUE(check(turn_pass(18), bar(50, 100), turning(0), profile, nullptr).findings.empty());
 }
