@@ -159,7 +159,7 @@ std::string verify_text(const VerifyReport& r) {
     if (c.no_tool) out += fmt::format("  not cut        {} moves with no tool (before the first T code, or T0)\n", c.no_tool);
     if (c.not_zx_arc) out += fmt::format("  not cut        {} arcs outside G18\n", c.not_zx_arc);
     const auto& found = r.section_sink->findings();
-    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material)\n",
+    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material, the holder in the bar, the tool in a fixture)\n",
                        found.size() + r.section_sink->findings_left_out(),
                        r.section_sink->findings_left_out() ? fmt::format(" ({} listed)", found.size()) : std::string());
     if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);

@@ -13,7 +13,38 @@ LatheSectionSink::LatheSectionSink(LatheSection& section, ToolLibrary tools,
                                    std::map<int, machine::LatheOffset> offsets, std::optional<int> t_code,
                                    LatheSinkOptions options)
     : section_(section), tools_(std::move(tools)), offsets_(std::move(offsets)), options_(std::move(options)) {
+  for (const Fixture& f : options_.fixtures) {
+    const auto* box = std::get_if<AxisBox>(&f.shape);
+    if (!box) {
+      unchecked_fixtures_.push_back(f.name);
+      continue;
+    }
+    const Cylinder ring = fixture_ring(*box);
+    fixtures_.push_back({f.name, ring, LatheSection(ring)});
+  }
   if (t_code) change_tool(*t_code);
+}
+
+Cylinder fixture_ring(const AxisBox& box) {
+  auto nearest = [](double lo, double hi) { return lo > 0 ? lo : hi < 0 ? -hi : 0.0; };
+  const double dx = nearest(box.min[0], box.max[0]), dy = nearest(box.min[1], box.max[1]);
+  const double fx = std::max(std::fabs(box.min[0]), std::fabs(box.max[0]));
+  const double fy = std::max(std::fabs(box.min[1]), std::fabs(box.max[1]));
+  Cylinder c;
+  c.inner_diameter = 2 * std::hypot(dx, dy);
+  c.diameter = 2 * std::hypot(fx, fy);
+  c.face = box.max[2];
+  c.length = box.max[2] - box.min[2];
+  return c;
+}
+
+std::vector<std::string> LatheSectionSink::fixtures_checked() const {
+  std::vector<std::string> out;
+  for (const FixtureRing& f : fixtures_)
+    out.push_back(fmt::format("{}: checked, the ring Z{:g}..{:g} at radius {:g}..{:g}", f.name, f.ring.face - f.ring.length,
+                              f.ring.face, f.ring.inner_diameter / 2, f.ring.diameter / 2));
+  for (const std::string& n : unchecked_fixtures_) out.push_back(n + ": an STL fixture, not checked yet");
+  return out;
 }
 
 void LatheSectionSink::change_tool(int t_code) {
@@ -32,6 +63,7 @@ void LatheSectionSink::change_tool(int t_code) {
     if (auto t = tools_.tools.find(tool_number_); t != tools_.tools.end()) {
       tool.cutting = tool_outline(t->second, options_.size);
       tool.bodies = lathe_bodies(t->second, tool.cutting);
+      if (std::holds_alternative<MillTool>(t->second)) tool.what = "cutting end";
     } else {
       auto o = offsets_.find(t_code % 100);
       const machine::LatheOffset offset = o == offsets_.end() ? machine::LatheOffset{} : o->second;
@@ -59,6 +91,10 @@ void LatheSectionSink::on_move(const machine::Move& m) {
   }
   holder_was_ = holder_in_;
   holder_in_ = false;
+  for (FixtureRing& f : fixtures_) {
+    f.was = f.in;
+    f.in = false;
+  }
   if (m.kind == MoveKind::rapid) return rapid(m);
   if (!section_.cut(tool_->cutting, m)) {
     ++counts_.not_finite;
@@ -66,6 +102,7 @@ void LatheSectionSink::on_move(const machine::Move& m) {
   }
   ++counts_.cut;
   check_bodies(m, m);
+  check_fixtures(m, m);
 }
 
 namespace {
@@ -97,6 +134,28 @@ void LatheSectionSink::check_bodies(const machine::Move& m, const machine::Move&
   }
 }
 
+void LatheSectionSink::check_fixtures(const machine::Move& m, const machine::Move& piece) {
+  const double limit = 1e-3 * std::max(path_length(piece), 1.0);
+  for (FixtureRing& f : fixtures_) {
+    auto touch = [&](const ToolOutline& outline, const char* what) {
+      const LatheSection::Overlap o = f.section.overlap(outline, piece);
+      if (!(o.area > limit)) return false;
+      f.in = true;
+      if (f.was) return true;  // the same contact going on: said at the move that made it
+      find(m, "NC2086",
+           fmt::format("T{}'s {} meets the fixture '{}': {:.3f} mm^2 of its ring inside the {} along the move, about "
+                       "Z{:.3f} radius {:.3f} (Z{:.3f}..{:.3f}, radius {:.3f}..{:.3f}): a crash",
+                       tool_number_, what, f.name, o.area, what, o.centroid.x, o.centroid.y, o.lo.x, o.hi.x, o.lo.y,
+                       o.hi.y),
+           {o.centroid.y, 0, o.centroid.x}, o.area);
+      return true;
+    };
+    if (touch(tool_->cutting, tool_->what)) continue;
+    for (const LatheBody& b : tool_->bodies)
+      if (touch(b.outline, b.what)) break;
+  }
+}
+
 void LatheSectionSink::rapid(const machine::Move& m) {
   for (int a : {0, 2})
     if (!std::isfinite(m.start[a]) || !std::isfinite(m.end[a])) {
@@ -117,6 +176,7 @@ void LatheSectionSink::rapid(const machine::Move& m) {
     section_.cut(tool_->cutting, leg);
     length += path_length(leg);
     check_bodies(m, leg);
+    check_fixtures(m, leg);
   }
   ++counts_.cut;
   const double removed = before - section_.area();

@@ -20,11 +20,17 @@
 
 namespace ncurve::sim {
 
-// What the sink needs beyond the tools: how the machine moves a rapid, and the insert's size.
+// What the sink needs beyond the tools: how the machine moves a rapid, the fixtures, and the insert's
+// size. A box fixture on a lathe stands for the ring it sweeps as the spindle turns: Z over the box's
+// Z range, the radius from the nearest point of its XY rectangle to the axis to its farthest corner.
 struct LatheSinkOptions {
   const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
+  std::vector<Fixture> fixtures;
   InsertSize size;
 };
+
+// The ring a box fixture sweeps about the Z axis, as a tube (a bar where the box holds the axis).
+Cylinder fixture_ring(const AxisBox& box);
 
 class LatheSectionSink final : public machine::MoveSink {
 public:
@@ -54,17 +60,29 @@ public:
   // - NC2080: a rapid that removed material (more than 1 um times the length of its path of section
   //   area);
   // - NC2085: the holder (lathe_holder.hpp) swept into material at the move, after its cut (more than
-  //   1 um times the move's length, at least 1 mm, of area), said at the move that makes the contact.
+  //   1 um times the move's length, at least 1 mm, of area), said at the move that makes the contact;
+  // - NC2086: the insert or its holder swept into a fixture's ring (the same measure), likewise.
   const std::vector<Finding>& findings() const { return findings_; }
   std::size_t findings_left_out() const { return left_out_; }
+
+  // The fixtures checked (boxes, as rings), and those not (STL), in words.
+  std::vector<std::string> fixtures_checked() const;
 
 private:
   struct TurretTool {
     ToolOutline cutting;
     std::vector<LatheBody> bodies;
+    const char* what = "insert";  // the cutting part, in words
   };
   void change_tool(int t_code);
   void check_bodies(const machine::Move& m, const machine::Move& piece);
+  void check_fixtures(const machine::Move& m, const machine::Move& piece);
+  struct FixtureRing {
+    std::string name;
+    Cylinder ring;
+    LatheSection section;  // never cut
+    bool was = false, in = false;  // touched by the move before, by this one
+  };
   void rapid(const machine::Move& m);
   void find(const machine::Move& m, const char* code, std::string message, const std::array<double, 3>& at,
             double amount);
@@ -79,6 +97,8 @@ private:
   int tool_number_ = 0;
   double volume_at_change_ = 0;
   std::map<int, double> volume_by_tool_;
+  std::vector<FixtureRing> fixtures_;
+  std::vector<std::string> unchecked_fixtures_;
   Counts counts_;
   std::vector<Finding> findings_;
   std::size_t left_out_ = 0;

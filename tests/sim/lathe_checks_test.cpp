@@ -60,12 +60,14 @@ struct Checked {
 // The program run on the profile and its moves given to a sink on the bar; `rapids` is the profile
 // the sink moves rapids by (none: straight).
 Checked check(const std::string& program, const Cylinder& stock, const ToolLibrary& lib,
-              const machine::MachineProfile& profile, const machine::MachineProfile* rapids) {
+              const machine::MachineProfile& profile, const machine::MachineProfile* rapids,
+              std::vector<Fixture> fixtures = {}) {
   auto r = test::run(program, profile);
   EXPECT_TRUE(r.result.ok());
   LatheSection section(stock);
   LatheSinkOptions o;
   o.profile = rapids;
+  o.fixtures = std::move(fixtures);
   LatheSectionSink sink(section, lib, {}, std::nullopt, o);
   for (const auto& m : r.moves) sink.on_move(m);
   return {sink.findings(), sink.counts(), section.area_removed()};
@@ -160,4 +162,100 @@ TEST(LatheChecks, HolderClearOfTheBar) {
   const auto profile = machine::default_lathe();
   EXPECT_TRUE(check(turn_pass(22.2), bar(50, 100), turning(0, 25, 150), profile, nullptr).findings.empty());
   EXPECT_TRUE(check(turn_pass(18), bar(50, 100), turning(0), profile, nullptr).findings.empty());
+}
+
+// A box fixture on a lathe is the ring it sweeps: Z over its range, the radius from its XY
+// rectangle's nearest point to the axis to its farthest corner.
+TEST(LatheChecks, BoxFixtureIsTheRingItSweeps) {
+  const Cylinder jaw = fixture_ring({{25, -10, -100}, {45, 10, -75}});
+  EXPECT_DOUBLE_EQ(jaw.inner_diameter, 50);
+  EXPECT_DOUBLE_EQ(jaw.diameter, 2 * std::sqrt(45.0 * 45 + 10 * 10));
+  EXPECT_DOUBLE_EQ(jaw.face, -75);
+  EXPECT_DOUBLE_EQ(jaw.length, 25);
+  const Cylinder off = fixture_ring({{3, 4, 0}, {6, 8, 1}});
+  EXPECT_DOUBLE_EQ(off.inner_diameter, 10);  // (3, 4)
+  EXPECT_DOUBLE_EQ(off.diameter, 20);        // (6, 8)
+  const Cylinder centre = fixture_ring({{-5, -5, 200}, {5, 5, 260}});
+  EXPECT_DOUBLE_EQ(centre.inner_diameter, 0);
+  EXPECT_DOUBLE_EQ(centre.diameter, 2 * std::sqrt(50.0));
+}
+
+namespace {
+
+// A chuck jaw holding the D50 bar over Z-100..-75: the ring of radius 25..46.10.
+Fixture chuck_jaw() { return {"chuck jaw", AxisBox{{25, -10, -100}, {45, 10, -75}}}; }
+
+// A 3 mm grooving blade (tip 3, sharp, 20 deep): from its tip 3 along +Z and 20 up.
+ToolLibrary blade() {
+  LatheInsert i;
+  i.tip = 3;
+  i.width = 3;
+  ToolLibrary lib;
+  lib.tools[1] = i;
+  return lib;
+}
+
+std::string blade_pass(const std::string& z) {
+  return "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X48. Z2.\nG01 Z" + z + " F0.2\nG00 Z2.\nG00 X200.\nM30\n";
+}
+
+}  // namespace
+
+// The blade along radius 24 to Z-80 enters the jaw's ring over Z-80..-75 at radius 25..44: 5 x 19
+// mm^2 at the G01; the G00 back out of it keeps the contact (not listed again).
+TEST(LatheChecks, InsertMeetsTheChuckJaw) {
+  const auto profile = machine::default_lathe();
+  const Checked c = check(blade_pass("-80."), bar(50, 100), blade(), profile, nullptr, {chuck_jaw()});
+  ASSERT_EQ(c.of("NC2086").size(), 1u);
+  const Finding& f = *c.of("NC2086")[0];
+  EXPECT_EQ(f.diagnostic.span.line, 5u);
+  EXPECT_NEAR(f.amount, 5 * 19, 1e-3);
+  EXPECT_NEAR(f.at[2], -77.5, 1e-3);
+  EXPECT_NEAR(f.at[0], 34.5, 1e-3);
+  EXPECT_NE(f.diagnostic.message.find("T1's insert meets the fixture 'chuck jaw'"), std::string::npos)
+      << f.diagnostic.message;
+}
+
+// Stopping 0.1 short of the jaw (Z-74.9) is clean; so is the bar with no fixture.
+TEST(LatheChecks, InsertShortOfTheChuckJaw) {
+  const auto profile = machine::default_lathe();
+  EXPECT_TRUE(check(blade_pass("-74.9"), bar(50, 100), blade(), profile, nullptr, {chuck_jaw()}).findings.empty());
+  EXPECT_TRUE(check(blade_pass("-80."), bar(50, 100), blade(), profile, nullptr).findings.empty());
+}
+
+namespace {
+
+// A sharp 80-degree boring tool (tip 2) whose bar, 16 wide and 150 long, runs along +Z from the
+// insert's far end (13.970 beyond its tip) at the tip's radius and below; a tailstock centre's ring,
+// radius 0..sqrt 50, Z200..260.
+ToolLibrary boring_bar() {
+  LatheInsert i;
+  i.tip = 2;
+  i.holder_width = 16;
+  i.holder_length = 150;
+  ToolLibrary lib;
+  lib.tools[1] = i;
+  return lib;
+}
+Fixture tailstock() { return {"tailstock centre", AxisBox{{-5, -5, 200}, {5, 5, 260}}}; }
+
+std::string boring_move(const std::string& z) {
+  return "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X40. Z20.\nG01 Z" + z + " F0.2\nG00 X200.\nM30\n";
+}
+
+}  // namespace
+
+// The tool at radius 20 moved from Z20 to Z40: the bar's end reaches 40 + 13.970 + 150 = 203.970,
+// its radius 4..20 meeting the centre's 0..7.071 over Z200..203.970.
+TEST(LatheChecks, HolderMeetsTheTailstock) {
+  const auto profile = machine::default_lathe();
+  const Checked c = check(boring_move("40."), bar(50, 100), boring_bar(), profile, nullptr, {tailstock()});
+  ASSERT_EQ(c.of("NC2086").size(), 1u);
+  const Finding& f = *c.of("NC2086")[0];
+  EXPECT_EQ(f.diagnostic.span.line, 5u);
+  EXPECT_NEAR(f.amount, (40 + insert_height() + 150 - 200) * (std::sqrt(50.0) - 4), 1e-3);
+  EXPECT_NE(f.diagnostic.message.find("T1's holder meets the fixture 'tailstock centre'"), std::string::npos)
+      << f.diagnostic.message;
+  // to Z36 the bar ends at 199.970
+  EXPECT_TRUE(check(boring_move("36."), bar(50, 100), boring_bar(), profile, nullptr, {tailstock()}).findings.empty());
 }
