@@ -2,7 +2,7 @@
 // move), orbit / pan / zoom, standard views, axes with ticks (backplot-axes.js), hover and click on a move. Used by
 // the page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js,
 // OrbitControls (Debian's libjs-three, release 111), backplot-geometry.js and backplot-axes.js
-// loaded first.
+// loaded first, and backplot-part.js for setPart.
 //
 //   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
 //   const plot = NcurveBackplot.create(container, moves, {onHover(i) {}, onClick(i) {}});
@@ -65,59 +65,6 @@
   }
 
 
-  // The cut part of `run --verify --html`: a grid of heights (base64 float32, row by row).
-  function decodePart(d) {
-    return {nx: d.nx, ny: d.ny, x0: d.x0, y0: d.y0, dx: d.dx, dy: d.dy, bottom: d.bottom, top: d.top,
-            heights: new Float32Array(bytes(d.heights))};
-  }
-
-  // The part as a mesh: its top surface on the grid and four walls down to the bottom, coloured
-  // by depth below the stock's top (light grey at the top, darker down to the deepest cut).
-  function partMesh(part, toWorld) {
-    const {nx, ny, x0, y0, dx, dy, bottom, top, heights} = part;
-    let deepest = top;
-    for (let k = 0; k < heights.length; k++) deepest = Math.min(deepest, heights[k]);
-    const depth = Math.max(top - deepest, 1e-9);
-    const pos = [], col = [], index = [];
-    const w = [0, 0, 0];
-    const vertex = (x, y, z) => {
-      toWorld([x, y, z], w);
-      pos.push(w[0], w[1], w[2]);
-      const t = Math.min(Math.max((top - z) / depth, 0), 1);
-      col.push(0.84 - 0.34 * t, 0.85 - 0.33 * t, 0.87 - 0.29 * t);
-      return pos.length / 3 - 1;
-    };
-    for (let j = 0; j < ny; j++)
-      for (let i = 0; i < nx; i++) vertex(x0 + i * dx, y0 + j * dy, heights[j * nx + i]);
-    for (let j = 0; j + 1 < ny; j++)
-      for (let i = 0; i + 1 < nx; i++) {
-        const a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
-        index.push(a, b, c, a, c, d);
-      }
-    // the walls: the boundary counter-clockwise from above, each point down to the bottom
-    const ring = [];
-    for (let i = 0; i < nx - 1; i++) ring.push([i, 0]);
-    for (let j = 0; j < ny - 1; j++) ring.push([nx - 1, j]);
-    for (let i = nx - 1; i > 0; i--) ring.push([i, ny - 1]);
-    for (let j = ny - 1; j > 0; j--) ring.push([0, j]);
-    const low = ring.map(([i, j]) => vertex(x0 + i * dx, y0 + j * dy, bottom));
-    ring.forEach(([i, j], k) => {
-      const [i2, j2] = ring[(k + 1) % ring.length];
-      const p = j * nx + i, q = j2 * nx + i2, lp = low[k], lq = low[(k + 1) % ring.length];
-      index.push(lp, lq, q, lp, q, p);
-    });
-    const g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(pos), 3));
-    g.setAttribute('color', new THREE.BufferAttribute(new Float32Array(col), 3));
-    g.setIndex(index);
-    g.computeVertexNormals();
-    // pushed back a little in depth, so that the moves on its surface are drawn over it
-    const m = new THREE.MeshLambertMaterial({vertexColors: THREE.VertexColors, side: THREE.DoubleSide,
-                                            polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1});
-    const mesh = new THREE.Mesh(g, m);
-    mesh.name = 'part';
-    return mesh;
-  }
 
   function create(container, moves, options) {
     options = options || {};
@@ -492,8 +439,8 @@
           part.material.dispose();
           part = null;
         }
-        if (p && p.nx >= 2 && p.ny >= 2) {
-          part = partMesh(p, toWorld);
+        if (p && (p.lathe ? p.contours.length > 0 : p.nx >= 2 && p.ny >= 2)) {
+          part = global.NcurveBackplotPart.mesh(p, toWorld);
           scene.add(part);
           partLights.forEach((l) => scene.add(l));
           // the camera's depth range widened to hold the whole part, which may reach far past the path
@@ -578,5 +525,5 @@
     return api;
   }
 
-  global.NcurveBackplot = {decode, decodePart, create, KIND_NAMES, KIND_COLORS, niceStep: global.NcurveBackplotAxes.niceStep};
+  global.NcurveBackplot = {decode, decodePart: global.NcurveBackplotPart.decode, create, KIND_NAMES, KIND_COLORS, niceStep: global.NcurveBackplotAxes.niceStep};
 })(window);

@@ -144,6 +144,7 @@ int run_command(const app::RunArgs& a) {
   if (verify) {
     verify->finish(result);
     if (html && verify->map()) html->set_part(sim::part_grid(*verify->map()));
+    if (html && verify->section()) html->set_part(report::lathe_part(*verify->section()));
     try {
       verify->write_part(setup.inputs);
     } catch (const io::OutputError& e) {

@@ -204,6 +204,7 @@ void RunVerification::lathe(const machine::MachineProfile& profile, const machin
   sim::LatheSinkOptions so;
   so.profile = &profile;
   so.fixtures = setup_.fixtures;
+  so.cut_moves = args_.cut_moves;
   section_sink_ = std::make_unique<sim::LatheSectionSink>(*section_, setup_.tools, profile.lathe_offsets,
                                                           setup_.tool_in_spindle, so);
   report_.section = section_.get();

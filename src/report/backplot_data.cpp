@@ -125,6 +125,7 @@ std::string BackplotData::json(bool inch) const {
   }
   head["files"] = files;
   if (part_) head["part"] = part_json(*part_);
+  if (lathe_part_) head["part"] = lathe_part_json(*lathe_part_);
   if (alarm_) {
     nlohmann::json a;
     a["code"] = alarm_->code;

@@ -16,6 +16,7 @@
 
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
+#include "report/lathe_part.hpp"
 #include "report/other_axes.hpp"
 #include "sim/part_stl.hpp"
 
@@ -39,6 +40,7 @@ public:
   std::string json(bool inch) const;
   // The cut part, drawn shaded under the path (run --verify).
   void set_part(sim::PartGrid part) { part_ = std::move(part); }
+  void set_part(LathePart part) { lathe_part_ = std::move(part); }  // a lathe's, revolved by the page
 
 private:
   std::uint32_t block_of(const machine::Move& m);
@@ -68,6 +70,7 @@ private:
   OtherAxes other_;
   std::array<std::vector<double>, 3> other_end_;
   std::optional<sim::PartGrid> part_;
+  std::optional<LathePart> lathe_part_;
 };
 
 // The cut part's grid as the pages take it: {nx, ny, x0, y0, dx, dy, bottom, top, heights (base64 of

@@ -81,6 +81,10 @@ void LatheSectionSink::on_move(const machine::Move& m) {
   using machine::MoveKind;
   if (m.kind == MoveKind::tool_change) return change_tool(m.code);
   if (!m.is_motion()) return;
+  if (motions_++ >= options_.cut_moves) {
+    ++counts_.after;
+    return;
+  }
   if (!tool_) {
     ++counts_.no_tool;
     return;

@@ -27,6 +27,7 @@ struct LatheSinkOptions {
   const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
   std::vector<Fixture> fixtures;
   InsertSize size;
+  std::uint64_t cut_moves = UINT64_MAX;  // only the first so many motions are cut (a debugger's step)
 };
 
 // The ring a box fixture sweeps about the Z axis, as a tube (a bar where the box holds the axis).
@@ -50,6 +51,7 @@ public:
     std::uint64_t no_tool = 0;     // motion before the first T code, or with tool number 0
     std::uint64_t not_zx_arc = 0;  // arcs in G17/G19, not simulated
     std::uint64_t not_finite = 0;  // a coordinate that is not a finite number
+    std::uint64_t after = 0;       // motions past LatheSinkOptions::cut_moves
   };
   const Counts& counts() const { return counts_; }
 
@@ -93,6 +95,7 @@ private:
   LatheSinkOptions options_;
   std::map<int, TurretTool> outlines_;  // by T code
   const TurretTool* tool_ = nullptr;
+  std::uint64_t motions_ = 0;
   bool holder_was_ = false, holder_in_ = false;  // in material after the move before, after this one
   int tool_number_ = 0;
   double volume_at_change_ = 0;
