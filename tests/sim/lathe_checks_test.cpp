@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -258,4 +259,55 @@ TEST(LatheChecks, HolderMeetsTheTailstock) {
       << f.diagnostic.message;
   // to Z36 the bar ends at 199.970
   EXPECT_TRUE(check(boring_move("36."), bar(50, 100), boring_bar(), profile, nullptr, {tailstock()}).findings.empty());
+}
+
+namespace {
+
+// An 8 mm drill on the spindle axis, 60 out of a holder of D32 and 40 long.
+ToolLibrary drill_in_holder() {
+  MillTool d;
+  d.kind = MillKind::drill;
+  d.diameter = 8;
+  d.point_angle = 118;
+  d.flute_length = 50;
+  d.stick_out = 60;
+  d.holder = {{32, 32, 40}};
+  ToolLibrary lib;
+  lib.tools[1] = d;
+  return lib;
+}
+
+std::string drilling(const std::string& z) {
+  return "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X0 Z3.\nG01 Z" + z + " F0.1\nG00 Z50.\nM30\n";
+}
+
+}  // namespace
+
+// Drilling to Z-65 takes the holder's face (60 above the tip) to Z-5: the bar's material about the
+// D8 hole, radius 4..16 over Z-5..0, is inside it: 5 x 12 mm^2. To Z-59.9 it stops 0.1 short.
+TEST(LatheChecks, DrillHolderMeetsTheFace) {
+  const auto profile = machine::default_lathe();
+  const Checked c = check(drilling("-65."), bar(50, 100), drill_in_holder(), profile, nullptr);
+  ASSERT_EQ(c.of("NC2085").size(), 1u);
+  EXPECT_EQ(c.of("NC2085")[0]->diagnostic.span.line, 5u);
+  EXPECT_NEAR(c.of("NC2085")[0]->amount, 5 * 12, 1e-3);
+  EXPECT_TRUE(check(drilling("-59.9"), bar(50, 100), drill_in_holder(), profile, nullptr).findings.empty());
+}
+
+// Numbers no setup should hold (a fuzzed one): fixtures of 1e300 and NaN, holders of NaN and 1e300,
+// rapid rates of NaN, 0 and infinity; nothing crashes and nothing is found.
+TEST(LatheChecks, BadNumbersNeverCrash) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  auto profile = machine::default_lathe();
+  profile.rapid_rate[0] = nan;
+  profile.rapid_rate[2] = inf;
+  std::vector<Fixture> fixtures{{"huge", AxisBox{{-1e300, -1e300, -1e300}, {1e300, 1e300, -200}}},
+                                {"nan", AxisBox{{nan, nan, nan}, {nan, nan, nan}}}};
+  for (double size : {nan, 1e300, -5.0}) {
+    const Checked c = check(kDogLeg, bar(50, 100), turning(0.4, size, size), profile, &profile, fixtures);
+    EXPECT_TRUE(c.of("NC2085").empty());
+    EXPECT_TRUE(c.of("NC2086").empty());
+  }
+  profile.rapid_rate[0] = 0;
+  EXPECT_TRUE(check(kDogLeg, bar(50, 100), turning(0.4), profile, &profile).findings.empty());
 }
