@@ -33,17 +33,44 @@
     return mesh;
   }
 
-  // The cut part of `run --verify --html`: a mill's grid of heights (base64 float32, row by row), or
-  // a lathe's half-section contours (base64 float32 Z, X pairs, X a radius).
+  // The cut part of `run --verify --html`: a mill's grid of heights (base64 float32, row by row),
+  // with `deviation` ({tol, points: X Y error per wall point measured against the design}) coloured
+  // near its walls; or a lathe's half-section contours (base64 float32 Z, X pairs, X a radius).
   function decode(d) {
     if (d.lathe)
       return {lathe: true, radius: d.radius, bore: d.bore, contours: (d.contours || []).map((c) => new Float32Array(bytes(c)))};
     return {nx: d.nx, ny: d.ny, x0: d.x0, y0: d.y0, dx: d.dx, dy: d.dy, bottom: d.bottom, top: d.top,
-            heights: new Float32Array(bytes(d.heights))};
+            heights: new Float32Array(bytes(d.heights)),
+            deviation: d.deviation ? {tol: d.deviation.tol, points: new Float32Array(bytes(d.deviation.points))} : null};
   }
 
-  // The part as a mesh: its top surface on the grid and four walls down to the bottom, coloured
-  // by depth below the stock's top (light grey at the top, darker down to the deepest cut).
+  // Per grid point, the largest error of a wall point within two cells of it (NaN where none).
+  function deviationOnGrid(part) {
+    const {nx, ny, x0, y0, dx, dy} = part, pts = part.deviation.points;
+    const dev = new Float32Array(nx * ny).fill(NaN);
+    for (let k = 0; k + 2 < pts.length; k += 3) {
+      const ci = Math.round((pts[k] - x0) / dx), cj = Math.round((pts[k + 1] - y0) / dy), e = pts[k + 2];
+      for (let j = Math.max(cj - 2, 0); j <= Math.min(cj + 2, ny - 1); j++)
+        for (let i = Math.max(ci - 2, 0); i <= Math.min(ci + 2, nx - 1); i++) {
+          const q = j * nx + i;
+          if (!(Math.abs(dev[q]) >= Math.abs(e))) dev[q] = e;
+        }
+    }
+    return dev;
+  }
+  // within the tolerance green, beyond the design (a gouge) red, short of it (stock left) blue; the
+  // colour deepens up to twice the tolerance
+  const DEVIATION_COLOURS = {within: [0.26, 0.63, 0.28], gouge: [0.90, 0.22, 0.21], left: [0.12, 0.47, 0.90]};
+  function deviationColour(e, tol) {
+    const a = Math.abs(e);
+    if (a <= tol) return DEVIATION_COLOURS.within;
+    const c = e > 0 ? DEVIATION_COLOURS.gouge : DEVIATION_COLOURS.left, t = Math.min((a - tol) / tol, 1);
+    return [0.75 + (c[0] - 0.75) * (0.5 + t / 2), 0.75 + (c[1] - 0.75) * (0.5 + t / 2), 0.75 + (c[2] - 0.75) * (0.5 + t / 2)];
+  }
+
+  // A mill's part: its top surface on the grid and four walls down to the bottom, coloured by depth
+  // below the stock's top (light grey at the top, darker down to the deepest cut), or by the walls'
+  // deviation where measured.
   function gridMesh(part, toWorld) {
     const {nx, ny, x0, y0, dx, dy, bottom, top, heights} = part;
     let deepest = top;
@@ -51,15 +78,16 @@
     const depth = Math.max(top - deepest, 1e-9);
     const pos = [], col = [], index = [];
     const w = [0, 0, 0];
-    const vertex = (x, y, z) => {
+    const dev = part.deviation ? deviationOnGrid(part) : null;
+    const vertex = (x, y, z, e) => {
       toWorld([x, y, z], w);
       pos.push(w[0], w[1], w[2]);
-      const t = Math.min(Math.max((top - z) / depth, 0), 1);
-      shade(t, col);
+      if (e === e && e !== undefined) col.push(...deviationColour(e, part.deviation.tol));
+      else shade(Math.min(Math.max((top - z) / depth, 0), 1), col);
       return pos.length / 3 - 1;
     };
     for (let j = 0; j < ny; j++)
-      for (let i = 0; i < nx; i++) vertex(x0 + i * dx, y0 + j * dy, heights[j * nx + i]);
+      for (let i = 0; i < nx; i++) vertex(x0 + i * dx, y0 + j * dy, heights[j * nx + i], dev ? dev[j * nx + i] : undefined);
     for (let j = 0; j + 1 < ny; j++)
       for (let i = 0; i + 1 < nx; i++) {
         const a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
@@ -77,7 +105,13 @@
       const p = j * nx + i, q = j2 * nx + i2, lp = low[k], lq = low[(k + 1) % ring.length];
       index.push(lp, lq, q, lp, q, p);
     });
-    return shaded(pos, col, index);
+    const mesh = shaded(pos, col, index);
+    if (dev) {
+      const tol = part.deviation.tol, deviated = {within: 0, gouge: 0, left: 0};
+      for (const e of dev) if (e === e) deviated[Math.abs(e) <= tol ? 'within' : e > 0 ? 'gouge' : 'left']++;
+      mesh.userData.deviated = deviated;
+    }
+    return mesh;
   }
 
   // A lathe's part: each edge of each contour swept about the Z axis in SEGMENTS steps, a band of
@@ -117,5 +151,5 @@
 
   const mesh = (part, toWorld) => (part.lathe ? latheMesh(part, toWorld) : gridMesh(part, toWorld));
 
-  global.NcurveBackplotPart = {decode, mesh};
+  global.NcurveBackplotPart = {decode, mesh, DEVIATION_COLOURS};
 })(window);

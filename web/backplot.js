@@ -13,6 +13,7 @@
 // moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32/64Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
 // Float32Array (per arc: centre X Y Z, sweep in radians counter-clockwise, plane 17/18/19),
+// rapidCorners: Map (a dog-leg rapid's number -> its corners' X Y Z in order; none: a straight rapid),
 // block: Uint32Array (per move, its block), lathe, diameter, inch, plane, alarmAt: [X, Y, Z] | null,
 // rotary: [{axis, unit, min, max}] (the A, B, C axes the run moved, not drawn), rotaryEnd:
 // Float64Array (per rotary axis in turn, its end for each move)}.
@@ -50,8 +51,15 @@
     const arcIndex = new Int32Array(n);
     let a = 0;
     for (let i = 0; i < n; i++) arcIndex[i] = kind[i] === 2 ? a++ : -1;
+    // a dog-leg rapid's corners (non-linear positioning): rapidCorners[i] = [x, y, z, ...] in order
+    const rapidCorners = new Map();
+    for (const c of d.rapid_corners || []) {
+      if (!(c[0] >= 0 && c[0] < n) || kind[c[0]] !== 0) continue;
+      if (!rapidCorners.has(c[0])) rapidCorners.set(c[0], []);
+      rapidCorners.get(c[0]).push(c[1], c[2], c[3]);
+    }
     return {
-      count: n, kind, start, end, arcIndex,
+      count: n, kind, start, end, arcIndex, rapidCorners,
       arcs: new Float32Array(bytes(d.arcs)),
       feed: new Float32Array(bytes(d.feed)),
       block: new Uint32Array(bytes(d.block)),
@@ -494,6 +502,7 @@
           axes: axes.shown(),
           reference: reference ? reference.geometry.attributes.position.count : 0,
           part: part ? part.geometry.index.count / 3 : 0,
+          partDeviation: part ? part.userData.deviated : null,  // {within, gouge, left}: grid points coloured
           camera: {position: camera.position.toArray(), zoom: camera.zoom, target: controls.target.toArray()},
         };
       },
@@ -525,5 +534,6 @@
     return api;
   }
 
-  global.NcurveBackplot = {decode, decodePart: global.NcurveBackplotPart.decode, create, KIND_NAMES, KIND_COLORS, niceStep: global.NcurveBackplotAxes.niceStep};
+  global.NcurveBackplot = {decode, decodePart: global.NcurveBackplotPart.decode, create, KIND_NAMES, KIND_COLORS,
+    DEVIATION_COLOURS: global.NcurveBackplotPart.DEVIATION_COLOURS, niceStep: global.NcurveBackplotAxes.niceStep};
 })(window);

@@ -25,6 +25,7 @@
 #include "machine/profile.hpp"
 #include "report/path_plot.hpp"
 #include "report/summary.hpp"
+#include "report/verify_report.hpp"
 #include "report/writers.hpp"
 #include "serve/serve_command.hpp"
 
@@ -90,6 +91,7 @@ int run_command(const app::RunArgs& a) {
   if (a.verify.on()) {
     try {
       verify.emplace(a.verify, profile, lib, setup.options);
+      for (const std::string& f : verify->stl_files()) setup.inputs.push_back(f);  // never an output
     } catch (const std::bad_alloc&) {
       throw;
     } catch (const std::exception& e) {
@@ -143,7 +145,10 @@ int run_command(const app::RunArgs& a) {
   if (gcode) gcode->finish();
   if (verify) {
     verify->finish(result);
-    if (html && verify->map()) html->set_part(sim::part_grid(*verify->map()));
+    if (html && verify->map()) {
+      html->set_part(sim::part_grid(*verify->map()));
+      if (verify->report().curve) html->set_deviation(report::deviation_json(*verify->report().curve));
+    }
     if (html && verify->section()) html->set_part(report::lathe_part(*verify->section()));
     try {
       verify->write_part(setup.inputs);

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "io/output_file.hpp"
+#include "sim/mesh_top.hpp"
+#include "sim/stl_read.hpp"
 #include "sim/part_stl.hpp"
 #include "sim/stl.hpp"
 
@@ -22,8 +24,14 @@ void add_verify_options(CLI::App* run, VerifyArgs& a) {
   add_curve_options(run, a.curve,
                     "measure the cut part's walls against this curve, a name of `ncurve gen --list` (its parameters "
                     "as --NAME VALUE) or expr; turns on --verify (mill)");
-  run->add_option("--tol", a.tol, "--curve: a wall beyond the design or short of it by more is a finding, mm (default 0.01)")
+  run->add_option("--tol", a.tol,
+                  "--curve, --design: a wall or surface beyond the design or short of it by more is a finding, mm "
+                  "(default 0.01)")
       ->check(CLI::Range(1e-6, 1e3));
+  run->add_option("--design", a.design,
+                  "a mill: the design solid (STL, mm); warn where the cut gouges it or leaves stock on it beyond "
+                  "--tol (turns on --verify)")
+      ->check(CLI::ExistingFile);
   add_wall_option(run, a.wall);
   run->add_option("--max-moves", a.max_moves, "--curve: the most cuts kept for measuring the walls (about 150 bytes each), default 1000000")
       ->check(CLI::Range(1.0, 1e9));
@@ -101,6 +109,13 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   if (args.setup_text) {
     setup_ = sim::parse_setup(*args.setup_text, args.setup.empty() ? "<setup>" : args.setup);
     report_.setup_file = args.setup.empty() ? "<setup>" : args.setup;
+    // a setup sent as text (the server's) may name no file to be read
+    bool stl = setup_.stock && std::holds_alternative<sim::StlFile>(*setup_.stock);
+    for (const sim::Fixture& f : setup_.fixtures) stl = stl || std::holds_alternative<sim::StlFile>(f.shape);
+    if (stl)
+      throw std::runtime_error(fmt::format("{}: error: an STL stock or fixture names a file, and a setup sent as text "
+                                           "reads none (give a box)",
+                                           report_.setup_file));
   } else if (!args.setup.empty()) {
     setup_ = sim::read_setup(args.setup);
     report_.setup_file = args.setup;
@@ -111,6 +126,7 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   auto refuse = [&](const std::string& why) {
     report_.refused = why;
     if (!args.part.empty()) throw std::runtime_error("--part: " + why);
+    if (!args.design.empty()) throw std::runtime_error("--design: " + why);
   };
   if (!args.curve.name.empty()) {
     if (profile.lathe())
@@ -124,6 +140,10 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
       throw std::runtime_error(std::string("--curve: ") + e.what());
     }
   }
+  if (!args.design.empty() && profile.lathe())
+    throw std::runtime_error("--design: the check against a design is a mill's (on its Z-map), not a lathe's yet");
+  std::optional<sim::Mesh> design;  // read before the runs: its errors first
+  if (!args.design.empty()) design = sim::read_stl(args.design);
   if (profile.lathe()) {
     lathe(profile, lib, options, refuse);
     return;
@@ -151,16 +171,13 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
     return;
   }
   report_.stock = stock;
-  if (std::holds_alternative<sim::StlFile>(*stock)) {
-    refuse("an STL stock is not simulated yet: give a box or a cylinder");
-    return;
-  }
   sim::VerifyOptions vo;
   vo.cell = args.resolution;
   vo.most_cells = args.most_cells;
   if (args.cells > 0) vo.min_cells = args.cells;
   vo.cut_moves = args.cut_moves;
   vo.profile = &profile;
+  vo.mark_cells = design.has_value();
   vo.check_reference = !report_.stock_default;
   try {
     verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo, setup_.fixtures);
@@ -174,9 +191,20 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
     cuts_ = std::make_unique<sim::CutLog>(args.max_moves);
     verifier_->log_cuts(cuts_.get());
   }
+  if (design) design_top_ = sim::mesh_top(*design, verifier_->map());
 }
 
 RunVerification::~RunVerification() = default;
+
+std::vector<std::string> RunVerification::stl_files() const {
+  std::vector<std::string> out;
+  if (setup_.stock)
+    if (const auto* s = std::get_if<sim::StlFile>(&*setup_.stock)) out.push_back(s->path);
+  for (const sim::Fixture& f : setup_.fixtures)
+    if (const auto* s = std::get_if<sim::StlFile>(&f.shape)) out.push_back(s->path);
+  if (!args_.design.empty()) out.push_back(args_.design);
+  return out;
+}
 
 void RunVerification::lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
                             const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse) {
@@ -237,6 +265,14 @@ void RunVerification::finish(machine::RunResult& result) {
   if (!verifier_) return;
   report_.fixtures = verifier_->fixtures_checked();
   for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);
+  if (!args_.design.empty()) {
+    const sim::ZMap& map = verifier_->map();
+    design_ = sim::check_design({&map, design_top_, map.cut_by(), verifier_->cut_blocks(), verifier_->last_block(),
+                                 args_.design, args_.tol});
+    for (const sim::Finding& f : design_->findings) result.warnings.push_back(f.diagnostic);
+    report_.design = &*design_;
+    report_.design_file = args_.design;
+  }
   if (curve_) measure_walls(result);
 }
 

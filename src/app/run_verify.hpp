@@ -13,6 +13,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "report/verify_report.hpp"
+#include "sim/design_check.hpp"
 #include "sim/curve_walls.hpp"
 #include "sim/lathe_section_sink.hpp"
 
@@ -24,16 +25,18 @@ struct VerifyArgs {
   bool verify = false;      // --verify
   double resolution = 0;    // --resolution MM: the Z-map's cell; 0: the stock's shorter side in 1000 cells
   std::string part;         // --part FILE.stl
+  std::string design;       // --design FILE.stl: the gouge and stock left against it (a mill)
   double most_cells = 1e8;  // the largest Z-map
   int cells = 0;            // the stock's shorter side in so many cells (0: 1000), unless resolution
   std::uint64_t cut_moves = UINT64_MAX;  // cut only the first so many motions
   CurveArgs curve;                  // --curve: the design's curve, its walls measured
   std::vector<std::string> curve_extras;  // its parameters (--NAME VALUE)
-  double tol = 0.01;                // --tol: a wall beyond the design by more is a finding
+  double tol = 0.01;                // --tol: --curve's and --design's tolerance, mm
   std::string wall = "auto";        // --wall: groove, edge or auto (edge when the program compensates)
   std::size_t max_moves = 1000000;  // --max-moves: the cuts kept to measure the walls
   bool on() const {
-    return verify || !setup.empty() || setup_text || !part.empty() || resolution > 0 || !curve.name.empty();
+    return verify || !setup.empty() || setup_text || !part.empty() || resolution > 0 || !curve.name.empty() ||
+           !design.empty();
   }
 };
 
@@ -56,6 +59,8 @@ public:
   // Writes --part; throws io::OutputError.
   void write_part(const std::vector<std::string>& inputs);
   const report::VerifyReport& report() const { return report_; }
+  // The STL files read: the setup's stock and fixtures, --design.
+  std::vector<std::string> stl_files() const;
   // The cut stock of a mill; null when nothing was verified or on a lathe.
   const sim::ZMap* map() const { return verifier_ ? &verifier_->map() : nullptr; }
   // The walls measured against --curve; null without one.
@@ -74,6 +79,8 @@ private:
   std::unique_ptr<sim::Verifier> verifier_;
   std::unique_ptr<sim::LatheSection> section_;  // a lathe's
   std::unique_ptr<sim::LatheSectionSink> section_sink_;
+  std::vector<double> design_top_;  // --design's top on the map's grid
+  std::optional<sim::DesignResult> design_;
   report::VerifyReport report_;
   std::optional<geom::Curve> curve_;
   std::unique_ptr<sim::CutLog> cuts_;

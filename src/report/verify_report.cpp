@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/backplot_data.hpp"
 #include "report/summary.hpp"
 
 namespace ncurve::report {
@@ -66,6 +67,16 @@ nlohmann::json findings_json(const std::vector<sim::Finding>& findings) {
   return j;
 }
 
+std::string extreme_text(const sim::DesignExtreme& e) {
+  if (e.cells == 0) return "none beyond the tolerance";
+  return fmt::format("{:.3f} mm at X{:.3f} Y{:.3f} Z{:.3f} ({} cells beyond the tolerance)", e.amount, e.at[0], e.at[1],
+                     e.at[2], e.cells);
+}
+
+nlohmann::json extreme_json(const sim::DesignExtreme& e) {
+  return {{"amount_mm", e.amount}, {"at", e.cells ? nlohmann::json(e.at) : nlohmann::json(nullptr)}, {"cells", e.cells}};
+}
+
 const char* design_words(sim::WallDesign d) {
   return d == sim::WallDesign::groove ? "groove: the tool's axis on the curve" : "edge: the part's wall on the curve";
 }
@@ -92,7 +103,7 @@ std::string curve_text(const CurveCheck& c, int width) {
   if (w.gouge_at >= 0) out += line("beyond design", fmt::format("{:.4f} mm at {}", w.largest_gouge, wall_point_text(c, w.gouge_at)));
   if (w.left_at >= 0) out += line("short of it", fmt::format("{:.4f} mm at {}", w.largest_left, wall_point_text(c, w.left_at)));
   out += line("walls rms",
-              fmt::format("{:.4f} mm; {} points beyond the tolerance{}{}; findings {}", w.rms, w.beyond(c.tol),
+              fmt::format("{:.4f} mm; {} points beyond the tolerance{}{}; {} findings", w.rms, w.beyond(c.tol),
                           w.not_cut ? fmt::format("; {} curve points not cut", w.not_cut) : "",
                           w.no_design ? fmt::format("; {} sides where the curve turns tighter than the tool", w.no_design)
                                       : "",
@@ -126,8 +137,18 @@ nlohmann::json curve_json(const CurveCheck& c) {
   j["beyond_tol"] = w.beyond(c.tol);
   j["not_cut"] = w.not_cut;
   j["no_design"] = w.no_design;
-  j["findings"] = findings_json(c.findings);
   return j;
+}
+
+nlohmann::json deviation_json(const CurveCheck& c) {
+  std::vector<float> points;
+  if (c.walls)
+    for (const sim::WallPoint& p : c.walls->points) {
+      const double s = p.design_offset + p.error;
+      points.insert(points.end(), {static_cast<float>(p.x + s * p.nx), static_cast<float>(p.y + s * p.ny),
+                                   static_cast<float>(p.error)});
+    }
+  return {{"tol", c.tol}, {"points", base64(points.data(), points.size() * sizeof(float))}};
 }
 
 std::string removed_text(const VerifyReport& r) {
@@ -183,9 +204,17 @@ std::string verify_text(const VerifyReport& r) {
   if (c.rotary)
     out += fmt::format("  not cut        {} moves turning a rotary axis (3 axes are simulated)\n", c.rotary);
   if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
-  out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out(),
-                     v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size()) : std::string());
+  const std::size_t walls = r.curve ? r.curve->findings.size() : 0;  // listed with the verifier's
+  out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out() + walls,
+                     v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size() + walls) : std::string());
   if (r.curve) out += curve_text(*r.curve, 15);
+  if (r.design) {
+    out += fmt::format("  design         {}, tol {:g} mm, exact to the cell ({:.4f} mm); findings {}{}\n", r.design_file,
+                       r.design->tol, map.cell(), r.design->findings.size() + r.design->left_out,
+                       r.design->left_out ? fmt::format(" ({} listed)", r.design->findings.size()) : std::string());
+    out += fmt::format("  gouge          {}\n", extreme_text(r.design->gouge));
+    out += fmt::format("  stock left     {}\n", extreme_text(r.design->stock_left));
+  }
   if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
   return out;
 }
@@ -224,9 +253,19 @@ nlohmann::json verify_json(const VerifyReport& r) {
   j["moves_cut"] = c.cut;
   j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_xy_arc", c.not_xy_arc}, {"rotary", c.rotary}, {"after", c.after}};
   j["findings"] = findings_json(v.findings());
+  if (r.curve)
+    for (const nlohmann::json& f : findings_json(r.curve->findings)) j["findings"].push_back(f);
   j["findings_left_out"] = v.findings_left_out();
   j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
   if (r.curve) j["curve"] = curve_json(*r.curve);
+  if (r.design)
+    j["design"] = {{"file", r.design_file},
+                   {"tol_mm", r.design->tol},
+                   {"cell_mm", map.cell()},
+                   {"gouge", extreme_json(r.design->gouge)},
+                   {"stock_left", extreme_json(r.design->stock_left)},
+                   {"findings", findings_json(r.design->findings)},
+                   {"findings_left_out", r.design->left_out}};
   return j;
 }
 

@@ -56,7 +56,7 @@ std::optional<Wall> find_wall(const CutLog& cuts, double px, double py, double u
                               double reach, double level) {
   auto below = [&](double s) { return cuts.any_below(px + s * ux, py + s * uy, level) >= 0; };
   if (!below(s_in)) return std::nullopt;
-  const double step = std::max(cuts.largest_radius() / 16, 1e-4);
+  const double step = std::max(cuts.largest_radius() / 64, 1e-4);
   double lo = s_in, hi = NAN;
   for (double s = s_in + step; s <= s_in + reach + step; s += step) {
     if (!below(s)) {

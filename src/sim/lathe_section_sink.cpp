@@ -43,7 +43,7 @@ std::vector<std::string> LatheSectionSink::fixtures_checked() const {
   for (const FixtureRing& f : fixtures_)
     out.push_back(fmt::format("{}: checked, the ring Z{:g}..{:g} at radius {:g}..{:g}", f.name, f.ring.face - f.ring.length,
                               f.ring.face, f.ring.inner_diameter / 2, f.ring.diameter / 2));
-  for (const std::string& n : unchecked_fixtures_) out.push_back(n + ": an STL fixture, not checked yet");
+  for (const std::string& n : unchecked_fixtures_) out.push_back(n + ": an STL fixture, not checked on a lathe yet");
   return out;
 }
 

@@ -1,6 +1,8 @@
 #include "sim/verifier.hpp"
 
 #include "machine/rapid_path.hpp"
+#include "sim/mesh_top.hpp"
+#include "sim/stl_read.hpp"
 
 #include <fmt/format.h>
 
@@ -118,8 +120,9 @@ std::optional<Box> zmap_box(const Stock& stock) {
 
 namespace {
 ZMap make_map(const Stock& stock, const VerifyOptions& o) {
-  const std::optional<Box> box = zmap_box(stock);
-  if (!box) throw std::invalid_argument("an STL stock is not simulated yet: give a box or a cylinder");
+  std::optional<Box> box = zmap_box(stock);
+  std::optional<Mesh> mesh;  // an STL stock: the map on its box, each cell from its top
+  if (const auto* stl = std::get_if<StlFile>(&stock)) box = mesh_box(mesh.emplace(read_stl(stl->path, stl->scale)));
   double cell = o.cell;
   const double lx = box->max[0] - box->min[0], ly = box->max[1] - box->min[1];
   if (cell == 0 && lx > 0 && ly > 0) {  // the shorter side in min_cells cells, coarser if that is too many
@@ -135,6 +138,7 @@ ZMap make_map(const Stock& stock, const VerifyOptions& o) {
         if (d2 > r2 || d2 < in2) map.clear_cell(i, j);
       }
   }
+  if (mesh) start_at_mesh(map, *mesh);
   map.report_cuts(true);
   return map;
 }
@@ -144,14 +148,15 @@ Verifier::Verifier(const Stock& stock, MillTools& tools, std::optional<int> spin
                    const std::vector<Fixture>& fixtures)
     : map_(make_map(stock, options)), tools_(tools), options_(options) {
   for (const Fixture& f : fixtures) {
-    const auto* box = std::get_if<AxisBox>(&f.shape);
-    if (!box) {
-      unchecked_fixtures_.push_back(f.name);
-      continue;
-    }
-    // the box's own map on the stock's cells (at least two a side), probed and never cut
-    const double cell = std::min({map_.cell(), (box->max[0] - box->min[0]) / 2, (box->max[1] - box->min[1]) / 2});
-    fixtures_.push_back({f.name, ZMap(Box{box->min, box->max}, cell)});
+    // the fixture's own map on the stock's cells (at least two a side), probed and never cut; an
+    // STL's on its box, each cell from the mesh's top down
+    std::optional<Mesh> mesh;
+    Box box;
+    if (const auto* b = std::get_if<AxisBox>(&f.shape)) box = {b->min, b->max};
+    else box = mesh_box(mesh.emplace(read_stl(std::get<StlFile>(f.shape).path, std::get<StlFile>(f.shape).scale)));
+    const double cell = std::min({map_.cell(), (box.max[0] - box.min[0]) / 2, (box.max[1] - box.min[1]) / 2});
+    fixtures_.push_back({f.name, ZMap(box, cell)});
+    if (mesh) start_at_mesh(fixtures_.back().map, *mesh);
   }
   if (spindle) {
     tool_number_ = *spindle;
@@ -189,6 +194,7 @@ void Verifier::check_reference(const machine::Move& m) {
 
 void Verifier::on_move(const machine::Move& m) {
   using machine::MoveKind;
+  if (m.line != 0) last_block_ = {m.file, m.line};
   if (origin_ && options_.profile && options_.check_reference && m.is_motion()) check_reference(m);
   switch (m.kind) {
     case MoveKind::tool_change: {
@@ -239,6 +245,10 @@ void Verifier::cut(const machine::Move& m) {
   if (!path) {
     ++counts_.not_xy_arc;
     return;
+  }
+  if (options_.mark_cells) {  // the block, once for consecutive moves of it
+    if (cut_blocks_.empty() || !(cut_blocks_.back() == BlockAt{m.file, m.line})) cut_blocks_.push_back({m.file, m.line});
+    map_.mark_cuts(static_cast<std::uint32_t>(cut_blocks_.size() - 1));
   }
   if (path->arc) map_.cut_arc(tool_->shape, *path->arc);
   else map_.cut_line(tool_->shape, path->a, path->b);
@@ -309,7 +319,6 @@ void Verifier::check_fixtures(const machine::Move& m) {
 std::vector<std::string> Verifier::fixtures_checked() const {
   std::vector<std::string> out;
   for (const auto& f : fixtures_) out.push_back(f.name + ": checked");
-  for (const auto& n : unchecked_fixtures_) out.push_back(n + ": an STL fixture, not checked yet");
   return out;
 }
 

@@ -67,7 +67,15 @@ struct VerifyOptions {
   double most_cells = 1e8;                // the largest map (8 bytes a cell)
   std::uint64_t cut_moves = UINT64_MAX;   // only the first so many motions are cut (a debugger's step)
   const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
+  bool mark_cells = false;  // keep the block that last lowered each cell (a design's check)
   bool check_reference = true;  // NC2089 (with a profile): off where the stock is a guess (the default box)
+};
+
+// A block of the program: where a finding found after the run is said.
+struct BlockAt {
+  const nc::SourceFile* file = nullptr;
+  std::uint32_t line = 0;
+  bool operator==(const BlockAt&) const = default;
 };
 
 class Verifier final : public machine::MoveSink {
@@ -95,8 +103,13 @@ public:
   // Keep every cut in `log` as well (for measuring walls afterwards).
   void log_cuts(CutLog* log) { log_ = log; }
 
-  // The fixtures checked (boxes), and those not (STL, not simulated yet).
+  // Each fixture, checked.
   std::vector<std::string> fixtures_checked() const;
+
+  // With VerifyOptions::mark_cells: the blocks of the cuts, map().cut_by()'s ids indexing them,
+  // and the last block of the run.
+  const std::vector<BlockAt>& cut_blocks() const { return cut_blocks_; }
+  const BlockAt& last_block() const { return last_block_; }
 
 private:
   struct FixtureMap {
@@ -115,7 +128,6 @@ private:
 
   ZMap map_;
   std::vector<FixtureMap> fixtures_;
-  std::vector<std::string> unchecked_fixtures_;
   MillTools& tools_;
   const VerifyTool* tool_ = nullptr;
   int tool_number_ = 0;
@@ -129,13 +141,15 @@ private:
   Counts counts_;
   std::set<std::tuple<std::string, const nc::SourceFile*, std::uint32_t>> found_at_;  // code, block
   std::map<int, bool> speed_warned_;  // by T number
+  std::vector<BlockAt> cut_blocks_;
+  BlockAt last_block_;
   CutLog* log_ = nullptr;
   std::optional<machine::AxisVector> origin_;  // the work zero in machine coordinates, to check the reference point
   bool reference_found_ = false;               // NC2089 is said once
 };
 
 // The box a Z-map covers for a stock: a box itself, a cylinder's or tube's square about the Z axis.
-// None for an STL stock (not simulated yet).
+// None for an STL stock (its mesh's box, once read).
 std::optional<Box> zmap_box(const Stock& stock);
 
 }  // namespace ncurve::sim

@@ -1,5 +1,7 @@
 #include "sim/zmap.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,10 +18,9 @@ ZMap::ZMap(const Box& stock, double cell, int min_cells, double most_cells) : st
   }
   if (!(cell > 0) || !std::isfinite(cell)) throw std::invalid_argument("a Z-map's cell size must be positive");
   const double nx = std::ceil(lx / cell - 1e-9), ny = std::ceil(ly / cell - 1e-9);
-  if (nx * ny > most_cells)
-    throw std::invalid_argument("a Z-map of " + std::to_string(static_cast<long long>(nx)) + " x " +
-                                std::to_string(static_cast<long long>(ny)) + " cells is more than the " +
-                                std::to_string(static_cast<long long>(most_cells)) + " allowed");
+  if (!(nx * ny <= most_cells))  // (NaN too)
+    throw std::invalid_argument(
+        fmt::format("a Z-map of {:.0f} x {:.0f} cells is more than the {:.0f} allowed", nx, ny, most_cells));
   cell_ = cell;
   nx_ = static_cast<int>(nx);
   ny_ = static_cast<int>(ny);
@@ -35,11 +36,21 @@ double ZMap::height_at(double x, double y) const {
   return height(static_cast<int>(fi), static_cast<int>(fj));
 }
 
-void ZMap::clear_cell(int i, int j) {
+void ZMap::clear_cell(int i, int j) { start_cell(i, j, stock_.min[2]); }
+
+void ZMap::start_cell(int i, int j, double height) {
   double& h = h_[static_cast<std::size_t>(j) * nx_ + i];
   const double top = stock_.max[2], bottom = stock_.min[2];
-  absent_ += (std::clamp(h, bottom, top) - bottom) * cell_ * cell_;
-  h = std::min(h, bottom);
+  const double to = height > bottom ? height : bottom;  // NaN: none
+  if (!(to < h)) return;
+  absent_ += (std::clamp(h, bottom, top) - std::clamp(to, bottom, top)) * cell_ * cell_;
+  h = to;
+}
+
+void ZMap::mark_cuts(std::uint32_t id) {
+  if (cut_by_.empty()) cut_by_.assign(h_.size(), kNoCut);
+  cut_id_ = id;
+  report_ = true;
 }
 
 double ZMap::volume_removed() const {
@@ -75,6 +86,11 @@ CutReport ZMap::probe_arc(const ToolShape& tool, const Arc& arc) {
 
 void ZMap::after_row(double* h, int i0, int j, int n) {
   if (!report_ && !probe_) return;
+  if (!probe_ && !cut_by_.empty()) {
+    std::uint32_t* by = cut_by_.data() + static_cast<std::size_t>(j) * nx_ + i0;
+    for (int k = 0; k < n; ++k)
+      if (h[k] < before_[k]) by[k] = cut_id_;
+  }
   const double top = stock_.max[2], bottom = stock_.min[2];
   double removed_sum = 0;
   for (int k = 0; k < n; ++k) {

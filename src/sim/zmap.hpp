@@ -4,6 +4,7 @@
 // per cell in closed form (or by an exact 1-D minimisation to kLowestTolerance): docs/verify.md.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -73,6 +74,9 @@ public:
   // A cell of the box where the stock has no material (outside a bar): down to the bottom before
   // any cut, and not counted as removed.
   void clear_cell(int i, int j);
+  // A cell of a fresh map whose material starts at `height` (an STL stock's surface; below the
+  // bottom or -infinity: none), not counted as removed.
+  void start_cell(int i, int j, double height);
   // Material removed, mm^3: each cell's column from the top down to its height (not below the bottom).
   double volume_removed() const;
 
@@ -85,6 +89,11 @@ public:
   // row it changes is kept for the comparison).
   void report_cuts(bool on) { report_ = on; }
   const CutReport& last_cut() const { return last_; }
+  // From now on each cut (not a probe) marks the cells it lowers with `id` (turns report_cuts on):
+  // cut_by() has, per cell, the id of the cut that last lowered it, kNoCut where none did.
+  static constexpr std::uint32_t kNoCut = UINT32_MAX;
+  void mark_cuts(std::uint32_t id);
+  std::span<const std::uint32_t> cut_by() const { return cut_by_; }
   // What a cut would remove, leaving the map as it is: where a body that must not cut (a holder,
   // a fixture's tool) would meet the material.
   CutReport probe_line(const ToolShape& tool, const Point3& a, const Point3& b);
@@ -110,6 +119,8 @@ private:
   double absent_ = 0;  // the columns clear_cell emptied, mm^3
   CutReport last_;
   std::vector<double> before_;
+  std::vector<std::uint32_t> cut_by_;  // empty until mark_cuts
+  std::uint32_t cut_id_ = kNoCut;
 };
 
 }  // namespace ncurve::sim
