@@ -150,6 +150,7 @@ int run_command(const app::RunArgs& a) {
       html->set_part(sim::part_grid(*verify->map()));
       if (verify->report().curve) html->set_deviation(report::deviation_json(*verify->report().curve));
     }
+    if (html && verify->section()) html->set_part(report::lathe_part(*verify->section()));
     try {
       verify->write_part(setup.inputs);
     } catch (const io::OutputError& e) {

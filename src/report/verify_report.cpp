@@ -179,8 +179,9 @@ std::string verify_text(const VerifyReport& r) {
     const auto& c = r.section_sink->counts();
     if (c.no_tool) out += fmt::format("  not cut        {} moves with no tool (before the first T code, or T0)\n", c.no_tool);
     if (c.not_zx_arc) out += fmt::format("  not cut        {} arcs outside G18\n", c.not_zx_arc);
+    if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
     const auto& found = r.section_sink->findings();
-    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material)\n",
+    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material, the holder in the bar, the tool in a fixture)\n",
                        found.size() + r.section_sink->findings_left_out(),
                        r.section_sink->findings_left_out() ? fmt::format(" ({} listed)", found.size()) : std::string());
     if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
@@ -234,7 +235,7 @@ nlohmann::json verify_json(const VerifyReport& r) {
     j["volume_by_tool_mm3"] = by_tool_json(r.section_sink->volume_by_tool());
     const auto& c = r.section_sink->counts();
     j["moves_cut"] = c.cut;
-    j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}};
+    j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}, {"after", c.after}};
     j["findings"] = findings_json(r.section_sink->findings());
     j["findings_left_out"] = r.section_sink->findings_left_out();
     j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
