@@ -93,8 +93,9 @@ void Executor::warn_spindle_limit(double rpm, std::uint16_t column) {
   const double limit = profile_.spindle_limit(&parameter);
   const std::string asked = modal_.css ? fmt::format("G96 S{} asks {:.0f} rev/min here,", speed_, rpm)
                                        : fmt::format("S{} rev/min is", speed_);
-  const std::string which = parameter == 3772 ? "No.3772, the upper limit of spindle speed"
-                                              : fmt::format("No.{}, the maximum speed of gear {}", parameter, parameter - 3740);
+  const std::string which = parameter == 3772
+                                ? "No.3772, the upper limit of spindle speed"
+                                : fmt::format("No.{}, the maximum speed of gear {}", parameter, parameter - 3740);
   warn_once("NC2090", fmt::format("{} over the machine's limit: the control clamps the spindle at {:.0f} rev/min ({}) "
                                   "without an alarm: the cut runs slower than programmed, its feed per tooth higher",
                                   asked, limit, which),

@@ -372,7 +372,8 @@ TEST(PeckDrillingWithoutD, ALathePecksByItsRtrBit) {
 // ---- a spindle speed over the machine's limit (NC2090) ----
 
 namespace {
-machine::MachineProfile with_parameters(machine::MachineProfile p, const std::vector<std::pair<std::string, double>>& values) {
+machine::MachineProfile with_parameters(machine::MachineProfile p,
+                                        const std::vector<std::pair<std::string, double>>& values) {
   for (const auto& [key, value] : values) machine::set_parameter(p, key, value);
   return p;
 }
@@ -382,7 +383,8 @@ machine::MachineProfile with_parameters(machine::MachineProfile p, const std::ve
 // 4000 rev/min = 400 mm/min, so 30 mm take 30 / 400 min = 4.5 s (3 s at the 6000 programmed). One
 // warning, at the S block (line 2), naming the clamp and the parameter.
 TEST(SpindleOverTheLimit, AnSOverNo3772IsClampedAndWarned) {
-  auto r = run("G00 X0 Y0\nS6000 M03\nG95 G01 X30. F0.1\nX0\nM30\n", with_parameters(test::zero_offset_mill(), {{"3772", 4000}}));
+  const auto mill = with_parameters(test::zero_offset_mill(), {{"3772", 4000}});
+  auto r = run("G00 X0 Y0\nS6000 M03\nG95 G01 X30. F0.1\nX0\nM30\n", mill);
   ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
   EXPECT_EQ(count(r, "NC2090"), 1);
   ASSERT_NE(first(r, "NC2090"), nullptr);
@@ -419,7 +421,8 @@ TEST(SpindleOverTheLimit, TheTopGearsMaximumClampsWithoutNo3772) {
   EXPECT_EQ(count(in_gear, "NC2090"), 0);
   auto over = run("S6000 M03\nM30\n", gears);
   EXPECT_EQ(count(over, "NC2090"), 1);
-  EXPECT_TRUE(has(text(over, "NC2090"), "at 4500 rev/min (No.3742, the maximum speed of gear 2)")) << text(over, "NC2090");
+  EXPECT_TRUE(has(text(over, "NC2090"), "at 4500 rev/min (No.3742, the maximum speed of gear 2)"))
+      << text(over, "NC2090");
   auto both = run("S6000 M03\nM30\n", with_parameters(gears, {{"3772", 4000}}));
   EXPECT_TRUE(has(text(both, "NC2090"), "at 4000 rev/min (No.3772")) << text(both, "NC2090");
 }
@@ -451,6 +454,21 @@ TEST(SpindleOverTheLimit, SurfaceSpeedPastTheLimitIsClampedAndWarned) {
   EXPECT_EQ(count(outside, "NC2090"), 0);
   auto g97 = run("G97 S2000 M03\nG99 G01 X10. F0.2\nM30\n", lathe);  // at the limit in G97
   EXPECT_EQ(count(g97, "NC2090"), 0);
+}
+
+// An arc under G96 from X60 Z0 to Z-50 with R25 (centre at radius 30, Z-25): G02 (clockwise seen from
+// +Y, X up and Z right) bows towards the centre line, down to radius 5, where the speed would be
+// 3183 rev/min, over No.3772 = 2000: warned. G03 bows away, to radius 55, its nearest point at the
+// ends, radius 30: 1000 x 100 / (2 pi 30) = 531 rev/min, clean.
+TEST(SpindleOverTheLimit, AnArcIsCheckedWhereItComesNearestTheCentre) {
+  const auto lathe = with_parameters(machine::default_lathe(), {{"3772", 2000}});
+  auto in = run("G99 G00 X60. Z0\nG96 S100 M03\nG02 Z-50. R25. F0.2\nM30\n", lathe);
+  ASSERT_TRUE(in.result.ok()) << nc::format(*in.result.alarm);
+  EXPECT_EQ(count(in, "NC2090"), 1);
+  EXPECT_TRUE(has(text(in, "NC2090"), "asks 3183 rev/min")) << text(in, "NC2090");
+  auto out = run("G99 G00 X60. Z0\nG96 S100 M03\nG03 Z-50. R25. F0.2\nM30\n", lathe);
+  ASSERT_TRUE(out.result.ok());
+  EXPECT_EQ(count(out, "NC2090"), 0);
 }
 
 TEST(SpindleOverTheLimit, TheParametersAreWholeSpeeds) {

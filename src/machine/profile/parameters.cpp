@@ -165,7 +165,8 @@ double MachineProfile::spindle_limit(int* parameter) const {
   int number = 0;
   for (int g = 0; g < 4; ++g)
     if (gear_max_speed[g] > limit) limit = gear_max_speed[g], number = 3741 + g;
-  if (spindle_upper_limit > 0 && (limit == 0 || spindle_upper_limit <= limit)) limit = spindle_upper_limit, number = 3772;
+  if (spindle_upper_limit > 0 && (limit == 0 || spindle_upper_limit <= limit))
+    limit = spindle_upper_limit, number = 3772;
   if (parameter) *parameter = number;
   return limit;
 }
@@ -250,7 +251,7 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   else if (key == "3410") p.arc_radius_tolerance = value * p.increment;
   else if (key == "3741" || key == "3742" || key == "3743" || key == "3744" || key == "3772") {
     if (value < 0 || value != std::floor(value))
-      throw std::runtime_error(fmt::format("parameter {} is a spindle speed in rev/min, a whole number, 0 or more", key));
+      throw std::runtime_error(fmt::format("parameter {} is a spindle speed, a whole number of rev/min, 0 or more", key));
     (key == "3772" ? p.spindle_upper_limit : p.gear_max_speed[key[3] - '1']) = value;
   }
   else if (key == "5114" || key == "5115") {
