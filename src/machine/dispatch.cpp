@@ -263,6 +263,9 @@ void Executor::word_settings(const std::vector<int>& one_shot, SubprogramCall& s
   if (has('S')) {  // on a lathe, S with G50 (G92 on systems B/C) is the spindle speed limit
     bool limit = profile_.lathe() && std::ranges::any_of(one_shot, [](int g) { return g == 500 || g == 920; });
     (limit ? max_spindle_ : speed_) = word('S').value;
+    const double machine = profile_.spindle_limit();
+    if (!limit && !modal_.css && machine > 0 && speed_ > machine * (1 + 1e-9)) [[unlikely]]
+      warn_spindle_limit(speed_, word('S').column);
   }
   if (has('H')) {
     h_ = integer(word('H'), "H");

@@ -158,7 +158,10 @@ private:
   void m_code_event(int m);  // spindle, coolant, M06, M00/M01 and other M codes of the block
   void set_origin();
   void warn_mixed_decimal_points(const nc::Program& p);
+  double css_top_speed() const;
   double minutes_per_rev(double r0, double r1) const;
+  void warn_spindle_limit(double rpm, std::uint16_t column);  // NC2090 (feed_time.cpp)
+  void check_css_spindle_limit(const Move& m);
   double feed_seconds(double length, double r0, double r1) const;
   double arc_feed_seconds(const Move& m, double planar) const;
   void clamp_cutting_feed(Move& m, double fed) {  // NC2073: over the maximum cutting feed (feed_time.cpp)

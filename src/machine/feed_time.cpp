@@ -1,8 +1,10 @@
 // The time a move takes at its programmed feed: per minute, or per revolution of a spindle at S
-// rev/min or, under G96, at the speed constant surface speed gives along the move, clamped.
+// rev/min or, under G96, at the speed constant surface speed gives along the move, clamped by G50 S
+// and by the machine's limit (No.3772, No.3741..3744), which NC2090 warns of.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -10,17 +12,28 @@
 
 namespace ncurve::machine {
 
+// The highest speed the spindle turns at under G96: G50 S (G92 S on systems B/C) and the machine's
+// limit (No.3772, the top gear's maximum), the lower of those set; 0 if neither is.
+double Executor::css_top_speed() const {
+  const double machine = profile_.spindle_limit();
+  if (max_spindle_ > 0 && machine > 0) return std::min(max_spindle_, machine);
+  return max_spindle_ > 0 ? max_spindle_ : machine;
+}
+
 // The mean of 1 / spindle speed (min/rev) along a move whose X radius runs linearly from r0 to r1:
-// S rev/min, or under G96 the speed n(r) = 1000 S / (2 pi |r|) that gives S m/min at radius r (taken
-// at 0.5 mm nearer the centre), at most G50 S (G92 S on systems B/C). Then 1/n(r) = k max(|r|, rho)
-// with k = 2 pi / (1000 S) and rho the radius below which the clamp holds: its mean in closed form.
+// S rev/min, at most the machine's limit, or under G96 the speed n(r) = 1000 S / (2 pi |r|) that
+// gives S m/min at radius r (taken at 0.5 mm nearer the centre), at most css_top_speed(). Then
+// 1/n(r) = k max(|r|, rho) with k = 2 pi / (1000 S) and rho the radius below which the clamp holds:
+// its mean in closed form.
 double Executor::minutes_per_rev(double r0, double r1) const {
   if (!modal_.css || speed_ <= 0) {
-    const double rpm = speed_ > 0 ? speed_ : profile_.spindle_speed_for_time;
+    double rpm = speed_ > 0 ? speed_ : profile_.spindle_speed_for_time;
+    if (const double limit = profile_.spindle_limit(); limit > 0) rpm = std::min(rpm, limit);
     return rpm > 0 ? 1.0 / rpm : 0.0;
   }
   const double k = 2 * std::numbers::pi / (1000.0 * speed_);
-  const double rho = std::max(0.5, max_spindle_ > 0 ? 1.0 / (k * max_spindle_) : 0.0);
+  const double top = css_top_speed();
+  const double rho = std::max(0.5, top > 0 ? 1.0 / (k * top) : 0.0);
   auto F = [rho](double r) {  // an antiderivative of max(|r|, rho), odd in r
     const double u = std::fabs(r);
     const double g = u <= rho ? rho * u : (u * u + rho * rho) / 2;
@@ -70,6 +83,47 @@ void Executor::clamp_to_max_feed(Move& m, double fed) {
                                   "and the time is the clamped feed's",
                                   modal_.inch ? feed_ / 25.4 : feed_, modal_.feed_per_rev ? " per revolution" : "",
                                   rate, max));
+}
+
+// The part of an S over what the machine turns (NC2090): the control clamps the spindle at its limit
+// without an alarm. `rpm` is the speed the program asks: S in G97, or under G96 the speed at the
+// move's radius nearest the centre, already at most G50 S.
+void Executor::warn_spindle_limit(double rpm, std::uint16_t column) {
+  int parameter = 0;
+  const double limit = profile_.spindle_limit(&parameter);
+  const std::string asked = modal_.css ? fmt::format("G96 S{} asks {:.0f} rev/min here,", speed_, rpm)
+                                       : fmt::format("S{} rev/min is", speed_);
+  const std::string which = parameter == 3772
+                                ? "No.3772, the upper limit of spindle speed"
+                                : fmt::format("No.{}, the maximum speed of gear {}", parameter, parameter - 3740);
+  warn_once("NC2090", fmt::format("{} over the machine's limit: the control clamps the spindle at {:.0f} rev/min ({}) "
+                                  "without an alarm: the cut runs slower than programmed, its feed per tooth higher",
+                                  asked, limit, which),
+            column);
+}
+
+// A cutting move under G96 whose radius comes near enough to the centre for the speed to pass the
+// machine's limit, with no G50 S at or below that limit to hold it (NC2090).
+void Executor::check_css_spindle_limit(const Move& m) {
+  const double limit = profile_.spindle_limit();
+  if (limit <= 0 || (max_spindle_ > 0 && max_spindle_ <= limit)) return;
+  double r = std::min(std::fabs(m.start[0]), std::fabs(m.end[0]));
+  if (m.kind == MoveKind::line && m.start[0] * m.end[0] <= 0) r = 0;
+  if (m.kind == MoveKind::arc) {
+    const PlaneAxes pa = plane_axes(m.plane);
+    if (pa.p == 0 || pa.q == 0) {  // X in the plane: its nearest point on 64 pieces of the arc
+      const double a0 = std::atan2(m.start[pa.q] - m.center[pa.q], m.start[pa.p] - m.center[pa.p]);
+      const double rs = std::hypot(m.start[pa.p] - m.center[pa.p], m.start[pa.q] - m.center[pa.q]);
+      const double re = std::hypot(m.end[pa.p] - m.center[pa.p], m.end[pa.q] - m.center[pa.q]);
+      for (int i = 1; i < 64; ++i) {
+        const double t = i / 64.0, rr = rs + (re - rs) * t, a = a0 + m.sweep * t;
+        r = std::min(r, std::fabs(pa.p == 0 ? m.center[0] + rr * std::cos(a) : m.center[0] + rr * std::sin(a)));
+      }
+    }
+  }
+  double rpm = 1000.0 * speed_ / (2 * std::numbers::pi * std::max(r, 0.5));
+  if (max_spindle_ > 0) rpm = std::min(rpm, max_spindle_);
+  if (rpm > limit * (1 + 1e-9)) warn_spindle_limit(rpm, 0);
 }
 
 }  // namespace ncurve::machine

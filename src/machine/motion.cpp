@@ -115,6 +115,8 @@ void Executor::emit(Move& m) {
     if (m.is_motion()) shape_moves_->push_back(m);
     return;
   }
+  if (modal_.css && speed_ > 0 && (m.kind == MoveKind::line || m.kind == MoveKind::arc)) [[unlikely]]
+    check_css_spindle_limit(m);
   path_corner_.on_move(m);
 }
 

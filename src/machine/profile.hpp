@@ -171,6 +171,8 @@ struct MachineProfile {
   bool linear_rapid = false;  // No.1401#1 LRP: G00 on a straight line (else each axis at its own rate)
   double max_cutting_feed = 10000;  // mm/min
   double spindle_speed_for_time = 1000;  // rev/min assumed for feed per revolution when no S is active
+  std::array<double, 4> gear_max_speed{};  // No.3741..3744, rev/min: each gear's maximum speed (0: not set)
+  double spindle_upper_limit = 0;          // No.3772, rev/min: the spindle speed clamp (0: none)
   std::array<AxisVector, 7> work_offsets{};  // [0] external (#5201..), [1..6] G54..G59
   std::array<AxisVector, 4> reference_points{};  // machine coordinates of reference points 1..4
   std::optional<AxisVector> floating_reference;  // G30.1: set by the operator on the control (No.1244)
@@ -194,6 +196,9 @@ struct MachineProfile {
     stroke1_minus.fill(-std::numeric_limits<double>::infinity());
   }
   bool lathe() const { return type == MachineType::lathe; }
+  // The speed the control clamps the spindle at, rev/min (0: none), and the parameter that sets it:
+  // No.3772, or the top gear's maximum (type M gear selection takes the top gear for any S beyond it).
+  double spindle_limit(int* parameter = nullptr) const;
   nc::ParseOptions parse_options() const { return nc::ParseOptions{number_digits}; }
 };
 

@@ -1,12 +1,16 @@
 // The shipped mill's setup (reference position 1 at machine zero above the table, G54 below it) and
 // the mistakes a control accepts without an alarm that ruin the part or the tool: a reference
 // return towards the part (NC2074), a first cut after a tool change with no tool length
-// compensation (NC2075), peck drilling whose d is 0 (NC2076). Every expected value is worked by
-// hand from the manuals' rules in the comment beside it.
+// compensation (NC2075), peck drilling whose d is 0 (NC2076), a spindle speed over the machine's
+// limit (NC2090). Every expected value is worked by hand from the manuals' rules in the comment
+// beside it.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <numbers>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/run_program.hpp"
@@ -363,4 +367,115 @@ TEST(PeckDrillingWithoutD, ALathePecksByItsRtrBit) {
       << text(peck, "NC2076");
   to_r.peck_clearance = 1.0;
   EXPECT_EQ(count(run(program, to_r), "NC2076"), 0);
+}
+
+// ---- a spindle speed over the machine's limit (NC2090) ----
+
+namespace {
+machine::MachineProfile with_parameters(machine::MachineProfile p,
+                                        const std::vector<std::pair<std::string, double>>& values) {
+  for (const auto& [key, value] : values) machine::set_parameter(p, key, value);
+  return p;
+}
+}  // namespace
+
+// No.3772 = 4000: S6000 is clamped at 4000 rev/min. G95 X30. F0.1 from X0 then feeds 0.1 mm/rev x
+// 4000 rev/min = 400 mm/min, so 30 mm take 30 / 400 min = 4.5 s (3 s at the 6000 programmed). One
+// warning, at the S block (line 2), naming the clamp and the parameter.
+TEST(SpindleOverTheLimit, AnSOverNo3772IsClampedAndWarned) {
+  const auto mill = with_parameters(test::zero_offset_mill(), {{"3772", 4000}});
+  auto r = run("G00 X0 Y0\nS6000 M03\nG95 G01 X30. F0.1\nX0\nM30\n", mill);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(count(r, "NC2090"), 1);
+  ASSERT_NE(first(r, "NC2090"), nullptr);
+  EXPECT_EQ(first(r, "NC2090")->span.line, 2u);
+  EXPECT_EQ(first(r, "NC2090")->span.column, 1u);  // the S word
+  EXPECT_TRUE(has(text(r, "NC2090"), "clamps the spindle at 4000 rev/min (No.3772")) << text(r, "NC2090");
+  EXPECT_TRUE(has(text(r, "NC2090"), "the cut runs slower than programmed, its feed per tooth higher"));
+  const auto m = r.motions();
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_NEAR(m[1].seconds, 4.5, 1e-9);
+  EXPECT_NEAR(m[2].seconds, 4.5, 1e-9);
+}
+
+// At the limit exactly (S4000 with No.3772 = 4000) and with no limit set (factory No.3772 = 0 and no
+// gear maxima): no warning; 30 mm at 0.1 mm/rev take 30 / 400 min = 4.5 s and 30 / 600 min = 3 s.
+TEST(SpindleOverTheLimit, AtTheLimitOrWithNoLimitIsClean) {
+  const std::string program = "G00 X0 Y0\nS{} M03\nG95 G01 X30. F0.1\nM30\n";
+  auto at = run(fmt::format(fmt::runtime(program), 4000), with_parameters(test::zero_offset_mill(), {{"3772", 4000}}));
+  ASSERT_TRUE(at.result.ok());
+  EXPECT_EQ(count(at, "NC2090"), 0);
+  EXPECT_NEAR(at.motions()[1].seconds, 4.5, 1e-9);
+  auto none = run(fmt::format(fmt::runtime(program), 6000));
+  ASSERT_TRUE(none.result.ok());
+  EXPECT_EQ(count(none, "NC2090"), 0);
+  EXPECT_NEAR(none.motions()[1].seconds, 3.0, 1e-9);
+}
+
+// Type M gear selection picks the lowest gear whose maximum (No.3741..3744) covers S; an S over the
+// top gear's maximum turns at it. Gears 1500 and 4500 rev/min: S2000 runs in gear 2 (clean), S6000 at
+// 4500 (No.3742). With No.3772 = 4000 too, the lower of the two, 4000, holds.
+TEST(SpindleOverTheLimit, TheTopGearsMaximumClampsWithoutNo3772) {
+  const auto gears = with_parameters(test::zero_offset_mill(), {{"3741", 1500}, {"3742", 4500}});
+  auto in_gear = run("S2000 M03\nM30\n", gears);
+  EXPECT_EQ(count(in_gear, "NC2090"), 0);
+  auto over = run("S6000 M03\nM30\n", gears);
+  EXPECT_EQ(count(over, "NC2090"), 1);
+  EXPECT_TRUE(has(text(over, "NC2090"), "at 4500 rev/min (No.3742, the maximum speed of gear 2)"))
+      << text(over, "NC2090");
+  auto both = run("S6000 M03\nM30\n", with_parameters(gears, {{"3772", 4000}}));
+  EXPECT_TRUE(has(text(both, "NC2090"), "at 4000 rev/min (No.3772")) << text(both, "NC2090");
+}
+
+// A lathe with No.3772 = 2000 facing X60 -> X10 (radius 30 -> 5) at F0.2 under G96 S100 and no G50 S:
+// the speed 1000 x 100 / (2 pi r) reaches 1000 x 100 / (2 pi 5) = 3183 rev/min at the centre end, so
+// the control clamps it at 2000 below rc = 100000 / (2 pi 2000) = 25 / pi = 7.9577 mm:
+// t = 300 [(7.9577 - 5) / 2000 + pi (30^2 - 7.9577^2) / 100000] = 0.4437 + 7.8855 = 8.3291 s.
+// A G50 S3000 over the limit changes nothing (the lower, 2000, holds; warned); G50 S1500 under it is
+// the program's own clamp (not warned). A cut that stays above rc (X60 -> X40) is clean.
+TEST(SpindleOverTheLimit, SurfaceSpeedPastTheLimitIsClampedAndWarned) {
+  const auto lathe = with_parameters(machine::default_lathe(), {{"3772", 2000}});
+  const double rc = 25 / std::numbers::pi;
+  const double want = 300 * ((rc - 5) / 2000 + std::numbers::pi * (30 * 30 - rc * rc) / 100000);
+  EXPECT_NEAR(want, 8.3291, 1e-4);
+  auto r = run("G99 G00 X60. Z0\nG96 S100 M03\nG01 X10. F0.2\nM30\n", lathe);
+  ASSERT_TRUE(r.result.ok()) << nc::format(*r.result.alarm);
+  EXPECT_EQ(count(r, "NC2090"), 1);
+  ASSERT_NE(first(r, "NC2090"), nullptr);
+  EXPECT_EQ(first(r, "NC2090")->span.line, 3u);
+  EXPECT_TRUE(has(text(r, "NC2090"), "G96 S100 asks 3183 rev/min here, over the machine's limit")) << text(r, "NC2090");
+  EXPECT_NEAR(r.motions()[1].seconds, want, 1e-9);
+  auto g50_over = run("G99 G00 X60. Z0\nG50 S3000\nG96 S100 M03\nG01 X10. F0.2\nM30\n", lathe);
+  EXPECT_EQ(count(g50_over, "NC2090"), 1);
+  EXPECT_NEAR(g50_over.motions()[1].seconds, want, 1e-9);
+  auto g50_under = run("G99 G00 X60. Z0\nG50 S1500\nG96 S100 M03\nG01 X10. F0.2\nM30\n", lathe);
+  EXPECT_EQ(count(g50_under, "NC2090"), 0);
+  auto outside = run("G99 G00 X60. Z0\nG96 S100 M03\nG01 X40. F0.2\nM30\n", lathe);
+  EXPECT_EQ(count(outside, "NC2090"), 0);
+  auto g97 = run("G97 S2000 M03\nG99 G01 X10. F0.2\nM30\n", lathe);  // at the limit in G97
+  EXPECT_EQ(count(g97, "NC2090"), 0);
+}
+
+// An arc under G96 from X60 Z0 to Z-50 with R25 (centre at radius 30, Z-25): G02 (clockwise seen from
+// +Y, X up and Z right) bows towards the centre line, down to radius 5, where the speed would be
+// 3183 rev/min, over No.3772 = 2000: warned. G03 bows away, to radius 55, its nearest point at the
+// ends, radius 30: 1000 x 100 / (2 pi 30) = 531 rev/min, clean.
+TEST(SpindleOverTheLimit, AnArcIsCheckedWhereItComesNearestTheCentre) {
+  const auto lathe = with_parameters(machine::default_lathe(), {{"3772", 2000}});
+  auto in = run("G99 G00 X60. Z0\nG96 S100 M03\nG02 Z-50. R25. F0.2\nM30\n", lathe);
+  ASSERT_TRUE(in.result.ok()) << nc::format(*in.result.alarm);
+  EXPECT_EQ(count(in, "NC2090"), 1);
+  EXPECT_TRUE(has(text(in, "NC2090"), "asks 3183 rev/min")) << text(in, "NC2090");
+  auto out = run("G99 G00 X60. Z0\nG96 S100 M03\nG03 Z-50. R25. F0.2\nM30\n", lathe);
+  ASSERT_TRUE(out.result.ok());
+  EXPECT_EQ(count(out, "NC2090"), 0);
+}
+
+TEST(SpindleOverTheLimit, TheParametersAreWholeSpeeds) {
+  machine::MachineProfile p = machine::default_mill();
+  EXPECT_THROW(machine::set_parameter(p, "3772", -1), std::runtime_error);
+  EXPECT_THROW(machine::set_parameter(p, "3741", 1500.5), std::runtime_error);
+  machine::set_parameter(p, "3744", 8000);
+  EXPECT_EQ(p.gear_max_speed[3], 8000);
+  EXPECT_EQ(p.spindle_limit(), 8000);
 }

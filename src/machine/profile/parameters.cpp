@@ -100,6 +100,8 @@ constexpr const char* kSupportedParameters[] = {
     "3404#7",
     "3405#4",
     "3410",
+    "3741..3744",
+    "3772",
     "5001#5",
     "5003#0",
     "5003#1",
@@ -157,6 +159,17 @@ constexpr const char* kSupportedAxisParameters[] = {
     "1320..1323",
     "5440",
 };
+
+double MachineProfile::spindle_limit(int* parameter) const {
+  double limit = 0;
+  int number = 0;
+  for (int g = 0; g < 4; ++g)
+    if (gear_max_speed[g] > limit) limit = gear_max_speed[g], number = 3741 + g;
+  if (spindle_upper_limit > 0 && (limit == 0 || spindle_upper_limit <= limit))
+    limit = spindle_upper_limit, number = 3772;
+  if (parameter) *parameter = number;
+  return limit;
+}
 
 void set_parameter(MachineProfile& p, const std::string& key, double value) {
   auto bit = [&] {
@@ -236,6 +249,11 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
   else if (key == "3405#4") p.chamfer_address_c = bit();
   else if (key == "5001#5") p.position_offset_by_h = bit();
   else if (key == "3410") p.arc_radius_tolerance = value * p.increment;
+  else if (key == "3741" || key == "3742" || key == "3743" || key == "3744" || key == "3772") {
+    if (value < 0 || value != std::floor(value))
+      throw std::runtime_error(fmt::format("parameter {} is a spindle speed, a whole number of rev/min, 0 or more", key));
+    (key == "3772" ? p.spindle_upper_limit : p.gear_max_speed[key[3] - '1']) = value;
+  }
   else if (key == "5114" || key == "5115") {
     if (value < 0 || value != std::floor(value))
       throw std::runtime_error(fmt::format("parameter {} is a whole number of increments, 0 or more", key));
