@@ -105,8 +105,12 @@ void sloping_row(double* h, int n, double ox0, double oy, double step, const Lin
 
 }  // namespace
 
-void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
-  last_ = {};
+void ZMap::line_rows(const ToolShape& tool, const Point3& a, const Point3& b, int& j0, int& j1) const {
+  const double r = tool.radius(), pad = 1e-9 * (1 + r);
+  rows_of(std::min(a[1], b[1]) - r - pad, std::max(a[1], b[1]) + r + pad, j0, j1);
+}
+
+void ZMap::pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pass& p) {
   LineMove m{a[0], a[1], a[2], b[0] - a[0], b[1] - a[1], b[2] - a[2], 0, tool.radius()};
   m.a = m.vx * m.vx + m.vy * m.vy;
   const double r = m.r, pad = 1e-9 * (1 + r);
@@ -115,7 +119,9 @@ void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
   const double nx = len > 0 ? -m.vy / len : 0, ny = len > 0 ? m.vx / len : 0;
   const bool plunge = m.a <= 1e-24 * (1 + m.dz * m.dz);
   int j0, j1;
-  rows_of(std::min(a[1], b[1]) - r - pad, std::max(a[1], b[1]) + r + pad, j0, j1);
+  line_rows(tool, a, b, j0, j1);
+  j0 = std::max(j0, p.lo);
+  j1 = std::min(j1, p.hi);
   for (int j = j0; j < j1; ++j) {
     const double y = cell_y(j);
     // the row's chord of the stadium: of the end discs and the two sides
@@ -145,13 +151,13 @@ void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
     double* hr = row(j).data() + i0;
     const int n = i1 - i0;
     const double ox0 = cell_x(i0) - a[0], oy = y - a[1];
-    before_row(hr, n);
+    before_row(hr, n, p);
     if (plunge) plunge_row(hr, n, ox0, oy, cell(), m, tool);
     else if (tool.kind() == ToolShape::Kind::flat) flat_row(hr, n, ox0, oy, cell(), m);
     else if (tool.kind() == ToolShape::Kind::ball) ball_row(hr, n, ox0, oy, cell(), m);
     else if (m.dz == 0) level_row(hr, n, ox0, oy, cell(), m, tool);
     else sloping_row(hr, n, ox0, oy, cell(), m, tool);
-    after_row(hr, i0, j, n);
+    after_row(hr, i0, j, n, p);
   }
 }
 

@@ -49,43 +49,51 @@ double ZMap::volume_removed() const {
   return sum * cell_ * cell_ - absent_;
 }
 
-void ZMap::before_row(const double* h, int n) {
-  if (report_ || probe_) before_.assign(h, h + n);
+void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
+  Pass p{0, ny_, report_, false, &before_, nullptr, {}};
+  pass_line(tool, a, b, p);
+  last_ = p.out;
+}
+
+void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
+  Pass p{0, ny_, report_, false, &before_, nullptr, {}};
+  pass_arc(tool, arc, p);
+  last_ = p.out;
 }
 
 CutReport ZMap::probe_line(const ToolShape& tool, const Point3& a, const Point3& b) {
-  const CutReport kept = last_;
-  probe_ = true;
-  cut_line(tool, a, b);
-  probe_ = false;
-  const CutReport r = last_;
-  last_ = kept;
-  return r;
+  Pass p{0, ny_, true, true, &before_, nullptr, {}};
+  pass_line(tool, a, b, p);
+  return p.out;
 }
 
 CutReport ZMap::probe_arc(const ToolShape& tool, const Arc& arc) {
-  const CutReport kept = last_;
-  probe_ = true;
-  cut_arc(tool, arc);
-  probe_ = false;
-  const CutReport r = last_;
-  last_ = kept;
-  return r;
+  Pass p{0, ny_, true, true, &before_, nullptr, {}};
+  pass_arc(tool, arc, p);
+  return p.out;
 }
 
-void ZMap::after_row(double* h, int i0, int j, int n) {
-  if (!report_ && !probe_) return;
+void ZMap::before_row(const double* h, int n, Pass& p) const {
+  if (p.report) p.before->assign(h, h + n);
+}
+
+void ZMap::after_row(double* h, int i0, int j, int n, Pass& p) const {
+  if (!p.report) return;
   const double top = stock_.max[2], bottom = stock_.min[2];
+  const std::vector<double>& before = *p.before;
+  CutReport& out = p.out;
   double removed_sum = 0;
   for (int k = 0; k < n; ++k) {
-    const double was = std::min(before_[k], top);
+    const double was = std::min(before[k], top);
     if (h[k] >= was || was <= bottom) continue;
     const double removed = was - std::max(h[k], bottom);
     removed_sum += removed;
-    if (removed > last_.deepest) last_ = {last_.volume, removed, i0 + k, j, before_[k]};
+    if (removed > out.deepest) out = {out.volume, removed, i0 + k, j, before[k]};
   }
-  last_.volume += removed_sum * cell_ * cell_;
-  if (probe_) std::copy(before_.begin(), before_.begin() + n, h);
+  const double volume = removed_sum * cell_ * cell_;
+  out.volume += volume;
+  if (p.volumes && volume != 0) p.volumes->push_back(volume);
+  if (p.probe) std::copy(before.begin(), before.begin() + n, h);
 }
 
 void ZMap::rows_of(double yl, double yh, int& j0, int& j1) const {

@@ -4,6 +4,7 @@
 // per cell in closed form (or by an exact 1-D minimisation to kLowestTolerance): docs/verify.md.
 #pragma once
 #include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -38,6 +39,15 @@ struct CutReport {
   bool removed() const { return deepest > 0; }
 };
 
+// A cut or a probe of a batch (ZMap::cut_batch): the tool's tip along the line from a to b, or
+// along the arc where there is one.
+struct Sweep {
+  ToolShape tool = ToolShape::flat(0);
+  Point3 a{}, b{};
+  std::optional<Arc> arc;
+  bool probe = false;  // what it would remove, the map left as it is
+};
+
 // A height found by minimising along a move (where no closed form is used) is within this of
 // the exact lowest point, mm.
 inline constexpr double kLowestTolerance = 1e-9;
@@ -47,6 +57,8 @@ public:
   // cell 0: the stock's shorter side in min_cells cells
   static constexpr int kDefaultCells = 1000;
   static constexpr double kMostCells = 4e8;
+  // A batch of this many sweeps is enough work to share between the cores (cut_batch).
+  static constexpr std::size_t kBatchSweeps = 4096;
   // Throws std::invalid_argument for an empty box, a bad cell, or more than most_cells cells.
   explicit ZMap(const Box& stock, double cell = 0, int min_cells = kDefaultCells, double most_cells = kMostCells);
 
@@ -85,15 +97,36 @@ public:
   CutReport probe_line(const ToolShape& tool, const Point3& a, const Point3& b);
   CutReport probe_arc(const ToolShape& tool, const Arc& arc);
 
+  // The sweeps in order, as cut_line, cut_arc, probe_line and probe_arc one after another would
+  // make them, the map's rows shared between the cores: the same heights to the bit (a cell's
+  // height is the least of its sweeps', and each row sees its sweeps in order). reports: empty (the
+  // probes are then skipped), or one a sweep, what each would have reported: the reports of a
+  // row's band merged as the one pass over all rows would have found them. last_cut() is then the
+  // last cut's report.
+  void cut_batch(std::span<const Sweep> sweeps, std::span<CutReport> reports = {});
+
   // The rows j0..j1-1 that a band of y may touch, and the cells i0..i1-1 of a row whose centres
   // lie in [xl, xh] (empty when i1 <= i0).
   void rows_of(double yl, double yh, int& j0, int& j1) const;
   void cells_of(double xl, double xh, int& i0, int& i1) const;
 
 private:
+  // One cut or probe over the rows lo..hi-1: what it keeps and what it reports.
+  struct Pass {
+    int lo = 0, hi = 0;
+    bool report = false, probe = false;
+    std::vector<double>* before = nullptr;   // a row's heights before its kernel
+    std::vector<double>* volumes = nullptr;  // where kept: each row's volume removed, in row order
+    CutReport out;
+  };
+  void pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pass& p);
+  void pass_arc(const ToolShape& tool, const Arc& arc, Pass& p);
+  // The rows j0..j1-1 a pass visits.
+  void line_rows(const ToolShape& tool, const Point3& a, const Point3& b, int& j0, int& j1) const;
+  void arc_rows(const ToolShape& tool, const Arc& arc, int& j0, int& j1) const;
   // Around a row's kernel: keep the cells' heights before it, then add what it removed.
-  void before_row(const double* h, int n);
-  void after_row(double* h, int i0, int j, int n);
+  void before_row(const double* h, int n, Pass& p) const;
+  void after_row(double* h, int i0, int j, int n, Pass& p) const;
 
   Box stock_;
   double cell_ = 0;
@@ -101,7 +134,6 @@ private:
   double x0_ = 0, y0_ = 0;
   std::vector<double> h_;
   bool report_ = false;
-  bool probe_ = false;
   double absent_ = 0;  // the columns clear_cell emptied, mm^3
   CutReport last_;
   std::vector<double> before_;
