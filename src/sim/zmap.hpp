@@ -42,7 +42,7 @@ struct CutReport {
 // A cut or a probe of a batch (ZMap::cut_batch): the tool's tip along the line from a to b, or
 // along the arc where there is one.
 struct Sweep {
-  ToolShape tool = ToolShape::flat(0);
+  ToolShape tool;
   Point3 a{}, b{};
   std::optional<Arc> arc;
   bool probe = false;  // what it would remove, the map left as it is

@@ -71,7 +71,8 @@ void ZMap::cut_batch(std::span<const Sweep> sweeps, std::span<CutReport> reports
   }
   // bands of rows of about equal work
   std::vector<std::array<int, 2>> bands;
-  const std::size_t most = total < kShareableWork ? 1 : base::cores() * kBandsPerCore;
+  // at least a few bands, so that one core splits and merges as many do
+  const std::size_t most = total < kShareableWork ? 1 : std::max<std::size_t>(4, base::cores() * kBandsPerCore);
   double acc = 0, row_work = 0;
   for (int j = first, lo = first; j < last; ++j) {
     row_work += work[j];
