@@ -118,6 +118,7 @@ void ZMap::pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pa
   // the outward normal of the stadium's sides
   const double nx = len > 0 ? -m.vy / len : 0, ny = len > 0 ? m.vx / len : 0;
   const bool plunge = m.a <= 1e-24 * (1 + m.dz * m.dz);
+  const double inv_vy = 1 / m.vy;  // used where vy != 0
   int j0, j1;
   line_rows(tool, a, b, j0, j1);
   j0 = std::max(j0, p.lo);
@@ -137,7 +138,7 @@ void ZMap::pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pa
     disc_chord(b[0], b[1]);
     if (!plunge && m.vy != 0) {
       for (double side : {-1.0, 1.0}) {
-        const double t = (y - a[1] - side * r * ny) / m.vy;
+        const double t = (y - a[1] - side * r * ny) * inv_vy;
         if (t >= 0 && t <= 1) {
           const double x = a[0] + side * r * nx + t * m.vx;
           xl = std::min(xl, x);
@@ -148,6 +149,8 @@ void ZMap::pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pa
     int i0, i1;
     cells_of(xl - pad, xh + pad, i0, i1);
     if (i1 <= i0) continue;
+    if (!plunge && (tool.kind() == ToolShape::Kind::flat || tool.kind() == ToolShape::Kind::ball))
+      whole_vectors(i0, i1);
     double* hr = row(j).data() + i0;
     const int n = i1 - i0;
     const double ox0 = cell_x(i0) - a[0], oy = y - a[1];

@@ -21,6 +21,7 @@ ZMap::ZMap(const Box& stock, double cell, int min_cells, double most_cells) : st
                                 std::to_string(static_cast<long long>(ny)) + " cells is more than the " +
                                 std::to_string(static_cast<long long>(most_cells)) + " allowed");
   cell_ = cell;
+  inv_cell_ = 1 / cell;
   nx_ = static_cast<int>(nx);
   ny_ = static_cast<int>(ny);
   // the grid centred on the stock (it overhangs by under a cell where the size is not a multiple)
@@ -103,14 +104,6 @@ void ZMap::rows_of(double yl, double yh, int& j0, int& j1) const {
   const double a = std::ceil((yl - y0_) / cell_ - 0.5), b = std::floor((yh - y0_) / cell_ - 0.5);
   j0 = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(ny_)));
   j1 = static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(ny_)));
-}
-
-void ZMap::cells_of(double xl, double xh, int& i0, int& i1) const {
-  i0 = i1 = 0;
-  if (!(xl <= xh)) return;
-  const double a = std::ceil((xl - x0_) / cell_ - 0.5), b = std::floor((xh - x0_) / cell_ - 0.5);
-  i0 = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(nx_)));
-  i1 = static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(nx_)));
 }
 
 }  // namespace ncurve::sim

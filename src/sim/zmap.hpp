@@ -3,7 +3,9 @@
 // each cell it reaches to the lowest point of the tool's swept envelope on that line, computed
 // per cell in closed form (or by an exact 1-D minimisation to kLowestTolerance): docs/verify.md.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <span>
 #include <vector>
@@ -108,7 +110,14 @@ public:
   // The rows j0..j1-1 that a band of y may touch, and the cells i0..i1-1 of a row whose centres
   // lie in [xl, xh] (empty when i1 <= i0).
   void rows_of(double yl, double yh, int& j0, int& j1) const;
-  void cells_of(double xl, double xh, int& i0, int& i1) const;
+  // (by the inverse of the cell: a caller pads its bounds by more than that rounding)
+  void cells_of(double xl, double xh, int& i0, int& i1) const {
+    i0 = i1 = 0;
+    if (!(xl <= xh)) return;
+    const double a = std::ceil((xl - x0_) * inv_cell_ - 0.5), b = std::floor((xh - x0_) * inv_cell_ - 0.5);
+    i0 = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(nx_)));
+    i1 = static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(nx_)));
+  }
 
 private:
   // One cut or probe over the rows lo..hi-1: what it keeps and what it reports.
@@ -124,12 +133,21 @@ private:
   // The rows j0..j1-1 a pass visits.
   void line_rows(const ToolShape& tool, const Point3& a, const Point3& b, int& j0, int& j1) const;
   void arc_rows(const ToolShape& tool, const Arc& arc, int& j0, int& j1) const;
+  // Cells i0..i1-1 widened, within the row, to a whole number of the vector kernels' steps (two
+  // vectors of eight cells, as the compiler unrolls them): no scalar remainder is run, and a cell
+  // added beyond the reach is left as it is.
+  static constexpr int kVectorCells = 16;
+  void whole_vectors(int& i0, int& i1) const {
+    const int n = (i1 - i0 + kVectorCells - 1) / kVectorCells * kVectorCells;
+    i1 = std::min(nx_, i0 + n);
+    i0 = std::max(0, i1 - n);
+  }
   // Around a row's kernel: keep the cells' heights before it, then add what it removed.
   void before_row(const double* h, int n, Pass& p) const;
   void after_row(double* h, int i0, int j, int n, Pass& p) const;
 
   Box stock_;
-  double cell_ = 0;
+  double cell_ = 0, inv_cell_ = 0;
   int nx_ = 0, ny_ = 0;
   double x0_ = 0, y0_ = 0;
   std::vector<double> h_;
