@@ -20,15 +20,17 @@ struct LineMove {
 };
 
 // Flat end mill: the parameters where the cell is within R of the axis are the roots of a
-// quadratic; z is linear in t, so the lowest is at the interval's end in the falling direction.
+// quadratic, whose discriminant is a R^2 - (o x v)^2 (Lagrange's identity); z is linear in t, so
+// the lowest is at the interval's end in the falling direction.
 NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, double oy, double step,
                                    const LineMove& m) {
-  const double vx = m.vx, vy = m.vy, a = m.a, az = m.az, dz = m.dz, r2 = m.r * m.r, inv_a = 1 / m.a;
+  const double vx = m.vx, vy = m.vy, az = m.az, dz = m.dz, inv_a = 1 / m.a;
+  const double ar2 = m.a * m.r * m.r, vyoy = vy * oy, vxoy = vx * oy;
   const bool falling = dz < 0;
   for (int k = 0; k < n; ++k) {
     const double ox = ox0 + k * step;
-    const double ov = ox * vx + oy * vy, oo = ox * ox + oy * oy;
-    const double disc = ov * ov - a * (oo - r2);
+    const double ov = ox * vx + vyoy, cr = vxoy - vy * ox;
+    const double disc = ar2 - cr * cr;
     const double sq = std::sqrt(std::max(disc, 0.0));
     const double lo = std::max((ov - sq) * inv_a, 0.0), hi = std::min((ov + sq) * inv_a, 1.0);
     const double t = falling ? hi : lo;
@@ -39,23 +41,25 @@ NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, doub
 
 // Ball end mill: the ball's centre sweeps a capsule of radius R; the lowest point of the
 // capsule on the vertical line is where an upward ray enters it (the infinite cylinder about the
-// axis if it enters within the segment, else the sphere at the end it entered beyond).
+// axis if it enters within the segment, else the sphere at the end it entered beyond). The ray
+// meets the cylinder where disc = |ba|^2 (a R^2 - (o x v)^2) >= 0 (Lagrange's identity).
 NCURVE_VECTOR_CLONES void ball_row(double* __restrict h, int n, double ox0, double oy, double step,
                                    const LineMove& m) {
   const double vx = m.vx, vy = m.vy, a = m.a, dz = m.dz, r2 = m.r * m.r;
-  const double baba = a + dz * dz, inv_a = 1 / a, base = m.az + m.r, r2baba = r2 * baba;
+  const double baba = a + dz * dz, inv_a = 1 / a, base = m.az + m.r, ar2 = a * r2;
+  const double vyoy = vy * oy, vxoy = vx * oy, oy2 = oy * oy, eyb2 = (oy - vy) * (oy - vy);
   for (int k = 0; k < n; ++k) {
     const double ox = ox0 + k * step;
-    const double baoa = vx * ox + vy * oy, oo = ox * ox + oy * oy;
-    const double b = -baoa * dz;
-    const double c = baba * oo - baoa * baoa - r2baba;
-    const double disc = b * b - a * c;
-    const double t = (-b - std::sqrt(std::max(disc, 0.0))) * inv_a;
+    const double baoa = vx * ox + vyoy, cr = vxoy - vy * ox;
+    const double disc = baba * (ar2 - cr * cr);
+    const double t = (baoa * dz - std::sqrt(std::max(disc, 0.0))) * inv_a;
     const double y = baoa + t * dz;
     const bool at_b = y >= baba;
-    const double ex = at_b ? ox - vx : ox, ey = at_b ? oy - vy : oy, ez = at_b ? dz : 0.0;
-    const double cap2 = r2 - ex * ex - ey * ey;
-    const double zcap = ez - std::sqrt(std::max(cap2, 0.0));
+    // the squared horizontal distance to the end sphere's centre
+    const double exb = ox - vx;
+    const double e2 = at_b ? exb * exb + eyb2 : ox * ox + oy2;
+    const double cap2 = r2 - e2;
+    const double zcap = (at_b ? dz : 0.0) - std::sqrt(std::max(cap2, 0.0));
     const bool side = (y > 0) & (y < baba);
     const bool reached = (disc >= 0) & (side | (cap2 >= 0));
     h[k] = std::min(h[k], reached ? base + (side ? t : zcap) : kUnreached);
