@@ -3,8 +3,8 @@
 # configure_sanitize in packages.sh) and fuzzes for about SECONDS (default 60), two targets at a
 # time: the parser and interpreter with the CSV, JSON Lines and G-code writers for three quarters of
 # SECONDS, then the cutter-profile and point-list files for a quarter; beside them the curve
-# expressions, the server's request bodies, the machine profiles and the command line for a
-# quarter each. A crash,
+# expressions, the server's request bodies and the command line for a quarter or an eighth each,
+# the machine profiles, setups and STL files for an eighth. A crash,
 # undefined behaviour, a leak, a time-out (10 s an input) or 2 GB of memory fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,7 +12,7 @@ seconds="${1:-60}"
 source scripts/packages.sh
 ensure_packages "${tool_packages[@]}" "${test_packages[@]}" "${fuzz_packages[@]}"
 configure_sanitize
-cmake --build build-sanitize --target fuzz_run fuzz_curve fuzz_rows fuzz_profile fuzz_setup fuzz_cli fuzz_serve
+cmake --build build-sanitize --target fuzz_run fuzz_curve fuzz_rows fuzz_profile fuzz_setup fuzz_stl fuzz_cli fuzz_serve
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 dir=build-sanitize/fuzz
 # fuzz TARGET CORPUS SECONDS MAX_LEN: runs one target, prints its totals, or the failing input's log
@@ -28,7 +28,7 @@ fuzz() {
   fi
 }
 
-mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,setups,cli,serve}
+mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,setups,stls,cli,serve}
 # the test programs of every folder of tests/programs (their names are unique across folders)
 find tests/programs -name '*.nc' -exec cp -t "$dir/corpus-programs/" {} +
 cp examples/*.nc macros/*.nc "$dir/corpus-programs/"
@@ -41,6 +41,12 @@ printf '100,-5,-20\n100,5\n' >"$dir/corpus-rows/dish"
 cp profiles/*.toml "$dir/corpus-profiles/"
 find tests/programs -name '*.toml' -exec cp -t "$dir/corpus-profiles/" {} +
 cp examples/*.setup.toml "$dir/corpus-setups/"
+# STL files: an ASCII tetrahedron, and a binary one (80-byte header, count 1, a triangle)
+printf 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 10 0 0\nvertex 0 10 5\nendloop\nendfacet\nendsolid t\n' \
+  >"$dir/corpus-stls/ascii"
+{ head -c 80 /dev/zero; printf '\x01\x00\x00\x00'; head -c 12 /dev/zero
+  printf '\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x20\x41\x00\x00\x00\x00\x00\x00\x00\x00'
+  printf '\x00\x00\x00\x00\x00\x00\x20\x41\x00\x00\xa0\x40\x00\x00'; } >"$dir/corpus-stls/binary"
 # nesting past the bound (a dotted key of 40 parts, arrays 40 deep), refused before toml++ reads it
 printf '[machine]\nname = "deep"\n[%sb]\nx = 1\n' "$(printf 'a.%.0s' {1..40})" >"$dir/corpus-profiles/deep-key"
 printf '[machine]\nx = %s1%s\n' "$(printf '[%.0s' {1..40})" "$(printf ']%.0s' {1..40})" >"$dir/corpus-profiles/deep-array"
@@ -70,6 +76,6 @@ first=$!
 status=0
 { fuzz fuzz_curve curves "$quarter" 512 && fuzz fuzz_serve serve "$quarter" 4096 &&
   fuzz fuzz_profile profiles "$eighth" 4096 && fuzz fuzz_setup setups "$eighth" 4096 &&
-  fuzz fuzz_cli cli "$quarter" 512; } || status=1
+  fuzz fuzz_stl stls "$eighth" 4096 && fuzz fuzz_cli cli "$eighth" 512; } || status=1
 wait "$first" || status=1
 exit "$status"

@@ -78,3 +78,74 @@ endforeach()
 run_expect(0 "4-axis with its setup" ${NCURVE} run ${SRC}/examples/4-axis.nc --setup ${SRC}/examples/4-axis.setup.toml
            --machine ${SRC}/profiles/fanuc-4axis-helicoid.toml)
 expect_text("${out}" "verified       no: the program turns the A axis" "4-axis: refused, saying why")
+
+# --design: a 40 x 40 block 0.5 above a design whose top is Z0, a slot 0.5 below it; the slot's block
+# gouges the design by 0.5 (no design cell is that low: the vertical amount), and the uncut top is
+# 0.5 of stock left, said at M30; each cell 0.04 mm (the shorter side in 1000)
+function(ascii_box out x0 x1 y0 y1 z0 z1)  # an ASCII STL of a box, two facets a side
+  set(quads "${x0} ${y0} ${z0},${x0} ${y1} ${z0},${x1} ${y1} ${z0},${x1} ${y0} ${z0}"
+            "${x0} ${y0} ${z1},${x1} ${y0} ${z1},${x1} ${y1} ${z1},${x0} ${y1} ${z1}"
+            "${x0} ${y0} ${z0},${x1} ${y0} ${z0},${x1} ${y0} ${z1},${x0} ${y0} ${z1}"
+            "${x1} ${y1} ${z0},${x0} ${y1} ${z0},${x0} ${y1} ${z1},${x1} ${y1} ${z1}"
+            "${x0} ${y1} ${z0},${x0} ${y0} ${z0},${x0} ${y0} ${z1},${x0} ${y1} ${z1}"
+            "${x1} ${y0} ${z0},${x1} ${y1} ${z0},${x1} ${y1} ${z1},${x1} ${y0} ${z1}")
+  set(text "solid box\n")
+  foreach(q IN LISTS quads)
+    string(REPLACE "," ";" corners "${q}")
+    list(GET corners 0 a)
+    list(GET corners 1 b)
+    list(GET corners 2 c)
+    list(GET corners 3 d)
+    foreach(t "${a}|${b}|${c}" "${a}|${c}|${d}")
+      string(REPLACE "|" "\n      vertex " t "${t}")
+      string(APPEND text "  facet normal 0 0 0\n    outer loop\n      vertex ${t}\n    endloop\n  endfacet\n")
+    endforeach()
+  endforeach()
+  file(WRITE ${out} "${text}endsolid box\n")
+endfunction()
+ascii_box(${OUT}/design.stl -20 20 -20 20 -10 0)
+file(WRITE ${OUT}/design.setup.toml "[stock]\nshape = \"box\"\nmin = [-20, -20, -10]\nmax = [20, 20, 0.5]\n[tools.1]\nkind = \"flat\"\ndiameter = 6\n")
+file(WRITE ${OUT}/design.nc "T1 M06\nM03 S1000\nG90 G00 X-25. Y0 Z5.\nG43 H1 Z5.\nG01 Z-0.5 F300.\nX25.\nG00 Z5.\nM30\n")
+run_expect(0 "run --design" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/design.setup.toml --design ${OUT}/design.stl)
+expect_text("${out}" "design         ${OUT}/design.stl, tol 0.01 mm, exact to the cell (0.0400 mm); findings 2"
+            "the design named, its findings counted")
+# the slot 6 wide: 150 rows of cells beyond the tolerance, 1000 cells each; the rest of the top stock left
+expect_text("${out}" "gouge          0.500 mm at X" "the gouge")
+expect_text("${out}" "(150000 cells beyond the tolerance)" "the slot's cells")
+expect_text("${out}" "stock left     0.500 mm at X" "the stock left")
+expect_text("${out}" "(850000 cells beyond the tolerance)" "the rest of the top")
+expect_text("${out}" "design.nc:6:1: warning: NC2087 the cut goes 0.500 mm into the design" "NC2087 at the slot's block")
+expect_text("${out}" "design.nc:8:1: warning: NC2088 at the end 0.500 mm of stock is left" "NC2088 at M30")
+expect_text("${out}" "findings       0" "none of the verifier's own")
+run_expect(0 "run --design --json" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/design.setup.toml --design ${OUT}/design.stl
+           --tol 0.6 --json)
+expect_text("${out}" "\"design\": {" "the design in --json")
+expect_text("${out}" "\"tol_mm\": 0.6" "--tol")
+if(out MATCHES "NC208[78]")
+  message(SEND_ERROR "--tol 0.6: nothing beyond it, yet:\n${out}")
+endif()
+# --design alone turns on the verification; its errors name the file
+# (here with no tool of known size: refused, saying why)
+run_expect(2 "--design without --setup" ${NCURVE} run ${OUT}/design.nc --design ${OUT}/design.stl)
+expect_text("${err}" "--design: no default stock" "--design turned the verification on")
+file(WRITE ${OUT}/flat.stl "solid flat\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid flat\n")
+run_expect(2 "a flat design" ${NCURVE} run ${OUT}/design.nc --design ${OUT}/flat.stl)
+expect_text("${err}" "flat.stl: error: every vertex of the STL has Z = 0: a flat surface, not a solid" "the flat design refused")
+file(WRITE ${OUT}/short.stl "solid bad\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertx 1 0 0\n")
+run_expect(2 "a bad ASCII design" ${NCURVE} run ${OUT}/design.nc --design ${OUT}/short.stl)
+expect_text("${err}" "short.stl:5:4: error: 'vertx' where 'vertex' was expected" "the word's line and column")
+run_expect(2 "--design on a lathe" ${NCURVE} run ${SRC}/examples/lathe-mrc.nc --machine fanuc-lathe --design ${OUT}/design.stl)
+expect_text("${err}" "--design: the check against a design is a mill's" "a lathe refused")
+# an STL stock: the same block as an STL, the same cut
+ascii_box(${OUT}/stock.stl -20 20 -20 20 -10 0.5)
+file(WRITE ${OUT}/stl-stock.setup.toml "[stock]\nshape = \"stl\"\nfile = \"stock.stl\"\n[tools.1]\nkind = \"flat\"\ndiameter = 6\n")
+run_expect(0 "an STL stock" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/stl-stock.setup.toml --design ${OUT}/design.stl)
+expect_text("${out}" "stock          STL ${OUT}/stock.stl" "the STL stock named")
+expect_text("${out}" "(850000 cells beyond the tolerance)" "the same stock left as the box's")
+# the STL files read are inputs: no output is written over them
+run_expect(2 "--part over the design" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/stl-stock.setup.toml
+           --design ${OUT}/design.stl --part ${OUT}/design.stl)
+run_expect(2 "-o over the STL stock" ${NCURVE} run ${OUT}/design.nc --setup ${OUT}/stl-stock.setup.toml
+           --format csv -o ${OUT}/stock.stl)
+file(READ ${OUT}/stock.stl head LIMIT 9)
+expect_text("${head}" "solid box" "the stock's STL kept")

@@ -12,6 +12,7 @@
 
   function build(moves) {
     const n = moves.count, K = moves.kind, S = moves.start, E = moves.end, A = moves.arcs, AI = moves.arcIndex;
+    const RC = moves.rapidCorners || new Map();  // a dog-leg rapid's corners
     // machine X Y Z -> world: a lathe's Z across and X up (a rotation, so arcs keep their sense)
     const perm = moves.lathe ? [2, 0, 1] : [0, 1, 2];  // world axis k takes machine axis perm[k]
 
@@ -33,7 +34,7 @@
       if (m0) { if (ex < lo0) lo0 = ex; if (ex > hi0) hi0 = ex; }
       if (m1) { if (ey < lo1) lo1 = ey; if (ey > hi1) hi1 = ey; }
       if (m2) { if (ez < lo2) lo2 = ez; if (ez > hi2) hi2 = ez; }
-      if (K[i] !== 2) continue;
+      if (K[i] !== 2) continue;  // (a dog-leg's corners lie in the box of its ends)
       const a = 5 * AI[i], c = 8 * AI[i], plane = PLANE_AXES[A[a + 4]] || PLANE_AXES[17], p = plane[0], q = plane[1];
       const cp = A[a + p], cq = A[a + q];
       const sp = S[s + p] - cp, sq = S[s + q] - cq, ep = E[s + p] - cp, eq = E[s + q] - cq;
@@ -74,7 +75,8 @@
       total = 0;
       for (let i = 0; i < n; i++) {
         let segs = 1;
-        if (K[i] === 2) {
+        if (K[i] === 0 && RC.has(i)) segs = 1 + RC.get(i).length / 3;
+        else if (K[i] === 2) {
           const c = 8 * AI[i], r = Math.max(arc[c + 4], 1e-9);
           const step = 2 * Math.acos(Math.max(-1, 1 - tol / r));
           segs = Math.max(1, Math.min(720, Math.ceil(Math.abs(arc[c + 7]) / Math.max(step, 1e-4)) || 1));
@@ -101,12 +103,26 @@
       let v = 6 * first[i];
       let x0 = S[s + P0] - O0, y0 = S[s + P1] - O1, z0 = S[s + P2] - O2;
       const ex = E[s + P0] - O0, ey = E[s + P1] - O1, ez = E[s + P2] - O2;
-      if (k !== 2) {
-        pos[v] = x0, pos[v + 1] = y0, pos[v + 2] = z0, pos[v + 3] = ex, pos[v + 4] = ey, pos[v + 5] = ez;
-        if (k === 0) {
-          const d = layers[0].dist, at = 2 * first[i];
-          d[at] = 0, d[at + 1] = Math.sqrt((ex - x0) ** 2 + (ey - y0) ** 2 + (ez - z0) ** 2);
+      if (k === 0) {  // a rapid: straight, or through its corners; dash distances along it
+        const corners = RC.get(i), d = layers[0].dist;
+        let along = 0;
+        for (let j = 0; j < segOf[i]; j++, v += 6) {
+          let x1 = ex, y1 = ey, z1 = ez;
+          if (j + 1 < segOf[i]) {
+            pt[0] = corners[3 * j], pt[1] = corners[3 * j + 1], pt[2] = corners[3 * j + 2];
+            x1 = pt[P0] - O0, y1 = pt[P1] - O1, z1 = pt[P2] - O2;
+          }
+          pos[v] = x0, pos[v + 1] = y0, pos[v + 2] = z0, pos[v + 3] = x1, pos[v + 4] = y1, pos[v + 5] = z1;
+          const at = 2 * (first[i] + j);
+          d[at] = along;
+          along += Math.sqrt((x1 - x0) ** 2 + (y1 - y0) ** 2 + (z1 - z0) ** 2);
+          d[at + 1] = along;
+          x0 = x1, y0 = y1, z0 = z1;
         }
+        continue;
+      }
+      if (k === 1) {
+        pos[v] = x0, pos[v + 1] = y0, pos[v + 2] = z0, pos[v + 3] = ex, pos[v + 4] = ey, pos[v + 5] = ez;
         continue;
       }
       const c = 8 * AI[i], p = arc[c], q = arc[c + 1], cp = arc[c + 2], cq = arc[c + 3], rs = arc[c + 4], re = arc[c + 5];

@@ -13,6 +13,7 @@
 // moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32/64Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
 // Float32Array (per arc: centre X Y Z, sweep in radians counter-clockwise, plane 17/18/19),
+// rapidCorners: Map (a dog-leg rapid's number -> its corners' X Y Z in order; none: a straight rapid),
 // block: Uint32Array (per move, its block), lathe, diameter, inch, plane, alarmAt: [X, Y, Z] | null,
 // rotary: [{axis, unit, min, max}] (the A, B, C axes the run moved, not drawn), rotaryEnd:
 // Float64Array (per rotary axis in turn, its end for each move)}.
@@ -50,8 +51,15 @@
     const arcIndex = new Int32Array(n);
     let a = 0;
     for (let i = 0; i < n; i++) arcIndex[i] = kind[i] === 2 ? a++ : -1;
+    // a dog-leg rapid's corners (non-linear positioning): rapidCorners[i] = [x, y, z, ...] in order
+    const rapidCorners = new Map();
+    for (const c of d.rapid_corners || []) {
+      if (!(c[0] >= 0 && c[0] < n) || kind[c[0]] !== 0) continue;
+      if (!rapidCorners.has(c[0])) rapidCorners.set(c[0], []);
+      rapidCorners.get(c[0]).push(c[1], c[2], c[3]);
+    }
     return {
-      count: n, kind, start, end, arcIndex,
+      count: n, kind, start, end, arcIndex, rapidCorners,
       arcs: new Float32Array(bytes(d.arcs)),
       feed: new Float32Array(bytes(d.feed)),
       block: new Uint32Array(bytes(d.block)),
@@ -66,9 +74,36 @@
 
 
   // The cut part of `run --verify --html`: a grid of heights (base64 float32, row by row).
+  // With `deviation` ({tol, points: X Y error per wall point measured against the design}), the part
+  // is coloured by it near its walls.
   function decodePart(d) {
     return {nx: d.nx, ny: d.ny, x0: d.x0, y0: d.y0, dx: d.dx, dy: d.dy, bottom: d.bottom, top: d.top,
-            heights: new Float32Array(bytes(d.heights))};
+            heights: new Float32Array(bytes(d.heights)),
+            deviation: d.deviation ? {tol: d.deviation.tol, points: new Float32Array(bytes(d.deviation.points))} : null};
+  }
+
+  // Per grid point, the largest error of a wall point within two cells of it (NaN where none).
+  function deviationOnGrid(part) {
+    const {nx, ny, x0, y0, dx, dy} = part, pts = part.deviation.points;
+    const dev = new Float32Array(nx * ny).fill(NaN);
+    for (let k = 0; k + 2 < pts.length; k += 3) {
+      const ci = Math.round((pts[k] - x0) / dx), cj = Math.round((pts[k + 1] - y0) / dy), e = pts[k + 2];
+      for (let j = Math.max(cj - 2, 0); j <= Math.min(cj + 2, ny - 1); j++)
+        for (let i = Math.max(ci - 2, 0); i <= Math.min(ci + 2, nx - 1); i++) {
+          const q = j * nx + i;
+          if (!(Math.abs(dev[q]) >= Math.abs(e))) dev[q] = e;
+        }
+    }
+    return dev;
+  }
+  // within the tolerance green, beyond the design (a gouge) red, short of it (stock left) blue; the
+  // colour deepens up to twice the tolerance
+  const DEVIATION_COLOURS = {within: [0.26, 0.63, 0.28], gouge: [0.90, 0.22, 0.21], left: [0.12, 0.47, 0.90]};
+  function deviationColour(e, tol) {
+    const a = Math.abs(e);
+    if (a <= tol) return DEVIATION_COLOURS.within;
+    const c = e > 0 ? DEVIATION_COLOURS.gouge : DEVIATION_COLOURS.left, t = Math.min((a - tol) / tol, 1);
+    return [0.75 + (c[0] - 0.75) * (0.5 + t / 2), 0.75 + (c[1] - 0.75) * (0.5 + t / 2), 0.75 + (c[2] - 0.75) * (0.5 + t / 2)];
   }
 
   // The part as a mesh: its top surface on the grid and four walls down to the bottom, coloured
@@ -80,15 +115,20 @@
     const depth = Math.max(top - deepest, 1e-9);
     const pos = [], col = [], index = [];
     const w = [0, 0, 0];
-    const vertex = (x, y, z) => {
+    const dev = part.deviation ? deviationOnGrid(part) : null;
+    const vertex = (x, y, z, e) => {
       toWorld([x, y, z], w);
       pos.push(w[0], w[1], w[2]);
-      const t = Math.min(Math.max((top - z) / depth, 0), 1);
-      col.push(0.84 - 0.34 * t, 0.85 - 0.33 * t, 0.87 - 0.29 * t);
+      if (e === e && e !== undefined) {
+        col.push(...deviationColour(e, part.deviation.tol));
+      } else {
+        const t = Math.min(Math.max((top - z) / depth, 0), 1);
+        col.push(0.84 - 0.34 * t, 0.85 - 0.33 * t, 0.87 - 0.29 * t);
+      }
       return pos.length / 3 - 1;
     };
     for (let j = 0; j < ny; j++)
-      for (let i = 0; i < nx; i++) vertex(x0 + i * dx, y0 + j * dy, heights[j * nx + i]);
+      for (let i = 0; i < nx; i++) vertex(x0 + i * dx, y0 + j * dy, heights[j * nx + i], dev ? dev[j * nx + i] : undefined);
     for (let j = 0; j + 1 < ny; j++)
       for (let i = 0; i + 1 < nx; i++) {
         const a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
@@ -116,6 +156,11 @@
                                             polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1});
     const mesh = new THREE.Mesh(g, m);
     mesh.name = 'part';
+    if (dev) {
+      const tol = part.deviation.tol, deviated = {within: 0, gouge: 0, left: 0};
+      for (const e of dev) if (e === e) deviated[Math.abs(e) <= tol ? 'within' : e > 0 ? 'gouge' : 'left']++;
+      mesh.userData.deviated = deviated;
+    }
     return mesh;
   }
 
@@ -547,6 +592,7 @@
           axes: axes.shown(),
           reference: reference ? reference.geometry.attributes.position.count : 0,
           part: part ? part.geometry.index.count / 3 : 0,
+          partDeviation: part ? part.userData.deviated : null,  // {within, gouge, left}: grid points coloured
           camera: {position: camera.position.toArray(), zoom: camera.zoom, target: controls.target.toArray()},
         };
       },
@@ -578,5 +624,6 @@
     return api;
   }
 
-  global.NcurveBackplot = {decode, decodePart, create, KIND_NAMES, KIND_COLORS, niceStep: global.NcurveBackplotAxes.niceStep};
+  global.NcurveBackplot = {decode, decodePart, create, KIND_NAMES, KIND_COLORS, DEVIATION_COLOURS,
+    niceStep: global.NcurveBackplotAxes.niceStep};
 })(window);

@@ -183,6 +183,13 @@
   swatch(`<line x1="1" y1="6" x2="27" y2="6" stroke="${hex(C[2])}" stroke-width="2"/>`, `arc ${kinds.arc}`);
   swatch('<circle cx="14" cy="6" r="4" fill="#111"/>', 'start');
   if (data.part) swatch('<rect x="2" y="1" width="24" height="10" fill="#d6d9de" stroke="#80858f"/>', 'part (cut stock)');
+  if (data.part && data.part.deviation) {  // its walls against the design's curve
+    const D = NcurveBackplot.DEVIATION_COLOURS, rgb = (c) => hex(c.map((v) => Math.round(255 * v)));
+    const tol = data.part.deviation.tol;
+    swatch(`<rect x="2" y="1" width="24" height="10" fill="${rgb(D.within)}"/>`, `wall within ±${tol} mm`);
+    swatch(`<rect x="2" y="1" width="24" height="10" fill="${rgb(D.gouge)}"/>`, 'beyond the design (gouge)');
+    swatch(`<rect x="2" y="1" width="24" height="10" fill="${rgb(D.left)}"/>`, 'short of it (stock left)');
+  }
   if (data.alarm) swatch('<path d="M9 1l10 10M19 1L9 11" stroke="#d50000" stroke-width="2.5"/>', 'alarm');
   swatch('<line x1="1" y1="6" x2="27" y2="6" stroke="#d81b60" stroke-width="2"/>', 'selected block');
   legend.append(el('span', 'hint', 'drag: rotate · right-drag or shift-drag: pan · wheel: zoom · click a move: its block'));

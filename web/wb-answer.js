@@ -88,6 +88,16 @@
     }
     c.before[N] = j;
     c.last = [px, py, pz];
+    // a dog-leg rapid's corners, by motion
+    c.rapidCorners = new Map();
+    const KC = m.corners;
+    if (KC) for (let q = 0; q < KC.index.length; q++) {
+      const i = KC.index[q];
+      if (i >= N || m.kind[i] !== R) continue;
+      const mj = c.before[i];
+      if (!c.rapidCorners.has(mj)) c.rapidCorners.set(mj, []);
+      c.rapidCorners.get(mj).push(KC.x[q] * xs, KC.y[q], KC.z[q]);
+    }
     // as `run --html`'s data: degrees for a rotary axis of the profile (No.1006#0), else mm
     const moved = other.filter((o) => o.min <= o.max && !(o.min === 0 && o.max === 0));
     c.rotary = moved.map((o) => ({axis: o.axis, unit: (p.rotary || '').includes(o.axis) ? 'deg' : 'mm', min: o.min, max: o.max}));

@@ -8,9 +8,34 @@
   // The setup file of program `name`: NAME.setup.toml.
   const setupName = (name) => name.replace(/\.[^.]*$/, '') + '.setup.toml';
 
-  // checkbox: the "Part" box; setupUrl(name): where the setup of program `name` is, or null;
+  // The design field's text as POST /api/run takes it: "ellipse a=20 b=12 tol=0.02 wall=edge", or
+  // "expr x=20*COS[t] y=12*SIN[t] t=0:360": the curve's name, then NAME=VALUE words (no spaces in a
+  // value). Throws an Error saying what is wrong.
+  function designRequest(text) {
+    const words = text.trim().split(/\s+/).filter(Boolean);
+    if (!words.length) return {};
+    const curve = {name: words[0], params: {}}, out = {curve};
+    for (const w of words.slice(1)) {
+      const eq = w.indexOf('=');
+      if (eq <= 0) throw new Error(`"${w}": write NAME=VALUE`);
+      const key = w.slice(0, eq).replace(/^--/, ''), value = w.slice(eq + 1);
+      if (['x', 'y', 'z', 't'].includes(key)) curve[key] = value;
+      else if (key === 'wall') out.wall = value;
+      else {
+        const v = Number(value);
+        if (value === '' || !Number.isFinite(v)) throw new Error(`"${w}": ${key} takes a number`);
+        if (key === 'tol') out.tol = v;
+        else if (key === 'from' || key === 'to') curve[key] = v;
+        else curve.params[key] = v;
+      }
+    }
+    return out;
+  }
+
+  // checkbox: the "Part" box; design: the field of the design's curve (its walls measured, the part
+  // coloured by their errors); setupUrl(name): where the setup of program `name` is, or null;
   // request(): the run request of the program shown; onPart(part, summary): a part to draw (null: none)
-  function create({checkbox, setupUrl, request, onPart}) {
+  function create({checkbox, design, setupUrl, request, onPart}) {
     const setups = new Map();  // program name -> its setup's text (null: none)
     let stepTimer = 0, stepAbort = null, stepSeq = 0;
     async function setupOf(name) {
@@ -26,11 +51,12 @@
     }
     const api = {
       get on() { return checkbox.checked; },
-      // what a run request adds when the part is asked for
+      // what a run request adds when the part is asked for (a bad design field: an Error)
       async extras(name) {
         if (!checkbox.checked) return {};
         const setup = await setupOf(name);
-        return setup === null ? {verify: true} : {verify: true, setup, setup_name: setupName(name)};
+        const wanted = Object.assign({verify: true}, design ? designRequest(design.value) : {});
+        return setup === null ? wanted : Object.assign(wanted, {setup, setup_name: setupName(name)});
       },
       // the part as cut by the first `moves` motions (a debugger's step), a little after the last call
       step(moves) {
@@ -42,8 +68,8 @@
           stepAbort = new AbortController();
           const base = request();
           // the drawing has at most 400 points a side: a map as fine is enough for a step
-          const body = Object.assign(base, await api.extras(base.name), {moves: false, cut_moves: moves, cells: 400});
           try {
+            const body = Object.assign(base, await api.extras(base.name), {moves: false, cut_moves: moves, cells: 400});
             const r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'},
               signal: stepAbort.signal, body: JSON.stringify(body)});
             const j = await r.json();
@@ -56,5 +82,5 @@
     return api;
   }
 
-  global.NcurvePart = {create, setupName};
+  global.NcurvePart = {create, setupName, designRequest};
 })(window);

@@ -61,7 +61,14 @@
     status('running…', '');
     let r, j;
     // the moves first, drawn as soon as they come; the trace (Debugger) by a second request after
-    const request = Object.assign(programRequest(), {format: 'binary'}, await part.extras(name));
+    let extras;
+    try {
+      extras = await part.extras(name);
+    } catch (e) {  // the design field
+      if (my === seq) status(`design: ${e.message}`, 'alarm');
+      return;
+    }
+    const request = Object.assign(programRequest(), {format: 'binary'}, extras);
     if (my !== seq) return;
     try {
       r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'}, signal: inFlight.signal,
@@ -117,6 +124,7 @@
   // the part (wb-part.js): its setup is NAME.setup.toml among the server's files, or the example's
   const part = NcurvePart.create({
     checkbox: $('part'),
+    design: $('design'),
     setupUrl: (n) => (n === 'spiral.nc' && example.name === n && !fileNames.includes(n) ? '/assets/example.setup.toml'
       : fileNames.includes(NcurvePart.setupName(n)) ? '/api/files/' + encodeURIComponent(NcurvePart.setupName(n))
       : null),
@@ -128,9 +136,11 @@
     plot.setPart(p ? NcurveBackplot.decodePart(p) : null);
     const v = summary && summary.verify;
     W.part = {triangles: plot.state().part, moves, volume: v && v.verified ? v.volume_removed_mm3 : null,
-      findings: v && v.verified ? v.findings.length : null, refused: v && !v.verified ? v.refused : null};
+      findings: v && v.verified ? v.findings.length : null, refused: v && !v.verified ? v.refused : null,
+      curve: v && v.curve ? v.curve : null, deviated: plot.state().partDeviation};
   }
   $('part').onchange = run;
+  $('design').onchange = () => { if ($('part').checked) run(); };
 
   // ---- showing an answer ----
   function show(t0, traceToCome) {

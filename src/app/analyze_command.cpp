@@ -18,13 +18,27 @@
 #include "base/progress.hpp"
 #include "report/feed_trace.hpp"
 #include "report/motion_plots.hpp"
+#include "report/verify_report.hpp"
 #include "app/analyze_shape.hpp"
+#include "app/run_verify.hpp"
 #include "app/cli_units.hpp"
 #include "app/save.hpp"
 #include "app/shipped.hpp"
 
 namespace ncurve::app {
 namespace {
+
+// The cut part: the material removed and the walls against the curve.
+std::string part_text(const report::VerifyReport& r) {
+  std::string out;
+  if (!r.verifier) return fmt::format("  cut part          not made: {}\n", r.refused);
+  out += fmt::format("  cut part          {} removed from the {}{}\n", report::removed_text(r),
+                     r.stock_default ? "box around the cutting moves" : "stock of ",
+                     r.stock_default ? "" : r.setup_file);
+  if (r.curve) out += report::curve_text(*r.curve, 18);
+  return out;
+}
+
 
 // A radius-compensated move as programmed: from the programmed end of the move before to its own.
 // An arc keeps its centre (concentric with the tool's), less the imaginary tip's shift on a lathe.
@@ -258,9 +272,11 @@ int program_command(const AnalyzeArgs& a) {
     std::array<double, 3> tip{};          // lathe: the imaginary tip from the nose centre (X radius, Y, Z)
     std::uint64_t moves = 0;
     base::Progress progress{"ncurve analyze", "moves"};
+    machine::MoveSink* part = nullptr;  // the verifier cutting the part
     void on_move(const machine::Move& m) override {
       progress.at(++moves);
       planner->on_move(m);
+      if (part) part->on_move(m);
       if (m.kind == machine::MoveKind::tool_change && profile->lathe()) {  // T: its offset's nose radius and tip
         auto it = profile->lathe_offsets.find(m.code % 100);
         const machine::LatheOffset o = it == profile->lathe_offsets.end() ? machine::LatheOffset{} : it->second;
@@ -302,6 +318,27 @@ int program_command(const AnalyzeArgs& a) {
     tee.contour = &contour;
     tee.plane_only = !profile.lathe() && curve->planar_z();
   }
+  // the part cut: its walls against the curve and the material each tool removed (a mill's)
+  std::optional<RunVerification> part;
+  if (curve && !profile.lathe()) {
+    VerifyArgs va;
+    va.verify = true;
+    va.setup = a.setup;
+    va.curve = a.curve;
+    va.curve_extras = a.command->remaining();
+    va.tol = a.tol > 0 ? a.tol : 0.01;
+    va.wall = a.wall;
+    va.max_moves = a.max_moves;
+    try {
+      part.emplace(va, profile, *setup.lib, setup.options);
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
+      std::cerr << "ncurve analyze: " << nc::escape_controls(e.what()) << "\n";
+      return 2;
+    }
+    tee.part = part->sink();
+  }
   machine::Interpreter interp(profile, *setup.lib, setup.options);
   machine::RunResult result;
   try {
@@ -320,6 +357,7 @@ int program_command(const AnalyzeArgs& a) {
     }
   }
   if (sim) settle(*sim, profile);
+  if (part) part->finish(result);
   if (!result.ok()) {
     std::cerr << nc::format(*result.alarm) << "\n";
     return 1;
@@ -350,6 +388,7 @@ int program_command(const AnalyzeArgs& a) {
   if (a.json) {
     nlohmann::json j = analyze_json(a.in.program, profile, t, sim ? &*sim : nullptr);
     if (shape) shape::add_json(j, *curve, *shape, a.tol);
+    if (part) j["part"] = report::verify_json(part->report());
     std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
@@ -370,6 +409,7 @@ int program_command(const AnalyzeArgs& a) {
     std::cout << fmt::format("  longest wait      {:.4f} s before {} (the control was still reading or computing)\n",
                              slowest_wait.wait, where(slowest_wait.move));
   if (shape) std::cout << shape::text(*curve, *shape, a.tol);
+  if (part) std::cout << part_text(part->report());
   if (sim) {
     auto contour = [&](const char* label, const motion::ContourStats& s, const char* none) {
       if (s.ticks == 0) return fmt::format("  {} none ({})\n", label, none);
@@ -467,10 +507,14 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
                   "--servo: the most servo periods simulated (about 60 ns each), default 50000000; a longer program "
                   "is refused")
       ->check(units::number("a count", "", units::at_least(1), units::at_most(1e12), true));
-  cmd->allow_extras();
-  cmd->add_option("--curve", a.curve.name,
-                  "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "
-                  "or expr");
+  add_curve_options(cmd, a.curve,
+                    "nominal curve for the shape error: a name of `ncurve gen --list` (its parameters as --NAME VALUE) "
+                    "or expr");
+  cmd->add_option("--setup", a.setup,
+                  "--curve: the stock and tools the part is cut with (TOML, docs/setup.md); default: the box around "
+                  "the cutting moves, each tool a flat end mill of its D offset")
+      ->check(CLI::ExistingFile);
+  add_wall_option(cmd, a.wall);
   cmd->add_option("--shape-csv", a.shape_csv,
                   "--curve: write each contour block's deviation and the spiral paper's chord models to this CSV file");
   cmd->add_option("--shape-plot", a.shape_plot, "--curve: SVG of the path coloured by its deviation from the curve");
@@ -479,12 +523,6 @@ void add_analyze_command(CLI::App& app, AnalyzeArgs& a) {
                 "tool-nose radius compensation), not the tool centre path");
   cmd->add_option("--tol", a.tol, "--curve: shape tolerance, mm; blocks beyond it are counted and marked")
       ->check(units::length_mm(units::above(0)));
-  cmd->add_option("--x", a.curve.x, "--curve expr: x(t)");
-  cmd->add_option("--y", a.curve.y, "--curve expr: y(t)");
-  cmd->add_option("--z", a.curve.z, "--curve expr: z(t)");
-  cmd->add_option("--t", a.curve.t_range, "--curve expr: range of t as FROM:TO");
-  cmd->add_option("--from", a.curve.from, "start of the curve parameter t")->check(units::number("a number", ""));
-  cmd->add_option("--to", a.curve.to, "end of the curve parameter t")->check(units::number("a number", ""));
   CLI::App* circle = cmd->add_subcommand("circle", "ISO 230-4 circular test on the machine model");
   circle->add_option("--radius", a.radius, "radius, mm")->required()->check(units::length_mm(units::above(0)));
   circle->add_option("--feed", a.feed, "feed, mm/min")->required()->check(units::feed_mm_min());

@@ -24,6 +24,8 @@ struct AnalyzeArgs {
   std::string shape_plot;  // SVG: path coloured by deviation
   double tol = 0;          // mm: shape tolerance to mark (0: none)
   bool programmed = false; // --curve: the contour as programmed, not the compensated tool path
+  std::string setup;       // --curve: the stock and tools the part is cut with (a mill)
+  std::string wall = "auto";  // --curve: the design's walls (groove, edge, auto)
   std::size_t max_moves = 500000;  // --curve: contour moves kept (docs/analyze.md)
   double max_ticks = 50e6;         // --servo: servo periods simulated
   std::vector<std::string> kv;  // circle: KX[,KY]

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "app/cli_checks.hpp"
+#include "app/cli_units.hpp"
 
 namespace ncurve::app {
 namespace {
@@ -191,6 +192,17 @@ geom::Curve build_curve(const CurveArgs& a, const std::vector<std::string>& extr
     throw std::runtime_error(fmt::format("the range of t, {:g} to {:g}, is empty: --from must be below --to",
                                          curve.t0(), curve.t1()));
   return curve;
+}
+
+void add_curve_options(CLI::App* cmd, CurveArgs& a, const std::string& what) {
+  cmd->allow_extras();
+  cmd->add_option("--curve", a.name, what);
+  cmd->add_option("--x", a.x, "--curve expr: x(t)");
+  cmd->add_option("--y", a.y, "--curve expr: y(t)");
+  cmd->add_option("--z", a.z, "--curve expr: z(t)");
+  cmd->add_option("--t", a.t_range, "--curve expr: range of t as FROM:TO");
+  cmd->add_option("--from", a.from, "start of the curve parameter t")->check(units::number("a number", ""));
+  cmd->add_option("--to", a.to, "end of the curve parameter t")->check(units::number("a number", ""));
 }
 
 }  // namespace ncurve::app

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "geom/curve.hpp"
 #include "machine/profile.hpp"
 
@@ -19,6 +21,10 @@ struct CurveArgs {
   std::string command;
   std::vector<std::string> options;
 };
+
+// --curve NAME (described as `what`) and the expression's --x, --y, --z, --t, --from, --to; the
+// command must allow extras (the curve's parameters as --NAME VALUE).
+void add_curve_options(CLI::App* cmd, CurveArgs& a, const std::string& what);
 
 // extras: the --NAME VALUE pairs the option parser left over: each must name a parameter of the
 // curve (for expr: a name its expressions use, each of which needs a value) and give a finite

@@ -25,6 +25,7 @@
 #include "machine/profile.hpp"
 #include "report/path_plot.hpp"
 #include "report/summary.hpp"
+#include "report/verify_report.hpp"
 #include "report/writers.hpp"
 #include "serve/serve_command.hpp"
 
@@ -46,6 +47,13 @@ int run_command(const app::RunArgs& a) {
     throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
+    return 2;
+  }
+  if (a.verify.curve.name.empty() && !a.verify.curve_extras.empty()) {
+    const std::string& word = a.verify.curve_extras.front();
+    const auto near = word.rfind("--", 0) == 0 ? app::nearest_name(word.substr(2), a.verify.curve.options) : std::nullopt;
+    std::cerr << "ncurve run: unexpected argument '" << nc::escape_controls(word) << "'"
+              << (near ? " (did you mean --" + *near + "?)" : "") << "\n";
     return 2;
   }
   const machine::MachineProfile& profile = setup.profile;
@@ -83,6 +91,7 @@ int run_command(const app::RunArgs& a) {
   if (a.verify.on()) {
     try {
       verify.emplace(a.verify, profile, lib, setup.options);
+      for (const std::string& f : verify->stl_files()) setup.inputs.push_back(f);  // never an output
     } catch (const std::bad_alloc&) {
       throw;
     } catch (const std::exception& e) {
@@ -136,7 +145,10 @@ int run_command(const app::RunArgs& a) {
   if (gcode) gcode->finish();
   if (verify) {
     verify->finish(result);
-    if (html && verify->map()) html->set_part(sim::part_grid(*verify->map()));
+    if (html && verify->map()) {
+      html->set_part(sim::part_grid(*verify->map()));
+      if (verify->report().curve) html->set_deviation(report::deviation_json(*verify->report().curve));
+    }
     try {
       verify->write_part(setup.inputs);
     } catch (const io::OutputError& e) {
@@ -207,7 +219,12 @@ int ncurve_main(int argc, char** argv) {
     std::cout << app::man_page(app, NCURVE_VERSION);
     return 0;
   }
-  if (c.run_command->parsed()) return run_command(c.run);
+  if (c.run_command->parsed()) {
+    c.run.verify.curve_extras = c.run_command->remaining();
+    c.run.verify.curve.command = "ncurve run";
+    c.run.verify.curve.options = app::long_options(*c.run_command);
+    return run_command(c.run);
+  }
   if (c.gen.command->parsed()) return app::gen_command(c.gen);
   if (c.helicoid.command->parsed()) return app::helicoid_command(c.helicoid);
   if (c.analyze.command->parsed()) return app::analyze_command(c.analyze);

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "io/output_file.hpp"
+#include "sim/mesh_top.hpp"
+#include "sim/stl_read.hpp"
 #include "sim/part_stl.hpp"
 #include "sim/stl.hpp"
 
@@ -19,6 +21,27 @@ void add_verify_options(CLI::App* run, VerifyArgs& a) {
   run->add_option("--resolution", a.resolution, "the Z-map's cell size, mm (default: the stock's shorter side in 1000 cells)")
       ->check(CLI::Range(1e-4, 1e4));
   run->add_option("--part", a.part, "write the cut part as a binary STL file (turns on --verify)");
+  add_curve_options(run, a.curve,
+                    "measure the cut part's walls against this curve, a name of `ncurve gen --list` (its parameters "
+                    "as --NAME VALUE) or expr; turns on --verify (mill)");
+  run->add_option("--tol", a.tol,
+                  "--curve, --design: a wall or surface beyond the design or short of it by more is a finding, mm "
+                  "(default 0.01)")
+      ->check(CLI::Range(1e-6, 1e3));
+  run->add_option("--design", a.design,
+                  "a mill: the design solid (STL, mm); warn where the cut gouges it or leaves stock on it beyond "
+                  "--tol (turns on --verify)")
+      ->check(CLI::ExistingFile);
+  add_wall_option(run, a.wall);
+  run->add_option("--max-moves", a.max_moves, "--curve: the most cuts kept for measuring the walls (about 150 bytes each), default 1000000")
+      ->check(CLI::Range(1.0, 1e9));
+}
+
+void add_wall_option(CLI::App* cmd, std::string& wall) {
+  cmd->add_option("--wall", wall,
+                  "--curve: the design's walls: groove (the tool's axis was to follow the curve), edge (the curve is "
+                  "the part's edge, a G41/G42 contour) or auto (edge when the program compensates; the default)")
+      ->check(CLI::IsMember({"auto", "groove", "edge"}));
 }
 
 namespace {
@@ -86,6 +109,13 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   if (args.setup_text) {
     setup_ = sim::parse_setup(*args.setup_text, args.setup.empty() ? "<setup>" : args.setup);
     report_.setup_file = args.setup.empty() ? "<setup>" : args.setup;
+    // a setup sent as text (the server's) may name no file to be read
+    bool stl = setup_.stock && std::holds_alternative<sim::StlFile>(*setup_.stock);
+    for (const sim::Fixture& f : setup_.fixtures) stl = stl || std::holds_alternative<sim::StlFile>(f.shape);
+    if (stl)
+      throw std::runtime_error(fmt::format("{}: error: an STL stock or fixture names a file, and a setup sent as text "
+                                           "reads none (give a box)",
+                                           report_.setup_file));
   } else if (!args.setup.empty()) {
     setup_ = sim::read_setup(args.setup);
     report_.setup_file = args.setup;
@@ -96,7 +126,24 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
   auto refuse = [&](const std::string& why) {
     report_.refused = why;
     if (!args.part.empty()) throw std::runtime_error("--part: " + why);
+    if (!args.design.empty()) throw std::runtime_error("--design: " + why);
   };
+  if (!args.curve.name.empty()) {
+    if (profile.lathe())
+      throw std::runtime_error("--curve: the walls are measured on a mill's part; a lathe's profile against a curve: "
+                               "ncurve analyze --curve");
+    try {
+      curve_.emplace(build_curve(args.curve, args.curve_extras, profile));
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw std::runtime_error(std::string("--curve: ") + e.what());
+    }
+  }
+  if (!args.design.empty() && profile.lathe())
+    throw std::runtime_error("--design: the check against a design is a mill's (on its Z-map), not a lathe's yet");
+  std::optional<sim::Mesh> design;  // read before the runs: its errors first
+  if (!args.design.empty()) design = sim::read_stl(args.design);
   if (profile.lathe()) {
     lathe(profile, lib, options, refuse);
     return;
@@ -124,16 +171,14 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
     return;
   }
   report_.stock = stock;
-  if (std::holds_alternative<sim::StlFile>(*stock)) {
-    refuse("an STL stock is not simulated yet: give a box or a cylinder");
-    return;
-  }
   sim::VerifyOptions vo;
   vo.cell = args.resolution;
   vo.most_cells = args.most_cells;
   if (args.cells > 0) vo.min_cells = args.cells;
   vo.cut_moves = args.cut_moves;
   vo.profile = &profile;
+  vo.mark_cells = design.has_value();
+  vo.check_reference = !report_.stock_default;
   try {
     verifier_ = std::make_unique<sim::Verifier>(*stock, *tools_, setup_.tool_in_spindle, vo, setup_.fixtures);
   } catch (const std::invalid_argument& e) {
@@ -142,9 +187,24 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
                                                              : std::string("the stock's shorter side in 1000 cells")));
   }
   report_.verifier = verifier_.get();
+  if (curve_) {
+    cuts_ = std::make_unique<sim::CutLog>(args.max_moves);
+    verifier_->log_cuts(cuts_.get());
+  }
+  if (design) design_top_ = sim::mesh_top(*design, verifier_->map());
 }
 
 RunVerification::~RunVerification() = default;
+
+std::vector<std::string> RunVerification::stl_files() const {
+  std::vector<std::string> out;
+  if (setup_.stock)
+    if (const auto* s = std::get_if<sim::StlFile>(&*setup_.stock)) out.push_back(s->path);
+  for (const sim::Fixture& f : setup_.fixtures)
+    if (const auto* s = std::get_if<sim::StlFile>(&f.shape)) out.push_back(s->path);
+  if (!args_.design.empty()) out.push_back(args_.design);
+  return out;
+}
 
 void RunVerification::lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
                             const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse) {
@@ -201,6 +261,40 @@ void RunVerification::finish(machine::RunResult& result) {
   if (!verifier_) return;
   report_.fixtures = verifier_->fixtures_checked();
   for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);
+  if (!args_.design.empty()) {
+    const sim::ZMap& map = verifier_->map();
+    design_ = sim::check_design({&map, design_top_, map.cut_by(), verifier_->cut_blocks(), verifier_->last_block(),
+                                 args_.design, args_.tol});
+    for (const sim::Finding& f : design_->findings) result.warnings.push_back(f.diagnostic);
+    report_.design = &*design_;
+    report_.design_file = args_.design;
+  }
+  if (curve_) measure_walls(result);
+}
+
+void RunVerification::measure_walls(machine::RunResult& result) {
+  report::CurveCheck& check = report_.curve.emplace();
+  check.curve = curve_->name();
+  check.tol = args_.tol;
+  check.cuts = cuts_.get();
+  sim::WallOptions o;
+  o.design = args_.wall == "edge" || (args_.wall == "auto" && cuts_->any_compensated()) ? sim::WallDesign::edge
+                                                                                       : sim::WallDesign::groove;
+  o.top = verifier_->map().stock().max[2];
+  if (verifier_->counts().cut == 0) {
+    check.refused = "no move was cut: no tool in the spindle, or none of known size (tool_in_spindle and [tools.N] "
+                    "in a setup file, --setup)";
+    return;
+  }
+  try {
+    walls_ = sim::measure_walls(*cuts_, *curve_, o);
+  } catch (const std::runtime_error& e) {
+    check.refused = e.what();
+    return;
+  }
+  check.walls = &*walls_;
+  check.findings = sim::wall_findings(*cuts_, *walls_, args_.tol);
+  for (const sim::Finding& f : check.findings) result.warnings.push_back(f.diagnostic);
 }
 
 void RunVerification::write_part(const std::vector<std::string>& inputs) {

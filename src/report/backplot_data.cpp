@@ -6,13 +6,15 @@
 #include <bit>
 #include <nlohmann/json.hpp>
 
+#include "machine/rapid_path.hpp"
+
 namespace ncurve::report {
 
 static_assert(std::endian::native == std::endian::little, "the page reads the arrays as little-endian");
 
 BackplotData::BackplotData(const machine::MachineProfile& profile, std::size_t limit)
     : lathe_(profile.lathe()), x_diameter_(profile.lathe() && profile.diameter_x),
-      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(limit), other_(profile) {}
+      machine_plane_(profile.lathe() ? 18 : profile.power_on_plane), limit_(limit), profile_(profile), other_(profile) {}
 
 std::uint32_t BackplotData::block_of(const machine::Move& m) {
   if (have_last_block_ && m.file == last_file_ && m.line == last_line_) return last_block_;
@@ -45,6 +47,11 @@ void BackplotData::on_move(const machine::Move& m) {
   if (kind_.empty() ? true : a != last_) {  // the first motion's start is its jump
     jump_at_.push_back(static_cast<std::uint32_t>(kind_.size()));
     jump_.push_back(a);
+  }
+  if (m.kind == machine::MoveKind::rapid && !profile_.linear_rapid) {  // drawn as the machine moves it
+    const auto path = machine::rapid_path(m.start, m.end, profile_);
+    for (std::size_t k = 1; k + 1 < path.size(); ++k)
+      corners_.push_back({static_cast<double>(kind_.size()), path[k][0], path[k][1], path[k][2]});
   }
   kind_.push_back(m.kind == machine::MoveKind::rapid ? 0 : m.kind == machine::MoveKind::line ? 1 : 2);
   for (double v : b) end_.push_back(static_cast<float>(v));
@@ -114,6 +121,9 @@ std::string BackplotData::json(bool inch) const {
   nlohmann::json jumps = nlohmann::json::array();
   for (std::size_t i = 0; i < jump_at_.size(); ++i) jumps.push_back({jump_at_[i], jump_[i][0], jump_[i][1], jump_[i][2]});
   head["jumps"] = jumps;
+  nlohmann::json corners = nlohmann::json::array();
+  for (const auto& c : corners_) corners.push_back({static_cast<std::uint32_t>(c[0]), c[1], c[2], c[3]});
+  head["rapid_corners"] = corners;
   std::size_t text_bytes = 0;
   for (const auto* f : files_) text_bytes += f->text().size();
   nlohmann::json files = nlohmann::json::array();
@@ -124,7 +134,10 @@ std::string BackplotData::json(bool inch) const {
     files.push_back(e);
   }
   head["files"] = files;
-  if (part_) head["part"] = part_json(*part_);
+  if (part_) {
+    head["part"] = part_json(*part_);
+    if (!deviation_.is_null()) head["part"]["deviation"] = deviation_;
+  }
   if (alarm_) {
     nlohmann::json a;
     a["code"] = alarm_->code;

@@ -12,7 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
@@ -39,6 +39,8 @@ public:
   std::string json(bool inch) const;
   // The cut part, drawn shaded under the path (run --verify).
   void set_part(sim::PartGrid part) { part_ = std::move(part); }
+  // The part's walls against the design, coloured on it (report::deviation_json).
+  void set_deviation(nlohmann::json deviation) { deviation_ = std::move(deviation); }
 
 private:
   std::uint32_t block_of(const machine::Move& m);
@@ -52,6 +54,8 @@ private:
   std::vector<float> feed_;           // mm/min, or mm/rev
   std::vector<std::uint32_t> block_;  // index in the blocks
   std::vector<float> arcs_;           // per arc: centre X Y Z, sweep (rad, counter-clockwise +), plane
+  const machine::MachineProfile& profile_;   // its rapid rates and No.1401#1
+  std::vector<std::array<double, 4>> corners_;  // a dog-leg rapid's corners in order: motion, X Y Z
   std::vector<std::uint32_t> jump_at_;       // motions that do not start where the one before ended
   std::vector<std::array<double, 3>> jump_;  // and where they start
   std::array<double, 3> last_{};
@@ -68,6 +72,7 @@ private:
   OtherAxes other_;
   std::array<std::vector<double>, 3> other_end_;
   std::optional<sim::PartGrid> part_;
+  nlohmann::json deviation_;
 };
 
 // The cut part's grid as the pages take it: {nx, ny, x0, y0, dx, dy, bottom, top, heights (base64 of

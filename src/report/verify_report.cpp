@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/backplot_data.hpp"
 #include "report/summary.hpp"
 
 namespace ncurve::report {
@@ -66,7 +67,99 @@ nlohmann::json findings_json(const std::vector<sim::Finding>& findings) {
   return j;
 }
 
+std::string extreme_text(const sim::DesignExtreme& e) {
+  if (e.cells == 0) return "none beyond the tolerance";
+  return fmt::format("{:.3f} mm at X{:.3f} Y{:.3f} Z{:.3f} ({} cells beyond the tolerance)", e.amount, e.at[0], e.at[1],
+                     e.at[2], e.cells);
+}
+
+nlohmann::json extreme_json(const sim::DesignExtreme& e) {
+  return {{"amount_mm", e.amount}, {"at", e.cells ? nlohmann::json(e.at) : nlohmann::json(nullptr)}, {"cells", e.cells}};
+}
+
+const char* design_words(sim::WallDesign d) {
+  return d == sim::WallDesign::groove ? "groove: the tool's axis on the curve" : "edge: the part's wall on the curve";
+}
+
+// "t = 12.3 of the curve (X1.0000 Y2.0000), the wall of line 24 of spiral.nc"
+std::string wall_point_text(const CurveCheck& c, std::int64_t k) {
+  const sim::WallPoint& p = c.walls->points[static_cast<std::size_t>(k)];
+  std::string s = fmt::format("t = {:.6g} of the curve (X{:.4f} Y{:.4f})", p.t, p.x, p.y);
+  if (c.cuts && p.cut >= 0) {
+    const sim::CutLog::Cut& cut = (*c.cuts)[static_cast<std::size_t>(p.cut)];
+    s += fmt::format(", the wall of line {}{}", cut.line, cut.file ? " of " + cut.file->name() : std::string());
+  }
+  return s;
+}
+
 }  // namespace
+
+std::string curve_text(const CurveCheck& c, int width) {
+  auto line = [&](const char* label, const std::string& text) { return fmt::format("  {:<{}}{}\n", label, width, text); };
+  if (!c.walls) return line("curve", fmt::format("{}: not measured: {}", c.curve, c.refused));
+  const sim::WallReport& w = *c.walls;
+  std::string out = line("curve", fmt::format("{} ({}), walls measured at {} points, tolerance {:g} mm", c.curve,
+                                              design_words(w.design), w.points.size(), c.tol));
+  if (w.gouge_at >= 0) out += line("beyond design", fmt::format("{:.4f} mm at {}", w.largest_gouge, wall_point_text(c, w.gouge_at)));
+  if (w.left_at >= 0) out += line("short of it", fmt::format("{:.4f} mm at {}", w.largest_left, wall_point_text(c, w.left_at)));
+  out += line("walls rms",
+              fmt::format("{:.4f} mm; {} points beyond the tolerance{}{}; {} findings", w.rms, w.beyond(c.tol),
+                          w.not_cut ? fmt::format("; {} curve points not cut", w.not_cut) : "",
+                          w.no_design ? fmt::format("; {} sides where the curve turns tighter than the tool", w.no_design)
+                                      : "",
+                          c.findings.size()));
+  return out;
+}
+
+nlohmann::json curve_json(const CurveCheck& c) {
+  nlohmann::json j;
+  j["curve"] = c.curve;
+  j["tol_mm"] = c.tol;
+  if (!c.walls) {
+    j["refused"] = c.refused;
+    return j;
+  }
+  const sim::WallReport& w = *c.walls;
+  auto point = [&](std::int64_t k) -> nlohmann::json {
+    if (k < 0) return nullptr;
+    const sim::WallPoint& p = w.points[static_cast<std::size_t>(k)];
+    nlohmann::json at = {{"t", p.t}, {"curve_point", {p.x, p.y}}, {"normal", {p.nx, p.ny}}, {"z", p.level}};
+    if (c.cuts && p.cut >= 0) at["line"] = (*c.cuts)[static_cast<std::size_t>(p.cut)].line;
+    return at;
+  };
+  j["design"] = w.design == sim::WallDesign::groove ? "groove" : "edge";
+  j["points"] = w.points.size();
+  j["largest_gouge_mm"] = w.largest_gouge;
+  j["gouge_at"] = point(w.gouge_at);
+  j["largest_left_mm"] = w.largest_left;
+  j["left_at"] = point(w.left_at);
+  j["rms_mm"] = w.rms;
+  j["beyond_tol"] = w.beyond(c.tol);
+  j["not_cut"] = w.not_cut;
+  j["no_design"] = w.no_design;
+  return j;
+}
+
+nlohmann::json deviation_json(const CurveCheck& c) {
+  std::vector<float> points;
+  if (c.walls)
+    for (const sim::WallPoint& p : c.walls->points) {
+      const double s = p.design_offset + p.error;
+      points.insert(points.end(), {static_cast<float>(p.x + s * p.nx), static_cast<float>(p.y + s * p.ny),
+                                   static_cast<float>(p.error)});
+    }
+  return {{"tol", c.tol}, {"points", base64(points.data(), points.size() * sizeof(float))}};
+}
+
+std::string removed_text(const VerifyReport& r) {
+  if (r.section) {
+    const std::string by_tool = by_tool_text(r.section_sink->volume_by_tool());
+    return fmt::format("{:.1f} mm^3{}", r.section->volume_removed(), by_tool.empty() ? "" : " (" + by_tool + ")");
+  }
+  if (!r.verifier) return {};
+  const std::string by_tool = by_tool_text(r.verifier->volume_by_tool());
+  return fmt::format("{:.1f} mm^3{}", r.verifier->map().volume_removed(), by_tool.empty() ? "" : " (" + by_tool + ")");
+}
 
 std::string verify_text(const VerifyReport& r) {
   std::string out;
@@ -80,11 +173,9 @@ std::string verify_text(const VerifyReport& r) {
   for (const std::string& f : r.fixtures) out += fmt::format("  fixture        {}\n", f);
   for (const std::string& d : r.defaults) out += fmt::format("  default        {}\n", d);
   if (r.section) {  // a lathe: the half-section
-    const std::string by_tool = by_tool_text(r.section_sink->volume_by_tool());
     out += fmt::format("  section        the bar's half-section on a {:g} mm grid, within {:g} mm of the exact cut\n",
                        sim::kSectionUnit, sim::kSectionResolution);
-    out += fmt::format("  removed        {:.1f} mm^3{}\n", r.section->volume_removed(),
-                       by_tool.empty() ? "" : " (" + by_tool + ")");
+    out += fmt::format("  removed        {}\n", removed_text(r));
     const auto& c = r.section_sink->counts();
     if (c.no_tool) out += fmt::format("  not cut        {} moves with no tool (before the first T code, or T0)\n", c.no_tool);
     if (c.not_zx_arc) out += fmt::format("  not cut        {} arcs outside G18\n", c.not_zx_arc);
@@ -102,8 +193,7 @@ std::string verify_text(const VerifyReport& r) {
   const sim::Verifier& v = *r.verifier;
   const sim::ZMap& map = v.map();
   out += fmt::format("  Z-map          {} x {} cells of {:.4f} mm\n", map.nx(), map.ny(), map.cell());
-  const std::string by_tool = by_tool_text(v.volume_by_tool());
-  out += fmt::format("  removed        {:.1f} mm^3{}\n", map.volume_removed(), by_tool.empty() ? "" : " (" + by_tool + ")");
+  out += fmt::format("  removed        {}\n", removed_text(r));
   const auto& c = v.counts();
   if (c.no_tool)
     out += fmt::format("  not cut        {} moves with no tool in the spindle or a tool of no size (tool_in_spindle, "
@@ -113,8 +203,17 @@ std::string verify_text(const VerifyReport& r) {
   if (c.rotary)
     out += fmt::format("  not cut        {} moves turning a rotary axis (3 axes are simulated)\n", c.rotary);
   if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
-  out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out(),
-                     v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size()) : std::string());
+  const std::size_t walls = r.curve ? r.curve->findings.size() : 0;  // listed with the verifier's
+  out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out() + walls,
+                     v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size() + walls) : std::string());
+  if (r.curve) out += curve_text(*r.curve, 15);
+  if (r.design) {
+    out += fmt::format("  design         {}, tol {:g} mm, exact to the cell ({:.4f} mm); findings {}{}\n", r.design_file,
+                       r.design->tol, map.cell(), r.design->findings.size() + r.design->left_out,
+                       r.design->left_out ? fmt::format(" ({} listed)", r.design->findings.size()) : std::string());
+    out += fmt::format("  gouge          {}\n", extreme_text(r.design->gouge));
+    out += fmt::format("  stock left     {}\n", extreme_text(r.design->stock_left));
+  }
   if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
   return out;
 }
@@ -153,8 +252,19 @@ nlohmann::json verify_json(const VerifyReport& r) {
   j["moves_cut"] = c.cut;
   j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_xy_arc", c.not_xy_arc}, {"rotary", c.rotary}, {"after", c.after}};
   j["findings"] = findings_json(v.findings());
+  if (r.curve)
+    for (const nlohmann::json& f : findings_json(r.curve->findings)) j["findings"].push_back(f);
   j["findings_left_out"] = v.findings_left_out();
   j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
+  if (r.curve) j["curve"] = curve_json(*r.curve);
+  if (r.design)
+    j["design"] = {{"file", r.design_file},
+                   {"tol_mm", r.design->tol},
+                   {"cell_mm", map.cell()},
+                   {"gouge", extreme_json(r.design->gouge)},
+                   {"stock_left", extreme_json(r.design->stock_left)},
+                   {"findings", findings_json(r.design->findings)},
+                   {"findings_left_out", r.design->left_out}};
   return j;
 }
 

@@ -2,13 +2,15 @@
 
 #include <numbers>
 
+#include "machine/rapid_path.hpp"
+
 namespace ncurve::serve {
 
 using machine::Move;
 using machine::MoveKind;
 
 MoveColumns::MoveColumns(const machine::MachineProfile& profile, FileTable& files, std::size_t limit)
-    : frame_(profile), files_(files), limit_(limit) {
+    : frame_(profile), files_(files), limit_(limit), profile_(profile) {
   for (char a : std::string_view("ABC"))
     if (profile.axes.find(a) != std::string::npos) rotary_.push_back(machine::axis_index(a));
   abc_.resize(rotary_.size());
@@ -46,6 +48,15 @@ void MoveColumns::on_move(const Move& m) {
     sweep_.push_back(m.sweep * 180 / std::numbers::pi);
     plane_.push_back(m.plane);
     cw_.push_back(m.clockwise ? 1 : 0);
+  }
+  if (m.kind == MoveKind::rapid && !profile_.linear_rapid) {
+    const auto path = machine::rapid_path(m.start, m.end, profile_);
+    for (std::size_t k = 1; k + 1 < path.size(); ++k) {
+      corner_at_.push_back(index);
+      kx_.push_back(frame_.x(path[k][0]));
+      ky_.push_back(path[k][1]);
+      kz_.push_back(path[k][2]);
+    }
   }
   if (!placed) {
     code_at_.push_back(index);
@@ -109,6 +120,14 @@ void MoveColumns::write_json(Columns& out) const {
   put_array(out, "index", code_at_, whole);
   b.push_back(',');
   put_array(out, "code", code_, whole);
+  b.append(std::string_view("},\"corners\":{"));
+  put_array(out, "index", corner_at_, whole);
+  b.push_back(',');
+  put_array(out, "x", kx_, num);
+  b.push_back(',');
+  put_array(out, "y", ky_, num);
+  b.push_back(',');
+  put_array(out, "z", kz_, num);
   b.append(std::string_view("}}"));
 }
 

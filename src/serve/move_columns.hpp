@@ -42,6 +42,10 @@ private:
   std::vector<std::uint8_t> plane_, cw_;
   std::vector<std::uint32_t> code_at_;
   std::vector<int> code_;
+  // a dog-leg rapid's corners (non-linear positioning), in order
+  const machine::MachineProfile& profile_;
+  std::vector<std::uint32_t> corner_at_;
+  std::vector<double> kx_, ky_, kz_;
 };
 
 }  // namespace ncurve::serve

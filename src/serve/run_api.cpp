@@ -11,6 +11,7 @@
 #include "report/backplot_data.hpp"
 #include "report/path_plot.hpp"
 #include "report/summary.hpp"
+#include "report/verify_report.hpp"
 #include "serve/api.hpp"
 #include "serve/move_columns.hpp"
 #include "serve/request.hpp"
@@ -43,12 +44,35 @@ json diagnostics(const report::RunReport& rep) {
   if (res.alarm) out.push_back(report::diagnostic_json(*res.alarm));
   return out;
 }
+// "curve": {"name", "params": {..}, "x", "y", "z", "t", "from", "to"}: the design's curve, as ncurve run --curve
+void read_curve(const json& c, app::VerifyArgs& va) {
+  if (!c.is_object()) throw ApiError(400, "\"curve\" must be an object, e.g. {\"name\": \"ellipse\", \"params\": {\"a\": 20}}");
+  check_keys(c, {"name", "params", "x", "y", "z", "t", "from", "to"}, "\"curve\"");
+  va.curve.name = get_string(c, "name", true).value();
+  va.curve.x = get_string(c, "x").value_or("");
+  va.curve.y = get_string(c, "y").value_or("");
+  va.curve.z = get_string(c, "z").value_or("");
+  va.curve.t_range = get_string(c, "t").value_or("");
+  va.curve.from = get_number(c, "from");
+  va.curve.to = get_number(c, "to");
+  va.curve.command = "POST /api/run \"curve\"";
+  if (auto it = c.find("params"); it != c.end() && !it->is_null()) {
+    if (!it->is_object()) throw ApiError(400, "\"curve\": \"params\" must be an object, e.g. {\"a\": 5}");
+    for (const auto& [k, v] : it->items()) {
+      if (!v.is_number()) throw ApiError(400, fmt::format("\"curve\": the value of \"{}\" must be a number", k));
+      va.curve_extras.push_back("--" + k);
+      va.curve_extras.push_back(fmt::format("{}", v.get<double>()));
+    }
+  }
+}
+
 }  // namespace
 
 Answer api_run(const ServeConfig& config, const std::string& body, const std::atomic<bool>* cancel) {
   const json j = parse_body(body);
   check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "moves",
-                 "trace", "trace_limit", "format", "verify", "setup", "setup_name", "resolution", "cells", "cut_moves"},
+                 "trace", "trace_limit", "format", "verify", "setup", "setup_name", "resolution", "cells", "cut_moves",
+                 "curve", "tol", "wall"},
              "POST /api/run");
   const app::RunInputs in = run_inputs(config, j);
   const bool want_moves = get_bool(j, "moves", true);
@@ -80,6 +104,15 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
     if (!(*n >= 0 && *n <= 1e15)) throw ApiError(400, "\"cut_moves\" is a count of motions, 0 or more");
     va.cut_moves = static_cast<std::uint64_t>(*n);
   }
+  if (auto c = j.find("curve"); c != j.end() && !c->is_null()) read_curve(*c, va);
+  if (auto t = get_number(j, "tol")) {
+    if (!(*t >= 1e-6 && *t <= 1e3)) throw ApiError(400, "\"tol\" is 0.000001 to 1000 mm");
+    va.tol = *t;
+  }
+  va.wall = get_string(j, "wall").value_or(va.wall);
+  if (va.wall != "auto" && va.wall != "groove" && va.wall != "edge")
+    throw ApiError(400, "\"wall\" is \"auto\", \"groove\" or \"edge\"");
+  va.max_moves = std::min<std::size_t>(va.max_moves, config.max_moves);
   va.most_cells = kMostPartCells;
   std::optional<app::RunVerification> verify;
   if (va.on()) {
@@ -142,7 +175,9 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
     write_trace_json(columns, *trace, files);
   }
   if (verify && verify->map()) {
-    fmt::format_to(it, ",\"part\":{}", report::part_json(sim::part_grid(*verify->map())).dump());
+    json part = report::part_json(sim::part_grid(*verify->map()));
+    if (verify->report().curve) part["deviation"] = report::deviation_json(*verify->report().curve);
+    fmt::format_to(it, ",\"part\":{}", part.dump());
   }
   b.append(std::string_view(",\"files\":["));
   for (std::size_t i = 0; i < files.names().size(); ++i) {

@@ -196,6 +196,20 @@ double lowest_on_arc(const ArcCell& c, const ToolShape& tool) {
   return best;
 }
 
+// The arc seen from the vertical line through (x, y).
+ArcCell arc_cell(const Arc& arc, double x, double y) {
+  const double length = std::abs(arc.sweep), dir = arc.sweep < 0 ? -1.0 : 1.0;
+  ArcCell c{arc.radius, 0, 0, length, arc.z_start, length > 0 ? (arc.z_end - arc.z_start) / length : 0};
+  const double dx = x - arc.cx, dy = y - arc.cy;
+  c.d = std::hypot(dx, dy);
+  // the point's angle phi; beta = dir (start - phi), wrapped
+  const double phi = c.d > 0 ? std::atan2(dy, dx) : 0;
+  double beta = std::remainder(dir * (arc.start_angle - phi), kTwoPi);
+  if (beta >= std::numbers::pi) beta -= kTwoPi;
+  c.beta = beta;
+  return c;
+}
+
 // The box of the arc: its ends and the quadrant points it passes.
 struct ArcBox {
   double x0, x1, y0, y1;
@@ -228,6 +242,11 @@ bool arc_valid(const Arc& arc) { return arc.radius >= 0 && std::isfinite(std::ab
 
 }  // namespace
 
+double lowest_over(const ToolShape& tool, const Arc& arc, double x, double y) {
+  if (!arc_valid(arc)) return kUnreached;
+  return lowest_on_arc(arc_cell(arc, x, y), tool);
+}
+
 void ZMap::arc_rows(const ToolShape& tool, const Arc& arc, int& j0, int& j1) const {
   j0 = j1 = 0;
   if (!arc_valid(arc)) return;
@@ -238,7 +257,6 @@ void ZMap::arc_rows(const ToolShape& tool, const Arc& arc, int& j0, int& j1) con
 
 void ZMap::pass_arc(const ToolShape& tool, const Arc& arc, Pass& p) {
   const double r = tool.radius(), rho = arc.radius, pad = 1e-9 * (1 + r + rho);
-  const double length = std::abs(arc.sweep), dir = arc.sweep < 0 ? -1.0 : 1.0;
   if (!arc_valid(arc)) return;
   const ArcBox box = arc_box(arc);
   const double outer = rho + r;
@@ -246,7 +264,6 @@ void ZMap::pass_arc(const ToolShape& tool, const Arc& arc, Pass& p) {
   arc_rows(tool, arc, j0, j1);
   j0 = std::max(j0, p.lo);
   j1 = std::min(j1, p.hi);
-  ArcCell c{rho, 0, 0, length, arc.z_start, length > 0 ? (arc.z_end - arc.z_start) / length : 0};
   for (int j = j0; j < j1; ++j) {
     const double y = cell_y(j), dy = y - arc.cy;
     const double w2 = outer * outer - dy * dy;
@@ -257,16 +274,7 @@ void ZMap::pass_arc(const ToolShape& tool, const Arc& arc, Pass& p) {
     if (i1 <= i0) continue;
     double* hr = row(j).data();
     before_row(hr + i0, i1 - i0, p);
-    for (int i = i0; i < i1; ++i) {
-      const double dx = cell_x(i) - arc.cx;
-      c.d = std::hypot(dx, dy);
-      // the cell's angle phi; beta = dir (start - phi), wrapped
-      const double phi = c.d > 0 ? std::atan2(dy, dx) : 0;
-      double beta = std::remainder(dir * (arc.start_angle - phi), kTwoPi);
-      if (beta >= std::numbers::pi) beta -= kTwoPi;
-      c.beta = beta;
-      hr[i] = std::min(hr[i], lowest_on_arc(c, tool));
-    }
+    for (int i = i0; i < i1; ++i) hr[i] = std::min(hr[i], lowest_on_arc(arc_cell(arc, cell_x(i), y), tool));
     after_row(hr + i0, i0, j, i1 - i0, p);
   }
 }

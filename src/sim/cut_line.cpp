@@ -109,6 +109,19 @@ void sloping_row(double* h, int n, double ox0, double oy, double step, const Lin
 
 }  // namespace
 
+double lowest_over(const ToolShape& tool, const Point3& a, const Point3& b, double x, double y) {
+  LineMove m{a[0], a[1], a[2], b[0] - a[0], b[1] - a[1], b[2] - a[2], 0, tool.radius()};
+  m.a = m.vx * m.vx + m.vy * m.vy;
+  const double ox = x - a[0], oy = y - a[1];
+  double h = kUnreached;
+  if (m.a <= 1e-24 * (1 + m.dz * m.dz)) plunge_row(&h, 1, ox, oy, 0, m, tool);
+  else if (tool.kind() == ToolShape::Kind::flat) flat_row(&h, 1, ox, oy, 0, m);
+  else if (tool.kind() == ToolShape::Kind::ball) ball_row(&h, 1, ox, oy, 0, m);
+  else if (m.dz == 0) level_row(&h, 1, ox, oy, 0, m, tool);
+  else sloping_row(&h, 1, ox, oy, 0, m, tool);
+  return h;
+}
+
 void ZMap::line_rows(const ToolShape& tool, const Point3& a, const Point3& b, int& j0, int& j1) const {
   const double r = tool.radius(), pad = 1e-9 * (1 + r);
   rows_of(std::min(a[1], b[1]) - r - pad, std::max(a[1], b[1]) + r + pad, j0, j1);

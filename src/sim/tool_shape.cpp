@@ -65,6 +65,20 @@ double ToolShape::lower(double u) const {
   return kUnreached;
 }
 
+double ToolShape::radius_at(double height) const {
+  if (!(height >= 0)) return 0;
+  if (height >= rim_height()) return radius_;
+  switch (kind_) {
+    case Kind::flat: return radius_;
+    case Kind::ball: case Kind::bull_nose: {
+      const double below = corner_ - height;  // under the corner's centre
+      return radius_ - corner_ + std::sqrt(std::max(corner_ * corner_ - below * below, 0.0));
+    }
+    case Kind::cone: return height / cot_half_;
+  }
+  return radius_;
+}
+
 double ToolShape::rim_height() const {
   switch (kind_) {
     case Kind::flat: return 0;

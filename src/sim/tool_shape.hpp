@@ -24,8 +24,11 @@ public:
   // Height of the lower surface above the tip at radial distance d (0 <= d <= radius), from the
   // squared distance u = d^2; +infinity beyond the radius (the tool does not reach there).
   double lower(double u) const;
-  // The same for d <= radius as the shape's largest height: flat 0, ball R, bull-nose r, cone R/tan.
+  // The lower surface's height at d = radius, its largest: flat 0, ball R, bull-nose r, cone R/tan.
   double rim_height() const;
+  // The inverse of lower: the tool's radius at `height` above its tip (0 below the tip, the radius
+  // from the rim up).
+  double radius_at(double height) const;
 
 private:
   Kind kind_ = Kind::flat;

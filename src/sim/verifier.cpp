@@ -1,6 +1,8 @@
 #include "sim/verifier.hpp"
 
 #include "machine/rapid_path.hpp"
+#include "sim/mesh_top.hpp"
+#include "sim/stl_read.hpp"
 
 #include <fmt/format.h>
 
@@ -132,8 +134,9 @@ std::optional<Box> zmap_box(const Stock& stock) {
 
 namespace {
 ZMap make_map(const Stock& stock, const VerifyOptions& o) {
-  const std::optional<Box> box = zmap_box(stock);
-  if (!box) throw std::invalid_argument("an STL stock is not simulated yet: give a box or a cylinder");
+  std::optional<Box> box = zmap_box(stock);
+  std::optional<Mesh> mesh;  // an STL stock: the map on its box, each cell from its top
+  if (const auto* stl = std::get_if<StlFile>(&stock)) box = mesh_box(mesh.emplace(read_stl(stl->path, stl->scale)));
   double cell = o.cell;
   const double lx = box->max[0] - box->min[0], ly = box->max[1] - box->min[1];
   if (cell == 0 && lx > 0 && ly > 0) {  // the shorter side in min_cells cells, coarser if that is too many
@@ -149,6 +152,7 @@ ZMap make_map(const Stock& stock, const VerifyOptions& o) {
         if (d2 > r2 || d2 < in2) map.clear_cell(i, j);
       }
   }
+  if (mesh) start_at_mesh(map, *mesh);
   map.report_cuts(true);
   return map;
 }
@@ -158,14 +162,15 @@ Verifier::Verifier(const Stock& stock, MillTools& tools, std::optional<int> spin
                    const std::vector<Fixture>& fixtures)
     : map_(make_map(stock, options)), tools_(tools), options_(options) {
   for (const Fixture& f : fixtures) {
-    const auto* box = std::get_if<AxisBox>(&f.shape);
-    if (!box) {
-      unchecked_fixtures_.push_back(f.name);
-      continue;
-    }
-    // the box's own map on the stock's cells (at least two a side), probed and never cut
-    const double cell = std::min({map_.cell(), (box->max[0] - box->min[0]) / 2, (box->max[1] - box->min[1]) / 2});
-    fixtures_.push_back({f.name, ZMap(Box{box->min, box->max}, cell)});
+    // the fixture's own map on the stock's cells (at least two a side), probed and never cut; an
+    // STL's on its box, each cell from the mesh's top down
+    std::optional<Mesh> mesh;
+    Box box;
+    if (const auto* b = std::get_if<AxisBox>(&f.shape)) box = {b->min, b->max};
+    else box = mesh_box(mesh.emplace(read_stl(std::get<StlFile>(f.shape).path, std::get<StlFile>(f.shape).scale)));
+    const double cell = std::min({map_.cell(), (box.max[0] - box.min[0]) / 2, (box.max[1] - box.min[1]) / 2});
+    fixtures_.push_back({f.name, ZMap(box, cell)});
+    if (mesh) start_at_mesh(fixtures_.back().map, *mesh);
   }
   if (spindle) {
     tool_number_ = *spindle;
@@ -173,8 +178,41 @@ Verifier::Verifier(const Stock& stock, MillTools& tools, std::optional<int> spin
   }
 }
 
+void Verifier::on_setup(const machine::Setup& s) {
+  if (!reference_found_) origin_ = s.origin;
+}
+
+// NC2089: reference position 1 (where G28 takes the tool and where a machine starts) inside the
+// stock in the work coordinates in force: the profile's reference point or work offsets, or the
+// setup's stock, are not the machine's. The spindle's gauge point is checked, which the tool's
+// tip is at or below.
+void Verifier::check_reference(const machine::Move& m) {
+  const machine::AxisVector origin = *origin_;
+  origin_.reset();
+  const machine::AxisVector& ref = options_.profile->reference_points[0];
+  const Point3 p{ref[0] - origin[0], ref[1] - origin[1], ref[2] - origin[2]};
+  const Box& b = map_.stock();
+  const double depth = b.max[2] - p[2];
+  if (p[0] < b.min[0] || p[0] > b.max[0] || p[1] < b.min[1] || p[1] > b.max[1] || p[2] < b.min[2] ||
+      !(depth > kFindingDepth))
+    return;
+  find(m, "NC2089",
+       fmt::format("the machine's reference position 1 is inside the stock in the work coordinates in force: "
+                   "X{:.3f} Y{:.3f} Z{:.3f}, {:.3f} mm below the stock's top; G28 would drive the tool into the part "
+                   "and the machine starts there: give the machine's own reference point and work offsets in the "
+                   "profile ([reference_points], [work_offsets]) or the stock where it is clamped (the setup)",
+                   p[0], p[1], p[2], depth),
+       p, depth);
+  reference_found_ = true;
+}
+
 void Verifier::on_move(const machine::Move& m) {
   using machine::MoveKind;
+  if (m.line != 0) last_block_ = {m.file, m.line};
+  if (origin_ && options_.profile && options_.check_reference && m.is_motion()) {
+    flush();  // the findings in the moves' order
+    check_reference(m);
+  }
   switch (m.kind) {
     case MoveKind::tool_change: {
       flush();
@@ -227,6 +265,12 @@ void Verifier::cut(const machine::Move& m) {
     ++counts_.not_xy_arc;
     return;
   }
+  if (options_.mark_cells) {  // the block, once for consecutive moves of it
+    if (cut_blocks_.empty() || !(cut_blocks_.back() == BlockAt{m.file, m.line})) cut_blocks_.push_back({m.file, m.line});
+    map_.mark_cuts(static_cast<std::uint32_t>(cut_blocks_.size() - 1));
+    s->mark = static_cast<std::uint32_t>(cut_blocks_.size() - 1);
+  }
+  if (log_) log_->add(tool_->shape, s->a, s->b, s->arc, m);
   ++counts_.cut;
   queued_.push_back({m, batch_.size(), body_probes_.size()});
   batch_.push_back(std::move(*s));
@@ -311,7 +355,6 @@ void Verifier::check_fixtures(const machine::Move& m) {
 std::vector<std::string> Verifier::fixtures_checked() const {
   std::vector<std::string> out;
   for (const auto& f : fixtures_) out.push_back(f.name + ": checked");
-  for (const auto& n : unchecked_fixtures_) out.push_back(n + ": an STL fixture, not checked yet");
   return out;
 }
 

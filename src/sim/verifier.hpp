@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "machine/move.hpp"
+#include "sim/cut_log.hpp"
 #include "sim/finding.hpp"
 #include "sim/setup.hpp"
 #include "sim/tool_shape.hpp"
@@ -67,6 +68,15 @@ struct VerifyOptions {
   double most_cells = 1e8;                // the largest map (8 bytes a cell)
   std::uint64_t cut_moves = UINT64_MAX;   // only the first so many motions are cut (a debugger's step)
   const machine::MachineProfile* profile = nullptr;  // its rapid positioning (No.1401#1); none: straight
+  bool mark_cells = false;  // keep the block that last lowered each cell (a design's check)
+  bool check_reference = true;  // NC2089 (with a profile): off where the stock is a guess (the default box)
+};
+
+// A block of the program: where a finding found after the run is said.
+struct BlockAt {
+  const nc::SourceFile* file = nullptr;
+  std::uint32_t line = 0;
+  bool operator==(const BlockAt&) const = default;
 };
 
 // The moves are cut in batches (ZMap::cut_batch, the map's rows shared between the cores) and
@@ -77,6 +87,8 @@ public:
   Verifier(const Stock& stock, MillTools& tools, std::optional<int> spindle, VerifyOptions options = {},
            const std::vector<Fixture>& fixtures = {});
   void on_move(const machine::Move& m) override;
+  // A new work zero: the reference point is checked against the stock at the next motion.
+  void on_setup(const machine::Setup& s) override;
   // Cuts and checks the moves queued (the results below do it first).
   void flush();
 
@@ -94,8 +106,16 @@ public:
   };
   const Counts& counts() const { return counts_; }
 
-  // The fixtures checked (boxes), and those not (STL, not simulated yet).
+  // Keep every cut in `log` as well (for measuring walls afterwards).
+  void log_cuts(CutLog* log) { log_ = log; }
+
+  // Each fixture, checked.
   std::vector<std::string> fixtures_checked() const;
+
+  // With VerifyOptions::mark_cells: the blocks of the cuts, map().cut_by()'s ids indexing them,
+  // and the last block of the run.
+  const std::vector<BlockAt>& cut_blocks() const { return cut_blocks_; }
+  const BlockAt& last_block() const { return last_block_; }
 
 private:
   struct FixtureMap {
@@ -121,10 +141,10 @@ private:
   void check_fixtures(const machine::Move& m);
   void check(const machine::Move& m, const CutReport& r);
   void find(const machine::Move& m, const char* code, std::string message, const Point3& at, double amount);
+  void check_reference(const machine::Move& m);
 
   ZMap map_;
   std::vector<FixtureMap> fixtures_;
-  std::vector<std::string> unchecked_fixtures_;
   MillTools& tools_;
   const VerifyTool* tool_ = nullptr;
   int tool_number_ = 0;
@@ -142,10 +162,15 @@ private:
   std::vector<Sweep> batch_;
   std::vector<std::size_t> body_probes_;  // a sweep of batch_ or kNoProbe, one a body of each queued move
   std::vector<CutReport> reports_;
+  std::vector<BlockAt> cut_blocks_;
+  BlockAt last_block_;
+  CutLog* log_ = nullptr;
+  std::optional<machine::AxisVector> origin_;  // the work zero in machine coordinates, to check the reference point
+  bool reference_found_ = false;               // NC2089 is said once
 };
 
 // The box a Z-map covers for a stock: a box itself, a cylinder's or tube's square about the Z axis.
-// None for an STL stock (not simulated yet).
+// None for an STL stock (its mesh's box, once read).
 std::optional<Box> zmap_box(const Stock& stock);
 
 }  // namespace ncurve::sim

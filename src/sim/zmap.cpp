@@ -1,5 +1,7 @@
 #include "sim/zmap.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,10 +18,9 @@ ZMap::ZMap(const Box& stock, double cell, int min_cells, double most_cells) : st
   }
   if (!(cell > 0) || !std::isfinite(cell)) throw std::invalid_argument("a Z-map's cell size must be positive");
   const double nx = std::ceil(lx / cell - 1e-9), ny = std::ceil(ly / cell - 1e-9);
-  if (nx * ny > most_cells)
-    throw std::invalid_argument("a Z-map of " + std::to_string(static_cast<long long>(nx)) + " x " +
-                                std::to_string(static_cast<long long>(ny)) + " cells is more than the " +
-                                std::to_string(static_cast<long long>(most_cells)) + " allowed");
+  if (!(nx * ny <= most_cells))  // (NaN too)
+    throw std::invalid_argument(
+        fmt::format("a Z-map of {:.0f} x {:.0f} cells is more than the {:.0f} allowed", nx, ny, most_cells));
   cell_ = cell;
   inv_cell_ = 1 / cell;
   nx_ = static_cast<int>(nx);
@@ -36,11 +37,21 @@ double ZMap::height_at(double x, double y) const {
   return height(static_cast<int>(fi), static_cast<int>(fj));
 }
 
-void ZMap::clear_cell(int i, int j) {
+void ZMap::clear_cell(int i, int j) { start_cell(i, j, stock_.min[2]); }
+
+void ZMap::start_cell(int i, int j, double height) {
   double& h = h_[static_cast<std::size_t>(j) * nx_ + i];
   const double top = stock_.max[2], bottom = stock_.min[2];
-  absent_ += (std::clamp(h, bottom, top) - bottom) * cell_ * cell_;
-  h = std::min(h, bottom);
+  const double to = height > bottom ? height : bottom;  // NaN: none
+  if (!(to < h)) return;
+  absent_ += (std::clamp(h, bottom, top) - std::clamp(to, bottom, top)) * cell_ * cell_;
+  h = to;
+}
+
+void ZMap::mark_cuts(std::uint32_t id) {
+  if (cut_by_.empty()) cut_by_.assign(h_.size(), kNoCut);
+  cut_id_ = id;
+  report_ = true;
 }
 
 double ZMap::volume_removed() const {
@@ -51,25 +62,25 @@ double ZMap::volume_removed() const {
 }
 
 void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
-  Pass p{0, ny_, report_, false, &before_, nullptr, {}};
+  Pass p{0, ny_, report_, false, &before_, nullptr, {}, cut_id_};
   pass_line(tool, a, b, p);
   last_ = p.out;
 }
 
 void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
-  Pass p{0, ny_, report_, false, &before_, nullptr, {}};
+  Pass p{0, ny_, report_, false, &before_, nullptr, {}, cut_id_};
   pass_arc(tool, arc, p);
   last_ = p.out;
 }
 
 CutReport ZMap::probe_line(const ToolShape& tool, const Point3& a, const Point3& b) {
-  Pass p{0, ny_, true, true, &before_, nullptr, {}};
+  Pass p{0, ny_, true, true, &before_, nullptr, {}, kNoCut};
   pass_line(tool, a, b, p);
   return p.out;
 }
 
 CutReport ZMap::probe_arc(const ToolShape& tool, const Arc& arc) {
-  Pass p{0, ny_, true, true, &before_, nullptr, {}};
+  Pass p{0, ny_, true, true, &before_, nullptr, {}, kNoCut};
   pass_arc(tool, arc, p);
   return p.out;
 }
@@ -78,8 +89,13 @@ void ZMap::before_row(const double* h, int n, Pass& p) const {
   if (p.report) p.before->assign(h, h + n);
 }
 
-void ZMap::after_row(double* h, int i0, int j, int n, Pass& p) const {
+void ZMap::after_row(double* h, int i0, int j, int n, Pass& p) {
   if (!p.report) return;
+  if (!p.probe && !cut_by_.empty()) {
+    std::uint32_t* by = cut_by_.data() + static_cast<std::size_t>(j) * nx_ + i0;
+    for (int k = 0; k < n; ++k)
+      if (h[k] < (*p.before)[k]) by[k] = p.mark;
+  }
   const double top = stock_.max[2], bottom = stock_.min[2];
   const std::vector<double>& before = *p.before;
   CutReport& out = p.out;

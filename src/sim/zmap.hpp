@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -48,11 +49,17 @@ struct Sweep {
   Point3 a{}, b{};
   std::optional<Arc> arc;
   bool probe = false;  // what it would remove, the map left as it is
+  std::uint32_t mark = UINT32_MAX;  // a cut's id in ZMap::cut_by(), where the map marks its cuts
 };
 
 // A height found by minimising along a move (where no closed form is used) is within this of
 // the exact lowest point, mm.
 inline constexpr double kLowestTolerance = 1e-9;
+
+// The lowest point of a tool's swept envelope on the vertical line through (x, y), the height a
+// cell centred there would take (kUnreached where the tool does not pass over it).
+double lowest_over(const ToolShape& tool, const Point3& a, const Point3& b, double x, double y);
+double lowest_over(const ToolShape& tool, const Arc& arc, double x, double y);
 
 class ZMap {
 public:
@@ -82,6 +89,9 @@ public:
   // A cell of the box where the stock has no material (outside a bar): down to the bottom before
   // any cut, and not counted as removed.
   void clear_cell(int i, int j);
+  // A cell of a fresh map whose material starts at `height` (an STL stock's surface; below the
+  // bottom or -infinity: none), not counted as removed.
+  void start_cell(int i, int j, double height);
   // Material removed, mm^3: each cell's column from the top down to its height (not below the bottom).
   double volume_removed() const;
 
@@ -94,6 +104,11 @@ public:
   // row it changes is kept for the comparison).
   void report_cuts(bool on) { report_ = on; }
   const CutReport& last_cut() const { return last_; }
+  // From now on each cut (not a probe) marks the cells it lowers with `id` (turns report_cuts on):
+  // cut_by() has, per cell, the id of the cut that last lowered it, kNoCut where none did.
+  static constexpr std::uint32_t kNoCut = UINT32_MAX;
+  void mark_cuts(std::uint32_t id);
+  std::span<const std::uint32_t> cut_by() const { return cut_by_; }
   // What a cut would remove, leaving the map as it is: where a body that must not cut (a holder,
   // a fixture's tool) would meet the material.
   CutReport probe_line(const ToolShape& tool, const Point3& a, const Point3& b);
@@ -127,6 +142,7 @@ private:
     std::vector<double>* before = nullptr;   // a row's heights before its kernel
     std::vector<double>* volumes = nullptr;  // where kept: each row's volume removed, in row order
     CutReport out;
+    std::uint32_t mark = kNoCut;  // where cut_by_ is kept: the id of the cells a cut lowers
   };
   void pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pass& p);
   void pass_arc(const ToolShape& tool, const Arc& arc, Pass& p);
@@ -144,7 +160,7 @@ private:
   }
   // Around a row's kernel: keep the cells' heights before it, then add what it removed.
   void before_row(const double* h, int n, Pass& p) const;
-  void after_row(double* h, int i0, int j, int n, Pass& p) const;
+  void after_row(double* h, int i0, int j, int n, Pass& p);
 
   Box stock_;
   double cell_ = 0, inv_cell_ = 0;
@@ -155,6 +171,8 @@ private:
   double absent_ = 0;  // the columns clear_cell emptied, mm^3
   CutReport last_;
   std::vector<double> before_;
+  std::vector<std::uint32_t> cut_by_;  // empty until mark_cuts
+  std::uint32_t cut_id_ = kNoCut;
 };
 
 }  // namespace ncurve::sim

@@ -87,7 +87,9 @@ void ZMap::cut_batch(std::span<const Sweep> sweeps, std::span<CutReport> reports
   base::for_each_on_cores(bands.size(), [&](std::size_t b) {
     std::vector<double> before;
     BandReports& out = said[b];
-    Pass p{bands[b][0], bands[b][1], report, false, &before, report ? &out.volumes : nullptr, {}};
+    // (the cells' heights before each row are kept to report, or to mark the cells a cut lowers)
+    Pass p{bands[b][0], bands[b][1], report || !cut_by_.empty(), false, &before, report ? &out.volumes : nullptr, {},
+           kNoCut};
     if (report) {
       out.deepest.assign(n, CutReport{});
       out.end.assign(n, 0);
@@ -96,6 +98,7 @@ void ZMap::cut_batch(std::span<const Sweep> sweeps, std::span<CutReport> reports
       const Sweep& s = sweeps[k];
       if (rows[k][0] < p.hi && rows[k][1] > p.lo) {
         p.probe = s.probe;
+        p.mark = s.mark;
         p.out = {};
         if (s.arc) pass_arc(s.tool, *s.arc, p);
         else pass_line(s.tool, s.a, s.b, p);

@@ -232,6 +232,36 @@ async function lonelyMove(page, motions, kind) {
       await plain.page.close();
     }
 
+    // a rapid as the machine moves it (non-linear positioning, the shipped mill: X and Y at 24 m/min, Z
+    // at 15): G00 from X0 Z20 to X60 Z2 reaches Z2 after 18 / 15000 min, at X28.8, then runs along Z2;
+    // the first rapid, from the power-on position X250 Y200 Z400, has a corner as each of two axes
+    // arrives. With linear positioning (No.1401#1 = 1) each is one straight segment.
+    {
+      const prog = path.join(out, 'browser_dogleg.nc');
+      fs.writeFileSync(prog, 'G90 G00 X0 Y0 Z20.\nG00 X60. Z2.\nM30\n');
+      for (const [linear, segs] of [[false, 3 + 2], [true, 1 + 1]]) {
+        const {html} = page_of(`browser_dogleg${linear ? '_linear' : ''}`, prog, linear ? ['--param', '1401#1=1'] : []);
+        const {page, errors} = await open(context, html);
+        const seg = await page.evaluate(() => window.ncurveBackplot.segments);
+        check(seg.rapid === segs, `dog-leg: the rapids drawn in ${seg.rapid} segments, ${segs} expected (linear ${linear})`);
+        await page.evaluate(() => window.ncurveBackplot.plot.setView('front'));
+        await page.evaluate(() => window.ncurveBackplot.plot.render());
+        // the strip along Z2 from X35 to X55 (dashed: some of it)
+        const a = await page.evaluate(() => window.ncurveBackplot.screenOfPoint([35, 0, 2]));
+        const b = await page.evaluate(() => window.ncurveBackplot.screenOfPoint([55, 0, 2]));
+        const png = decodePng(await page.screenshot({clip: {x: Math.min(a.x, b.x), y: a.y - 3, width: Math.abs(b.x - a.x), height: 7}}));
+        let orange = 0;  // the thin dashes blend with the white: reddish pixels
+        for (let i = 0; i < png.width * png.height; i++) {
+          const o = i * png.channels;
+          if (png.px[o] - png.px[o + 2] > 60) orange++;
+        }
+        check(linear ? orange === 0 : orange > 20, `dog-leg: the leg along Z2 drawn (${orange} orange px; linear ${linear})`);
+        if (!linear) await page.screenshot({path: path.join(out, 'browser_dogleg.png')});
+        check(errors.length === 0, `dog-leg: no script errors (${errors.join('; ')})`);
+        await page.close();
+      }
+    }
+
     // a lathe with a C axis: the header gives the extents in axis order (X, Z, C), not sorted
     {
       const prog = path.join(src, 'tests/programs/lathe/lt_drill_c_axis');

@@ -80,7 +80,8 @@ async function latheExample(context) {
       const a = sxy / sxx, b = my - a * mx;
       return {a, worst: Math.max(...xs.map((x, i) => Math.abs(a * x + b - ys[i])))};
     };
-    const straight = motions.map((m, i) => ({m, s: screen[i]})).filter((o) => o.m.start && o.m.kind !== 'arc');
+    // the feed lines (a rapid is drawn as the machine moves it, a dog-leg whose middle is a corner)
+    const straight = motions.map((m, i) => ({m, s: screen[i]})).filter((o) => o.m.start && o.m.kind === 'line');
     const mid = (o, k) => (o.m.start[k] + o.m.end[k]) / 2;
     const across = fit(straight.map((o) => mid(o, 'z')), straight.map((o) => o.s.x));
     const up = fit(straight.map((o) => mid(o, 'x') / 2), straight.map((o) => o.s.y));  // radius

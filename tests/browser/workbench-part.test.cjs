@@ -45,6 +45,31 @@ const {check, counts} = checker();
     check(P.volume > 60 && full.volume === 0, `at the end the groove is cut again (${P.volume} mm³)`);
     await page.evaluate(() => ncurveWorkbench.setTab('summary'));
 
+    // the design's curve: the spiral groove's walls measured (the chords' sagitta, 6.9 um, each way),
+    // beyond 5 um listed, the part coloured near its walls
+    runs = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('#design', 'spiral tol=0.005');
+    await page.dispatchEvent('#design', 'change');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.part && ncurveWorkbench.part.curve &&
+      ncurveWorkbench.part.moves === Infinity, runs);
+    P = await page.evaluate(() => ncurveWorkbench.part);
+    check(P.curve.design === 'groove' && P.curve.largest_gouge_mm > 0.0065 && P.curve.largest_gouge_mm < 0.008 &&
+          P.curve.largest_left_mm > 0.0065 && P.curve.largest_left_mm < 0.008,
+          `the walls against the spiral: ${JSON.stringify(P.curve).slice(0, 300)}`);
+    check(P.findings === 2, `beyond 5 um: a gouge and stock left listed (${P.findings})`);
+    check(P.deviated && P.deviated.within > 1000 && P.deviated.gouge > 0 && P.deviated.left > 0,
+          `the part coloured by the walls' errors: ${JSON.stringify(P.deviated)}`);
+    await page.evaluate(() => { ncurveWorkbench.plot.setView('top'); ncurveWorkbench.plot.render(); });
+    await page.screenshot({path: path.join(out, 'workbench-part-design.png')});
+    runs = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('#design', 'spiral pitch');
+    await page.dispatchEvent('#design', 'change');
+    await page.waitForFunction(() => /design: "pitch": write NAME=VALUE/.test(document.getElementById('status').textContent));
+    check(true, 'a bad design field is said in the status');
+    await page.fill('#design', '');
+    await page.dispatchEvent('#design', 'change');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.part && !ncurveWorkbench.part.curve, runs);
+
     // a rapid into the block: listed at its line; a click marks its place
     runs = await page.evaluate(() => ncurveWorkbench.runs);
     await page.fill('.wb-input', 'M03 S1000\nG90 G00 X0 Y0 Z5.\nG00 Z-1.\nG00 Z5.\nM30\n');

@@ -90,6 +90,16 @@ TEST(PartApi, BoundsAndBadSetups) {
   Answer bad = call({{"program", kProgram}, {"setup", "[stock]\nshape = \"ball\"\n"}, {"setup_name", "job.setup.toml"}});
   EXPECT_EQ(bad.status, 400);
   EXPECT_NE(bad.body.find("job.setup.toml:2:"), std::string::npos) << bad.body;
+  // an STL stock or fixture names a file on the server: a setup sent as text reads none, 400
+  for (const char* stl : {"[stock]\nshape = \"stl\"\nfile = \"/etc/passwd\"\n",
+                          "[[fixtures]]\nname = \"f\"\nshape = \"stl\"\nfile = \"/etc/passwd\"\n"}) {
+    Answer named = call({{"program", kProgram}, {"setup", stl}, {"setup_name", "job.setup.toml"}});
+    EXPECT_EQ(named.status, 400);
+    EXPECT_NE(named.body.find("job.setup.toml: error: an STL stock or fixture names a file, and a setup sent as text "
+                              "reads none"),
+              std::string::npos)
+        << named.body;
+  }
   // "cells": the shorter side in so many cells (a debugger's step asks 400); a bad count is a 400
   const json coarse = run({{"program", kProgram}, {"setup", kSetup}, {"cells", 100}});
   EXPECT_EQ(coarse["summary"]["verify"]["zmap"]["cells"], json::array({100, 100}));
@@ -99,6 +109,47 @@ TEST(PartApi, BoundsAndBadSetups) {
   const json plain = run({{"program", kProgram}});
   EXPECT_FALSE(plain.contains("part"));
   EXPECT_FALSE(plain["summary"].contains("verify"));
+}
+
+}  // namespace
+}  // namespace ncurve::serve
+
+namespace ncurve::serve {
+namespace {
+
+// "curve": the slot's walls (away from the rapid's hole) against a line 0.02 beside its path (+Y):
+// the +Y wall 0.02 short of the design, the -Y one 0.02 beyond it; the part's "deviation" has each
+// wall point for the page
+TEST(PartApi, CurveMeasuresTheWallsAndColoursThePart) {
+  const json r = run({{"program", kProgram}, {"setup", kSetup}, {"resolution", 0.1}, {"tol", 0.01},
+                      {"curve", {{"name", "expr"}, {"x", "t"}, {"y", "0.02"}, {"t", "-9:-6"}}}});
+  const json& c = r["summary"]["verify"]["curve"];
+  EXPECT_EQ(c["design"], "groove");
+  EXPECT_NEAR(c["largest_gouge_mm"].get<double>(), 0.02, 1e-6);
+  EXPECT_NEAR(c["largest_left_mm"].get<double>(), 0.02, 1e-6);
+  // with the verifier's: the rapid into the block (line 7), then the walls' two at the slot's cut (line 4)
+  const json& found = r["summary"]["verify"]["findings"];
+  ASSERT_EQ(found.size(), 3u);
+  EXPECT_EQ(found[1]["code"], "NC2088");  // the +Y wall, measured first
+  EXPECT_EQ(found[1]["line"], 4);
+  EXPECT_EQ(found[2]["code"], "NC2087");
+  bool listed = false;
+  for (const json& d : r["diagnostics"]) listed |= d["code"] == "NC2087" && d["line"] == 4;
+  EXPECT_TRUE(listed);
+  EXPECT_FALSE(c.contains("findings"));  // listed once, among the verifier's
+  const json& dev = r["part"]["deviation"];
+  EXPECT_EQ(dev["tol"], 0.01);
+  // base64 of float32 X Y error: 4 characters for 3 bytes, 12 bytes a point
+  EXPECT_EQ(dev["points"].get<std::string>().size(), c["points"].get<std::size_t>() * 12 / 3 * 4);
+  // a rapid of two axes at one rate: its corner where the shorter one arrives (X-10 Y0 Z5 -> X0 Y10:
+  // both 10 long, no corner), and "corners" is there
+  EXPECT_TRUE(r["moves"].contains("corners"));
+
+  EXPECT_EQ(call({{"program", kProgram}, {"curve", {{"name", "nosuch"}}}}).status, 400);
+  EXPECT_EQ(call({{"program", kProgram}, {"curve", "spiral"}}).status, 400);
+  EXPECT_EQ(call({{"program", kProgram}, {"curve", {{"name", "spiral"}, {"params", {{"pitch", "x"}}}}}}).status, 400);
+  EXPECT_EQ(call({{"program", kProgram}, {"curve", {{"name", "spiral"}}}, {"wall", "side"}}).status, 400);
+  EXPECT_EQ(call({{"program", kProgram}, {"curve", {{"name", "spiral"}}}, {"tol", 0}}).status, 400);
 }
 
 }  // namespace

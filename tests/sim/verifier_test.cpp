@@ -344,3 +344,38 @@ TEST(Verifier, ProgramCutsWithTheToolInTheSpindle) {
   const double exact = 60 * 10 * 3 + std::numbers::pi * 25 * 3;
   EXPECT_GT(map.volume_removed(), exact);
 }
+
+// NC2089: reference position 1 (machine zero in the profile) in the work coordinates the setup's
+// work zero gives: 5 mm into the block when the work zero is 5 mm above machine zero; at the top
+// face or far above it, clean.
+TEST(Verifier, ReferencePointInsideTheStockWarnsOnce) {
+  const auto ran = test::run("T1 M06\nM03 S1000\nG90 G00 X0 Y0 Z5.\nG00 X10.\nM30\n", test::calculator_mill());
+  const sim::SetupFile setup = sim::parse_setup(kSetup, "s.toml");
+  machine::MachineProfile profile = test::calculator_mill();
+  profile.reference_points[0] = {};
+  auto found = [&](double origin_z) {
+    sim::MillTools tools(setup.tools, profile);
+    sim::VerifyOptions o;
+    o.cell = 0.5;
+    o.profile = &profile;
+    sim::Verifier v(*setup.stock, tools, std::nullopt, o, setup.fixtures);
+    machine::Setup s;
+    s.origin[0] = -10;
+    s.origin[2] = origin_z;
+    v.on_setup(s);
+    for (const auto& m : ran.moves) v.on_move(m);
+    v.on_setup(s);  // said once, not again at the next work zero
+    for (const auto& m : ran.moves) v.on_move(m);
+    std::vector<sim::Finding> out;
+    for (const auto& f : v.findings())
+      if (f.diagnostic.code == "NC2089") out.push_back(f);
+    return out;
+  };
+  const auto inside = found(5);
+  ASSERT_EQ(inside.size(), 1u);
+  EXPECT_DOUBLE_EQ(inside[0].amount, 5.0);
+  EXPECT_EQ(inside[0].at, (std::array<double, 3>{10, 0, -5}));
+  EXPECT_EQ(inside[0].diagnostic.span.line, 3u);  // the first motion after the work zero is set
+  EXPECT_TRUE(found(0).empty());     // at the top face
+  EXPECT_TRUE(found(-400).empty());  // high above, as a machine's reference point is
+}

@@ -1,9 +1,11 @@
 // ZMap::cut_batch against the same sweeps cut and probed one after another (cut_line, cut_arc,
 // probe_line, probe_arc): random lines, ramps, plunges, arcs and helices of every tool shape, the
-// map equal to the bit and every report equal.
+// map equal to the bit, the cut that last lowered each cell the same, and every report equal.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numbers>
 #include <random>
@@ -32,7 +34,7 @@ ToolShape random_tool(std::mt19937& rng) {
 }
 
 // Lines (level, ramps, plunges) and arcs (level, helices of up to two turns), some reaching past the
-// map; a quarter of them probes.
+// map; a quarter of them probes. Each is marked with its index.
 std::vector<Sweep> random_sweeps(std::size_t n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> x(-2, 32), y(-2, 22), z(-6, 1), unit(0, 1);
@@ -60,16 +62,18 @@ std::vector<Sweep> random_sweeps(std::size_t n, unsigned seed) {
       arc.z_end = kind < 0.85 ? arc.z_start : z(rng);
       s.arc = arc;
     }
+    s.mark = static_cast<std::uint32_t>(k);
     out.push_back(s);
   }
   return out;
 }
 
-// The sweeps one after another, and what each reported.
+// The sweeps one after another, each cut marking its cells with its index, and what each reported.
 std::vector<CutReport> one_by_one(ZMap& map, const std::vector<Sweep>& sweeps) {
   map.report_cuts(true);
   std::vector<CutReport> out;
   for (const Sweep& s : sweeps) {
+    map.mark_cuts(static_cast<std::uint32_t>(out.size()));
     if (s.probe) {
       out.push_back(s.arc ? map.probe_arc(s.tool, *s.arc) : map.probe_line(s.tool, s.a, s.b));
       continue;
@@ -103,12 +107,15 @@ TEST(ZMapBatch, EqualsTheSweepsOneByOne) {
   // one batch, and batches of uneven sizes
   for (std::size_t size : {sweeps.size(), std::size_t{1}, std::size_t{7}, std::size_t{150}}) {
     ZMap map = stock();
+    map.mark_cuts(ZMap::kNoCut);  // each sweep marks the cells it lowers with its own
     std::vector<CutReport> got(sweeps.size());
     for (std::size_t k = 0; k < sweeps.size(); k += size) {
       const std::size_t m = std::min(size, sweeps.size() - k);
       map.cut_batch(std::span(sweeps).subspan(k, m), std::span(got).subspan(k, m));
     }
     EXPECT_TRUE(same_heights(map, ref)) << "batches of " << size;
+    EXPECT_TRUE(std::equal(map.cut_by().begin(), map.cut_by().end(), ref.cut_by().begin(), ref.cut_by().end()))
+        << "batches of " << size;
     EXPECT_EQ(map.volume_removed(), ref.volume_removed());
     for (std::size_t k = 0; k < sweeps.size(); ++k) {
       SCOPED_TRACE(testing::Message() << "batches of " << size << ", sweep " << k);
