@@ -22,13 +22,13 @@ struct LineMove {
 // Flat end mill: the parameters where the cell is within R of the axis are the roots of a
 // quadratic, whose discriminant is a R^2 - (o x v)^2 (Lagrange's identity); z is linear in t, so
 // the lowest is at the interval's end in the falling direction.
-NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, double oy, double step,
-                                   const LineMove& m) {
+NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, double oy,
+                                   const double* __restrict steps, const LineMove& m) {
   const double vx = m.vx, vy = m.vy, az = m.az, dz = m.dz, inv_a = 1 / m.a;
   const double ar2 = m.a * m.r * m.r, vyoy = vy * oy, vxoy = vx * oy;
   const bool falling = dz < 0;
   for (int k = 0; k < n; ++k) {
-    const double ox = ox0 + k * step;
+    const double ox = ox0 + steps[k];
     const double ov = ox * vx + vyoy, cr = vxoy - vy * ox;
     const double disc = ar2 - cr * cr;
     const double sq = std::sqrt(std::max(disc, 0.0));
@@ -43,13 +43,13 @@ NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, doub
 // capsule on the vertical line is where an upward ray enters it (the infinite cylinder about the
 // axis if it enters within the segment, else the sphere at the end it entered beyond). The ray
 // meets the cylinder where disc = |ba|^2 (a R^2 - (o x v)^2) >= 0 (Lagrange's identity).
-NCURVE_VECTOR_CLONES void ball_row(double* __restrict h, int n, double ox0, double oy, double step,
-                                   const LineMove& m) {
+NCURVE_VECTOR_CLONES void ball_row(double* __restrict h, int n, double ox0, double oy,
+                                   const double* __restrict steps, const LineMove& m) {
   const double vx = m.vx, vy = m.vy, a = m.a, dz = m.dz, r2 = m.r * m.r;
   const double baba = a + dz * dz, inv_a = 1 / a, base = m.az + m.r, ar2 = a * r2;
   const double vyoy = vy * oy, vxoy = vx * oy, oy2 = oy * oy, eyb2 = (oy - vy) * (oy - vy);
   for (int k = 0; k < n; ++k) {
-    const double ox = ox0 + k * step;
+    const double ox = ox0 + steps[k];
     const double baoa = vx * ox + vyoy, cr = vxoy - vy * ox;
     const double disc = baba * (ar2 - cr * cr);
     const double t = (baoa * dz - std::sqrt(std::max(disc, 0.0))) * inv_a;
@@ -114,9 +114,10 @@ double lowest_over(const ToolShape& tool, const Point3& a, const Point3& b, doub
   m.a = m.vx * m.vx + m.vy * m.vy;
   const double ox = x - a[0], oy = y - a[1];
   double h = kUnreached;
+  const double no_step = 0;
   if (m.a <= 1e-24 * (1 + m.dz * m.dz)) plunge_row(&h, 1, ox, oy, 0, m, tool);
-  else if (tool.kind() == ToolShape::Kind::flat) flat_row(&h, 1, ox, oy, 0, m);
-  else if (tool.kind() == ToolShape::Kind::ball) ball_row(&h, 1, ox, oy, 0, m);
+  else if (tool.kind() == ToolShape::Kind::flat) flat_row(&h, 1, ox, oy, &no_step, m);
+  else if (tool.kind() == ToolShape::Kind::ball) ball_row(&h, 1, ox, oy, &no_step, m);
   else if (m.dz == 0) level_row(&h, 1, ox, oy, 0, m, tool);
   else sloping_row(&h, 1, ox, oy, 0, m, tool);
   return h;
@@ -173,8 +174,8 @@ void ZMap::pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pa
     const double ox0 = cell_x(i0) - a[0], oy = y - a[1];
     before_row(hr, n, p);
     if (plunge) plunge_row(hr, n, ox0, oy, cell(), m, tool);
-    else if (tool.kind() == ToolShape::Kind::flat) flat_row(hr, n, ox0, oy, cell(), m);
-    else if (tool.kind() == ToolShape::Kind::ball) ball_row(hr, n, ox0, oy, cell(), m);
+    else if (tool.kind() == ToolShape::Kind::flat) flat_row(hr, n, ox0, oy, steps_.data(), m);
+    else if (tool.kind() == ToolShape::Kind::ball) ball_row(hr, n, ox0, oy, steps_.data(), m);
     else if (m.dz == 0) level_row(hr, n, ox0, oy, cell(), m, tool);
     else sloping_row(hr, n, ox0, oy, cell(), m, tool);
     after_row(hr, i0, j, n, p);

@@ -29,6 +29,8 @@ ZMap::ZMap(const Box& stock, double cell, int min_cells, double most_cells) : st
   x0_ = stock.min[0] - (nx_ * cell - lx) / 2;
   y0_ = stock.min[1] - (ny_ * cell - ly) / 2;
   h_.assign(static_cast<std::size_t>(nx_) * ny_, stock.max[2]);
+  steps_.resize(static_cast<std::size_t>(nx_));
+  for (int k = 0; k < nx_; ++k) steps_[k] = k * cell_;
 }
 
 double ZMap::height_at(double x, double y) const {

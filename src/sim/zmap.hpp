@@ -149,10 +149,10 @@ private:
   // The rows j0..j1-1 a pass visits.
   void line_rows(const ToolShape& tool, const Point3& a, const Point3& b, int& j0, int& j1) const;
   void arc_rows(const ToolShape& tool, const Arc& arc, int& j0, int& j1) const;
-  // Cells i0..i1-1 widened, within the row, to a whole number of the vector kernels' steps (two
-  // vectors of eight cells, as the compiler unrolls them): no scalar remainder is run, and a cell
-  // added beyond the reach is left as it is.
-  static constexpr int kVectorCells = 16;
+  // Cells i0..i1-1 widened, within the row, to a whole number of the vector kernels' steps (a
+  // vector of eight cells): no scalar remainder is run, and a cell added beyond the reach is left
+  // as it is.
+  static constexpr int kVectorCells = 8;
   void whole_vectors(int& i0, int& i1) const {
     const int n = (i1 - i0 + kVectorCells - 1) / kVectorCells * kVectorCells;
     i1 = std::min(nx_, i0 + n);
@@ -164,6 +164,7 @@ private:
 
   Box stock_;
   double cell_ = 0, inv_cell_ = 0;
+  std::vector<double> steps_;  // k * cell for the cells of a row: the line kernels' offsets (no integer in their loops)
   int nx_ = 0, ny_ = 0;
   double x0_ = 0, y0_ = 0;
   std::vector<double> h_;
