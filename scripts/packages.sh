@@ -2,7 +2,7 @@
 # libjs-three: three.js, compiled into the page of `run --html`; libpolyclipping-dev: Clipper, the lathe's
 # half-section (src/sim/lathe_section.cpp)
 tool_packages=(cmake ninja-build g++ pkg-config libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-               libeigen3-dev libjs-three libcpp-httplib-dev libpolyclipping-dev)
+               libeigen3-dev libjs-three libcpp-httplib-dev libpolyclipping-dev zlib1g-dev)
 # linuxcnc-uspace: its rs274 interpreter is the second implementation the compensation is compared with
 # chromium: the browser the pages are tested in (tests/browser, with playwright-core from npm)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev python3 linuxcnc-uspace chromium)

@@ -27,7 +27,7 @@ file(WRITE ${OUT}/ellipse-pocket.setup.toml "tool_in_spindle = 1\n[stock]\nshape
 set(pocket ${NCURVE} run ${OUT}/ellipse-pocket.nc --setup ${OUT}/ellipse-pocket.setup.toml --curve ellipse --a 20 --b 12)
 run_expect(0 "D equal to the radius" ${pocket} --set "#9=3")
 expect_text("${out}" "(edge: the part's wall on the curve)" "G41: the curve is the edge")
-expect_text("${out}" "; 0 findings" "within 0.01")
+expect_text("${out}" "; findings 0" "within 0.01")
 run_expect(0 "D 0.02 under the radius" ${pocket} --set "#9=2.98")
 if(NOT out MATCHES "warning: NC2087 the cut goes 0\\.02[0-3][0-9] mm beyond the design's wall")
   message(SEND_ERROR "D 2.98: no gouge of 0.020..0.024 in:\n${out}")

@@ -122,3 +122,12 @@ run_expect(0 "helicoid --plot" ${NCURVE} helicoid --example seed004 --csv -o ${O
 check_plot(${OUT}/plot_rotor.svg "helicoid --plot")
 expect_text("${report}" "text label-u: psi, degrees" "helicoid plot axes")
 expect_text("${report}" "text label-v: error, µm" "helicoid plot axes")
+
+# run --setup --plot: the cut part under the path, a picture from above and outlines from the
+# front and side (class "part"), none in the isometric view
+run_expect(0 "run --setup --plot" ${NCURVE} run ${SRC}/examples/spiral.nc --setup ${SRC}/examples/spiral.setup.toml
+           --plot ${OUT}/plot_part.svg)
+check_plot(${OUT}/plot_part.svg "run --setup --plot")
+expect_text("${report}" "part=3" "the part in three views")
+file(READ ${OUT}/plot_part.svg svg)
+expect_text("${svg}" "href=\"data:image/png;base64,iVBORw0KGgo" "a PNG picture from above")

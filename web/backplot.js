@@ -2,7 +2,7 @@
 // move), orbit / pan / zoom, standard views, axes with ticks (backplot-axes.js), hover and click on a move. Used by
 // the page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js,
 // OrbitControls (Debian's libjs-three, release 111), backplot-geometry.js and backplot-axes.js
-// loaded first.
+// loaded first, and backplot-part.js for setPart.
 //
 //   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
 //   const plot = NcurveBackplot.create(container, moves, {onHover(i) {}, onClick(i) {}});
@@ -73,96 +73,6 @@
   }
 
 
-  // The cut part of `run --verify --html`: a grid of heights (base64 float32, row by row).
-  // With `deviation` ({tol, points: X Y error per wall point measured against the design}), the part
-  // is coloured by it near its walls.
-  function decodePart(d) {
-    return {nx: d.nx, ny: d.ny, x0: d.x0, y0: d.y0, dx: d.dx, dy: d.dy, bottom: d.bottom, top: d.top,
-            heights: new Float32Array(bytes(d.heights)),
-            deviation: d.deviation ? {tol: d.deviation.tol, points: new Float32Array(bytes(d.deviation.points))} : null};
-  }
-
-  // Per grid point, the largest error of a wall point within two cells of it (NaN where none).
-  function deviationOnGrid(part) {
-    const {nx, ny, x0, y0, dx, dy} = part, pts = part.deviation.points;
-    const dev = new Float32Array(nx * ny).fill(NaN);
-    for (let k = 0; k + 2 < pts.length; k += 3) {
-      const ci = Math.round((pts[k] - x0) / dx), cj = Math.round((pts[k + 1] - y0) / dy), e = pts[k + 2];
-      for (let j = Math.max(cj - 2, 0); j <= Math.min(cj + 2, ny - 1); j++)
-        for (let i = Math.max(ci - 2, 0); i <= Math.min(ci + 2, nx - 1); i++) {
-          const q = j * nx + i;
-          if (!(Math.abs(dev[q]) >= Math.abs(e))) dev[q] = e;
-        }
-    }
-    return dev;
-  }
-  // within the tolerance green, beyond the design (a gouge) red, short of it (stock left) blue; the
-  // colour deepens up to twice the tolerance
-  const DEVIATION_COLOURS = {within: [0.26, 0.63, 0.28], gouge: [0.90, 0.22, 0.21], left: [0.12, 0.47, 0.90]};
-  function deviationColour(e, tol) {
-    const a = Math.abs(e);
-    if (a <= tol) return DEVIATION_COLOURS.within;
-    const c = e > 0 ? DEVIATION_COLOURS.gouge : DEVIATION_COLOURS.left, t = Math.min((a - tol) / tol, 1);
-    return [0.75 + (c[0] - 0.75) * (0.5 + t / 2), 0.75 + (c[1] - 0.75) * (0.5 + t / 2), 0.75 + (c[2] - 0.75) * (0.5 + t / 2)];
-  }
-
-  // The part as a mesh: its top surface on the grid and four walls down to the bottom, coloured
-  // by depth below the stock's top (light grey at the top, darker down to the deepest cut).
-  function partMesh(part, toWorld) {
-    const {nx, ny, x0, y0, dx, dy, bottom, top, heights} = part;
-    let deepest = top;
-    for (let k = 0; k < heights.length; k++) deepest = Math.min(deepest, heights[k]);
-    const depth = Math.max(top - deepest, 1e-9);
-    const pos = [], col = [], index = [];
-    const w = [0, 0, 0];
-    const dev = part.deviation ? deviationOnGrid(part) : null;
-    const vertex = (x, y, z, e) => {
-      toWorld([x, y, z], w);
-      pos.push(w[0], w[1], w[2]);
-      if (e === e && e !== undefined) {
-        col.push(...deviationColour(e, part.deviation.tol));
-      } else {
-        const t = Math.min(Math.max((top - z) / depth, 0), 1);
-        col.push(0.84 - 0.34 * t, 0.85 - 0.33 * t, 0.87 - 0.29 * t);
-      }
-      return pos.length / 3 - 1;
-    };
-    for (let j = 0; j < ny; j++)
-      for (let i = 0; i < nx; i++) vertex(x0 + i * dx, y0 + j * dy, heights[j * nx + i], dev ? dev[j * nx + i] : undefined);
-    for (let j = 0; j + 1 < ny; j++)
-      for (let i = 0; i + 1 < nx; i++) {
-        const a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
-        index.push(a, b, c, a, c, d);
-      }
-    // the walls: the boundary counter-clockwise from above, each point down to the bottom
-    const ring = [];
-    for (let i = 0; i < nx - 1; i++) ring.push([i, 0]);
-    for (let j = 0; j < ny - 1; j++) ring.push([nx - 1, j]);
-    for (let i = nx - 1; i > 0; i--) ring.push([i, ny - 1]);
-    for (let j = ny - 1; j > 0; j--) ring.push([0, j]);
-    const low = ring.map(([i, j]) => vertex(x0 + i * dx, y0 + j * dy, bottom));
-    ring.forEach(([i, j], k) => {
-      const [i2, j2] = ring[(k + 1) % ring.length];
-      const p = j * nx + i, q = j2 * nx + i2, lp = low[k], lq = low[(k + 1) % ring.length];
-      index.push(lp, lq, q, lp, q, p);
-    });
-    const g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(pos), 3));
-    g.setAttribute('color', new THREE.BufferAttribute(new Float32Array(col), 3));
-    g.setIndex(index);
-    g.computeVertexNormals();
-    // pushed back a little in depth, so that the moves on its surface are drawn over it
-    const m = new THREE.MeshLambertMaterial({vertexColors: THREE.VertexColors, side: THREE.DoubleSide,
-                                            polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1});
-    const mesh = new THREE.Mesh(g, m);
-    mesh.name = 'part';
-    if (dev) {
-      const tol = part.deviation.tol, deviated = {within: 0, gouge: 0, left: 0};
-      for (const e of dev) if (e === e) deviated[Math.abs(e) <= tol ? 'within' : e > 0 ? 'gouge' : 'left']++;
-      mesh.userData.deviated = deviated;
-    }
-    return mesh;
-  }
 
   function create(container, moves, options) {
     options = options || {};
@@ -537,8 +447,8 @@
           part.material.dispose();
           part = null;
         }
-        if (p && p.nx >= 2 && p.ny >= 2) {
-          part = partMesh(p, toWorld);
+        if (p && (p.lathe ? p.contours.length > 0 : p.nx >= 2 && p.ny >= 2)) {
+          part = global.NcurveBackplotPart.mesh(p, toWorld);
           scene.add(part);
           partLights.forEach((l) => scene.add(l));
           // the camera's depth range widened to hold the whole part, which may reach far past the path
@@ -624,6 +534,6 @@
     return api;
   }
 
-  global.NcurveBackplot = {decode, decodePart, create, KIND_NAMES, KIND_COLORS, DEVIATION_COLOURS,
-    niceStep: global.NcurveBackplotAxes.niceStep};
+  global.NcurveBackplot = {decode, decodePart: global.NcurveBackplotPart.decode, create, KIND_NAMES, KIND_COLORS,
+    DEVIATION_COLOURS: global.NcurveBackplotPart.DEVIATION_COLOURS, niceStep: global.NcurveBackplotAxes.niceStep};
 })(window);

@@ -145,10 +145,12 @@ int run_command(const app::RunArgs& a) {
   if (gcode) gcode->finish();
   if (verify) {
     verify->finish(result);
+    if (plot && verify->map()) plot->set_part(sim::part_grid(*verify->map()));
     if (html && verify->map()) {
       html->set_part(sim::part_grid(*verify->map()));
       if (verify->report().curve) html->set_deviation(report::deviation_json(*verify->report().curve));
     }
+    if (html && verify->section()) html->set_part(report::lathe_part(*verify->section()));
     try {
       verify->write_part(setup.inputs);
     } catch (const io::OutputError& e) {

@@ -229,11 +229,15 @@ void RunVerification::lathe(const machine::MachineProfile& profile, const machin
     return;
   }
   section_ = std::make_unique<sim::LatheSection>(*bar);
+  sim::LatheSinkOptions so;
+  so.profile = &profile;
+  so.fixtures = setup_.fixtures;
+  so.cut_moves = args_.cut_moves;
   section_sink_ = std::make_unique<sim::LatheSectionSink>(*section_, setup_.tools, profile.lathe_offsets,
-                                                          setup_.tool_in_spindle);
+                                                          setup_.tool_in_spindle, so);
   report_.section = section_.get();
   report_.section_sink = section_sink_.get();
-  for (const sim::Fixture& f : setup_.fixtures) report_.fixtures.push_back(f.name + ": not checked on a lathe yet");
+  report_.fixtures = section_sink_->fixtures_checked();
 }
 
 machine::MoveSink* RunVerification::sink() {

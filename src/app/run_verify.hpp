@@ -65,6 +65,8 @@ public:
   const sim::ZMap* map() const { return verifier_ ? &verifier_->map() : nullptr; }
   // The walls measured against --curve; null without one.
   const sim::WallReport* walls() const { return walls_ ? &*walls_ : nullptr; }
+  // The cut section of a lathe; null when nothing was verified or on a mill.
+  const sim::LatheSection* section() const { return section_.get(); }
 
 private:
   void measure_walls(machine::RunResult& result);

@@ -138,6 +138,7 @@ std::string BackplotData::json(bool inch) const {
     head["part"] = part_json(*part_);
     if (!deviation_.is_null()) head["part"]["deviation"] = deviation_;
   }
+  if (lathe_part_) head["part"] = lathe_part_json(*lathe_part_);
   if (alarm_) {
     nlohmann::json a;
     a["code"] = alarm_->code;

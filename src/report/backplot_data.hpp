@@ -16,6 +16,7 @@
 
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
+#include "report/lathe_part.hpp"
 #include "report/other_axes.hpp"
 #include "sim/part_stl.hpp"
 
@@ -39,6 +40,7 @@ public:
   std::string json(bool inch) const;
   // The cut part, drawn shaded under the path (run --verify).
   void set_part(sim::PartGrid part) { part_ = std::move(part); }
+  void set_part(LathePart part) { lathe_part_ = std::move(part); }  // a lathe's, revolved by the page
   // The part's walls against the design, coloured on it (report::deviation_json).
   void set_deviation(nlohmann::json deviation) { deviation_ = std::move(deviation); }
 
@@ -72,6 +74,7 @@ private:
   OtherAxes other_;
   std::array<std::vector<double>, 3> other_end_;
   std::optional<sim::PartGrid> part_;
+  std::optional<LathePart> lathe_part_;
   nlohmann::json deviation_;
 };
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "machine/move.hpp"
+#include "sim/part_stl.hpp"
 #include "nc/diagnostic.hpp"
 #include "report/other_axes.hpp"
 
@@ -37,6 +38,8 @@ public:
   void on_move(const machine::Move& m) override;
   void stopped(const nc::Diagnostic& alarm) override;
   std::string svg(const PathPlotOptions& options) const;
+  // The cut part (a mill's, run --verify), drawn under the path in the XY, XZ and YZ views.
+  void set_part(sim::PartGrid part) { part_ = std::move(part); }
 
   struct Element {
     machine::MoveKind kind;       // rapid, line or arc
@@ -72,6 +75,7 @@ private:
   std::optional<nc::Diagnostic> alarm_;
   std::array<double, 3> alarm_at_{};
   OtherAxes other_;  // the A, B and C axes, not drawn
+  std::optional<sim::PartGrid> part_;
 };
 
 }  // namespace ncurve::report

@@ -103,7 +103,7 @@ std::string curve_text(const CurveCheck& c, int width) {
   if (w.gouge_at >= 0) out += line("beyond design", fmt::format("{:.4f} mm at {}", w.largest_gouge, wall_point_text(c, w.gouge_at)));
   if (w.left_at >= 0) out += line("short of it", fmt::format("{:.4f} mm at {}", w.largest_left, wall_point_text(c, w.left_at)));
   out += line("walls rms",
-              fmt::format("{:.4f} mm; {} points beyond the tolerance{}{}; {} findings", w.rms, w.beyond(c.tol),
+              fmt::format("{:.4f} mm; {} points beyond the tolerance{}{}; findings {}", w.rms, w.beyond(c.tol),
                           w.not_cut ? fmt::format("; {} curve points not cut", w.not_cut) : "",
                           w.no_design ? fmt::format("; {} sides where the curve turns tighter than the tool", w.no_design)
                                       : "",
@@ -179,8 +179,9 @@ std::string verify_text(const VerifyReport& r) {
     const auto& c = r.section_sink->counts();
     if (c.no_tool) out += fmt::format("  not cut        {} moves with no tool (before the first T code, or T0)\n", c.no_tool);
     if (c.not_zx_arc) out += fmt::format("  not cut        {} arcs outside G18\n", c.not_zx_arc);
+    if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
     const auto& found = r.section_sink->findings();
-    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material)\n",
+    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material, the holder in the bar, the tool in a fixture)\n",
                        found.size() + r.section_sink->findings_left_out(),
                        r.section_sink->findings_left_out() ? fmt::format(" ({} listed)", found.size()) : std::string());
     if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
@@ -203,14 +204,15 @@ std::string verify_text(const VerifyReport& r) {
   if (c.rotary)
     out += fmt::format("  not cut        {} moves turning a rotary axis (3 axes are simulated)\n", c.rotary);
   if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
-  const std::size_t walls = r.curve ? r.curve->findings.size() : 0;  // listed with the verifier's
-  out += fmt::format("  findings       {}{}\n", v.findings().size() + v.findings_left_out() + walls,
-                     v.findings_left_out() ? fmt::format(" ({} listed)", v.findings().size() + walls) : std::string());
+  // the walls' and the design's findings are listed with the verifier's
+  const std::size_t more = (r.curve ? r.curve->findings.size() : 0) + (r.design ? r.design->findings.size() : 0);
+  const std::size_t left_out = v.findings_left_out() + (r.design ? r.design->left_out : 0);
+  out += fmt::format("  findings       {}{}\n", v.findings().size() + more + left_out,
+                     left_out ? fmt::format(" ({} listed)", v.findings().size() + more) : std::string());
   if (r.curve) out += curve_text(*r.curve, 15);
   if (r.design) {
-    out += fmt::format("  design         {}, tol {:g} mm, exact to the cell ({:.4f} mm); findings {}{}\n", r.design_file,
-                       r.design->tol, map.cell(), r.design->findings.size() + r.design->left_out,
-                       r.design->left_out ? fmt::format(" ({} listed)", r.design->findings.size()) : std::string());
+    out += fmt::format("  design         {}, tol {:g} mm, exact to the cell ({:.4f} mm); findings {}\n", r.design_file,
+                       r.design->tol, map.cell(), r.design->findings.size() + r.design->left_out);
     out += fmt::format("  gouge          {}\n", extreme_text(r.design->gouge));
     out += fmt::format("  stock left     {}\n", extreme_text(r.design->stock_left));
   }
@@ -233,7 +235,7 @@ nlohmann::json verify_json(const VerifyReport& r) {
     j["volume_by_tool_mm3"] = by_tool_json(r.section_sink->volume_by_tool());
     const auto& c = r.section_sink->counts();
     j["moves_cut"] = c.cut;
-    j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}};
+    j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}, {"after", c.after}};
     j["findings"] = findings_json(r.section_sink->findings());
     j["findings_left_out"] = r.section_sink->findings_left_out();
     j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
@@ -254,7 +256,9 @@ nlohmann::json verify_json(const VerifyReport& r) {
   j["findings"] = findings_json(v.findings());
   if (r.curve)
     for (const nlohmann::json& f : findings_json(r.curve->findings)) j["findings"].push_back(f);
-  j["findings_left_out"] = v.findings_left_out();
+  if (r.design)
+    for (const nlohmann::json& f : findings_json(r.design->findings)) j["findings"].push_back(f);
+  j["findings_left_out"] = v.findings_left_out() + (r.design ? r.design->left_out : 0);
   j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
   if (r.curve) j["curve"] = curve_json(*r.curve);
   if (r.design)
@@ -263,8 +267,7 @@ nlohmann::json verify_json(const VerifyReport& r) {
                    {"cell_mm", map.cell()},
                    {"gouge", extreme_json(r.design->gouge)},
                    {"stock_left", extreme_json(r.design->stock_left)},
-                   {"findings", findings_json(r.design->findings)},
-                   {"findings_left_out", r.design->left_out}};
+                   {"findings", r.design->findings.size() + r.design->left_out}};
   return j;
 }
 

@@ -179,6 +179,8 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
     if (verify->report().curve) part["deviation"] = report::deviation_json(*verify->report().curve);
     fmt::format_to(it, ",\"part\":{}", part.dump());
   }
+  if (verify && verify->section())
+    fmt::format_to(it, ",\"part\":{}", report::lathe_part_json(report::lathe_part(*verify->section())).dump());
   b.append(std::string_view(",\"files\":["));
   for (std::size_t i = 0; i < files.names().size(); ++i) {
     if (i) b.push_back(',');

@@ -129,7 +129,72 @@ struct LatheSection::State {
   bool empty = true;
   V2 lo{}, hi{};  // the stock's box, mm
   double area0 = 0, moment0 = 0;
+
+  // The region the outline sweeps moving from a to b (its mirror image across the axis with it where
+  // it crosses below), clipped to where it can reach the stock's box; none beyond.
+  Paths sweep(const ToolOutline& tool, V2 a, V2 b) const {
+    if (empty || tool.empty() || !finite(a) || !finite(b)) return {};
+    V2 tlo = tool.points[0], thi = tool.points[0];
+    for (const V2& q : tool.points) {
+      tlo = {std::min(tlo.x, q.x), std::min(tlo.y, q.y)};
+      thi = {std::max(thi.x, q.x), std::max(thi.y, q.y)};
+    }
+    const double margin = kSectionUnit;
+    const V2 l{lo.x - thi.x - margin, -hi.y - thi.y - margin}, h{hi.x - tlo.x + margin, hi.y - tlo.y + margin};
+    if (!clip_segment(a, b, l, h)) return {};
+    Path points;
+    points.reserve(2 * tool.points.size());
+    for (const V2& q : tool.points) {
+      points.push_back(section_point(a.x + q.x, a.y + q.y));
+      points.push_back(section_point(b.x + q.x, b.y + q.y));
+    }
+    Path hull = convex_hull(points);
+    if (hull.empty()) return {};
+    cInt low = hull[0].X;
+    for (const IntPoint& p : hull) low = std::min(low, p.X);
+    if (low >= 0) return {std::move(hull)};
+    // the part turns: the tool cuts at |X| on the far side of the axis too
+    Path mirror(hull.rbegin(), hull.rend());
+    for (IntPoint& p : mirror) p.X = -p.X;
+    return {std::move(hull), std::move(mirror)};
+  }
 };
+
+namespace {
+
+// The chords of an arc from a to b about c through `sweep`, its radius going from |a - c| to |b - c|
+// in proportion to the angle, each at most kChordError from it: f(from, to) for each.
+template <class F>
+void for_each_chord(V2 a, V2 b, V2 c, double sweep, F f) {
+  const double r0 = geom::norm(a - c), r1 = geom::norm(b - c);
+  const double a0 = std::atan2(a.y - c.y, a.x - c.x);
+  const int n = arc_chords(std::max(r0, r1), std::fabs(sweep));
+  V2 p = a;
+  for (int k = 1; k <= n; ++k) {
+    const double t = static_cast<double>(k) / n, angle = a0 + sweep * t, r = r0 + (r1 - r0) * t;
+    const V2 q = k == n ? b : c + r * V2{std::cos(angle), std::sin(angle)};
+    f(p, q);
+    p = q;
+  }
+}
+
+struct IntBox {
+  IntPoint lo{0, 0}, hi{-1, -1};
+  bool empty() const { return lo.X > hi.X; }
+  void add(const Paths& ps) {
+    for (const Path& p : ps)
+      for (const IntPoint& q : p) {
+        if (empty()) lo = hi = q;
+        lo = {std::min(lo.X, q.X), std::min(lo.Y, q.Y)};
+        hi = {std::max(hi.X, q.X), std::max(hi.Y, q.Y)};
+      }
+  }
+  bool meets(const IntBox& o) const {
+    return !empty() && !o.empty() && lo.X <= o.hi.X && o.lo.X <= hi.X && lo.Y <= o.hi.Y && o.lo.Y <= hi.Y;
+  }
+};
+
+}  // namespace
 
 LatheSection::LatheSection(const Cylinder& stock, int batch) : stock_(stock), s_(std::make_unique<State>()) {
   State& s = *s_;
@@ -167,49 +232,71 @@ bool LatheSection::cut(const ToolOutline& tool, const machine::Move& m) {
 
 void LatheSection::cut_line(const ToolOutline& tool, V2 a, V2 b) {
   State& s = *s_;
-  if (s.empty || tool.empty() || !finite(a) || !finite(b)) return;
-  // where the programmed point must be for the tool (or its mirror image across the axis) to reach
-  // the stock's box
-  V2 tlo = tool.points[0], thi = tool.points[0];
-  for (const V2& q : tool.points) {
-    tlo = {std::min(tlo.x, q.x), std::min(tlo.y, q.y)};
-    thi = {std::max(thi.x, q.x), std::max(thi.y, q.y)};
-  }
-  const double margin = kSectionUnit;
-  const V2 lo{s.lo.x - thi.x - margin, -s.hi.y - thi.y - margin}, hi{s.hi.x - tlo.x + margin, s.hi.y - tlo.y + margin};
-  if (!clip_segment(a, b, lo, hi)) return;
-  Path points;
-  points.reserve(2 * tool.points.size());
-  for (const V2& q : tool.points) {
-    points.push_back(section_point(a.x + q.x, a.y + q.y));
-    points.push_back(section_point(b.x + q.x, b.y + q.y));
-  }
-  Path hull = convex_hull(points);
-  if (hull.empty()) return;
-  cInt low = hull[0].X;
-  for (const IntPoint& p : hull) low = std::min(low, p.X);
-  if (low < 0) {  // the part turns: the tool cuts at |X| on the far side of the axis too
-    Path mirror(hull.rbegin(), hull.rend());
-    for (IntPoint& p : mirror) p.X = -p.X;
-    s.add_sweep({std::move(hull), std::move(mirror)});
-  } else {
-    s.add_sweep({std::move(hull)});
-  }
+  Paths sweep = s.sweep(tool, a, b);
+  if (sweep.empty()) return;
+  s.add_sweep(std::move(sweep));
   if (s.pending_sweeps >= s.batch) flush();
 }
 
 void LatheSection::cut_arc(const ToolOutline& tool, V2 a, V2 b, V2 centre, double sweep) {
   if (s_->empty || tool.empty() || !finite(a) || !finite(b) || !finite(centre) || !std::isfinite(sweep)) return;
-  const double r0 = geom::norm(a - centre), r1 = geom::norm(b - centre);
-  const double a0 = std::atan2(a.y - centre.y, a.x - centre.x);
-  const int n = arc_chords(std::max(r0, r1), std::fabs(sweep));
-  V2 p = a;
-  for (int k = 1; k <= n; ++k) {
-    const double t = static_cast<double>(k) / n, angle = a0 + sweep * t, r = r0 + (r1 - r0) * t;
-    const V2 q = k == n ? b : centre + r * V2{std::cos(angle), std::sin(angle)};
-    cut_line(tool, p, q);
-    p = q;
+  for_each_chord(a, b, centre, sweep, [&](V2 p, V2 q) { cut_line(tool, p, q); });
+}
+
+LatheSection::Overlap LatheSection::overlap(const ToolOutline& tool, const machine::Move& m) const {
+  State& s = *s_;
+  if (!m.is_motion() || s.empty || tool.empty()) return {};
+  const V2 a{m.start[2], m.start[0]}, b{m.end[2], m.end[0]};
+  if (!finite(a) || !finite(b)) return {};
+  Paths region;
+  auto add = [&](V2 p, V2 q) {
+    for (Path& path : s.sweep(tool, p, q)) region.push_back(std::move(path));
+  };
+  if (m.kind == machine::MoveKind::arc) {
+    const V2 c{m.center[2], m.center[0]};
+    if (m.plane != 18 || !finite(c) || !std::isfinite(m.sweep)) return {};
+    for_each_chord(a, b, c, m.sweep, add);
+  } else {
+    add(a, b);
   }
+  IntBox box;
+  box.add(region);
+  auto meet = [&]() {
+    IntBox section;
+    section.add(s.section);
+    Paths out;
+    if (!box.meets(section)) return out;
+    ClipperLib::Clipper c;
+    c.AddPaths(s.section, ClipperLib::ptSubject, true);
+    c.AddPaths(region, ClipperLib::ptClip, true);
+    c.Execute(ClipperLib::ctIntersection, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    return out;
+  };
+  Paths out = meet();
+  if (out.empty()) return {};
+  if (!s.pending.empty()) {
+    flush();
+    out = meet();
+  }
+  Overlap o;
+  double moment_z = 0, moment_x = 0;
+  for (const Path& p : out) {
+    o.area += path_area(p);
+    for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+      const IntPoint &u = p[i], &v = p[(i + 1) % n];
+      const double c = static_cast<double>(u.X * v.Y - v.X * u.Y);
+      moment_x += c * static_cast<double>(u.X + v.X);
+      moment_z += c * static_cast<double>(u.Y + v.Y);
+    }
+  }
+  IntBox ob;
+  ob.add(out);
+  if (ob.empty()) return {};
+  o.lo = {ob.lo.Y * kSectionUnit, ob.lo.X * kSectionUnit};
+  o.hi = {ob.hi.Y * kSectionUnit, ob.hi.X * kSectionUnit};
+  const double twice = 2 * o.area / (kSectionUnit * kSectionUnit);  // in units^2, x2
+  if (twice != 0) o.centroid = {moment_z / (3 * twice) * kSectionUnit, moment_x / (3 * twice) * kSectionUnit};
+  return o;
 }
 
 void LatheSection::flush() const {

@@ -48,6 +48,16 @@ public:
   void cut_line(const ToolOutline& tool, geom::V2 a, geom::V2 b);
   void cut_arc(const ToolOutline& tool, geom::V2 a, geom::V2 b, geom::V2 centre, double sweep);
 
+  // The material the tool's outline would sweep along the move, not cut: its area (mm^2), its box and
+  // its centroid (geom::V2{z, x}); none for a move that is not motion, an arc of another plane or a
+  // coordinate that is not finite. A region that misses the section as it stood at the last flush
+  // is answered without applying the cuts pending (the section only loses material).
+  struct Overlap {
+    double area = 0;
+    geom::V2 lo{}, hi{}, centroid{};
+  };
+  Overlap overlap(const ToolOutline& tool, const machine::Move& m) const;
+
   // Applies the cuts still pending. Every query below does it first.
   void flush() const;
 

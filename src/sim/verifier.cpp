@@ -191,11 +191,9 @@ void Verifier::check_reference(const machine::Move& m) {
   origin_.reset();
   const machine::AxisVector& ref = options_.profile->reference_points[0];
   const Point3 p{ref[0] - origin[0], ref[1] - origin[1], ref[2] - origin[2]};
-  const Box& b = map_.stock();
-  const double depth = b.max[2] - p[2];
-  if (p[0] < b.min[0] || p[0] > b.max[0] || p[1] < b.min[1] || p[1] > b.max[1] || p[2] < b.min[2] ||
-      !(depth > kFindingDepth))
-    return;
+  // the material over the point as the map holds it (an STL stock's top, no material outside a bar)
+  const double depth = map_.height_at(p[0], p[1]) - p[2];
+  if (p[2] < map_.stock().min[2] || !(depth > kFindingDepth)) return;
   find(m, "NC2089",
        fmt::format("the machine's reference position 1 is inside the stock in the work coordinates in force: "
                    "X{:.3f} Y{:.3f} Z{:.3f}, {:.3f} mm below the stock's top; G28 would drive the tool into the part "

@@ -232,6 +232,38 @@ async function lonelyMove(page, motions, kind) {
       await plain.page.close();
     }
 
+    // a lathe's part: the bar's half-section revolved about Z, drawn at its radius on both sides of
+    // the axis (D50 beyond the chuck jaw, where the program does not cut), nothing beyond it
+    {
+      const {html, summary} = page_of('browser_lathe_part', path.join(src, 'examples/lathe-mrc.nc'),
+                                      ['--machine', 'fanuc-lathe', '--setup', path.join(src, 'examples/lathe-mrc.setup.toml')]);
+      const {page, errors} = await open(context, html);
+      const part = await page.evaluate(() => window.ncurveBackplot.plot.state().part);
+      check(part > 0 && part % 192 === 0, `lathe part: its contours revolved in 96 steps (${part} triangles)`);
+      await page.evaluate(() => window.ncurveBackplot.plot.render());
+      const colour = async (p) => {
+        const at = await page.evaluate((p) => window.ncurveBackplot.screenOfPoint(p), p);
+        const png = decodePng(await page.screenshot({clip: {x: at.x - 1, y: at.y - 1, width: 3, height: 3}}));
+        return [0, 1, 2].map((k) => png.px[4 * png.channels + k]);
+      };
+      const apart = (a, b) => Math.abs(a[0] - b[0]) + Math.abs(a[1] - b[1]) + Math.abs(a[2] - b[2]);
+      // (the ZX view fits the path: the chuck's end of the bar, Z-70, is at the page's left, the axis
+      // low on it, so below the axis only a little of the part is in view)
+      const background = await colour([40, 0, -70]);
+      const inside = [await colour([24, 0, -70]), await colour([0, 0, -70]), await colour([-9, 0, -70])];
+      const outside = [await colour([26.5, 0, -70]), await colour([5, 0, 15])];
+      check(inside.every((c) => apart(c, background) > 60),
+            `lathe part: drawn within radius 25 on both sides of the axis (${JSON.stringify(inside)} against ${background})`);
+      check(outside.every((c) => apart(c, background) < 20),
+            `lathe part: nothing beyond radius 25 or before the face (${JSON.stringify(outside)})`);
+      await page.screenshot({path: path.join(out, 'browser_lathe_part.png')});
+      await page.evaluate(() => window.ncurveBackplot.plot.setView('iso'));
+      await page.evaluate(() => window.ncurveBackplot.plot.render());
+      await page.screenshot({path: path.join(out, 'browser_lathe_part_iso.png')});
+      check(errors.length === 0 && summary.verify.verified, `lathe part: no script errors (${errors.join('; ')})`);
+      await page.close();
+    }
+
     // a rapid as the machine moves it (non-linear positioning, the shipped mill: X and Y at 24 m/min, Z
     // at 15): G00 from X0 Z20 to X60 Z2 reaches Z2 after 18 / 15000 min, at X28.8, then runs along Z2;
     // the first rapid, from the power-on position X250 Y200 Z400, has a corner as each of two axes

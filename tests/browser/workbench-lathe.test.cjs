@@ -94,6 +94,21 @@ async function latheExample(context) {
     check(xName && /diameter/.test(xName.t) && zName && xName.y < zName.y && zName.x > xName.x,
           `the axes named: ${JSON.stringify(names.map((n) => n.t))}`);
 
+    // Part ticked: the bar of lathe-mrc.setup.toml (beside the program) cut and drawn revolved, the
+    // volume `run --setup` gives; unticked again for what follows
+    const verified = JSON.parse(run('--setup', path.join(src, 'examples/lathe-mrc.setup.toml'), '--json')).verify;
+    let partRuns = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.check('#part');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.part && ncurveWorkbench.part.moves === Infinity, partRuns);
+    const P = await page.evaluate(() => ncurveWorkbench.part);
+    check(P.triangles > 0 && P.triangles % 192 === 0 && Math.abs(P.volume - verified.volume_removed_mm3) < 1e-6 * verified.volume_removed_mm3 &&
+          P.findings === 0, `the lathe's part drawn revolved (${P.triangles} triangles), ${P.volume} mm³ removed as run says`);
+    await page.screenshot({path: path.join(out, 'workbench-lathe-part.png')});
+    partRuns = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.uncheck('#part');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), partRuns);
+    check(await page.evaluate(() => ncurveWorkbench.plot.state().part === 0), 'Part unticked: no part drawn');
+
     // a hovered move says where it ends as the program writes it: X a diameter, Z, no Y
     const target = await page.evaluate(() => {
       const B = ncurveWorkbench.plot, n = B.moves.count, r = B.renderer.domElement.getBoundingClientRect();

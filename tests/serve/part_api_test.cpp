@@ -4,7 +4,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <vector>
 #include <string>
 
 #include "serve/api.hpp"
@@ -109,6 +112,55 @@ TEST(PartApi, BoundsAndBadSetups) {
   const json plain = run({{"program", kProgram}});
   EXPECT_FALSE(plain.contains("part"));
   EXPECT_FALSE(plain["summary"].contains("verify"));
+}
+
+// base64 (RFC 4648) of float32, as the part's contours come
+std::vector<float> floats(const std::string& b64) {
+  static const std::string abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string bytes;
+  unsigned acc = 0;
+  int bits = 0;
+  for (char c : b64) {
+    const auto k = abc.find(c);
+    if (k == std::string::npos) break;  // '=' ends it
+    acc = (acc << 6) | static_cast<unsigned>(k);
+    bits += 6;
+    if (bits >= 8) bits -= 8, bytes.push_back(static_cast<char>((acc >> bits) & 0xff));
+  }
+  std::vector<float> out(bytes.size() / sizeof(float));
+  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(float));
+  return out;
+}
+
+// A lathe's part: a D50 bar faced 2 mm past its centre by a sharp tip-3 insert; the answer's part is
+// the half-section, the rectangle Z-100..-2 by radius 0..25 (uncut at a debugger's step 0: Z-100..0).
+TEST(PartApi, LathePartIsTheHalfSection) {
+  const char* setup = "[stock]\nshape = \"cylinder\"\ndiameter = 50\nlength = 100\n"
+                      "[tools.1]\nkind = \"insert\"\nnose_radius = 0\ntip = 3\n";
+  const char* program = "G21 G99\nT0101\nG00 X60. Z5.\nG00 X52. Z-2.\nG01 X-1. F0.2\nG00 Z5.\nM30\n";
+  const char* lathe = "[machine]\ntype = \"lathe\"\naxes = [\"X\", \"Z\"]\ndiameter_programming = true\n";
+  auto section = [](const json& part) {
+    EXPECT_TRUE(part["lathe"].get<bool>());
+    EXPECT_DOUBLE_EQ(part["radius"].get<double>(), 25);
+    EXPECT_EQ(part["contours"].size(), 1u);
+    return floats(part["contours"][0].get<std::string>());
+  };
+  auto corners = [](std::vector<float> c, float back, float face) {
+    std::vector<std::pair<float, float>> got, want{{back, 0}, {face, 0}, {face, 25}, {back, 25}};
+    for (std::size_t i = 0; i + 1 < c.size(); i += 2) got.push_back({c[i], c[i + 1]});
+    std::sort(got.begin(), got.end());
+    std::sort(want.begin(), want.end());
+    return got == want;
+  };
+  const json r = run({{"program", program}, {"machine", lathe}, {"setup", setup}, {"moves", false}});
+  const json& v = r["summary"]["verify"];
+  ASSERT_TRUE(v["verified"].get<bool>());
+  EXPECT_NEAR(v["volume_removed_mm3"].get<double>(), M_PI * 25 * 25 * 2, 1e-3);
+  EXPECT_TRUE(corners(section(r["part"]), -100, -2));
+  const json step = run({{"program", program}, {"machine", lathe}, {"setup", setup}, {"cut_moves", 0}});
+  EXPECT_EQ(step["summary"]["verify"]["volume_removed_mm3"], 0);
+  EXPECT_EQ(step["summary"]["verify"]["moves_not_cut"]["after"], 4);
+  EXPECT_TRUE(corners(section(step["part"]), -100, 0));
 }
 
 }  // namespace

@@ -378,4 +378,24 @@ TEST(Verifier, ReferencePointInsideTheStockWarnsOnce) {
   EXPECT_EQ(inside[0].diagnostic.span.line, 3u);  // the first motion after the work zero is set
   EXPECT_TRUE(found(0).empty());     // at the top face
   EXPECT_TRUE(found(-400).empty());  // high above, as a machine's reference point is
+
+  // a bar D40 30 long, face at Z0: the reference point 5 mm down at X19.75 Y19.75 is in the map's
+  // square but outside the bar (no material there); at X0 Y0 it is in the bar
+  sim::Cylinder bar;
+  bar.diameter = 40;
+  bar.length = 30;
+  auto in_bar = [&](double x, double y) {
+    sim::MillTools tools(setup.tools, profile);
+    sim::VerifyOptions o;
+    o.cell = 0.1;
+    o.profile = &profile;
+    sim::Verifier v(bar, tools, std::nullopt, o);
+    machine::Setup s;
+    s.origin = {-x, -y, 5};
+    v.on_setup(s);
+    for (const auto& m : ran.moves) v.on_move(m);
+    return !v.findings().empty() && v.findings()[0].diagnostic.code == "NC2089";
+  };
+  EXPECT_TRUE(in_bar(0, 0));
+  EXPECT_FALSE(in_bar(19.75, 19.75));
 }
