@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "base/parallel.hpp"
 #include "sim/zmap.hpp"
 
 using namespace ncurve::sim;
@@ -157,4 +158,19 @@ TEST(ZMapBatch, LastCutIsTheLastCutsReport) {
   // the probe 0.5 mm deep meets the stock's top beside the slot, the slot's floor nowhere
   EXPECT_NEAR(got[1].deepest, 0.5, 1e-12);
   EXPECT_EQ(map.height_at(7, 5), -1);
+}
+
+// A batch cut while the cores' pool is busy (here: from its own work items, two maps at once) runs
+// its bands on its own thread, to the same map.
+TEST(ZMapBatch, WithThePoolBusy) {
+  const std::vector<Sweep> sweeps = random_sweeps(150, 11);
+  ZMap ref = stock();
+  one_by_one(ref, sweeps);
+  std::vector<ZMap> maps(2, stock());
+  ncurve::base::for_each_on_cores(maps.size(), [&](std::size_t k) {
+    maps[k].mark_cuts(ZMap::kNoCut);
+    std::vector<CutReport> reports(sweeps.size());
+    maps[k].cut_batch(sweeps, reports);
+  });
+  for (const ZMap& map : maps) EXPECT_TRUE(same_heights(map, ref));
 }
