@@ -16,7 +16,7 @@ void add_commands(CLI::App& app, Commands& c) {
   app.require_subcommand(1);
   RunArgs& a = c.run;
   CLI::App* run = app.add_subcommand("run", "execute a part program as a FANUC control would and report the tool path");
-  add_run_inputs(run, a.in, true);
+  add_run_inputs(run, a.in, true, true);
   run->add_option("--format", a.format, "output: summary (default), jsonl, csv or gcode")
       ->check(CLI::IsMember({"summary", "jsonl", "csv", "gcode"}));
   run->add_option("--arc-tol", a.arc_tol, "csv: chord error allowed when arcs are written as points, mm")

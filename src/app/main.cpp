@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <new>
@@ -13,6 +14,7 @@
 #include "app/helicoid_command.hpp"
 #include "app/analyze_command.hpp"
 #include "app/run_html.hpp"
+#include "app/run_batch.hpp"
 #include "app/run_plot.hpp"
 #include "app/run_setup.hpp"
 #include "app/cli.hpp"
@@ -39,7 +41,63 @@ std::string version_text() {
                      dir ? *dir : std::string("not found beside the binary"));
 }
 
+// `ncurve run A.nc B.nc ...` or `ncurve run FOLDER`: the table of results.
+int batch_command(const app::RunArgs& a, const std::vector<std::string>& arguments) {
+  const char* single = !a.output.empty() && a.output != "-" ? "-o"
+                       : a.format != "summary"              ? "--format"
+                       : !a.plot.empty()                    ? "--plot"
+                       : !a.html.empty()                    ? "--html"
+                       : !a.dprnt.empty()                   ? "--dprnt"
+                       : a.verify.on()                      ? "--verify, --setup, --part or --curve"
+                                                            : nullptr;
+  if (single) {
+    std::cerr << "ncurve run: " << single
+              << " is for one program; with several (or a folder) each is run on its own and a table of the results "
+                 "is written (--json for scripts)\n";
+    return 2;
+  }
+  std::vector<std::string> programs;
+  try {
+    programs = app::batch_programs(arguments);
+  } catch (const std::exception& e) {
+    std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
+    return 2;
+  }
+  if (programs.empty()) {
+    std::cerr << "ncurve run: no program files in " << nc::escape_controls(arguments.front())
+              << " (.nc, .cnc, .tap, .txt, .ncc, .iso, .eia, .ptp, .prg, .gcode)\n";
+    return 2;
+  }
+  if (std::find(programs.begin(), programs.end(), "-") != programs.end()) {
+    std::cerr << "ncurve run: standard input (-) is one program; name the files of a table\n";
+    return 2;
+  }
+  const std::vector<app::BatchRow> rows = app::run_batch(a.in, programs);
+  std::cout << (a.json ? app::batch_json(rows) : app::batch_text(rows));
+  return app::batch_status(rows);
+}
+
 int run_command(const app::RunArgs& a) {
+  // more programs, or a folder: each run on its own, a table of the results
+  std::vector<std::string> programs{a.in.program};
+  std::error_code ec;
+  if (a.verify.curve.name.empty())
+    while (programs.size() <= a.verify.curve_extras.size() &&
+           std::filesystem::exists(a.verify.curve_extras[programs.size() - 1], ec) &&
+           a.verify.curve_extras[programs.size() - 1].rfind("-", 0) != 0)
+      programs.push_back(a.verify.curve_extras[programs.size() - 1]);
+  if (a.verify.curve.name.empty() && a.verify.curve_extras.size() >= programs.size()) {
+    const std::string& word = a.verify.curve_extras[programs.size() - 1];
+    if (word.rfind("-", 0) != 0) {  // a program after the first
+      std::cerr << "ncurve run: no file '" << nc::escape_controls(word) << "'\n";
+      return 2;
+    }
+    const auto near = word.rfind("--", 0) == 0 ? app::nearest_name(word.substr(2), a.verify.curve.options) : std::nullopt;
+    std::cerr << "ncurve run: unexpected argument '" << nc::escape_controls(word) << "'"
+              << (near ? " (did you mean --" + *near + "?)" : "") << "\n";
+    return 2;
+  }
+  if (programs.size() > 1 || std::filesystem::is_directory(a.in.program, ec)) return batch_command(a, programs);
   app::RunSetup setup;
   try {
     setup = app::prepare_run(a.in);
@@ -47,13 +105,6 @@ int run_command(const app::RunArgs& a) {
     throw;  // main() says what ran out
   } catch (const std::exception& e) {
     std::cerr << "ncurve run: " << nc::escape_controls(e.what()) << "\n";
-    return 2;
-  }
-  if (a.verify.curve.name.empty() && !a.verify.curve_extras.empty()) {
-    const std::string& word = a.verify.curve_extras.front();
-    const auto near = word.rfind("--", 0) == 0 ? app::nearest_name(word.substr(2), a.verify.curve.options) : std::nullopt;
-    std::cerr << "ncurve run: unexpected argument '" << nc::escape_controls(word) << "'"
-              << (near ? " (did you mean --" + *near + "?)" : "") << "\n";
     return 2;
   }
   const machine::MachineProfile& profile = setup.profile;

@@ -83,9 +83,12 @@ void apply_parameters(machine::MachineProfile& profile, const std::vector<std::s
   }
 }
 
-void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required) {
-  auto* program = cmd->add_option("program", in.program, "part program (.nc); - reads it from standard input")
-                      ->check(input_file());
+void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required, bool folder_ok) {
+  auto* program = cmd->add_option("program", in.program,
+                                  folder_ok ? "part program (.nc); - reads it from standard input; more programs, or a "
+                                              "folder of them: each run on its own, a table of the results"
+                                            : "part program (.nc); - reads it from standard input")
+                      ->check(folder_ok ? input_file() | CLI::ExistingDirectory : input_file());
   if (program_required) program->required();
   cmd->add_option("--machine", in.machine,
                   "machine profile (TOML file, or a shipped one by name: fanuc-mill, fanuc-lathe, ...); default: "

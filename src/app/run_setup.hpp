@@ -38,9 +38,9 @@ struct RunSetup {
   std::vector<std::string> inputs;  // every file read (program, macro folders' files, profile): never an output
 };
 
-// The options naming them: program (required unless program_required is false), --machine, --lib,
-// --param, --set, --max-steps, --max-seconds.
-void add_run_inputs(CLI::App* command, RunInputs& in, bool program_required);
+// The options naming them: program (required unless program_required is false; a folder too
+// where folder_ok), --machine, --lib, --param, --set, --max-steps, --max-seconds.
+void add_run_inputs(CLI::App* command, RunInputs& in, bool program_required, bool folder_ok = false);
 // Throws std::runtime_error with a message for the user (bad option, profile or file).
 RunSetup prepare_run(const RunInputs& in);
 // Applies "--param N=V" overrides to a profile.

@@ -274,7 +274,7 @@ void arc_pieces(const PathPlot::Element& e, double tol, F&& f) {
   for (int k = 0; k < 3; ++k) m.start[k] = e.a[k], m.end[k] = e.b[k];
   m.center = e.c;
   m.sweep = e.sweep;
-  arc_points(m, tol, [&](const machine::AxisVector& p) { f(Vec{p[0], p[1], p[2]}); });
+  machine::arc_points(m, tol, [&](const machine::AxisVector& p) { f(Vec{p[0], p[1], p[2]}); });
 }
 
 const char* css_class(MoveKind k) { return k == MoveKind::rapid ? "rapid" : k == MoveKind::arc ? "arc" : "feed"; }

@@ -84,7 +84,7 @@ void CsvWriter::on_move(const Move& m) {
     started_ = true;
   }
   if (m.kind == MoveKind::arc) {
-    arc_points(m, arc_tolerance_, [&](const machine::AxisVector& p) { row(m.line, kind, p, m.feed); });
+    machine::arc_points(m, arc_tolerance_, [&](const machine::AxisVector& p) { row(m.line, kind, p, m.feed); });
     return;
   }
   row(m.line, kind, m.end, m.feed);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "machine/arc_points.hpp"
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
 #include "machine/profile.hpp"
@@ -90,10 +91,4 @@ private:
   std::array<bool, machine::kAxes> at_known_{};  // false: at the move's start (no block yet, or a new origin)
 };
 
-// Points of an arc move (excluding its start), spaced so the chord error is within tolerance.
-template <class F>
-void arc_points(const machine::Move& m, double tolerance, F&& point);
-
 }  // namespace ncurve::report
-
-#include "report/arc_points.inl"

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The machine stage's private headers stay inside it: a file outside src/machine/ and
 tests/machine/ may include only the headers at the top of src/machine/ that make its API
-(interpreter.hpp, profile.hpp, library.hpp, move.hpp, observer.hpp, trace.hpp, macro_output.hpp),
+(interpreter.hpp, profile.hpp, library.hpp, move.hpp, observer.hpp, trace.hpp, macro_output.hpp,
+rapid_path.hpp, arc_points.hpp),
 never executor.hpp, the G-code table or a header of a sub-folder (frame/, cycles/, path/, profile/).
 
 usage: private_headers.py SOURCE_ROOT
@@ -12,7 +13,7 @@ import sys
 
 root = os.path.abspath(sys.argv[1])
 public = {"interpreter.hpp", "profile.hpp", "library.hpp", "move.hpp", "observer.hpp", "trace.hpp",
-          "macro_output.hpp", "rapid_path.hpp"}
+          "macro_output.hpp", "rapid_path.hpp", "arc_points.hpp"}
 inside = (os.path.join("src", "machine"), os.path.join("tests", "machine"))
 include = re.compile(r'^\s*#\s*include\s*"machine/([^"]+)"')
 found = []

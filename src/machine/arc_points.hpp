@@ -1,15 +1,19 @@
-// Sampling of arc moves, shared by writers that need points.
+// Points along an arc move, its chords within a tolerance: for the writers that need points (CSV,
+// the SVG plot) and for cutting an arc outside G17 as lines (the verifier).
 #pragma once
 #include <algorithm>
 #include <cmath>
 
-namespace ncurve::report {
+#include "machine/move.hpp"
+
+namespace ncurve::machine {
 
 // The most points an arc is written as (CSV): a bound on the output of one move.
 constexpr long kMostArcPoints = 100'000;
 
+// Points of an arc move (excluding its start), spaced so the chord error is within tolerance.
 template <class F>
-void arc_points(const machine::Move& m, double tolerance, F&& point) {
+void arc_points(const Move& m, double tolerance, F&& point) {
   int p = 0, q = 1, n = 2;
   if (m.plane == 18) { p = 2; q = 0; n = 1; }
   else if (m.plane == 19) { p = 1; q = 2; n = 0; }
@@ -32,8 +36,8 @@ void arc_points(const machine::Move& m, double tolerance, F&& point) {
     double t = static_cast<double>(i) / count;
     double a = a0 + m.sweep * t;
     double rr = rs + (re - rs) * t;  // FANUC moves on a spiral when the radii differ within No.3410
-    machine::AxisVector v = m.start;
-    for (int k = 0; k < machine::kAxes; ++k) v[k] = m.start[k] + (m.end[k] - m.start[k]) * t;
+    AxisVector v = m.start;
+    for (int k = 0; k < kAxes; ++k) v[k] = m.start[k] + (m.end[k] - m.start[k]) * t;
     v[p] = cp + rr * std::cos(a);
     v[q] = cq + rr * std::sin(a);
     (void)n;
@@ -41,4 +45,4 @@ void arc_points(const machine::Move& m, double tolerance, F&& point) {
   }
 }
 
-}  // namespace ncurve::report
+}  // namespace ncurve::machine
