@@ -44,11 +44,24 @@ std::vector<Point3> raster() {
   return p;
 }
 
-void cut(benchmark::State& state, const ToolShape& tool) {
+// The raster cut in batches of ZMap::kBatchSweeps, as the Verifier cuts (its rows shared between the
+// cores), or one move at a time (one core).
+void cut(benchmark::State& state, const ToolShape& tool, bool batched) {
   const auto points = raster();
+  std::vector<Sweep> batch;
   for (auto _ : state) {
     ZMap map(Box{{0, 0, -20}, {100, 100, 0}});
-    for (std::size_t k = 1; k < points.size(); ++k) map.cut_line(tool, points[k - 1], points[k]);
+    for (std::size_t k = 1; k < points.size(); ++k) {
+      if (!batched) {
+        map.cut_line(tool, points[k - 1], points[k]);
+        continue;
+      }
+      batch.push_back({tool, points[k - 1], points[k], std::nullopt, false});
+      if (batch.size() == ZMap::kBatchSweeps || k + 1 == points.size()) {
+        map.cut_batch(batch);
+        batch.clear();
+      }
+    }
     benchmark::DoNotOptimize(map.heights().data());
     state.counters["volume_mm3"] = map.volume_removed();
   }
@@ -151,8 +164,9 @@ BENCHMARK_CAPTURE(lathe_cut, G73G70Shaft, &kPatternRepeating)
 BENCHMARK_CAPTURE(lathe_cut, G71G70Shaft, &kStockRemoval)->Arg(LatheSection::kDefaultBatch)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(lathe_cut, Facing, &kFacing)->Arg(LatheSection::kDefaultBatch)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(lathe_mesh)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(cut, BallR3Raster, ToolShape::ball(3))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
-BENCHMARK_CAPTURE(cut, BallR1Raster, ToolShape::ball(1))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
-BENCHMARK_CAPTURE(cut, FlatR3Raster, ToolShape::flat(3))->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK_CAPTURE(cut, BallR3Raster, ToolShape::ball(3), true)->Unit(benchmark::kSecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK_CAPTURE(cut, BallR1Raster, ToolShape::ball(1), true)->Unit(benchmark::kSecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK_CAPTURE(cut, FlatR3Raster, ToolShape::flat(3), true)->Unit(benchmark::kSecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK_CAPTURE(cut, BallR3RasterOneCore, ToolShape::ball(3), false)->Unit(benchmark::kSecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
 
 BENCHMARK_MAIN();

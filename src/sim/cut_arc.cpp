@@ -210,26 +210,18 @@ ArcCell arc_cell(const Arc& arc, double x, double y) {
   return c;
 }
 
-}  // namespace
-
-double lowest_over(const ToolShape& tool, const Arc& arc, double x, double y) {
-  if (!(arc.radius >= 0) || !std::isfinite(arc.sweep)) return kUnreached;
-  return lowest_on_arc(arc_cell(arc, x, y), tool);
-}
-
-void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
-  last_ = {};
-  const double r = tool.radius(), rho = arc.radius, pad = 1e-9 * (1 + r + rho);
-  const double length = std::abs(arc.sweep), dir = arc.sweep < 0 ? -1.0 : 1.0;
-  if (!(rho >= 0) || !std::isfinite(length)) return;
-  // the box of the arc (its ends and the quadrant points it passes), widened by the tool
+// The box of the arc: its ends and the quadrant points it passes.
+struct ArcBox {
+  double x0, x1, y0, y1;
+};
+ArcBox arc_box(const Arc& arc) {
+  const double rho = arc.radius, length = std::abs(arc.sweep), dir = arc.sweep < 0 ? -1.0 : 1.0;
   auto at = [&](double s) {
     const double t = arc.start_angle + dir * s;
     return std::array<double, 2>{arc.cx + rho * std::cos(t), arc.cy + rho * std::sin(t)};
   };
   auto p0 = at(0), p1 = at(length);
-  double bx0 = std::min(p0[0], p1[0]), bx1 = std::max(p0[0], p1[0]);
-  double by0 = std::min(p0[1], p1[1]), by1 = std::max(p0[1], p1[1]);
+  ArcBox b{std::min(p0[0], p1[0]), std::max(p0[0], p1[0]), std::min(p0[1], p1[1]), std::max(p0[1], p1[1])};
   for (int q = 0; q < 4; ++q) {
     const double qa = q * std::numbers::pi / 2;
     // the move's s that reaches angle qa first
@@ -237,27 +229,53 @@ void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
     if (s < 0) s += kTwoPi;
     if (s <= length) {
       auto p = at(s);
-      bx0 = std::min(bx0, p[0]);
-      bx1 = std::max(bx1, p[0]);
-      by0 = std::min(by0, p[1]);
-      by1 = std::max(by1, p[1]);
+      b.x0 = std::min(b.x0, p[0]);
+      b.x1 = std::max(b.x1, p[0]);
+      b.y0 = std::min(b.y0, p[1]);
+      b.y1 = std::max(b.y1, p[1]);
     }
   }
+  return b;
+}
+
+bool arc_valid(const Arc& arc) { return arc.radius >= 0 && std::isfinite(std::abs(arc.sweep)); }
+
+}  // namespace
+
+double lowest_over(const ToolShape& tool, const Arc& arc, double x, double y) {
+  if (!arc_valid(arc)) return kUnreached;
+  return lowest_on_arc(arc_cell(arc, x, y), tool);
+}
+
+void ZMap::arc_rows(const ToolShape& tool, const Arc& arc, int& j0, int& j1) const {
+  j0 = j1 = 0;
+  if (!arc_valid(arc)) return;
+  const double r = tool.radius(), pad = 1e-9 * (1 + r + arc.radius);
+  const ArcBox box = arc_box(arc);
+  rows_of(box.y0 - r - pad, box.y1 + r + pad, j0, j1);
+}
+
+void ZMap::pass_arc(const ToolShape& tool, const Arc& arc, Pass& p) {
+  const double r = tool.radius(), rho = arc.radius, pad = 1e-9 * (1 + r + rho);
+  if (!arc_valid(arc)) return;
+  const ArcBox box = arc_box(arc);
   const double outer = rho + r;
   int j0, j1;
-  rows_of(by0 - r - pad, by1 + r + pad, j0, j1);
+  arc_rows(tool, arc, j0, j1);
+  j0 = std::max(j0, p.lo);
+  j1 = std::min(j1, p.hi);
   for (int j = j0; j < j1; ++j) {
     const double y = cell_y(j), dy = y - arc.cy;
     const double w2 = outer * outer - dy * dy;
     if (w2 < 0) continue;
     const double w = std::sqrt(w2);
     int i0, i1;
-    cells_of(std::max(bx0 - r, arc.cx - w) - pad, std::min(bx1 + r, arc.cx + w) + pad, i0, i1);
+    cells_of(std::max(box.x0 - r, arc.cx - w) - pad, std::min(box.x1 + r, arc.cx + w) + pad, i0, i1);
     if (i1 <= i0) continue;
     double* hr = row(j).data();
-    before_row(hr + i0, i1 - i0);
+    before_row(hr + i0, i1 - i0, p);
     for (int i = i0; i < i1; ++i) hr[i] = std::min(hr[i], lowest_on_arc(arc_cell(arc, cell_x(i), y), tool));
-    after_row(hr + i0, i0, j, i1 - i0);
+    after_row(hr + i0, i0, j, i1 - i0, p);
   }
 }
 

@@ -20,15 +20,17 @@ struct LineMove {
 };
 
 // Flat end mill: the parameters where the cell is within R of the axis are the roots of a
-// quadratic; z is linear in t, so the lowest is at the interval's end in the falling direction.
-NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, double oy, double step,
-                                   const LineMove& m) {
-  const double vx = m.vx, vy = m.vy, a = m.a, az = m.az, dz = m.dz, r2 = m.r * m.r, inv_a = 1 / m.a;
+// quadratic, whose discriminant is a R^2 - (o x v)^2 (Lagrange's identity); z is linear in t, so
+// the lowest is at the interval's end in the falling direction.
+NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, double oy,
+                                   const double* __restrict steps, const LineMove& m) {
+  const double vx = m.vx, vy = m.vy, az = m.az, dz = m.dz, inv_a = 1 / m.a;
+  const double ar2 = m.a * m.r * m.r, vyoy = vy * oy, vxoy = vx * oy;
   const bool falling = dz < 0;
   for (int k = 0; k < n; ++k) {
-    const double ox = ox0 + k * step;
-    const double ov = ox * vx + oy * vy, oo = ox * ox + oy * oy;
-    const double disc = ov * ov - a * (oo - r2);
+    const double ox = ox0 + steps[k];
+    const double ov = ox * vx + vyoy, cr = vxoy - vy * ox;
+    const double disc = ar2 - cr * cr;
     const double sq = std::sqrt(std::max(disc, 0.0));
     const double lo = std::max((ov - sq) * inv_a, 0.0), hi = std::min((ov + sq) * inv_a, 1.0);
     const double t = falling ? hi : lo;
@@ -39,23 +41,25 @@ NCURVE_VECTOR_CLONES void flat_row(double* __restrict h, int n, double ox0, doub
 
 // Ball end mill: the ball's centre sweeps a capsule of radius R; the lowest point of the
 // capsule on the vertical line is where an upward ray enters it (the infinite cylinder about the
-// axis if it enters within the segment, else the sphere at the end it entered beyond).
-NCURVE_VECTOR_CLONES void ball_row(double* __restrict h, int n, double ox0, double oy, double step,
-                                   const LineMove& m) {
+// axis if it enters within the segment, else the sphere at the end it entered beyond). The ray
+// meets the cylinder where disc = |ba|^2 (a R^2 - (o x v)^2) >= 0 (Lagrange's identity).
+NCURVE_VECTOR_CLONES void ball_row(double* __restrict h, int n, double ox0, double oy,
+                                   const double* __restrict steps, const LineMove& m) {
   const double vx = m.vx, vy = m.vy, a = m.a, dz = m.dz, r2 = m.r * m.r;
-  const double baba = a + dz * dz, inv_a = 1 / a, base = m.az + m.r, r2baba = r2 * baba;
+  const double baba = a + dz * dz, inv_a = 1 / a, base = m.az + m.r, ar2 = a * r2;
+  const double vyoy = vy * oy, vxoy = vx * oy, oy2 = oy * oy, eyb2 = (oy - vy) * (oy - vy);
   for (int k = 0; k < n; ++k) {
-    const double ox = ox0 + k * step;
-    const double baoa = vx * ox + vy * oy, oo = ox * ox + oy * oy;
-    const double b = -baoa * dz;
-    const double c = baba * oo - baoa * baoa - r2baba;
-    const double disc = b * b - a * c;
-    const double t = (-b - std::sqrt(std::max(disc, 0.0))) * inv_a;
+    const double ox = ox0 + steps[k];
+    const double baoa = vx * ox + vyoy, cr = vxoy - vy * ox;
+    const double disc = baba * (ar2 - cr * cr);
+    const double t = (baoa * dz - std::sqrt(std::max(disc, 0.0))) * inv_a;
     const double y = baoa + t * dz;
     const bool at_b = y >= baba;
-    const double ex = at_b ? ox - vx : ox, ey = at_b ? oy - vy : oy, ez = at_b ? dz : 0.0;
-    const double cap2 = r2 - ex * ex - ey * ey;
-    const double zcap = ez - std::sqrt(std::max(cap2, 0.0));
+    // the squared horizontal distance to the end sphere's centre
+    const double exb = ox - vx;
+    const double e2 = at_b ? exb * exb + eyb2 : ox * ox + oy2;
+    const double cap2 = r2 - e2;
+    const double zcap = (at_b ? dz : 0.0) - std::sqrt(std::max(cap2, 0.0));
     const bool side = (y > 0) & (y < baba);
     const bool reached = (disc >= 0) & (side | (cap2 >= 0));
     h[k] = std::min(h[k], reached ? base + (side ? t : zcap) : kUnreached);
@@ -110,16 +114,21 @@ double lowest_over(const ToolShape& tool, const Point3& a, const Point3& b, doub
   m.a = m.vx * m.vx + m.vy * m.vy;
   const double ox = x - a[0], oy = y - a[1];
   double h = kUnreached;
+  const double no_step = 0;
   if (m.a <= 1e-24 * (1 + m.dz * m.dz)) plunge_row(&h, 1, ox, oy, 0, m, tool);
-  else if (tool.kind() == ToolShape::Kind::flat) flat_row(&h, 1, ox, oy, 0, m);
-  else if (tool.kind() == ToolShape::Kind::ball) ball_row(&h, 1, ox, oy, 0, m);
+  else if (tool.kind() == ToolShape::Kind::flat) flat_row(&h, 1, ox, oy, &no_step, m);
+  else if (tool.kind() == ToolShape::Kind::ball) ball_row(&h, 1, ox, oy, &no_step, m);
   else if (m.dz == 0) level_row(&h, 1, ox, oy, 0, m, tool);
   else sloping_row(&h, 1, ox, oy, 0, m, tool);
   return h;
 }
 
-void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
-  last_ = {};
+void ZMap::line_rows(const ToolShape& tool, const Point3& a, const Point3& b, int& j0, int& j1) const {
+  const double r = tool.radius(), pad = 1e-9 * (1 + r);
+  rows_of(std::min(a[1], b[1]) - r - pad, std::max(a[1], b[1]) + r + pad, j0, j1);
+}
+
+void ZMap::pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pass& p) {
   LineMove m{a[0], a[1], a[2], b[0] - a[0], b[1] - a[1], b[2] - a[2], 0, tool.radius()};
   m.a = m.vx * m.vx + m.vy * m.vy;
   const double r = m.r, pad = 1e-9 * (1 + r);
@@ -127,8 +136,11 @@ void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
   // the outward normal of the stadium's sides
   const double nx = len > 0 ? -m.vy / len : 0, ny = len > 0 ? m.vx / len : 0;
   const bool plunge = m.a <= 1e-24 * (1 + m.dz * m.dz);
+  const double inv_vy = 1 / m.vy;  // used where vy != 0
   int j0, j1;
-  rows_of(std::min(a[1], b[1]) - r - pad, std::max(a[1], b[1]) + r + pad, j0, j1);
+  line_rows(tool, a, b, j0, j1);
+  j0 = std::max(j0, p.lo);
+  j1 = std::min(j1, p.hi);
   for (int j = j0; j < j1; ++j) {
     const double y = cell_y(j);
     // the row's chord of the stadium: of the end discs and the two sides
@@ -144,7 +156,7 @@ void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
     disc_chord(b[0], b[1]);
     if (!plunge && m.vy != 0) {
       for (double side : {-1.0, 1.0}) {
-        const double t = (y - a[1] - side * r * ny) / m.vy;
+        const double t = (y - a[1] - side * r * ny) * inv_vy;
         if (t >= 0 && t <= 1) {
           const double x = a[0] + side * r * nx + t * m.vx;
           xl = std::min(xl, x);
@@ -155,16 +167,18 @@ void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
     int i0, i1;
     cells_of(xl - pad, xh + pad, i0, i1);
     if (i1 <= i0) continue;
+    if (!plunge && (tool.kind() == ToolShape::Kind::flat || tool.kind() == ToolShape::Kind::ball))
+      whole_vectors(i0, i1);
     double* hr = row(j).data() + i0;
     const int n = i1 - i0;
     const double ox0 = cell_x(i0) - a[0], oy = y - a[1];
-    before_row(hr, n);
+    before_row(hr, n, p);
     if (plunge) plunge_row(hr, n, ox0, oy, cell(), m, tool);
-    else if (tool.kind() == ToolShape::Kind::flat) flat_row(hr, n, ox0, oy, cell(), m);
-    else if (tool.kind() == ToolShape::Kind::ball) ball_row(hr, n, ox0, oy, cell(), m);
+    else if (tool.kind() == ToolShape::Kind::flat) flat_row(hr, n, ox0, oy, steps_.data(), m);
+    else if (tool.kind() == ToolShape::Kind::ball) ball_row(hr, n, ox0, oy, steps_.data(), m);
     else if (m.dz == 0) level_row(hr, n, ox0, oy, cell(), m, tool);
     else sloping_row(hr, n, ox0, oy, cell(), m, tool);
-    after_row(hr, i0, j, n);
+    after_row(hr, i0, j, n, p);
   }
 }
 

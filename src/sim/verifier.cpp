@@ -26,26 +26,40 @@ ToolShape shape_of(const MillTool& t) {
   return ToolShape::flat(r);
 }
 
-// The tool tip's path of a line or an XY arc lifted by `lift`, as the map takes it; none for an
-// arc in G18/G19.
-struct TipPath {
-  Point3 a, b;
-  std::optional<Arc> arc;
-};
-std::optional<TipPath> tip_path(const machine::Move& m, double lift = 0) {
-  TipPath p{{m.start[0], m.start[1], m.start[2] + lift}, {m.end[0], m.end[1], m.end[2] + lift}, std::nullopt};
-  if (m.kind != machine::MoveKind::arc) return p;
+// The sweep of a tool's shape along a line or an XY arc, its tip lifted by `lift`, as the map takes
+// it; none for an arc in G18/G19.
+std::optional<Sweep> sweep_of(const machine::Move& m, const ToolShape& shape, double lift = 0) {
+  Sweep s{shape, {m.start[0], m.start[1], m.start[2] + lift}, {m.end[0], m.end[1], m.end[2] + lift}, std::nullopt};
+  if (m.kind != machine::MoveKind::arc) return s;
   if (m.plane != 17) return std::nullopt;
   Arc arc;
   arc.cx = m.center[0];
   arc.cy = m.center[1];
-  arc.radius = std::hypot(p.a[0] - arc.cx, p.a[1] - arc.cy);
-  arc.start_angle = std::atan2(p.a[1] - arc.cy, p.a[0] - arc.cx);
+  arc.radius = std::hypot(s.a[0] - arc.cx, s.a[1] - arc.cy);
+  arc.start_angle = std::atan2(s.a[1] - arc.cy, s.a[0] - arc.cx);
   arc.sweep = m.sweep;
-  arc.z_start = p.a[2];
-  arc.z_end = p.b[2];
-  p.arc = arc;
-  return p;
+  arc.z_start = s.a[2];
+  arc.z_end = s.b[2];
+  s.arc = arc;
+  return s;
+}
+
+// The probe of a body (shape at offset above the tip) along the move; none when it cannot meet the
+// map's material.
+std::optional<Sweep> probe_of(const ZMap& map, const machine::Move& m, const ToolShape& shape, double offset) {
+  const double low = std::min(m.start[2], m.end[2]) + offset;
+  const Box& b = map.stock();
+  const double reach = shape.radius();
+  const double x0 = std::min(m.start[0], m.end[0]), x1 = std::max(m.start[0], m.end[0]);
+  const double y0 = std::min(m.start[1], m.end[1]), y1 = std::max(m.start[1], m.end[1]);
+  // quick rejections: above the map's top, or (a line) beside it
+  if (low >= b.max[2]) return std::nullopt;
+  if (m.kind != machine::MoveKind::arc &&
+      (x1 + reach < b.min[0] || x0 - reach > b.max[0] || y1 + reach < b.min[1] || y0 - reach > b.max[1]))
+    return std::nullopt;
+  std::optional<Sweep> s = sweep_of(m, shape, offset);
+  if (s) s->probe = true;
+  return s;
 }
 
 // Where a cut or probe found the most material: the cell's centre at the depth reached.
@@ -193,16 +207,20 @@ void Verifier::check_reference(const machine::Move& m) {
 void Verifier::on_move(const machine::Move& m) {
   using machine::MoveKind;
   if (m.line != 0) last_block_ = {m.file, m.line};
-  if (origin_ && options_.profile && options_.check_reference && m.is_motion()) check_reference(m);
+  if (origin_ && options_.profile && options_.check_reference && m.is_motion()) {
+    flush();  // the findings in the moves' order
+    check_reference(m);
+  }
   switch (m.kind) {
     case MoveKind::tool_change: {
+      flush();
       tool_number_ = m.code;
       tool_ = tools_.get(m.code, m.d_offset);
       holder_in_stock_ = false;
       return;
     }
-    case MoveKind::spindle: spindle_on_ = m.code == 3 || m.code == 4; return;
-    case MoveKind::program_end: spindle_on_ = false; return;
+    case MoveKind::spindle: flush(); spindle_on_ = m.code == 3 || m.code == 4; return;
+    case MoveKind::program_end: flush(); spindle_on_ = false; return;
     case MoveKind::rapid:
       if (options_.profile && !options_.profile->linear_rapid && motions_ < options_.cut_moves) {
         // as the machine moves it: each axis at its own rate, a piece between corners
@@ -228,6 +246,7 @@ void Verifier::on_move(const machine::Move& m) {
   }
 }
 
+// Queues the move's cut and its bodies' probes; the checks are made when the batch is cut.
 void Verifier::cut(const machine::Move& m) {
   for (int a = 3; a < machine::kAxes; ++a)
     if (m.start[a] != m.end[a]) {
@@ -239,47 +258,64 @@ void Verifier::cut(const machine::Move& m) {
     ++counts_.no_tool;
     return;
   }
-  const std::optional<TipPath> path = tip_path(m);
-  if (!path) {
+  std::optional<Sweep> s = sweep_of(m, tool_->shape);
+  if (!s) {
     ++counts_.not_xy_arc;
     return;
   }
   if (options_.mark_cells) {  // the block, once for consecutive moves of it
     if (cut_blocks_.empty() || !(cut_blocks_.back() == BlockAt{m.file, m.line})) cut_blocks_.push_back({m.file, m.line});
     map_.mark_cuts(static_cast<std::uint32_t>(cut_blocks_.size() - 1));
+    s->mark = static_cast<std::uint32_t>(cut_blocks_.size() - 1);
   }
-  if (path->arc) map_.cut_arc(tool_->shape, *path->arc);
-  else map_.cut_line(tool_->shape, path->a, path->b);
-  if (log_) log_->add(tool_->shape, path->a, path->b, path->arc, m);
+  if (log_) log_->add(tool_->shape, s->a, s->b, s->arc, m);
   ++counts_.cut;
-  const CutReport r = map_.last_cut();
-  if (r.removed()) volume_by_tool_[tool_number_] += r.volume;
-  if (r.deepest > kFindingDepth) check(m, r);
-  if (!tool_->bodies.empty()) check_bodies(m);
-  if (!fixtures_.empty()) check_fixtures(m);
+  queued_.push_back({m, batch_.size(), body_probes_.size()});
+  batch_.push_back(std::move(*s));
+  for (const ToolBody& body : tool_->bodies) {
+    std::optional<Sweep> p = probe_of(map_, m, body.shape, body.offset);
+    body_probes_.push_back(p ? batch_.size() : kNoProbe);
+    if (p) batch_.push_back(std::move(*p));
+  }
+  if (batch_.size() >= ZMap::kBatchSweeps) flush();
+}
+
+void Verifier::flush() {
+  if (queued_.empty()) return;
+  reports_.resize(batch_.size());
+  map_.cut_batch(batch_, reports_);
+  std::vector<CutReport> bodies(tool_->bodies.size());
+  for (const Queued& q : queued_) {
+    const machine::Move& m = q.move;
+    const CutReport& r = reports_[q.cut];
+    if (r.removed()) volume_by_tool_[tool_number_] += r.volume;
+    if (r.deepest > kFindingDepth) check(m, r);
+    if (!tool_->bodies.empty()) {
+      for (std::size_t k = 0; k < bodies.size(); ++k) {
+        const std::size_t p = body_probes_[q.bodies + k];
+        bodies[k] = p == kNoProbe ? CutReport{} : reports_[p];
+      }
+      check_bodies(m, bodies);
+    }
+    if (!fixtures_.empty()) check_fixtures(m);
+  }
+  queued_.clear();
+  batch_.clear();
+  body_probes_.clear();
 }
 
 CutReport Verifier::probe(ZMap& map, const machine::Move& m, const ToolShape& shape, double offset) {
-  const double low = std::min(m.start[2], m.end[2]) + offset;
-  const Box& b = map.stock();
-  const double reach = shape.radius();
-  const double x0 = std::min(m.start[0], m.end[0]), x1 = std::max(m.start[0], m.end[0]);
-  const double y0 = std::min(m.start[1], m.end[1]), y1 = std::max(m.start[1], m.end[1]);
-  // quick rejections: above the map's top, or (a line) beside it
-  if (low >= b.max[2]) return {};
-  if (m.kind != machine::MoveKind::arc &&
-      (x1 + reach < b.min[0] || x0 - reach > b.max[0] || y1 + reach < b.min[1] || y0 - reach > b.max[1]))
-    return {};
-  const std::optional<TipPath> path = tip_path(m, offset);
-  if (!path) return {};
-  return path->arc ? map.probe_arc(shape, *path->arc) : map.probe_line(shape, path->a, path->b);
+  const std::optional<Sweep> s = probe_of(map, m, shape, offset);
+  if (!s) return {};
+  return s->arc ? map.probe_arc(shape, *s->arc) : map.probe_line(shape, s->a, s->b);
 }
 
-void Verifier::check_bodies(const machine::Move& m) {
+void Verifier::check_bodies(const machine::Move& m, std::span<const CutReport> body_probes) {
   const bool was_in = holder_in_stock_;
   holder_in_stock_ = false;
-  for (const ToolBody& body : tool_->bodies) {
-    const CutReport r = probe(map_, m, body.shape, body.offset);
+  for (std::size_t k = 0; k < tool_->bodies.size(); ++k) {
+    const ToolBody& body = tool_->bodies[k];
+    const CutReport& r = body_probes[k];
     if (!(r.deepest > kFindingDepth)) continue;
     holder_in_stock_ = true;
     if (was_in) return;  // the same contact going on: said at the move that made it

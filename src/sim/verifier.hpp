@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <span>
 #include <set>
 #include <string>
 #include <tuple>
@@ -78,6 +79,9 @@ struct BlockAt {
   bool operator==(const BlockAt&) const = default;
 };
 
+// The moves are cut in batches (ZMap::cut_batch, the map's rows shared between the cores) and
+// checked, in order, when their batch is: when it is full, at a tool change or spindle event (a
+// batch's moves share the tool and the spindle's state), and before a result is read.
 class Verifier final : public machine::MoveSink {
 public:
   Verifier(const Stock& stock, MillTools& tools, std::optional<int> spindle, VerifyOptions options = {},
@@ -85,12 +89,14 @@ public:
   void on_move(const machine::Move& m) override;
   // A new work zero: the reference point is checked against the stock at the next motion.
   void on_setup(const machine::Setup& s) override;
+  // Cuts and checks the moves queued (the results below do it first).
+  void flush();
 
-  const ZMap& map() const { return map_; }
-  const std::vector<Finding>& findings() const { return findings_; }
-  std::size_t findings_left_out() const { return left_out_; }
+  const ZMap& map() const { settle(); return map_; }
+  const std::vector<Finding>& findings() const { settle(); return findings_; }
+  std::size_t findings_left_out() const { settle(); return left_out_; }
   // Material removed by each T number, mm^3.
-  const std::map<int, double>& volume_by_tool() const { return volume_by_tool_; }
+  const std::map<int, double>& volume_by_tool() const { settle(); return volume_by_tool_; }
   struct Counts {
     std::uint64_t cut = 0;
     std::uint64_t no_tool = 0;     // motion with no tool in the spindle, or a tool without a size
@@ -117,10 +123,21 @@ private:
     ZMap map;
     bool touched = false;  // by the move before
   };
+  // A move queued: its cut in batch_, its bodies' probes from bodies in body_probes_.
+  struct Queued {
+    machine::Move move;
+    std::size_t cut = 0, bodies = 0;
+  };
+  static constexpr std::size_t kNoProbe = SIZE_MAX;  // a body that cannot meet the stock
+
+  // A result read with moves queued: they are cut and checked first (a Verifier that has taken
+  // moves is never const itself, and one that has none queued is left as it is).
+  void settle() const { const_cast<Verifier*>(this)->flush(); }
   void cut(const machine::Move& m);
   // What a body (shape at offset above the tip) meets along the move on the map; none when it cannot.
   CutReport probe(ZMap& map, const machine::Move& m, const ToolShape& shape, double offset);
-  void check_bodies(const machine::Move& m);
+  // body_probes: each body's probe of the map after the move's cut.
+  void check_bodies(const machine::Move& m, std::span<const CutReport> body_probes);
   void check_fixtures(const machine::Move& m);
   void check(const machine::Move& m, const CutReport& r);
   void find(const machine::Move& m, const char* code, std::string message, const Point3& at, double amount);
@@ -141,6 +158,10 @@ private:
   Counts counts_;
   std::set<std::tuple<std::string, const nc::SourceFile*, std::uint32_t>> found_at_;  // code, block
   std::map<int, bool> speed_warned_;  // by T number
+  std::vector<Queued> queued_;
+  std::vector<Sweep> batch_;
+  std::vector<std::size_t> body_probes_;  // a sweep of batch_ or kNoProbe, one a body of each queued move
+  std::vector<CutReport> reports_;
   std::vector<BlockAt> cut_blocks_;
   BlockAt last_block_;
   CutLog* log_ = nullptr;

@@ -22,12 +22,15 @@ ZMap::ZMap(const Box& stock, double cell, int min_cells, double most_cells) : st
     throw std::invalid_argument(
         fmt::format("a Z-map of {:.0f} x {:.0f} cells is more than the {:.0f} allowed", nx, ny, most_cells));
   cell_ = cell;
+  inv_cell_ = 1 / cell;
   nx_ = static_cast<int>(nx);
   ny_ = static_cast<int>(ny);
   // the grid centred on the stock (it overhangs by under a cell where the size is not a multiple)
   x0_ = stock.min[0] - (nx_ * cell - lx) / 2;
   y0_ = stock.min[1] - (ny_ * cell - ly) / 2;
   h_.assign(static_cast<std::size_t>(nx_) * ny_, stock.max[2]);
+  steps_.resize(static_cast<std::size_t>(nx_));
+  for (int k = 0; k < nx_; ++k) steps_[k] = k * cell_;
 }
 
 double ZMap::height_at(double x, double y) const {
@@ -60,48 +63,56 @@ double ZMap::volume_removed() const {
   return sum * cell_ * cell_ - absent_;
 }
 
-void ZMap::before_row(const double* h, int n) {
-  if (report_ || probe_) before_.assign(h, h + n);
+void ZMap::cut_line(const ToolShape& tool, const Point3& a, const Point3& b) {
+  Pass p{0, ny_, report_, false, &before_, nullptr, {}, cut_id_};
+  pass_line(tool, a, b, p);
+  last_ = p.out;
+}
+
+void ZMap::cut_arc(const ToolShape& tool, const Arc& arc) {
+  Pass p{0, ny_, report_, false, &before_, nullptr, {}, cut_id_};
+  pass_arc(tool, arc, p);
+  last_ = p.out;
 }
 
 CutReport ZMap::probe_line(const ToolShape& tool, const Point3& a, const Point3& b) {
-  const CutReport kept = last_;
-  probe_ = true;
-  cut_line(tool, a, b);
-  probe_ = false;
-  const CutReport r = last_;
-  last_ = kept;
-  return r;
+  Pass p{0, ny_, true, true, &before_, nullptr, {}, kNoCut};
+  pass_line(tool, a, b, p);
+  return p.out;
 }
 
 CutReport ZMap::probe_arc(const ToolShape& tool, const Arc& arc) {
-  const CutReport kept = last_;
-  probe_ = true;
-  cut_arc(tool, arc);
-  probe_ = false;
-  const CutReport r = last_;
-  last_ = kept;
-  return r;
+  Pass p{0, ny_, true, true, &before_, nullptr, {}, kNoCut};
+  pass_arc(tool, arc, p);
+  return p.out;
 }
 
-void ZMap::after_row(double* h, int i0, int j, int n) {
-  if (!report_ && !probe_) return;
-  if (!probe_ && !cut_by_.empty()) {
+void ZMap::before_row(const double* h, int n, Pass& p) const {
+  if (p.report) p.before->assign(h, h + n);
+}
+
+void ZMap::after_row(double* h, int i0, int j, int n, Pass& p) {
+  if (!p.report) return;
+  if (!p.probe && !cut_by_.empty()) {
     std::uint32_t* by = cut_by_.data() + static_cast<std::size_t>(j) * nx_ + i0;
     for (int k = 0; k < n; ++k)
-      if (h[k] < before_[k]) by[k] = cut_id_;
+      if (h[k] < (*p.before)[k]) by[k] = p.mark;
   }
   const double top = stock_.max[2], bottom = stock_.min[2];
+  const std::vector<double>& before = *p.before;
+  CutReport& out = p.out;
   double removed_sum = 0;
   for (int k = 0; k < n; ++k) {
-    const double was = std::min(before_[k], top);
+    const double was = std::min(before[k], top);
     if (h[k] >= was || was <= bottom) continue;
     const double removed = was - std::max(h[k], bottom);
     removed_sum += removed;
-    if (removed > last_.deepest) last_ = {last_.volume, removed, i0 + k, j, before_[k]};
+    if (removed > out.deepest) out = {out.volume, removed, i0 + k, j, before[k]};
   }
-  last_.volume += removed_sum * cell_ * cell_;
-  if (probe_) std::copy(before_.begin(), before_.begin() + n, h);
+  const double volume = removed_sum * cell_ * cell_;
+  out.volume += volume;
+  if (p.volumes && volume != 0) p.volumes->push_back(volume);
+  if (p.probe) std::copy(before.begin(), before.begin() + n, h);
 }
 
 void ZMap::rows_of(double yl, double yh, int& j0, int& j1) const {
@@ -111,14 +122,6 @@ void ZMap::rows_of(double yl, double yh, int& j0, int& j1) const {
   const double a = std::ceil((yl - y0_) / cell_ - 0.5), b = std::floor((yh - y0_) / cell_ - 0.5);
   j0 = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(ny_)));
   j1 = static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(ny_)));
-}
-
-void ZMap::cells_of(double xl, double xh, int& i0, int& i1) const {
-  i0 = i1 = 0;
-  if (!(xl <= xh)) return;
-  const double a = std::ceil((xl - x0_) / cell_ - 0.5), b = std::floor((xh - x0_) / cell_ - 0.5);
-  i0 = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(nx_)));
-  i1 = static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(nx_)));
 }
 
 }  // namespace ncurve::sim

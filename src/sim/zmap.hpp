@@ -3,8 +3,11 @@
 // each cell it reaches to the lowest point of the tool's swept envelope on that line, computed
 // per cell in closed form (or by an exact 1-D minimisation to kLowestTolerance): docs/verify.md.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -39,6 +42,16 @@ struct CutReport {
   bool removed() const { return deepest > 0; }
 };
 
+// A cut or a probe of a batch (ZMap::cut_batch): the tool's tip along the line from a to b, or
+// along the arc where there is one.
+struct Sweep {
+  ToolShape tool;
+  Point3 a{}, b{};
+  std::optional<Arc> arc;
+  bool probe = false;  // what it would remove, the map left as it is
+  std::uint32_t mark = UINT32_MAX;  // a cut's id in ZMap::cut_by(), where the map marks its cuts
+};
+
 // A height found by minimising along a move (where no closed form is used) is within this of
 // the exact lowest point, mm.
 inline constexpr double kLowestTolerance = 1e-9;
@@ -53,6 +66,8 @@ public:
   // cell 0: the stock's shorter side in min_cells cells
   static constexpr int kDefaultCells = 1000;
   static constexpr double kMostCells = 4e8;
+  // A batch of this many sweeps is enough work to share between the cores (cut_batch).
+  static constexpr std::size_t kBatchSweeps = 4096;
   // Throws std::invalid_argument for an empty box, a bad cell, or more than most_cells cells.
   explicit ZMap(const Box& stock, double cell = 0, int min_cells = kDefaultCells, double most_cells = kMostCells);
 
@@ -99,23 +114,61 @@ public:
   CutReport probe_line(const ToolShape& tool, const Point3& a, const Point3& b);
   CutReport probe_arc(const ToolShape& tool, const Arc& arc);
 
+  // The sweeps in order, as cut_line, cut_arc, probe_line and probe_arc one after another would
+  // make them, the map's rows shared between the cores: the same heights to the bit (a cell's
+  // height is the least of its sweeps', and each row sees its sweeps in order). reports: empty (the
+  // probes are then skipped), or one a sweep, what each would have reported: the reports of a
+  // row's band merged as the one pass over all rows would have found them. last_cut() is then the
+  // last cut's report.
+  void cut_batch(std::span<const Sweep> sweeps, std::span<CutReport> reports = {});
+
   // The rows j0..j1-1 that a band of y may touch, and the cells i0..i1-1 of a row whose centres
   // lie in [xl, xh] (empty when i1 <= i0).
   void rows_of(double yl, double yh, int& j0, int& j1) const;
-  void cells_of(double xl, double xh, int& i0, int& i1) const;
+  // (by the inverse of the cell: a caller pads its bounds by more than that rounding)
+  void cells_of(double xl, double xh, int& i0, int& i1) const {
+    i0 = i1 = 0;
+    if (!(xl <= xh)) return;
+    const double a = std::ceil((xl - x0_) * inv_cell_ - 0.5), b = std::floor((xh - x0_) * inv_cell_ - 0.5);
+    i0 = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(nx_)));
+    i1 = static_cast<int>(std::clamp(b + 1, 0.0, static_cast<double>(nx_)));
+  }
 
 private:
+  // One cut or probe over the rows lo..hi-1: what it keeps and what it reports.
+  struct Pass {
+    int lo = 0, hi = 0;
+    bool report = false, probe = false;
+    std::vector<double>* before = nullptr;   // a row's heights before its kernel
+    std::vector<double>* volumes = nullptr;  // where kept: each row's volume removed, in row order
+    CutReport out;
+    std::uint32_t mark = kNoCut;  // where cut_by_ is kept: the id of the cells a cut lowers
+  };
+  void pass_line(const ToolShape& tool, const Point3& a, const Point3& b, Pass& p);
+  void pass_arc(const ToolShape& tool, const Arc& arc, Pass& p);
+  // The rows j0..j1-1 a pass visits.
+  void line_rows(const ToolShape& tool, const Point3& a, const Point3& b, int& j0, int& j1) const;
+  void arc_rows(const ToolShape& tool, const Arc& arc, int& j0, int& j1) const;
+  // Cells i0..i1-1 widened, within the row, to a whole number of the vector kernels' steps (a
+  // vector of eight cells): no scalar remainder is run, and a cell added beyond the reach is left
+  // as it is.
+  static constexpr int kVectorCells = 8;
+  void whole_vectors(int& i0, int& i1) const {
+    const int n = (i1 - i0 + kVectorCells - 1) / kVectorCells * kVectorCells;
+    i1 = std::min(nx_, i0 + n);
+    i0 = std::max(0, i1 - n);
+  }
   // Around a row's kernel: keep the cells' heights before it, then add what it removed.
-  void before_row(const double* h, int n);
-  void after_row(double* h, int i0, int j, int n);
+  void before_row(const double* h, int n, Pass& p) const;
+  void after_row(double* h, int i0, int j, int n, Pass& p);
 
   Box stock_;
-  double cell_ = 0;
+  double cell_ = 0, inv_cell_ = 0;
+  std::vector<double> steps_;  // k * cell for the cells of a row: the line kernels' offsets (no integer in their loops)
   int nx_ = 0, ny_ = 0;
   double x0_ = 0, y0_ = 0;
   std::vector<double> h_;
   bool report_ = false;
-  bool probe_ = false;
   double absent_ = 0;  // the columns clear_cell emptied, mm^3
   CutReport last_;
   std::vector<double> before_;
