@@ -1,5 +1,6 @@
 #include "sim/verifier.hpp"
 
+#include "machine/arc_points.hpp"
 #include "machine/rapid_path.hpp"
 #include "sim/mesh_top.hpp"
 #include "sim/stl_read.hpp"
@@ -238,6 +239,16 @@ void Verifier::on_move(const machine::Move& m) {
     case MoveKind::line: case MoveKind::arc:
       if (motions_++ >= options_.cut_moves) {
         ++counts_.after;
+        return;
+      }
+      if (m.kind == MoveKind::arc && m.plane != 17) {  // G18/G19: as chords within kArcChord of the arc
+        machine::Move chord = m;
+        chord.kind = MoveKind::line;
+        machine::arc_points(m, kArcChord, [&](const machine::AxisVector& p) {
+          chord.end = p;
+          cut(chord);
+          chord.start = p;
+        });
         return;
       }
       cut(m);

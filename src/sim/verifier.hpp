@@ -60,6 +60,8 @@ private:
 // Material a finding is about lies deeper than this on some cell's line, mm: less is the rounding
 // between the kernels (and no chip).
 inline constexpr double kFindingDepth = 1e-3;
+// An arc outside the XY plane (G18, G19) is cut as chords at most this far from it, mm.
+inline constexpr double kArcChord = 5e-4;
 
 struct VerifyOptions {
   double cell = 0;                        // Z-map cell, mm; 0: from min_cells
@@ -100,7 +102,7 @@ public:
   struct Counts {
     std::uint64_t cut = 0;
     std::uint64_t no_tool = 0;     // motion with no tool in the spindle, or a tool without a size
-    std::uint64_t not_xy_arc = 0;  // arcs in G18/G19
+    std::uint64_t not_xy_arc = 0;  // arcs in G18/G19 not cut (none now: they are cut as chords)
     std::uint64_t rotary = 0;      // moves that turn a rotary axis (3 axes are simulated)
     std::uint64_t after = 0;       // motions past VerifyOptions::cut_moves
   };

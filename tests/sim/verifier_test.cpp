@@ -317,9 +317,9 @@ TEST(Verifier, RetractOutOfASlopingBallCutIsClean) {
 }
 
 // The move stream cut with the tool in the spindle by T number: lines, arcs and rapids cut, the
-// moves before the first M06 and a G18 arc counted, not cut.
+// moves before the first M06 counted, not cut.
 TEST(Verifier, ProgramCutsWithTheToolInTheSpindle) {
-  // a slot with T1 (flat, R 5), then T2 (ball, R 3) round a G03 half circle, one G18 arc left out
+  // a slot with T1 (flat, R 5), then T2 (ball, R 3) round a G03 half circle and a G18 arc
   auto r = test::run(
       "G90 G17 G00 X20. Y50. Z5.\nG01 Z-3. F500.\nX80.\nG00 Z5.\nT1 M06\nG00 X20. Y50.\nG01 Z-3. F500.\nX80.\n"
       "G00 Z5.\nT2 M06\nG00 X40. Y20.\nG01 Z-1.\nG03 X60. Y20. R10.\nG18 G02 X70. Z-1. R5.\nM30\n",
@@ -332,8 +332,8 @@ TEST(Verifier, ProgramCutsWithTheToolInTheSpindle) {
   const sim::ZMap& map = v.map();
   for (const auto& m : r.moves) v.on_move(m);
   EXPECT_EQ(v.counts().no_tool, 4u);  // before the first M06
-  EXPECT_EQ(v.counts().not_xy_arc, 1u);
-  EXPECT_EQ(v.counts().cut, 7u);
+  EXPECT_EQ(v.counts().not_xy_arc, 0u);
+  EXPECT_GT(v.counts().cut, 7u);  // the G18 arc as chords
   EXPECT_EQ(map.height_at(50.05, 50.05), -3);
   EXPECT_EQ(map.height_at(50.05, 56.05), 0);
   // the ball's arc (G03 from the left through the bottom): its tip at Z-1 on the circle of radius
@@ -343,6 +343,40 @@ TEST(Verifier, ProgramCutsWithTheToolInTheSpindle) {
   EXPECT_EQ(map.height_at(50.05, 30.05), 0);
   const double exact = 60 * 10 * 3 + std::numbers::pi * 25 * 3;
   EXPECT_GT(map.volume_removed(), exact);
+}
+
+// A G18 arc, cut as chords within kArcChord: G02 from X-10 Z0 to X10 Z0 with R10 goes clockwise
+// seen from +Y (Z across, X up) through Z-10. A flat end mill of R 2 leaves at X the lowest point
+// of the circle within its reach: -10 within it of X0, else -sqrt(100 - (|X| - reach)^2); G03
+// goes through Z+10, over the block, and cuts nothing.
+TEST(Verifier, G18ArcIsCutAsTheCircle) {
+  const sim::SetupFile setup = sim::parse_setup("[tools.1]\nkind = \"flat\"\ndiameter = 4\n", "s.toml");
+  for (const char* g : {"G02", "G03"}) {
+    auto r = test::run(fmt::format("T1 M06\nM03 S1000\nG90 G00 X-10. Y0 Z5.\nG01 Z0 F100.\nG18 {} X10. Z0 R10.\n"
+                                   "G00 Z5.\nM30\n", g),
+                       test::calculator_mill());
+    ASSERT_TRUE(r.result.ok());
+    sim::MillTools tools(setup.tools, test::calculator_mill());
+    sim::VerifyOptions o;
+    o.cell = 0.1;
+    sim::Verifier v(sim::AxisBox{{-15, -5, -15}, {15, 5, 0}}, tools, std::nullopt, o);
+    for (const auto& m : r.moves) v.on_move(m);
+    const sim::ZMap& map = v.map();
+    EXPECT_EQ(v.counts().not_xy_arc, 0u);
+    if (std::string(g) == "G03") {
+      EXPECT_NEAR(map.volume_removed(), 0, 1e-9);
+      continue;
+    }
+    // the cells' centres at Y0.05: the tool reaches sqrt(4 - 0.05^2) along X; a chord lies within
+    // kArcChord of the circle across it, within kArcChord / cos(slope) upright
+    const double reach = std::sqrt(4 - 0.05 * 0.05);
+    for (double x : {-7.95, -4.05, -1.05, 0.05, 1.95, 5.05, 8.95}) {
+      const double c = std::max(std::fabs(x) - reach, 0.0);
+      const double want = -std::sqrt(100 - c * c), upright = 10 / std::sqrt(100 - c * c);
+      EXPECT_LE(map.height_at(x, 0.05), want + sim::kArcChord * upright + 1e-9) << x;
+      EXPECT_GE(map.height_at(x, 0.05), want - 1e-9) << x;  // chords inside the circle: never deeper
+    }
+  }
 }
 
 // NC2089: reference position 1 (machine zero in the profile) in the work coordinates the setup's
