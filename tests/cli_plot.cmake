@@ -131,3 +131,10 @@ check_plot(${OUT}/plot_part.svg "run --setup --plot")
 expect_text("${report}" "part=3" "the part in three views")
 file(READ ${OUT}/plot_part.svg svg)
 expect_text("${svg}" "href=\"data:image/png;base64,iVBORw0KGgo" "a PNG picture from above")
+# a lathe's part: the bar's half-section as cut, one filled outline in the ZX plane
+run_expect(0 "lathe run --setup --plot" ${NCURVE} run ${SRC}/examples/lathe-mrc.nc --machine fanuc-lathe
+           --setup ${SRC}/examples/lathe-mrc.setup.toml --plot ${OUT}/plot_lathe_part.svg)
+check_plot(${OUT}/plot_lathe_part.svg "lathe run --setup --plot")
+expect_text("${report}" "part=1" "the lathe's part")
+file(READ ${OUT}/plot_lathe_part.svg svg)
+expect_text("${svg}" "fill-rule=\"evenodd\"" "a hole cut out of the section")

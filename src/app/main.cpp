@@ -197,6 +197,7 @@ int run_command(const app::RunArgs& a) {
   if (verify) {
     verify->finish(result);
     if (plot && verify->map()) plot->set_part(sim::part_grid(*verify->map()));
+    if (plot && verify->section()) plot->set_section(verify->section()->polygons());
     if (html && verify->map()) {
       html->set_part(sim::part_grid(*verify->map()));
       if (verify->report().curve) html->set_deviation(report::deviation_json(*verify->report().curve));

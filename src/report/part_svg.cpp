@@ -102,4 +102,19 @@ std::string part_side_svg(const sim::PartGrid& g, const plot::Frame& f, int axis
                      d, c[0], c[1], c[2]);
 }
 
+std::string section_svg(const std::vector<std::vector<geom::V2>>& polygons, const plot::Frame& f) {
+  std::string d;
+  for (const auto& poly : polygons) {
+    if (poly.size() < 3) continue;
+    for (std::size_t k = 0; k < poly.size(); ++k)
+      fmt::format_to(std::back_inserter(d), "{}{:.2f},{:.2f}", k ? 'L' : 'M', f.x(poly[k].x), f.y(poly[k].y));
+    d += 'Z';
+  }
+  if (d.empty()) return {};
+  const auto c = part_shade(0, 0, -1);
+  return fmt::format("<path class=\"part\" d=\"{}\" fill=\"#{:02x}{:02x}{:02x}\" fill-rule=\"evenodd\" stroke=\"#80858f\" "
+                     "stroke-width=\"0.8\"/>\n",
+                     d, c[0], c[1], c[2]);
+}
+
 }  // namespace ncurve::report

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "geom/plane.hpp"
 #include "report/svg_plot.hpp"
 #include "sim/part_stl.hpp"
 
@@ -17,6 +18,10 @@ std::string part_top_svg(const sim::PartGrid& part, const plot::Frame& f);
 std::string part_side_svg(const sim::PartGrid& part, const plot::Frame& f, int axis);
 // The part's colour at a height: light grey at the stock's top, darker down to the deepest cut.
 std::array<std::uint8_t, 3> part_shade(double height, double top, double deepest);
+
+// A lathe's cut part in its ZX panel: the half-section's polygons (Z across, X the radius up),
+// holes cut out (even-odd fill).
+std::string section_svg(const std::vector<std::vector<geom::V2>>& polygons, const plot::Frame& f);
 
 // A PNG file of w x h RGB pixels (rows from the top), compressed with zlib.
 std::string png_rgb(int w, int h, const std::vector<std::uint8_t>& rgb);

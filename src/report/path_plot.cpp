@@ -379,6 +379,10 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
     }
     if (alarm_) box.add(map(alarm_at_));
     const bool part = part_ && !lathe_ && view != PlotView::iso;
+    const bool section = !section_.empty() && lathe_ && view == PlotView::xz;
+    if (section)  // the section's box: Z across, the radius up
+      for (const auto& poly : section_)
+        for (const geom::V2& q : poly) box.add({q.x, q.y});
     if (part)  // the stock's box
       for (double x : {part_->x0 - part_->dx / 2, part_->x0 + (part_->nx - 0.5) * part_->dx})
         for (double y : {part_->y0 - part_->dy / 2, part_->y0 + (part_->ny - 0.5) * part_->dy})
@@ -412,6 +416,7 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
     if (panel.ticks) panel.u.label += fmt::format(", {}", units), panel.v.label += fmt::format(", {}", units);
     const plot::Frame f = plot::draw_panel(page, panel);
     if (part) page.add(view == PlotView::xy ? part_top_svg(*part_, f) : part_side_svg(*part_, f, view == PlotView::xz ? 0 : 1));
+    if (section) page.add(section_svg(section_, f));
     const double res = 0.25 / f.px_per_unit();  // a quarter pixel, in mm
     std::string s = fmt::format("<g class=\"view\" fill=\"none\" stroke-width=\"1.3\" stroke-linejoin=\"round\">\n");
     // a line's part inside the panel (Liang-Barsky), false when none is: the approach from where the
@@ -519,6 +524,7 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
       {"rapid (G00)", kRapid, "6 4", 1.5}, {"feed (G01)", kFeed, "", 1.5}, {"arc (G02/G03)", kArc, "", 1.5}, {"start", "#000", "", 1.5, false, true}};
   if (alarm_) legend.push_back({"alarm", kAlarm, "", 2.5, true});
   if (part_ && !lathe_) legend.push_back({"part (cut stock; isometric: not drawn)", "#a0a6ae", "", 6});
+  if (!section_.empty() && lathe_) legend.push_back({"part (the bar's half-section as cut)", "#a0a6ae", "", 6});
   y += plot::draw_legend(page, 16, y, W - 32, legend);
   for (std::size_t i = 0; i < notes.size(); ++i) {
     const bool alarm = i + alarm_lines >= notes.size();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "machine/move.hpp"
+#include "geom/plane.hpp"
 #include "sim/part_stl.hpp"
 #include "nc/diagnostic.hpp"
 #include "report/other_axes.hpp"
@@ -40,6 +41,8 @@ public:
   std::string svg(const PathPlotOptions& options) const;
   // The cut part (a mill's, run --verify), drawn under the path in the XY, XZ and YZ views.
   void set_part(sim::PartGrid part) { part_ = std::move(part); }
+  // A lathe's cut part: its half-section (Z, X as a radius), drawn under the path in the ZX plane.
+  void set_section(std::vector<std::vector<geom::V2>> polygons) { section_ = std::move(polygons); }
 
   struct Element {
     machine::MoveKind kind;       // rapid, line or arc
@@ -76,6 +79,7 @@ private:
   std::array<double, 3> alarm_at_{};
   OtherAxes other_;  // the A, B and C axes, not drawn
   std::optional<sim::PartGrid> part_;
+  std::vector<std::vector<geom::V2>> section_;
 };
 
 }  // namespace ncurve::report

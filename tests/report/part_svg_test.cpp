@@ -90,3 +90,21 @@ TEST(PartSvg, OutlinesTheHighestOfEachColumn) {
 
 }  // namespace
 }  // namespace ncurve::report
+
+namespace ncurve::report {
+namespace {
+
+TEST(PartSvg, SectionAsItsPolygons) {
+  plot::Frame f;  // Z -10..10 over x 0..200, the radius 0..20 over y 200..0
+  f.left = 0, f.top = 0, f.width = 200, f.height = 200, f.u0 = -10, f.u1 = 10, f.v0 = 0, f.v1 = 20;
+  const std::vector<std::vector<geom::V2>> polygons = {{{-10, 0}, {0, 0}, {0, 10}, {-10, 10}}, {{-5, 2}, {-5, 4}, {-2, 4}}};
+  const std::string s = section_svg(polygons, f);
+  EXPECT_NE(s.find("d=\"M0.00,200.00L100.00,200.00L100.00,100.00L0.00,100.00ZM50.00,180.00L50.00,160.00L80.00,160.00Z\""),
+            std::string::npos)
+      << s;
+  EXPECT_NE(s.find("fill-rule=\"evenodd\""), std::string::npos);
+  EXPECT_EQ(section_svg({{{0, 0}, {1, 1}}}, f), "");  // nothing to fill
+}
+
+}  // namespace
+}  // namespace ncurve::report
