@@ -46,8 +46,13 @@ expect_text("${out}" "cut part          75.6 mm^3 (T1 75.6) removed from the sto
 expect_text("${out}" "beyond design     0.00" "the gouge")
 
 # refusals
-run_expect(2 "a lathe" ${NCURVE} run ${SRC}/examples/lathe-mrc.nc --machine fanuc-lathe --curve hyperbola)
-expect_text("${err}" "--curve: the walls are measured on a mill's part" "a lathe refused")
+# a lathe: the G71/G70 example's diameter 30 (Z-20..-35) against the design 0.02 above it, a gouge
+run_expect(0 "a lathe's surface" ${NCURVE} run ${SRC}/examples/lathe-mrc.nc --machine fanuc-lathe
+           --setup ${SRC}/examples/lathe-mrc.setup.toml --curve expr --x 15.02 --z t --t -34:-21)
+expect_text("${out}" "(edge: the part's wall on the curve)" "a lathe's surface is an edge")
+if(NOT out MATCHES "warning: NC2087 the cut goes 0\\.020[0-1] mm beyond the design's wall at t = [-0-9.e]+ of the curve \\(Z-[0-9.]+, radius 15\\.0200\\)")
+  message(SEND_ERROR "a lathe: no gouge of 0.020 in:\n${out}")
+endif()
 run_expect(2 "a parameter not of the curve" ${NCURVE} run ${SRC}/examples/spiral.nc --curve spiral --pich 3)
 expect_text("${err}" "did you mean --pitch?" "the parameter suggested")
 run_expect(2 "an argument without --curve" ${NCURVE} run ${SRC}/examples/spiral.nc --verfy)

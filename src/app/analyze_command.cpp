@@ -31,9 +31,10 @@ namespace {
 // The cut part: the material removed and the walls against the curve.
 std::string part_text(const report::VerifyReport& r) {
   std::string out;
-  if (!r.verifier) return fmt::format("  cut part          not made: {}\n", r.refused);
+  if (!r.verifier && !r.section) return fmt::format("  cut part          not made: {}\n", r.refused);
   out += fmt::format("  cut part          {} removed from the {}{}\n", report::removed_text(r),
-                     r.stock_default ? "box around the cutting moves" : "stock of ",
+                     r.stock_default ? (r.section ? "bar round the cutting moves" : "box around the cutting moves")
+                                     : "stock of ",
                      r.stock_default ? "" : r.setup_file);
   if (r.curve) out += report::curve_text(*r.curve, 18);
   return out;
@@ -320,7 +321,7 @@ int program_command(const AnalyzeArgs& a) {
   }
   // the part cut: its walls against the curve and the material each tool removed (a mill's)
   std::optional<RunVerification> part;
-  if (curve && !profile.lathe()) {
+  if (curve) {
     VerifyArgs va;
     va.verify = true;
     va.setup = a.setup;

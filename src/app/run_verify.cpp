@@ -4,7 +4,9 @@
 
 #include <stdexcept>
 
+#include "gen/generate.hpp"
 #include "io/output_file.hpp"
+#include "report/path_plot.hpp"
 #include "sim/mesh_top.hpp"
 #include "sim/stl_read.hpp"
 #include "sim/part_stl.hpp"
@@ -23,7 +25,7 @@ void add_verify_options(CLI::App* run, VerifyArgs& a) {
   run->add_option("--part", a.part, "write the cut part as a binary STL file (turns on --verify)");
   add_curve_options(run, a.curve,
                     "measure the cut part's walls against this curve, a name of `ncurve gen --list` (its parameters "
-                    "as --NAME VALUE) or expr; turns on --verify (mill)");
+                    "as --NAME VALUE) or expr; turns on --verify");
   run->add_option("--tol", a.tol,
                   "--curve, --design: a wall or surface beyond the design or short of it by more is a finding, mm "
                   "(default 0.01)")
@@ -129,11 +131,13 @@ RunVerification::RunVerification(const VerifyArgs& args, const machine::MachineP
     if (!args.design.empty()) throw std::runtime_error("--design: " + why);
   };
   if (!args.curve.name.empty()) {
-    if (profile.lathe())
-      throw std::runtime_error("--curve: the walls are measured on a mill's part; a lathe's profile against a curve: "
-                               "ncurve analyze --curve");
     try {
       curve_.emplace(build_curve(args.curve, args.curve_extras, profile));
+      if (profile.lathe()) {  // as `gen` and `analyze` place a profile on a lathe
+        gen::Options go;
+        go.profile = profile;
+        place_ = gen::axis_map(*curve_, go);
+      }
     } catch (const std::bad_alloc&) {
       throw;
     } catch (const std::exception& e) {
@@ -237,10 +241,15 @@ void RunVerification::lathe(const machine::MachineProfile& profile, const machin
                                                           setup_.tool_in_spindle, so);
   report_.section = section_.get();
   report_.section_sink = section_sink_.get();
+  if (curve_) {  // the feed moves kept to name the block of a wall
+    profile_moves_ = std::make_unique<sim::ProfileMoves>();
+    lathe_tee_ = std::make_unique<report::TeeSink>(*section_sink_, *profile_moves_);
+  }
   report_.fixtures = section_sink_->fixtures_checked();
 }
 
 machine::MoveSink* RunVerification::sink() {
+  if (lathe_tee_) return lathe_tee_.get();
   if (section_sink_) return section_sink_.get();
   return verifier_.get();
 }
@@ -262,6 +271,7 @@ void RunVerification::finish(machine::RunResult& result) {
     }
   if (section_sink_)
     for (const sim::Finding& f : section_sink_->findings()) result.warnings.push_back(f.diagnostic);
+  if (section_sink_ && curve_) measure_section_walls(result);
   if (!verifier_) return;
   report_.fixtures = verifier_->fixtures_checked();
   for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);
@@ -280,7 +290,7 @@ void RunVerification::measure_walls(machine::RunResult& result) {
   report::CurveCheck& check = report_.curve.emplace();
   check.curve = curve_->name();
   check.tol = args_.tol;
-  check.cuts = cuts_.get();
+  check.block = sim::block_of(*cuts_);
   sim::WallOptions o;
   o.design = args_.wall == "edge" || (args_.wall == "auto" && cuts_->any_compensated()) ? sim::WallDesign::edge
                                                                                        : sim::WallDesign::groove;
@@ -297,7 +307,26 @@ void RunVerification::measure_walls(machine::RunResult& result) {
     return;
   }
   check.walls = &*walls_;
-  check.findings = sim::wall_findings(*cuts_, *walls_, args_.tol);
+  check.findings = sim::wall_findings(sim::block_of(*cuts_), *walls_, args_.tol);
+  for (const sim::Finding& f : check.findings) result.warnings.push_back(f.diagnostic);
+}
+
+// A lathe's: the turned surface against the profile curve.
+void RunVerification::measure_section_walls(machine::RunResult& result) {
+  report::CurveCheck& check = report_.curve.emplace();
+  check.curve = curve_->name();
+  check.tol = args_.tol;
+  check.block = profile_moves_->block();
+  sim::WallOptions o;
+  o.design = sim::WallDesign::edge;
+  try {
+    walls_ = sim::measure_section_walls(*section_, *profile_moves_, *curve_, place_, o);
+  } catch (const std::runtime_error& e) {
+    check.refused = e.what();
+    return;
+  }
+  check.walls = &*walls_;
+  check.findings = sim::wall_findings(check.block, *walls_, args_.tol);
   for (const sim::Finding& f : check.findings) result.warnings.push_back(f.diagnostic);
 }
 

@@ -15,6 +15,7 @@
 #include "report/verify_report.hpp"
 #include "sim/design_check.hpp"
 #include "sim/curve_walls.hpp"
+#include "sim/section_walls.hpp"
 #include "sim/lathe_section_sink.hpp"
 
 namespace ncurve::app {
@@ -70,6 +71,7 @@ public:
 
 private:
   void measure_walls(machine::RunResult& result);
+  void measure_section_walls(machine::RunResult& result);
   void lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
              const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse);
 
@@ -83,6 +85,9 @@ private:
   std::optional<sim::DesignResult> design_;
   report::VerifyReport report_;
   std::optional<geom::Curve> curve_;
+  geom::Placement place_;  // a lathe's: the curve on the machine's Z and X
+  std::unique_ptr<sim::ProfileMoves> profile_moves_;
+  std::unique_ptr<machine::MoveSink> lathe_tee_;
   std::unique_ptr<sim::CutLog> cuts_;
   bool compensated_ = false;  // a cutting move under G41/G42
   std::optional<sim::WallReport> walls_;

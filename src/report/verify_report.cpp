@@ -84,10 +84,11 @@ const char* design_words(sim::WallDesign d) {
 // "t = 12.3 of the curve (X1.0000 Y2.0000), the wall of line 24 of spiral.nc"
 std::string wall_point_text(const CurveCheck& c, std::int64_t k) {
   const sim::WallPoint& p = c.walls->points[static_cast<std::size_t>(k)];
-  std::string s = fmt::format("t = {:.6g} of the curve (X{:.4f} Y{:.4f})", p.t, p.x, p.y);
-  if (c.cuts && p.cut >= 0) {
-    const sim::CutLog::Cut& cut = (*c.cuts)[static_cast<std::size_t>(p.cut)];
-    s += fmt::format(", the wall of line {}{}", cut.line, cut.file ? " of " + cut.file->name() : std::string());
+  std::string s = c.walls->turned ? fmt::format("t = {:.6g} of the curve (Z{:.4f}, radius {:.4f})", p.t, p.x, p.y)
+                                   : fmt::format("t = {:.6g} of the curve (X{:.4f} Y{:.4f})", p.t, p.x, p.y);
+  if (c.block && p.cut >= 0) {
+    const auto [file, line] = c.block(p.cut);
+    s += fmt::format(", the wall of line {}{}", line, file ? " of " + file->name() : std::string());
   }
   return s;
 }
@@ -124,7 +125,7 @@ nlohmann::json curve_json(const CurveCheck& c) {
     if (k < 0) return nullptr;
     const sim::WallPoint& p = w.points[static_cast<std::size_t>(k)];
     nlohmann::json at = {{"t", p.t}, {"curve_point", {p.x, p.y}}, {"normal", {p.nx, p.ny}}, {"z", p.level}};
-    if (c.cuts && p.cut >= 0) at["line"] = (*c.cuts)[static_cast<std::size_t>(p.cut)].line;
+    if (c.block && p.cut >= 0) at["line"] = c.block(p.cut).second;
     return at;
   };
   j["design"] = w.design == sim::WallDesign::groove ? "groove" : "edge";
@@ -180,10 +181,12 @@ std::string verify_text(const VerifyReport& r) {
     if (c.no_tool) out += fmt::format("  not cut        {} moves with no tool (before the first T code, or T0)\n", c.no_tool);
     if (c.not_zx_arc) out += fmt::format("  not cut        {} arcs outside G18\n", c.not_zx_arc);
     if (c.after) out += fmt::format("  not cut        {} motions after the ones asked for\n", c.after);
-    const auto& found = r.section_sink->findings();
-    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material, the holder in the bar, the tool in a fixture)\n",
-                       found.size() + r.section_sink->findings_left_out(),
-                       r.section_sink->findings_left_out() ? fmt::format(" ({} listed)", found.size()) : std::string());
+    const std::size_t found = r.section_sink->findings().size() + (r.curve ? r.curve->findings.size() : 0);
+    out += fmt::format("  findings       {}{} (a lathe's: a rapid through material, the holder in the bar, the tool in a "
+                       "fixture, the surface against a curve)\n",
+                       found + r.section_sink->findings_left_out(),
+                       r.section_sink->findings_left_out() ? fmt::format(" ({} listed)", found) : std::string());
+    if (r.curve) out += curve_text(*r.curve, 15);
     if (!r.part_file.empty()) out += fmt::format("  part           {}\n", r.part_file);
     return out;
   }
@@ -237,7 +240,10 @@ nlohmann::json verify_json(const VerifyReport& r) {
     j["moves_cut"] = c.cut;
     j["moves_not_cut"] = {{"no_tool", c.no_tool}, {"not_zx_arc", c.not_zx_arc}, {"after", c.after}};
     j["findings"] = findings_json(r.section_sink->findings());
+    if (r.curve)
+      for (const nlohmann::json& f : findings_json(r.curve->findings)) j["findings"].push_back(f);
     j["findings_left_out"] = r.section_sink->findings_left_out();
+    if (r.curve) j["curve"] = curve_json(*r.curve);
     j["part"] = r.part_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.part_file);
     return j;
   }

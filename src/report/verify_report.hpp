@@ -18,7 +18,7 @@ struct CurveCheck {
   std::string curve;                        // its name
   double tol = 0;                           // mm
   const sim::WallReport* walls = nullptr;   // null: not measured (refused says why)
-  const sim::CutLog* cuts = nullptr;        // the cuts the walls' points name
+  sim::BlockOf block;                       // the block of a wall point's cut (none: not named)
   std::vector<sim::Finding> findings;       // NC2087, NC2088
   std::string refused;
 };

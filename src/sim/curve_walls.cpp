@@ -14,37 +14,6 @@ namespace ncurve::sim {
 
 namespace {
 
-// The curve's parameters at about equal steps of length in XY.
-std::vector<double> points_along(const geom::Curve& curve, const WallOptions& o) {
-  constexpr int kSurvey = 4096;
-  std::vector<double> t(kSurvey + 1), length(kSurvey + 1, 0);
-  double px = 0, py = 0;
-  for (int k = 0; k <= kSurvey; ++k) {
-    t[k] = curve.t0() + (curve.t1() - curve.t0()) * k / kSurvey;
-    const geom::Vec3 p = curve.point(t[k]);
-    if (k > 0) {
-      const double step = std::hypot(p[0] - px, p[1] - py);
-      length[k] = length[k - 1] + (std::isfinite(step) ? step : 0);
-    }
-    px = p[0], py = p[1];
-  }
-  const double total = length.back();
-  if (!(total > 0)) throw std::runtime_error(fmt::format("the curve {} has no length in the XY plane", curve.name()));
-  const auto n = static_cast<std::size_t>(
-      std::clamp(total / o.spacing, static_cast<double>(o.min_points), static_cast<double>(o.max_points)));
-  std::vector<double> out;
-  out.reserve(n + 1);
-  std::size_t k = 1;
-  for (std::size_t i = 0; i <= n; ++i) {
-    const double s = total * static_cast<double>(i) / static_cast<double>(n);
-    while (k < length.size() - 1 && length[k] < s) ++k;
-    const double span = length[k] - length[k - 1];
-    const double f = span > 0 ? std::clamp((s - length[k - 1]) / span, 0.0, 1.0) : 0.0;
-    out.push_back(t[k - 1] + f * (t[k] - t[k - 1]));
-  }
-  return out;
-}
-
 // Where the material starts along p + s u at `level`, from s_in (under the cut) out to s_in +
 // reach: marching in steps, then halving the step that leaves the cut. The wall's s and the cut
 // that made it; nullopt when p + s_in u is not under the cut.
@@ -75,6 +44,37 @@ std::optional<Wall> find_wall(const CutLog& cuts, double px, double py, double u
 
 }  // namespace
 
+std::vector<double> points_along(const geom::Curve& curve, const WallOptions& o,
+                                 const std::function<std::array<double, 2>(double t)>& at) {
+  constexpr int kSurvey = 4096;
+  std::vector<double> t(kSurvey + 1), length(kSurvey + 1, 0);
+  double px = 0, py = 0;
+  for (int k = 0; k <= kSurvey; ++k) {
+    t[k] = curve.t0() + (curve.t1() - curve.t0()) * k / kSurvey;
+    const std::array<double, 2> p = at(t[k]);
+    if (k > 0) {
+      const double step = std::hypot(p[0] - px, p[1] - py);
+      length[k] = length[k - 1] + (std::isfinite(step) ? step : 0);
+    }
+    px = p[0], py = p[1];
+  }
+  const double total = length.back();
+  if (!(total > 0)) throw std::runtime_error(fmt::format("the curve {} has no length in the plane measured", curve.name()));
+  const auto n = static_cast<std::size_t>(
+      std::clamp(total / o.spacing, static_cast<double>(o.min_points), static_cast<double>(o.max_points)));
+  std::vector<double> out;
+  out.reserve(n + 1);
+  std::size_t k = 1;
+  for (std::size_t i = 0; i <= n; ++i) {
+    const double s = total * static_cast<double>(i) / static_cast<double>(n);
+    while (k < length.size() - 1 && length[k] < s) ++k;
+    const double span = length[k] - length[k - 1];
+    const double f = span > 0 ? std::clamp((s - length[k - 1]) / span, 0.0, 1.0) : 0.0;
+    out.push_back(t[k - 1] + f * (t[k] - t[k - 1]));
+  }
+  return out;
+}
+
 std::size_t WallReport::beyond(double tol) const {
   return static_cast<std::size_t>(
       std::count_if(points.begin(), points.end(), [&](const WallPoint& p) { return std::abs(p.error) > tol; }));
@@ -90,7 +90,11 @@ WallReport measure_walls(const CutLog& cuts, const geom::Curve& curve, const Wal
     sum2 += w.error * w.error;
     r.points.push_back(w);
   };
-  for (const double t : points_along(curve, o)) {
+  auto xy = [&](double t) {
+    const geom::Vec3 p = curve.point(t);
+    return std::array<double, 2>{p[0], p[1]};
+  };
+  for (const double t : points_along(curve, o, xy)) {
     const geom::Curve::Jet j = curve.jet(t);
     const double px = j.p[0], py = j.p[1], dx = j.d1[0], dy = j.d1[1];
     const double speed = std::hypot(dx, dy);
@@ -152,7 +156,14 @@ WallReport measure_walls(const CutLog& cuts, const geom::Curve& curve, const Wal
   return r;
 }
 
-std::vector<Finding> wall_findings(const CutLog& cuts, const WallReport& walls, double tol) {
+BlockOf block_of(const CutLog& cuts) {
+  return [&cuts](std::int64_t k) {
+    const CutLog::Cut& c = cuts[static_cast<std::size_t>(k)];
+    return std::pair{c.file, c.line};
+  };
+}
+
+std::vector<Finding> wall_findings(const BlockOf& block, const WallReport& walls, double tol) {
   // the worst point of each block and code, listed in the order of the blocks' first cuts
   struct Worst {
     std::int64_t first_cut;
@@ -162,8 +173,8 @@ std::vector<Finding> wall_findings(const CutLog& cuts, const WallReport& walls, 
   for (std::size_t k = 0; k < walls.points.size(); ++k) {
     const WallPoint& p = walls.points[k];
     if (!(std::abs(p.error) > tol) || p.cut < 0) continue;
-    const CutLog::Cut& c = cuts[static_cast<std::size_t>(p.cut)];
-    auto [it, added] = worst.try_emplace({c.file, c.line, p.error > 0}, Worst{p.cut, k});
+    const auto [file, line] = block(p.cut);
+    auto [it, added] = worst.try_emplace({file, line, p.error > 0}, Worst{p.cut, k});
     if (added) continue;
     it->second.first_cut = std::min(it->second.first_cut, p.cut);
     if (std::abs(p.error) > std::abs(walls.points[it->second.point].error)) it->second.point = k;
@@ -174,14 +185,14 @@ std::vector<Finding> wall_findings(const CutLog& cuts, const WallReport& walls, 
   std::vector<Finding> out;
   for (const auto& [first, k] : order) {
     const WallPoint& p = walls.points[k];
-    const CutLog::Cut& c = cuts[static_cast<std::size_t>(p.cut)];
     machine::Move m;
-    m.file = c.file;
-    m.line = c.line;
+    std::tie(m.file, m.line) = block(p.cut);
     const double s = p.design_offset + p.error;  // the wall found, from the curve
-    const std::array<double, 3> at{p.x + s * p.nx, p.y + s * p.ny, p.level};
+    const double u = p.x + s * p.nx, v = p.y + s * p.ny;
+    const std::array<double, 3> at = walls.turned ? std::array<double, 3>{v, 0, u} : std::array<double, 3>{u, v, p.level};
     const std::string where =
-        fmt::format("at t = {:.6g} of the curve (X{:.4f} Y{:.4f}, at Z{:.4f})", p.t, p.x, p.y, p.level);
+        walls.turned ? fmt::format("at t = {:.6g} of the curve (Z{:.4f}, radius {:.4f})", p.t, p.x, p.y)
+                     : fmt::format("at t = {:.6g} of the curve (X{:.4f} Y{:.4f}, at Z{:.4f})", p.t, p.x, p.y, p.level);
     if (p.error > 0)
       out.push_back(finding_at(m, "NC2087",
                                fmt::format("the cut goes {:.4f} mm beyond the design's wall {}, more than the tolerance "

@@ -3,7 +3,10 @@
 // and compared with the design's wall: how far the cut went beyond it (a gouge) or stopped short
 // (stock left). docs/verify.md, "Against a curve".
 #pragma once
+#include <array>
 #include <cstdint>
+#include <functional>
+#include <utility>
 #include <vector>
 
 #include "geom/curve.hpp"
@@ -41,6 +44,7 @@ struct WallPoint {
 
 struct WallReport {
   WallDesign design = WallDesign::groove;
+  bool turned = false;            // a lathe's: the points' x is Z and y the radius (section_walls.hpp)
   std::vector<WallPoint> points;  // the walls measured
   std::size_t not_cut = 0;        // curve points the tool never reached (no groove, or no edge cut there)
   std::size_t no_design = 0;      // a groove's side where the curve turns tighter than the tool: no offset wall
@@ -54,8 +58,17 @@ struct WallReport {
 // Throws std::runtime_error when the curve has no extent in XY.
 WallReport measure_walls(const CutLog& cuts, const geom::Curve& curve, const WallOptions& options);
 
+// The block of a wall point's `cut` (its file and line).
+using BlockOf = std::function<std::pair<const nc::SourceFile*, std::uint32_t>(std::int64_t cut)>;
+BlockOf block_of(const CutLog& cuts);
+
 // NC2087 (a gouge beyond tol) and NC2088 (stock left beyond tol), one per block and code at its
-// worst point.
-std::vector<Finding> wall_findings(const CutLog& cuts, const WallReport& walls, double tol);
+// worst point, in the order of the points' cuts.
+std::vector<Finding> wall_findings(const BlockOf& block, const WallReport& walls, double tol);
+
+// The curve's parameters at about equal steps of its length in the plane of `at` (t -> u, v),
+// as many as the options ask. Throws std::runtime_error when the curve has no length there.
+std::vector<double> points_along(const geom::Curve& curve, const WallOptions& options,
+                                 const std::function<std::array<double, 2>(double t)>& at);
 
 }  // namespace ncurve::sim

@@ -344,29 +344,34 @@ std::vector<std::vector<V2>> LatheSection::polygons() const {
 
 namespace {
 
-// The radii where the line Z = z crosses the section's boundary, in units; `pick` keeps one.
-template <class Pick>
-double radius_at(const Paths& section, double z, Pick pick) {
-  if (!std::isfinite(z)) return kNaN;
+// Each radius (in units) where the line Z = z crosses the section's boundary, to `f`.
+template <class F>
+void each_crossing(const Paths& section, double z, F f) {
+  if (!std::isfinite(z)) return;
   const double u = z / kSectionUnit;
-  bool any = false;
-  double best = 0;
-  auto keep = [&](double y) {
-    best = any ? pick(best, y) : y;
-    any = true;
-  };
   for (const Path& p : section)
     for (std::size_t i = 0, n = p.size(); i < n; ++i) {
       const IntPoint &a = p[i], &b = p[(i + 1) % n];
       const double az = static_cast<double>(a.Y), bz = static_cast<double>(b.Y);
       if (u < std::min(az, bz) || u > std::max(az, bz)) continue;
       if (a.Y == b.Y) {
-        keep(static_cast<double>(a.X));
-        keep(static_cast<double>(b.X));
+        f(static_cast<double>(a.X));
+        f(static_cast<double>(b.X));
       } else {
-        keep(a.X + (b.X - a.X) * (u - az) / (bz - az));
+        f(a.X + (b.X - a.X) * (u - az) / (bz - az));
       }
     }
+}
+
+// The crossing `pick` keeps, mm; NaN where there is none.
+template <class Pick>
+double radius_at(const Paths& section, double z, Pick pick) {
+  bool any = false;
+  double best = 0;
+  each_crossing(section, z, [&](double y) {
+    best = any ? pick(best, y) : y;
+    any = true;
+  });
   return any ? best * kSectionUnit : kNaN;
 }
 
@@ -375,6 +380,14 @@ double radius_at(const Paths& section, double z, Pick pick) {
 double LatheSection::outer_radius(double z) const {
   flush();
   return radius_at(s_->section, z, [](double a, double b) { return std::max(a, b); });
+}
+
+std::vector<double> LatheSection::crossings(double z) const {
+  flush();
+  std::vector<double> out;
+  each_crossing(s_->section, z, [&](double y) { out.push_back(y * kSectionUnit); });
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 double LatheSection::inner_radius(double z) const {

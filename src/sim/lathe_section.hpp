@@ -73,6 +73,8 @@ public:
   // The largest and smallest radius of material on the line Z = z (the outer and inner contour); NaN
   // where there is none.
   double outer_radius(double z) const;
+  // Every radius where the line Z = z crosses the section's boundary, in order.
+  std::vector<double> crossings(double z) const;
   double inner_radius(double z) const;
 
   // The part: every contour of the section revolved about Z in `segments` equal steps (3 to 65536),

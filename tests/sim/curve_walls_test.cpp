@@ -46,7 +46,7 @@ TEST(CurveWalls, StraightGrooveOnTheLineHasNoError) {
     EXPECT_DOUBLE_EQ(p.design_offset, 1.5);
     EXPECT_DOUBLE_EQ(p.level, -0.25);  // halfway from the floor to the top
   }
-  EXPECT_TRUE(wall_findings(cuts, r, 0.01).empty());
+  EXPECT_TRUE(wall_findings(block_of(cuts), r, 0.01).empty());
 }
 
 TEST(CurveWalls, GrooveBesideTheLineGougesOneWallAndLeavesTheOther) {
@@ -58,14 +58,14 @@ TEST(CurveWalls, GrooveBesideTheLineGougesOneWallAndLeavesTheOther) {
   EXPECT_NEAR(r.largest_gouge, 0.02, 1e-6);
   EXPECT_NEAR(r.largest_left, 0.02, 1e-6);
   for (const WallPoint& p : r.points) EXPECT_NEAR(p.error, p.ny > 0 ? 0.02 : -0.02, 1e-6);
-  const std::vector<Finding> f = wall_findings(cuts, r, 0.01);
+  const std::vector<Finding> f = wall_findings(block_of(cuts), r, 0.01);
   ASSERT_EQ(f.size(), 2u);  // one a block and code
   EXPECT_EQ(f[0].diagnostic.code, "NC2087");
   EXPECT_EQ(f[1].diagnostic.code, "NC2088");
   EXPECT_EQ(f[0].diagnostic.span.line, 10u);
   EXPECT_NEAR(f[0].amount, 0.02, 1e-6);
   EXPECT_NEAR(f[0].at[1], 1.52, 1e-6);  // the gouged wall, 1.5 + 0.02 from the curve
-  EXPECT_TRUE(wall_findings(cuts, r, 0.03).empty());
+  EXPECT_TRUE(wall_findings(block_of(cuts), r, 0.03).empty());
 }
 
 TEST(CurveWalls, BallGrooveWallAtHalfDepth) {

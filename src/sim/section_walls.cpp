@@ -1,0 +1,93 @@
+#include "sim/section_walls.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "machine/arc_points.hpp"
+
+namespace ncurve::sim {
+
+namespace {
+double segment_distance(double az, double ar, double bz, double br, double z, double r) {
+  const double vz = bz - az, vr = br - ar, a = vz * vz + vr * vr;
+  const double t = a > 0 ? std::clamp(((z - az) * vz + (r - ar) * vr) / a, 0.0, 1.0) : 0.0;
+  return std::hypot(z - az - t * vz, r - ar - t * vr);
+}
+}  // namespace
+
+void ProfileMoves::on_move(const machine::Move& m) {
+  if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
+  auto add = [&](const machine::AxisVector& a, const machine::AxisVector& b) {
+    segments_.push_back({a[2], std::fabs(a[0]), b[2], std::fabs(b[0]), m.file, m.line});
+  };
+  if (m.kind == machine::MoveKind::line || m.plane != 18) {
+    add(m.start, m.end);
+    return;
+  }
+  machine::AxisVector from = m.start;
+  machine::arc_points(m, 1e-3, [&](const machine::AxisVector& p) {
+    add(from, p);
+    from = p;
+  });
+}
+
+std::int64_t ProfileMoves::nearest(double z, double r) const {
+  std::int64_t best = -1;
+  double d = INFINITY;
+  for (std::size_t k = 0; k < segments_.size(); ++k) {
+    const Segment& s = segments_[k];
+    const double e = segment_distance(s.z0, s.r0, s.z1, s.r1, z, r);
+    if (e < d) d = e, best = static_cast<std::int64_t>(k);
+  }
+  return best;
+}
+
+BlockOf ProfileMoves::block() const {
+  return [this](std::int64_t k) {
+    const Segment& s = segments_[static_cast<std::size_t>(k)];
+    return std::pair{s.file, s.line};
+  };
+}
+
+WallReport measure_section_walls(const LatheSection& section, const ProfileMoves& moves, const geom::Curve& curve,
+                                 const geom::Placement& place, const WallOptions& o) {
+  WallReport r;
+  r.design = WallDesign::edge;
+  r.turned = true;
+  auto zr = [&](double t) {
+    const geom::Vec3 p = place(curve.point(t));
+    return std::array<double, 2>{p[2], p[0]};
+  };
+  double sum2 = 0;
+  for (const double t : points_along(curve, o, zr)) {
+    const geom::Curve::Jet j = curve.jet(t);
+    const geom::Vec3 p = place(j.p), d = place.direction(j.d1);
+    const double z = p[2], radius = p[0], dz = d[2], dr = d[0], speed = std::hypot(dz, dr);
+    if (!(speed > 0) || !std::isfinite(z + radius)) continue;
+    const double nr = std::fabs(dz) / speed;  // the normal's radial part
+    if (nr < std::sin(6 * 3.141592653589793 / 180)) {
+      ++r.no_design;
+      continue;
+    }
+    // the part's surface: the boundary nearest the curve on the radial line at z (a ring of stock
+    // left farther out, beyond the insert's reach, is not the surface cut here)
+    const std::vector<double> across = section.crossings(z);
+    double part = NAN;
+    for (double c : across)
+      if (std::isnan(part) || std::fabs(c - radius) < std::fabs(part - radius)) part = c;
+    const double left = std::isnan(part) ? -radius : part - radius;  // + stock left above the curve
+    WallPoint w;
+    w.t = t, w.x = z, w.y = radius;
+    w.nx = (dz > 0 ? dr : -dr) / speed, w.ny = -nr;  // into the material, towards the axis (as a wall's)
+    w.error = -left * nr;
+    w.cut = moves.nearest(z, std::isnan(part) ? radius : part);
+    if (w.error > r.largest_gouge) r.largest_gouge = w.error, r.gouge_at = static_cast<std::int64_t>(r.points.size());
+    if (-w.error > r.largest_left) r.largest_left = -w.error, r.left_at = static_cast<std::int64_t>(r.points.size());
+    sum2 += w.error * w.error;
+    r.points.push_back(w);
+  }
+  if (!r.points.empty()) r.rms = std::sqrt(sum2 / static_cast<double>(r.points.size()));
+  return r;
+}
+
+}  // namespace ncurve::sim
