@@ -77,9 +77,23 @@ void LatheSectionSink::change_tool(int t_code) {
   tool_ = it->second.cutting.empty() ? nullptr : &it->second;
 }
 
+namespace {
+
+// The length of the tip's path along a line or an arc of the ZX plane, mm.
+double path_length(const machine::Move& m) {
+  if (m.kind != machine::MoveKind::arc) return std::hypot(m.end[0] - m.start[0], m.end[2] - m.start[2]);
+  const double r0 = std::hypot(m.start[0] - m.center[0], m.start[2] - m.center[2]);
+  const double r1 = std::hypot(m.end[0] - m.center[0], m.end[2] - m.center[2]);
+  return std::fabs(m.sweep) * std::max(r0, r1);
+}
+
+}  // namespace
+
 void LatheSectionSink::on_move(const machine::Move& m) {
   using machine::MoveKind;
   if (m.kind == MoveKind::tool_change) return change_tool(m.code);
+  if (m.kind == MoveKind::spindle) spindle_on_ = m.code == 3 || m.code == 4;
+  if (m.kind == MoveKind::program_end) spindle_on_ = false;
   if (!m.is_motion()) return;
   if (motions_++ >= options_.cut_moves) {
     ++counts_.after;
@@ -100,26 +114,26 @@ void LatheSectionSink::on_move(const machine::Move& m) {
     f.in = false;
   }
   if (m.kind == MoveKind::rapid) return rapid(m);
+  const double before = spindle_on_ ? 0 : section_.area();  // the bar standing still: does this cut?
   if (!section_.cut(tool_->cutting, m)) {
     ++counts_.not_finite;
     return;
   }
   ++counts_.cut;
+  if (!spindle_on_) {
+    const double removed = before - section_.area();
+    if (removed > 1e-3 * std::max(path_length(m), 1.0))
+      find(m, "NC2083",
+           fmt::format("a cut removes material with the spindle stopped (no M03/M04 since the start, or M05/M19 "
+                       "before): {:.3f} mm^2 of the bar's half-section; the insert meets a bar standing still and "
+                       "breaks: start the spindle before the cut",
+                       removed),
+           {m.end[0], m.end[1], m.end[2]}, removed);
+  }
   check_bodies(m, m);
   check_fixtures(m, m);
 }
 
-namespace {
-
-// The length of the tip's path along a line or an arc of the ZX plane, mm.
-double path_length(const machine::Move& m) {
-  if (m.kind != machine::MoveKind::arc) return std::hypot(m.end[0] - m.start[0], m.end[2] - m.start[2]);
-  const double r0 = std::hypot(m.start[0] - m.center[0], m.start[2] - m.center[2]);
-  const double r1 = std::hypot(m.end[0] - m.center[0], m.end[2] - m.center[2]);
-  return std::fabs(m.sweep) * std::max(r0, r1);
-}
-
-}  // namespace
 
 void LatheSectionSink::check_bodies(const machine::Move& m, const machine::Move& piece) {
   const double limit = 1e-3 * std::max(path_length(piece), 1.0);

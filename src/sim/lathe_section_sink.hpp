@@ -63,7 +63,8 @@ public:
   //   area);
   // - NC2085: the holder (lathe_holder.hpp) swept into material at the move, after its cut (more than
   //   1 um times the move's length, at least 1 mm, of area), said at the move that makes the contact;
-  // - NC2086: the insert or its holder swept into a fixture's ring (the same measure), likewise.
+  // - NC2086: the insert or its holder swept into a fixture's ring (the same measure), likewise;
+  // - NC2083: a feed move removed material with the spindle stopped (the NC2080 measure).
   const std::vector<Finding>& findings() const { return findings_; }
   std::size_t findings_left_out() const { return left_out_; }
 
@@ -97,6 +98,7 @@ private:
   const TurretTool* tool_ = nullptr;
   std::uint64_t motions_ = 0;
   bool holder_was_ = false, holder_in_ = false;  // in material after the move before, after this one
+  bool spindle_on_ = false;  // M03/M04 since the start, not M05/M19 after
   int tool_number_ = 0;
   double volume_at_change_ = 0;
   std::map<int, double> volume_by_tool_;

@@ -76,7 +76,7 @@ Checked check(const std::string& program, const Cylinder& stock, const ToolLibra
 
 // From radius 40 at Z-20 (beside a D50 bar, outside it) to radius 20 at Z10 (in front of its face).
 // X programmed as a diameter.
-const char* kDogLeg = "G21 G99 G18\nG00 X80. Z-20.\nT0101\nG00 X40. Z10.\nM30\n";
+const char* kDogLeg = "G21 G99 G18 M03 S500\nG00 X80. Z-20.\nT0101\nG00 X40. Z10.\nM30\n";
 
 }  // namespace
 
@@ -134,7 +134,7 @@ double insert_height() {
 }
 
 std::string turn_pass(double diameter) {
-  return "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X" + std::to_string(diameter) +
+  return "G21 G99 G18 M03 S500\nG00 X200. Z50.\nT0101\nG00 X" + std::to_string(diameter) +
          " Z2.\nG01 Z-30. F0.2\nG00 Z2.\nG00 X100.\nM30\n";
 }
 
@@ -197,7 +197,7 @@ ToolLibrary blade() {
 }
 
 std::string blade_pass(const std::string& z) {
-  return "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X48. Z2.\nG01 Z" + z + " F0.2\nG00 Z2.\nG00 X200.\nM30\n";
+  return "G21 G99 G18 M03 S500\nG00 X200. Z50.\nT0101\nG00 X48. Z2.\nG01 Z" + z + " F0.2\nG00 Z2.\nG00 X200.\nM30\n";
 }
 
 }  // namespace
@@ -241,7 +241,7 @@ ToolLibrary boring_bar() {
 Fixture tailstock() { return {"tailstock centre", AxisBox{{-5, -5, 200}, {5, 5, 260}}}; }
 
 std::string boring_move(const std::string& z) {
-  return "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X40. Z20.\nG01 Z" + z + " F0.2\nG00 X200.\nM30\n";
+  return "G21 G99 G18 M03 S500\nG00 X200. Z50.\nT0101\nG00 X40. Z20.\nG01 Z" + z + " F0.2\nG00 X200.\nM30\n";
 }
 
 }  // namespace
@@ -278,7 +278,7 @@ ToolLibrary drill_in_holder() {
 }
 
 std::string drilling(const std::string& z) {
-  return "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X0 Z3.\nG01 Z" + z + " F0.1\nG00 Z50.\nM30\n";
+  return "G21 G99 G18 M03 S500\nG00 X200. Z50.\nT0101\nG00 X0 Z3.\nG01 Z" + z + " F0.1\nG00 Z50.\nM30\n";
 }
 
 }  // namespace
@@ -311,3 +311,30 @@ TEST(LatheChecks, BadNumbersNeverCrash) {
   profile.rapid_rate[0] = 0;
   EXPECT_TRUE(check(kDogLeg, bar(50, 100), turning(0.4), profile, &profile).findings.empty());
 }
+
+namespace ncurve::sim {
+namespace {
+
+// NC2083 on a lathe: the pass 3 deep into the D50 bar (to radius 22) with no M03, or after an M05,
+// removes 30 x 3 mm^2 of the section at the G01 (line 5): found; the same with the spindle turning,
+// and a feed move in front of the face with it stopped, clean.
+TEST(LatheChecks, CutWithTheSpindleStopped) {
+  const auto profile = machine::default_lathe();
+  std::string stopped = turn_pass(44);
+  stopped.replace(stopped.find(" M03 S500"), 9, "");
+  const Checked no_m03 = check(stopped, bar(50, 100), turning(0), profile, nullptr);
+  ASSERT_EQ(no_m03.of("NC2083").size(), 1u);
+  EXPECT_EQ(no_m03.of("NC2083")[0]->diagnostic.span.line, 5u);
+  // the ring 30 x 3 less the triangle the insert's edge across the axis leaves at Z-30, leaning back
+  // 5 degrees (its clearance): 3 x 3 tan 5 / 2
+  EXPECT_NEAR(no_m03.of("NC2083")[0]->amount, 90 - 4.5 * std::tan(5 * std::numbers::pi / 180), 1e-3);
+  std::string m05 = turn_pass(44);
+  m05.replace(m05.find("T0101\n"), 6, "T0101 M05\n");
+  EXPECT_EQ(check(m05, bar(50, 100), turning(0), profile, nullptr).of("NC2083").size(), 1u);
+  EXPECT_TRUE(check(turn_pass(44), bar(50, 100), turning(0), profile, nullptr).of("NC2083").empty());
+  const std::string air = "G21 G99 G18\nG00 X200. Z50.\nT0101\nG00 X60. Z10.\nG01 X0 F0.2\nG00 Z50.\nM30\n";
+  EXPECT_TRUE(check(air, bar(50, 100), turning(0), profile, nullptr).of("NC2083").empty());
+}
+
+}  // namespace
+}  // namespace ncurve::sim

@@ -325,7 +325,7 @@ TEST(LatheSectionSink, G71G70PartIsItsProfile) {
 // X18.16 = 20 - 2 x 0.92.
 TEST(LatheSectionSink, G76ThreadRootDiameter) {
   auto profile = machine::default_lathe();
-  auto r = test::run("G21 G99 G18\nT0101\nG00 X24. Z5.\nG76 P010060 Q50 R0.05\n"
+  auto r = test::run("G21 G99 G18 M03 S500\nT0101\nG00 X24. Z5.\nG76 P010060 Q50 R0.05\n"
                      "G76 X18.16 Z-24. P920 Q350 F1.5\nG00 X50. Z50.\nM30\n",
                      profile);
   ASSERT_TRUE(r.result.ok());
@@ -481,7 +481,7 @@ TEST(LatheSection, BadInputsNeverCrash) {
 // rapid outside the bar and one back along a diameter just turned are clean.
 TEST(LatheSectionSink, RapidIntoTheBarIsFound) {
   auto profile = machine::default_lathe();
-  auto r = test::run("G21 G99 G18\nT0101\nG00 X60. Z2.\nG00 X52. Z2.\nG00 X40. Z-10.\nG00 X60. Z2.\n"
+  auto r = test::run("G21 G99 G18 M03 S500\nT0101\nG00 X60. Z2.\nG00 X52. Z2.\nG00 X40. Z-10.\nG00 X60. Z2.\n"
                      "G00 X44. Z2.\nG01 Z-30. F0.2\nG00 Z2.\nG00 X100. Z50.\nM30\n",
                      profile);
   ASSERT_TRUE(r.result.ok());
