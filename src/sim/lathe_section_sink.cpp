@@ -63,7 +63,14 @@ void LatheSectionSink::change_tool(int t_code) {
     if (auto t = tools_.tools.find(tool_number_); t != tools_.tools.end()) {
       tool.cutting = tool_outline(t->second, options_.size);
       tool.bodies = lathe_bodies(t->second, tool.cutting);
-      if (std::holds_alternative<MillTool>(t->second)) tool.what = "cutting end";
+      if (const auto* mill = std::get_if<MillTool>(&t->second)) {
+        tool.what = "cutting end";
+        const double f = mill->flute_length, r = mill->diameter / 2, top = f + std::max(mill->stick_out - f, 4 * r);
+        if (f > 0 && r > 0 && std::isfinite(top) && top < 1e6) {
+          tool.past_flutes.points = {{f, -r}, {top, -r}, {top, r}, {f, r}};
+          tool.flute_length = f;
+        }
+      }
     } else {
       auto o = offsets_.find(t_code % 100);
       const machine::LatheOffset offset = o == offsets_.end() ? machine::LatheOffset{} : o->second;
@@ -114,6 +121,16 @@ void LatheSectionSink::on_move(const machine::Move& m) {
     f.in = false;
   }
   if (m.kind == MoveKind::rapid) return rapid(m);
+  if (!tool_->past_flutes.empty()) {  // before the cut: what the part above the flutes goes through
+    const LatheSection::Overlap o = section_.overlap(tool_->past_flutes, m);
+    if (o.area > 1e-3 * std::max(path_length(m), 1.0))
+      find(m, "NC2081",
+           fmt::format("T{} goes into material past its flutes ({:g} mm): {:.3f} mm^2 of the bar's half-section is "
+                       "cut by its body above them, about Z{:.3f} radius {:.3f}; the chips cannot leave and the tool "
+                       "breaks: peck, or a tool with longer flutes",
+                       tool_number_, tool_->flute_length, o.area, o.centroid.x, o.centroid.y),
+           {o.centroid.y, 0, o.centroid.x}, o.area);
+  }
   const double before = spindle_on_ ? 0 : section_.area();  // the bar standing still: does this cut?
   if (!section_.cut(tool_->cutting, m)) {
     ++counts_.not_finite;

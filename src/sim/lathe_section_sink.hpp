@@ -64,7 +64,9 @@ public:
   // - NC2085: the holder (lathe_holder.hpp) swept into material at the move, after its cut (more than
   //   1 um times the move's length, at least 1 mm, of area), said at the move that makes the contact;
   // - NC2086: the insert or its holder swept into a fixture's ring (the same measure), likewise;
-  // - NC2083: a feed move removed material with the spindle stopped (the NC2080 measure).
+  // - NC2083: a feed move removed material with the spindle stopped (the NC2080 measure);
+  // - NC2081: a mill tool on the spindle axis (a drill) goes into material past its flutes: its
+  //   cutting diameter from the flutes' end up sweeps uncut material (the NC2085 measure).
   const std::vector<Finding>& findings() const { return findings_; }
   std::size_t findings_left_out() const { return left_out_; }
 
@@ -74,6 +76,8 @@ public:
 private:
   struct TurretTool {
     ToolOutline cutting;
+    ToolOutline past_flutes;  // a mill tool's: its cutting diameter from the flutes' end up (NC2081)
+    double flute_length = 0;
     std::vector<LatheBody> bodies;
     const char* what = "insert";  // the cutting part, in words
   };

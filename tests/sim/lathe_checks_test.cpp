@@ -284,14 +284,27 @@ std::string drilling(const std::string& z) {
 }  // namespace
 
 // Drilling to Z-65 takes the holder's face (60 above the tip) to Z-5: the bar's material about the
-// D8 hole, radius 4..16 over Z-5..0, is inside it: 5 x 12 mm^2. To Z-59.9 it stops 0.1 short.
+// D8 hole, radius 4..16 over Z-5..0, is inside it: 5 x 12 mm^2. To Z-59.9 it stops 0.1 short (and
+// the drill is past its flutes: DrillPastItsFlutes).
 TEST(LatheChecks, DrillHolderMeetsTheFace) {
   const auto profile = machine::default_lathe();
   const Checked c = check(drilling("-65."), bar(50, 100), drill_in_holder(), profile, nullptr);
   ASSERT_EQ(c.of("NC2085").size(), 1u);
   EXPECT_EQ(c.of("NC2085")[0]->diagnostic.span.line, 5u);
   EXPECT_NEAR(c.of("NC2085")[0]->amount, 5 * 12, 1e-3);
-  EXPECT_TRUE(check(drilling("-59.9"), bar(50, 100), drill_in_holder(), profile, nullptr).findings.empty());
+  EXPECT_TRUE(check(drilling("-59.9"), bar(50, 100), drill_in_holder(), profile, nullptr).of("NC2085").empty());
+}
+
+// NC2081 on a lathe: the D8 drill with 50 mm flutes fed from Z3 to Z-59.9 in one move takes its body
+// above the flutes (from 50 above the tip up) to Z-9.9, through the bar's uncut column of radius 4
+// over Z-9.9..0: 9.9 x 4 mm^2. To Z-49.9 that body stops 0.1 above the face: clean.
+TEST(LatheChecks, DrillPastItsFlutes) {
+  const auto profile = machine::default_lathe();
+  const Checked deep = check(drilling("-59.9"), bar(50, 100), drill_in_holder(), profile, nullptr);
+  ASSERT_EQ(deep.of("NC2081").size(), 1u);
+  EXPECT_EQ(deep.of("NC2081")[0]->diagnostic.span.line, 5u);
+  EXPECT_NEAR(deep.of("NC2081")[0]->amount, 9.9 * 4, 1e-3);
+  EXPECT_TRUE(check(drilling("-49.9"), bar(50, 100), drill_in_holder(), profile, nullptr).findings.empty());
 }
 
 // Numbers no setup should hold (a fuzzed one): fixtures of 1e300 and NaN, holders of NaN and 1e300,
