@@ -70,6 +70,7 @@ void LatheSectionSink::change_tool(int t_code) {
           tool.past_flutes.points = {{f, -r}, {top, -r}, {top, r}, {f, r}};
           tool.flute_length = f;
         }
+        if (!mill->centre_cutting && r > 0) tool.no_centre = r;
       }
     } else {
       auto o = offsets_.find(t_code % 100);
@@ -129,6 +130,17 @@ void LatheSectionSink::on_move(const machine::Move& m) {
                        "cut by its body above them, about Z{:.3f} radius {:.3f}; the chips cannot leave and the tool "
                        "breaks: peck, or a tool with longer flutes",
                        tool_number_, tool_->flute_length, o.area, o.centroid.x, o.centroid.y),
+           {o.centroid.y, 0, o.centroid.x}, o.area);
+  }
+  if (tool_->no_centre > 0 && m.end[2] < m.start[2] &&
+      std::fabs(m.end[0] - m.start[0]) < tool_->no_centre) {  // a plunge: does it meet material?
+    const LatheSection::Overlap o = section_.overlap(tool_->cutting, m);
+    if (o.area > 1e-3 * std::max(path_length(m), 1.0))
+      find(m, "NC2082",
+           fmt::format("T{} plunges into material towards the chuck, but does not cut at its centre: {:.3f} mm^2 of the "
+                       "bar's half-section ahead of it; the core it cannot cut rubs its end: a centre-cutting tool, or "
+                       "a drilled hole first",
+                       tool_number_, o.area),
            {o.centroid.y, 0, o.centroid.x}, o.area);
   }
   const double before = spindle_on_ ? 0 : section_.area();  // the bar standing still: does this cut?

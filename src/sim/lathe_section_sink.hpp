@@ -66,7 +66,9 @@ public:
   // - NC2086: the insert or its holder swept into a fixture's ring (the same measure), likewise;
   // - NC2083: a feed move removed material with the spindle stopped (the NC2080 measure);
   // - NC2081: a mill tool on the spindle axis (a drill) goes into material past its flutes: its
-  //   cutting diameter from the flutes' end up sweeps uncut material (the NC2085 measure).
+  //   cutting diameter from the flutes' end up sweeps uncut material (the NC2085 measure);
+  // - NC2082: a mill tool that does not cut at its centre, on the spindle axis, fed towards the chuck
+  //   with less travel across than its radius into material (the same measure).
   const std::vector<Finding>& findings() const { return findings_; }
   std::size_t findings_left_out() const { return left_out_; }
 
@@ -78,6 +80,7 @@ private:
     ToolOutline cutting;
     ToolOutline past_flutes;  // a mill tool's: its cutting diameter from the flutes' end up (NC2081)
     double flute_length = 0;
+    double no_centre = 0;     // a mill tool that does not cut at its centre: its radius (NC2082)
     std::vector<LatheBody> bodies;
     const char* what = "insert";  // the cutting part, in words
   };

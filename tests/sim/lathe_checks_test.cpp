@@ -351,3 +351,32 @@ TEST(LatheChecks, CutWithTheSpindleStopped) {
 
 }  // namespace
 }  // namespace ncurve::sim
+
+namespace ncurve::sim {
+namespace {
+
+// NC2082 on a lathe: a D10 end mill that does not cut at its centre, on the axis, fed from Z3 to
+// Z-5 into the D50 bar's face: its end (radius 5) takes 5 x 5 mm^2 of the section: found. The same
+// with a centre-cutting one, or the plunge stopping at Z0.5, clean.
+TEST(LatheChecks, PlungeWithoutACentreCuttingEdge) {
+  const auto profile = machine::default_lathe();
+  auto mill = [](bool centre) {
+    MillTool e;
+    e.kind = MillKind::flat;
+    e.diameter = 10;
+    e.flute_length = 20;
+    e.centre_cutting = centre;
+    ToolLibrary lib;
+    lib.tools[1] = e;
+    return lib;
+  };
+  const Checked plunge = check(drilling("-5."), bar(50, 100), mill(false), profile, nullptr);
+  ASSERT_EQ(plunge.of("NC2082").size(), 1u);
+  EXPECT_EQ(plunge.of("NC2082")[0]->diagnostic.span.line, 5u);
+  EXPECT_NEAR(plunge.of("NC2082")[0]->amount, 5 * 5, 1e-3);
+  EXPECT_TRUE(check(drilling("-5."), bar(50, 100), mill(true), profile, nullptr).of("NC2082").empty());
+  EXPECT_TRUE(check(drilling("0.5"), bar(50, 100), mill(false), profile, nullptr).of("NC2082").empty());
+}
+
+}  // namespace
+}  // namespace ncurve::sim
