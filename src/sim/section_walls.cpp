@@ -75,11 +75,16 @@ WallReport measure_section_walls(const LatheSection& section, const ProfileMoves
     double part = NAN;
     for (double c : across)
       if (std::isnan(part) || std::fabs(c - radius) < std::fabs(part - radius)) part = c;
-    const double left = std::isnan(part) ? -radius : part - radius;  // + stock left above the curve
+    // the material's side of that surface: below it (an outside profile) when an odd number of
+    // crossings lie below a point just under it
+    const bool below = std::isnan(part) ||
+                       std::count_if(across.begin(), across.end(), [&](double c) { return c < part - 1e-6; }) % 2 == 1;
+    const double beyond = std::isnan(part) ? radius : below ? radius - part : part - radius;  // + a gouge
     WallPoint w;
     w.t = t, w.x = z, w.y = radius;
-    w.nx = (dz > 0 ? dr : -dr) / speed, w.ny = -nr;  // into the material, towards the axis (as a wall's)
-    w.error = -left * nr;
+    const double sign = below ? 1 : -1;  // the normal into the material (as a wall's)
+    w.nx = sign * (dz > 0 ? dr : -dr) / speed, w.ny = -sign * nr;
+    w.error = beyond * nr;
     w.cut = moves.nearest(z, std::isnan(part) ? radius : part);
     if (w.error > r.largest_gouge) r.largest_gouge = w.error, r.gouge_at = static_cast<std::int64_t>(r.points.size());
     if (-w.error > r.largest_left) r.largest_left = -w.error, r.left_at = static_cast<std::int64_t>(r.points.size());

@@ -1,7 +1,8 @@
 // A turned part's surface against a profile curve (the walls of curve_walls.hpp on a lathe): at
 // points along the curve the section's boundary nearest the curve on the radial line through the
-// point is its surface, and the error is taken along the curve's normal. The curve is an outside
-// profile: the material lies towards the spindle axis. docs/verify.md, "Against a curve".
+// point is its surface, and the error is taken along the curve's normal; the material's side of the
+// surface there (below it for an outside profile, above it in a bore) says which way is a gouge.
+// docs/verify.md, "Against a curve".
 #pragma once
 #include <cstdint>
 #include <vector>

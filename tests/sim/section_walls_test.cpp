@@ -77,6 +77,20 @@ TEST(SectionWalls, BesideTheCurveIsAGougeOrStockLeft) {
   }
 }
 
+// The 8 mm drill's bore (radius 4 from the face to its point at Z-20): on its curve, clean; the
+// design at radius 3.98, the bore 0.02 beyond it (a gouge); at 4.03, 0.03 short (stock left).
+TEST(SectionWalls, ABoreIsMeasuredFromItsSide) {
+  Turned t;
+  const WallReport on = t.against("4", -15, -2), inside = t.against("3.98", -15, -2), outside = t.against("4.03", -15, -2);
+  ASSERT_GE(on.points.size(), 500u);
+  EXPECT_LT(std::max(on.largest_gouge, on.largest_left), kSectionResolution);
+  EXPECT_NEAR(inside.largest_gouge, 0.02, kSectionResolution);
+  EXPECT_EQ(inside.left_at, -1);
+  EXPECT_NEAR(outside.largest_left, 0.03, kSectionResolution);
+  EXPECT_EQ(outside.gouge_at, -1);
+  for (const WallPoint& p : inside.points) EXPECT_GT(p.ny, 0);  // into the material: away from the axis
+}
+
 TEST(SectionWalls, AFaceIsNotMeasured) {
   Turned t;
   geom::CurveSpec spec;  // the shoulder at Z-60: X from 20 to 25 at one Z
