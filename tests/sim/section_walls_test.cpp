@@ -20,14 +20,15 @@ struct Turned {
   SetupFile setup = read_setup(NCURVE_SOURCE_DIR "/examples/lathe-mrc.setup.toml");
   LatheSection section{std::get<Cylinder>(*setup.stock)};
   ProfileMoves moves;
+  test::Ran ran;  // its library holds the source the moves' blocks point into
   Turned() {
     std::ifstream in(NCURVE_SOURCE_DIR "/examples/lathe-mrc.nc");
     std::stringstream text;
     text << in.rdbuf();
-    auto r = test::run(text.str(), profile);
-    EXPECT_TRUE(r.result.ok());
+    ran = test::run(text.str(), profile);
+    EXPECT_TRUE(ran.result.ok());
     LatheSectionSink sink(section, setup.tools, profile.lathe_offsets);
-    for (const auto& m : r.moves) {
+    for (const auto& m : ran.moves) {
       sink.on_move(m);
       moves.on_move(m);
     }
