@@ -1,9 +1,11 @@
 #include "report/writers.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -22,35 +24,37 @@ void JsonlWriter::on_move(const Move& m) {
     file_json_ = nlohmann::json(m.file ? m.file->name() : std::string())
                      .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);  // not UTF-8: U+FFFD
   }
-  fmt::memory_buffer b;
-  auto it = std::back_inserter(b);
-  fmt::format_to(it, R"({{"kind":"{}","file":{},"line":{},"program":{})", machine::to_string(m.kind), file_json_,
-                 m.line, m.program);
+  fmt::memory_buffer& b = buffer_;  // kept: no run-time format parsing, no growth per record
+  b.clear();
+  auto it = fmt::appender(b);
+  fmt::format_to(it, FMT_COMPILE(R"({{"kind":"{}","file":{},"line":{},"program":{})"), machine::to_string(m.kind),
+                 file_json_, m.line, m.program);
   if (m.is_motion() || m.kind == MoveKind::dwell) {
-    fmt::format_to(it, R"(,"start":[{},{},{}],"end":[{},{},{}])", clean(frame_.x(m.start[0])), clean(m.start[1]),
-                   clean(m.start[2]), clean(frame_.x(m.end[0])), clean(m.end[1]), clean(m.end[2]));
+    fmt::format_to(it, FMT_COMPILE(R"(,"start":[{},{},{}],"end":[{},{},{}])"), clean(frame_.x(m.start[0])),
+                   clean(m.start[1]), clean(m.start[2]), clean(frame_.x(m.end[0])), clean(m.end[1]), clean(m.end[2]));
     bool rotary = m.start[3] != 0 || m.end[3] != 0 || m.start[4] != 0 || m.end[4] != 0 || m.start[5] != 0 ||
                   m.end[5] != 0;
     if (rotary)
-      fmt::format_to(it, R"(,"start_abc":[{},{},{}],"end_abc":[{},{},{}])", clean(m.start[3]), clean(m.start[4]),
-                     clean(m.start[5]), clean(m.end[3]), clean(m.end[4]), clean(m.end[5]));
+      fmt::format_to(it, FMT_COMPILE(R"(,"start_abc":[{},{},{}],"end_abc":[{},{},{}])"), clean(m.start[3]),
+                     clean(m.start[4]), clean(m.start[5]), clean(m.end[3]), clean(m.end[4]), clean(m.end[5]));
   }
   if (m.compensated)
-    fmt::format_to(it, R"(,"compensated":true,"programmed_end":[{},{},{}]{})", clean(frame_.x(m.programmed_end[0])),
-                   clean(m.programmed_end[1]), clean(m.programmed_end[2]), m.corner ? R"(,"corner":true)" : "");
+    fmt::format_to(it, FMT_COMPILE(R"(,"compensated":true,"programmed_end":[{},{},{}]{})"),
+                   clean(frame_.x(m.programmed_end[0])), clean(m.programmed_end[1]), clean(m.programmed_end[2]),
+                   m.corner ? R"(,"corner":true)" : "");
   if (m.kind == MoveKind::arc)
-    fmt::format_to(it, R"(,"center":[{},{},{}],"plane":"G{}","direction":"{}","sweep_deg":{})",
+    fmt::format_to(it, FMT_COMPILE(R"(,"center":[{},{},{}],"plane":"G{}","direction":"{}","sweep_deg":{})"),
                    clean(frame_.x(m.center[0])), clean(m.center[1]), clean(m.center[2]), m.plane,
                    m.clockwise ? "G02" : "G03", m.sweep * 180 / std::numbers::pi);
   if (m.kind == MoveKind::line || m.kind == MoveKind::arc)
-    fmt::format_to(it, R"(,"f":{},"feed_unit":"{}")", m.feed, m.feed_per_rev ? "mm/rev" : "mm/min");
+    fmt::format_to(it, FMT_COMPILE(R"(,"f":{},"feed_unit":"{}")"), m.feed, m.feed_per_rev ? "mm/rev" : "mm/min");
   if (m.threading) {
-    fmt::format_to(it, R"(,"threading":true)");
-    if (m.thread_start >= 0) fmt::format_to(it, R"(,"thread_start_deg":{})", m.thread_start / 1000.0);
+    fmt::format_to(it, FMT_COMPILE(R"(,"threading":true)"));
+    if (m.thread_start >= 0) fmt::format_to(it, FMT_COMPILE(R"(,"thread_start_deg":{})"), m.thread_start / 1000.0);
   }
-  if (m.is_motion()) fmt::format_to(it, R"(,"length":{},"lookahead":{})", m.length, m.lookahead);
-  if (m.kind == MoveKind::dwell || m.is_motion()) fmt::format_to(it, R"(,"seconds":{})", m.seconds);
-  if (!m.is_motion() && m.kind != MoveKind::dwell) fmt::format_to(it, R"(,"code":{})", m.code);
+  if (m.is_motion()) fmt::format_to(it, FMT_COMPILE(R"(,"length":{},"lookahead":{})"), m.length, m.lookahead);
+  if (m.kind == MoveKind::dwell || m.is_motion()) fmt::format_to(it, FMT_COMPILE(R"(,"seconds":{})"), m.seconds);
+  if (!m.is_motion() && m.kind != MoveKind::dwell) fmt::format_to(it, FMT_COMPILE(R"(,"code":{})"), m.code);
   b.push_back('}');
   b.push_back('\n');
   out_.write(b.data(), static_cast<std::streamsize>(b.size()));
@@ -67,11 +71,24 @@ CsvWriter::CsvWriter(std::ostream& out, const machine::MachineProfile& profile, 
   out_ << '\n';
 }
 
+// ",v" with v in six decimals, as fmt's "{:.6f}" writes it (both exact, correctly rounded)
+static void fixed6(fmt::memory_buffer& b, double v) {
+  char text[400];  // the widest double, -1.8e308, in fixed notation with 6 decimals
+  text[0] = ',';
+  const auto r = std::to_chars(text + 1, text + sizeof text, v, std::chars_format::fixed, 6);
+  b.append(text, r.ptr);
+}
+
 void CsvWriter::row(std::uint32_t line, const char* kind, const machine::AxisVector& p, double f) {
-  fmt::memory_buffer b;
-  auto it = std::back_inserter(b);
-  fmt::format_to(it, "{},{},{:.6f},{:.6f},{:.6f},{}", line, kind, clean(frame_.x(p[0])), clean(p[1]), clean(p[2]), f);
-  for (int a : extra_) fmt::format_to(it, ",{:.6f}", clean(p[a]));
+  fmt::memory_buffer& b = buffer_;  // kept: no run-time format parsing, no growth per row
+  b.clear();
+  auto it = fmt::appender(b);
+  fmt::format_to(it, FMT_COMPILE("{},{}"), line, kind);
+  fixed6(b, clean(frame_.x(p[0])));
+  fixed6(b, clean(p[1]));
+  fixed6(b, clean(p[2]));
+  fmt::format_to(it, FMT_COMPILE(",{}"), f);
+  for (int a : extra_) fixed6(b, clean(p[a]));
   b.push_back('\n');
   out_.write(b.data(), static_cast<std::streamsize>(b.size()));
 }

@@ -1,5 +1,6 @@
 // Move sinks that write the tool path: JSON Lines, CSV points, expanded G-code.
 #pragma once
+#include <fmt/format.h>
 #include <nlohmann/json_fwd.hpp>
 #include <array>
 #include <ostream>
@@ -35,6 +36,7 @@ private:
   OutputFrame frame_;
   const nc::SourceFile* last_file_ = nullptr;
   std::string file_json_;
+  fmt::memory_buffer buffer_;  // one record, formatted with compile-time format strings
 };
 
 // One row per point; arcs become points whose chord error stays within arc_tolerance.
@@ -52,6 +54,7 @@ private:
   double arc_tolerance_;
   bool started_ = false;
   std::vector<int> extra_;  // A, B, C of the profile: columns a, b, c after f
+  fmt::memory_buffer buffer_;  // one row, formatted with compile-time format strings
 };
 
 // The program the macro stands for: every move as a plain G00/G01/G02/G03 block, absolute, in mm,

@@ -1,7 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "report/summary.hpp"
 #include "report/writers.hpp"
@@ -221,4 +225,61 @@ TEST(Writers, RotaryAxesInEveryFormat) {
   EXPECT_NE(j.find(R"("end_abc":[380,0,0])"), std::string::npos) << j;
   // the 3-axis header stays as it was
   EXPECT_EQ(write("G00 X1.\nM30\n", "csv", machine::default_mill()).substr(0, 18), "line,kind,x,y,z,f\n");
+}
+
+// Tens of thousands of rows (more than a megabyte of CSV): each row as worked out from its block, in both
+// formats, so a record left in the writer's buffer, written twice or run into the next would show.
+TEST(Writers, EveryRowOfALongProgramAsItsBlockSaysInCsvAndJsonl) {
+  auto p = machine::parse_profile("[machine]\naxes = [\"X\", \"Y\", \"Z\", \"A\"]\n", "a.toml");
+  // thousandths: "-12.345" for the block, "-12.345000" for the CSV, "-12.345" for JSON (its shortest form)
+  auto word = [](long t) {
+    const long a = t < 0 ? -t : t;
+    return fmt::format("{}{}.{:03}", t < 0 ? "-" : "", a / 1000, a % 1000);
+  };
+  auto json = [&](long t) {
+    std::string s = word(t);
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    return s == "-0" ? std::string("0") : s;
+  };
+  const int n = 30000;
+  std::string program = "G90 G21 G17 G01 X0 Y0 Z0 A0 F1.\n";
+  std::string csv = "line,kind,x,y,z,f,a\n1,line,0.000000,0.000000,0.000000,1,0.000000\n"
+                    "1,line,0.000000,0.000000,0.000000,1,0.000000\n";
+  std::vector<std::string> ends{"0,0,0"};
+  unsigned long seed = 12345;
+  auto next = [&](long range) {  // -range .. range
+    seed = seed * 6364136223846793005UL + 1442695040888963407UL;
+    return static_cast<long>((seed >> 33) % static_cast<unsigned long>(2 * range + 1)) - range;
+  };
+  for (int i = 0; i < n; ++i) {
+    const long x = next(999999), y = next(99999), z = i % 7 == 0 ? 0 : next(50000), a = next(3600), f = 1 + i % 5000;
+    program += fmt::format("G01 X{} Y{} Z{} A{} F{}.\n", word(x), word(y), word(z), word(a), f);
+    csv += fmt::format("{},line,{}000,{}000,{}000,{},{}000\n", i + 2, word(x), word(y), word(z), f, word(a));
+    ends.push_back(fmt::format("{},{},{}", json(x), json(y), json(z)));
+  }
+  program += "M30\n";
+  ASSERT_GT(csv.size(), 1u << 20);
+  const std::string out = write(program, "csv", p);
+  ASSERT_EQ(std::count(out.begin(), out.end(), '\n'), n + 3);
+  std::istringstream got(out), want(csv);
+  std::string g, w;
+  for (int row = 1; std::getline(want, w); ++row) {
+    ASSERT_TRUE(std::getline(got, g)) << row;
+    ASSERT_EQ(g, w) << "row " << row;
+  }
+  EXPECT_FALSE(std::getline(got, g));
+
+  std::istringstream jsonl(write(program, "jsonl", p));
+  for (int i = 0; i <= n; ++i) {
+    ASSERT_TRUE(std::getline(jsonl, g)) << i;
+    const std::string head =
+        fmt::format(R"({{"kind":"line","file":"w.nc","line":{},"program":-1,"start":[{}],"end":[{}],)", i + 1,
+                    i == 0 ? "0,0,0" : ends[i - 1], ends[i]);
+    ASSERT_EQ(g.substr(0, head.size()), head) << "record " << i;
+    ASSERT_EQ(g.back(), '}') << "record " << i;
+  }
+  ASSERT_TRUE(std::getline(jsonl, g));
+  EXPECT_EQ(g, R"({"kind":"program_end","file":"w.nc","line":30002,"program":-1,"code":30})");
+  EXPECT_FALSE(std::getline(jsonl, g));
 }
