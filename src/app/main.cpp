@@ -65,7 +65,7 @@ int batch_command(const app::RunArgs& a, const std::vector<std::string>& argumen
   }
   if (programs.empty()) {
     std::cerr << "ncurve run: no program files in " << nc::escape_controls(arguments.front())
-              << " (.nc, .cnc, .tap, .txt, .ncc, .iso, .eia, .ptp, .prg, .gcode)\n";
+              << " (.nc, .cnc, .tap, .txt, .ncc, .iso, .eia, .ptp, .prg, .gcode, or O and a number)\n";
     return 2;
   }
   if (std::find(programs.begin(), programs.end(), "-") != programs.end()) {
@@ -78,25 +78,25 @@ int batch_command(const app::RunArgs& a, const std::vector<std::string>& argumen
 }
 
 int run_command(const app::RunArgs& a) {
-  // more programs, or a folder: each run on its own, a table of the results
+  // without --curve the extra words are more programs (or folders): each run on its own, a table of
+  // the results; a word that is neither is an error
   std::vector<std::string> programs{a.in.program};
   std::error_code ec;
   if (a.verify.curve.name.empty())
-    while (programs.size() <= a.verify.curve_extras.size() &&
-           std::filesystem::exists(a.verify.curve_extras[programs.size() - 1], ec) &&
-           a.verify.curve_extras[programs.size() - 1].rfind("-", 0) != 0)
-      programs.push_back(a.verify.curve_extras[programs.size() - 1]);
-  if (a.verify.curve.name.empty() && a.verify.curve_extras.size() >= programs.size()) {
-    const std::string& word = a.verify.curve_extras[programs.size() - 1];
-    if (word.rfind("-", 0) != 0) {  // a program after the first
-      std::cerr << "ncurve run: no file '" << nc::escape_controls(word) << "'\n";
-      return 2;
+    for (const std::string& word : a.verify.curve_extras) {
+      if (word.rfind("-", 0) == 0) {
+        const auto near = word.rfind("--", 0) == 0 ? app::nearest_name(word.substr(2), a.verify.curve.options)
+                                                   : std::nullopt;
+        std::cerr << "ncurve run: unexpected argument '" << nc::escape_controls(word) << "'"
+                  << (near ? " (did you mean --" + *near + "?)" : "") << "\n";
+        return 2;
+      }
+      if (!std::filesystem::exists(word, ec)) {
+        std::cerr << "ncurve run: no file '" << nc::escape_controls(word) << "'\n";
+        return 2;
+      }
+      programs.push_back(word);
     }
-    const auto near = word.rfind("--", 0) == 0 ? app::nearest_name(word.substr(2), a.verify.curve.options) : std::nullopt;
-    std::cerr << "ncurve run: unexpected argument '" << nc::escape_controls(word) << "'"
-              << (near ? " (did you mean --" + *near + "?)" : "") << "\n";
-    return 2;
-  }
   if (programs.size() > 1 || std::filesystem::is_directory(a.in.program, ec)) return batch_command(a, programs);
   app::RunSetup setup;
   try {

@@ -9,20 +9,13 @@
 #include <stdexcept>
 
 #include "base/parallel.hpp"
+#include "machine/library.hpp"
 #include "nc/diagnostic.hpp"
 #include "report/summary.hpp"
 
 namespace ncurve::app {
 
 namespace {
-
-bool program_file(const std::filesystem::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  static const std::array<std::string_view, 10> kProgramExtensions = {".nc", ".cnc", ".tap", ".txt", ".ncc",
-                                                                       ".iso", ".eia", ".ptp", ".prg", ".gcode"};
-  return std::find(kProgramExtensions.begin(), kProgramExtensions.end(), ext) != kProgramExtensions.end();
-}
 
 std::string alarm_words(const nc::Diagnostic& d) {
   return fmt::format("{} {}:{}: {}", d.code, d.span.file ? d.span.file->name() : "", d.span.line,
@@ -71,7 +64,7 @@ std::vector<std::string> batch_programs(const std::vector<std::string>& argument
     }
     std::vector<std::string> found;
     for (const auto& e : fs::directory_iterator(a, ec))
-      if (e.is_regular_file(ec) && program_file(e.path())) found.push_back(e.path().string());
+      if (e.is_regular_file(ec) && machine::program_file_name(e.path().string())) found.push_back(e.path().string());
     if (ec) throw std::runtime_error(fmt::format("{}: the folder cannot be read: {}", a, ec.message()));
     std::sort(found.begin(), found.end());
     out.insert(out.end(), found.begin(), found.end());

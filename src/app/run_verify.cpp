@@ -271,7 +271,7 @@ void RunVerification::finish(machine::RunResult& result) {
     }
   if (section_sink_)
     for (const sim::Finding& f : section_sink_->findings()) result.warnings.push_back(f.diagnostic);
-  if (section_sink_ && curve_) measure_section_walls(result);
+  if (section_sink_ && curve_) measure_walls(result);
   if (!verifier_) return;
   report_.fixtures = verifier_->fixtures_checked();
   for (const sim::Finding& f : verifier_->findings()) result.warnings.push_back(f.diagnostic);
@@ -286,41 +286,29 @@ void RunVerification::finish(machine::RunResult& result) {
   if (curve_) measure_walls(result);
 }
 
+// The part's walls against the curve: a mill's from the cuts kept, a lathe's turned surface from its
+// section.
 void RunVerification::measure_walls(machine::RunResult& result) {
   report::CurveCheck& check = report_.curve.emplace();
   check.curve = curve_->name();
   check.tol = args_.tol;
-  check.block = sim::block_of(*cuts_);
+  check.block = section_ ? profile_moves_->block() : sim::block_of(*cuts_);
   sim::WallOptions o;
-  o.design = args_.wall == "edge" || (args_.wall == "auto" && cuts_->any_compensated()) ? sim::WallDesign::edge
-                                                                                       : sim::WallDesign::groove;
-  o.top = verifier_->map().stock().max[2];
-  if (verifier_->counts().cut == 0) {
-    check.refused = "no move was cut: no tool in the spindle, or none of known size (tool_in_spindle and [tools.N] "
-                    "in a setup file, --setup)";
-    return;
+  o.tol = args_.tol;
+  o.design = section_ || args_.wall == "edge" || (args_.wall == "auto" && cuts_->any_compensated())
+                 ? sim::WallDesign::edge
+                 : sim::WallDesign::groove;
+  if (verifier_) {
+    o.top = verifier_->map().stock().max[2];
+    if (verifier_->counts().cut == 0) {
+      check.refused = "no move was cut: no tool in the spindle, or none of known size (tool_in_spindle and "
+                      "[tools.N] in a setup file, --setup)";
+      return;
+    }
   }
   try {
-    walls_ = sim::measure_walls(*cuts_, *curve_, o);
-  } catch (const std::runtime_error& e) {
-    check.refused = e.what();
-    return;
-  }
-  check.walls = &*walls_;
-  check.findings = sim::wall_findings(sim::block_of(*cuts_), *walls_, args_.tol);
-  for (const sim::Finding& f : check.findings) result.warnings.push_back(f.diagnostic);
-}
-
-// A lathe's: the turned surface against the profile curve.
-void RunVerification::measure_section_walls(machine::RunResult& result) {
-  report::CurveCheck& check = report_.curve.emplace();
-  check.curve = curve_->name();
-  check.tol = args_.tol;
-  check.block = profile_moves_->block();
-  sim::WallOptions o;
-  o.design = sim::WallDesign::edge;
-  try {
-    walls_ = sim::measure_section_walls(*section_, *profile_moves_, *curve_, place_, o);
+    walls_ = section_ ? sim::measure_section_walls(*section_, *profile_moves_, *curve_, place_, o)
+                      : sim::measure_walls(*cuts_, *curve_, o);
   } catch (const std::runtime_error& e) {
     check.refused = e.what();
     return;

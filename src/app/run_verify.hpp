@@ -71,7 +71,6 @@ public:
 
 private:
   void measure_walls(machine::RunResult& result);
-  void measure_section_walls(machine::RunResult& result);
   void lathe(const machine::MachineProfile& profile, const machine::ProgramLibrary& lib,
              const machine::RunOptions& options, const std::function<void(const std::string&)>& refuse);
 

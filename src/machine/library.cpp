@@ -29,6 +29,16 @@ bool header_only(const nc::Program& p) {
 }
 }  // namespace
 
+bool program_file_name(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  // the extensions part programs are kept under (a control holds them by O number whatever the name)
+  static const std::array<std::string_view, 10> kProgramExtensions = {".nc", ".cnc", ".tap", ".txt", ".ncc",
+                                                                       ".iso", ".eia", ".ptp", ".prg", ".gcode"};
+  return std::find(kProgramExtensions.begin(), kProgramExtensions.end(), ext) != kProgramExtensions.end() ||
+         number_from_file_name(path) >= 0;
+}
+
 std::vector<nc::Diagnostic> ProgramLibrary::add_text(const std::string& name, std::string text, bool is_main) {
   // A UTF-8 byte-order mark is no part of the program; CR alone ends a line as LF and CRLF do.
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
@@ -86,17 +96,8 @@ std::vector<nc::Diagnostic> ProgramLibrary::add_folder(const std::string& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw std::runtime_error(fmt::format("{}: error: not a folder", dir));
   std::vector<std::string> paths;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (!e.is_regular_file()) continue;
-    std::string ext = e.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    // the extensions part programs are kept under (a control holds them by O number whatever the name)
-    static const std::array<std::string_view, 10> kProgramExtensions = {".nc", ".cnc", ".tap", ".txt", ".ncc",
-                                                                         ".iso", ".eia", ".ptp", ".prg", ".gcode"};
-    if (std::find(kProgramExtensions.begin(), kProgramExtensions.end(), ext) != kProgramExtensions.end() ||
-        number_from_file_name(e.path().string()) >= 0)
-      paths.push_back(e.path().string());
-  }
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.is_regular_file() && program_file_name(e.path().string())) paths.push_back(e.path().string());
   std::sort(paths.begin(), paths.end());
   std::vector<nc::Diagnostic> all;
   ++source_;

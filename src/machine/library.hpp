@@ -9,6 +9,11 @@
 
 namespace ncurve::machine {
 
+// Whether a folder's file is read as a program (add_folder, `ncurve run FOLDER`): one of the
+// extensions part programs are kept under (.nc, .cnc, .tap, .txt, .ncc, .iso, .eia, .ptp, .prg,
+// .gcode, any case), or a name of O and a number (O9010).
+bool program_file_name(const std::string& path);
+
 class ProgramLibrary {
 public:
   explicit ProgramLibrary(nc::ParseOptions options = {}) : options_(options) {}
@@ -21,7 +26,7 @@ public:
   std::size_t problems_left_out() const { return problems_left_out_; }
   // Lines not parsed because no block on them can run (nc::ParseResult::unchecked_lines).
   std::size_t unchecked_lines() const { return unchecked_lines_; }
-  // Every *.nc, *.NC, O*, *.txt and *.tap file in the folder.
+  // Every program file of the folder (program_file_name).
   std::vector<nc::Diagnostic> add_folder(const std::string& dir);
 
   const nc::Program* find(int number) const;

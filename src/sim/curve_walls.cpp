@@ -75,6 +75,19 @@ std::vector<double> points_along(const geom::Curve& curve, const WallOptions& o,
   return out;
 }
 
+void WallReport::summarize() {
+  largest_gouge = largest_left = rms = 0;
+  gouge_at = left_at = -1;
+  double sum2 = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double e = points[k].error;
+    if (e > largest_gouge) largest_gouge = e, gouge_at = static_cast<std::int64_t>(k);
+    if (-e > largest_left) largest_left = -e, left_at = static_cast<std::int64_t>(k);
+    sum2 += e * e;
+  }
+  if (!points.empty()) rms = std::sqrt(sum2 / static_cast<double>(points.size()));
+}
+
 std::size_t WallReport::beyond(double tol) const {
   return static_cast<std::size_t>(
       std::count_if(points.begin(), points.end(), [&](const WallPoint& p) { return std::abs(p.error) > tol; }));
@@ -83,13 +96,6 @@ std::size_t WallReport::beyond(double tol) const {
 WallReport measure_walls(const CutLog& cuts, const geom::Curve& curve, const WallOptions& o) {
   WallReport r;
   r.design = o.design;
-  double sum2 = 0;
-  auto keep = [&](WallPoint w) {
-    if (w.error > r.largest_gouge) r.largest_gouge = w.error, r.gouge_at = static_cast<std::int64_t>(r.points.size());
-    if (-w.error > r.largest_left) r.largest_left = -w.error, r.left_at = static_cast<std::int64_t>(r.points.size());
-    sum2 += w.error * w.error;
-    r.points.push_back(w);
-  };
   auto xy = [&](double t) {
     const geom::Vec3 p = curve.point(t);
     return std::array<double, 2>{p[0], p[1]};
@@ -121,7 +127,7 @@ WallReport measure_walls(const CutLog& cuts, const geom::Curve& curve, const Wal
         w.design_offset = half;
         w.error = wall->s - half;
         w.cut = wall->cut;
-        keep(w);
+        r.points.push_back(w);
       }
       continue;
     }
@@ -150,9 +156,9 @@ WallReport measure_walls(const CutLog& cuts, const geom::Curve& curve, const Wal
     }
     w.error = wall->s;
     w.cut = wall->cut;
-    keep(w);
+    r.points.push_back(w);
   }
-  if (!r.points.empty()) r.rms = std::sqrt(sum2 / static_cast<double>(r.points.size()));
+  r.summarize();
   return r;
 }
 

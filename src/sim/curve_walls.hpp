@@ -26,6 +26,7 @@ enum class WallDesign {
 
 struct WallOptions {
   WallDesign design = WallDesign::groove;
+  double tol = 0.01;              // a lathe's points name their cut only beyond it (and at the extremes)
   double top = 0;                 // the stock's top: each wall is measured halfway from the cut's floor up to it
   double spacing = 0.01;          // between the curve's points measured, mm (fewer when max_points would pass)
   std::size_t max_points = 20000;
@@ -53,6 +54,8 @@ struct WallReport {
   std::int64_t gouge_at = -1, left_at = -1;  // indices into points
   double rms = 0;
   std::size_t beyond(double tol) const;
+  // Sets the largest errors, where they are and the rms from the points.
+  void summarize();
 };
 
 // Throws std::runtime_error when the curve has no extent in XY.

@@ -210,18 +210,18 @@ ArcCell arc_cell(const Arc& arc, double x, double y) {
   return c;
 }
 
-// The box of the arc: its ends and the quadrant points it passes.
-struct ArcBox {
-  double x0, x1, y0, y1;
-};
-ArcBox arc_box(const Arc& arc) {
+bool arc_valid(const Arc& arc) { return arc.radius >= 0 && std::isfinite(std::abs(arc.sweep)); }
+
+}  // namespace
+
+XYBox arc_box(const Arc& arc) {
   const double rho = arc.radius, length = std::abs(arc.sweep), dir = arc.sweep < 0 ? -1.0 : 1.0;
   auto at = [&](double s) {
     const double t = arc.start_angle + dir * s;
     return std::array<double, 2>{arc.cx + rho * std::cos(t), arc.cy + rho * std::sin(t)};
   };
   auto p0 = at(0), p1 = at(length);
-  ArcBox b{std::min(p0[0], p1[0]), std::max(p0[0], p1[0]), std::min(p0[1], p1[1]), std::max(p0[1], p1[1])};
+  XYBox b{std::min(p0[0], p1[0]), std::max(p0[0], p1[0]), std::min(p0[1], p1[1]), std::max(p0[1], p1[1])};
   for (int q = 0; q < 4; ++q) {
     const double qa = q * std::numbers::pi / 2;
     // the move's s that reaches angle qa first
@@ -238,10 +238,6 @@ ArcBox arc_box(const Arc& arc) {
   return b;
 }
 
-bool arc_valid(const Arc& arc) { return arc.radius >= 0 && std::isfinite(std::abs(arc.sweep)); }
-
-}  // namespace
-
 double lowest_over(const ToolShape& tool, const Arc& arc, double x, double y) {
   if (!arc_valid(arc)) return kUnreached;
   return lowest_on_arc(arc_cell(arc, x, y), tool);
@@ -251,14 +247,14 @@ void ZMap::arc_rows(const ToolShape& tool, const Arc& arc, int& j0, int& j1) con
   j0 = j1 = 0;
   if (!arc_valid(arc)) return;
   const double r = tool.radius(), pad = 1e-9 * (1 + r + arc.radius);
-  const ArcBox box = arc_box(arc);
+  const XYBox box = arc_box(arc);
   rows_of(box.y0 - r - pad, box.y1 + r + pad, j0, j1);
 }
 
 void ZMap::pass_arc(const ToolShape& tool, const Arc& arc, Pass& p) {
   const double r = tool.radius(), rho = arc.radius, pad = 1e-9 * (1 + r + rho);
   if (!arc_valid(arc)) return;
-  const ArcBox box = arc_box(arc);
+  const XYBox box = arc_box(arc);
   const double outer = rho + r;
   int j0, j1;
   arc_rows(tool, arc, j0, j1);

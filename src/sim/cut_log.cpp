@@ -7,41 +7,9 @@
 #include <numbers>
 
 #include "base/bounds.hpp"
+#include "geom/approx.hpp"
 
 namespace ncurve::sim {
-
-namespace {
-
-struct Span2 {
-  double x0, x1, y0, y1;
-};
-
-// The XY box of an arc's tip path: its ends and the quadrant points it passes.
-Span2 arc_box(const Arc& arc) {
-  const double length = std::abs(arc.sweep), dir = arc.sweep < 0 ? -1.0 : 1.0;
-  auto at = [&](double s) {
-    const double t = arc.start_angle + dir * s;
-    return std::array<double, 2>{arc.cx + arc.radius * std::cos(t), arc.cy + arc.radius * std::sin(t)};
-  };
-  const auto p0 = at(0), p1 = at(length);
-  Span2 b{std::min(p0[0], p1[0]), std::max(p0[0], p1[0]), std::min(p0[1], p1[1]), std::max(p0[1], p1[1])};
-  for (int q = 0; q < 4; ++q) {
-    double s = std::fmod(dir * (q * std::numbers::pi / 2 - arc.start_angle), 2 * std::numbers::pi);
-    if (s < 0) s += 2 * std::numbers::pi;
-    if (s > length) continue;
-    const auto p = at(s);
-    b = {std::min(b.x0, p[0]), std::max(b.x1, p[0]), std::min(b.y0, p[1]), std::max(b.y1, p[1])};
-  }
-  return b;
-}
-
-double segment_distance(double ax, double ay, double bx, double by, double x, double y) {
-  const double vx = bx - ax, vy = by - ay, a = vx * vx + vy * vy;
-  const double t = a > 0 ? std::clamp(((x - ax) * vx + (y - ay) * vy) / a, 0.0, 1.0) : 0.0;
-  return std::hypot(x - ax - t * vx, y - ay - t * vy);
-}
-
-}  // namespace
 
 void CutLog::add(const ToolShape& tool, const Point3& a, const Point3& b, const std::optional<Arc>& arc,
                  const machine::Move& from) {
@@ -75,7 +43,7 @@ double CutLog::lowest_of(const Cut& c, double x, double y) const {
 }
 
 double CutLog::distance_of(const Cut& c, double x, double y) const {
-  if (!c.is_arc) return segment_distance(c.a[0], c.a[1], c.b[0], c.b[1], x, y);
+  if (!c.is_arc) return geom::point_segment_distance({x, y, 0}, {c.a[0], c.a[1], 0}, {c.b[0], c.b[1], 0});
   const Arc& arc = c.arc;
   const double dx = x - arc.cx, dy = y - arc.cy, d = std::hypot(dx, dy);
   // the point's angle from the start along the move, in [0, 2 pi)
@@ -96,13 +64,13 @@ void CutLog::index() const {
   gnx_ = gny_ = 0;
   if (cuts_.empty()) return;
   // each cut's reach: its tip path's box widened by its tool
-  std::vector<Span2> reach(cuts_.size());
-  Span2 all{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  std::vector<XYBox> reach(cuts_.size());
+  XYBox all{INFINITY, -INFINITY, INFINITY, -INFINITY};
   for (std::size_t k = 0; k < cuts_.size(); ++k) {
     const Cut& c = cuts_[k];
     const double r = shapes_[c.tool].radius();
-    Span2 b = c.is_arc ? arc_box(c.arc)
-                       : Span2{std::min(c.a[0], c.b[0]), std::max(c.a[0], c.b[0]), std::min(c.a[1], c.b[1]),
+    XYBox b = c.is_arc ? arc_box(c.arc)
+                        : XYBox{std::min(c.a[0], c.b[0]), std::max(c.a[0], c.b[0]), std::min(c.a[1], c.b[1]),
                                std::max(c.a[1], c.b[1])};
     b = {b.x0 - r, b.x1 + r, b.y0 - r, b.y1 + r};
     reach[k] = b;
@@ -120,7 +88,7 @@ void CutLog::index() const {
   // a cut's buckets row by row: a line's chord of its stadium's box in the row, an arc's box
   auto each_bucket = [&](std::size_t k, auto&& put) {
     const Cut& c = cuts_[k];
-    const Span2& b = reach[k];
+    const XYBox& b = reach[k];
     const int j0 = clamp_y(b.y0), j1 = clamp_y(b.y1);
     for (int j = j0; j <= j1; ++j) {
       double x0 = b.x0, x1 = b.x1;

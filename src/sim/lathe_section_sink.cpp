@@ -95,6 +95,10 @@ double path_length(const machine::Move& m) {
   return std::fabs(m.sweep) * std::max(r0, r1);
 }
 
+// Section area a finding needs along a path this long: 1 um across it, at least 1 mm of it (less is
+// the grid's and the chords' rounding).
+double area_limit(double length) { return 1e-3 * std::max(length, 1.0); }
+
 }  // namespace
 
 void LatheSectionSink::on_move(const machine::Move& m) {
@@ -124,7 +128,7 @@ void LatheSectionSink::on_move(const machine::Move& m) {
   if (m.kind == MoveKind::rapid) return rapid(m);
   if (!tool_->past_flutes.empty()) {  // before the cut: what the part above the flutes goes through
     const LatheSection::Overlap o = section_.overlap(tool_->past_flutes, m);
-    if (o.area > 1e-3 * std::max(path_length(m), 1.0))
+    if (o.area > area_limit(path_length(m)))
       find(m, "NC2081",
            fmt::format("T{} goes into material past its flutes ({:g} mm): {:.3f} mm^2 of the bar's half-section is "
                        "cut by its body above them, about Z{:.3f} radius {:.3f}; the chips cannot leave and the tool "
@@ -135,7 +139,7 @@ void LatheSectionSink::on_move(const machine::Move& m) {
   if (tool_->no_centre > 0 && m.end[2] < m.start[2] &&
       std::fabs(m.end[0] - m.start[0]) < tool_->no_centre) {  // a plunge: does it meet material?
     const LatheSection::Overlap o = section_.overlap(tool_->cutting, m);
-    if (o.area > 1e-3 * std::max(path_length(m), 1.0))
+    if (o.area > area_limit(path_length(m)))
       find(m, "NC2082",
            fmt::format("T{} plunges into material towards the chuck, but does not cut at its centre: {:.3f} mm^2 of the "
                        "bar's half-section ahead of it; the core it cannot cut rubs its end: a centre-cutting tool, or "
@@ -151,7 +155,7 @@ void LatheSectionSink::on_move(const machine::Move& m) {
   ++counts_.cut;
   if (!spindle_on_) {
     const double removed = before - section_.area();
-    if (removed > 1e-3 * std::max(path_length(m), 1.0))
+    if (removed > area_limit(path_length(m)))
       find(m, "NC2083",
            fmt::format("a cut removes material with the spindle stopped (no M03/M04 since the start, or M05/M19 "
                        "before): {:.3f} mm^2 of the bar's half-section; the insert meets a bar standing still and "
@@ -165,7 +169,7 @@ void LatheSectionSink::on_move(const machine::Move& m) {
 
 
 void LatheSectionSink::check_bodies(const machine::Move& m, const machine::Move& piece) {
-  const double limit = 1e-3 * std::max(path_length(piece), 1.0);
+  const double limit = area_limit(path_length(piece));
   for (const LatheBody& body : tool_->bodies) {
     const LatheSection::Overlap o = section_.overlap(body.outline, piece);
     if (!(o.area > limit)) continue;
@@ -182,7 +186,7 @@ void LatheSectionSink::check_bodies(const machine::Move& m, const machine::Move&
 }
 
 void LatheSectionSink::check_fixtures(const machine::Move& m, const machine::Move& piece) {
-  const double limit = 1e-3 * std::max(path_length(piece), 1.0);
+  const double limit = area_limit(path_length(piece));
   for (FixtureRing& f : fixtures_) {
     auto touch = [&](const ToolOutline& outline, const char* what) {
       const LatheSection::Overlap o = f.section.overlap(outline, piece);
@@ -227,7 +231,7 @@ void LatheSectionSink::rapid(const machine::Move& m) {
   }
   ++counts_.cut;
   const double removed = before - section_.area();
-  if (!(removed > 1e-3 * std::max(length, 1.0))) return;
+  if (!(removed > area_limit(length))) return;
   const std::string corner =
       path.size() > 2 ? fmt::format(" by its corner at Z{:.3f} radius {:.3f} (each axis at its own rapid rate)",
                                     path[1][2], path[1][0])

@@ -7,14 +7,6 @@
 
 namespace ncurve::sim {
 
-namespace {
-double segment_distance(double az, double ar, double bz, double br, double z, double r) {
-  const double vz = bz - az, vr = br - ar, a = vz * vz + vr * vr;
-  const double t = a > 0 ? std::clamp(((z - az) * vz + (r - ar) * vr) / a, 0.0, 1.0) : 0.0;
-  return std::hypot(z - az - t * vz, r - ar - t * vr);
-}
-}  // namespace
-
 void ProfileMoves::on_move(const machine::Move& m) {
   if (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc) return;
   auto add = [&](const machine::AxisVector& a, const machine::AxisVector& b) {
@@ -36,7 +28,7 @@ std::int64_t ProfileMoves::nearest(double z, double r) const {
   double d = INFINITY;
   for (std::size_t k = 0; k < segments_.size(); ++k) {
     const Segment& s = segments_[k];
-    const double e = segment_distance(s.z0, s.r0, s.z1, s.r1, z, r);
+    const double e = geom::point_segment_distance({z, r, 0}, {s.z0, s.r0, 0}, {s.z1, s.r1, 0});
     if (e < d) d = e, best = static_cast<std::int64_t>(k);
   }
   return best;
@@ -58,7 +50,7 @@ WallReport measure_section_walls(const LatheSection& section, const ProfileMoves
     const geom::Vec3 p = place(curve.point(t));
     return std::array<double, 2>{p[2], p[0]};
   };
-  double sum2 = 0;
+  std::vector<std::array<double, 2>> surface;  // each point's surface found, (Z, radius)
   for (const double t : points_along(curve, o, zr)) {
     const geom::Curve::Jet j = curve.jet(t);
     const geom::Vec3 p = place(j.p), d = place.direction(j.d1);
@@ -85,13 +77,17 @@ WallReport measure_section_walls(const LatheSection& section, const ProfileMoves
     const double sign = below ? 1 : -1;  // the normal into the material (as a wall's)
     w.nx = sign * (dz > 0 ? dr : -dr) / speed, w.ny = -sign * nr;
     w.error = beyond * nr;
-    w.cut = moves.nearest(z, std::isnan(part) ? radius : part);
-    if (w.error > r.largest_gouge) r.largest_gouge = w.error, r.gouge_at = static_cast<std::int64_t>(r.points.size());
-    if (-w.error > r.largest_left) r.largest_left = -w.error, r.left_at = static_cast<std::int64_t>(r.points.size());
-    sum2 += w.error * w.error;
+    surface.push_back({z, std::isnan(part) ? radius : part});
     r.points.push_back(w);
   }
-  if (!r.points.empty()) r.rms = std::sqrt(sum2 / static_cast<double>(r.points.size()));
+  r.summarize();
+  // the move that made the surface, where a finding or the summary names it: the search is over
+  // every feed move
+  for (std::size_t k = 0; k < r.points.size(); ++k) {
+    const auto at = static_cast<std::int64_t>(k);
+    if (std::fabs(r.points[k].error) > o.tol || at == r.gouge_at || at == r.left_at)
+      r.points[k].cut = moves.nearest(surface[k][0], surface[k][1]);
+  }
   return r;
 }
 

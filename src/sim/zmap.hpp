@@ -56,6 +56,12 @@ struct Sweep {
 // the exact lowest point, mm.
 inline constexpr double kLowestTolerance = 1e-9;
 
+// The XY box of an arc's tip path: its ends and the quadrant points it passes.
+struct XYBox {
+  double x0, x1, y0, y1;
+};
+XYBox arc_box(const Arc& arc);
+
 // The lowest point of a tool's swept envelope on the vertical line through (x, y), the height a
 // cell centred there would take (kUnreached where the tool does not pass over it).
 double lowest_over(const ToolShape& tool, const Point3& a, const Point3& b, double x, double y);
