@@ -100,7 +100,11 @@ int run_command(const app::RunArgs& a) {
   if (programs.size() > 1 || std::filesystem::is_directory(a.in.program, ec)) return batch_command(a, programs);
   app::RunSetup setup;
   try {
-    setup = app::prepare_run(a.in);
+    app::RunInputs in = a.in;
+    if (!in.text && in.program != "-" && std::filesystem::is_regular_file(in.program, ec) &&
+        std::filesystem::file_size(in.program, ec) >= app::kStreamFrom)
+      in.stream = true;
+    setup = app::prepare_run(in);
   } catch (const std::bad_alloc&) {
     throw;  // main() says what ran out
   } catch (const std::exception& e) {
@@ -194,6 +198,7 @@ int run_command(const app::RunArgs& a) {
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
   if (gcode) gcode->finish();
+  if (lib.streamed()) app::complete_problems(setup);  // the file is read to its end
   if (verify) {
     verify->finish(result);
     if (plot && verify->map()) plot->set_part(sim::part_grid(*verify->map()));

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <stdexcept>
@@ -134,6 +135,11 @@ RunSetup prepare_run(const RunInputs& in) {
   s.lib = std::make_unique<machine::ProgramLibrary>(parse_options);
   if (in.text) {
     s.problems = s.lib->add_text(in.program, *in.text, true);
+  } else if (in.stream) {
+    std::size_t chunk = nc::ProgramStream::kChunkBytes;
+    if (const char* bytes = std::getenv("NCURVE_STREAM_CHUNK"))  // tests read in tiny pieces
+      chunk = std::max<std::size_t>(std::strtoull(bytes, nullptr, 10), 1);
+    s.lib->add_streamed(in.program, in.program == "-" ? "<stdin>" : in.program, chunk);
   } else if (in.program == "-") {
     s.problems = s.lib->add_text("<stdin>", read_standard_input(), true);
   } else {
@@ -143,15 +149,20 @@ RunSetup prepare_run(const RunInputs& in) {
     auto more = s.lib->add_folder(dir);
     s.problems.insert(s.problems.end(), more.begin(), more.end());
   }
-  s.problems_left_out = s.lib->problems_left_out();
-  s.unchecked_lines = s.lib->unchecked_lines();
   for (const auto& f : s.lib->files()) s.inputs.push_back(f->name());
   if (!in.machine_text && !in.machine.empty()) s.inputs.push_back(in.machine);
+  if (!s.lib->streamed()) complete_problems(s);
+  return s;
+}
+
+void complete_problems(RunSetup& s) {
+  if (s.lib->streamed()) s.problems = s.lib->streamed_problems();
+  s.problems_left_out = s.lib->problems_left_out();
+  s.unchecked_lines = s.lib->unchecked_lines();
   if (s.problems.size() > nc::kMaxDiagnostics) {  // the first hundred of all files together
     s.problems_left_out += s.problems.size() - nc::kMaxDiagnostics;
     s.problems.resize(nc::kMaxDiagnostics);
   }
-  return s;
 }
 
 }  // namespace ncurve::app

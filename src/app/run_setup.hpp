@@ -24,6 +24,7 @@ struct RunInputs {
   double max_seconds = machine::RunOptions{}.max_seconds;
   double max_memory_mb = 0;  // a file's compiled form at most; 0: nc::memory_bound's default
   bool nose_centre = false;
+  bool stream = false;  // the program file read block by block as the run reaches it
   std::optional<std::string> text;          // the program's text, named `program` (not read from a file)
   std::optional<std::string> machine_text;  // a profile's TOML text, named `machine`
 };
@@ -43,6 +44,10 @@ struct RunSetup {
 void add_run_inputs(CLI::App* command, RunInputs& in, bool program_required, bool folder_ok = false);
 // Throws std::runtime_error with a message for the user (bad option, profile or file).
 RunSetup prepare_run(const RunInputs& in);
+// A streamed program's problems once the run is over (the file is then read to its end).
+void complete_problems(RunSetup& s);
+// Program files of this many bytes and more are streamed by `run` (RunInputs::stream).
+constexpr std::uintmax_t kStreamFrom = std::uintmax_t{64} << 20;
 // Applies "--param N=V" overrides to a profile.
 void apply_parameters(machine::MachineProfile& profile, const std::vector<std::string>& params);
 

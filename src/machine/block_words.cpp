@@ -44,7 +44,7 @@ void Executor::check_block_words() {
       const std::string both = fmt::format("{} and {} of group {:02} in one block", g_name(g_codes_[i]),
                                            g_name(g_codes_[j]), group);
       if (strict) alarm("PS5074", both + " (No.3403#6 AD2 = 1)", column);
-      if (repeat_warned_.insert(block_).second)  // once a block, however often it runs
+      if (repeat_warned_.emplace(prog_, block_index_).second)  // once a block, however often it runs
           warn("NC2005", fmt::format("{}: the control takes the last, {} (No.3403#6 AD2 = 0)", both,
                                    g_name(g_codes_[j])), column);
       break;
@@ -70,7 +70,7 @@ void Executor::check_block_words() {
                           : fmt::format("address {} given twice in one block ({}{} and {}{})", c.letter, c.letter,
                                         c.value, c.letter, last.value);
     if (strict) alarm("PS5074", what + " (No.3403#6 AD2 = 1)", c.column);
-    if (repeat_warned_.insert(block_).second)
+    if (repeat_warned_.emplace(prog_, block_index_).second)
       warn("NC2005", fmt::format("{}: the control takes the last (No.3403#6 AD2 = 0)", what), c.column);
     --count[k];
     c.letter = 0;  // dropped

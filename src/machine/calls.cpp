@@ -21,8 +21,8 @@ void Executor::add_call_stack(nc::Diagnostic& d) const {
     return;
   for (std::size_t i = frames_.size() - 1; i >= 1; --i) {
     const Frame& f = frames_[i];
-    if (!f.caller || !f.call_block) break;
-    d.called_from.push_back(f.caller->span_of(*f.call_block));
+    if (!f.caller || f.call_line == 0) break;
+    d.called_from.push_back(nc::Span{f.caller->file.get(), f.call_line, f.call_column, 1});
   }
 }
 
@@ -47,7 +47,8 @@ void Executor::call_program(int number, Frame frame, std::uint16_t column, std::
   frame.modal_limit = std::min(modal_limit_next_, frames_.back().modal_limit);
   modal_limit_next_ = SIZE_MAX;
   frame.caller = prog_;
-  frame.call_block = block_;
+  frame.call_line = block_ ? block_->line : 0;
+  frame.call_column = block_ ? block_->column : 0;
   if (frame.kind == Frame::subprogram) {
     if (sub_depth_ >= profile_.subprogram_nesting)
       alarm("PS0077", fmt::format("subprogram calls nested more than {} deep", profile_.subprogram_nesting), column);
@@ -117,10 +118,10 @@ void Executor::return_from_program(std::optional<int> sequence, std::uint16_t co
   if (observer_) [[unlikely]] observer_->left();
   prog_ = frames_.back().prog;
   if (sequence) {
-    auto it = prog_->sequence_index.find(*sequence);
-    if (it == prog_->sequence_index.end())
+    const std::int32_t at = prog_->find_sequence(*sequence);
+    if (at < 0)
       alarm("PS0078", fmt::format("M99 P{}: no block N{} in the calling program", *sequence, *sequence), column);
-    frames_.back().pc = it->second;
+    frames_.back().pc = at;
   }
 }
 

@@ -166,7 +166,7 @@ bool Executor::read_words(const Block& b) {
   word_check_ = false;
   vacant_word_.variable = 0;
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
-    const nc::Word& w = prog_->words[i];
+    const nc::Word& w = unit_->words[i];
     Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value};
     if (!w.literal) {
       int vacant = 0;
@@ -336,15 +336,15 @@ bool Executor::block_m_codes(const Block& b, const SubprogramCall& sub) {
       case 98: {
         if (!has('P') && has('Q')) {  // M98 Q: the block N(q) of the program being run, as a subprogram
           const int seq = integer(word('Q'), "Q (sequence number)");
-          auto it = prog_->sequence_index.find(seq);
-          if (it == prog_->sequence_index.end())
+          const std::int32_t at = prog_->find_sequence(seq);
+          if (at < 0)
             alarm("PS0078", fmt::format("M98 Q{}: no block N{} in this program", seq, seq), word('Q').column);
           const int repeat = has('L') ? integer(word('L'), "L") : 1;
           if (repeat < 1) break;
           Frame f;
           f.kind = Frame::subprogram;
           f.repeat = repeat - 1;
-          call_program(prog_->number, f, word('Q').column, static_cast<std::int32_t>(it->second));
+          call_program(prog_->number, f, word('Q').column, at);
           return true;
         }
         if (!has('P')) alarm("PS0076", "M98 needs P (the subprogram number) or Q (a sequence number of this program)", b.column);
@@ -369,13 +369,13 @@ bool Executor::block_m_codes(const Block& b, const SubprogramCall& sub) {
         if (frames_.size() == 1) {  // M99 in the main program: run it again from the top (or from N)
           Frame& f = frames_.back();
           if (seq) {
-            auto it = prog_->sequence_index.find(*seq);
-            if (it == prog_->sequence_index.end()) alarm("PS0078", fmt::format("M99 P{}: no block N{}", *seq, *seq));
-            f.pc = it->second;
+            const std::int32_t at = prog_->find_sequence(*seq);
+            if (at < 0) alarm("PS0078", fmt::format("M99 P{}: no block N{}", *seq, *seq));
+            f.pc = at;
           } else {
             f.pc = 0;
           }
-          last_back_jump_ = &b;
+          last_back_jump_ = block_index_;
           last_back_jump_prog_ = prog_;
           return true;
         }

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -36,6 +38,7 @@ struct Step;
 class Executor final : private CornerControl, CompensationControl, StrokeFrame, NoseTipSource {
 public:
   Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options = {});
+  ~Executor();
   RunResult run(MoveSink& sink);
 
   // Variable value after (or during) a run, as a program would read it.
@@ -158,6 +161,8 @@ private:
   void m_code_event(int m);  // spindle, coolant, M06, M00/M01 and other M codes of the block
   void set_origin();
   void warn_mixed_decimal_points(const nc::Program& p);
+  void start_file_checks(const nc::Program& main);
+  void finish_file_checks(const nc::Program& main);
   double css_top_speed() const;
   double minutes_per_rev(double r0, double r1) const;
   void warn_spindle_limit(double rpm, std::uint16_t column);  // NC2090 (feed_time.cpp)
@@ -326,7 +331,8 @@ private:
     int repeat = 0;          // calls still to come (L)
     std::array<nc::Value, 33> initial{};  // locals on entry, for repeated macro calls
     const nc::Program* caller = nullptr;    // the calling block, for the call stack of an alarm
-    const nc::Block* call_block = nullptr;
+    std::uint32_t call_line = 0;
+    std::uint16_t call_column = 0;
   };
   void add_call_stack(nc::Diagnostic& d) const;
   // the observer's side (observe.cpp): only called when there is one
@@ -357,11 +363,24 @@ private:
   int common_high_ = 199;          // last of the first common range
   const nc::Program* prog_ = nullptr;
   const nc::Block* block_ = nullptr;
+  std::int32_t block_index_ = -1;  // block_'s index in prog_
+  // The compiled piece holding block_ (its words, code, errors, comments and prints): prog_ itself, or
+  // a piece of a streamed program, kept in memory by unit_hold_; it holds prog_'s blocks [first, end).
+  const nc::Program* unit_ = nullptr;
+  const nc::Program* unit_prog_ = nullptr;
+  std::int32_t unit_first_ = 0, unit_end_ = 0;
+  std::shared_ptr<const nc::Program> unit_hold_;
+  // Makes block i of p the block in hand; false past p's end.
+  bool select_block(const nc::Program* p, std::int32_t i);
+  std::uint32_t line_of(const nc::Program* p, std::int32_t i);
+  // A streamed program's whole-file checks (NC2001, NC2030, NC2031) as its pieces are read.
+  struct FileChecks;
+  std::unique_ptr<FileChecks> file_checks_;
   bool finished_ = false;
   int macro_depth_ = 0;
   int sub_depth_ = 0;
   std::unordered_map<const nc::Program*, std::vector<std::int32_t>> loop_of_;  // innermost DO per block
-  const nc::Block* last_back_jump_ = nullptr;
+  std::int32_t last_back_jump_ = -1;  // the block index of the last jump back, in last_back_jump_prog_
   const nc::Program* last_back_jump_prog_ = nullptr;
 
   // current block words
@@ -372,8 +391,8 @@ private:
   std::vector<int> m_codes_;
   bool word_check_ = false;  // the block repeats an address or signs one that takes no sign
   double digit_limit_ = 1e8;  // 10^number_digits: a word's value in units or increments stays below
-  std::set<std::pair<const nc::Block*, std::string>> warned_once_;  // warn_once: given already
-  std::unordered_set<const nc::Block*> repeat_warned_;  // blocks already warned of a repeated address
+  std::set<std::tuple<const nc::Program*, std::int32_t, std::string>> warned_once_;  // warn_once: given already
+  std::set<std::pair<const nc::Program*, std::int32_t>> repeat_warned_;  // blocks warned of a repeated address
   std::uint64_t operations_ = 0;  // expression operations evaluated, counted with blocks as steps
   std::uint64_t block_moves_ = 0;  // moves past the first of their block, counted as steps too
   std::uint64_t moving_block_ = 0;  // the count of blocks when the last move was made

@@ -65,6 +65,8 @@ std::string shown_number(double v, int decimals) {
 
 double increments_per_mm(const MachineProfile& p) { return std::round(1 / p.increment); }
 
+Executor::~Executor() = default;
+
 Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options)
     : profile_(profile), library_(library), options_(std::move(options)) {
   for (char a : profile_.axes) has_axis_[axis_index(a)] = true;
@@ -153,13 +155,13 @@ void Executor::warn(std::string code, std::string message, std::uint16_t column)
 }
 
 void Executor::warn_once(std::string code, std::string message, std::uint16_t column) {
-  if (warned_once_.emplace(block_, code).second) warn(std::move(code), std::move(message), column);
+  if (warned_once_.emplace(prog_, block_index_, code).second) warn(std::move(code), std::move(message), column);
 }
 
 // An expression run with `reader`, its fault an alarm; one instance a reader, each its own code.
 template <class Reader>
 Value Executor::evaluate_with(const nc::Expr& e, Reader& reader) {
-  const nc::Instr* code = prog_->code.data();
+  const nc::Instr* code = unit_->code.data();
   operations_ += e.end - e.begin;
   nc::EvalResult r = nc::evaluate(code + e.begin, code + e.end, reader, eval_options_);
   switch (r.fault) {
@@ -195,7 +197,18 @@ bool Executor::condition(const nc::Expr& e) {
 
 // Programs that mix dimension words with and without a decimal point are a classic source of
 // scrapped parts. A word of a macro call (G65, G66, a custom G code) is an argument, not an axis.
-void Executor::warn_mixed_decimal_points(const nc::Program& program) {
+// The search goes through a program's blocks in order, a piece at a time when it is streamed.
+namespace {
+struct DecimalPointSearch {
+  bool with = false, without = false;
+  char letter = 0;
+  double value = 0;
+  std::uint16_t column = 0;
+  std::uint32_t line = 0;
+  bool argument = false;
+};
+
+void search_decimal_points(const MachineProfile& profile_, const nc::Program& piece, DecimalPointSearch& found) {
   auto is_call = [&](const nc::Program& p, const nc::Block& b) {
     for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
       const nc::Word& word = p.words[w];
@@ -207,47 +220,87 @@ void Executor::warn_mixed_decimal_points(const nc::Program& program) {
     }
     return false;
   };
-  const int decimals = static_cast<int>(std::lround(-std::log10(profile_.increment)));
-  {
-    const nc::Program* p = &program;
-    const nc::Word* with = nullptr;
-    const nc::Word* without = nullptr;
-    std::uint32_t without_line = 0;
-    bool without_is_argument = false;
-    for (const auto& b : p->blocks) {
-      if (b.kind != nc::Statement::nc) continue;  // DPRNT's range indexes Program::prints
-      for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
-        const nc::Word& word = p->words[w];
-        if (!word.literal || !scaled_address(word.letter)) continue;
-        if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
-        if (word.letter == 'Q' && profile_.lathe()) continue;  // and a start angle (G32, G92), a depth in increments (G76)
-        if (word.letter == 'R' && profile_.lathe() && block_has_g(*p, b, 730, 730)) continue;  // G73 R: divisions
-        if (word.letter == 'Q' && !profile_.lathe() && block_has_g(*p, b, 330, 330)) continue;  // G33's start angle
-        if (word.letter == 'Q' && calls_subprogram(*p, b)) continue;  // M98 Q: a sequence number
-        if (word.decimal_point) with = with ? with : &word;
-        else if (word.value != 0 && !without) {
-          without = &word;
-          without_line = b.line;
-          without_is_argument = is_call(*p, b);
-        }
+  const nc::Program* p = &piece;
+  for (const auto& b : p->blocks) {
+    if (b.kind != nc::Statement::nc) continue;  // DPRNT's range indexes Program::prints
+    for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+      const nc::Word& word = p->words[w];
+      if (!word.literal || !scaled_address(word.letter)) continue;
+      if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
+      if (word.letter == 'Q' && profile_.lathe()) continue;  // and a start angle (G32, G92), a depth in increments (G76)
+      if (word.letter == 'R' && profile_.lathe() && block_has_g(*p, b, 730, 730)) continue;  // G73 R: divisions
+      if (word.letter == 'Q' && !profile_.lathe() && block_has_g(*p, b, 330, 330)) continue;  // G33's start angle
+      if (word.letter == 'Q' && calls_subprogram(*p, b)) continue;  // M98 Q: a sequence number
+      if (word.decimal_point) found.with = true;
+      else if (word.value != 0 && !found.without) {
+        found.without = true;
+        found.letter = word.letter;
+        found.value = word.value;
+        found.column = word.column;
+        found.line = b.line;
+        found.argument = is_call(*p, b);
       }
     }
-    if (!with || !without) return;
-    const std::string word = fmt::format("{}{}", without->letter, shown_number(without->value, 0));
-    const std::string read_as = profile_.decimal_calculator
-                                    ? shown_number(without->value, 0)
-                                    : shown_number(without->value * profile_.increment, decimals);
-    const std::string what = without_is_argument ? fmt::format("argument {} of a macro call is read as {}", word, read_as)
-                                                 : fmt::format("{} is read as {} mm", word, read_as);
-    result_.warnings.push_back(nc::Diagnostic{
-        nc::Severity::warning, "NC2001",
-        profile_.decimal_calculator
-            ? fmt::format("words with and without a decimal point in one program; {} (calculator-type input, "
-                          "No.3401#0 = 1)", what)
-            : fmt::format("words with and without a decimal point in one program; {} ({} least input increments, "
-                          "No.3401#0 = 0)", what, shown_number(without->value, 0)),
-        nc::Span{p->file.get(), without_line, without->column, 1}});
   }
+}
+
+void warn_decimal_points(const MachineProfile& profile_, const nc::Program& program, const DecimalPointSearch& found,
+                         std::vector<nc::Diagnostic>& to) {
+  if (!found.with || !found.without) return;
+  const int decimals = static_cast<int>(std::lround(-std::log10(profile_.increment)));
+  const std::string word = fmt::format("{}{}", found.letter, shown_number(found.value, 0));
+  const std::string read_as = profile_.decimal_calculator ? shown_number(found.value, 0)
+                                                          : shown_number(found.value * profile_.increment, decimals);
+  const std::string what = found.argument ? fmt::format("argument {} of a macro call is read as {}", word, read_as)
+                                          : fmt::format("{} is read as {} mm", word, read_as);
+  to.push_back(nc::Diagnostic{
+      nc::Severity::warning, "NC2001",
+      profile_.decimal_calculator
+          ? fmt::format("words with and without a decimal point in one program; {} (calculator-type input, "
+                        "No.3401#0 = 1)", what)
+          : fmt::format("words with and without a decimal point in one program; {} ({} least input increments, "
+                        "No.3401#0 = 0)", what, shown_number(found.value, 0)),
+      nc::Span{program.file.get(), found.line, found.column, 1}});
+}
+
+}  // namespace
+
+void Executor::warn_mixed_decimal_points(const nc::Program& program) {
+  DecimalPointSearch found;
+  search_decimal_points(profile_, program, found);
+  warn_decimal_points(profile_, program, found, result_.warnings);
+}
+
+// A streamed main file's checks of every program, made as its pieces are read and given at the end.
+struct Executor::FileChecks {
+  explicit FileChecks(const MachineProfile& start) : profile(start), hints(profile) {}
+  MachineProfile profile;  // as the run starts (G10 L52 may change it): as the checks before a run see it
+  ProfileHints hints;
+  std::vector<std::pair<const nc::Program*, DecimalPointSearch>> programs;
+};
+
+void Executor::start_file_checks(const nc::Program& main) {
+  file_checks_ = std::make_unique<FileChecks>(profile_);
+  main.stream->visit([this](const nc::Program& program, const nc::Program& piece) {
+    FileChecks& c = *file_checks_;
+    if (c.programs.empty() || c.programs.back().first != &program) c.programs.emplace_back(&program, DecimalPointSearch{});
+    search_decimal_points(c.profile, piece, c.programs.back().second);
+    c.hints.see(program, piece);
+  });
+}
+
+// The file's warnings come first, as when they are found before the run; the run's then stop at 1000
+// in all, as they do when the file's come first (NC2001 of a called program is never held back).
+void Executor::finish_file_checks(const nc::Program& main) {
+  library_.read_all();
+  main.stream->forget_visitors();
+  std::vector<nc::Diagnostic> all;
+  for (const auto& [program, found] : file_checks_->programs) warn_decimal_points(file_checks_->profile, *program, found, all);
+  for (nc::Diagnostic& d : file_checks_->hints.warnings()) all.push_back(std::move(d));
+  for (nc::Diagnostic& d : result_.warnings)
+    if (d.code == "NC2001" || all.size() < 1000) all.push_back(std::move(d));
+  result_.warnings = std::move(all);
+  file_checks_.reset();
 }
 
 RunResult Executor::run(MoveSink& sink) {
@@ -271,9 +324,13 @@ RunResult Executor::run(MoveSink& sink) {
   init_stroke_check();
 
   reached_.clear();
-  for (const auto& p : library_.programs())  // the main file's; a library program's when it is called
-    if (p->file == main->file) warn_mixed_decimal_points(*p);
-  for (nc::Diagnostic& d : profile_hints(library_, profile_)) result_.warnings.push_back(std::move(d));
+  if (main->stream) {
+    start_file_checks(*main);  // given when the file has been read
+  } else {
+    for (const auto& p : library_.programs())  // the main file's; a library program's when it is called
+      if (p->file == main->file) warn_mixed_decimal_points(*p);
+    for (nc::Diagnostic& d : profile_hints(library_, profile_)) result_.warnings.push_back(std::move(d));
+  }
 
   try {
     for (const auto& [n, v] : options_.presets) {
@@ -296,6 +353,7 @@ RunResult Executor::run(MoveSink& sink) {
     } catch (const nc::Alarm&) {
     }
   }
+  if (file_checks_) finish_file_checks(*main);
   if (observer_) observer_->finished(moves_delivered(), modal_readout());
   return result_;
 }
@@ -325,13 +383,12 @@ void Executor::check_runaway() {
   const bool block_runs_away = moving_block_ == result_.stats.blocks && 2 * moves_in_block_ > this->steps();
   if (block_runs_away && block_) {
     where = fmt::format("; the block at {}:{} makes move after move", prog_->file->name(), block_->line);
-  } else if (last_back_jump_) {
-    const Block& b = *last_back_jump_;
-    where = fmt::format("; it keeps looping through {}:{}", last_back_jump_prog_->file->name(), b.line);
+  } else if (last_back_jump_ >= 0 && select_block(last_back_jump_prog_, last_back_jump_)) {
+    const Block& b = *block_;
+    where = fmt::format("; it keeps looping through {}:{}", prog_->file->name(), b.line);
     if (b.kind == Statement::end_loop && b.match >= 0)
-      where += fmt::format(" (END {} of the loop at line {})", b.loop_id, last_back_jump_prog_->blocks[b.match].line);
-    prog_ = last_back_jump_prog_;
-    block_ = last_back_jump_;
+      where += fmt::format(" (END {} of the loop at line {})", b.loop_id, line_of(prog_, b.match));
+    select_block(last_back_jump_prog_, last_back_jump_);
   }
   if (steps)
     alarm("NC9000", fmt::format("program stopped after {} steps ({} blocks, {} moves past a block's first and {} "
@@ -344,11 +401,35 @@ void Executor::check_runaway() {
                               seconds, result_.stats.blocks, where));
 }
 
+// Block i of p in hand, with the piece holding its words and code (read again when it has gone).
+bool Executor::select_block(const nc::Program* p, std::int32_t i) {
+  prog_ = p;
+  if (p != unit_prog_ || i < unit_first_ || i >= unit_end_) {
+    nc::Program::Piece piece = p->piece_of(i);
+    if (!piece.piece) return false;
+    unit_ = piece.piece;
+    unit_prog_ = p;
+    unit_first_ = piece.first;
+    unit_end_ = piece.end;
+    unit_hold_ = std::move(piece.hold);
+  }
+  block_ = &unit_->blocks[i - unit_first_];
+  block_index_ = i;
+  return true;
+}
+
+std::uint32_t Executor::line_of(const nc::Program* p, std::int32_t i) {
+  const nc::Program::Piece piece = p->piece_of(i);
+  return piece.piece ? piece.piece->blocks[i - piece.first].line : 0;
+}
+
 void Executor::step() {
   Frame& f = frames_.back();
-  prog_ = f.prog;
-  if (f.pc >= static_cast<std::int32_t>(prog_->blocks.size())) {
-    block_ = prog_->blocks.empty() ? nullptr : &prog_->blocks.back();
+  if (!select_block(f.prog, f.pc)) [[unlikely]] {
+    std::int32_t last = f.pc - 1;
+    while (last >= 0 && !f.prog->piece_of(last).piece) --last;  // past the end: the last block
+    block_ = nullptr;
+    if (last >= 0) select_block(f.prog, last);
     if (frames_.size() == 1) {
       warn("NC2002", "the program ends without M30 or M02");
       finished_ = true;
@@ -358,8 +439,7 @@ void Executor::step() {
     }
     return;
   }
-  const Block& b = prog_->blocks[f.pc];
-  block_ = &b;
+  const Block& b = *block_;
   // a line of nothing but comments: not counted or traced, as the source's count leaves it out
   if (b.kind == Statement::empty && b.sequence < 0 && b.error < 0 && !b.block_skip) {
     ++f.pc;
@@ -371,7 +451,10 @@ void Executor::step() {
     ++f.pc;
     return;
   }
-  if (b.error >= 0) throw nc::Alarm(prog_->errors[b.error]);
+  if (prog_->stream && (b.kind == Statement::while_do || b.kind == Statement::do_loop) && b.match < 0 &&
+      b.error < 0) [[unlikely]]
+    prog_->stream->settle_loop(prog_->stream_index, f.pc);  // its END, or its alarm, not read yet
+  if (b.error >= 0) throw nc::Alarm(unit_->errors[b.error]);
   if (b.sequence >= 0) last_sequence_ = b.sequence;
   if (b.kind == Statement::nc) ++nc_blocks_since_;
   else if (b.kind != Statement::empty) ++statements_since_;
@@ -412,7 +495,7 @@ void Executor::step() {
     case Statement::do_loop: ++f.pc; break;
     case Statement::end_loop:
       f.pc = b.match;
-      last_back_jump_ = &b;
+      last_back_jump_ = block_index_;
       last_back_jump_prog_ = prog_;
       break;
     case Statement::popen: case Statement::pclos: case Statement::dprnt: case Statement::bprnt:
@@ -438,20 +521,21 @@ void Executor::jump(const Block& b, double sequence) {
   if (!(sequence >= 1 && sequence <= 99999999))
     alarm("PS0128", fmt::format("GOTO {}: sequence numbers are 1 to 99999999", sequence), b.column);
   int n = round_int(sequence);
-  auto it = prog_->sequence_index.find(n);
-  if (it == prog_->sequence_index.end()) alarm("PS0128", fmt::format("GOTO {}: no block N{} in this program", n, n), b.column);
-  std::int32_t target = it->second;
-  const auto& loops = loops_of(prog_);
-  std::int32_t inner = loops[target];
-  if (inner >= 0) {
-    std::int32_t end = prog_->blocks[inner].match;
-    if (f.pc < inner || f.pc > end)
-      alarm("PS0124", fmt::format("GOTO {} jumps into the DO {} loop of line {}: entering a loop from outside is not allowed",
-                                  n, prog_->blocks[inner].loop_id, prog_->blocks[inner].line),
-            b.column);
+  const std::int32_t target = prog_->find_sequence(n);
+  if (target < 0) alarm("PS0128", fmt::format("GOTO {}: no block N{} in this program", n, n), b.column);
+  nc::ProgramStream::Loop inner;
+  if (prog_->stream) {
+    inner = prog_->stream->loop_around(prog_->stream_index, target);
+  } else if (const std::int32_t at = loops_of(prog_)[target]; at >= 0) {
+    const Block& d = prog_->blocks[at];
+    inner = nc::ProgramStream::Loop{at, d.match, d.loop_id, d.line};
   }
+  if (inner.begin >= 0 && (f.pc < inner.begin || f.pc > inner.end))
+    alarm("PS0124", fmt::format("GOTO {} jumps into the DO {} loop of line {}: entering a loop from outside is not allowed",
+                                n, inner.id, inner.line),
+          b.column);
   if (target <= f.pc) {
-    last_back_jump_ = &b;
+    last_back_jump_ = block_index_;
     last_back_jump_prog_ = prog_;
   }
   f.pc = target;

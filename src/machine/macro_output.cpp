@@ -92,7 +92,7 @@ void Executor::external_output(const nc::Block& b) {
   }
   std::string line;
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
-    const nc::PrintItem& item = prog_->prints[i];
+    const nc::PrintItem& item = unit_->prints[i];
     if (item.var.empty()) {
       for (char c : item.text) {
         out.bytes += iso_code(c, parity);

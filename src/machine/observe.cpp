@@ -42,9 +42,9 @@ void Executor::observe_call(const Frame& f) {
   c.level = f.level;
   c.custom = f.custom;
   c.modal = f.modal;
-  if (f.caller && f.call_block) {
+  if (f.caller && f.call_line) {
     c.call_file = f.caller->file.get();
-    c.call_line = f.call_block->line;
+    c.call_line = f.call_line;
   }
   observer_->entered(c);
   if (f.kind != Frame::macro) return;

@@ -143,11 +143,11 @@ void Executor::write_system(int n, Value v, std::uint16_t column) {
   if (range && range->kind == SystemKind::alarm) {
     const double value = v.number();  // (in a wide type: a huge value must not overflow the alarm number)
     const long long code = std::isfinite(value) ? std::llround(std::clamp(value, -1e15, 1e15)) : 0;
-    std::string text = block_ && block_->comment >= 0 ? prog_->comments[block_->comment] : "";
+    std::string text = block_ && block_->comment >= 0 ? unit_->comments[block_->comment] : "";
     alarm(fmt::format("MC{}", 3000 + code), text.empty() ? "alarm raised by #3000" : text, column);
   }
   if (range && range->kind == SystemKind::message_stop) {
-    std::string text = block_ && block_->comment >= 0 ? prog_->comments[block_->comment] : "";
+    std::string text = block_ && block_->comment >= 0 ? unit_->comments[block_->comment] : "";
     emit_event(MoveKind::program_stop, 0);
     warn("MC3006", text.empty() ? "stop with message (#3006)" : "stop: " + text, column);
     return;

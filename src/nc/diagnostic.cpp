@@ -6,23 +6,6 @@
 
 namespace ncurve::nc {
 
-SourceFile::SourceFile(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
-  line_starts_.push_back(0);
-  const char* begin = text_.data();
-  const char* end = begin + text_.size();
-  for (const char* p = begin; (p = static_cast<const char*>(std::memchr(p, '\n', end - p))) != nullptr;)
-    line_starts_.push_back(static_cast<std::size_t>(++p - begin));
-  if (line_starts_.size() > 1 && line_starts_.back() == text_.size()) line_starts_.pop_back();
-}
-
-std::string_view SourceFile::line(std::uint32_t number) const {
-  if (number == 0 || number > line_starts_.size()) return {};
-  std::size_t begin = line_starts_[number - 1];
-  std::size_t end = number < line_starts_.size() ? line_starts_[number] : text_.size();
-  while (end > begin && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;
-  return std::string_view(text_).substr(begin, end - begin);
-}
-
 static const char* severity_name(Severity s) {
   switch (s) {
     case Severity::error: return "error";
@@ -32,12 +15,13 @@ static const char* severity_name(Severity s) {
   return "error";
 }
 
-std::string_view block_text(const Span& s) {
+std::string block_text(const Span& s) {
   if (!s.file) return {};
-  std::string_view text = s.file->line(s.line);
+  const std::string line = s.file->line(s.line);
+  std::string_view text = line;
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == ';')) text.remove_suffix(1);
-  return text;
+  return std::string(text);
 }
 
 static std::string call_stack(const Diagnostic& d) {
@@ -75,7 +59,8 @@ std::string format(const Diagnostic& d) {
   std::string head = fmt::format("{}{}: {}{}{}", where, severity_name(d.severity), escape_controls(d.code),
                                  d.code.empty() ? "" : " ", escape_controls(d.message));
   if (!d.span.file || d.span.line == 0) return head + call_stack(d);
-  std::string_view text = d.span.file->line(d.span.line);
+  const std::string line = d.span.file->line(d.span.line);
+  const std::string_view text = line;
   constexpr std::size_t kMaxQuote = 160;  // long lines are quoted around the column
   std::size_t col = d.span.column ? d.span.column - 1 : 0;
   std::size_t from = col > kMaxQuote / 2 ? col - kMaxQuote / 2 : 0;

@@ -7,22 +7,9 @@
 #include <string_view>
 #include <vector>
 
+#include "nc/source_file.hpp"
+
 namespace ncurve::nc {
-
-class SourceFile {
-public:
-  SourceFile(std::string name, std::string text);
-  const std::string& name() const { return name_; }
-  const std::string& text() const { return text_; }
-  std::size_t line_count() const { return line_starts_.size(); }
-  // 1-based line number; returns the line without its end-of-line characters.
-  std::string_view line(std::uint32_t number) const;
-
-private:
-  std::string name_;
-  std::string text_;
-  std::vector<std::size_t> line_starts_;
-};
 
 struct Span {
   const SourceFile* file = nullptr;
@@ -42,7 +29,7 @@ struct Diagnostic {
 };
 
 // The text of the block at a span, without leading and trailing blanks.
-std::string_view block_text(const Span& s);
+std::string block_text(const Span& s);
 
 // "file:line:col: error: PS0011 feed rate is zero" followed by the block and a caret, and a
 // "called from file:line (block)" line for each call around it.

@@ -14,64 +14,110 @@
 #include "nc/block_parser.hpp"
 #include "nc/plain_line.hpp"
 #include "nc/program.hpp"
+#include "nc/line_reader.hpp"
 #include "nc/text.hpp"
 
 namespace ncurve::nc {
-namespace {
+namespace text {
 
-using namespace text;
-
-// The first kMaxDiagnostics problems of a kind (syntax, loops) and a count of the rest.
-struct Problems {
-  std::vector<Diagnostic> list;
-  std::size_t more = 0;
-};
+void Problems::add(Diagnostic d) {
+  if (kept < kMaxDiagnostics) {
+    if (keep) list.push_back(std::move(d));
+    ++kept;
+  } else {
+    ++more;
+  }
+}
 
 void add_error(Program& p, Block& b, std::string code, std::string message, std::uint16_t column,
                std::uint32_t length, Problems& all) {
   Diagnostic d{Severity::error, std::move(code), std::move(message), Span{p.file.get(), b.line, column, length}};
-  if (all.list.size() < kMaxDiagnostics) all.list.push_back(d);
-  else ++all.more;
   if (b.error < 0) {
     b.error = static_cast<std::int32_t>(p.errors.size());
-    p.errors.push_back(std::move(d));
+    p.errors.push_back(d);
   }
+  all.add(std::move(d));
 }
 
-// Pairs DO/WHILE with END in each program; FANUC allows three levels of nesting.
-void match_loops(Program& p, Problems& all) {
-  std::vector<std::int32_t> open;
-  for (std::size_t i = 0; i < p.blocks.size(); ++i) {
-    Block& b = p.blocks[i];
-    if (b.kind == Statement::while_do || b.kind == Statement::do_loop) {
-      if (open.size() >= 3) {
-        add_error(p, b, "PS0126", "DO loops nested more than 3 deep", b.column, 1, all);
-        continue;
-      }
-      open.push_back(static_cast<std::int32_t>(i));
-    } else if (b.kind == Statement::end_loop) {
-      if (!open.empty() && p.blocks[open.back()].loop_id == b.loop_id) {
-        b.match = open.back();
-        p.blocks[open.back()].match = static_cast<std::int32_t>(i);
-        open.pop_back();
-      } else if (open.empty()) {
-        add_error(p, b, "PS0124", fmt::format("END {} without a DO {} before it", b.loop_id, b.loop_id), b.column, 3,
-                  all);
-      } else {
-        add_error(p, b, "PS0124",
-                  fmt::format("END {} closes DO {} (line {}) out of order: loops may nest but not overlap", b.loop_id,
-                              p.blocks[open.back()].loop_id, p.blocks[open.back()].line),
-                  b.column, 3, all);
-      }
+void LoopMatcher::see(std::int32_t index, const Block& b, const Pair& pair, const Fault& fault) {
+  if (b.kind == Statement::while_do || b.kind == Statement::do_loop) {
+    if (open_.size() >= 3) {
+      fault(index, b.line, b.column, "PS0126", "DO loops nested more than 3 deep", 1);
+      return;
+    }
+    open_.push_back(Open{index, b.loop_id, b.line, b.column});
+  } else if (b.kind == Statement::end_loop) {
+    if (!open_.empty() && open_.back().id == b.loop_id) {
+      pair(open_.back().index, index, b.loop_id, open_.back().line);
+      open_.pop_back();
+    } else if (open_.empty()) {
+      fault(index, b.line, b.column, "PS0124", fmt::format("END {} without a DO {} before it", b.loop_id, b.loop_id), 3);
+    } else {
+      fault(index, b.line, b.column, "PS0124",
+            fmt::format("END {} closes DO {} (line {}) out of order: loops may nest but not overlap", b.loop_id,
+                        open_.back().id, open_.back().line),
+            3);
     }
   }
-  for (std::int32_t i : open) {
+}
+
+void LoopMatcher::close(const Fault& fault) {
+  for (const Open& o : open_)
+    fault(o.index, o.line, o.column, "PS0124", fmt::format("DO {} has no END {}", o.id, o.id), 2);
+  open_.clear();
+}
+
+void match_loops(Program& p, Problems& all) {
+  LoopMatcher m;
+  auto pair = [&](std::int32_t d, std::int32_t e, std::uint8_t, std::uint32_t) {
+    p.blocks[d].match = e;
+    p.blocks[e].match = d;
+  };
+  auto fault = [&](std::int32_t i, std::uint32_t, std::uint16_t, const char* code, std::string message,
+                   std::uint32_t length) {
     Block& b = p.blocks[i];
-    add_error(p, b, "PS0124", fmt::format("DO {} has no END {}", b.loop_id, b.loop_id), b.column, 2, all);
+    add_error(p, b, code, std::move(message), b.column, length, all);
+  };
+  for (std::size_t i = 0; i < p.blocks.size(); ++i) m.see(static_cast<std::int32_t>(i), p.blocks[i], pair, fault);
+  m.close(fault);
+}
+
+void programs_after_end(std::string_view text, std::uint32_t& line, std::uint32_t end_line,
+                        std::vector<UnreadProgram>& found) {
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    ++line;
+    std::size_t k = pos;
+    while (k < eol && (text[k] == ' ' || text[k] == '\t')) ++k;
+    if (k + 1 < eol && (to_upper(text[k]) == 'O' || text[k] == ':') && is_digit(text[k + 1])) {
+      int number = 0;
+      for (std::size_t j = k + 1, digits = 0; j < eol && is_digit(text[j]) && digits < 8; ++j, ++digits)
+        number = number * 10 + (text[j] - '0');
+      found.push_back(UnreadProgram{number, line, end_line});
+    }
+    pos = eol + 1;
   }
 }
 
-struct LineScanner {
+void merge_problems(Problems& syntax, Problems& loops, ParseResult& result) {
+  std::stable_sort(loops.list.begin(), loops.list.end(),  // a DO without END comes at its program's end
+                   [](const Diagnostic& a, const Diagnostic& b) { return a.span.line < b.span.line; });
+  // each list is in line order: the first kMaxDiagnostics of both together are among them
+  std::vector<Diagnostic>& all = result.diagnostics;
+  all.reserve(syntax.list.size() + loops.list.size());
+  std::merge(std::make_move_iterator(syntax.list.begin()), std::make_move_iterator(syntax.list.end()),
+             std::make_move_iterator(loops.list.begin()), std::make_move_iterator(loops.list.end()),
+             std::back_inserter(all), [](const Diagnostic& a, const Diagnostic& b) { return a.span.line < b.span.line; });
+  result.more_diagnostics = syntax.more + loops.more;
+  if (all.size() > kMaxDiagnostics) {
+    result.more_diagnostics += all.size() - kMaxDiagnostics;
+    all.resize(kMaxDiagnostics);
+  }
+}
+
+struct LineReader::Scanner {
   std::array<Ch, kMaxBlockChars> buf;
   std::size_t n = 0;
   std::string comment;
@@ -91,45 +137,50 @@ struct LineScanner {
   bool failed() const { return !error.empty(); }
 };
 
-// The program number lines (O1234, :1234) in the text the control does not read, after the '%' on
-// line end_line that ends the file.
-std::vector<UnreadProgram> programs_after_end(const std::string& text, std::size_t pos, std::uint32_t end_line) {
-  std::vector<UnreadProgram> found;
-  std::uint32_t line = end_line;
-  while (pos < text.size()) {
-    std::size_t eol = text.find('\n', pos);
-    if (eol == std::string::npos) eol = text.size();
-    ++line;
-    std::size_t k = pos;
-    while (k < eol && (text[k] == ' ' || text[k] == '\t')) ++k;
-    if (k + 1 < eol && (to_upper(text[k]) == 'O' || text[k] == ':') && is_digit(text[k + 1])) {
-      int number = 0;
-      for (std::size_t j = k + 1, digits = 0; j < eol && is_digit(text[j]) && digits < 8; ++j, ++digits)
-        number = number * 10 + (text[j] - '0');
-      found.push_back(UnreadProgram{number, line, end_line});
-    }
-    pos = eol + 1;
-  }
-  return found;
+LineReader::LineReader(const SourceFile& file, int max_digits, Hooks hooks)
+    : file_(file), max_digits_(max_digits), hooks_(std::move(hooks)), scanner_(std::make_unique<Scanner>()) {}
+LineReader::~LineReader() = default;
+
+bool LineReader::last_alarms(const Program* current, const ReadState& state) const {
+  if (!current || current->blocks.empty()) return current && state.last_alarms;
+  return current->blocks.back().error >= 0 && !current->blocks.back().block_skip;
 }
 
-// The last block alarms when the control reaches it (a text problem, no block skip).
-bool follows_alarm(const Program& p) {
-  return !p.blocks.empty() && p.blocks.back().error >= 0 && !p.blocks.back().block_skip;
+// The block is the first of the program with its N (a GOTO target).
+bool LineReader::first_with_sequence(const Program& p, const Block& b) const {
+  return p.sequence_index.at(b.sequence) + 1 == static_cast<std::int32_t>(p.blocks.size()) &&
+         !(hooks_.sequence_before && hooks_.sequence_before(b.sequence));
+}
+
+// A block with an error after another such block is never reached: the one before alarms, and only
+// an N makes a block a target (the first block with that N). It is counted, not kept (junk).
+void LineReader::drop_if_unreachable(const Block& b, ReadState& state, Program& current) {
+  std::vector<Block>& blocks = current.blocks;
+  if (b.error < 0 || b.block_skip || state.blocks + blocks.size() < 2) return;
+  if (b.sequence >= 0 && first_with_sequence(current, b)) return;
+  const bool before_alarms = blocks.size() >= 2
+                                 ? blocks[blocks.size() - 2].error >= 0 && !blocks[blocks.size() - 2].block_skip
+                                 : state.last_alarms;
+  if (!before_alarms) return;
+  if (b.error + 1 == static_cast<std::int32_t>(current.errors.size())) current.errors.pop_back();
+  if (b.comment >= 0 && b.comment + 1 == static_cast<std::int32_t>(current.comments.size()))
+    current.comments.pop_back();
+  blocks.pop_back();
 }
 
 // A line that starts no program (O or ':' first) and has no N (but a leading N of a number already
 // given, which GOTO does not reach), '/', '%', DO, WHILE (W) or END: none of its blocks is a jump
 // target, so after a block that alarms it can never run. Conservative: the letters anywhere on the
 // line, comments too.
-bool cannot_be_a_target(std::string_view raw, const Program& p) {
+bool LineReader::cannot_be_a_target(std::string_view raw, const Program& p) const {
   std::size_t k = raw.find_first_not_of(" \t\r");
   if (k != std::string_view::npos && (to_upper(raw[k]) == 'O' || raw[k] == ':')) return false;
   if (k != std::string_view::npos && to_upper(raw[k]) == 'N') {
     std::size_t end = ++k;
     while (end < raw.size() && is_digit(raw[end]) && end - k <= 8) ++end;
     if (end == k || end - k > 8) return false;
-    if (!p.sequence_index.contains(std::stoi(std::string(raw.substr(k, end - k))))) return false;
+    const std::int32_t n = std::stoi(std::string(raw.substr(k, end - k)));
+    if (!p.sequence_index.contains(n) && !(hooks_.sequence_before && hooks_.sequence_before(n))) return false;
     k = end;
   } else {
     k = 0;
@@ -142,169 +193,123 @@ bool cannot_be_a_target(std::string_view raw, const Program& p) {
   return true;
 }
 
-}  // namespace
-
-std::size_t compiled_size(std::size_t text_bytes, std::size_t lines) {
-  return text_bytes + lines * (sizeof(std::size_t) + sizeof(Block) + sizeof(Word));
-}
-
-std::size_t memory_bound(std::size_t text_bytes, const ParseOptions& options) {
-  return options.max_memory ? options.max_memory : std::max<std::size_t>(10 * text_bytes, std::size_t{256} << 20);
-}
-
-ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) {
-  const int max_digits = std::clamp(options.max_digits, 1, kMostDigits);
-  if (const std::size_t need = compiled_size(file->text().size(), file->line_count()),
-      bound = memory_bound(file->text().size(), options);
-      need > bound)
-    throw base::BoundExceeded(fmt::format(
-        "{}: {} lines in {:.1f} MB would take at least {:.0f} MB of memory once read ({:.0f} bytes a line), more than "
-        "the bound of {:.0f} MB ({}); --max-memory MB raises it",
-        file->name(), file->line_count(), file->text().size() / 1e6, need / 1e6,
-        static_cast<double>(need) / static_cast<double>(std::max<std::size_t>(file->line_count(), 1)), bound / 1e6,
-        options.max_memory ? "--max-memory" : "ten times the program's size, at least 256 MB"));
-  ParseResult result;
-  std::uint32_t line = 0;
-  Program* current = nullptr;
+void LineReader::handle_block(std::uint32_t line, ReadState& state, Program*& current, Problems& syntax) {
+  Scanner& ls = *scanner_;
+  std::span<const Ch> s(ls.buf.data(), ls.n);
+  std::size_t i = 0;
+  // An alarm in the words after a comment that held a '(' comes from its early end.
+  auto why = [&ls](std::string message, std::uint16_t column) {
+    if (ls.early_close && column > ls.early_close)
+      message += fmt::format("; the comment opened at column {} closed early at column {}: a comment ends at its "
+                             "first ')' (comments do not nest), and the text after it is read as words",
+                             ls.early_open, ls.early_close);
+    return message;
+  };
   auto new_program = [&](int number) {
-    result.programs.push_back(std::make_unique<Program>());
-    current = result.programs.back().get();
-    current->number = number;
-    current->file = file;
-    // The first program of a file usually is all of it: reserving for its lines saves regrowth copies and
-    // page faults on long expanded programs. Later programs grow as needed.
-    if (result.programs.size() == 1) {
-      std::size_t lines_left = file->line_count() > line ? file->line_count() - line : 1;
-      base::reserve_large(current->blocks, lines_left + 1);
-      base::reserve_large(current->words, 2 * lines_left + 4);
-    }
+    ++state.program;
+    state.blocks = 0;
+    state.last_alarms = false;
+    current = hooks_.new_program(number, line);
   };
-  bool started = false;  // a block has been read (a later '%' ends the file)
-  Problems syntax, loops;
-  // A block with an error after another such block is never reached: the one before alarms, and only
-  // an N makes a block a target (the first block with that N). It is counted, not kept (junk).
-  auto drop_if_unreachable = [&](const Block& b) {
-    std::vector<Block>& blocks = current->blocks;
-    if (b.error < 0 || b.block_skip || blocks.size() < 2) return;
-    if (b.sequence >= 0 && current->sequence_index.at(b.sequence) + 1 == static_cast<std::int32_t>(blocks.size()))
-      return;  // the first block with its N: a GOTO target
-    const Block& before = blocks[blocks.size() - 2];
-    if (before.error < 0 || before.block_skip) return;
-    if (b.error + 1 == static_cast<std::int32_t>(current->errors.size())) current->errors.pop_back();
-    if (b.comment >= 0 && b.comment + 1 == static_cast<std::int32_t>(current->comments.size()))
-      current->comments.pop_back();
-    blocks.pop_back();
-  };
-
-  auto handle_block = [&](LineScanner& ls, std::uint32_t line) {
-    std::span<const Ch> s(ls.buf.data(), ls.n);
-    std::size_t i = 0;
-    // An alarm in the words after a comment that held a '(' comes from its early end.
-    auto why = [&ls](std::string message, std::uint16_t column) {
-      if (ls.early_close && column > ls.early_close)
-        message += fmt::format("; the comment opened at column {} closed early at column {}: a comment ends at its "
-                               "first ')' (comments do not nest), and the text after it is read as words",
-                               ls.early_open, ls.early_close);
-      return message;
-    };
-    // Program number line: O1234 (NAME), or :1234 in ISO code
-    if (!s.empty() && (s[0].c == 'O' || s[0].c == ':') && s.size() > 1 && is_digit(s[1].c)) {
-      std::size_t j = 1;
-      std::string digits;
-      while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
-      const bool too_long = digits.size() > 8;
-      const int number = too_long ? -1 : std::stoi(digits);
-      new_program(number > 0 ? number : -1);
-      current->line = line;
-      if (ls.has_comment) current->name = ls.comment;
-      started = true;
-      if (too_long || number == 0) {  // the program alarms where it starts
-        Block& b = current->blocks.emplace_back();
-        b.line = line;
-        b.column = s[0].col;
-        add_error(*current, b, too_long ? "PS0003" : "PS0074",
-                  too_long ? fmt::format("O{}: a program number has at most 8 digits", digits)
-                           : std::string("O0 is not a program number: program numbers start at 1"),
-                  s[0].col, static_cast<std::uint32_t>(j), syntax);
-        return;
-      }
-      if (j == s.size()) return;
-      s = s.subspan(j);
-    }
-    if (!current) new_program(-1);
-    Block& b = current->blocks.emplace_back();
-    b.line = line;
-    b.column = s.empty() ? 1 : s[0].col;
-    if (ls.has_comment) {
-      b.comment = static_cast<std::int32_t>(current->comments.size());
-      current->comments.push_back(ls.comment);
-    }
-    if (!ls.error.empty()) {
-      add_error(*current, b, "PS0009", why(ls.error, ls.error_col), ls.error_col, 1, syntax);
-      started = true;
-      drop_if_unreachable(b);
+  // Program number line: O1234 (NAME), or :1234 in ISO code
+  if (!s.empty() && (s[0].c == 'O' || s[0].c == ':') && s.size() > 1 && is_digit(s[1].c)) {
+    std::size_t j = 1;
+    std::string digits;
+    while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
+    const bool too_long = digits.size() > 8;
+    const int number = too_long ? -1 : std::stoi(digits);
+    new_program(number > 0 ? number : -1);
+    current->line = line;
+    if (ls.has_comment) current->name = ls.comment;
+    state.started = true;
+    if (too_long || number == 0) {  // the program alarms where it starts
+      Block& b = current->blocks.emplace_back();
+      b.line = line;
+      b.column = s[0].col;
+      add_error(*current, b, too_long ? "PS0003" : "PS0074",
+                too_long ? fmt::format("O{}: a program number has at most 8 digits", digits)
+                         : std::string("O0 is not a program number: program numbers start at 1"),
+                s[0].col, static_cast<std::uint32_t>(j), syntax);
       return;
     }
-    if (i < s.size() && s[i].c == '/') {
-      b.block_skip = true;
-      ++i;
-      if (i < s.size() && is_digit(s[i].c)) ++i;
+    if (j == s.size()) return;
+    s = s.subspan(j);
+  }
+  if (!current) new_program(-1);
+  Block& b = current->blocks.emplace_back();
+  b.line = line;
+  b.column = s.empty() ? 1 : s[0].col;
+  if (ls.has_comment) {
+    b.comment = static_cast<std::int32_t>(current->comments.size());
+    current->comments.push_back(ls.comment);
+  }
+  if (!ls.error.empty()) {
+    add_error(*current, b, "PS0009", why(ls.error, ls.error_col), ls.error_col, 1, syntax);
+    state.started = true;
+    drop_if_unreachable(b, state, *current);
+    return;
+  }
+  if (i < s.size() && s[i].c == '/') {
+    b.block_skip = true;
+    ++i;
+    if (i < s.size() && is_digit(s[i].c)) ++i;
+  }
+  if (i < s.size() && s[i].c == 'N') {
+    std::size_t j = i + 1;
+    std::string digits;
+    while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
+    if (digits.empty()) {
+      add_error(*current, b, "PS0005", why("no number after address N", s[i].col), s[i].col, 1, syntax);
+    } else if (digits.size() > 8) {
+      add_error(*current, b, "PS0003", "sequence number has more than 8 digits", s[i].col,
+                static_cast<std::uint32_t>(digits.size() + 1), syntax);
+    } else {
+      b.sequence = std::stoi(digits);
+      current->sequence_index.emplace(b.sequence, static_cast<std::int32_t>(current->blocks.size() - 1));
     }
-    if (i < s.size() && s[i].c == 'N') {
-      std::size_t j = i + 1;
-      std::string digits;
-      while (j < s.size() && is_digit(s[j].c)) digits += s[j++].c;
-      if (digits.empty()) {
-        add_error(*current, b, "PS0005", why("no number after address N", s[i].col), s[i].col, 1, syntax);
-      } else if (digits.size() > 8) {
-        add_error(*current, b, "PS0003", "sequence number has more than 8 digits", s[i].col,
-                  static_cast<std::uint32_t>(digits.size() + 1), syntax);
-      } else {
-        b.sequence = std::stoi(digits);
-        current->sequence_index.emplace(b.sequence, static_cast<std::int32_t>(current->blocks.size() - 1));
-      }
-      i = j;
+    i = j;
+  }
+  if (b.kind == Statement::empty && b.error < 0 && i < s.size()) {
+    std::size_t words_mark = current->words.size(), code_mark = current->code.size();
+    try {
+      compile_block(s.subspan(i), *current, b, max_digits_);
+    } catch (const SyntaxError& e) {
+      current->words.resize(words_mark);
+      current->code.resize(code_mark);
+      b.kind = Statement::empty;
+      b.words_begin = b.words_end = static_cast<std::uint32_t>(words_mark);
+      b.target = b.value = b.cond = Expr{};
+      add_error(*current, b, e.code, why(e.message, e.column), e.column, e.length, syntax);
     }
-    if (b.kind == Statement::empty && b.error < 0 && i < s.size()) {
-      std::size_t words_mark = current->words.size(), code_mark = current->code.size();
-      try {
-        compile_block(s.subspan(i), *current, b, max_digits);
-      } catch (const SyntaxError& e) {
-        current->words.resize(words_mark);
-        current->code.resize(code_mark);
-        b.kind = Statement::empty;
-        b.words_begin = b.words_end = static_cast<std::uint32_t>(words_mark);
-        b.target = b.value = b.cond = Expr{};
-        add_error(*current, b, e.code, why(e.message, e.column), e.column, e.length, syntax);
-      }
-    }
-    started = true;
-    drop_if_unreachable(b);
-  };
+  }
+  state.started = true;
+  drop_if_unreachable(b, state, *current);
+}
 
-  const std::string& text = file->text();
+void LineReader::read(std::string_view text, ReadState& state, Program*& current, Problems& syntax,
+                      std::size_t& unchecked) {
+  const bool streamed = !file_.whole();
   std::size_t pos = 0;
-  bool done = false;
-  auto scanner = std::make_unique<LineScanner>();
-  LineScanner& ls = *scanner;
-  while (pos < text.size() && !done) {
+  Scanner& ls = *scanner_;
+  while (pos < text.size() && !state.done) {
     std::size_t eol = text.find('\n', pos);
-    if (eol == std::string::npos) eol = text.size();
-    ++line;
+    if (eol == std::string_view::npos) eol = text.size();
+    const std::uint32_t line = ++state.line;
+    if (streamed) file_.line_read(line, state.offset + pos);
     std::string_view raw(text.data() + pos, eol - pos);
     pos = eol + 1;
 
     std::size_t first = raw.find_first_not_of(" \t\r");
     if (first != std::string_view::npos && raw[first] == '%') {
-      if (started) done = true;
+      if (state.started) state.done = true;
       continue;
     }
-    if (syntax.list.size() >= kMaxDiagnostics && current && follows_alarm(*current) && cannot_be_a_target(raw, *current)) {
-      ++result.unchecked_lines;
+    if (syntax.kept >= kMaxDiagnostics && current && last_alarms(current, state) && cannot_be_a_target(raw, *current)) {
+      ++unchecked;
       continue;
     }
-    if (current && plain_nc_line(raw, line, *current, max_digits)) {
-      started = true;
+    if (current && plain_nc_line(raw, line, *current, max_digits_)) {
+      state.started = true;
       continue;
     }
     ls.clear();
@@ -349,7 +354,7 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       }
       if (c == ' ' || c == '\t' || c == '\r') continue;
       if (c == ';') {
-        handle_block(ls, line);
+        handle_block(line, state, current, syntax);
         ls.clear();
         block_open = false;
         continue;
@@ -363,23 +368,60 @@ ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) 
       ls.error = "comment '(' is not closed on this line";
       ls.error_col = clamp_col(comment_start + 1);
     }
-    if (block_open || !ls.error.empty() || ls.has_comment) handle_block(ls, line);
+    if (block_open || !ls.error.empty() || ls.has_comment) handle_block(line, state, current, syntax);
   }
-  if (done) result.after_end = programs_after_end(text, pos, line);
+  state.offset += std::min(pos, text.size());
+}
+
+}  // namespace text
+
+using namespace text;
+
+std::size_t compiled_size(std::size_t text_bytes, std::size_t lines) {
+  return text_bytes + lines * (sizeof(std::size_t) + sizeof(Block) + sizeof(Word));
+}
+
+std::size_t memory_bound(std::size_t text_bytes, const ParseOptions& options) {
+  return options.max_memory ? options.max_memory : std::max<std::size_t>(10 * text_bytes, std::size_t{256} << 20);
+}
+
+ParseResult parse(std::shared_ptr<const SourceFile> file, ParseOptions options) {
+  const int max_digits = std::clamp(options.max_digits, 1, kMostDigits);
+  if (const std::size_t need = compiled_size(file->size(), file->line_count()),
+      bound = memory_bound(file->size(), options);
+      need > bound)
+    throw base::BoundExceeded(fmt::format(
+        "{}: {} lines in {:.1f} MB would take at least {:.0f} MB of memory once read ({:.0f} bytes a line), more than "
+        "the bound of {:.0f} MB ({}); --max-memory MB raises it",
+        file->name(), file->line_count(), file->size() / 1e6, need / 1e6,
+        static_cast<double>(need) / static_cast<double>(std::max<std::size_t>(file->line_count(), 1)), bound / 1e6,
+        options.max_memory ? "--max-memory" : "ten times the program's size, at least 256 MB"));
+  ParseResult result;
+  ReadState state;
+  LineReader::Hooks hooks;
+  hooks.new_program = [&](int number, std::uint32_t line) {
+    auto& p = result.programs.emplace_back(std::make_unique<Program>());
+    p->number = number;
+    p->file = file;
+    // The first program of a file usually is all of it: reserving for its lines saves regrowth copies and
+    // page faults on long expanded programs. Later programs grow as needed.
+    if (result.programs.size() == 1) {
+      const std::size_t lines_left = file->line_count() > line ? file->line_count() - line : 1;
+      base::reserve_large(p->blocks, lines_left + 1);
+      base::reserve_large(p->words, 2 * lines_left + 4);
+    }
+    return p.get();
+  };
+  LineReader reader(*file, max_digits, std::move(hooks));
+  Program* current = nullptr;
+  Problems syntax, loops;
+  reader.read(file->text(), state, current, syntax, result.unchecked_lines);
+  if (state.done) {
+    std::uint32_t line = state.line;
+    programs_after_end(file->text().substr(state.offset), line, state.line, result.after_end);
+  }
   for (auto& p : result.programs) match_loops(*p, loops);
-  std::stable_sort(loops.list.begin(), loops.list.end(),  // a DO without END comes at its program's end
-                   [](const Diagnostic& a, const Diagnostic& b) { return a.span.line < b.span.line; });
-  // each list is in line order: the first kMaxDiagnostics of both together are among them
-  std::vector<Diagnostic>& all = result.diagnostics;
-  all.reserve(syntax.list.size() + loops.list.size());
-  std::merge(std::make_move_iterator(syntax.list.begin()), std::make_move_iterator(syntax.list.end()),
-             std::make_move_iterator(loops.list.begin()), std::make_move_iterator(loops.list.end()),
-             std::back_inserter(all), [](const Diagnostic& a, const Diagnostic& b) { return a.span.line < b.span.line; });
-  result.more_diagnostics = syntax.more + loops.more;
-  if (all.size() > kMaxDiagnostics) {
-    result.more_diagnostics += all.size() - kMaxDiagnostics;
-    all.resize(kMaxDiagnostics);
-  }
+  merge_problems(syntax, loops, result);
   return result;
 }
 

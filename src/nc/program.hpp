@@ -60,6 +60,8 @@ struct Block {
   Expr target, value, cond;
 };
 
+class ProgramStream;
+
 struct Program {
   int number = -1;  // O number; -1 when the file has none
   std::uint32_t line = 0;  // line of the O word (0: none)
@@ -73,9 +75,31 @@ struct Program {
   std::vector<PrintItem> prints;  // items of DPRNT/BPRNT blocks
   std::unordered_map<std::int32_t, std::int32_t> sequence_index;  // N -> first block with it
 
+  // A program read block by block from its file (program_stream.hpp): its blocks, words and code are
+  // in pieces that the stream reads, and reads again after a jump back; these vectors stay empty.
+  ProgramStream* stream = nullptr;
+  std::int32_t stream_index = -1;  // its index among the file's programs
+
   Span span_of(const Block& b, std::uint16_t column = 0, std::uint32_t length = 1) const {
     return Span{file.get(), b.line, column ? column : b.column, length};
   }
+
+  // The compiled piece holding block i with its words and code: this program, or a piece of a streamed
+  // one (kept in memory while `hold` lives); no piece past the program's end.
+  struct Piece {
+    const Program* piece = nullptr;
+    std::int32_t first = 0, end = 0;  // the program's blocks [first, end) are piece->blocks
+    std::shared_ptr<const Program> hold;
+  };
+  Piece piece_of(std::int32_t i) const;
+  // The first block with sequence number n, or -1.
+  std::int32_t find_sequence(std::int32_t n) const;
+};
+
+// A program's blocks with content and words, as the summary counts its source.
+struct SourceCount {
+  std::size_t blocks = 0, words = 0;
+  void add(const Program& piece);
 };
 
 // A program number line after the '%' that ends the file: the control never reads it.

@@ -125,12 +125,12 @@ std::string BackplotData::json(bool inch) const {
   for (const auto& c : corners_) corners.push_back({static_cast<std::uint32_t>(c[0]), c[1], c[2], c[3]});
   head["rapid_corners"] = corners;
   std::size_t text_bytes = 0;
-  for (const auto* f : files_) text_bytes += f->text().size();
+  for (const auto* f : files_) text_bytes += f->size();
   nlohmann::json files = nlohmann::json::array();
   for (const auto* f : files_) {
     nlohmann::json e;
     e["name"] = f->name();
-    e["text"] = text_bytes <= kMostSourceBytes ? nlohmann::json(f->text()) : nlohmann::json(nullptr);
+    e["text"] = f->whole() && text_bytes <= kMostSourceBytes ? nlohmann::json(std::string(f->text())) : nlohmann::json(nullptr);
     files.push_back(e);
   }
   head["files"] = files;

@@ -13,18 +13,16 @@ using machine::MoveKind;
 
 SourceStats source_stats(const machine::ProgramLibrary& lib, const nc::SourceFile* file) {
   SourceStats s;
-  if (file) s.bytes = file->text().size();
+  if (file) s.bytes = file->size();
   for (const auto& p : lib.programs()) {
     if (p->file.get() != file) continue;
     ++s.programs;
     if (p->number >= 0) ++s.words;  // the O word
-    for (const auto& b : p->blocks) {
-      bool content = b.kind != nc::Statement::empty || b.sequence >= 0;
-      if (content) ++s.blocks;
-      if (b.sequence >= 0) ++s.words;
-      if (b.kind == nc::Statement::nc) s.words += b.words_end - b.words_begin;
-      else if (b.kind != nc::Statement::empty) ++s.words;
-    }
+    nc::SourceCount count;
+    if (!p->stream) count.add(*p);
+    const nc::SourceCount& c = p->stream ? p->stream->count(p->stream_index) : count;
+    s.blocks += c.blocks;
+    s.words += c.words;
   }
   return s;
 }

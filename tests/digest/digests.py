@@ -6,7 +6,10 @@ corpus program, compared with digests.tsv. A restructuring keeps them all; a cha
 The program's own path and its machine file's (the messages and the moves name them) are hashed as
 <program> and <machine>, so a program moved to another folder keeps its digest: only its key changes.
 
-usage: digests.py NCURVE [--update] [--corpus DIR]
+With --stream BYTES every program is read as a stream (`run --stream`) in pieces of about BYTES
+bytes (NCURVE_STREAM_CHUNK), so that jumps, loops and calls cross pieces: the digests must not change.
+
+usage: digests.py NCURVE [--update] [--corpus DIR] [--stream BYTES]
 """
 import concurrent.futures
 import hashlib
@@ -24,6 +27,9 @@ corpus = os.environ.get("NCURVE_CORPUS", os.path.join(root, "..", "shared", "cor
 if "--corpus" in sys.argv:
     corpus = sys.argv[sys.argv.index("--corpus") + 1]
 corpus = os.path.abspath(corpus)
+stream = sys.argv[sys.argv.index("--stream") + 1] if "--stream" in sys.argv else None
+if stream and update:
+    sys.exit("--stream checks the digests; it records none")
 
 # the examples' machines and options, as the README runs them
 examples = {
@@ -95,8 +101,10 @@ def digest(case):
     key, cwd, args = case
     with tempfile.TemporaryDirectory() as tmp:
         moves = os.path.join(tmp, "moves.jsonl")
+        env = dict(os.environ, NCURVE_STREAM_CHUNK=stream) if stream else None
         r = subprocess.run([ncurve, "run", *args, "--format", "jsonl", "-o", moves, "--json",
-                            "--max-steps", "2000000"], cwd=cwd, capture_output=True, timeout=120)
+                            "--max-steps", "2000000"] + (["--stream"] if stream else []),
+                           cwd=cwd, capture_output=True, timeout=120, env=env)
         h = hashlib.sha256()
         h.update(b"exit %d\n" % r.returncode)
         for part in (r.stdout, r.stderr):

@@ -113,18 +113,18 @@ Executor::ShapeRange Executor::shape_range(int g) {
   r.ns = integer(word('P'), "P (sequence number ns)");
   r.nf = integer(word('Q'), "Q (sequence number nf)");
   const std::string code = written(g, profile_.gcode_system);
-  auto it = prog_->sequence_index.find(r.ns);
-  if (it == prog_->sequence_index.end())
+  r.first = prog_->find_sequence(r.ns);
+  if (r.first < 0)
     alarm("PS0063", fmt::format("{} P{}: no block N{} in this program (the shape must be in the program of the "
                                 "cycle)", code, r.ns, r.ns),
           word('P').column);
-  r.first = it->second;
   r.last = -1;
-  for (std::size_t i = r.first; i < prog_->blocks.size(); ++i)
-    if (prog_->blocks[i].sequence == r.nf) {
-      r.last = static_cast<std::int32_t>(i);
-      break;
-    }
+  for (std::int32_t i = r.first; r.last < 0;) {
+    const nc::Program::Piece piece = prog_->piece_of(i);
+    if (!piece.piece) break;
+    for (; i < piece.end && r.last < 0; ++i)
+      if (piece.piece->blocks[i - piece.first].sequence == r.nf) r.last = i;
+  }
   if (r.last < 0)
     alarm("PS0063", fmt::format("{} Q{}: no block N{} at or after N{} in this program", code, r.nf, r.nf, r.ns),
           word('Q').column);
@@ -135,11 +135,10 @@ Executor::ShapeRange Executor::shape_range(int g) {
 // and feed modes, F S T and M codes other than calls and ends.
 void Executor::check_shape_block(const nc::Block& b, bool first, int g) {
   if (b.kind != nc::Statement::nc || (b.block_skip && profile_.block_skip)) return;
-  block_ = &b;  // an alarm names this block
   const std::string code = written(g, profile_.gcode_system);
   bool move_code = false, arc_code = false;
   for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
-    const nc::Word& word = prog_->words[w];
+    const nc::Word& word = unit_->words[w];
     if (word.letter != 'G' || !word.literal) continue;
     const int v = static_cast<int>(std::lround(word.value * 10));
     const bool mode = profile_.gcode_system == 'A' ? (v == 980 || v == 990) : (v == 900 || v == 910 || v == 940 || v == 950);
@@ -157,7 +156,7 @@ void Executor::check_shape_block(const nc::Block& b, bool first, int g) {
   }
   const bool arc_block = arc_code || (!move_code && (modal_.motion == 2 || modal_.motion == 3));
   for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
-    const nc::Word& word = prog_->words[w];
+    const nc::Word& word = unit_->words[w];
     const int m = static_cast<int>(std::lround(word.value));
     if (word.letter == 'M' && word.literal && (m == 98 || m == 99 || m == 2 || m == 30))
       alarm("PS0325", fmt::format("M{} (a call, return or end) cannot be commanded in the finishing shape of {}", m,
@@ -180,7 +179,7 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
   const auto have = have_;
   const auto slot = slot_;
   const std::vector<int> g_codes = g_codes_, m_codes = m_codes_;
-  const nc::Block* block = block_;
+  const std::int32_t block = block_index_;
   const nc::Program* prog = prog_;
   const AxisVector pos = coords_.pos, tool_shift = coords_.tool_shift;
   const int motion = modal_.motion, tool = tool_, lathe_offset = lathe_offset_, last_m = last_m_;
@@ -203,8 +202,10 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
     const std::int32_t at = frames_.back().pc;
     if (result_.stats.blocks >= options_.max_steps)
       alarm("NC9000", fmt::format("program stopped after {} blocks (--max-steps) in the finishing shape", options_.max_steps));
-    check_shape_block(prog_->blocks[at], first, g);
-    if (prog_->blocks[at].kind == nc::Statement::nc) first = false;
+    if (select_block(prog_, at)) {  // an alarm names this block
+      check_shape_block(*block_, first, g);
+      if (block_->kind == nc::Statement::nc) first = false;
+    }
     step();
     if (frames_.size() != depth)
       alarm("PS0325", fmt::format("a macro or subprogram call cannot be commanded in the finishing shape of {}",
@@ -222,7 +223,7 @@ std::vector<Move> Executor::walk_shape(const ShapeRange& r, int g, bool keep) {
     feed_ = feed, speed_ = speed;
   }
   cmds_ = cmds, have_ = have, slot_ = slot, g_codes_ = g_codes, m_codes_ = m_codes;
-  block_ = block, prog_ = prog;
+  select_block(prog, block);
   frames_.back().pc = resume;
   return moves;
 }
@@ -250,9 +251,10 @@ bool Executor::stock_removal_cycle(int g) {
   const std::uint16_t pcol = word('P').column;
   // the first block names the type: the infeed axis alone is type I, both axes type II
   bool infeed_axis = false, other_axis = false;
-  const nc::Block& nb = prog_->blocks[range.first];
+  const nc::Program::Piece first = prog_->piece_of(range.first);
+  const nc::Block& nb = first.piece->blocks[range.first - first.first];
   for (std::uint32_t w = nb.words_begin; nb.kind == nc::Statement::nc && w < nb.words_end; ++w) {
-    const char l = prog_->words[w].letter;
+    const char l = first.piece->words[w].letter;
     const bool x = l == 'X' || (l == 'U' && profile_.gcode_system == 'A');
     const bool z = l == 'Z' || (l == 'W' && profile_.gcode_system == 'A');
     if (x || z) (x != facing ? infeed_axis : other_axis) = true;

@@ -24,8 +24,7 @@ struct CornerRequest {
 struct HeldCorner {
   CornerRequest request;
   Move move;
-  const nc::Program* prog = nullptr;  // the block with the request, for alarms there
-  const nc::Block* block = nullptr;
+  std::optional<nc::Span> block;  // the block with the request (its first column), for alarms there
   std::uint64_t step = 0;     // the run's block count when it was held
   int side = 0;               // G41 +1, G42 -1, 0: compensation of the held move
   int d = 0;                  // its D number and lathe offset, should the next block change them

@@ -85,8 +85,7 @@ void CornerStage::hold_or_cut(Move m) {
   HeldCorner h;
   h.request = *armed_;
   h.move = m;
-  h.prog = ctx.prog;
-  h.block = ctx.block;
+  if (ctx.prog && ctx.block) h.block = ctx.prog->span_of(*ctx.block);
   h.step = ctx.step;
   h.side = ctx.side;
   h.d = ctx.d;
@@ -147,7 +146,8 @@ void CornerStage::cut_held_corner(Move& next) {
   }
   const corner::Cut cut = corner::cut_corner(path_of(h.move, pa), path_of(next, pa), rq.kind, rq.amount);
   const char* what = rq.kind == corner::Kind::round ? "corner R" : "chamfer";
-  const nc::Span held_at = h.prog && h.block ? h.prog->span_of(*h.block, rq.column) : here();
+  const nc::Span held_at =
+      h.block ? nc::Span{h.block->file, h.block->line, rq.column ? rq.column : h.block->column, 1} : here();
   switch (cut.fault) {
     case corner::Fault::none: break;
     case corner::Fault::first_too_short:

@@ -10,15 +10,6 @@
 namespace ncurve::machine {
 namespace {
 
-// One kind of sign and the first block that shows it.
-struct Sign {
-  const char* what = nullptr;
-  const nc::Program* program = nullptr;
-  std::uint32_t line = 0;
-  std::uint16_t column = 0;
-  bool seen() const { return program != nullptr; }
-};
-
 struct BlockWords {
   std::vector<int> g;  // x10
   bool has[26] = {};
@@ -51,7 +42,7 @@ BlockWords words_of(const nc::Program& p, const nc::Block& b) {
 
 // T0101: four digits typed, tool number and offset number alike (a turret's T code).
 bool lathe_t_word(const nc::Program& p, const nc::Block& b, std::uint16_t column) {
-  std::string_view text = p.file->line(b.line);
+  const std::string text = p.file->line(b.line);
   if (column == 0 || column > text.size()) return false;
   std::string digits;
   for (std::size_t k = column; k < text.size() && digits.size() < 5; ++k) {
@@ -61,11 +52,19 @@ bool lathe_t_word(const nc::Program& p, const nc::Block& b, std::uint16_t column
   return digits.size() == 4 && digits[0] == '0' && digits.substr(0, 2) == digits.substr(2, 2) && digits != "0000";
 }
 
+}  // namespace
+
+ProfileHints::ProfileHints(const MachineProfile& profile)
+    : profile_(profile), mill_(!profile.lathe()), system_a_(profile.lathe() && profile.gcode_system == 'A') {}
+
+namespace {
+template <class Sign>
 void note(Sign& s, const char* what, const nc::Program& p, const nc::Block& b, std::uint16_t column) {
   if (s.seen()) return;
-  s = Sign{what, &p, b.line, column ? column : b.column};
+  s = Sign{what, p.file.get(), b.line, column ? column : b.column};
 }
 
+template <class Sign>
 nc::Diagnostic warning(std::string code, const std::vector<const Sign*>& signs, const std::string& head,
                        const std::string& advice) {
   std::string list;
@@ -77,69 +76,75 @@ nc::Diagnostic warning(std::string code, const std::vector<const Sign*>& signs, 
   for (const Sign* s : signs)
     if (s->seen() && (!first || s->line < first->line)) first = s;
   return nc::Diagnostic{nc::Severity::warning, std::move(code), fmt::format("{} ({}): {}", head, list, advice),
-                        nc::Span{first->program->file.get(), first->line, first->column, 1}};
+                        nc::Span{first->file, first->line, first->column, 1}};
 }
 
 }  // namespace
 
-std::vector<nc::Diagnostic> profile_hints(const ProgramLibrary& library, const MachineProfile& profile) {
-  std::vector<nc::Diagnostic> out;
-  const nc::Program* main = library.main();
-  if (!main) return out;
-  const bool mill = !profile.lathe();
-  const bool system_a = profile.lathe() && profile.gcode_system == 'A';
-  if (!mill && !system_a) return out;
-
-  Sign t_word, g50_s, g96, per_rev;          // a lathe program on a mill
-  Sign b_cycle, g95, mode_g90, feed_mode_g94;  // system B on a system-A lathe
-  bool uses_u_w = false, inch = false;
-  for (const auto& owned : library.programs()) {
-    const nc::Program& p = *owned;
-    if (p.file != main->file) continue;
-    bool g99 = false;
-    for (const nc::Block& b : p.blocks) {
-      if (b.kind != nc::Statement::nc || b.error >= 0) continue;
-      const BlockWords w = words_of(p, b);
-      bool call = w.has_g(650) || w.has_g(660) || w.has_g(661);
-      for (int code : profile.g_code_macros) call = call || (code != 0 && w.has_g(std::abs(code) * 10));
-      if (call) continue;  // the words of a macro call are its arguments
-      if (w.has_g(200)) inch = true;
-      if (mill) {
-        if (w.has['T' - 'A'] && lathe_t_word(p, b, w.column['T' - 'A']))
-          note(t_word, "a T word of tool and offset number (T0101 style)", p, b, w.column['T' - 'A']);
-        if (w.has_g(500) && w.has['S' - 'A']) note(g50_s, "G50 S (spindle speed clamp)", p, b, 0);
-        if (w.has_g(960)) note(g96, "G96 (constant surface speed)", p, b, 0);
-        if (w.has_g(990)) g99 = true;
-        if (w.has_g(980)) g99 = false;
-        const double f = w.value['F' - 'A'];
-        if (g99 && !inch && w.has['F' - 'A'] && f > 0 && f < 1)
-          note(per_rev, "G99 with a feed below 1 (mm per revolution)", p, b, w.column['F' - 'A']);
-      } else {
-        if (w.has['U' - 'A'] || w.has['W' - 'A']) uses_u_w = true;
-        for (int g : {770, 780, 790})
-          if (w.has_g(g)) note(b_cycle, "G77/G78/G79 (system B turning cycles)", p, b, 0);
-        if (w.has_g(950)) note(g95, "G95 (feed per revolution in system B)", p, b, 0);
-        const bool axes = w.any_of("XZUW");
-        const bool motion = w.has_g(0) || w.has_g(10) || w.has_g(20) || w.has_g(30);
-        if ((w.has_g(900) || w.has_g(910)) && (!axes || motion))
-          note(mode_g90, "G90/G91 as absolute/incremental mode", p, b, 0);
-        if (w.has_g(940) && !axes) note(feed_mode_g94, "G94 without axes (feed per minute in system B)", p, b, 0);
-      }
+void ProfileHints::see(const nc::Program& program, const nc::Program& p) {
+  if (!mill_ && !system_a_) return;
+  if (&program != program_) {
+    program_ = &program;
+    g99_ = false;
+  }
+  const bool mill = mill_;
+  const MachineProfile& profile = profile_;
+  for (const nc::Block& b : p.blocks) {
+    if (b.kind != nc::Statement::nc || b.error >= 0) continue;
+    const BlockWords w = words_of(p, b);
+    bool call = w.has_g(650) || w.has_g(660) || w.has_g(661);
+    for (int code : profile.g_code_macros) call = call || (code != 0 && w.has_g(std::abs(code) * 10));
+    if (call) continue;  // the words of a macro call are its arguments
+    if (w.has_g(200)) inch_ = true;
+    if (mill) {
+      if (w.has['T' - 'A'] && lathe_t_word(p, b, w.column['T' - 'A']))
+        note(t_word_, "a T word of tool and offset number (T0101 style)", p, b, w.column['T' - 'A']);
+      if (w.has_g(500) && w.has['S' - 'A']) note(g50_s_, "G50 S (spindle speed clamp)", p, b, 0);
+      if (w.has_g(960)) note(g96_, "G96 (constant surface speed)", p, b, 0);
+      if (w.has_g(990)) g99_ = true;
+      if (w.has_g(980)) g99_ = false;
+      const double f = w.value['F' - 'A'];
+      if (g99_ && !inch_ && w.has['F' - 'A'] && f > 0 && f < 1)
+        note(per_rev_, "G99 with a feed below 1 (mm per revolution)", p, b, w.column['F' - 'A']);
+    } else {
+      if (w.has['U' - 'A'] || w.has['W' - 'A']) uses_u_w_ = true;
+      for (int g : {770, 780, 790})
+        if (w.has_g(g)) note(b_cycle_, "G77/G78/G79 (system B turning cycles)", p, b, 0);
+      if (w.has_g(950)) note(g95_, "G95 (feed per revolution in system B)", p, b, 0);
+      const bool axes = w.any_of("XZUW");
+      const bool motion = w.has_g(0) || w.has_g(10) || w.has_g(20) || w.has_g(30);
+      if ((w.has_g(900) || w.has_g(910)) && (!axes || motion))
+        note(mode_g90_, "G90/G91 as absolute/incremental mode", p, b, 0);
+      if (w.has_g(940) && !axes) note(feed_mode_g94_, "G94 without axes (feed per minute in system B)", p, b, 0);
     }
   }
-  if (mill) {
-    const int count = t_word.seen() + g50_s.seen() + g96.seen() + per_rev.seen();
+}
+
+std::vector<nc::Diagnostic> ProfileHints::warnings() const {
+  std::vector<nc::Diagnostic> out;
+  if (mill_) {
+    const int count = t_word_.seen() + g50_s_.seen() + g96_.seen() + per_rev_.seen();
     if (count >= 2)
-      out.push_back(warning("NC2030", {&t_word, &g50_s, &g96, &per_rev}, "this looks like a lathe program",
+      out.push_back(warning("NC2030", std::vector<const Sign*>{&t_word_, &g50_s_, &g96_, &per_rev_},
+                            "this looks like a lathe program",
                             "on a mill these mean other things; run it with --machine fanuc-lathe (or a lathe "
                             "profile of your own)"));
-  } else if (b_cycle.seen() || g95.seen() || (!uses_u_w && (mode_g90.seen() || feed_mode_g94.seen()))) {
-    out.push_back(warning("NC2031", {&b_cycle, &g95, &mode_g90, &feed_mode_g94},
+  } else if (system_a_ && (b_cycle_.seen() || g95_.seen() || (!uses_u_w_ && (mode_g90_.seen() || feed_mode_g94_.seen())))) {
+    out.push_back(warning("NC2031", std::vector<const Sign*>{&b_cycle_, &g95_, &mode_g90_, &feed_mode_g94_},
                           "this looks like a G-code system B program",
                           "in system A, G90 and G94 are turning cycles and G91, G95, G77..G79 are no G codes; set "
                           "gcode_system = \"B\" in the profile's [machine] table"));
   }
   return out;
+}
+
+std::vector<nc::Diagnostic> profile_hints(const ProgramLibrary& library, const MachineProfile& profile) {
+  const nc::Program* main = library.main();
+  if (!main) return {};
+  ProfileHints hints(profile);
+  for (const auto& owned : library.programs())
+    if (owned->file == main->file) hints.see(*owned, *owned);
+  return hints.warnings();
 }
 
 }  // namespace ncurve::machine
