@@ -31,8 +31,8 @@ public:
     // Its end; `last`: the file's last program.
     virtual void program_ended(Program& p, bool has_content, bool last) = 0;
   };
-  // Bytes of text read at once; a piece ends at a line's end.
-  static constexpr std::size_t kChunkBytes = std::size_t{1} << 20;
+  // Bytes of text read at once (about 1.5 MB compiled); a piece ends at a line's end.
+  static constexpr std::size_t kChunkBytes = std::size_t{1} << 18;
   // Pieces kept in memory besides those in use.
   static constexpr std::size_t kPiecesKept = 4;
 
