@@ -9,6 +9,7 @@
 #include <new>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include "app/gen_command.hpp"
 #include "app/helicoid_command.hpp"
@@ -25,6 +26,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
+#include "report/background_sink.hpp"
 #include "report/path_plot.hpp"
 #include "report/summary.hpp"
 #include "report/verify_report.hpp"
@@ -174,22 +176,26 @@ int run_command(const app::RunArgs& a) {
     gcode = g.get();
     sink = std::move(g);
   } else sink = std::make_unique<machine::NullSink>();
+  // a file's writing on the second core, beside the run
+  std::optional<report::BackgroundSink> background;
+  if (a.format != "summary" && std::thread::hardware_concurrency() > 1) background.emplace(*sink);
+  machine::MoveSink& written = background ? static_cast<machine::MoveSink&>(*background) : *sink;
 
   std::optional<report::PathPlot> plot;
   std::optional<report::TeeSink> tee;
   if (!a.plot.empty()) {
     plot.emplace(profile);
-    tee.emplace(*sink, *plot);
+    tee.emplace(written, *plot);
   }
   std::optional<report::BackplotData> html;
   std::optional<report::TeeSink> html_tee;
   if (!a.html.empty()) {
     html.emplace(profile);
-    html_tee.emplace(tee ? static_cast<machine::MoveSink&>(*tee) : *sink, *html);
+    html_tee.emplace(tee ? static_cast<machine::MoveSink&>(*tee) : written, *html);
   }
   machine::MoveSink& shown = html_tee ? static_cast<machine::MoveSink&>(*html_tee)
                              : tee    ? static_cast<machine::MoveSink&>(*tee)
-                                      : *sink;
+                                      : written;
   std::optional<report::TeeSink> verify_tee;
   if (verify && verify->sink()) verify_tee.emplace(shown, *verify->sink());
   machine::MoveSink& target = verify_tee ? static_cast<machine::MoveSink&>(*verify_tee) : shown;
@@ -197,6 +203,7 @@ int run_command(const app::RunArgs& a) {
   machine::Interpreter interp(profile, lib, setup.options);
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
+  if (background) background->finish();
   if (gcode) gcode->finish();
   if (lib.streamed()) app::complete_problems(setup);  // the file is read to its end
   if (verify) {

@@ -371,7 +371,15 @@ private:
   std::int32_t unit_first_ = 0, unit_end_ = 0;
   std::shared_ptr<const nc::Program> unit_hold_;
   // Makes block i of p the block in hand; false past p's end.
-  bool select_block(const nc::Program* p, std::int32_t i);
+  bool select_block(const nc::Program* p, std::int32_t i) {
+    prog_ = p;
+    if (p != unit_prog_ || i < unit_first_ || i >= unit_end_) [[unlikely]]
+      if (!select_piece(p, i)) return false;
+    block_ = &unit_->blocks[i - unit_first_];
+    block_index_ = i;
+    return true;
+  }
+  bool select_piece(const nc::Program* p, std::int32_t i);
   std::uint32_t line_of(const nc::Program* p, std::int32_t i);
   // A streamed program's whole-file checks (NC2001, NC2030, NC2031) as its pieces are read.
   struct FileChecks;

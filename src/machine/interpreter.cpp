@@ -401,20 +401,23 @@ void Executor::check_runaway() {
                               seconds, result_.stats.blocks, where));
 }
 
-// Block i of p in hand, with the piece holding its words and code (read again when it has gone).
-bool Executor::select_block(const nc::Program* p, std::int32_t i) {
-  prog_ = p;
-  if (p != unit_prog_ || i < unit_first_ || i >= unit_end_) {
-    nc::Program::Piece piece = p->piece_of(i);
-    if (!piece.piece) return false;
-    unit_ = piece.piece;
-    unit_prog_ = p;
-    unit_first_ = piece.first;
-    unit_end_ = piece.end;
-    unit_hold_ = std::move(piece.hold);
+// The piece holding block i of p, read again when it has gone; false past p's end.
+bool Executor::select_piece(const nc::Program* p, std::int32_t i) {
+  if (!p->stream) {
+    if (i < 0 || i >= static_cast<std::int32_t>(p->blocks.size())) return false;
+    unit_ = unit_prog_ = p;
+    unit_first_ = 0;
+    unit_end_ = static_cast<std::int32_t>(p->blocks.size());
+    unit_hold_.reset();
+    return true;
   }
-  block_ = &unit_->blocks[i - unit_first_];
-  block_index_ = i;
+  nc::Program::Piece piece = p->piece_of(i);
+  if (!piece.piece) return false;
+  unit_ = piece.piece;
+  unit_prog_ = p;
+  unit_first_ = piece.first;
+  unit_end_ = piece.end;
+  unit_hold_ = std::move(piece.hold);
   return true;
 }
 
@@ -451,7 +454,7 @@ void Executor::step() {
     ++f.pc;
     return;
   }
-  if (prog_->stream && (b.kind == Statement::while_do || b.kind == Statement::do_loop) && b.match < 0 &&
+  if ((b.kind == Statement::while_do || b.kind == Statement::do_loop) && b.match < 0 && prog_->stream &&
       b.error < 0) [[unlikely]]
     prog_->stream->settle_loop(prog_->stream_index, f.pc);  // its END, or its alarm, not read yet
   if (b.error >= 0) throw nc::Alarm(unit_->errors[b.error]);

@@ -123,8 +123,7 @@ void ProgramLibrary::add_streamed(const std::string& path, const std::string& na
   if (!main_) throw std::runtime_error(fmt::format("{}: error: the file holds no program", name));
 }
 
-void ProgramLibrary::read_all() const {
-  if (!stream_ || stream_counted_) return;
+void ProgramLibrary::read_rest() const {
   auto& self = const_cast<ProgramLibrary&>(*this);  // reading on completes what the library holds
   self.stream_->finish();
   const nc::ParseResult r = stream_->problems();

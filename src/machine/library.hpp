@@ -31,7 +31,9 @@ public:
   void add_streamed(const std::string& path, const std::string& name,
                     std::size_t chunk_bytes = nc::ProgramStream::kChunkBytes);
   // Reads the rest of a streamed main file; then its problems (as add_file returns them) are complete.
-  void read_all() const;
+  void read_all() const {
+    if (stream_ && !stream_counted_) read_rest();
+  }
   std::vector<nc::Diagnostic> streamed_problems() const;
   bool streamed() const { return stream_ != nullptr; }
   // Problems found beyond the first nc::kMaxDiagnostics of each file, counted only.
@@ -64,6 +66,7 @@ public:
 
 private:
   struct StreamListener;
+  void read_rest() const;
   void enter(nc::Program* p, const std::string& name, int from_name, bool is_main, int source,
              std::vector<nc::Diagnostic>& found);
 
