@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Programs of any size read as a stream (`ncurve run --stream`, and any file of 64 MB or more).
+"""Programs of any size read as a stream (`ncurve run --stream`, and any file of 32 MB or more).
 
 1. Through a pipe (no seeking): a program whose GOTO, WHILE and M99 P jump back across many pieces,
    with a subprogram after M30 and a program after the closing '%', read in 4 KB pieces, gives the

@@ -107,6 +107,13 @@ std::shared_ptr<ProgramStream::Loaded> ProgramStream::read_chunk(std::size_t k, 
         }
       }
     }
+    std::size_t at = 0;
+    for (std::size_t lines = 0; lines < kChunkLines; ++lines) {
+      const std::size_t nl = window.find('\n', at);
+      if (nl == std::string::npos) break;
+      at = nl + 1;
+    }
+    if (at > 0 && at < window.size()) window.resize(at);
   } else {
     file_->read(start.offset, chunks_[k].end - start.offset, window);
   }

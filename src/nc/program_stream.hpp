@@ -33,6 +33,7 @@ public:
   };
   // Bytes of text read at once (about 1.5 MB compiled); a piece ends at a line's end.
   static constexpr std::size_t kChunkBytes = std::size_t{1} << 18;
+  static constexpr std::size_t kChunkLines = 16384;  // and at most these lines (short lines, many blocks)
   // Pieces kept in memory besides those in use.
   static constexpr std::size_t kPiecesKept = 4;
 
