@@ -109,17 +109,21 @@ if(NOT SANITIZE)
 endif()
 
 # a program's compiled form is bounded (--max-memory, default ten times its size, at least 256 MB):
-# 10,000,000 one-word blocks of 30 MB would take about a gigabyte; refused before compiling
+# 10,000,000 one-word blocks of 30 MB would take about a gigabyte; refused before compiling, but by
+# run, which reads it as a stream
 string(REPEAT "X1\n" 10000000 one_word)
 file(WRITE ${W}/one_word.nc "${one_word}")
 set(one_word "")
-run_expect(2 "a program of one-word blocks" ${NCURVE} run ${W}/one_word.nc)
+run_expect(0 "run streams a program too large to read whole" ${NCURVE} run ${W}/one_word.nc)
+expect_text("${out}" "executed       10000000 blocks" "run streams a program too large to read whole")
+run_expect(2 "a program of one-word blocks" ${NCURVE} analyze ${W}/one_word.nc)
 expect_text("${err}" "one_word.nc: 10000000 lines in 30.0 MB would take at least" "one-word blocks")
 expect_text("${err}" "more than the bound of 300 MB (ten times the program's size" "one-word blocks")
 expect_text("${err}" "--max-memory MB raises it" "one-word blocks")
 file(REMOVE ${W}/one_word.nc)
 string(REPEAT "G01 X1.\nX0\n" 50000 lines)
 file(WRITE ${W}/lines.nc "F100.\n${lines}M30\n")
-refused("a program over --max-memory" "more than the bound of 5 MB (--max-memory)" ${NCURVE} run ${W}/lines.nc
+refused("a program over --max-memory" "more than the bound of 5 MB (--max-memory)" ${NCURVE} analyze ${W}/lines.nc
         --max-memory 5)
+run_expect(0 "run streams a program over --max-memory" ${NCURVE} run ${W}/lines.nc --max-memory 5)
 run_expect(0 "a program within --max-memory" ${NCURVE} run ${W}/lines.nc --max-memory 20)

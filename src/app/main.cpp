@@ -26,6 +26,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
+#include "base/bounds.hpp"
 #include "report/background_sink.hpp"
 #include "report/path_plot.hpp"
 #include "report/summary.hpp"
@@ -106,7 +107,13 @@ int run_command(const app::RunArgs& a) {
     if (!in.text && in.program != "-" && std::filesystem::is_regular_file(in.program, ec) &&
         std::filesystem::file_size(in.program, ec) >= app::kStreamFrom)
       in.stream = true;
-    setup = app::prepare_run(in);
+    try {
+      setup = app::prepare_run(in);
+    } catch (const base::BoundExceeded&) {  // too large to hold read whole: read it as a stream
+      if (in.stream || in.text || in.program == "-") throw;
+      in.stream = true;
+      setup = app::prepare_run(in);
+    }
   } catch (const std::bad_alloc&) {
     throw;  // main() says what ran out
   } catch (const std::exception& e) {

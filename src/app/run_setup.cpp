@@ -116,8 +116,8 @@ void add_run_inputs(CLI::App* cmd, RunInputs& in, bool program_required, bool fo
                   "stop a program that has not ended after this many seconds of running (default 60; 0: no limit)")
       ->check(non_negative("a time", "s"));
   cmd->add_option("--max-memory", in.max_memory_mb,
-                  "refuse a program file that would take more than this many MB of memory once read (default: ten "
-                  "times its size, at least 256)")
+                  "refuse a program file that would take more than this many MB of memory once read whole (default: "
+                  "ten times its size, at least 256); run reads such a file as a stream instead")
       ->check(CLI::Range(1.0, 1e9));
 }
 
