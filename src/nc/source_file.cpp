@@ -120,6 +120,10 @@ std::size_t SourceFile::read(std::size_t offset, std::size_t n, std::string& out
   const bool peeked = got > n;
   got = std::min(got, n);
   char* p = out.data() + at;
+  if (std::memchr(p, '\r', got) == nullptr) {
+    out.resize(at + got);
+    return got;
+  }
   for (std::size_t i = 0; i < got; ++i)
     if (p[i] == '\r' && (i + 1 < got ? p[i + 1] != '\n' : !(peeked && p[got] == '\n'))) p[i] = '\n';
   out.resize(at + got);

@@ -91,6 +91,22 @@ void ProfileHints::see(const nc::Program& program, const nc::Program& p) {
   const MachineProfile& profile = profile_;
   for (const nc::Block& b : p.blocks) {
     if (b.kind != nc::Statement::nc || b.error >= 0) continue;
+    // a block of neither G nor T (most of an expanded program) shows no more than a feed below 1
+    // under G99 on a mill, U or W on a lathe
+    bool g_or_t = false;
+    for (std::uint32_t i = b.words_begin; i < b.words_end && !g_or_t; ++i)
+      g_or_t = p.words[i].letter == 'G' || p.words[i].letter == 'T';
+    if (!g_or_t) {
+      const nc::Word* feed = nullptr;  // the last F written as a number, as words_of keeps it
+      for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
+        const nc::Word& word = p.words[i];
+        if (word.letter == 'F' && word.literal) feed = &word;
+        if (!mill && (word.letter == 'U' || word.letter == 'W')) uses_u_w_ = true;
+      }
+      if (mill && feed && g99_ && !inch_ && feed->value > 0 && feed->value < 1)
+        note(per_rev_, "G99 with a feed below 1 (mm per revolution)", p, b, feed->column);
+      continue;
+    }
     const BlockWords w = words_of(p, b);
     bool call = w.has_g(650) || w.has_g(660) || w.has_g(661);
     for (int code : profile.g_code_macros) call = call || (code != 0 && w.has_g(std::abs(code) * 10));
