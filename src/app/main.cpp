@@ -26,7 +26,6 @@
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
-#include "base/bounds.hpp"
 #include "report/background_sink.hpp"
 #include "report/path_plot.hpp"
 #include "report/summary.hpp"
@@ -103,17 +102,7 @@ int run_command(const app::RunArgs& a) {
   if (programs.size() > 1 || std::filesystem::is_directory(a.in.program, ec)) return batch_command(a, programs);
   app::RunSetup setup;
   try {
-    app::RunInputs in = a.in;
-    if (!in.text && in.program != "-" && std::filesystem::is_regular_file(in.program, ec) &&
-        std::filesystem::file_size(in.program, ec) >= app::kStreamFrom)
-      in.stream = true;
-    try {
-      setup = app::prepare_run(in);
-    } catch (const base::BoundExceeded&) {  // too large to hold read whole: read it as a stream
-      if (in.stream || in.text || in.program == "-") throw;
-      in.stream = true;
-      setup = app::prepare_run(in);
-    }
+    setup = app::prepare_run_of_any_size(a.in);
   } catch (const std::bad_alloc&) {
     throw;  // main() says what ran out
   } catch (const std::exception& e) {

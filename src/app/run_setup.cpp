@@ -9,10 +9,12 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
 #include "app/cli_checks.hpp"
+#include "base/bounds.hpp"
 #include "app/shipped.hpp"
 
 namespace ncurve::app {
@@ -153,6 +155,20 @@ RunSetup prepare_run(const RunInputs& in) {
   if (!in.machine_text && !in.machine.empty()) s.inputs.push_back(in.machine);
   if (!s.lib->streamed()) complete_problems(s);
   return s;
+}
+
+RunSetup prepare_run_of_any_size(RunInputs in) {
+  std::error_code ec;
+  if (!in.text && in.program != "-" && std::filesystem::is_regular_file(in.program, ec) &&
+      std::filesystem::file_size(in.program, ec) >= kStreamFrom)
+    in.stream = true;
+  try {
+    return prepare_run(in);
+  } catch (const base::BoundExceeded&) {  // too large to hold read whole
+    if (in.stream || in.text || in.program == "-") throw;
+    in.stream = true;
+    return prepare_run(in);
+  }
 }
 
 void complete_problems(RunSetup& s) {

@@ -44,6 +44,9 @@ struct RunSetup {
 void add_run_inputs(CLI::App* command, RunInputs& in, bool program_required, bool folder_ok = false);
 // Throws std::runtime_error with a message for the user (bad option, profile or file).
 RunSetup prepare_run(const RunInputs& in);
+// prepare_run as `run` reads its program: a file of kStreamFrom bytes or more, or one too large to
+// read whole (--max-memory), as a stream.
+RunSetup prepare_run_of_any_size(RunInputs in);
 // A streamed program's problems once the run is over (the file is then read to its end).
 void complete_problems(RunSetup& s);
 // Program files of this many bytes and more are streamed by `run` (RunInputs::stream).
