@@ -337,8 +337,8 @@ def main():
             w.make(w.size, w.nc, w.ngc)
             mb = os.path.getsize(w.nc) / 1e6
             w.label = w.what.format(n=w.size, mb=mb)
-            print(f"{w.name}: {w.label}; programs {mb:.2f} MB (FANUC), {os.path.getsize(w.ngc) / 1e6:.2f} MB "
-                  f"(LinuxCNC), generated in {time.perf_counter() - t0:.1f} s")
+            print(f"{w.name}: {w.label}; programs of {os.path.getsize(w.nc):,} bytes (FANUC) and "
+                  f"{os.path.getsize(w.ngc):,} (LinuxCNC), generated in {time.perf_counter() - t0:.1f} s")
 
         # timed[(workload, mode)] = list of (wall, rss) a round; mode "rs274" for LinuxCNC
         timed = {}
