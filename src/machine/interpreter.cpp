@@ -65,7 +65,9 @@ std::string shown_number(double v, int decimals) {
 
 double increments_per_mm(const MachineProfile& p) { return std::round(1 / p.increment); }
 
-Executor::~Executor() = default;
+Executor::~Executor() {
+  if (file_checks_) library_.main()->stream->forget_visitors();  // a run left by an exception
+}
 
 Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options)
     : profile_(profile), library_(library), options_(std::move(options)) {
