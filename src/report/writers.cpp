@@ -18,6 +18,12 @@ using machine::MoveKind;
 
 static double clean(double v) { return v == 0 ? 0.0 : v; }  // no "-0"
 
+// A record into the stream's buffer directly (no sentry a record); a short write fails the stream.
+static void put(std::ostream& out, const fmt::memory_buffer& b) {
+  const auto n = static_cast<std::streamsize>(b.size());
+  if (out.rdbuf()->sputn(b.data(), n) != n) out.setstate(std::ios::badbit);
+}
+
 void JsonlWriter::on_move(const Move& m) {
   if (m.file != last_file_) {
     last_file_ = m.file;
@@ -57,7 +63,7 @@ void JsonlWriter::on_move(const Move& m) {
   if (!m.is_motion() && m.kind != MoveKind::dwell) fmt::format_to(it, FMT_COMPILE(R"(,"code":{})"), m.code);
   b.push_back('}');
   b.push_back('\n');
-  out_.write(b.data(), static_cast<std::streamsize>(b.size()));
+  put(out_, b);
 }
 
 CsvWriter::CsvWriter(std::ostream& out, const machine::MachineProfile& profile, double arc_tolerance)
@@ -71,8 +77,33 @@ CsvWriter::CsvWriter(std::ostream& out, const machine::MachineProfile& profile, 
   out_ << '\n';
 }
 
-// ",v" with v in six decimals, as fmt's "{:.6f}" writes it (both exact, correctly rounded)
-static void fixed6(fmt::memory_buffer& b, double v) {
+// ",v" with v in six decimals, as std::to_chars and fmt's "{:.6f}" write it (correctly rounded, a
+// tie to even). From |v| * 10^6 where that product, within half a unit of its last place of the
+// exact one, decides the rounding beyond doubt; else (a tie or near one, a large value) by to_chars.
+void fixed6(fmt::memory_buffer& b, double v) {
+  const double a = std::fabs(v);
+  if (a < 1e9) {
+    const double y = a * 1e6;  // below 2^53: its integer part exact
+    const double whole = std::floor(y);
+    const double frac = y - whole;  // exact
+    if (std::fabs(frac - 0.5) > y * 2.3e-16 + 1e-300) {
+      const std::uint64_t n = static_cast<std::uint64_t>(whole) + (frac > 0.5 ? 1 : 0);
+      char text[32];
+      char* end = text + sizeof text;
+      char* p = end;
+      std::uint64_t fraction = n % 1000000, units = n / 1000000;
+      for (int i = 0; i < 6; ++i, fraction /= 10) *--p = static_cast<char>('0' + fraction % 10);
+      *--p = '.';
+      do {
+        *--p = static_cast<char>('0' + units % 10);
+        units /= 10;
+      } while (units);
+      if (std::signbit(v)) *--p = '-';
+      *--p = ',';
+      b.append(p, end);
+      return;
+    }
+  }
   char text[400];  // the widest double, -1.8e308, in fixed notation with 6 decimals
   text[0] = ',';
   const auto r = std::to_chars(text + 1, text + sizeof text, v, std::chars_format::fixed, 6);
@@ -90,7 +121,7 @@ void CsvWriter::row(std::uint32_t line, const char* kind, const machine::AxisVec
   fmt::format_to(it, FMT_COMPILE(",{}"), f);
   for (int a : extra_) fixed6(b, clean(p[a]));
   b.push_back('\n');
-  out_.write(b.data(), static_cast<std::streamsize>(b.size()));
+  put(out_, b);
 }
 
 void CsvWriter::on_move(const Move& m) {

@@ -21,6 +21,9 @@ struct OutputFrame {
   double x(double radius_or_x) const { return x_diameter ? 2 * radius_or_x : radius_or_x; }
 };
 
+// Appends ",v" with v in six decimals, as std::to_chars(v, fixed, 6) writes it (the CSV's columns).
+void fixed6(fmt::memory_buffer& b, double v);
+
 // An alarm's calling blocks, innermost first: [{"file", "line", "block"}, ...].
 nlohmann::json called_from_json(const nc::Diagnostic& d);
 

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <random>
 #include <sstream>
 #include <vector>
 
@@ -282,4 +284,28 @@ TEST(Writers, EveryRowOfALongProgramAsItsBlockSaysInCsvAndJsonl) {
   ASSERT_TRUE(std::getline(jsonl, g));
   EXPECT_EQ(g, R"({"kind":"program_end","file":"w.nc","line":30002,"program":-1,"code":30})");
   EXPECT_FALSE(std::getline(jsonl, g));
+}
+
+// The CSV's six decimals against std::to_chars(fixed, 6): ties to even (k/128), values near a tie,
+// large and tiny values, negative zero, and a million random coordinates.
+TEST(Writers, SixDecimalsAsToCharsWritesThem) {
+  auto reference = [](double v) {
+    char text[400];
+    text[0] = ',';
+    const auto r = std::to_chars(text + 1, text + sizeof text, v, std::chars_format::fixed, 6);
+    return std::string(text, r.ptr);
+  };
+  auto ours = [](double v) {
+    fmt::memory_buffer b;
+    ncurve::report::fixed6(b, v);
+    return std::string(b.data(), b.size());
+  };
+  std::vector<double> values = {0.0, -0.0, 1e-7, -1e-7, 5e-7, 0.0000005, 1e9, -1e9, 999999999.9999995, 1e15, 1e300,
+                                -123.4567895, 0.1, 0.7, 2.675, 1.0000005, 4.0000015};
+  for (int k = -5000; k <= 5000; ++k) values.push_back(k / 128.0), values.push_back(k / 1024.0 + 1e-12);
+  for (int k = 1; k < 2000; ++k) values.push_back((k + 0.5) * 1e-6), values.push_back(std::nextafter((k + 0.5) * 1e-6, 1.0));
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> coord(-2000, 2000);
+  for (int i = 0; i < 1000000; ++i) values.push_back(coord(rng));
+  for (double v : values) ASSERT_EQ(ours(v), reference(v)) << std::hexfloat << v;
 }
