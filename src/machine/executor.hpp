@@ -380,6 +380,7 @@ private:
     return true;
   }
   bool select_piece(const nc::Program* p, std::int32_t i);
+  void settle_loop(const nc::Block& b);
   std::uint32_t line_of(const nc::Program* p, std::int32_t i);
   // A streamed program's whole-file checks (NC2001, NC2030, NC2031) as its pieces are read.
   struct FileChecks;

@@ -428,6 +428,12 @@ std::uint32_t Executor::line_of(const nc::Program* p, std::int32_t i) {
   return piece.piece ? piece.piece->blocks[i - piece.first].line : 0;
 }
 
+// A streamed DO or WHILE whose END is not read yet: read on to it, or to the alarm of its having none.
+void Executor::settle_loop(const Block& b) {
+  if (prog_->stream) prog_->stream->settle_loop(prog_->stream_index, frames_.back().pc);
+  if (b.error >= 0) throw nc::Alarm(unit_->errors[b.error]);
+}
+
 void Executor::step() {
   Frame& f = frames_.back();
   if (!select_block(f.prog, f.pc)) [[unlikely]] {
@@ -456,10 +462,7 @@ void Executor::step() {
     ++f.pc;
     return;
   }
-  if ((b.kind == Statement::while_do || b.kind == Statement::do_loop) && b.match < 0 && prog_->stream &&
-      b.error < 0) [[unlikely]]
-    prog_->stream->settle_loop(prog_->stream_index, f.pc);  // its END, or its alarm, not read yet
-  if (b.error >= 0) throw nc::Alarm(unit_->errors[b.error]);
+  if (b.error >= 0) [[unlikely]] throw nc::Alarm(unit_->errors[b.error]);
   if (b.sequence >= 0) last_sequence_ = b.sequence;
   if (b.kind == Statement::nc) ++nc_blocks_since_;
   else if (b.kind != Statement::empty) ++statements_since_;
@@ -494,10 +497,14 @@ void Executor::step() {
       ++frames_.back().pc;
       break;
     case Statement::while_do:
+      if (b.match < 0) [[unlikely]] settle_loop(b);
       if (condition(b.cond)) ++f.pc;
       else f.pc = b.match + 1;
       break;
-    case Statement::do_loop: ++f.pc; break;
+    case Statement::do_loop:
+      if (b.match < 0) [[unlikely]] settle_loop(b);
+      ++f.pc;
+      break;
     case Statement::end_loop:
       f.pc = b.match;
       last_back_jump_ = block_index_;
