@@ -2,8 +2,9 @@
 # Builds the libFuzzer targets (clang, in build-sanitize/ with the sanitizer tests: see
 # configure_sanitize in packages.sh) and fuzzes for about SECONDS (default 60), two targets at a
 # time: the parser and interpreter with the CSV, JSON Lines and G-code writers for three quarters of
-# SECONDS, then the cutter-profile and point-list files for a quarter; beside them the curve
-# expressions, the server's request bodies and the command line for a quarter or an eighth each,
+# SECONDS, then the cutter-profile and point-list files for a quarter; beside them the streamed
+# reader against the whole reading, the curve expressions, the server's request bodies and the
+# command line for a quarter or an eighth each,
 # the machine profiles, setups and STL files for an eighth. A crash,
 # undefined behaviour, a leak, a time-out (10 s an input) or 2 GB of memory fails.
 set -euo pipefail
@@ -12,7 +13,7 @@ seconds="${1:-60}"
 source scripts/packages.sh
 ensure_packages "${tool_packages[@]}" "${test_packages[@]}" "${fuzz_packages[@]}"
 configure_sanitize
-cmake --build build-sanitize --target fuzz_run fuzz_curve fuzz_rows fuzz_profile fuzz_setup fuzz_stl fuzz_cli fuzz_serve
+cmake --build build-sanitize --target fuzz_run fuzz_stream fuzz_curve fuzz_rows fuzz_profile fuzz_setup fuzz_stl fuzz_cli fuzz_serve
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 dir=build-sanitize/fuzz
 # fuzz TARGET CORPUS SECONDS MAX_LEN: runs one target, prints its totals, or the failing input's log
@@ -28,10 +29,12 @@ fuzz() {
   fi
 }
 
-mkdir -p "$dir"/corpus-{programs,curves,rows,profiles,setups,stls,cli,serve}
+mkdir -p "$dir"/corpus-{programs,stream,curves,rows,profiles,setups,stls,cli,serve}
 # the test programs of every folder of tests/programs (their names are unique across folders)
 find tests/programs -name '*.nc' -exec cp -t "$dir/corpus-programs/" {} +
 cp examples/*.nc macros/*.nc "$dir/corpus-programs/"
+# the streamed reader against the whole reading: a byte for the piece size, then the program
+for f in "$dir"/corpus-programs/*.nc; do { printf '\x07'; cat "$f"; } >"$dir/corpus-stream/$(basename "$f")"; done
 printf 'CX+[R0+A*t/360]*COS[t]\nCY+[R0+A*t/360]*SIN[t]\n0' >"$dir/corpus-curves/spiral"
 printf 'A/COS[t]\n0\nA*TAN[t]' >"$dir/corpus-curves/hyperbola"
 printf '63*SIN[t]-7.5*SIN[6*t]+20*SIN[ATAN[SIN[5*t]]/[1.4-COS[5*t]]-t]\nSQRT[ABS[t]]*EXP[t/90]\nLN[t+1]' \
@@ -74,7 +77,7 @@ eighth=$(( (seconds + 7) / 8 ))
 { fuzz fuzz_run programs "$(( seconds - quarter ))" 8192 && fuzz fuzz_rows rows "$quarter" 4096; } &
 first=$!
 status=0
-{ fuzz fuzz_curve curves "$quarter" 512 && fuzz fuzz_serve serve "$quarter" 4096 &&
+{ fuzz fuzz_stream stream "$quarter" 4096 && fuzz fuzz_curve curves "$quarter" 512 && fuzz fuzz_serve serve "$quarter" 4096 &&
   fuzz fuzz_profile profiles "$eighth" 4096 && fuzz fuzz_setup setups "$eighth" 4096 &&
   fuzz fuzz_stl stls "$eighth" 4096 && fuzz fuzz_cli cli "$eighth" 512; } || status=1
 wait "$first" || status=1
