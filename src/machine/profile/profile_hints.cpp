@@ -55,7 +55,9 @@ bool lathe_t_word(const nc::Program& p, const nc::Block& b, std::uint16_t column
 }  // namespace
 
 ProfileHints::ProfileHints(const MachineProfile& profile)
-    : profile_(profile), mill_(!profile.lathe()), system_a_(profile.lathe() && profile.gcode_system == 'A') {}
+    : profile_(profile), mill_(!profile.lathe()), system_a_(profile.lathe() && profile.gcode_system == 'A') {
+  for (int code : profile.g_code_macros) motion_calls_ = motion_calls_ || (std::abs(code) >= 1 && std::abs(code) <= 3);
+}
 
 namespace {
 template <class Sign>
@@ -91,12 +93,16 @@ void ProfileHints::see(const nc::Program& program, const nc::Program& p) {
   const MachineProfile& profile = profile_;
   for (const nc::Block& b : p.blocks) {
     if (b.kind != nc::Statement::nc || b.error >= 0) continue;
-    // a block of neither G nor T (most of an expanded program) shows no more than a feed below 1
-    // under G99 on a mill, U or W on a lathe
-    bool g_or_t = false;
-    for (std::uint32_t i = b.words_begin; i < b.words_end && !g_or_t; ++i)
-      g_or_t = p.words[i].letter == 'G' || p.words[i].letter == 'T';
-    if (!g_or_t) {
+    // a block without T and without G codes but G00..G03 (most of an expanded program) shows no
+    // more than a feed below 1 under G99 on a mill, U or W on a lathe
+    bool telling = motion_calls_;
+    for (std::uint32_t i = b.words_begin; i < b.words_end && !telling; ++i) {
+      const nc::Word& word = p.words[i];
+      telling = word.letter == 'T' ||
+                (word.letter == 'G' && word.literal && !(word.value == 0 || word.value == 1 || word.value == 2 ||
+                                                         word.value == 3));
+    }
+    if (!telling) {
       const nc::Word* feed = nullptr;  // the last F written as a number, as words_of keeps it
       for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
         const nc::Word& word = p.words[i];

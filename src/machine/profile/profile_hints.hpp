@@ -30,6 +30,7 @@ private:
   Sign t_word_, g50_s_, g96_, per_rev_;          // a lathe program on a mill
   Sign b_cycle_, g95_, mode_g90_, feed_mode_g94_;  // system B on a system-A lathe
   bool uses_u_w_ = false, inch_ = false, g99_ = false;
+  bool motion_calls_ = false;  // G01..G03 call a macro (No.6050..): every block is looked at
   const nc::Program* program_ = nullptr;  // the program being seen
 };
 
