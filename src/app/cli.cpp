@@ -25,7 +25,7 @@ void add_commands(CLI::App& app, Commands& c) {
   run->add_flag("--json", a.json, "summary as JSON");
   run->add_flag("--stream", a.in.stream,
                 "read the program block by block as the run reaches it, in little memory however long it is "
-                "(files of 32 MB and more always are)");
+                "(files of 8 MB and more always are)");
   run->add_option("--dprnt", a.dprnt, "write what POPEN, DPRNT, BPRNT and PCLOS send to this file, byte for byte");
   add_plot_options(run, a.plot, a.view);
   add_html_option(run, a.html);

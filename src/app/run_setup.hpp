@@ -50,7 +50,7 @@ RunSetup prepare_run_of_any_size(RunInputs in);
 // A streamed program's problems once the run is over (the file is then read to its end).
 void complete_problems(RunSetup& s);
 // Program files of this many bytes and more are streamed by `run` (RunInputs::stream).
-constexpr std::uintmax_t kStreamFrom = std::uintmax_t{32} << 20;
+constexpr std::uintmax_t kStreamFrom = std::uintmax_t{8} << 20;
 // Applies "--param N=V" overrides to a profile.
 void apply_parameters(machine::MachineProfile& profile, const std::vector<std::string>& params);
 

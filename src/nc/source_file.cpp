@@ -130,6 +130,13 @@ std::size_t SourceFile::read(std::size_t offset, std::size_t n, std::string& out
   return got;
 }
 
+std::string SourceFile::all_text() const {
+  if (whole()) return text_;
+  std::string out;
+  read(0, size_, out);
+  return out;
+}
+
 void SourceFile::line_read(std::uint32_t number, std::size_t offset) const {
   if (number > lines_read_) lines_read_ = number;
   if (number % kLineStride == 1 && (number - 1) / kLineStride == sparse_starts_.size()) sparse_starts_.push_back(offset);

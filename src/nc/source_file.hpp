@@ -24,6 +24,8 @@ public:
   bool whole() const { return fd_ < 0; }
   // All of the text when whole(), else empty.
   std::string_view text() const { return text_; }
+  // All of the text, a streamed file's read for it.
+  std::string all_text() const;
   std::size_t size() const { return whole() ? text_.size() : size_; }
   // Lines of a whole text; of a streamed file, the lines read so far.
   std::size_t line_count() const { return whole() ? line_starts_.size() : lines_read_; }

@@ -130,7 +130,7 @@ std::string BackplotData::json(bool inch) const {
   for (const auto* f : files_) {
     nlohmann::json e;
     e["name"] = f->name();
-    e["text"] = f->whole() && text_bytes <= kMostSourceBytes ? nlohmann::json(std::string(f->text())) : nlohmann::json(nullptr);
+    e["text"] = text_bytes <= kMostSourceBytes ? nlohmann::json(f->all_text()) : nlohmann::json(nullptr);
     files.push_back(e);
   }
   head["files"] = files;
