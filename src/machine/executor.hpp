@@ -369,7 +369,6 @@ private:
   const nc::Program* unit_ = nullptr;
   const nc::Program* unit_prog_ = nullptr;
   std::int32_t unit_first_ = 0, unit_end_ = 0;
-  std::shared_ptr<const nc::Program> unit_hold_;
   // Makes block i of p the block in hand; false past p's end.
   bool select_block(const nc::Program* p, std::int32_t i) {
     prog_ = p;
@@ -384,7 +383,6 @@ private:
   std::uint32_t line_of(const nc::Program* p, std::int32_t i);
   // A streamed program's whole-file checks (NC2001, NC2030, NC2031) as its pieces are read.
   struct FileChecks;
-  std::unique_ptr<FileChecks> file_checks_;
   bool finished_ = false;
   int macro_depth_ = 0;
   int sub_depth_ = 0;
@@ -521,6 +519,10 @@ private:
   std::uint32_t tool_change_line_ = 0;  // Z the tool stood at then (NC2075)
   double tool_change_z_ = 0;
   bool peck_d_checked_ = false;  // NC2076 warned in this cycle mode
+
+  // (cold, kept after the members a block uses)
+  std::shared_ptr<const nc::Program> unit_hold_;  // keeps unit_ in memory when it is a streamed piece
+  std::unique_ptr<FileChecks> file_checks_;
 };
 
 }  // namespace ncurve::machine

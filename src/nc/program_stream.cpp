@@ -90,23 +90,7 @@ std::shared_ptr<ProgramStream::Loaded> ProgramStream::read_chunk(std::size_t k, 
   const ReadState start = chunks_[k].start;
   std::string window;
   if (first) {
-    file_->read(start.offset, chunk_bytes_, window);
-    if (start.offset + window.size() < file_->size()) {  // whole lines only
-      const std::size_t nl = window.rfind('\n');
-      if (nl != std::string::npos) {
-        window.resize(nl + 1);
-      } else {  // a line longer than a piece: on to its end
-        for (;;) {
-          const std::size_t at = window.size();
-          if (file_->read(start.offset + at, std::size_t{1} << 16, window) == 0) break;
-          const std::size_t end = window.find('\n', at);
-          if (end != std::string::npos) {
-            window.resize(end + 1);
-            break;
-          }
-        }
-      }
-    }
+    read_lines(start.offset, window);
     std::size_t at = 0;
     for (std::size_t lines = 0; lines < kChunkLines; ++lines) {
       const std::size_t nl = window.find('\n', at);
@@ -365,19 +349,35 @@ void ProgramStream::visit(Visitor v) {
   visitors_.push_back(std::move(v));
 }
 
+// About chunk_bytes_ of text from `offset`, whole lines only (a longer line whole).
+void ProgramStream::read_lines(std::size_t offset, std::string& window) const {
+  window.clear();
+  file_->read(offset, chunk_bytes_, window);
+  if (offset + window.size() >= file_->size()) return;
+  const std::size_t nl = window.rfind('\n');
+  if (nl != std::string::npos) {
+    window.resize(nl + 1);
+    return;
+  }
+  for (;;) {  // a line longer than a piece: on to its end
+    const std::size_t at = window.size();
+    if (file_->read(offset + at, std::size_t{1} << 16, window) == 0) return;
+    const std::size_t end = window.find('\n', at);
+    if (end != std::string::npos) {
+      window.resize(end + 1);
+      return;
+    }
+  }
+}
+
 void ProgramStream::read_after_end() {
   std::uint32_t line = frontier_->line;
   const std::uint32_t end_line = frontier_->line;
   std::size_t offset = frontier_->offset;
   std::string window;
   while (offset < file_->size()) {
-    window.clear();
-    file_->read(offset, chunk_bytes_, window);
+    read_lines(offset, window);
     if (window.empty()) break;
-    if (offset + window.size() < file_->size()) {
-      const std::size_t nl = window.rfind('\n');
-      if (nl != std::string::npos) window.resize(nl + 1);
-    }
     text::programs_after_end(window, line, end_line, after_end_);
     offset += window.size();
   }

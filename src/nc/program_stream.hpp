@@ -89,6 +89,7 @@ private:
   void close_program(std::int32_t program, bool last);
   bool sequence_before(std::int32_t program, std::int32_t n, std::size_t chunk);
   void read_after_end();
+  void read_lines(std::size_t offset, std::string& window) const;
 
   std::shared_ptr<const SourceFile> file_;
   ParseOptions options_;

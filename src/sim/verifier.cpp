@@ -78,7 +78,7 @@ Finding finding_at(const machine::Move& m, const std::string& code, std::string 
   s.file = m.file;
   s.line = m.line;
   if (m.file && m.line != 0) {
-    const std::string_view text = m.file->line(m.line);
+    const std::string text = m.file->line(m.line);
     const std::size_t first = text.find_first_not_of(" \t");
     s.column = static_cast<std::uint32_t>(first == std::string_view::npos ? 1 : first + 1);
     s.length = static_cast<std::uint32_t>(std::max<std::size_t>(1, text.size() - std::min(first, text.size())));

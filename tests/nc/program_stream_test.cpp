@@ -90,3 +90,10 @@ TEST(ProgramStream, AGotoIntoALoopAlarmsAcrossPieces) {
   const std::string text = "O1000\n#1=0\nGOTO 7\nWHILE [#1 LT 2] DO1\n" + body(300, 13) + "N7 #1=#1+1\nEND1\nM30\n";
   for (std::size_t chunk : {64, 4096}) same_either_way(text, chunk);
 }
+
+TEST(ProgramStream, ProgramsAfterTheEndFoundAtTheirLinesPastLongLines) {
+  // lines after the closing '%' longer than a piece: the unread O2000 is named at its own line
+  const std::string text = "%\nO1001 (THE CONTROL READS NOTHING AFTER THE PERCENT, A LONG COMMENT)\nM98 P2000\nM30\n%\n"
+                           "(A COMMENT LINE AFTER THE END, LONGER THAN A PIECE OF EIGHT BYTES)\nG00 X0. Y0.\nO2000\nM99\n";
+  for (std::size_t chunk : {8, 64}) same_either_way(text, chunk);
+}
