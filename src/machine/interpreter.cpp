@@ -1,10 +1,10 @@
 // The execution loop: blocks in FANUC order, macro statements, control flow and calls.
 #include "machine/executor.hpp"
 #include "machine/word_values.hpp"
+#include "machine/file_checks.hpp"
 
 #include <fmt/format.h>
 
-#include "machine/profile/profile_hints.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -36,38 +36,9 @@ struct WordVarReader {
 
 
 
-// Whether a block holds a literal M98.
-bool calls_subprogram(const nc::Program& p, const nc::Block& b) {
-  for (std::uint32_t w = b.words_begin; w < b.words_end; ++w)
-    if (p.words[w].letter == 'M' && p.words[w].literal && p.words[w].value == 98) return true;
-  return false;
-}
-
-// Whether a block holds a literal G code from g_lo to g_hi (x10).
-bool block_has_g(const nc::Program& p, const nc::Block& b, int g_lo, int g_hi) {
-  for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
-    const nc::Word& word = p.words[w];
-    if (word.letter == 'G' && word.literal && word.value * 10 >= g_lo && word.value * 10 <= g_hi) return true;
-  }
-  return false;
-}
-
-// A number as the control shows it: at most `decimals` places, no trailing zeros.
-std::string shown_number(double v, int decimals) {
-  std::string s = fmt::format("{:.{}f}", v, std::max(decimals, 0));
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.') s.pop_back();
-  }
-  return s == "-0" ? "0" : s;
-}
 }  // namespace
 
 double increments_per_mm(const MachineProfile& p) { return std::round(1 / p.increment); }
-
-Executor::~Executor() {
-  if (file_checks_) library_.main()->stream->forget_visitors();  // a run left by an exception
-}
 
 Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library, RunOptions options)
     : profile_(profile), library_(library), options_(std::move(options)) {
@@ -197,114 +168,6 @@ bool Executor::condition(const nc::Expr& e) {
   return v != 0.0;
 }
 
-// Programs that mix dimension words with and without a decimal point are a classic source of
-// scrapped parts. A word of a macro call (G65, G66, a custom G code) is an argument, not an axis.
-// The search goes through a program's blocks in order, a piece at a time when it is streamed.
-namespace {
-struct DecimalPointSearch {
-  bool with = false, without = false;
-  char letter = 0;
-  double value = 0;
-  std::uint16_t column = 0;
-  std::uint32_t line = 0;
-  bool argument = false;
-};
-
-void search_decimal_points(const MachineProfile& profile_, const nc::Program& piece, DecimalPointSearch& found) {
-  auto is_call = [&](const nc::Program& p, const nc::Block& b) {
-    for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
-      const nc::Word& word = p.words[w];
-      if (word.letter != 'G' || !word.literal) continue;
-      int g = round_int(word.value * 10);
-      if (g == 650 || g == 660 || g == 661) return true;
-      for (int code : profile_.g_code_macros)
-        if (code != 0 && g == std::abs(code) * 10) return true;
-    }
-    return false;
-  };
-  const nc::Program* p = &piece;
-  for (const auto& b : p->blocks) {
-    if (b.kind != nc::Statement::nc) continue;  // DPRNT's range indexes Program::prints
-    for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
-      const nc::Word& word = p->words[w];
-      if (!word.literal || !scaled_address(word.letter)) continue;
-      if (word.letter == 'Q' && profile_.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
-      if (word.letter == 'Q' && profile_.lathe()) continue;  // and a start angle (G32, G92), a depth in increments (G76)
-      if (word.letter == 'R' && profile_.lathe() && block_has_g(*p, b, 730, 730)) continue;  // G73 R: divisions
-      if (word.letter == 'Q' && !profile_.lathe() && block_has_g(*p, b, 330, 330)) continue;  // G33's start angle
-      if (word.letter == 'Q' && calls_subprogram(*p, b)) continue;  // M98 Q: a sequence number
-      if (word.decimal_point) found.with = true;
-      else if (word.value != 0 && !found.without) {
-        found.without = true;
-        found.letter = word.letter;
-        found.value = word.value;
-        found.column = word.column;
-        found.line = b.line;
-        found.argument = is_call(*p, b);
-      }
-    }
-  }
-}
-
-void warn_decimal_points(const MachineProfile& profile_, const nc::Program& program, const DecimalPointSearch& found,
-                         std::vector<nc::Diagnostic>& to) {
-  if (!found.with || !found.without) return;
-  const int decimals = static_cast<int>(std::lround(-std::log10(profile_.increment)));
-  const std::string word = fmt::format("{}{}", found.letter, shown_number(found.value, 0));
-  const std::string read_as = profile_.decimal_calculator ? shown_number(found.value, 0)
-                                                          : shown_number(found.value * profile_.increment, decimals);
-  const std::string what = found.argument ? fmt::format("argument {} of a macro call is read as {}", word, read_as)
-                                          : fmt::format("{} is read as {} mm", word, read_as);
-  to.push_back(nc::Diagnostic{
-      nc::Severity::warning, "NC2001",
-      profile_.decimal_calculator
-          ? fmt::format("words with and without a decimal point in one program; {} (calculator-type input, "
-                        "No.3401#0 = 1)", what)
-          : fmt::format("words with and without a decimal point in one program; {} ({} least input increments, "
-                        "No.3401#0 = 0)", what, shown_number(found.value, 0)),
-      nc::Span{program.file.get(), found.line, found.column, 1}});
-}
-
-}  // namespace
-
-void Executor::warn_mixed_decimal_points(const nc::Program& program) {
-  DecimalPointSearch found;
-  search_decimal_points(profile_, program, found);
-  warn_decimal_points(profile_, program, found, result_.warnings);
-}
-
-// A streamed main file's checks of every program, made as its pieces are read and given at the end.
-struct Executor::FileChecks {
-  explicit FileChecks(const MachineProfile& start) : profile(start), hints(profile) {}
-  MachineProfile profile;  // as the run starts (G10 L52 may change it): as the checks before a run see it
-  ProfileHints hints;
-  std::vector<std::pair<const nc::Program*, DecimalPointSearch>> programs;
-};
-
-void Executor::start_file_checks(const nc::Program& main) {
-  file_checks_ = std::make_unique<FileChecks>(profile_);
-  main.stream->visit([this](const nc::Program& program, const nc::Program& piece) {
-    FileChecks& c = *file_checks_;
-    if (c.programs.empty() || c.programs.back().first != &program) c.programs.emplace_back(&program, DecimalPointSearch{});
-    search_decimal_points(c.profile, piece, c.programs.back().second);
-    c.hints.see(program, piece);
-  });
-}
-
-// The file's warnings come first, as when they are found before the run; the run's then stop at 1000
-// in all, as they do when the file's come first (NC2001 of a called program is never held back).
-void Executor::finish_file_checks(const nc::Program& main) {
-  library_.read_all();
-  main.stream->forget_visitors();
-  std::vector<nc::Diagnostic> all;
-  for (const auto& [program, found] : file_checks_->programs) warn_decimal_points(file_checks_->profile, *program, found, all);
-  for (nc::Diagnostic& d : file_checks_->hints.warnings()) all.push_back(std::move(d));
-  for (nc::Diagnostic& d : result_.warnings)
-    if (d.code == "NC2001" || all.size() < 1000) all.push_back(std::move(d));
-  result_.warnings = std::move(all);
-  file_checks_.reset();
-}
-
 RunResult Executor::run(MoveSink& sink) {
   path_stats_.link(sink);
   path_stats_.restart();
@@ -326,13 +189,7 @@ RunResult Executor::run(MoveSink& sink) {
   init_stroke_check();
 
   reached_.clear();
-  if (main->stream) {
-    start_file_checks(*main);  // given when the file has been read
-  } else {
-    for (const auto& p : library_.programs())  // the main file's; a library program's when it is called
-      if (p->file == main->file) warn_mixed_decimal_points(*p);
-    for (nc::Diagnostic& d : profile_hints(library_, profile_)) result_.warnings.push_back(std::move(d));
-  }
+  start_file_checks(*main);
 
   try {
     for (const auto& [n, v] : options_.presets) {

@@ -1,0 +1,30 @@
+// The checks of a whole main file before its run (file_checks.cpp): what a streamed file's keep
+// while its pieces are read.
+#pragma once
+#include <utility>
+#include <vector>
+
+#include "machine/executor.hpp"
+#include "machine/profile/profile_hints.hpp"
+
+namespace ncurve::machine {
+
+// NC2001's search of one program: its first word without a decimal point (not 0), and whether one has one.
+struct DecimalPointSearch {
+  bool with = false, without = false;
+  char letter = 0;
+  double value = 0;
+  std::uint16_t column = 0;
+  std::uint32_t line = 0;
+  bool argument = false;
+};
+
+// A streamed main file's checks of every program, made as its pieces are read and given at the end.
+struct Executor::FileChecks {
+  explicit FileChecks(const MachineProfile& start) : profile(start), hints(profile) {}
+  MachineProfile profile;  // as the run starts (G10 L52 may change it): as the checks before a run see it
+  ProfileHints hints;
+  std::vector<std::pair<const nc::Program*, DecimalPointSearch>> programs;
+};
+
+}  // namespace ncurve::machine
