@@ -378,7 +378,8 @@ private:
     block_index_ = i;
     return true;
   }
-  bool select_piece(const nc::Program* p, std::int32_t i);
+  [[gnu::noinline]] bool select_piece(const nc::Program* p, std::int32_t i);
+  [[gnu::noinline, gnu::cold]] void past_the_end();  // the program ran out of blocks
   void settle_loop(const nc::Block& b);
   std::uint32_t line_of(const nc::Program* p, std::int32_t i);
   // A streamed program's whole-file checks (NC2001, NC2030, NC2031) as its pieces are read.

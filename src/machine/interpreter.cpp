@@ -291,20 +291,26 @@ void Executor::settle_loop(const Block& b) {
   if (b.error >= 0) throw nc::Alarm(unit_->errors[b.error]);
 }
 
+// A program that ran out of blocks: the main one ends, a subprogram returns; the last block named.
+void Executor::past_the_end() {
+  const Frame& f = frames_.back();
+  std::int32_t last = f.pc - 1;
+  while (last >= 0 && !f.prog->piece_of(last).piece) --last;
+  block_ = nullptr;
+  if (last >= 0) select_block(f.prog, last);
+  if (frames_.size() == 1) {
+    warn("NC2002", "the program ends without M30 or M02");
+    finished_ = true;
+  } else {
+    warn("NC2003", "the subprogram ends without M99");
+    return_from_program(std::nullopt, 0);
+  }
+}
+
 void Executor::step() {
   Frame& f = frames_.back();
   if (!select_block(f.prog, f.pc)) [[unlikely]] {
-    std::int32_t last = f.pc - 1;
-    while (last >= 0 && !f.prog->piece_of(last).piece) --last;  // past the end: the last block
-    block_ = nullptr;
-    if (last >= 0) select_block(f.prog, last);
-    if (frames_.size() == 1) {
-      warn("NC2002", "the program ends without M30 or M02");
-      finished_ = true;
-    } else {
-      warn("NC2003", "the subprogram ends without M99");
-      return_from_program(std::nullopt, 0);
-    }
+    past_the_end();
     return;
   }
   const Block& b = *block_;
