@@ -262,14 +262,6 @@ void Executor::check_runaway() {
 
 // The piece holding block i of p, read again when it has gone; false past p's end.
 bool Executor::select_piece(const nc::Program* p, std::int32_t i) {
-  if (!p->stream) {
-    if (i < 0 || i >= static_cast<std::int32_t>(p->blocks.size())) return false;
-    unit_ = unit_prog_ = p;
-    unit_first_ = 0;
-    unit_end_ = static_cast<std::int32_t>(p->blocks.size());
-    unit_hold_.reset();
-    return true;
-  }
   nc::Program::Piece piece = p->piece_of(i);
   if (!piece.piece) return false;
   unit_ = piece.piece;

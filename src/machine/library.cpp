@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <unordered_set>
 
 namespace ncurve::machine {
 
@@ -96,7 +97,7 @@ struct ProgramLibrary::StreamListener : nc::ProgramStream::Listener {
   ProgramLibrary& lib;
   std::string name;
   int from_name;
-  std::vector<const nc::Program*> entered;
+  std::unordered_set<const nc::Program*> entered;
   StreamListener(ProgramLibrary& l, std::string n) : lib(l), name(std::move(n)), from_name(number_from_file_name(name)) {}
   void program_begun(std::unique_ptr<nc::Program> p) override { lib.programs_.push_back(std::move(p)); }
   void program_content(nc::Program& p) override { enter(p); }
@@ -104,8 +105,7 @@ struct ProgramLibrary::StreamListener : nc::ProgramStream::Listener {
     if (has_content || last || p.number >= 0) enter(p);
   }
   void enter(nc::Program& p) {
-    if (std::ranges::find(entered, &p) != entered.end()) return;
-    entered.push_back(&p);
+    if (!entered.insert(&p).second) return;
     lib.enter(&p, name, from_name, true, lib.stream_source_, lib.stream_duplicates_);
   }
 };

@@ -31,6 +31,7 @@ struct ProgramStream::ProgramInfo {
   std::unordered_map<std::int32_t, Diagnostic> loop_error;  // a block's loop problem
   std::vector<Loop> pairs;
   SourceCount count;
+  std::size_t piece_holding(std::int32_t i) const;
 };
 
 Program::Piece Program::piece_of(std::int32_t i) const {
@@ -108,7 +109,6 @@ std::shared_ptr<ProgramStream::Loaded> ProgramStream::read_chunk(std::size_t k, 
   again.kept = start.syntax_kept;
   again.keep = false;
   std::size_t unchecked_again = 0;
-  std::size_t piece_index = 0;
   auto new_piece = [&](int number) {
     auto piece = std::make_unique<Program>();
     piece->file = file_;
@@ -116,7 +116,6 @@ std::shared_ptr<ProgramStream::Loaded> ProgramStream::read_chunk(std::size_t k, 
     Program* raw = piece.get();
     loaded->pieces.push_back(std::move(piece));
     if (first) chunks_[k].pieces.push_back(PieceRecord{st.program, st.blocks, 0, 0, -1});
-    ++piece_index;
     return raw;
   };
   text::LineReader::Hooks hooks;
@@ -158,9 +157,13 @@ std::shared_ptr<ProgramStream::Loaded> ProgramStream::read_chunk(std::size_t k, 
       patch(chunks_[k].pieces[j].program, *loaded->pieces[j], chunks_[k].pieces[j].first);
   }
   alive_[k] = loaded;
-  kept_.emplace_front(k, loaded);
-  if (kept_.size() > kPiecesKept) kept_.pop_back();
+  keep(k, loaded);
   return loaded;
+}
+
+void ProgramStream::keep(std::size_t chunk, std::shared_ptr<Loaded> loaded) {
+  kept_.emplace_front(chunk, std::move(loaded));
+  if (kept_.size() > kPiecesKept) kept_.pop_back();
 }
 
 void ProgramStream::after_first_read(std::size_t k, Loaded& loaded, bool ended) {
@@ -189,10 +192,7 @@ void ProgramStream::after_first_read(std::size_t k, Loaded& loaded, bool ended) 
     };
     auto fault = [&](std::int32_t index, std::uint32_t line, std::uint16_t column, const char* code,
                      std::string message, std::uint32_t length) {
-      Diagnostic d{Severity::error, code, std::move(message), Span{file_.get(), line, column, length}};
-      programs_[r.program].loop_error.try_emplace(index, d);
-      loops_->add(std::move(d));
-      patch_alive(r.program, index);
+      loop_fault(r.program, index, Span{file_.get(), line, column, length}, code, std::move(message));
     };
     for (std::size_t i = 0; i < piece.blocks.size(); ++i) {
       const Block& b = piece.blocks[i];
@@ -217,13 +217,24 @@ void ProgramStream::close_program(std::int32_t program, bool last) {
   if (info.closed) return;
   info.loops.close([&](std::int32_t index, std::uint32_t line, std::uint16_t column, const char* code,
                        std::string message, std::uint32_t length) {
-    Diagnostic d{Severity::error, code, std::move(message), Span{file_.get(), line, column, length}};
-    programs_[program].loop_error.try_emplace(index, d);
-    loops_->add(std::move(d));
-    patch_alive(program, index);
+    loop_fault(program, index, Span{file_.get(), line, column, length}, code, std::move(message));
   });
   info.closed = true;
   listener_.program_ended(*info.program, info.content, last);
+}
+
+// A loop's problem at block `index`: listed, and raised when the block runs.
+void ProgramStream::loop_fault(std::int32_t program, std::int32_t index, Span at, const char* code,
+                               std::string message) {
+  Diagnostic d{Severity::error, code, std::move(message), at};
+  programs_[program].loop_error.try_emplace(index, d);
+  loops_->add(std::move(d));
+  patch_alive(program, index);
+}
+
+// Which of the program's pieces holds block i (i read already, 0 <= i < blocks).
+std::size_t ProgramStream::ProgramInfo::piece_holding(std::int32_t i) const {
+  return static_cast<std::size_t>(std::upper_bound(firsts.begin(), firsts.end(), i) - firsts.begin() - 1);
 }
 
 namespace {
@@ -248,9 +259,8 @@ void ProgramStream::patch(std::int32_t program, Program& piece, std::int32_t fir
 
 void ProgramStream::patch_alive(std::int32_t program, std::int32_t index) {
   const ProgramInfo& info = programs_[program];
-  auto it = std::upper_bound(info.firsts.begin(), info.firsts.end(), index);
-  if (it == info.firsts.begin()) return;
-  const auto [chunk, j] = info.pieces[static_cast<std::size_t>(it - info.firsts.begin() - 1)];
+  if (info.firsts.empty() || index < info.firsts.front()) return;
+  const auto [chunk, j] = info.pieces[info.piece_holding(index)];
   auto alive = alive_.find(chunk);
   if (alive == alive_.end()) return;
   std::shared_ptr<Loaded> loaded = alive->second.lock();
@@ -269,8 +279,7 @@ std::shared_ptr<ProgramStream::Loaded> ProgramStream::load(std::size_t chunk) {
     }
   if (auto alive = alive_.find(chunk); alive != alive_.end())
     if (std::shared_ptr<Loaded> loaded = alive->second.lock()) {
-      kept_.emplace_front(chunk, loaded);
-      if (kept_.size() > kPiecesKept) kept_.pop_back();
+      keep(chunk, loaded);
       return loaded;
     }
   return read_chunk(chunk, false);
@@ -293,9 +302,7 @@ Program::Piece ProgramStream::piece_of(std::int32_t program, std::int32_t i) {
   }
   const ProgramInfo& info = programs_[program];
   if (i < 0 || i >= info.blocks) return {};
-  const std::size_t p = static_cast<std::size_t>(std::upper_bound(info.firsts.begin(), info.firsts.end(), i) -
-                                                 info.firsts.begin() - 1);
-  const auto [chunk, j] = info.pieces[p];
+  const auto [chunk, j] = info.pieces[info.piece_holding(i)];
   std::shared_ptr<Loaded> loaded = load(chunk);
   const PieceRecord& r = chunks_[chunk].pieces[j];
   const Program* piece = loaded->pieces[j].get();
@@ -313,7 +320,7 @@ std::int32_t ProgramStream::find_sequence(std::int32_t program, std::int32_t n) 
       if (n < r.n_min || n > r.n_max) continue;
       const std::shared_ptr<Loaded> loaded = load(chunk);
       const auto& index = loaded->pieces[j]->sequence_index;
-      if (auto it = index.find(n); it != index.end()) found = chunks_[chunk].pieces[j].first + it->second;
+      if (auto it = index.find(n); it != index.end()) found = r.first + it->second;
     }
     if (found >= 0 || programs_[program].closed || !advance()) break;
   }

@@ -87,6 +87,8 @@ private:
   void patch(std::int32_t program, Program& piece, std::int32_t first) const;
   void patch_alive(std::int32_t program, std::int32_t index);
   void close_program(std::int32_t program, bool last);
+  void loop_fault(std::int32_t program, std::int32_t index, Span at, const char* code, std::string message);
+  void keep(std::size_t chunk, std::shared_ptr<Loaded> loaded);
   bool sequence_before(std::int32_t program, std::int32_t n, std::size_t chunk);
   void read_after_end();
   void read_lines(std::size_t offset, std::string& window) const;
