@@ -117,8 +117,11 @@ std::size_t SourceFile::read(std::size_t offset, std::size_t n, std::string& out
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(fmt::format("{}: {}", name_, e.what()));
   }
+  if (got < n)  // the file shrank after it was opened: its index no longer holds
+    throw std::runtime_error(fmt::format("{}: error: the file became shorter while it was read ({} bytes, was {})",
+                                         name_, skip_ + offset + got, skip_ + size_));
   const bool peeked = got > n;
-  got = std::min(got, n);
+  got = n;
   char* p = out.data() + at;
   if (std::memchr(p, '\r', got) == nullptr) {
     out.resize(at + got);

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "machine/interpreter.hpp"
@@ -42,7 +44,8 @@ std::string run(machine::ProgramLibrary& lib, std::vector<nc::Diagnostic> proble
 
 // The text read whole and read as a stream in pieces of `chunk` bytes.
 void same_either_way(const std::string& text, std::size_t chunk) {
-  const std::string path = ::testing::TempDir() + "stream_test.nc";
+  const std::string path = fmt::format("{}stream_{}_{}.nc", ::testing::TempDir(),
+                                       ::testing::UnitTest::GetInstance()->current_test_info()->name(), ::getpid());
   {
     std::ofstream f(path, std::ios::binary);
     f << text;
@@ -96,4 +99,26 @@ TEST(ProgramStream, ProgramsAfterTheEndFoundAtTheirLinesPastLongLines) {
   const std::string text = "%\nO1001 (THE CONTROL READS NOTHING AFTER THE PERCENT, A LONG COMMENT)\nM98 P2000\nM30\n%\n"
                            "(A COMMENT LINE AFTER THE END, LONGER THAN A PIECE OF EIGHT BYTES)\nG00 X0. Y0.\nO2000\nM99\n";
   for (std::size_t chunk : {8, 64}) same_either_way(text, chunk);
+}
+
+TEST(ProgramStream, AFileCutShortWhileReadEndsWithAnError) {
+  // another program truncating the file mid-run: the stream stops with an error naming the file
+  const std::string path = fmt::format("{}stream_cut_{}.nc", ::testing::TempDir(), ::getpid());
+  const std::string text = "O1000\n" + body(2000, 3) + "M30\n";
+  {
+    std::ofstream f(path, std::ios::binary);
+    f << text;
+  }
+  machine::ProgramLibrary lib;
+  lib.add_streamed(path, path, 256);
+  ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(text.size() / 2)), 0);
+  try {
+    run(lib, {});
+    ADD_FAILURE() << "a file cut short ran to its end";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": error: the file became shorter while it was read"),
+              std::string::npos)
+        << e.what();
+  }
+  std::remove(path.c_str());
 }

@@ -89,8 +89,8 @@ TEST(StlStock, CellsStartAtTheMeshTopAndOutsideItHoldNothing) {
                        "[stock]\nshape = \"stl\"\nfile = \"l.stl\"\n");
   EXPECT_NEAR(slot.verifier->map().volume_removed(), 15 * 10 * 2, 15 * 0.2 * 2 + 10 * 0.1 * 2);
   // in inches: the box of a 1 x 1 x 0.5 inch file is 25.4 x 25.4 x 12.7 mm
-  test::stl_file("inch.stl", test::box_mesh(0, 1, 0, 1, -0.5, 0));
-  const Cut inch = cut("M30\n", "inch = true\n[stock]\nshape = \"stl\"\nfile = \"inch.stl\"\n");
+  test::stl_file("inch_box.stl", test::box_mesh(0, 1, 0, 1, -0.5, 0));
+  const Cut inch = cut("M30\n", "inch = true\n[stock]\nshape = \"stl\"\nfile = \"inch_box.stl\"\n");
   EXPECT_DOUBLE_EQ(inch.verifier->map().stock().max[0], 25.4);
   EXPECT_DOUBLE_EQ(inch.verifier->map().stock().min[2], -12.7);
 }
