@@ -3,10 +3,13 @@
 #include <fmt/format.h>
 #include <sys/resource.h>
 
+#include <random>
 #include <string>
 
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
+#include "nc/program.hpp"
+#include "nc/source_file.hpp"
 
 using namespace ncurve::machine;
 
@@ -76,6 +79,32 @@ void BM_Expanded1M(benchmark::State& state) {
   state.counters["blocks/s"] = benchmark::Counter(static_cast<double>(blocks), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_Expanded1M)->Unit(benchmark::kMillisecond);
+
+// The text of bench/vs_rs274.py's expanded workload: G01 X Y Z F1000, three seeded random decimals.
+std::string cam_blocks(long blocks) {
+  std::string s = "%\nO1000\nG21 G90 G17 G54\n";
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> xy(-100, 100), z(-20, 0);
+  for (long i = 0; i < blocks; ++i)
+    fmt::format_to(std::back_inserter(s), "G01 X{:.3f} Y{:.3f} Z{:.3f} F1000\n", xy(rng), xy(rng), z(rng));
+  s += "M30\n%\n";
+  return s;
+}
+
+// The parse alone of a stream's piece of a CAM program (256 KB; the summary's rate is parse and run together).
+void BM_ParsePiece(benchmark::State& state) {
+  const auto file = std::make_shared<ncurve::nc::SourceFile>("bench.nc", cam_blocks(7'000));
+  for (auto _ : state) benchmark::DoNotOptimize(ncurve::nc::parse(file).programs.size());
+  state.SetBytesProcessed(static_cast<std::int64_t>(file->size()) * state.iterations());
+}
+BENCHMARK(BM_ParsePiece)->Unit(benchmark::kMillisecond);
+
+void BM_CamBlocks1M(benchmark::State& state) {
+  const std::string text = cam_blocks(1'000'000);
+  for (auto _ : state) benchmark::DoNotOptimize(run_text(text).blocks);
+  state.SetBytesProcessed(static_cast<std::int64_t>(text.size()) * state.iterations());
+}
+BENCHMARK(BM_CamBlocks1M)->Unit(benchmark::kMillisecond);
 
 void BM_Contour1M(benchmark::State& state) {
   std::string text = contour(1'000'000, state.range(0) != 0);

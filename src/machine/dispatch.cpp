@@ -24,6 +24,10 @@ double Executor::as_written(double value, bool literal, bool decimal_point) cons
 }
 
 double Executor::dimension_raw(const Cmd& c) const {
+  // a literal like X1.25 with no more decimals than the increment is on its grid: rounding gives it back
+  if (c.literal && c.decimal_point && c.decimals <= (modal_.inch ? on_grid_inch_ : on_grid_mm_) &&
+      std::fabs(c.value) < 1e9)
+    return c.value + 0.0;  // -0. rounds to +0
   const double per_unit = modal_.inch ? per_unit_inch_ : per_unit_mm_;
   return round_to_increment(as_written(c.value, c.literal, c.decimal_point), per_unit);
 }
@@ -167,7 +171,7 @@ bool Executor::read_words(const Block& b) {
   vacant_word_.variable = 0;
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
     const nc::Word& w = unit_->words[i];
-    Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value};
+    Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value, w.decimals};
     if (!w.literal) {
       int vacant = 0;
       Value v = eval_word(w.expr, vacant);

@@ -53,6 +53,7 @@ public:
     bool literal;
     std::uint16_t column;
     double value;
+    std::uint8_t decimals = 255;  // a literal's digits after its point
   };
   bool has(char letter) const { return have_[letter - 'A']; }
   const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
@@ -352,6 +353,7 @@ private:
   MachineProfile profile_;  // G10 L52 may change its parameters
   std::array<bool, kAxes> has_axis_{};  // the profile's axes, by axis_index
   double per_unit_mm_ = 1000, per_unit_inch_ = 10000;  // least input increments per mm and per inch
+  int on_grid_mm_ = 3, on_grid_inch_ = 4;  // decimals a literal may have to be on that grid already (-1: none)
   const ProgramLibrary& library_;
   RunOptions options_;
   nc::EvalOptions eval_options_;

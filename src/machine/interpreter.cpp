@@ -46,6 +46,14 @@ Executor::Executor(const MachineProfile& profile, const ProgramLibrary& library,
   init_rotary();
   per_unit_mm_ = increments_per_mm(profile_);
   per_unit_inch_ = std::round(10 / profile_.increment);
+  auto on_grid = [](double per_unit) {  // k where per_unit is 10^k, up to 10^6
+    double p = 1;
+    for (int k = 0; k <= 6; ++k, p *= 10)
+      if (per_unit == p) return k;
+    return -1;
+  };
+  on_grid_mm_ = on_grid(per_unit_mm_);
+  on_grid_inch_ = on_grid(per_unit_inch_);
   digit_limit_ = std::pow(10.0, profile_.number_digits);
   eval_options_.atan_signed = profile_.atan_signed;
   eval_options_.atan_comma = profile_.control == Control::fanuc_30i;

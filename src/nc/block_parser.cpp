@@ -92,6 +92,7 @@ private:
   Program& prog_;
   int max_digits_;
   bool leading_zeros_count_;
+  int fraction_ = 0;  // digits after the point of the last number read
   std::size_t i_ = 0;
   int depth_ = 0;      // bracket nesting
   int stack_ = 0;      // evaluation stack depth while emitting
@@ -180,6 +181,7 @@ private:
       i_ = start;
       fail("PS0007", "a decimal point without digits");
     }
+    fraction_ = fraction;
     return scaled_decimal(mantissa, fraction);
   }
 
@@ -375,6 +377,7 @@ private:
     char c = peek();
     if (is_digit(c) || c == '.') {
       w.value = number(w.decimal_point);
+      w.decimals = static_cast<std::uint8_t>(std::min(fraction_, 255));
       if (negative) w.value = -w.value;
       return;
     }

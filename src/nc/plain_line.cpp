@@ -4,52 +4,60 @@
 
 namespace ncurve::nc::text {
 
+namespace {
+constexpr bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+}  // namespace
+
 bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int max_digits) {
-  const std::size_t words_mark = prog.words.size();
-  auto bail = [&] {
-    prog.words.resize(words_mark);
-    return false;
-  };
-  auto skip_blanks = [&](std::size_t k) {
-    while (k < raw.size() && (raw[k] == ' ' || raw[k] == '\t' || raw[k] == '\r')) ++k;
-    return k;
-  };
   if (raw.size() > kMaxBlockChars) return false;
-  std::size_t k = skip_blanks(0);
-  if (k == raw.size()) return false;
-  const std::uint16_t first_col = clamp_col(k + 1);
-  while (k < raw.size()) {
-    const char letter = to_upper(raw[k]);
-    if (!is_upper(letter) || letter == 'O' || letter == 'N') return bail();
-    Word w;
+  const char* const begin = raw.data();
+  const char* const end = begin + raw.size();
+  const char* p = begin;
+  while (p != end && blank(*p)) ++p;
+  if (p == end) return false;
+  const std::size_t words_mark = prog.words.size();
+  const std::uint16_t first_col = static_cast<std::uint16_t>(p - begin + 1);
+  while (p != end) {
+    const char letter = to_upper(*p);
+    if (!is_upper(letter) || letter == 'O' || letter == 'N') break;
+    Word& w = prog.words.emplace_back();
     w.letter = letter;
-    w.column = clamp_col(k + 1);
-    k = skip_blanks(k + 1);
+    w.column = static_cast<std::uint16_t>(p - begin + 1);
+    ++p;
+    while (p != end && blank(*p)) ++p;
     bool negative = false;
-    if (k < raw.size() && (raw[k] == '-' || raw[k] == '+')) {
-      negative = raw[k] == '-';
-      k = skip_blanks(k + 1);
-    }
-    std::int64_t mantissa = 0;
-    int digits = 0, fraction = 0;
-    for (; k < raw.size(); k = skip_blanks(k + 1)) {
-      const char c = raw[k];
-      if (c == '.') {
-        if (w.decimal_point) return bail();
-        w.decimal_point = true;
-      } else if (is_digit(c)) {
-        if (++digits > max_digits) return bail();
+    if (p != end && (*p == '-' || *p == '+')) negative = *p++ == '-';
+    // digits and one decimal point, blanks between them ignored
+    std::uint64_t mantissa = 0;  // wraps past max_digits, then unused
+    int digits = 0, fraction = -1;
+    for (; p != end; ++p) {
+      const char c = *p;
+      if (is_digit(c)) {
         mantissa = mantissa * 10 + (c - '0');
-        if (w.decimal_point) ++fraction;
-      } else {
+        ++digits;
+        fraction += fraction >= 0;
+      } else if (c == '.') {
+        if (fraction >= 0) {
+          digits = 0;  // a second point: not a plain word
+          break;
+        }
+        fraction = 0;
+      } else if (!blank(c)) {
         break;
       }
     }
-    if (digits == 0) return bail();
-    if (k < raw.size() && !is_upper(to_upper(raw[k]))) return bail();
-    w.value = scaled_decimal(mantissa, fraction);
-    if (negative) w.value = -w.value;
-    prog.words.push_back(w);
+    if (digits == 0 || digits > max_digits || (p != end && !is_upper(to_upper(*p)))) {
+      prog.words.resize(words_mark);
+      return false;
+    }
+    w.decimal_point = fraction >= 0;
+    w.decimals = static_cast<std::uint8_t>(fraction > 0 ? fraction : 0);
+    const double v = fraction > 0 ? scaled_decimal(static_cast<std::int64_t>(mantissa), fraction) : static_cast<double>(mantissa);
+    w.value = negative ? -v : v;
+  }
+  if (p != end) {  // O, N or a character of the general scanner's
+    prog.words.resize(words_mark);
+    return false;
   }
   Block& b = prog.blocks.emplace_back();
   b.kind = Statement::nc;

@@ -15,6 +15,7 @@ struct Word {
   char letter = 0;
   bool literal = true;         // value known at parse time
   bool decimal_point = false;  // a literal written with '.'
+  std::uint8_t decimals = 0;   // its digits after the point (255: that many or more)
   std::uint16_t column = 0;
   double value = 0;  // literal value
   Expr expr;         // otherwise

@@ -134,8 +134,14 @@ std::shared_ptr<ProgramStream::Loaded> ProgramStream::read_chunk(std::size_t k, 
   hooks.sequence_before = [&](std::int32_t n) { return sequence_before(st.program, n, k); };
   text::LineReader reader(*file_, std::clamp(options_.max_digits, 1, kMostDigits), std::move(hooks));
   Program* current = st.program >= 0 ? new_piece(programs_[st.program].program->number) : nullptr;
+  if (current) {
+    current->blocks.reserve(blocks_hint_);
+    current->words.reserve(words_hint_);
+  }
   reader.read(window, st, current, first ? *syntax_ : again, first ? unchecked_ : unchecked_again);
   if (current) {
+    blocks_hint_ = current->blocks.size() + current->blocks.size() / 8;
+    words_hint_ = current->words.size() + current->words.size() / 8;
     st.last_alarms = reader.last_alarms(current, st);
     st.blocks += static_cast<std::int32_t>(current->blocks.size());
   }

@@ -102,6 +102,7 @@ private:
   std::unique_ptr<text::ReadState> frontier_;
   std::unique_ptr<text::Problems> syntax_, loops_;
   std::size_t unchecked_ = 0;
+  std::size_t blocks_hint_ = 0, words_hint_ = 0;  // the last piece's, reserved for the next: no regrowth
   std::vector<UnreadProgram> after_end_;
   bool finished_ = false;
   std::list<std::pair<std::size_t, std::shared_ptr<Loaded>>> kept_;  // most recent first

@@ -102,6 +102,29 @@ TEST(Motion, VariableValuesAreMillimetresAndRoundToTheIncrement) {
   EXPECT_NEAR(m.end[1], 1.235, 1e-12);
 }
 
+// A literal rounds to the least input increment (IS-B: 0.001 mm, 0.0001 inch) whatever its decimals;
+// one already on the grid is exactly the decimal written, and -0. is zero.
+TEST(Motion, LiteralsRoundToTheIncrement) {
+  auto r = run("G00 X1.2346 Y-7.0004 Z-0.\nX0.125 Y-12345.678 Z1.23449\nG20 X1.23456 Y0.0001 Z-2.5\nM30\n");
+  ASSERT_TRUE(r.result.ok()) << r.result.alarm->message;
+  auto m = r.motions();
+  EXPECT_EQ(m.at(0).end[0], 1235 / 1000.0);
+  EXPECT_EQ(m.at(0).end[1], -7000 / 1000.0);
+  EXPECT_EQ(m.at(0).end[2], 0.0);
+  EXPECT_FALSE(std::signbit(m.at(0).end[2]));
+  EXPECT_EQ(m.at(1).end[0], 0.125);
+  EXPECT_EQ(m.at(1).end[1], -12345678 / 1000.0);
+  EXPECT_EQ(m.at(1).end[2], 1234 / 1000.0);
+  EXPECT_EQ(m.at(2).end[0], 12346 / 10000.0 * 25.4);
+  EXPECT_EQ(m.at(2).end[1], 1 / 10000.0 * 25.4);
+  EXPECT_EQ(m.at(2).end[2], -25000 / 10000.0 * 25.4);
+  auto isc = machine::default_mill();  // IS-C: 0.0001 mm
+  isc.increment = 0.0001;
+  auto c = run("G00 X1.23456 Y1.2345\nM30\n", isc);
+  EXPECT_EQ(c.motions().at(0).end[0], 12346 / 10000.0);
+  EXPECT_EQ(c.motions().at(0).end[1], 12345 / 10000.0);
+}
+
 TEST(Motion, VacantWordIsOmittedButBracketedArithmeticIsNot) {
   auto r = run("G00 X5. Y5.\nG00 X#1 Y[#1+10.]\nM30\n");
   auto m = r.motions().at(1);

@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
 #include "nc/program.hpp"
 
 using namespace ncurve::nc;
@@ -138,9 +143,17 @@ TEST(Parser, PlainLinesCompileAsTheGeneralScannerDoes) {
       "X123456789012345.",      "X1234567890123456.",    "X1.2.3",             "X.",
       "X",                      "X1-2",                  "XY1",                "G01 X1 N10",
       "M30 O12",                "\tG00\tX0\r",           "X0.000000000000000001", "G4X-0", "X0.00555555555555556",
-      "X-.0000000000000000000000001234",
+      "X-.0000000000000000000000001234", "X 1 2 . 3 4 0", "X-0.", "Y+.0", "G01X1.Y2.Z3.F4.",
   };
-  for (const char* line : lines) {
+  std::vector<std::string> all(std::begin(lines), std::end(lines));
+  std::mt19937 rng(7);  // and lines of random plain-looking characters
+  const std::string alphabet = "XYZGFO 0123456789.-+\t";
+  for (int i = 0; i < 3000; ++i) {
+    std::string line;
+    for (int n = static_cast<int>(rng() % 20); n > 0; --n) line += alphabet[rng() % alphabet.size()];
+    if (line.find_first_not_of(" \t") != std::string::npos) all.push_back(line);  // a comment alone is a block
+  }
+  for (const std::string& line : all) {
     auto plain = parse_text(std::string("O1\n") + line + "\n");
     auto general = parse_text(std::string("O1\n") + line + " (C)\n");
     SCOPED_TRACE(line);
@@ -159,6 +172,8 @@ TEST(Parser, PlainLinesCompileAsTheGeneralScannerDoes) {
       EXPECT_EQ(a.words[i].decimal_point, b.words[i].decimal_point);
       EXPECT_EQ(a.words[i].literal, b.words[i].literal);
       EXPECT_EQ(a.words[i].value, b.words[i].value);
+      EXPECT_EQ(std::signbit(a.words[i].value), std::signbit(b.words[i].value));
+      if (a.words[i].decimal_point) EXPECT_EQ(a.words[i].decimals, b.words[i].decimals);
     }
     for (std::size_t i = 0; i < a.blocks.size(); ++i) {
       EXPECT_EQ(a.blocks[i].kind, b.blocks[i].kind);

@@ -50,7 +50,7 @@ void Executor::parameter_input_block(const nc::Block& b) {
   std::vector<Cmd> words;
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
     const nc::Word& w = unit_->words[i];
-    Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value};
+    Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value, w.decimals};
     if (!w.literal) {
       const nc::Value v = eval(w.expr);
       if (v.vacant) continue;
