@@ -33,7 +33,7 @@ BatchRow run_one(RunInputs in, const std::string& program) {
     const machine::RunResult r = interp.run(sink);
     if (setup.lib->streamed()) complete_problems(setup);
     row.result = r.ok() ? "completed" : "alarm";
-    row.blocks = r.stats.blocks;
+    row.blocks = r.stats.executed();
     row.motions = r.stats.motions;
     row.seconds = r.stats.seconds;
     row.warnings = r.warnings.size() + setup.problems.size() + setup.problems_left_out;

@@ -320,6 +320,7 @@ void Executor::step() {
     return;
   }
   ++result_.stats.blocks;
+  if (shape_read_) [[unlikely]] ++result_.stats.shape_blocks;
   if (observer_) [[unlikely]] observe_block(b);
   if (b.block_skip && profile_.block_skip) {
     ++f.pc;

@@ -30,7 +30,10 @@ struct RunOptions {
 };
 
 struct RunStats {
-  std::uint64_t blocks = 0;  // blocks executed, macro statements included
+  std::uint64_t blocks = 0;  // blocks run, macro statements and the shapes G70..G73 read included
+  std::uint64_t shape_blocks = 0;  // of them: blocks a G71..G73 read for its shape, within the cycle block's step
+  // The blocks executed as the debugger steps them and the summary counts them.
+  std::uint64_t executed() const { return blocks - shape_blocks; }
   std::uint64_t motions = 0;
   std::array<std::uint64_t, 10> by_kind{};  // indexed by MoveKind
   double feed_length = 0;

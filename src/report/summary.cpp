@@ -46,7 +46,7 @@ std::string summary_text(const RunReport& r) {
   out += fmt::format("  machine        {}\n", nc::escape_controls(prof.name));
   out += fmt::format("  source         {} bytes, {} words, {} blocks, {} program(s)\n", r.stats.bytes, r.stats.words,
                      r.stats.blocks, r.stats.programs);
-  out += fmt::format("  executed       {} blocks\n", st.blocks);
+  out += fmt::format("  executed       {} blocks\n", st.executed());
   out += fmt::format("  moves          {}\n", kind_counts(st));
   out += fmt::format("  path length    {:.3f} mm at feed, {:.3f} mm at rapid\n", st.feed_length, st.rapid_length);
   out += fmt::format("  time (F only)  {:.2f} s (programmed feed and rapid rates; no acceleration)\n", st.seconds);
@@ -112,7 +112,7 @@ nlohmann::json summary_object(const RunReport& r) {
   j["source_bytes"] = r.stats.bytes;
   j["source_words"] = r.stats.words;
   j["source_blocks"] = r.stats.blocks;
-  j["blocks_executed"] = st.blocks;
+  j["blocks_executed"] = st.executed();
   nlohmann::json moves = nlohmann::json::object();
   for (int k = 0; k < 10; ++k) moves[machine::to_string(static_cast<MoveKind>(k))] = st.by_kind[k];
   j["moves"] = moves;

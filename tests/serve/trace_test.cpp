@@ -192,6 +192,23 @@ TEST(Trace, ModalStateAndMoves) {
   EXPECT_EQ((changes[{3, 4003}]), 90.0);
 }
 
+// A lathe's G71 reads its shape's blocks within its own step: the debugger's steps and the summary's
+// blocks executed are one count. By hand: G00, the two G71 blocks (the shape skipped), G70 and the
+// three shape blocks it runs, M30: 8 blocks, on lines 1 2 3 7 4 5 6 8.
+TEST(Trace, ACycleReadingItsShapeIsOneStepAsTheSummaryCountsIt) {
+  json req{{"program", "G00 X60. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X40.\nG01 Z-20.\n"
+                       "N20 X60.\nG70 P10 Q20\nM30\n"},
+           {"name", "prog.nc"}, {"trace", true}};
+  ServeConfig lathe;
+  lathe.machine = std::string(NCURVE_SOURCE_DIR) + "/profiles/fanuc-lathe.toml";
+  Answer a = api_run(lathe, req.dump());
+  ASSERT_EQ(a.status, 200) << a.body.substr(0, 400);
+  const json answer = json::parse(a.body);
+  ASSERT_EQ(answer["summary"]["ok"], true) << answer["summary"];
+  EXPECT_EQ(answer["trace"]["blocks"]["line"], json({1, 2, 3, 7, 4, 5, 6, 8}));
+  EXPECT_EQ(answer["summary"]["blocks_executed"], 8);
+}
+
 TEST(Trace, LimitKeepsWholeBlocksAndSaysSo) {
   const std::string program = "#1=0\nWHILE [#1 LT 1000] DO1\n#1=#1+1\nEND1\nM30\n";
   const json t = traced(program, json::object(), 100)["trace"];
