@@ -1,6 +1,7 @@
 // What the interpreter emits: moves and machine events, each tied to its source block.
 #pragma once
 #include <cstdint>
+#include <span>
 
 #include "machine/profile.hpp"
 #include "nc/diagnostic.hpp"
@@ -68,6 +69,10 @@ class MoveSink {
 public:
   virtual ~MoveSink() = default;
   virtual void on_move(const Move& m) = 0;
+  // Moves in order, as on_move one by one (a writer may write them at once).
+  virtual void on_moves(std::span<const Move> moves) {
+    for (const Move& m : moves) on_move(m);
+  }
   // Before the first move and before any move whose Setup differs from the one before.
   virtual void on_setup(const Setup&) {}
   // The run stopped on this alarm after the last move: a writer marks its output as cut off.

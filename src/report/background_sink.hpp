@@ -27,7 +27,8 @@ public:
 
 private:
   struct Batch {
-    std::vector<machine::Move> moves;
+    std::vector<machine::Move> moves;  // kBatch of them, the first `count` filled
+    std::size_t count = 0;
     std::vector<std::pair<std::size_t, machine::Setup>> setups;  // before moves[first]
   };
   static constexpr std::size_t kBatch = 2048;

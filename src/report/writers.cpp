@@ -4,9 +4,10 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string_view>
@@ -77,65 +78,70 @@ CsvWriter::CsvWriter(std::ostream& out, const machine::MachineProfile& profile, 
   out_ << '\n';
 }
 
-// ",v" with v in six decimals, as std::to_chars and fmt's "{:.6f}" write it (correctly rounded, a
-// tie to even). From |v| * 10^6 where that product, within half a unit of its last place of the
-// exact one, decides the rounding beyond doubt; else (a tie or near one, a large value) by to_chars.
-void fixed6(fmt::memory_buffer& b, double v) {
-  const double a = std::fabs(v);
-  if (a < 1e9) {
-    const double y = a * 1e6;  // below 2^53: its integer part exact
-    const double whole = std::floor(y);
-    const double frac = y - whole;  // exact
-    if (std::fabs(frac - 0.5) > y * 2.3e-16 + 1e-300) {
-      const std::uint64_t n = static_cast<std::uint64_t>(whole) + (frac > 0.5 ? 1 : 0);
-      char text[32];
-      char* end = text + sizeof text;
-      char* p = end;
-      std::uint64_t fraction = n % 1000000, units = n / 1000000;
-      for (int i = 0; i < 6; ++i, fraction /= 10) *--p = static_cast<char>('0' + fraction % 10);
-      *--p = '.';
-      do {
-        *--p = static_cast<char>('0' + units % 10);
-        units /= 10;
-      } while (units);
-      if (std::signbit(v)) *--p = '-';
-      *--p = ',';
-      b.append(p, end);
-      return;
+// The longest row of the fast columns: line, kind, f and six axes; the room RecentNumbers needs.
+constexpr std::size_t kRowMost = 64 + 7 * (kFixed6Most + 32);
+constexpr std::size_t kWriteAt = 1 << 16;  // an arc's rows go out in pieces of about this size
+
+void CsvWriter::row(std::string_view line, std::string_view kind, const machine::AxisVector& p, double f) {
+  fmt::memory_buffer& b = text_;
+  const std::size_t used = b.size();
+  b.try_resize(used + kRowMost);
+  char* q = b.data() + used;
+  std::memcpy(q, line.data(), line.size());
+  q += line.size();
+  *q++ = ',';
+  std::memcpy(q, kind.data(), kind.size());
+  q += kind.size();
+  q = axis_[0].put(q, clean(frame_.x(p[0])));
+  q = axis_[1].put(q, clean(p[1]));
+  q = axis_[2].put(q, clean(p[2]));
+  q = feed_.put(q, f);
+  for (int a : extra_) q = axis_[a].put(q, clean(p[a]));
+  *q++ = '\n';
+  b.try_resize(static_cast<std::size_t>(q - b.data()));
+  if (b.size() >= kWriteAt) write();
+}
+
+// The rows in pieces under 1 KiB, which a file stream keeps in its buffer as it kept single rows (a
+// larger piece it writes at once): a small output still reaches the file only when it is committed,
+// where a failed write (a full disk) is reported with its reason.
+void CsvWriter::write() {
+  constexpr std::size_t kPiece = 1000;
+  std::streambuf& to = *out_.rdbuf();
+  for (std::size_t at = 0; at < text_.size(); at += kPiece) {
+    const auto n = static_cast<std::streamsize>(std::min(kPiece, text_.size() - at));
+    if (to.sputn(text_.data() + at, n) != n) {
+      out_.setstate(std::ios::badbit);
+      break;
     }
   }
-  char text[400];  // the widest double, -1.8e308, in fixed notation with 6 decimals
-  text[0] = ',';
-  const auto r = std::to_chars(text + 1, text + sizeof text, v, std::chars_format::fixed, 6);
-  b.append(text, r.ptr);
+  text_.clear();
 }
 
-void CsvWriter::row(std::uint32_t line, const char* kind, const machine::AxisVector& p, double f) {
-  fmt::memory_buffer& b = buffer_;  // kept: no run-time format parsing, no growth per row
-  b.clear();
-  auto it = fmt::appender(b);
-  fmt::format_to(it, FMT_COMPILE("{},{}"), line, kind);
-  fixed6(b, clean(frame_.x(p[0])));
-  fixed6(b, clean(p[1]));
-  fixed6(b, clean(p[2]));
-  fmt::format_to(it, FMT_COMPILE(",{}"), f);
-  for (int a : extra_) fixed6(b, clean(p[a]));
-  b.push_back('\n');
-  put(out_, b);
-}
-
-void CsvWriter::on_move(const Move& m) {
+void CsvWriter::rows(const Move& m) {
   if (!m.is_motion() && m.kind != MoveKind::dwell) return;
-  const char* kind = machine::to_string(m.kind);
+  const std::string_view kind = machine::to_string(m.kind);
+  const fmt::format_int number(m.line);
+  const std::string_view line(number.data(), number.size());
   if (!started_) {
-    row(m.line, kind, m.start, m.feed);
+    row(line, kind, m.start, m.feed);
     started_ = true;
   }
   if (m.kind == MoveKind::arc) {
-    machine::arc_points(m, arc_tolerance_, [&](const machine::AxisVector& p) { row(m.line, kind, p, m.feed); });
+    machine::arc_points(m, arc_tolerance_, [&](const machine::AxisVector& p) { row(line, kind, p, m.feed); });
     return;
   }
-  row(m.line, kind, m.end, m.feed);
+  row(line, kind, m.end, m.feed);
+}
+
+void CsvWriter::on_move(const Move& m) {
+  rows(m);
+  if (text_.size()) write();
+}
+
+void CsvWriter::on_moves(std::span<const Move> moves) {
+  for (const Move& m : moves) rows(m);
+  if (text_.size()) write();
 }
 
 GcodeWriter::GcodeWriter(std::ostream& out, const machine::MachineProfile& profile, const std::string& source_name)

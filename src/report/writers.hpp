@@ -4,13 +4,16 @@
 #include <nlohmann/json_fwd.hpp>
 #include <array>
 #include <ostream>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "machine/arc_points.hpp"
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
 #include "machine/profile.hpp"
+#include "report/csv_numbers.hpp"
 
 namespace ncurve::report {
 
@@ -20,9 +23,6 @@ struct OutputFrame {
   explicit OutputFrame(const machine::MachineProfile& p) : x_diameter(p.lathe() && p.diameter_x) {}
   double x(double radius_or_x) const { return x_diameter ? 2 * radius_or_x : radius_or_x; }
 };
-
-// Appends ",v" with v in six decimals, as std::to_chars(v, fixed, 6) writes it (the CSV's columns).
-void fixed6(fmt::memory_buffer& b, double v);
 
 // An alarm's calling blocks, innermost first: [{"file", "line", "block"}, ...].
 nlohmann::json called_from_json(const nc::Diagnostic& d);
@@ -47,17 +47,22 @@ class CsvWriter final : public machine::MoveSink {
 public:
   CsvWriter(std::ostream& out, const machine::MachineProfile& profile, double arc_tolerance);
   void on_move(const machine::Move& m) override;
+  void on_moves(std::span<const machine::Move> moves) override;  // their rows in one write
   // The run stopped on an alarm: a last row of kind "alarm:CODE" at the alarm's line.
   void stopped(const nc::Diagnostic& alarm) override;
 
 private:
-  void row(std::uint32_t line, const char* kind, const machine::AxisVector& p, double f);
+  void rows(const machine::Move& m);
+  void row(std::string_view line, std::string_view kind, const machine::AxisVector& p, double f);
+  void write();
   std::ostream& out_;
   OutputFrame frame_;
   double arc_tolerance_;
   bool started_ = false;
   std::vector<int> extra_;  // A, B, C of the profile: columns a, b, c after f
-  fmt::memory_buffer buffer_;  // one row, formatted with compile-time format strings
+  fmt::memory_buffer text_;  // rows not yet written to out_
+  std::array<RecentNumbers<fixed6>, machine::kAxes> axis_;  // the columns x, y, z, a, b, c
+  RecentNumbers<shortest> feed_;
 };
 
 // The program the macro stands for: every move as a plain G00/G01/G02/G03 block, absolute, in mm,
