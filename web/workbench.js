@@ -9,7 +9,7 @@
   const {el, fmt} = NcurveDom;
   const DIM = [214, 219, 226];
 
-  const W = window.ncurveWorkbench = {ready: false, runs: 0, moveCount: 0, diagnostics: [], timing: {}, pos: 0, error: null,
+  const W = window.ncurveWorkbench = {ready: false, runs: 0, refusals: 0, moveCount: 0, diagnostics: [], timing: {}, pos: 0, error: null,
     // what is shown is the run of the text in the editor, and no run is waiting
     settled: () => W.shownText === editor.text && !timer};
   let profiles = [], answer = null, conv = null, plot = null, trace = null, mainFile = 0, viewName = '';
@@ -17,7 +17,7 @@
   let tab = 'summary', name = 'program.nc', dirtyAnalysis = true;
 
   const editor = W.editor = NcurveEditor.create($('editor'), {
-    onChange() { schedule(); dirtyAnalysis = true; },
+    onChange() { schedule(); dirtyAnalysis = true; files.storeSoon(); },
     onCursorLine(line) { showLineMoves(line); },
     onGutterClick(line) {
       if (breakpoints.has(line)) breakpoints.delete(line); else breakpoints.add(line);
@@ -37,10 +37,12 @@
     if (quiet) run(); else timer = setTimeout(run, 300);
   }
   const profile = () => profiles.find((p) => p.name === $('machine').value) || {};
-  // what each run of the editor's program sends: its text and name, the machine, and while a
-  // generated cycle is in the editor the parameters gen says to set for it
-  const programRequest = () => ({program: editor.text, name, machine: $('machine').value || undefined,
-    param: name === GENERATED && genRef && Object.keys(genRef.param).length ? genRef.param : undefined});
+  // what each run of the editor's program sends: its text and name, the machine, the Settings
+  // (wb-settings.js), and while a generated cycle is in the editor the parameters gen says to set for it
+  const programRequest = () => Object.assign({program: editor.text, name, machine: $('machine').value || undefined},
+    settings.request(name === GENERATED && genRef ? Object.entries(genRef.param).map(([k, v]) => `${k}=${v}`) : []));
+  // the Settings' key of the machine chosen: a shipped profile's name, '' (the server's), a file's name
+  const machineKey = () => (profile().file ? 'file:' + profile().file : $('machine').value);
   // what the server runs a request naming no machine on, when that is not a shipped profile
   // (serve --machine FILE, or no --machine: the factory-parameter mill of `ncurve run`): the first
   // choice, sent as no "machine" at all
@@ -81,10 +83,12 @@
       return;
     }
     if (my !== seq) return;
-    if (!j.summary) { status(`${r.status}: ${j.error}`, 'alarm'); return; }
+    if (!j.summary) { settings.refused(j.error); status(`${r.status}: ${j.error}`, 'alarm'); W.refusals++; return; }
+    settings.refused(null);
     answer = j;
     answer.program = request.program;
     if (profile().file && j.profile) Object.assign(profile(), j.profile);  // a file's kind, as the server read it
+    settings.showProfile(profile(), machineKey());
     const wantTrace = $('trace').checked;
     show(t0, wantTrace);
     if (!wantTrace) return;
@@ -183,6 +187,7 @@
     W.summary = s;
     W.ready = true;
     const result = s.ok ? 'completed' : s.alarm ? `ALARM ${s.alarm.code} line ${s.alarm.line}` : 'stopped';
+    W.name = name;
     if (s.none) status('no program', '');
     else status(`${result} · ${s.motions} motions · ${fmt(W.timing.run_to_drawn_ms, 0)} ms`, s.ok ? 'ok' : 'alarm');
     if (tab === 'analyze') analyze();
@@ -458,7 +463,7 @@
   function setTab(t) {
     tab = t;
     for (const b of document.querySelectorAll('.wb-tabs button')) b.classList.toggle('on', b.dataset.tab === t);
-    for (const p of ['summary', 'debug', 'analyze', 'gen']) $('tab-' + p).hidden = p !== t;
+    for (const p of ['summary', 'debug', 'analyze', 'gen', 'settings']) $('tab-' + p).hidden = p !== t;
     if (!plot) return;
     if (t === 'debug') goTo(W.pos);
     else { colour.apply(); plot.setTool(null); editor.setCurrentLine(0); }
@@ -476,7 +481,7 @@
     const a = W.analysis = await r.json();
     box.textContent = '';
     const fact = (k, v) => box.append(el('dt', '', k), el('dd', '', v));
-    if (a.error) { fact('error', a.error); return; }
+    if (a.error) { settings.refused(a.error); fact('error', a.error); return; }
     const s = (v) => (v === undefined ? '—' : `${fmt(v, 2)} s`);
     fact('cycle time', `${s(a.cycle_time_s)}${a.ok ? '' : ' (up to the alarm)'}`);
     fact('motion', s(a.motion_s));
@@ -488,31 +493,15 @@
     fact('blocks', `${a.nc_blocks} NC blocks, ${a.macro_statements} macro statements, ${a.starved_blocks} starved`);
   }
   $('analyze').onclick = analyze;
-  // the curves of `ncurve gen --list` (GET /api/curves), then an expression; a curve chosen fills
-  // the parameters with its defaults
-  let curves = [];
-  function chooseCurve() {
-    const c = curves.find((k) => k.name === $('gen-curve').value);
-    $('gen-expr').hidden = !!c;
-    $('gen-params').value = '{' + (c ? c.params : []).map((p) => `${JSON.stringify(p.name)}: ${p.value}`).join(', ') + '}';
-    $('gen-doc').textContent = !c ? 'x(t), y(t), z(t) (z 0 if empty) over t from .. to, in the macro language: SIN COS TAN ATAN ' +
-      '... in degrees, [ ] or ( ); names other than t are parameters, their values in Parameters'
-      : `${c.doc}; t ${c.from} to ${c.to} (${c.t_doc})${c.lathe ? '; a lathe curve: choose a lathe profile' : ''}` +
-        c.params.map((p) => `; ${p.name}: ${p.doc}`).join('');
-    $('gen-error').textContent = '';
-  }
-  $('gen-curve').onchange = chooseCurve;
+  // the curves of `ncurve gen --list` (GET /api/curves) and their fields (wb-gen.js), then an expression
+  const genFields = NcurveGen.create();
   $('gen').onclick = async () => {
     const fail = (text) => { $('gen-error').textContent = text; $('gen-out').textContent = ''; };
     $('gen-error').textContent = '';
     $('gen-warnings').textContent = '';
-    let params;
-    try { params = JSON.parse($('gen-params').value || '{}'); } catch (e) { fail('parameters: ' + e.message); return; }
-    const machine = $('machine').value, curve = $('gen-curve').value;
-    const request = {curve, params, tol: +$('gen-tol').value, form: $('gen-form').value, machine: machine || undefined};
-    if (curve === 'expr')
-      Object.assign(request, {x: $('gen-x').value, y: $('gen-y').value, z: $('gen-z').value || undefined,
-        t: `${$('gen-from').value.trim()}:${$('gen-to').value.trim()}`});
+    const machine = $('machine').value;
+    let request;
+    try { request = genFields.request(machine); } catch (e) { fail(e.message); return; }
     let r, g;
     try {
       r = await fetch('/api/gen', {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(request)});
@@ -537,6 +526,7 @@
     const box = $('file');
     if (![...box.options].some((o) => o.value === GEN_FILE)) box.add(new Option(`${GENERATED} (generated)`, GEN_FILE), 0);
     box.value = GEN_FILE;
+    loads++;
     name = GENERATED;
     editor.setText(genRef.text);
     genRef.text = editor.text;
@@ -559,7 +549,7 @@
   const FROM_FILE = '\u0000file';
   let machineShown = '';
   $('machine').onchange = () => {
-    if ($('machine').value !== FROM_FILE) { machineShown = $('machine').value; run(); return; }
+    if ($('machine').value !== FROM_FILE) { machineShown = $('machine').value; machineChanged(); return; }
     $('machine').value = machineShown;  // until a file is read
     $('machine-file').value = '';
     $('machine-file').click();
@@ -569,6 +559,16 @@
     if (!f) return;
     const text = await f.text();
     if (!text.trim()) { status(`${f.name}: the file is empty`, 'alarm'); return; }
+    useMachineFile(f.name, text);
+    machineChanged();
+  };
+  function machineChanged() {
+    settings.showProfile(profile(), machineKey());
+    files.store();
+    run();
+  }
+  // a profile's TOML text from a file: its own entry in the selector, chosen
+  function useMachineFile(fileName, text) {
     const box = $('machine');
     let o = [...box.options].find((x) => x.dataset.file);
     if (!o) {
@@ -576,28 +576,46 @@
       o.dataset.file = '1';
       box.add(o, box.options.length - 1);
     }
-    o.text = `${f.name} (file)`;
+    o.text = `${fileName} (file)`;
     o.value = text;
-    profiles = profiles.filter((p) => !p.file).concat([{name: text, title: f.name, file: f.name}]);
+    profiles = profiles.filter((p) => !p.file).concat([{name: text, title: fileName, file: fileName}]);
     box.value = machineShown = text;
-    W.machineFile = f.name;
-    run();
-  };
+    W.machineFile = fileName;
+  }
   $('trace').onchange = run;
   // the shipped example of a server given no FILE: a lathe's when its default machine is a lathe
   let example = {name: 'spiral.nc', url: '/assets/example.nc'};
   let fileNames = [];  // GET /api/files: the programs and their setups
+  // (a file that comes after another program was loaded, new or pasted is not shown)
+  let loads = 0;
   async function open(fileName) {
+    const my = ++loads;
     const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : example.url);
-    name = fileName || example.name;
+    const text = await r.text();
+    if (my !== loads) return;
+    await load(text, fileName || example.name);
+    files.store();
+  }
+  // a program into the editor, named so (in the diagnostics), and run
+  function load(text, programName) {
+    loads++;
+    name = programName;
     for (const id of ['gen-error', 'gen-warnings', 'gen-out']) $(id).textContent = '';  // of the generated program
-    editor.setText(await r.text());
+    editor.setText(text);
     breakpoints.clear();
     editor.setBreakpoints(breakpoints);
     W.pos = 0;
-    await run();
+    return run();
   }
+  // the files (wb-files.js): save, open, new, pasted, kept across a reload
+  const files = W.files = NcurveFiles.create({editor, menu: $('file'), name: () => name, load,
+    rename(n) { loads++; name = n; },
+    machine: () => ({value: $('machine').value, file: profile().file ? {name: profile().file, text: $('machine').value} : null})});
+  // the Settings tab (wb-settings.js): the command line's run options, with every run
+  const settings = W.settings = NcurveSettings.create({note: $('settings-note'), onChange() { dirtyAnalysis = true; run(); }});
+  $('settings-note').onclick = () => setTab('settings');
   $('file').onchange = () => {
+    if ($('file').value === files.LOCAL) { files.choose(); return; }
     if ($('file').value !== GEN_FILE) { open($('file').value); return; }
     openGenerated();
     run();
@@ -605,22 +623,26 @@
   W.open = open;
   (async () => {
     try {
-      const [pj, fj, cj] = await Promise.all(['/api/profiles', '/api/files', '/api/curves'].map((u) => fetch(u).then((r) => r.json())));
+      const [pj, fj, cj, lj] = await Promise.all(['/api/profiles', '/api/files', '/api/curves', '/api/libs'].map((u) => fetch(u).then((r) => r.json())));
       profiles = pj.profiles;
       for (const p of profiles) $('machine').add(new Option(`${p.name} — ${p.title}`, p.name, false, p.name === pj.default));
       if (!profiles.some((p) => p.name === pj.default)) serverProfile(pj.server);
       $('machine').add(new Option('from a file…', FROM_FILE));
+      // the program and machine this browser had (wb-files.js), else the server's first file
+      const saved = files.restored();
+      if (saved && saved.machineFile) useMachineFile(saved.machineFile.name, saved.machineFile.text);
+      else if (saved && [...$('machine').options].some((o) => o.value === saved.machine && o.value !== FROM_FILE)) $('machine').value = saved.machine;
       machineShown = $('machine').value;
-      curves = cj.curves;
-      for (const c of curves) $('gen-curve').add(new Option(c.name, c.name, false, c.name === 'ellipse'));
-      $('gen-curve').add(new Option('expression x(t), y(t), z(t)', 'expr'));
-      chooseCurve();
+      genFields.setCurves(cj);
+      settings.setLibs(lj.libs);
+      settings.showProfile(profile(), machineKey());
       fileNames = fj.files.map((f) => f.name);
       for (const f of fj.files) if (!f.name.endsWith('.setup.toml')) $('file').add(new Option(f.name, f.name));
       if (profile().lathe) example = {name: 'lathe-hyperbola.nc', url: '/assets/example-lathe.nc'};
       const programs = fileNames.filter((n) => !n.endsWith('.setup.toml'));
       if (!programs.length) $('file').add(new Option(`${example.name} (example)`, ''));
-      await open(programs.length ? programs[0] : '');
+      if (saved && typeof saved.text === 'string') await files.restore(saved, programs.length ? programs : ['']);
+      else await open(programs.length ? programs[0] : '');
     } catch (e) {
       W.error = String(e);
       status(`cannot start: ${e.message}`, 'alarm');

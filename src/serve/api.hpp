@@ -56,6 +56,8 @@ Answer api_gen(const ServeConfig& config, const std::string& body);
 Answer api_profiles(const ServeConfig& config);
 // The curves of `ncurve gen --list` (geom::catalogue()) with their parameters' defaults.
 Answer api_curves();
+// The server's --lib folders, which a request's "lib" chooses among.
+Answer api_libs(const ServeConfig& config);
 Answer api_files(const ServeConfig& config);
 Answer api_file(const ServeConfig& config, const std::string& name);
 // The workbench page at GET / and its scripts, styles and example at GET /assets/NAME.

@@ -15,6 +15,7 @@
 #include "report/web_assets.hpp"
 #include "serve/api.hpp"
 #include "serve/request.hpp"
+#include "serve/run_settings.hpp"
 
 namespace ncurve::serve {
 
@@ -40,7 +41,8 @@ json profile_json(const machine::MachineProfile& profile) {
               {"diameter", profile.lathe() && profile.diameter_x},
               {"axes", profile.axes},
               {"offset_memory", std::string(1, static_cast<char>('A' + static_cast<int>(profile.offset_memory)))},
-              {"rotary", rotary_axes(profile)}};
+              {"rotary", rotary_axes(profile)},
+              {"tool_offsets", tool_offsets_json(profile)}};
 }
 
 Answer api_profiles(const ServeConfig& config) {
@@ -116,7 +118,7 @@ Answer page() { return asset("workbench.html"); }
 Answer asset(const std::string& name) {
   // the workbench's files and what they need, compiled in (cmake/embed_files.cmake)
   static constexpr std::string_view kServed[] = {"workbench.html", "workbench.css", "workbench.js", "wb-editor.js",
-                                                 "wb-debug.js", "wb-colour.js", "wb-answer.js", "wb-dom.js", "wb-part.js", "wb-summary.js", "backplot-geometry.js", "backplot-axes.js", "backplot-part.js", "backplot.js", "backplot.css", "three.min.js",
+                                                 "wb-debug.js", "wb-colour.js", "wb-answer.js", "wb-dom.js", "wb-part.js", "wb-summary.js", "wb-files.js", "wb-settings.js", "wb-gen.js", "backplot-geometry.js", "backplot-axes.js", "backplot-part.js", "backplot.js", "backplot.css", "three.min.js",
                                                  "OrbitControls.js", "example.nc", "example-lathe.nc", "example.setup.toml"};
   for (std::string_view served : kServed) {
     if (served != name) continue;

@@ -8,6 +8,7 @@
 
 #include "app/shipped.hpp"
 #include "nc/program.hpp"
+#include "serve/run_settings.hpp"
 
 namespace ncurve::serve {
 
@@ -110,7 +111,7 @@ app::RunInputs run_inputs(const ServeConfig& config, const json& j) {
   in.program = get_string(j, "name").value_or("program.nc");
   if (in.program.empty() || in.program == "-") throw ApiError(400, "\"name\" names the program's file, e.g. prog.nc");
   choose_profile(config, j, in);
-  in.libs = config.libs;
+  in.libs = chosen_libs(config, j);
   in.max_steps = config.max_steps;
   in.max_seconds = config.max_seconds;
   if (auto steps = get_number(j, "max_steps")) {
@@ -125,10 +126,24 @@ app::RunInputs run_inputs(const ServeConfig& config, const json& j) {
     in.max_seconds = *seconds;
   }
   in.nose_centre = get_bool(j, "nose_centre", false);
+  // an object {"#100": 5}, or the command line's values ["#100=5"] (its message for a bad one)
   auto pairs = [&](const char* key, auto add) {
     auto it = j.find(key);
     if (it == j.end() || it->is_null()) return;
-    if (!it->is_object()) throw ApiError(400, fmt::format("\"{}\" must be an object, e.g. {{\"#100\": 5}}", key));
+    const bool set = std::string_view(key) == "set";
+    if (it->is_array()) {
+      for (const auto& v : *it) {
+        if (!v.is_string())
+          throw ApiError(400, fmt::format("\"{}\": each entry is a string as --{} takes it, e.g. \"{}\"", key, key,
+                                          set ? "#100=5" : "6050=102"));
+        (set ? in.sets : in.params).push_back(v.template get<std::string>());
+      }
+      return;
+    }
+    if (!it->is_object())
+      throw ApiError(400, fmt::format("\"{}\" must be an object, e.g. {{\"{}\": {}}}, or a list of --{} values, e.g. "
+                                      "[\"{}\"]",
+                                      key, set ? "#100" : "6050", set ? 5 : 102, key, set ? "#100=5" : "6050=102"));
     for (const auto& [k, v] : it->items()) {
       if (!v.is_number()) throw ApiError(400, fmt::format("\"{}\": the value of \"{}\" must be a number", key, k));
       add(k, v.template get<double>());

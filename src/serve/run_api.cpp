@@ -15,6 +15,7 @@
 #include "serve/api.hpp"
 #include "serve/move_columns.hpp"
 #include "serve/request.hpp"
+#include "serve/run_settings.hpp"
 #include "serve/trace_json.hpp"
 
 namespace ncurve::serve {
@@ -72,7 +73,7 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   const json j = parse_body(body);
   check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "moves",
                  "trace", "trace_limit", "format", "verify", "setup", "setup_name", "resolution", "cells", "cut_moves",
-                 "curve", "tol", "wall"},
+                 "curve", "tol", "wall", "lib", "tool_offsets"},
              "POST /api/run");
   const app::RunInputs in = run_inputs(config, j);
   const bool want_moves = get_bool(j, "moves", true);
@@ -87,6 +88,9 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   }
   app::RunSetup setup = prepare(in);
   setup.options.cancel = cancel;
+  // the profile as its file gives it; the run on it with the request's tool offsets
+  const json profile = profile_json(setup.profile);
+  apply_tool_offsets(j, setup.profile);
   // the part: the setup's stock (or the default box) cut by the moves, its findings among the warnings
   app::VerifyArgs va;
   va.verify = get_bool(j, "verify", false);
@@ -165,7 +169,7 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   fmt::format_to(it, "\"summary\":{},\"diagnostics\":{}",
                  report::summary_object(rep).dump(-1, ' ', false, json::error_handler_t::replace),
                  diagnostics(rep).dump(-1, ' ', false, json::error_handler_t::replace));
-  fmt::format_to(it, ",\"profile\":{}", profile_json(setup.profile).dump(-1, ' ', false, json::error_handler_t::replace));
+  fmt::format_to(it, ",\"profile\":{}", profile.dump(-1, ' ', false, json::error_handler_t::replace));
   if (moves) {
     b.append(std::string_view(",\"moves\":"));
     moves->write_json(columns);

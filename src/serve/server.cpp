@@ -63,7 +63,7 @@ const char* reason(int status) {
   switch (status) {
     case 400: return "bad request";
     case 404: return "no such page or endpoint (the API: POST /api/run, /api/analyze, /api/gen; GET /api/profiles, "
-                     "/api/curves, /api/files)";
+                     "/api/curves, /api/libs, /api/files)";
     case 405: return "method not allowed";
     case 413: return "the request body is too large";
     default: return "the request failed";
@@ -116,6 +116,9 @@ Server::Server(ServeConfig config)
     answer(res, [&] { return api_profiles(c); });
   });
   s.Get("/api/curves", [](const httplib::Request&, httplib::Response& res) { answer(res, [] { return api_curves(); }); });
+  s.Get("/api/libs", [&c](const httplib::Request&, httplib::Response& res) {
+    answer(res, [&] { return api_libs(c); });
+  });
   s.Get("/api/files", [&c](const httplib::Request&, httplib::Response& res) {
     answer(res, [&] { return api_files(c); });
   });
@@ -136,7 +139,7 @@ Server::Server(ServeConfig config)
     s.Patch(path, refuse("POST"));
     s.Delete(path, refuse("POST"));
   }
-  for (const char* path : {"/", R"(/assets/([A-Za-z0-9._-]+))", "/api/profiles", "/api/curves", "/api/files",
+  for (const char* path : {"/", R"(/assets/([A-Za-z0-9._-]+))", "/api/profiles", "/api/curves", "/api/libs", "/api/files",
                            R"(/api/files/([^/]+))"}) {
     s.Post(path, refuse("GET, HEAD"));
     s.Put(path, refuse("GET, HEAD"));

@@ -14,6 +14,7 @@
 #include "report/summary.hpp"
 #include "serve/api.hpp"
 #include "serve/request.hpp"
+#include "serve/run_settings.hpp"
 #include "serve/tool_columns.hpp"
 
 namespace ncurve::serve {
@@ -36,7 +37,9 @@ Answer api_curves() {
     list.push_back({{"name", c.name}, {"doc", c.doc}, {"x", c.x}, {"y", c.y}, {"z", c.z}, {"from", c.from},
                     {"to", c.to}, {"t_doc", c.t_doc}, {"lathe", c.lathe}, {"params", params}});
   }
-  return Answer{200, dump(json{{"curves", list}})};
+  // what `ncurve gen` takes without --form and --tol
+  const app::GenArgs defaults;
+  return Answer{200, dump(json{{"curves", list}, {"default_form", defaults.form}, {"default_tol", defaults.tol}})};
 }
 
 Answer api_gen(const ServeConfig& config, const std::string& body) {
@@ -131,7 +134,7 @@ Answer api_gen(const ServeConfig& config, const std::string& body) {
 Answer api_analyze(const ServeConfig& config, const std::string& body, const std::atomic<bool>* cancel) {
   const json j = parse_body(body);
   check_keys(j, {"program", "name", "machine", "set", "param", "max_steps", "max_seconds", "nose_centre", "servo",
-                 "moves"},
+                 "moves", "lib", "tool_offsets"},
              "POST /api/analyze");
   const app::RunInputs in = run_inputs(config, j);
   const bool servo = get_bool(j, "servo", false);
@@ -139,6 +142,7 @@ Answer api_analyze(const ServeConfig& config, const std::string& body, const std
   if (get_bool(j, "moves", false)) feeds.emplace(config.max_moves);
   app::RunSetup setup = prepare(in);
   setup.options.cancel = cancel;
+  apply_tool_offsets(j, setup.profile);
   const machine::MachineProfile& profile = setup.profile;
   std::optional<motion::ServoSim> sim;
   if (servo) sim.emplace(profile);

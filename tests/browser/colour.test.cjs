@@ -60,7 +60,8 @@ fs.writeFileSync(zigzag, ['%', 'O0001', 'G90 G17 G21', 'G00 X0. Y0. Z5.', 'G01 Z
     // generate an ellipse with G01 lines: the curve in grey, the moves coloured by deviation
     await page.click('button[data-tab="gen"]');
     await page.selectOption('#gen-curve', 'ellipse');
-    await page.fill('#gen-params', '{"a": 20, "b": 10}');
+    await page.fill('#gen-fields input[data-param="a"]', '20');
+    await page.fill('#gen-fields input[data-param="b"]', '10');
     await page.fill('#gen-tol', '0.005');
     await page.selectOption('#gen-form', 'expanded');
     const runs = await page.evaluate(() => ncurveWorkbench.runs);

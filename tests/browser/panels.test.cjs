@@ -54,7 +54,7 @@ function genList() {
           `the curves of gen --list (${listed.map((c) => c.name).join(' ')}) and expr: ${options.join(' ')}`);
     for (const c of listed) {
       await page.selectOption('#gen-curve', c.name);
-      const got = JSON.parse(await page.inputValue('#gen-params'));
+      const got = await page.evaluate(() => Object.fromEntries([...document.querySelectorAll('#gen-fields input')].map((i) => [i.dataset.param, Number(i.value)])));
       const same = Object.keys(got).join() === Object.keys(c.params).join() &&
         Object.keys(got).every((k) => Math.abs(got[k] - c.params[k]) <= 1e-9 * Math.max(1, Math.abs(c.params[k])));
       check(same, `${c.name}: its defaults filled in (${JSON.stringify(got)}; gen --list ${JSON.stringify(c.params)})`);
@@ -64,7 +64,8 @@ function genList() {
     // an expression: a circle of radius 10 about the origin, t in degrees
     const tol = 0.01;
     await page.selectOption('#gen-curve', 'expr');
-    check(await page.isVisible('#gen-expr') && await page.inputValue('#gen-params') === '{}', 'expr: its fields shown, no parameters');
+    check(await page.isVisible('#gen-expr') && (await page.$$('#gen-fields input')).length === 0 && await page.inputValue('#gen-params') === '',
+          'expr: its fields shown, no parameters');
     await page.fill('#gen-x', '10*COS[t]');
     await page.fill('#gen-y', '10*SIN[t]');
     await page.fill('#gen-from', '0');
