@@ -17,6 +17,10 @@ constexpr double kEps = 1e-9;
 
 V2 plane_point(const AxisVector& v, const PlaneAxes& pa) { return {v[pa.p], v[pa.q]}; }
 
+// The unit tangent of a line from s to e, and of an arc about c turning dir (+1 counter-clockwise) at p.
+V2 line_tangent(V2 s, V2 e) { return sqrt_unit(e - s); }
+V2 arc_tangent(V2 p, V2 c, int dir) { return static_cast<double>(dir) * sqrt_unit(perp(p - c)); }
+
 }  // namespace
 
 TipDirection tip_direction(int tip) {
@@ -26,10 +30,7 @@ TipDirection tip_direction(int tip) {
   return {kX[tip], kZ[tip]};
 }
 
-V2 RadiusCompensation::Elem::tangent_at(V2 p) const {
-  if (!arc) return sqrt_unit(e - s);
-  return static_cast<double>(dir) * sqrt_unit(perp(p - c));
-}
+V2 RadiusCompensation::Elem::tangent_at(V2 p) const { return arc ? arc_tangent(p, c, dir) : line_tangent(s, e); }
 
 RadiusCompensation::Elem RadiusCompensation::make(const Move& m, int side, double radius) const {
   Elem el;
@@ -37,24 +38,32 @@ RadiusCompensation::Elem RadiusCompensation::make(const Move& m, int side, doubl
   return el;
 }
 
-// Sets every field of el, a slot that may hold an earlier element, for the move m.
+// Sets every field of el, a slot that may hold an earlier element, for the move m; the geometry
+// from the move's values at hand, not read back from the slot (as set_tangents() would).
 RadiusCompensation::Elem& RadiusCompensation::make_into(Elem& el, const Move& m, int side, double radius) const {
   el.move = m;
-  el.arc = m.kind == MoveKind::arc;
-  el.s = plane_point(m.start, pa_);
-  el.e = plane_point(m.end, pa_);
-  el.c = {};
-  el.R = 0;
-  el.dir = 1;
+  const bool arc = m.kind == MoveKind::arc;
+  const V2 s = plane_point(m.start, pa_), e = plane_point(m.end, pa_);
+  el.arc = arc;
+  el.s = s;
+  el.e = e;
   el.side = side;
   el.r = radius;
   el.cancel_direction.reset();
-  if (el.arc) {
-    el.c = {m.center[pa_.p], m.center[pa_.q]};
-    el.R = sqrt_norm(el.s - el.c);
-    el.dir = m.sweep >= 0 ? 1 : -1;
+  if (arc) {
+    const V2 c = {m.center[pa_.p], m.center[pa_.q]};
+    const int dir = m.sweep >= 0 ? 1 : -1;
+    el.c = c;
+    el.R = sqrt_norm(s - c);
+    el.dir = dir;
+    el.ts = arc_tangent(s, c, dir);
+    el.te = arc_tangent(e, c, dir);
+  } else {
+    el.c = {};
+    el.R = 0;
+    el.dir = 1;
+    el.ts = el.te = line_tangent(s, e);
   }
-  el.set_tangents();
   return el;
 }
 

@@ -83,7 +83,7 @@ private:
     int side = 0;
     double r = 0;
     std::optional<V2> cancel_direction;
-    V2 ts, te;  // the unit tangents at s and at e, set by set_tangents() once the geometry is
+    V2 ts, te;  // the unit tangents at s and at e: set by make_into(), or by set_tangents() after a change
     V2 tangent_at(V2 p) const;
     void set_tangents() {
       ts = tangent_at(s);
