@@ -4,8 +4,8 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <optional>
-#include <vector>
 
 namespace ncurve::geom {
 
@@ -26,6 +26,22 @@ inline double norm(V2 a) { return std::hypot(a.x, a.y); }
 // The length as sqrt(x x + y y): it may differ from norm() in the last bit; cutter compensation's
 // figures are defined with it.
 inline double sqrt_norm(V2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+
+// sqrt_norm(a) < len, sqrt_norm(a) > len (len > 0) and sqrt_norm(a) < sqrt_norm(b), without the
+// square roots where the squares differ by more than a millionth: there their rounding cannot
+// change the answer, so the answer is sqrt_norm's, to the last bit.
+inline bool sqrt_norm_below(V2 a, double len) {
+  const double sq = a.x * a.x + a.y * a.y, l2 = len * len;
+  if (sq < 0.999999 * l2) return true;
+  if (sq > 1.000001 * l2) return false;
+  return std::sqrt(sq) < len;
+}
+inline bool sqrt_norm_less(V2 a, V2 b) {
+  const double sa = a.x * a.x + a.y * a.y, sb = b.x * b.x + b.y * b.y;
+  if (sa < 0.999999 * sb) return true;
+  if (sa >= sb) return false;
+  return std::sqrt(sa) < std::sqrt(sb);
+}
 
 // a divided by its length (the zero vector stays zero); sqrt_unit by sqrt_norm.
 inline V2 unit(V2 a) {
@@ -51,21 +67,33 @@ inline std::optional<V2> line_line(V2 p1, V2 d1, V2 p2, V2 d2) {
   return p1 + u * d1;
 }
 
+// The meeting points of a line or circle with a circle: none or two (a touching pair twice), held
+// in place (no heap: compensation asks for them at every corner).
+struct MeetingPoints {
+  V2 p[2];
+  int n = 0;
+  std::size_t size() const { return static_cast<std::size_t>(n); }
+  bool empty() const { return n == 0; }
+  const V2& operator[](std::size_t i) const { return p[i]; }
+  const V2* begin() const { return p; }
+  const V2* end() const { return p + n; }
+};
+
 // The points of the line a + u d on the circle (c, R), in growing u (a tangent line gives its point
 // twice); none when the line misses the circle by more than rounding, or d is zero.
-inline std::vector<V2> line_circle(V2 a, V2 d, V2 c, double R) {
+inline MeetingPoints line_circle(V2 a, V2 d, V2 c, double R) {
   const V2 f = a - c;
   const double A = dot(d, d), B = 2 * dot(f, d), C = dot(f, f) - R * R;
   const double disc = B * B - 4 * A * C;
   if (disc < -1e-12 * std::max(1.0, R * R) || A == 0) return {};
   const double root = std::sqrt(std::max(0.0, disc));
-  return {a + ((-B - root) / (2 * A)) * d, a + ((-B + root) / (2 * A)) * d};
+  return {{a + ((-B - root) / (2 * A)) * d, a + ((-B + root) / (2 * A)) * d}, 2};
 }
 
 // The points where circles (c1, r1) and (c2, r2) meet, the one left of the way from c1 to c2 first
 // (touching circles give their point twice); none for concentric circles (centres within 1e-9) or
 // circles apart or nested by more than 1e-9.
-inline std::vector<V2> circle_circle(V2 c1, double r1, V2 c2, double r2) {
+inline MeetingPoints circle_circle(V2 c1, double r1, V2 c2, double r2) {
   const V2 d = c2 - c1;
   const double D = sqrt_norm(d);
   if (D < 1e-9 || D > r1 + r2 + 1e-9 || D < std::fabs(r1 - r2) - 1e-9) return {};
@@ -73,7 +101,7 @@ inline std::vector<V2> circle_circle(V2 c1, double r1, V2 c2, double r2) {
   const double h = std::sqrt(std::max(0.0, r1 * r1 - a * a));
   const V2 u = (1 / D) * d;
   const V2 m = c1 + a * u;
-  return {m + h * perp(u), m - h * perp(u)};
+  return {{m + h * perp(u), m - h * perp(u)}, 2};
 }
 
 }  // namespace ncurve::geom

@@ -14,6 +14,14 @@ namespace ncurve::machine {
 namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
+// Whether an arc from (sx, sy) to (ex, ey) about its centre, of less than a quarter turn, stays in
+// one quadrant with both ends clear of the axes by a millionth of a radian and more: it passes no
+// quadrant point, and the angles' test, whose rounding is far smaller than that, would find none.
+bool inside_one_quadrant(double sx, double sy, double ex, double ey, double sweep) {
+  auto clear = [](double x, double y) { return std::fabs(x) > 1e-6 * std::fabs(y) && std::fabs(y) > 1e-6 * std::fabs(x); };
+  return std::fabs(sweep) < 1.5 && clear(sx, sy) && clear(ex, ey) && (sx > 0) == (ex > 0) && (sy > 0) == (ey > 0);
+}
+
 }  // namespace
 
 PlaneAxes plane_axes(int plane) {
@@ -313,14 +321,15 @@ void Executor::arc(const AxisVector& target, bool clockwise) {
   m.sweep = sweep;
   double planar = std::fabs(sweep) * (rs + re) / 2;
   double dn = target[pa.n] - coords_.pos[pa.n];
-  m.length = std::hypot(planar, dn);
+  m.length = dn == 0 ? std::fabs(planar) : std::hypot(planar, dn);  // hypot(x, 0) is |x|, exactly
   m.feed = feed_;
   // Helical interpolation: F is the feed along the arc in the plane, the linear axis following at
   // F x its travel / the arc's length (the manuals' helical interpolation; parameter HTG = 0, factory)
   m.seconds = arc_feed_seconds(m, planar);
   clamp_cutting_feed(m, planar);
   // extents: the quadrant points the arc passes (in G12.1/G07.1 the machine's moves give them)
-  for (int k = 0; k < 4 && !developed_; ++k) {
+  const bool no_quadrant_point = inside_one_quadrant(sp - cp, sq - cq, ep - cp, eq - cq, sweep);
+  for (int k = 0; k < 4 && !developed_ && !no_quadrant_point; ++k) {
     double ang = k * std::numbers::pi / 2;
     double rel = std::remainder(ang - a0, kTwoPi);
     double along = sweep > 0 ? (rel < 0 ? rel + kTwoPi : rel) : (rel > 0 ? kTwoPi - rel : -rel);

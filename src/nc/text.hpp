@@ -30,7 +30,7 @@ inline double scaled_decimal(std::int64_t mantissa, int fraction) {
     v /= 1e22;
     fraction -= 22;
   }
-  return v / kPow10[fraction];
+  return fraction == 0 ? v : v / kPow10[fraction];  // v / 1 is v
 }
 
 struct SyntaxError {

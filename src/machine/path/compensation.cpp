@@ -17,6 +17,10 @@ constexpr double kEps = 1e-9;
 
 V2 plane_point(const AxisVector& v, const PlaneAxes& pa) { return {v[pa.p], v[pa.q]}; }
 
+// The unit tangent of a line from s to e, and of an arc about c turning dir (+1 counter-clockwise) at p.
+V2 line_tangent(V2 s, V2 e) { return sqrt_unit(e - s); }
+V2 arc_tangent(V2 p, V2 c, int dir) { return static_cast<double>(dir) * sqrt_unit(perp(p - c)); }
+
 }  // namespace
 
 TipDirection tip_direction(int tip) {
@@ -26,23 +30,39 @@ TipDirection tip_direction(int tip) {
   return {kX[tip], kZ[tip]};
 }
 
-V2 RadiusCompensation::Elem::tangent_at(V2 p) const {
-  if (!arc) return sqrt_unit(e - s);
-  return static_cast<double>(dir) * sqrt_unit(perp(p - c));
-}
+V2 RadiusCompensation::Elem::tangent_at(V2 p) const { return arc ? arc_tangent(p, c, dir) : line_tangent(s, e); }
 
 RadiusCompensation::Elem RadiusCompensation::make(const Move& m, int side, double radius) const {
   Elem el;
+  make_into(el, m, side, radius);
+  return el;
+}
+
+// Sets every field of el, a slot that may hold an earlier element, for the move m; the geometry
+// from the move's values at hand, not read back from the slot (as set_tangents() would).
+RadiusCompensation::Elem& RadiusCompensation::make_into(Elem& el, const Move& m, int side, double radius) const {
   el.move = m;
-  el.arc = m.kind == MoveKind::arc;
-  el.s = plane_point(m.start, pa_);
-  el.e = plane_point(m.end, pa_);
+  const bool arc = m.kind == MoveKind::arc;
+  const V2 s = plane_point(m.start, pa_), e = plane_point(m.end, pa_);
+  el.arc = arc;
+  el.s = s;
+  el.e = e;
   el.side = side;
   el.r = radius;
-  if (el.arc) {
-    el.c = {m.center[pa_.p], m.center[pa_.q]};
-    el.R = sqrt_norm(el.s - el.c);
-    el.dir = m.sweep >= 0 ? 1 : -1;
+  el.cancel_direction.reset();
+  if (arc) {
+    const V2 c = {m.center[pa_.p], m.center[pa_.q]};
+    const int dir = m.sweep >= 0 ? 1 : -1;
+    el.c = c;
+    el.R = sqrt_norm(s - c);
+    el.dir = dir;
+    el.ts = arc_tangent(s, c, dir);
+    el.te = arc_tangent(e, c, dir);
+  } else {
+    el.c = {};
+    el.R = 0;
+    el.dir = 1;
+    el.ts = el.te = line_tangent(s, e);
   }
   return el;
 }
@@ -55,7 +75,7 @@ std::optional<V2> RadiusCompensation::intersect(const Elem& a, int side_a, doubl
     return std::pair<V2, V2>{el.s + (side * r) * perp(d), d};
   };
   auto offset_radius = [](const Elem& el, int side, double r) { return el.R - side * el.dir * r; };
-  std::vector<V2> candidates;
+  geom::MeetingPoints candidates;
   if (!a.arc && !b.arc) {
     auto [p1, d1] = offset_line(a, side_a, ra);
     auto [p2, d2] = offset_line(b, side_b, rb);
@@ -76,7 +96,7 @@ std::optional<V2> RadiusCompensation::intersect(const Elem& a, int side_a, doubl
   }
   if (candidates.empty()) return std::nullopt;
   return *std::min_element(candidates.begin(), candidates.end(),
-                           [&](V2 x, V2 y) { return sqrt_norm(x - near) < sqrt_norm(y - near); });
+                           [&](V2 x, V2 y) { return sqrt_norm_less(x - near, y - near); });
 }
 
 RadiusCompensation::Corner RadiusCompensation::corner(const Elem& a, const Elem& b, Joint joint) const {
@@ -140,7 +160,7 @@ RadiusCompensation::Corner RadiusCompensation::corner(const Elem& a, const Elem&
 }
 
 void RadiusCompensation::check_interference(const Elem& e, V2 from, V2 to) {
-  if (e.arc && e.side != 0 && (sqrt_norm(from - e.c) < 1e-6 || sqrt_norm(to - e.c) < 1e-6))
+  if (e.arc && e.side != 0 && (sqrt_norm_below(from - e.c, 1e-6) || sqrt_norm_below(to - e.c, 1e-6)))
     fail(e.move, "PS0038",
          fmt::format("interference in circular block: the compensated arc would {} on its centre (arc radius "
                      "{:.4f} mm, offset {:g} mm on its inner side)",
@@ -148,7 +168,7 @@ void RadiusCompensation::check_interference(const Elem& e, V2 from, V2 to) {
   if (!settings_.interference_check || e.side == 0) return;
   if (!e.arc) {
     V2 prog = e.e - e.s, comp = to - from;
-    if (sqrt_norm(prog) > kEps && sqrt_norm(comp) > kEps && dot(prog, comp) < 0)
+    if (dot(prog, comp) < 0 && sqrt_norm(prog) > kEps && sqrt_norm(comp) > kEps)
       fail(e.move, "PS0041",
              fmt::format("interference in cutter compensation: the compensated path of this block runs against "
                          "the programmed one ({:.4f} mm back); the cutter (radius {:g} mm) would gouge",
@@ -200,7 +220,7 @@ void RadiusCompensation::emit_element(const Elem& e, V2 from, V2 to, bool plain_
     double rs = sqrt_norm(from - e.c), re = sqrt_norm(to - e.c);
     double planar = std::fabs(sweep) * (rs + re) / 2;
     double dn = m.end[pa_.n] - m.start[pa_.n];
-    double length = std::hypot(planar, dn);
+    double length = dn == 0 ? std::fabs(planar) : std::hypot(planar, dn);  // hypot(x, 0) is |x|, exactly
     if (e.move.length > 0) m.seconds = e.move.seconds * length / e.move.length;
     m.length = length;
   } else {
@@ -265,7 +285,7 @@ void RadiusCompensation::emit_after() {
 }
 
 void RadiusCompensation::element(const Move& programmed, int side, double radius, std::optional<V2> cancel_direction) {
-  if (!pending_ && !offset_mode_) {
+  if (!has_pending() && !offset_mode_) {
     if (side == 0) {  // no offset: the move goes from where the tool is
       Move m = programmed;
       if (tool_) {
@@ -277,49 +297,49 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
       return;
     }
     pa_ = plane_axes(programmed.plane);
-    Elem e = make(programmed, side, radius);
+    Elem& e = make_into(spare(), programmed, side, radius);
     if (e.arc)
       fail(programmed, "PS0034",
              "cutter compensation cannot start in a G02/G03 block: start it with G00 or G01 (start-up block)");
     tool_full_ = tool_ ? *tool_ : programmed.start;
     tool_.reset();
     tool_plane_ = plane_point(tool_full_, pa_) - tip_;
-    pending_ = e;
+    set_pending(e);
     pending_start_ = tool_plane_;
     offset_mode_ = true;
     startup_pending_ = true;
     return;
   }
-  Elem b = make(programmed, side, radius);
+  Elem& b = make_into(spare(), programmed, side, radius);  // built beside the pending element, not copied
   b.cancel_direction = cancel_direction;
   if (side == 0 && b.arc)
     fail(programmed, "PS0034",
            "cutter compensation cannot be cancelled in a G02/G03 block: cancel it with G00 or G01");
-  if (!pending_ && shift_) {  // type C: the start-up block shifts the tool, then b runs in offset mode
+  if (!has_pending() && shift_) {  // type C: the start-up block shifts the tool, then b runs in offset mode
     const Elem by = make(*shift_, side, radius);
     shift_.reset();
     if (side != 0) {
       const V2 start = b.s + (b.side * b.r) * perp(b.t_start());
       emit_line(by, tool_plane_, start, false);
       emit_after();
-      pending_ = b;
+      set_pending(b);
       pending_start_ = start;
       return;
     }
     emit_after();
   }
-  if (!pending_) {  // offset mode with the last element already ended (read-ahead lost)
+  if (!has_pending()) {  // offset mode with the last element already ended (read-ahead lost)
     if (lost_) warn_lost(b);
-    pending_ = b;
+    set_pending(b);
     pending_start_ = tool_plane_;
     if (side == 0) {
       emit_element(b, tool_plane_, b.e - tip_, true);
-      pending_.reset();
+      pending_ = -1;
       offset_mode_ = false;
     }
     return;
   }
-  Elem& a = *pending_;
+  Elem& a = pending();
   Joint joint = startup_pending_ ? Joint::startup : side == 0 ? Joint::cancel : Joint::offset;
   Corner k;
   if (side == 0 && cancel_direction) {
@@ -328,6 +348,7 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
     ghost.arc = false;
     ghost.s = a.e;
     ghost.e = a.e + *cancel_direction;
+    ghost.set_tangents();
     k = corner(a, ghost, Joint::offset);
     k.inserted.clear();
     k.start_b = k.end_a;
@@ -360,17 +381,17 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
   if (side == 0) {
     // the cancel block goes to its programmed end without a vector
     emit_element(b, tool_plane_, b.e - tip_, true);
-    pending_.reset();
+    pending_ = -1;
     offset_mode_ = false;
     return;
   }
-  pending_ = b;
+  set_pending(b);
   pending_start_ = k.start_b;
 }
 
 void RadiusCompensation::fail(const Move& at, const std::string& code, const std::string& message) {
   // the tool stops at the end of the block before: what is still buffered is not executed
-  pending_.reset();
+  pending_ = -1;
   shift_.reset();
   after_.clear();
   offset_mode_ = false;
@@ -379,7 +400,7 @@ void RadiusCompensation::fail(const Move& at, const std::string& code, const std
 }
 
 void RadiusCompensation::other(const Move& m) {
-  if (pending_ || shift_) after_.push_back(m);
+  if (has_pending() || shift_) after_.push_back(m);
   else if (offset_mode_ || tool_) deliver_at(m, tool_ ? *tool_ : tool_full_);
   else {
     Move x = m;
@@ -388,15 +409,15 @@ void RadiusCompensation::other(const Move& m) {
 }
 
 void RadiusCompensation::block_without_motion(const Move& at) {
-  if (!pending_) return;
+  if (!has_pending()) return;
   if (++blocks_after_ <= settings_.blocks_without_motion) return;
   // the read-ahead cannot see past these blocks: the last element ends with its perpendicular vector
-  Elem& a = *pending_;
+  Elem& a = pending();
   V2 end = a.e + (a.side * a.r) * perp(a.t_end());
   check_interference(a, pending_start_, end);
   emit_element(a, pending_start_, end);
   lost_ = Lost{a, at, blocks_after_};
-  pending_.reset();
+  pending_ = -1;
   emit_after();
 }
 
@@ -422,12 +443,12 @@ void RadiusCompensation::warn_lost(const Elem& next) {
 
 // The pending element ends with its vector perpendicular at its end; what was read after it goes out.
 void RadiusCompensation::end_perpendicular() {
-  if (pending_) {
-    Elem& a = *pending_;
+  if (has_pending()) {
+    Elem& a = pending();
     V2 end = a.e + (a.side * a.r) * perp(a.t_end());
     check_interference(a, pending_start_, end);
     emit_element(a, pending_start_, end);
-    pending_.reset();
+    pending_ = -1;
   }
   emit_after();
 }
@@ -444,7 +465,7 @@ void RadiusCompensation::startup_without_motion(const Move& at) {
 }
 
 void RadiusCompensation::cancel_without_motion(const Move& at) {
-  if (!pending_ && !offset_mode_) return;
+  if (!has_pending() && !offset_mode_) return;
   const bool tool_moved = !shift_;
   shift_.reset();
   end_perpendicular();
@@ -473,7 +494,7 @@ void RadiusCompensation::move_frame(const AxisVector& delta) {
     tool_plane_ = plane_point(tool_full_, pa_) - tip_;
     return;
   }
-  if (offset_mode_ || pending_) {
+  if (offset_mode_ || has_pending()) {
     end_perpendicular();
     offset_mode_ = false;
     startup_pending_ = false;
@@ -484,11 +505,11 @@ void RadiusCompensation::move_frame(const AxisVector& delta) {
 }
 
 void RadiusCompensation::cancel_at_end() {
-  if (!pending_ && !offset_mode_) return;
+  if (!has_pending() && !offset_mode_) return;
   shift_.reset();
-  if (pending_) {
-    Elem a = *pending_;
-    pending_.reset();
+  if (has_pending()) {
+    Elem a = pending();
+    pending_ = -1;
     if (!startup_pending_) check_interference(a, pending_start_, a.e - tip_);
     emit_element(a, pending_start_, a.e - tip_, true);
   }
@@ -501,9 +522,9 @@ void RadiusCompensation::cancel_at_end() {
 
 void RadiusCompensation::finish() {
   shift_.reset();
-  if (pending_) {
-    Elem a = *pending_;
-    pending_.reset();
+  if (has_pending()) {
+    Elem a = pending();
+    pending_ = -1;
     V2 end = a.e + (a.side * a.r) * perp(a.t_end());
     emit_element(a, pending_start_, end);
   }

@@ -67,7 +67,7 @@ public:
   void set_tip(V2 tip) {
     if (!offset_mode()) tip_ = tip;
   }
-  bool offset_mode() const { return pending_.has_value() || offset_mode_; }
+  bool offset_mode() const { return has_pending() || offset_mode_; }
   // Where the tool centre is, if it differs from the programmed position after a cancel.
   const std::optional<AxisVector>& tool_position() const { return tool_; }
   // Where the tool (centre, or imaginary tip) is after the last move put out, in offset mode.
@@ -83,9 +83,14 @@ private:
     int side = 0;
     double r = 0;
     std::optional<V2> cancel_direction;
+    V2 ts, te;  // the unit tangents at s and at e: set by make_into(), or by set_tangents() after a change
     V2 tangent_at(V2 p) const;
-    V2 t_start() const { return tangent_at(s); }
-    V2 t_end() const { return tangent_at(e); }
+    void set_tangents() {
+      ts = tangent_at(s);
+      te = arc ? tangent_at(e) : ts;
+    }
+    V2 t_start() const { return ts; }
+    V2 t_end() const { return te; }
   };
   struct Corner {
     V2 end_a;                  // where the first element's compensated path ends
@@ -95,6 +100,12 @@ private:
   enum class Joint { offset, startup, cancel };
 
   Elem make(const Move& m, int side, double radius) const;
+  Elem& make_into(Elem& el, const Move& m, int side, double radius) const;
+  // The slot of elems_ that is not the pending element's: where the next element is built.
+  Elem& spare() { return elems_[pending_ == 0 ? 1 : 0]; }
+  bool has_pending() const { return pending_ >= 0; }
+  Elem& pending() { return elems_[pending_]; }
+  void set_pending(const Elem& el) { pending_ = &el == &elems_[0] ? 0 : 1; }
   Corner corner(const Elem& a, const Elem& b, Joint joint) const;
   std::optional<V2> intersect(const Elem& a, int side_a, double ra, const Elem& b, int side_b, double rb, V2 near) const;
   void emit_element(const Elem& e, V2 from, V2 to, bool plain_end = false);
@@ -117,7 +128,8 @@ private:
   Warn warn_;
   PlaneAxes pa_{0, 1, 2, 'I', 'J'};
   bool offset_mode_ = false;
-  std::optional<Elem> pending_;  // the element whose end vector waits for the next element
+  Elem elems_[2];                // the pending element and the next one, each built in its slot
+  int pending_ = -1;             // the slot of the element whose end vector waits for the next, or -1
   V2 pending_start_;             // where its compensated path starts
   std::deque<Move> after_;       // moves and events read after it
   int blocks_after_ = 0;         // NC blocks without motion in the plane after it
