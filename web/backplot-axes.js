@@ -4,7 +4,7 @@
 // boxes as the view turns, and the markers (the start, the alarm, the tool). Needs three.js.
 //
 //   const axes = NcurveBackplotAxes.create({scene, overlay, container, moves, geometry, alarmLabel});
-//   axes.lo, axes.hi, axes.pad;      // the path's box in world units; the axes lie pad outside it
+//   axes.lo, axes.hi, axes.pad;      // the cuts' box in world units; the axes lie pad outside it
 //   axes.place(project, W, H);       // each frame: labels and tick marks for the camera (project:
 //                                    // world Vector3 -> [x, y] on a W x H canvas)
 //   axes.marker('tool');             // a marker {world, hidden} to move, placed with the labels
@@ -31,7 +31,9 @@
   // scene: where the grid and axes go; overlay: the element over the canvas for the labels;
   // container: the plot's element (its boxes the names keep clear of); geometry: the moves' build
   function create({scene, overlay, container, moves, geometry, alarmLabel}) {
-    const {lo, hi, diag, origin, perm, toWorld} = geometry;
+    // the axes frame the cuts (geometry.frameLo/Hi): rapids to and from home reach beyond them
+    const {origin, perm, toWorld} = geometry, lo = geometry.frameLo || geometry.lo, hi = geometry.frameHi || geometry.hi;
+    const diag = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
     const n = moves.count;
     const wlo = [0, 0, 0], whi = [0, 0, 0];
     toWorld(lo, wlo), toWorld(hi, whi);

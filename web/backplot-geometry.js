@@ -5,6 +5,8 @@
 //
 //   const g = NcurveBackplotGeometry.build(moves);   // moves as NcurveBackplot.create takes them
 //   g.layers[k].pos (X Y Z of both ends per segment), g.first[i], g.segOf[i], g.lo, g.hi, g.toWorld(p, out)
+//   g.frameLo, g.frameHi: the box a view fits, machine X Y Z: the cuts and the rapids near them (not
+//   those to and from a home position far off); the whole box where there are no cuts
 (function (global) {
   'use strict';
   const PLANE_AXES = {17: [0, 1], 18: [2, 0], 19: [1, 2]};
@@ -25,8 +27,16 @@
     // reference position, far above the part) is not the program's, and the view frames the
     // program; a cut (a feed or an arc) counts from where it starts, wherever that is
     let m0 = false, m1 = false, m2 = false;
+    // the frame: the cuts' box (lines and arcs), which a view fits, and the rapids near it (below)
+    const flo = [Infinity, Infinity, Infinity], fhi = [-Infinity, -Infinity, -Infinity];
+    const frame = (x, y, z) => {
+      if (x < flo[0]) flo[0] = x; if (x > fhi[0]) fhi[0] = x;
+      if (y < flo[1]) flo[1] = y; if (y > fhi[1]) fhi[1] = y;
+      if (z < flo[2]) flo[2] = z; if (z > fhi[2]) fhi[2] = z;
+    };
     for (let i = 0, s = 0; i < n; i++, s += 3) {
       const sx = S[s], sy = S[s + 1], sz = S[s + 2], ex = E[s], ey = E[s + 1], ez = E[s + 2], cut = K[i] !== 0;
+      if (cut) frame(sx, sy, sz), frame(ex, ey, ez);
       if (m0 || cut) { if (sx < lo0) lo0 = sx; if (sx > hi0) hi0 = sx; }
       if (m1 || cut) { if (sy < lo1) lo1 = sy; if (sy > hi1) hi1 = sy; }
       if (m2 || cut) { if (sz < lo2) lo2 = sz; if (sz > hi2) hi2 = sz; }
@@ -45,6 +55,9 @@
       for (let m = Math.ceil(from / HALF_PI), last = Math.min(Math.floor(to / HALF_PI), m + 8); m <= last; m++) {
         const t = sweep ? (m * HALF_PI - a0) / sweep : 0, r = rs + (re - rs) * t;
         const u = cp + r * Math.cos(m * HALF_PI), v = cq + r * Math.sin(m * HALF_PI);
+        const at = [S[s], S[s + 1], S[s + 2]];
+        at[p] = u, at[q] = v;
+        frame(at[0], at[1], at[2]);
         if (p === 0 || q === 0) { const x = p === 0 ? u : v; if (x < lo0) lo0 = x; if (x > hi0) hi0 = x; }
         if (p === 1 || q === 1) { const y = p === 1 ? u : v; if (y < lo1) lo1 = y; if (y > hi1) hi1 = y; }
         if (p === 2 || q === 2) { const z = p === 2 ? u : v; if (z < lo2) lo2 = z; if (z > hi2) hi2 = z; }
@@ -61,6 +74,22 @@
     if (Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) < 1e-6)  // no path (an alarm at once): a 10 mm box
       for (let k = 0; k < 3; k++) lo[k] -= 5, hi[k] += 5;
     const diag = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
+    // no cuts, or cuts along a line or a point only: the frame is the whole box; else the rapids'
+    // ends near the cuts (within a quarter of their diagonal: clearance planes, approaches) join it
+    const cutDiag = Math.hypot(fhi[0] - flo[0], fhi[1] - flo[1], fhi[2] - flo[2]);
+    if (!(flo[0] <= fhi[0]) || cutDiag < diag * 1e-3) {
+      for (let k = 0; k < 3; k++) flo[k] = lo[k], fhi[k] = hi[k];
+    } else {
+      const m = cutDiag / 4, nlo = flo.map((v) => v - m), nhi = fhi.map((v) => v + m);
+      const near = (P, s) => P[s] >= nlo[0] && P[s] <= nhi[0] && P[s + 1] >= nlo[1] && P[s + 1] <= nhi[1] &&
+                             P[s + 2] >= nlo[2] && P[s + 2] <= nhi[2];
+      for (let i = 0, s = 0; i < n; i++, s += 3) {
+        if (K[i] !== 0) continue;
+        if (near(S, s)) frame(S[s], S[s + 1], S[s + 2]);
+        if (near(E, s)) frame(E[s], E[s + 1], E[s + 2]);
+      }
+    }
+    if (moves.alarmAt) for (let k = 0; k < 3; k++) flo[k] = Math.min(flo[k], moves.alarmAt[k]), fhi[k] = Math.max(fhi[k], moves.alarmAt[k]);
     const origin = [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2];
     const P0 = perm[0], P1 = perm[1], P2 = perm[2], O0 = origin[P0], O1 = origin[P1], O2 = origin[P2];
     const toWorld = (m, out) => {  // machine point -> world, relative to the origin
@@ -154,7 +183,7 @@
       return col;
     };
 
-    return {lo, hi, diag, origin, perm, toWorld, segOf, first, counts, moveCounts, total, layers, pickColors};
+    return {lo, hi, frameLo: flo, frameHi: fhi, diag, origin, perm, toWorld, segOf, first, counts, moveCounts, total, layers, pickColors};
   }
 
   global.NcurveBackplotGeometry = {build, PLANE_AXES};

@@ -219,7 +219,22 @@
     const controls = new THREE.OrbitControls(camera, renderer.domElement);
     controls.screenSpacePanning = true;
     controls.enableKeys = false;
-    controls.zoomSpeed = 1.5;
+    // the wheel zooms about the point under the pointer, a fifth a notch
+    controls.enableZoom = false;
+    listen(renderer.domElement, 'wheel', (e) => {
+      e.preventDefault();
+      const notches = e.deltaY / (e.deltaMode === 1 ? 3 : e.deltaMode === 2 ? 0.1 : 100);
+      const r = renderer.domElement.getBoundingClientRect();
+      const at = new THREE.Vector3((e.clientX - r.left) / r.width * 2 - 1, 1 - (e.clientY - r.top) / r.height * 2, 0);
+      const before = at.clone().unproject(camera);
+      camera.zoom = Math.min(Math.max(camera.zoom * Math.pow(1.2, -Math.max(-5, Math.min(5, notches))), 1e-4), 1e7);
+      camera.updateProjectionMatrix();
+      const shift = before.sub(at.unproject(camera));
+      camera.position.add(shift);
+      controls.target.add(shift);
+      controls.update();
+      requestRender();
+    });
     let viewName = '', lastView = '', settingView = false;
     const resize = () => {
       const w = Math.max(container.clientWidth, 1), h = Math.max(container.clientHeight, 1);
@@ -236,10 +251,14 @@
     const VIEWS = moves.lathe
       ? {zx: [0, 0, 1], top: [0, 1, 1e-4], end: [1, 0, 0], iso: [1, 0.8, 1.2]}
       : {top: [0, -1e-4, 1], front: [0, -1, 0], side: [1, 0, 0], iso: [1, -1, 1]};
-    const setView = (name) => {
+    // a view fits the cuts (the axes' box); `all`: every move, rapids to and from home included
+    const glo = toWorld(lo, [0, 0, 0]), ghi = toWorld(hi, [0, 0, 0]);
+    const setView = (name, all = false) => {
       const d = VIEWS[name];
       if (!d) return false;
       viewName = name;
+      const flo = all ? glo.map((v, k) => Math.min(v, wlo[k] - pad)) : wlo.map((v) => v - pad);
+      const fhi = all ? ghi.map((v, k) => Math.max(v, whi[k])) : whi;
       const dir = new THREE.Vector3(d[0], d[1], d[2]).normalize();
       // the box's corners as seen from there: the camera centred on them, zoomed to fit
       controls.target.set(0, 0, 0);
@@ -248,7 +267,7 @@
       camera.updateMatrixWorld();
       const inv = new THREE.Matrix4().getInverse(camera.matrixWorld);
       const b = new THREE.Box3();
-      for (const x of [wlo[0] - pad, whi[0]]) for (const y of [wlo[1] - pad, whi[1]]) for (const z of [wlo[2] - pad, whi[2]])
+      for (const x of [flo[0], fhi[0]]) for (const y of [flo[1], fhi[1]]) for (const z of [flo[2], fhi[2]])
         b.expandByPoint(new THREE.Vector3(x, y, z).applyMatrix4(inv));
       const centre = new THREE.Vector3((b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2, 0).applyMatrix4(camera.matrixWorld);
       const shift = centre.sub(camera.position);  // in the view's plane
@@ -391,7 +410,7 @@
       onClick: options.onClick || null,
       onRender: null,
       moves, camera, controls, renderer,
-      setView, fit: () => setView(viewName || lastView),
+      setView, fit: () => setView(viewName || lastView), fitAll: () => setView(viewName || lastView, true),
       views: Object.keys(VIEWS),
       pick,
       // colours: fn(i) -> [r, g, b] (0..255) or null for the kind's colour; no argument: by kind

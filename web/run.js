@@ -160,9 +160,13 @@
   }
   const fit = el('button', 'fit', 'Fit');
   fit.type = 'button';
-  fit.title = 'the whole path in the current view';
+  fit.title = 'the cuts in the current view';
   fit.addEventListener('click', () => plot.fit());
-  views.append(fit);
+  const all = el('button', 'fit', 'Fit all');
+  all.type = 'button';
+  all.title = 'every move in the current view, the rapids to and from home too';
+  all.addEventListener('click', () => plot.fitAll());
+  views.append(fit, all);
   plot.onRender = () => {
     const v = plot.state().view;
     for (const [name, b] of Object.entries(buttons)) b.classList.toggle('active', name === v);

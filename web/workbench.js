@@ -205,8 +205,12 @@
       box.append(b);
     }
     const fit = el('button', '', 'Fit');
+    fit.title = 'the cuts in the current view';
     fit.onclick = () => { plot.fit(); mark(); };
-    box.append(fit);
+    const all = el('button', '', 'Fit all');
+    all.title = 'every move in the current view, the rapids to and from home too';
+    all.onclick = () => { plot.fitAll(); mark(); };
+    box.append(fit, all);
     plot.controls.addEventListener('change', mark);
     mark();
   }

@@ -79,6 +79,7 @@ void PathPlot::on_move(const machine::Move& m) {
     const Vec a = xyz(m.start), b = xyz(m.end);
     const bool cut = m.kind != MoveKind::rapid;
     for (int k = 0; k < 3; ++k) {
+      if (cut) cut_lo_[k] = std::min({cut_lo_[k], a[k], b[k]}), cut_hi_[k] = std::max({cut_hi_[k], a[k], b[k]});
       if (axis_moved_[k] || cut) frame_lo_[k] = std::min(frame_lo_[k], a[k]), frame_hi_[k] = std::max(frame_hi_[k], a[k]);
       axis_moved_[k] = axis_moved_[k] || a[k] != b[k] || m.kind == MoveKind::arc;
       if (axis_moved_[k]) frame_lo_[k] = std::min(frame_lo_[k], b[k]), frame_hi_[k] = std::max(frame_hi_[k], b[k]);
@@ -342,23 +343,39 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
   const double unit = o.inch ? 1 / 25.4 : 1;
   const char* units = o.inch ? "in" : "mm";
 
-  // The program's box: an axis counts from its first move on (a cut from where it starts), so where
-  // the machine stood before the program (the shipped mill's reference position, far above the
-  // part; a lathe's home) is left out and the approach from it is cut off at the panel's edge.
-  Vec lo = frame_lo_, hi = frame_hi_;
+  // The program's box: the cuts (lines and arcs) and the rapids' ends near them, within a quarter of
+  // the cuts' diagonal (clearance planes, approaches), so that rapids to and from a home far off
+  // are cut off at the panel's edge. Without cuts: every move, an axis counted from its first move
+  // on (a cut from where it starts), which leaves out where the machine stood before the program.
+  Vec lo = frame_lo_, hi = frame_hi_, cut_lo = cut_lo_, cut_hi = cut_hi_;
   {
-    auto count = [&](int k, double v) { lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v); };
+    auto count = [&](Vec& l, Vec& h, const Vec& p) {
+      for (int k = 0; k < 3; ++k) l[k] = std::min(l[k], p[k]), h[k] = std::max(h[k], p[k]);
+    };
     for (const auto& e : elements_) {
       if (e.kind == MoveKind::arc) {  // its extremes, as the panels' box takes them below
         const double r = std::hypot(e.a[0] - e.c[0], e.a[1] - e.c[1], e.a[2] - e.c[2]);
-        arc_pieces(e, std::max(r * 1e-3, 1e-9), [&](const Vec& p) {
-          for (int k = 0; k < 3; ++k) count(k, p[k]);
-        });
+        arc_pieces(e, std::max(r * 1e-3, 1e-9), [&](const Vec& p) { count(lo, hi, p), count(cut_lo, cut_hi, p); });
       }
     }
     const Vec& here = elements_.empty() ? last_ : elements_.front().a;
     for (int k = 0; k < 3; ++k)
       if (!(lo[k] <= hi[k])) lo[k] = hi[k] = here[k];  // an axis nothing counted: where it stands
+    const double all_diag = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    const double cut_diag = std::hypot(cut_hi[0] - cut_lo[0], cut_hi[1] - cut_lo[1], cut_hi[2] - cut_lo[2]);
+    if (cut_lo[0] <= cut_hi[0] && cut_diag >= all_diag * 1e-3) {
+      const double m = cut_diag / 4;
+      const Vec cuts_lo = cut_lo, cuts_hi = cut_hi;
+      for (const auto& e : elements_) {
+        if (e.kind != MoveKind::rapid) continue;
+        for (const Vec& p : {e.a, e.b}) {
+          bool in = true;
+          for (int k = 0; k < 3; ++k) in = in && p[k] >= cuts_lo[k] - m && p[k] <= cuts_hi[k] + m;
+          if (in) count(cut_lo, cut_hi, p);
+        }
+      }
+      lo = cut_lo, hi = cut_hi;
+    }
   }
   auto inside = [&](const Vec& p) {
     Vec q;

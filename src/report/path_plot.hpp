@@ -73,6 +73,7 @@ private:
   // what the views frame: each axis from its first move on, a cut from where it starts (svg())
   std::array<double, 3> frame_lo_{INFINITY, INFINITY, INFINITY}, frame_hi_{-INFINITY, -INFINITY, -INFINITY};
   std::array<bool, 3> axis_moved_{};
+  std::array<double, 3> cut_lo_{INFINITY, INFINITY, INFINITY}, cut_hi_{-INFINITY, -INFINITY, -INFINITY};  // lines, arcs
   bool moved_ = false;
   std::array<double, 3> last_{};
   std::optional<nc::Diagnostic> alarm_;

@@ -235,11 +235,36 @@ async function lonelyMove(page, motions, kind) {
     // a lathe's part: the bar's half-section revolved about Z, drawn at its radius on both sides of
     // the axis (D50 beyond the chuck jaw, where the program does not cut), nothing beyond it
     {
-      const {html, summary} = page_of('browser_lathe_part', path.join(src, 'examples/lathe-mrc.nc'),
+      const {html, summary, motions} = page_of('browser_lathe_part', path.join(src, 'examples/lathe-mrc.nc'),
                                       ['--machine', 'fanuc-lathe', '--setup', path.join(src, 'examples/lathe-mrc.setup.toml')]);
       const {page, errors} = await open(context, html);
       const part = await page.evaluate(() => window.ncurveBackplot.plot.state().part);
       check(part > 0 && part % 192 === 0, `lathe part: its contours revolved in 96 steps (${part} triangles)`);
+      // the ZX view fits the cuts, not the rapids from and to home (X300 Z250): the cuts' Z range
+      // (from the run's lines and arcs) fills at least half the view's width
+      const cutZ = motions.filter((m) => m.kind !== 'rapid').flatMap((m) => [m.start[2], m.end[2]]);
+      const z0 = Math.min(...cutZ), z1 = Math.max(...cutZ);
+      const [sz0, sz1, width] = await page.evaluate(([a, b]) => [window.ncurveBackplot.screenOfPoint([0, 0, a]).x,
+        window.ncurveBackplot.screenOfPoint([0, 0, b]).x, document.querySelector('canvas').clientWidth], [z0, z1]);
+      check(sz1 - sz0 >= width / 2, `lathe fit: the cuts' Z ${z0} … ${z1} take ${(sz1 - sz0).toFixed(0)} of ${width} px`);
+      await page.screenshot({path: path.join(out, 'browser_lathe_fit.png')});
+      // a wheel notch over a point zooms about it: the point stays under the pointer, a fifth larger
+      const pointAt = () => page.evaluate(() => [window.ncurveBackplot.screenOfPoint([30, 0, -40]),
+        window.ncurveBackplot.plot.state().camera.zoom]);
+      const [before, zoom0] = await pointAt();
+      await page.mouse.move(before.x, before.y);
+      await page.mouse.wheel(0, -100);
+      await page.waitForTimeout(100);
+      const [after, zoom1] = await pointAt();
+      check(Math.hypot(after.x - before.x, after.y - before.y) < 1 && Math.abs(zoom1 / zoom0 - 1.2) < 1e-6,
+            `wheel: X30 Z-40 stays under the pointer (${before.x.toFixed(1)}, ${before.y.toFixed(1)} -> ` +
+            `${after.x.toFixed(1)}, ${after.y.toFixed(1)}), zoom x${(zoom1 / zoom0).toFixed(3)}`);
+      await page.evaluate(() => window.ncurveBackplot.plot.fit());
+      // Fit all: the home rapids too (the uncut bar by the chuck in view for the checks below)
+      await page.evaluate(() => window.ncurveBackplot.plot.fitAll());
+      const [az0, az1] = await page.evaluate(([a, b]) => [window.ncurveBackplot.screenOfPoint([0, 0, a]).x,
+        window.ncurveBackplot.screenOfPoint([0, 0, b]).x], [z0, z1]);
+      check(az1 - az0 < 0.9 * (sz1 - sz0), `lathe fit all: the cuts drawn smaller (${(az1 - az0).toFixed(0)} px)`);
       await page.evaluate(() => window.ncurveBackplot.plot.render());
       const colour = async (p) => {
         const at = await page.evaluate((p) => window.ncurveBackplot.screenOfPoint(p), p);

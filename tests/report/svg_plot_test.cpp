@@ -298,9 +298,11 @@ TEST(PathPlot, LatheDrawsZAcrossAndXUpAsDiameter) {
   EXPECT_EQ(count(d.svg, "class=\"view\""), 1u);
   EXPECT_EQ(texts(d.svg, "label-u"), (std::vector<std::string>{"Z, mm"}));
   EXPECT_EQ(texts(d.svg, "label-v"), (std::vector<std::string>{"X (diameter), mm"}));
-  // the lathe's home (X0 Z0 here) is where it stood before the program: not framed. The program's
-  // X goes from 40 to 80 on the diameter, its Z from 5 to -30
-  EXPECT_EQ(texts(d.svg, "tick-v"), (std::vector<std::string>{"40", "50", "60", "70", "80"}));
+  // the lathe's home (X0 Z0 here) is where it stood before the program: not framed. The cuts' X
+  // goes from 40 to 60 on the diameter, Z from 5 to -30 with the approach to Z5 (diagonal 36.4 mm
+  // on the radius); the retract to X80 (radius 40) is more than a quarter of it (9.1 mm) beyond
+  // the cuts' radius 30: cut off at the panel's edge, not framed
+  EXPECT_EQ(texts(d.svg, "tick-v"), (std::vector<std::string>{"30", "40", "50", "60", "70"}));
   EXPECT_EQ(texts(d.svg, "tick-u"), (std::vector<std::string>{"-30", "-25", "-20", "-15", "-10", "-5", "0", "5"}));
 }
 
