@@ -176,6 +176,22 @@ expect_rc("${rc}" 0 "installed gen --form cycle")
 execute_process(COMMAND ${inst} run g102.nc --machine fanuc-mill --lib macros --param 6050=102
                 WORKING_DIRECTORY "${work}/elsewhere" OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
 expect_rc("${rc}" 0 "installed run of G102 with --lib macros: ${out}${err}")
+# `ncurve serve` is ncurve-serve beside it: installed too, reached through ncurve (its error, of an
+# address it cannot listen on, comes from the server); ncurve alone says what is missing, and
+# does not load the HTTP library
+if(NOT EXISTS "${work}/prefix/bin/ncurve-serve")
+  message(SEND_ERROR "not installed: bin/ncurve-serve")
+endif()
+run_expect(2 "installed serve with a bad --host" ${inst} serve --host 300.1.1.1 --port 0)
+expect_text("${err}" "300.1.1.1" "installed serve reached the server's own check")
+file(MAKE_DIRECTORY "${work}/alone")
+file(COPY "${work}/prefix/bin/ncurve" DESTINATION "${work}/alone")
+run_expect(2 "serve without ncurve-serve" "${work}/alone/ncurve" serve)
+expect_text("${err}" "ncurve serve: error: cannot start ${work}/alone/ncurve-serve" "serve without ncurve-serve")
+execute_process(COMMAND readelf -d ${NCURVE} OUTPUT_VARIABLE needed RESULT_VARIABLE rc)
+if(rc EQUAL 0 AND needed MATCHES "httplib|libssl|libcrypto|brotli")
+  message(SEND_ERROR "ncurve loads the HTTP library at every start:\n${needed}")
+endif()
 run_expect(2 "a profile name one letter off" ${inst} run ${work}/prefix/share/ncurve/examples/spiral.nc --machine fanuc-lath)
 expect_text("${err}" "did you mean fanuc-lathe?" "profile name one letter off")
 

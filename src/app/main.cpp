@@ -31,7 +31,7 @@
 #include "report/summary.hpp"
 #include "report/verify_report.hpp"
 #include "report/writers.hpp"
-#include "serve/serve_command.hpp"
+#include "app/serve_exec.hpp"
 
 namespace {
 
@@ -290,7 +290,7 @@ int ncurve_main(int argc, char** argv) {
   if (c.gen.command->parsed()) return app::gen_command(c.gen);
   if (c.helicoid.command->parsed()) return app::helicoid_command(c.helicoid);
   if (c.analyze.command->parsed()) return app::analyze_command(c.analyze);
-  if (c.serve.command->parsed()) return serve::serve_command(c.serve);
+  if (c.serve.command->parsed()) return app::exec_serve(argv);
   return 2;
 }
 
