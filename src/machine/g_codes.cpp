@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <iterator>
 
@@ -314,6 +315,17 @@ int g_group(int g, GMachine m) {
   const GCode* r = g_code(g, m);
   return r && r->status != GStatus::absent ? r->group : 0;
 }
+
+std::vector<int> g_groups(GMachine m) {
+  std::vector<int> groups;
+  for (const GCode& r : kTable)
+    if (r.group > 0 && (r.machines & m) && r.status != GStatus::absent) groups.push_back(r.group);
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  return groups;
+}
+
+std::vector<int> modal_groups(const MachineProfile& p) { return g_groups(g_machine(p)); }
 
 int g_initial(int group, GMachine m) {
   for (const GCode& r : kTable)

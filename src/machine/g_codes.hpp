@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "machine/profile.hpp"
 
@@ -53,6 +54,8 @@ const GCode* g_code(int g, GMachine m);
 GAction g_action(int g, GMachine m);
 // The group of g on m; 0 for a one-shot code or none.
 int g_group(int g, GMachine m);
+// The modal groups (1..) m's G-code table has, in order: those the control shows among its modal codes.
+std::vector<int> g_groups(GMachine m);
 // The code in force at power-on in group `group` of m that ncurve keeps no state for, or 0.
 int g_initial(int group, GMachine m);
 // "G02.2", as the manuals write it.

@@ -43,6 +43,10 @@ struct RunStats {
   AxisVector min{}, max{};  // of the motion end points and arc extremes, work coordinates
 };
 
+// The G-code groups of the profile's G-code system (mill, lathe A, B or C), in order: those
+// #4001.. of the control's modal state has.
+std::vector<int> modal_groups(const MachineProfile& p);
+
 // Least input increments per mm of the profile, as the control counts them.
 double increments_per_mm(const MachineProfile& p);
 // A dimension as the control takes it: a whole number of increments (halves away from zero), with

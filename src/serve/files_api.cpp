@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "app/shipped.hpp"
+#include "machine/interpreter.hpp"
 #include "machine/profile.hpp"
 #include "report/web_assets.hpp"
 #include "serve/api.hpp"
@@ -42,7 +43,8 @@ json profile_json(const machine::MachineProfile& profile) {
               {"axes", profile.axes},
               {"offset_memory", std::string(1, static_cast<char>('A' + static_cast<int>(profile.offset_memory)))},
               {"rotary", rotary_axes(profile)},
-              {"tool_offsets", tool_offsets_json(profile)}};
+              {"tool_offsets", tool_offsets_json(profile)},
+              {"modal_groups", machine::modal_groups(profile)}};
 }
 
 Answer api_profiles(const ServeConfig& config) {

@@ -164,6 +164,14 @@ async function latheExample(context) {
     check(w.pos === g71 + 1 && w.line === 19 && w.drawnUpTo === upTo9,
           `F10: one block on, on line ${w.line} (19) with the ${upTo9} motions up to G71's drawn (${w.drawnUpTo})`);
     await page.screenshot({path: path.join(out, 'workbench-lathe.png')});
+    // the modal line as the system-A lathe has its groups: G99 (line 7) is feed per revolution, no
+    // G98 beside it, no G90/G91 group (G90 is a turning cycle there); the count is the summary's
+    const gs = (await page.textContent('#dbg-modal')).split('\n')[0].split(' ');
+    check(gs.includes('G99') && gs.includes('G18') && !gs.includes('G98') && !gs.includes('G90') && !gs.includes('G91'),
+          `the modal line on a system-A lathe: ${gs.join(' ')}`);
+    const counted = await page.textContent('#dbg-pos');
+    check(counted.includes(`of ${summary.blocks_executed} `),
+          `the debugger counts the summary's ${summary.blocks_executed} blocks executed (${counted})`);
     await page.keyboard.press('Shift+F10');
     w = await W();
     check(w.pos === g71 && w.line === 9, `Shift+F10: one block back, on line ${w.line}`);
