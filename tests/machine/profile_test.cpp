@@ -72,6 +72,23 @@ TEST(Profile, UnknownKeysAreErrorsWithPosition) {
   EXPECT_THROW(parse_profile("[work_offsets]\nG54 = [1, 2]\n", "p.toml"), std::runtime_error);
 }
 
+// A bit parameter takes true/false or 0/1, as a float too; any other number (one past int64's
+// range among them, which the TOML library would convert undefined) is refused at its line.
+TEST(Profile, BitParametersTakeZeroOrOne) {
+  EXPECT_TRUE(parse_profile("[parameters]\n\"3401#0\" = 1\n", "p.toml").decimal_calculator);
+  EXPECT_TRUE(parse_profile("[parameters]\n\"3401#0\" = 1.0\n", "p.toml").decimal_calculator);
+  EXPECT_FALSE(parse_profile("[parameters]\n\"3401#0\" = false\n", "p.toml").decimal_calculator);
+  for (const char* v : {"2", "0.5", "1e33", "-1e300", "nan"}) {
+    try {
+      parse_profile(std::string("[parameters]\n\"3401#0\" = ") + v + "\n", "p.toml");
+      ADD_FAILURE() << v << " taken as a bit";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("p.toml:2:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("must be true/false or 0/1"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Profile, MotionAndServoTables) {
   auto mill = load_profile(NCURVE_SOURCE_DIR "/profiles/fanuc-mill.toml");
   EXPECT_EQ(mill.motion.look_ahead, 30);

@@ -69,8 +69,9 @@ double offset_value(const std::string& origin, const toml::node& node, const std
 }
 
 bool flag(const std::string& origin, const toml::node& node, const std::string& key) {
-  if (auto v = node.value<bool>()) return *v;
-  if (auto v = node.value<int64_t>(); v && (*v == 0 || *v == 1)) return *v == 1;
+  if (auto v = node.value_exact<bool>()) return *v;
+  // (as a double: toml++ converts a float out of int64's range to it undefined)
+  if (auto v = node.value<double>(); v && (*v == 0 || *v == 1)) return *v == 1;
   fail(origin, node, fmt::format("'{}' must be true/false or 0/1", key));
 }
 
