@@ -31,6 +31,7 @@
 #include "report/summary.hpp"
 #include "report/verify_report.hpp"
 #include "report/writers.hpp"
+#include "app/guarded_main.hpp"
 #include "app/serve_exec.hpp"
 
 namespace {
@@ -294,20 +295,4 @@ int ncurve_main(int argc, char** argv) {
   return 2;
 }
 
-int main(int argc, char** argv) {
-  int status = 2;
-  try {
-    status = ncurve_main(argc, argv);
-    io::check_stdout();
-  } catch (const io::OutputError& e) {
-    std::cerr << "ncurve: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ncurve: error: out of memory (the machine ran out of memory for this job; try a smaller one)\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "ncurve: internal error: " << e.what() << "\n";
-    return 3;
-  }
-  return status;
-}
+int main(int argc, char** argv) { return app::guarded_main([&] { return ncurve_main(argc, argv); }); }
