@@ -335,9 +335,10 @@
     const letters = {4107: 'D', 4109: 'F', 4111: 'H', 4113: 'M', 4119: 'S', 4120: 'T'};
     // the groups this machine's G codes have (a system-A lathe has no G90/G91 group, its G98/G99 are feeds)
     const groups = new Set((answer.profile && answer.profile.modal_groups) || []);
+    const lathe = !!(answer.profile && answer.profile.lathe);
     for (const [v, val] of st.modal) {
       // (0 is G00 in group 1 only: a group the control gives no code reads 0)
-      if (v > 4022) other.push(`${letters[v]}${num(val)}`);
+      if (v > 4022) { if (!(lathe && (v === 4107 || v === 4111))) other.push(`${letters[v]}${num(val)}`); }  // a lathe has no D, H
       else if (val !== null && (val !== 0 || v === 4001) && (!groups.size || groups.has(v - 4000))) G.push(`G${fmt(val, 1)}`);
     }
     $('dbg-modal').textContent = G.join(' ') + '\n' + other.join(' ');

@@ -169,6 +169,9 @@ async function latheExample(context) {
     const gs = (await page.textContent('#dbg-modal')).split('\n')[0].split(' ');
     check(gs.includes('G99') && gs.includes('G18') && !gs.includes('G98') && !gs.includes('G90') && !gs.includes('G91'),
           `the modal line on a system-A lathe: ${gs.join(' ')}`);
+    const words = (await page.textContent('#dbg-modal')).split('\n')[1].split(' ');
+    check(words.includes('F0.25') && words.includes('T101') && !words.some((w) => /^[DH]/.test(w)),
+          `the lathe's modal words, no D or H offset (a mill's): ${words.join(' ')}`);
     const counted = await page.textContent('#dbg-pos');
     check(counted.includes(`of ${summary.blocks_executed} `),
           `the debugger counts the summary's ${summary.blocks_executed} blocks executed (${counted})`);
