@@ -187,6 +187,10 @@ function genList() {
 
     // ---- the Settings against the command line ----
     const setting = async (id, value) => {
+      // (a run an earlier change started, or one still in its 300 ms wait, ends first)
+      await page.waitForFunction(() => ncurveWorkbench.settled());
+      await page.waitForTimeout(400);
+      await page.waitForFunction(() => ncurveWorkbench.settled());
       const k = await page.evaluate(() => [ncurveWorkbench.runs, ncurveWorkbench.refusals]);
       await page.fill(id, value);
       await page.locator(id).dispatchEvent('change');
@@ -283,6 +287,11 @@ function genList() {
     await ran(n);
     for (const r of [5, 3]) {
       await setting('#set-offsets tr[data-offset="1"] input[data-field="length"]', String(r));
+      await page.waitForFunction((r) => {  // the run with this radius drawn (a slow machine's runs overlap)
+        const B = ncurveWorkbench.plot.moves;
+        for (let i = B.count - 1; i >= 0; i--) if (B.line[i] === 4) return Math.abs(B.end[3 * i] - (40 - r)) < 1e-9;
+        return false;
+      }, r, {timeout: 30000}).catch(() => {});
       const [b, t] = [await endOf(4), await endOf(6)];
       check(Math.abs(b[0] - (40 - r)) < 1e-9 && Math.abs(b[1] - r) < 1e-9 && Math.abs(t[0] - r) < 1e-9 && Math.abs(t[1] - (20 - r)) < 1e-9,
             `D1 = ${r}: the bottom ends at ${JSON.stringify(b)}, the top at ${JSON.stringify(t)} (by hand ${40 - r},${r} and ${r},${20 - r})`);
@@ -290,6 +299,8 @@ function genList() {
     w = await W();
     check(/tool offsets: No\.1 length 3/.test(w.note), `the offset in force, in the header: ${w.note}`);
     await setting('#set-offsets tr[data-offset="1"] input[data-field="length"]', 'abc');
+    await page.waitForFunction(() => document.getElementById('set-offsets-why').textContent !== '', null,
+                               {timeout: 30000}).catch(() => {});
     why = await text('set-offsets-why');
     check(why === "\"tool_offsets\": offset 1: 'length' must be a number (mm)", `a bad offset refused beside the table: ${why}`);
     await setting('#set-offsets tr[data-offset="1"] input[data-field="length"]', '3');
