@@ -32,7 +32,7 @@
   // container: the plot's element (its boxes the names keep clear of); geometry: the moves' build
   function create({scene, overlay, container, moves, geometry, alarmLabel}) {
     // the axes frame the cuts (geometry.frameLo/Hi): rapids to and from home reach beyond them
-    const {origin, perm, toWorld} = geometry, lo = geometry.frameLo || geometry.lo, hi = geometry.frameHi || geometry.hi;
+    const {origin, perm, toWorld, frameLo: lo, frameHi: hi} = geometry;
     const diag = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
     const n = moves.count;
     const wlo = [0, 0, 0], whi = [0, 0, 0];

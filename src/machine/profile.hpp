@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "nc/program.hpp"
@@ -217,5 +218,12 @@ bool is_axis_parameter(const std::string& key);
 // ncurve does not use.
 void set_parameter(MachineProfile& p, const std::string& key, double value);
 MachineProfile parse_profile(const std::string& toml_text, const std::string& origin);
+
+// A tool offset's field (x, r_wear, radius, ... as the profile file and the API name them) against
+// the control's input range (16i/0i, metric: geometry ±999.999 mm, wear ±99.999; a lathe's tip a
+// whole 0..9): why the value cannot be set, without the field's place, or empty.
+std::string offset_field_error(std::string_view field, double value);
+// Sets a lathe offset's field by its name; false for a name it has not.
+bool set_lathe_offset_field(LatheOffset& o, std::string_view field, double value);
 
 }  // namespace ncurve::machine

@@ -6,7 +6,6 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -24,24 +23,13 @@ std::string server_libs(const ServeConfig& config) {
                              : fmt::format("its --lib folders: {}", fmt::join(config.libs, ", "));
 }
 
-// a value of "tool_offsets" as the profile file takes it: geometry within ±999.999 mm, wear ±99.999
+// a value of "tool_offsets" as the profile file takes it (machine::offset_field_error)
 double offset_number(const std::string& where, const json& v, const std::string& field) {
   if (!v.is_number())
     throw ApiError(400, fmt::format("\"tool_offsets\": offset {}: '{}' must be a number (mm)", where, field));
   const double x = v.get<double>();
-  if (field == "tip") {
-    if (!(x >= 0 && x <= 9 && x == std::floor(x)))
-      throw ApiError(400, fmt::format("\"tool_offsets\": offset {}: the imaginary tool nose direction 'tip' is a "
-                                      "whole number 0 .. 9, not {}",
-                                      where, x));
-    return x;
-  }
-  const bool wear = field.ends_with("_wear");
-  const double most = wear ? 100 : 1000;
-  if (!(std::fabs(x) < most))
-    throw ApiError(400, fmt::format("\"tool_offsets\": offset {}: '{}' = {} mm is beyond the control's range (a {} "
-                                    "value: -{} .. {} mm)",
-                                    where, field, x, wear ? "wear" : "geometry", most - 0.001, most - 0.001));
+  if (const std::string why = machine::offset_field_error(field, x); !why.empty())
+    throw ApiError(400, fmt::format("\"tool_offsets\": offset {}: {}", where, why));
   return x;
 }
 }  // namespace
@@ -116,15 +104,7 @@ void apply_tool_offsets(const json& j, machine::MachineProfile& profile) {
                                         key));
       machine::LatheOffset o = profile.lathe_offsets.count(n) ? profile.lathe_offsets[n] : machine::LatheOffset{};
       for (const auto& [f, v] : value.items()) {
-        const double x = offset_number(key, v, f);
-        if (f == "x") o.x = x;
-        else if (f == "z") o.z = x;
-        else if (f == "r") o.r = x;
-        else if (f == "tip") o.tip = x;
-        else if (f == "x_wear") o.x_wear = x;
-        else if (f == "z_wear") o.z_wear = x;
-        else if (f == "r_wear") o.r_wear = x;
-        else
+        if (!machine::set_lathe_offset_field(o, f, offset_number(key, v, f)))
           throw ApiError(400, fmt::format("\"tool_offsets\": offset {}: unknown lathe offset field '{}' (x, z, r, tip, "
                                           "x_wear, z_wear, r_wear)",
                                           key, f));

@@ -35,6 +35,30 @@ MachineProfile default_mill() {
   return p;
 }
 
+std::string offset_field_error(std::string_view field, double value) {
+  if (field == "tip")
+    return value >= 0 && value <= 9 && value == std::floor(value)
+               ? std::string()
+               : fmt::format("the imaginary tool nose direction 'tip' is a whole number 0 .. 9, not {}", value);
+  const bool wear = field.ends_with("_wear");
+  const double most = wear ? 100 : 1000;
+  if (std::fabs(value) < most) return {};
+  return fmt::format("'{}' = {} mm is beyond the control's range (a {} value: -{} .. {} mm)", field, value,
+                     wear ? "wear" : "geometry", most - 0.001, most - 0.001);
+}
+
+bool set_lathe_offset_field(LatheOffset& o, std::string_view field, double value) {
+  if (field == "x") o.x = value;
+  else if (field == "z") o.z = value;
+  else if (field == "r") o.r = value;
+  else if (field == "tip") o.tip = value;
+  else if (field == "x_wear") o.x_wear = value;
+  else if (field == "z_wear") o.z_wear = value;
+  else if (field == "r_wear") o.r_wear = value;
+  else return false;
+  return true;
+}
+
 MachineProfile default_lathe() {
   MachineProfile p;
   p.name = "FANUC 0i-TF 2-axis lathe, factory parameters";
@@ -57,14 +81,11 @@ double number(const std::string& origin, const toml::node& node, const std::stri
   fail(origin, node, fmt::format("'{}' must be a number", key));
 }
 
-// A tool offset value within FANUC's input range (16i/0i, metric): geometry +-999.999 mm, wear
-// +-99.999 mm (+-999.9999 and +-99.9999 on IS-C).
-double offset_value(const std::string& origin, const toml::node& node, const std::string& key, bool wear) {
+// A tool offset value within the control's input range (offset_field_error; a key ending in _wear
+// is a wear value).
+double offset_value(const std::string& origin, const toml::node& node, const std::string& key) {
   const double v = number(origin, node, key);
-  const double most = wear ? 100 : 1000;
-  if (!(std::fabs(v) < most))
-    fail(origin, node, fmt::format("tool offset '{}' = {} mm is beyond the control's range (a {} value: -{} .. {} mm)",
-                                   key, v, wear ? "wear" : "geometry", most - 0.001, most - 0.001));
+  if (const std::string why = offset_field_error(key, v); !why.empty()) fail(origin, node, "tool offset " + why);
   return v;
 }
 
@@ -328,31 +349,24 @@ MachineProfile parse_profile(const std::string& toml_text, const std::string& or
           LatheOffset& o = p.lathe_offsets[n];
           for (const auto& [fk, fn] : *set) {
             std::string f(fk.str());
-            double v = f == "tip" ? number(origin, fn, f) : offset_value(origin, fn, f, f.ends_with("_wear"));
-            if (f == "tip" && !(v >= 0 && v <= 9 && v == std::floor(v)))
-              fail(origin, fn, fmt::format("the imaginary tool nose direction 'tip' is a whole number 0 .. 9, not {}", v));
-            if (f == "x") o.x = v;
-            else if (f == "z") o.z = v;
-            else if (f == "r") o.r = v;
-            else if (f == "tip") o.tip = v;
-            else if (f == "x_wear") o.x_wear = v;
-            else if (f == "z_wear") o.z_wear = v;
-            else if (f == "r_wear") o.r_wear = v;
-            else fail(origin, fn, fmt::format("unknown lathe offset field '{}' (x, z, r, tip, x_wear, z_wear, r_wear)", f));
+            const double v = f == "tip" ? number(origin, fn, f) : offset_value(origin, fn, f);
+            if (const std::string why = f == "tip" ? offset_field_error(f, v) : ""; !why.empty()) fail(origin, fn, why);
+            if (!set_lathe_offset_field(o, f, v))
+              fail(origin, fn, fmt::format("unknown lathe offset field '{}' (x, z, r, tip, x_wear, z_wear, r_wear)", f));
           }
           continue;
         }
         if (n < 1 || n > 999) fail(origin, tn, "tool offset numbers are 1 .. 999");
         MillOffset& o = p.tool_offsets[n];
         if (!set) {  // one value: the geometry of H and D alike
-          o.geometry = o.d_geometry = offset_value(origin, tn, s, false);
+          o.geometry = o.d_geometry = offset_value(origin, tn, s);
           continue;
         }
         if (set->contains("x") || set->contains("z"))
           fail(origin, tn, "a table of x and z is a lathe offset: set type = \"lathe\" first");
         for (const auto& [fk, fn] : *set) {
           std::string f(fk.str());
-          double v = offset_value(origin, fn, f, f.ends_with("_wear"));
+          double v = offset_value(origin, fn, f);
           if (f == "length") o.geometry = v;
           else if (f == "length_wear") o.wear = v;
           else if (f == "radius") o.d_geometry = v;
