@@ -45,6 +45,7 @@ public:
   nc::Value variable(int number);
   // Tell this observer each block, call, return and variable write of the next runs (null: none).
   void observe(ExecutionObserver* observer) { observer_ = observer; }
+  std::uint64_t plain_lane_blocks() const { return plain_lane_blocks_; }
 
   // ---- what the G-code table's actions (g_actions.cpp and a code's own file) use ----
   struct Cmd {  // a word of the block in hand, its value evaluated
@@ -100,6 +101,9 @@ private:
   };
   void exec_nc(const nc::Block& b);
   bool read_words(const nc::Block& b);
+  bool plain_lane_open(const nc::Block& b) const;
+  void plain_motion_block(const nc::Block& b);
+  std::uint64_t plain_lane_blocks_ = 0;
   bool macro_call_block(const nc::Block& b, SubprogramCall& sub);
   void word_settings(const std::vector<int>& one_shot, SubprogramCall& sub);
   bool block_motion(const std::vector<int>& one_shot);

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "base/parallel.hpp"
+
 #include "machine/file_checks.hpp"
 
 namespace ncurve::machine {
@@ -119,11 +121,16 @@ void Executor::start_file_checks(const nc::Program& main) {
     return;
   }
   file_checks_ = std::make_unique<FileChecks>(profile_);
-  main.stream->visit([this](const nc::Program& program, const nc::Program& piece) {
+  if (base::cores() > 1) file_checks_->beside = std::make_unique<base::TaskThread>();
+  main.stream->visit([this](const nc::Program& program, const nc::Program& piece, const std::shared_ptr<const void>& keep) {
     FileChecks& c = *file_checks_;
-    if (c.programs.empty() || c.programs.back().first != &program) c.programs.emplace_back(&program, DecimalPointSearch{});
-    search_decimal_points(c.profile, piece, c.programs.back().second);
-    c.hints.see(program, piece);
+    auto check = [&c, &program, &piece, keep] {
+      if (c.programs.empty() || c.programs.back().first != &program) c.programs.emplace_back(&program, DecimalPointSearch{});
+      search_decimal_points(c.profile, piece, c.programs.back().second);
+      c.hints.see(program, piece);
+    };
+    if (c.beside) c.beside->post(std::move(check));
+    else check();
   });
 }
 
@@ -132,6 +139,7 @@ void Executor::start_file_checks(const nc::Program& main) {
 void Executor::finish_file_checks(const nc::Program& main) {
   library_.read_all();
   main.stream->forget_visitors();
+  if (file_checks_->beside) file_checks_->beside->finish();
   std::vector<nc::Diagnostic> all;
   for (const auto& [program, found] : file_checks_->programs) warn_decimal_points(file_checks_->profile, *program, found, all);
   for (nc::Diagnostic& d : file_checks_->hints.warnings()) all.push_back(std::move(d));

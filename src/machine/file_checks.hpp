@@ -1,9 +1,11 @@
 // The checks of a whole main file before its run (file_checks.cpp): what a streamed file's keep
 // while its pieces are read.
 #pragma once
+#include <memory>
 #include <utility>
 #include <vector>
 
+#include "base/task_thread.hpp"
 #include "machine/executor.hpp"
 #include "machine/profile/profile_hints.hpp"
 
@@ -19,12 +21,14 @@ struct DecimalPointSearch {
   bool argument = false;
 };
 
-// A streamed main file's checks of every program, made as its pieces are read and given at the end.
+// A streamed main file's checks of every program, made as its pieces are read (on a thread beside the
+// run where there are two cores) and given at the end.
 struct Executor::FileChecks {
   explicit FileChecks(const MachineProfile& start) : profile(start), hints(profile) {}
   MachineProfile profile;  // as the run starts (G10 L52 may change it): as the checks before a run see it
   ProfileHints hints;
   std::vector<std::pair<const nc::Program*, DecimalPointSearch>> programs;
+  std::unique_ptr<base::TaskThread> beside;  // last: finishes the checks before the rest goes
 };
 
 }  // namespace ncurve::machine

@@ -425,6 +425,8 @@ Interpreter::~Interpreter() = default;
 Interpreter::Interpreter(Interpreter&&) noexcept = default;
 Interpreter& Interpreter::operator=(Interpreter&&) noexcept = default;
 RunResult Interpreter::run(MoveSink& sink) { return executor_->run(sink); }
+std::uint64_t Interpreter::plain_lane_blocks() const { return executor_->plain_lane_blocks(); }
+
 nc::Value Interpreter::variable(int number) { return executor_->variable(number); }
 void Interpreter::observe(ExecutionObserver* observer) { executor_->observe(observer); }
 

@@ -27,6 +27,7 @@ struct RunOptions {
   bool nose_centre = false;  // lathe: write the tool-nose centre's path, not the imaginary tip's
   double path_tolerance = 0.001;  // mm: G12.1/G07.1 moves are written within this of the contour (--arc-tol)
   const std::atomic<bool>* cancel = nullptr;  // when set, the run stops (NC9000) at its next bound check
+  bool plain_lane = true;  // plain G00/G01 blocks by Executor::plain_motion_block (false: the general path, for tests)
 };
 
 struct RunStats {
@@ -85,6 +86,8 @@ public:
   RunResult run(MoveSink& sink);
   // Variable value after (or during) a run, as a program would read it.
   nc::Value variable(int number);
+  // Blocks the last runs made by the lane of plain motion (RunOptions::plain_lane), for the tests.
+  std::uint64_t plain_lane_blocks() const;
   // Tell this observer each block, call, return and variable write of the next runs (null: none).
   void observe(ExecutionObserver* observer);
 

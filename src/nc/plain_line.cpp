@@ -6,6 +6,16 @@ namespace ncurve::nc::text {
 
 namespace {
 constexpr bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+constexpr unsigned digit(char c) { return static_cast<unsigned>(c - '0'); }  // < 10 for a digit
+// A letter's index 0..25 (either case); 26 or more for anything else.
+constexpr unsigned letter_index(char c) { return static_cast<unsigned>((c | 0x20) - 'a'); }
+
+// Reads a run of digits from p into m (m * 10^count + value); returns how many.
+inline int read_digits(const char*& p, const char* end, std::uint64_t& m) {
+  const char* first = p;
+  for (; p != end && digit(*p) < 10; ++p) m = m * 10 + digit(*p);  // wraps past 19 digits, then unused
+  return static_cast<int>(p - first);
+}
 }  // namespace
 
 bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int max_digits) {
@@ -17,50 +27,50 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
   if (p == end) return false;
   const std::size_t words_mark = prog.words.size();
   const std::uint16_t first_col = static_cast<std::uint16_t>(p - begin + 1);
+  constexpr std::uint32_t kMotionLetters = 1u << ('G' - 'A') | 1u << ('X' - 'A') | 1u << ('Y' - 'A') |
+                                           1u << ('Z' - 'A') | 1u << ('F' - 'A');
+  std::uint32_t letters = 0, twice = 0;
+  bool g_plain = true;  // no G word, or G00 / G01
+  bool g_word = false;
+  bool negative_feed = false;
+  auto give_up = [&] {
+    prog.words.resize(words_mark);
+    return false;
+  };
   while (p != end) {
-    const char letter = to_upper(*p);
-    if (!is_upper(letter) || letter == 'O' || letter == 'N') break;
+    const unsigned k = letter_index(*p);
+    if (k >= 26 || k == 'O' - 'A' || k == 'N' - 'A') return give_up();  // O, N or the general scanner's
     Word& w = prog.words.emplace_back();
-    w.letter = letter;
+    w.letter = static_cast<char>('A' + k);
     w.column = static_cast<std::uint16_t>(p - begin + 1);
     ++p;
     while (p != end && blank(*p)) ++p;
     bool negative = false;
     if (p != end && (*p == '-' || *p == '+')) negative = *p++ == '-';
-    // digits and one decimal point, blanks between them ignored
-    std::uint64_t mantissa = 0;  // wraps past max_digits, then unused
-    int digits = 0, fraction = -1;
-    for (; p != end; ++p) {
-      const char c = *p;
-      if (is_digit(c)) {
-        mantissa = mantissa * 10 + (c - '0');
-        ++digits;
-        fraction += fraction >= 0;
-      } else if (c == '.') {
-        if (fraction >= 0) {
-          digits = 0;  // a second point: not a plain word
-          break;
-        }
-        fraction = 0;
-      } else if (!blank(c)) {
-        break;
-      }
+    std::uint64_t mantissa = 0;
+    int digits = read_digits(p, end, mantissa);
+    int fraction = -1;
+    if (p != end && *p == '.') {
+      ++p;
+      fraction = read_digits(p, end, mantissa);
+      digits += fraction;
     }
-    if (digits == 0 || digits > max_digits || (p != end && !is_upper(to_upper(*p)))) {
-      prog.words.resize(words_mark);
-      return false;
-    }
+    while (p != end && blank(*p)) ++p;
+    // blanks inside the number, a second point, or what follows not a letter: the general scanner's
+    if (digits == 0 || digits > max_digits || (p != end && letter_index(*p) >= 26)) return give_up();
     w.decimal_point = fraction >= 0;
     w.decimals = static_cast<std::uint8_t>(fraction > 0 ? fraction : 0);
     const double v = fraction > 0 ? scaled_decimal(static_cast<std::int64_t>(mantissa), fraction) : static_cast<double>(mantissa);
     w.value = negative ? -v : v;
-  }
-  if (p != end) {  // O, N or a character of the general scanner's
-    prog.words.resize(words_mark);
-    return false;
+    twice |= letters & (1u << k);
+    letters |= 1u << k;
+    if (k == 'G' - 'A') g_word = true, g_plain = !w.decimal_point && (w.value == 0 || w.value == 1);
+    if (k == 'F' - 'A') negative_feed = negative;
   }
   Block& b = prog.blocks.emplace_back();
   b.kind = Statement::nc;
+  if ((letters & ~kMotionLetters) == 0 && twice == 0 && !negative_feed)
+    b.plain_motion = !g_word ? PlainMotion::modal : g_plain ? PlainMotion::coded : PlainMotion::no;
   b.line = line;
   b.column = first_col;
   b.words_begin = static_cast<std::uint32_t>(words_mark);

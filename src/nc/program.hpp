@@ -46,10 +46,15 @@ struct PrintItem {
   std::uint16_t column = 0;
 };
 
+// A block of nothing but literal X, Y, Z, F (not negative) and G00 or G01, each once: the lane of
+// plain motion (machine/plain_motion.cpp). `modal`: no G word, the motion in force.
+enum class PlainMotion : std::uint8_t { no, modal, coded };
+
 struct Block {
   Statement kind = Statement::empty;
   bool block_skip = false;
   std::uint8_t loop_id = 0;      // m of DO m / END m
+  PlainMotion plain_motion = PlainMotion::no;
   std::uint16_t column = 1;      // first column of the statement
   std::uint32_t line = 0;
   std::int32_t sequence = -1;    // N number

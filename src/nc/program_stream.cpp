@@ -79,7 +79,7 @@ bool ProgramStream::advance() {
   chunks_[k].start.syntax_kept = syntax_->kept;
   std::shared_ptr<Loaded> loaded = read_chunk(k, true);
   const bool ended = frontier_->done || frontier_->offset >= file_->size();
-  after_first_read(k, *loaded, ended);
+  after_first_read(k, loaded, ended);
   if (ended) {
     if (frontier_->done) read_after_end();
     finished_ = true;
@@ -172,7 +172,8 @@ void ProgramStream::keep(std::size_t chunk, std::shared_ptr<Loaded> loaded) {
   if (kept_.size() > kPiecesKept) kept_.pop_back();
 }
 
-void ProgramStream::after_first_read(std::size_t k, Loaded& loaded, bool ended) {
+void ProgramStream::after_first_read(std::size_t k, const std::shared_ptr<Loaded>& held, bool ended) {
+  Loaded& loaded = *held;
   const std::size_t n = loaded.pieces.size();
   for (std::size_t j = 0; j < n; ++j) {
     const PieceRecord r = chunks_[k].pieces[j];
@@ -215,7 +216,7 @@ void ProgramStream::after_first_read(std::size_t k, Loaded& loaded, bool ended) 
   }
   for (std::size_t j = 0; j < n; ++j) patch(chunks_[k].pieces[j].program, *loaded.pieces[j], chunks_[k].pieces[j].first);
   for (const Visitor& v : visitors_)
-    for (std::size_t j = 0; j < n; ++j) v(*programs_[chunks_[k].pieces[j].program].program, *loaded.pieces[j]);
+    for (std::size_t j = 0; j < n; ++j) v(*programs_[chunks_[k].pieces[j].program].program, *loaded.pieces[j], held);
 }
 
 void ProgramStream::close_program(std::int32_t program, bool last) {
@@ -357,7 +358,7 @@ void ProgramStream::visit(Visitor v) {
   for (std::size_t k = 0; k < chunks_.size(); ++k) {
     const std::shared_ptr<Loaded> loaded = load(k);
     for (std::size_t j = 0; j < loaded->pieces.size(); ++j)
-      v(*programs_[chunks_[k].pieces[j].program].program, *loaded->pieces[j]);
+      v(*programs_[chunks_[k].pieces[j].program].program, *loaded->pieces[j], loaded);
   }
   visitors_.push_back(std::move(v));
 }

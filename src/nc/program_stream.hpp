@@ -49,8 +49,8 @@ public:
     }
   }
 
-  // A program and one piece of it, in file order.
-  using Visitor = std::function<void(const Program& program, const Program& piece)>;
+  // A program and one piece of it, in file order; `keep` holds the piece in memory as long as it is held.
+  using Visitor = std::function<void(const Program& program, const Program& piece, const std::shared_ptr<const void>& keep)>;
   // Calls v for every piece read so far (reading again those not in memory), then for each piece read.
   void visit(Visitor v);
   void forget_visitors() { visitors_.clear(); }
@@ -83,7 +83,7 @@ private:
 
   std::shared_ptr<Loaded> load(std::size_t chunk);
   std::shared_ptr<Loaded> read_chunk(std::size_t chunk, bool first);
-  void after_first_read(std::size_t chunk, Loaded& loaded, bool ended);
+  void after_first_read(std::size_t chunk, const std::shared_ptr<Loaded>& loaded, bool ended);
   void patch(std::int32_t program, Program& piece, std::int32_t first) const;
   void patch_alive(std::int32_t program, std::int32_t index);
   void close_program(std::int32_t program, bool last);
