@@ -7,12 +7,14 @@
 //   g.layers[k].pos (X Y Z of both ends per segment), g.first[i], g.segOf[i], g.lo, g.hi, g.toWorld(p, out)
 //   g.frameLo, g.frameHi: the box a view fits, machine X Y Z: the cuts and the rapids near them (not
 //   those to and from a home position far off); the whole box where there are no cuts
+//   NcurveBackplotGeometry.build(moves, also): the boxes widened to hold also's {lo, hi, frameLo,
+//   frameHi} (another run's, drawn with these moves: backplot-compare.js)
 (function (global) {
   'use strict';
   const PLANE_AXES = {17: [0, 1], 18: [2, 0], 19: [1, 2]};
   const HALF_PI = Math.PI / 2;
 
-  function build(moves) {
+  function build(moves, also) {
     const n = moves.count, K = moves.kind, S = moves.start, E = moves.end, A = moves.arcs, AI = moves.arcIndex;
     const RC = moves.rapidCorners || new Map();  // a dog-leg rapid's corners
     // machine X Y Z -> world: a lathe's Z across and X up (a rotation, so arcs keep their sense)
@@ -73,6 +75,7 @@
     if (!(lo[0] <= hi[0])) { lo.fill(0); hi.fill(0); }
     if (Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) < 1e-6)  // no path (an alarm at once): a 10 mm box
       for (let k = 0; k < 3; k++) lo[k] -= 5, hi[k] += 5;
+    if (also) for (let k = 0; k < 3; k++) lo[k] = Math.min(lo[k], also.lo[k]), hi[k] = Math.max(hi[k], also.hi[k]);
     const diag = Math.max(Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
     // no cuts, or cuts along a line or a point only: the frame is the whole box; else the rapids'
     // ends near the cuts (within a quarter of their diagonal: clearance planes, approaches) join it
@@ -90,6 +93,7 @@
       }
     }
     if (moves.alarmAt) for (let k = 0; k < 3; k++) flo[k] = Math.min(flo[k], moves.alarmAt[k]), fhi[k] = Math.max(fhi[k], moves.alarmAt[k]);
+    if (also) for (let k = 0; k < 3; k++) flo[k] = Math.min(flo[k], also.frameLo[k]), fhi[k] = Math.max(fhi[k], also.frameHi[k]);
     const origin = [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2];
     const P0 = perm[0], P1 = perm[1], P2 = perm[2], O0 = origin[P0], O1 = origin[P1], O2 = origin[P2];
     const toWorld = (m, out) => {  // machine point -> world, relative to the origin

@@ -9,6 +9,8 @@
 //   plot.setView('iso'); plot.highlight([3, 4]); plot.setColors(i => [255, 0, 0]); plot.setTool([x, y, z]); plot.state();
 //   plot.setReference([x0, y0, z0, x1, y1, z1, ...]);  // a curve in grey under the moves
 //   plot.setPart(NcurveBackplot.decodePart(data.part));   // the cut part, shaded, under the moves
+//   options.frame: another box the views fit too ({lo, hi, frameLo, frameHi}, backplot-geometry.js);
+//   plot.addLayer(object3D) draws it with the moves (freed with them), plot.toWorld(p) places it
 //
 // moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32/64Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
@@ -78,7 +80,7 @@
     options = options || {};
     const n = moves.count;
     const worldUp = moves.lathe ? new THREE.Vector3(0, 1, 0) : new THREE.Vector3(0, 0, 1);
-    const G = global.NcurveBackplotGeometry.build(moves);
+    const G = global.NcurveBackplotGeometry.build(moves, options.frame);
     const {lo, hi, diag, origin, perm, toWorld, segOf, first, counts, moveCounts, total, layers} = G;
 
     // one set of lines per kind, in the kind's colour until setColors gives each move its own
@@ -457,6 +459,10 @@
         }
         requestRender();
       },
+      // a three.js object of another file (backplot-compare.js) in the scene; toWorld: where a point of
+      // the machine (X Y Z, X as a radius on a lathe) is in the scene
+      addLayer(object) { scene.add(object); requestRender(); },
+      toWorld: (p) => toWorld(p, [0, 0, 0]),
       // the cut part (decodePart), shaded under the moves; null removes it
       setPart(p) {
         if (part) {

@@ -4,9 +4,10 @@
 //   const colour = NcurveColour.create({select, legend, now() {...}, onColour(info) {}});
 //   colour.apply();          // after a run, a change of tab or of the feeds: colour as the selector says
 //   colour.setMode('deviation');
-// now() tells what is shown: {plot, conv, answer, text, request, profile, debugging, generated}, where
-// generated is {text, tol, ref, dev} while the generated program (or an edit of it) is in the editor
-// on the machine it was generated for, else null.
+// now() tells what is shown: {plot, conv, answer, text, request, profile, debugging, generated,
+// compared}, where generated is {text, tol, ref, dev} while the generated program (or an edit of it)
+// is in the editor on the machine it was generated for, else null, and compared names the run drawn
+// grey under the path (wb-compare.js), else ''.
 (function (global) {
   'use strict';
   const GREY = [178, 184, 192];
@@ -40,6 +41,13 @@
       });
       legend.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves'));
     }
+    // the run compared with (wb-compare.js), drawn grey under the path
+    function comparedLegend(name) {
+      const item = el('span', 'item'), sw = el('span', '');
+      sw.style.cssText = `display:inline-block;width:18px;height:0;border-top:2px solid rgb(${GREY.join(',')})`;
+      item.append(sw, document.createTextNode(`compared: ${name}`));
+      legend.insertBefore(item, legend.querySelector('.hint'));
+    }
     // the generated curve in grey under the path while the generated program is in the editor
     function showReference() {
       const {plot, profile, generated} = now();
@@ -70,12 +78,13 @@
       const s = now();
       if (!s.plot) return;
       kindLegend(s.plot);
-      if (s.debugging) return;
+      if (s.debugging) { if (s.compared) comparedLegend(s.compared); return; }
       let info = {mode, coloured: 0, note: ''};
       if (mode === 'feed') info = byFeed(info, s);
       else if (mode === 'deviation') info = byDeviation(info, s);
       if (!info.scale) s.plot.setColors();
       if (info.scale || info.note) scaleLegend(info);
+      if (s.compared) comparedLegend(s.compared);
       if (options.onColour) options.onColour(info);
     }
     function byFeed(info, {plot, conv, answer, request}) {

@@ -1,7 +1,8 @@
 // The workbench page of `ncurve serve` (docs/serve.md): the editor (wb-editor.js) runs the program
 // through POST /api/run on each edit (quick edits together); the answer's moves go to the backplot
-// (backplot.js), its diagnostics to the editor, its summary to the panel, and its trace to the
-// debugger (wb-debug.js). Every text of the program or the server goes in as textContent.
+// (backplot.js), its diagnostics to the editor, its summary to the panel, its trace to the debugger
+// (wb-debug.js), and what differs from another run to the Compare tab (wb-compare.js). Every text
+// of the program or the server goes in as textContent.
 // window.ncurveWorkbench tells a test what is shown.
 (function () {
   'use strict';
@@ -155,20 +156,8 @@
     const s = answer.summary;
     if (s.alarm) conv.alarmAt = conv.last;
     const t2 = performance.now();
-    let renderer;
-    if (plot) {  // the view kept, but a change to or from a lathe takes the machine's default view
-      viewName = plot.moves.lathe === conv.lathe ? plot.state().view || viewName : '';
-      renderer = plot.dispose({keepRenderer: true});
-    }
-    plot = W.plot = NcurveBackplot.create($('plot'), conv, {
-      renderer,
-      onHover, onClick,
-      view: viewName || undefined,
-      alarmLabel: s.alarm ? `${s.alarm.code} line ${s.alarm.line}` : '',
-    });
-    showPart(answer.part || null, s, Infinity);
+    drawPlot();
     const t3 = performance.now();  // drawn at the next frame
-    buildViews();
     editor.setDiagnostics(answer.diagnostics);
     showDiagnostics();
     showSummary();
@@ -177,6 +166,7 @@
     showLineMoves(editor.cursorLine());
     colour.showReference();
     colour.apply();
+    compare.update(answer, name, conv);
     const t4 = performance.now();
     Object.assign(W.timing, {convert_ms: t2 - t1, draw_ms: t3 - t2, panels_ms: t4 - t3, run_to_drawn_ms: t4 - t0,
       edit_to_drawn_ms: W.timing.edit ? t4 - W.timing.edit : null, drawn_at: t4});
@@ -192,6 +182,39 @@
     else status(`${result} · ${s.motions} motions · ${fmt(W.timing.run_to_drawn_ms, 0)} ms`, s.ok ? 'ok' : 'alarm');
     if (tab === 'analyze') analyze();
   }
+
+  // the plot of the answer's moves, with the compared run under them (wb-compare.js)
+  function drawPlot() {
+    let renderer;
+    if (plot) {  // the view kept, but a change to or from a lathe takes the machine's default view
+      viewName = plot.moves.lathe === conv.lathe ? plot.state().view || viewName : '';
+      renderer = plot.dispose({keepRenderer: true});
+    }
+    const s = answer.summary;
+    plot = W.plot = NcurveBackplot.create($('plot'), conv, {
+      renderer,
+      onHover, onClick,
+      view: viewName || undefined,
+      alarmLabel: s.alarm ? `${s.alarm.code} line ${s.alarm.line}` : '',
+      frame: compare.frame(conv),
+    });
+    compare.drawIn(plot);
+    showPart(answer.part || null, s, Infinity);
+    buildViews();
+  }
+  // the compared run drawn again (shown or hidden, another run): the plot made anew to fit it
+  const compare = NcurveCompare.create({request: programRequest, profile, editor,
+    plot: () => plot,
+    highlight(list) { W.highlighted = list; plot.highlight(list); },
+    onDraw() {
+      if (!answer) return;
+      drawPlot();
+      showLineMoves(editor.cursorLine());
+      colour.showReference();
+      colour.apply();
+      if (tab === 'debug') goTo(W.pos);
+    }});
+  W.compare = compare.state;
 
   function buildViews() {
     const box = $('views');
@@ -471,11 +494,12 @@
   function setTab(t) {
     tab = t;
     for (const b of document.querySelectorAll('.wb-tabs button')) b.classList.toggle('on', b.dataset.tab === t);
-    for (const p of ['summary', 'debug', 'analyze', 'gen', 'settings']) $('tab-' + p).hidden = p !== t;
+    for (const p of ['summary', 'debug', 'analyze', 'gen', 'settings', 'compare']) $('tab-' + p).hidden = p !== t;
     if (!plot) return;
     if (t === 'debug') goTo(W.pos);
     else { colour.apply(); plot.setTool(null); editor.setCurrentLine(0); }
     if (t === 'analyze' && dirtyAnalysis) analyze();
+    if (t === 'compare') compare.shown();
   }
   for (const b of document.querySelectorAll('.wb-tabs button')) b.onclick = () => setTab(b.dataset.tab);
   W.setTab = setTab;
@@ -546,7 +570,8 @@
   const colour = NcurveColour.create({
     select: $('colour'), legend: $('legend'),
     now: () => ({plot, conv, answer, text: editor.text, request: programRequest(), profile: profile(), debugging: tab === 'debug',
-      generated: genRef && name === GENERATED && genRef.machine === $('machine').value ? genRef : null}),
+      generated: genRef && name === GENERATED && genRef.machine === $('machine').value ? genRef : null,
+      compared: W.compare.drawn ? W.compare.label : ''}),
     onColour(info) { W.colour = info; },
   });
   W.setColourMode = colour.setMode;
@@ -648,6 +673,7 @@
       for (const f of fj.files) if (!f.name.endsWith('.setup.toml')) $('file').add(new Option(f.name, f.name));
       if (profile().lathe) example = {name: 'lathe-hyperbola.nc', url: '/assets/example-lathe.nc'};
       const programs = fileNames.filter((n) => !n.endsWith('.setup.toml'));
+      compare.setPrograms(programs);
       if (!programs.length) $('file').add(new Option(`${example.name} (example)`, ''));
       if (saved && typeof saved.text === 'string') await files.restore(saved, programs.length ? programs : ['']);
       else await open(programs.length ? programs[0] : '');
