@@ -38,7 +38,9 @@
         item.append(sw, document.createTextNode(`${nm} ${k[nm]}`));
         legend.append(item);
       });
-      legend.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves'));
+      const holes = plot.state().holes.length;
+      if (holes) legend.append(el('span', 'item holes', `holes ${holes}`));
+      legend.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves · M: measure'));
     }
     // the generated curve in grey under the path while the generated program is in the editor
     function showReference() {

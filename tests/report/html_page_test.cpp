@@ -102,7 +102,7 @@ TEST(HtmlPage, EmbedsThreeJsAndTheScripts) {
   EXPECT_NE(web::asset("backplot.js").find("NcurveBackplot"), std::string_view::npos);
   EXPECT_TRUE(web::asset("nothing.js").empty());
   const Page p = page("G00 X10 Y0\nG01 X20 F100\nM30\n");
-  for (const char* name : {"three.min.js", "OrbitControls.js", "backplot-geometry.js", "backplot-axes.js", "backplot-part.js", "backplot.js",
+  for (const char* name : {"three.min.js", "OrbitControls.js", "backplot-geometry.js", "backplot-axes.js", "backplot-holes.js", "backplot-measure.js", "backplot-part.js", "backplot.js",
                            "run.js", "backplot.css"})
     EXPECT_NE(p.html.find(web::asset(name)), std::string::npos) << name;
   // offline: no address to load anything from
