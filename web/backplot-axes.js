@@ -15,7 +15,6 @@
 (function (global) {
   'use strict';
   const THREE = global.THREE;
-  const MARK_GAP = 8;  // the least distance between tick marks on the screen, px
 
   // 1, 2 or 5 times a power of ten, near span / count
   function niceStep(span, count) {
@@ -254,8 +253,8 @@
                 }
               }
             }
-            // marks at a fifth or half of the step where they are MARK_GAP px apart
-            const minor = [step / 5, step / 2, step].find((m) => m * ppv >= MARK_GAP);
+            // marks at a fifth or a half of the step where they are 14 px apart (not a comb)
+            const minor = [step / 5, step / 2, step].find((m) => m * ppv >= 14);
             marks = multiples(visLo, visHi, minor);
           }
         }

@@ -180,9 +180,9 @@ TEST(HtmlPage, HostileCommentStaysText) {
   const std::string hostile = "(</script><script>alert(1)</script>)";
   const Page p = page("G00 X1 Y1\nG00 X2 " + hostile + "\nM30\n");
   EXPECT_EQ(p.ran.alarm_code(), "PS0009");
-  // the page's own nine scripts (two data blocks, seven programs), and no other
-  EXPECT_EQ(count(p.html, "<script"), 9u);
-  EXPECT_EQ(count(p.html, "</script"), 9u);
+  // the page's own eleven scripts (two data blocks, nine programs), and no other
+  EXPECT_EQ(count(p.html, "<script"), 11u);
+  EXPECT_EQ(count(p.html, "</script"), 11u);
   EXPECT_EQ(p.html.find("<script>alert"), std::string::npos);
   // the text itself is there, escaped, and reads back unchanged
   EXPECT_EQ(p.data["alarm"]["block"], "G00 X2 " + hostile);
