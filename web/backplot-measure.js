@@ -132,13 +132,13 @@
           : toMachine([0, 1, 2].map((c) => P[v + c] + (P[v + 3 + c] - P[v + c]) * t));
         return {at, snap: 'on', move: i, arc};
       }
-      // off the path: in a view along a world axis, the point of its plane (at the other point's
-      // depth, else machine 0 kept within the path's box); in any other view, nothing
+      // off the path: in a view along a world axis, the point of its plane (at the first point's
+      // depth, else at 0); in any other view, nothing
       const axis = [view.x, view.y, view.z].findIndex((c) => Math.abs(c) > 0.999);
       if (axis < 0) return null;
       const p = new THREE.Vector3(x / canvas.clientWidth * 2 - 1, 1 - y / canvas.clientHeight * 2, 0).unproject(camera).toArray();
       const m = perm[axis];
-      const depth = points.length === 1 ? points[0].at[m] : Math.min(Math.max(0, G.frameLo[m]), G.frameHi[m]);
+      const depth = points.length === 1 ? points[0].at[m] : 0;
       p[axis] = depth - origin[m];
       // the point of the plane to within a pixel: rounded (as shown) to the power of ten under a pixel's size
       const at = toMachine(p), px = (camera.right - camera.left) / camera.zoom / canvas.clientWidth;
@@ -147,7 +147,7 @@
         const f = shown(a, 1), g = Math.pow(10, Math.floor(Math.log10(px * f)));
         at[a] = Math.round(at[a] * f / g) * g / f;
       }
-      return {at, snap: 'plane', move: -1, arc: null, plane: m};
+      return {at, snap: 'plane', move: -1, arc: null, plane: m, depthFrom: points.length === 1 ? 'as point 1' : 'at 0'};
     };
 
     // the readout, three lines at most: the distance and its components (else what to do), then
@@ -177,7 +177,7 @@
       head.appendChild(close);
       points.forEach((p, k) => {
         const how = p.snap === 'end' ? `end of ${where(p.move)}` : p.snap === 'on' ? `on ${where(p.move)}`
-          : `in the view's plane (${name(p.plane)} not on the path)`;
+          : `off the path, in the view's plane (${name(p.plane)} ${p.depthFrom})`;
         const r = p.arc, arc = r ? ` · arc radius ${len(Math.hypot(p.at[r.p] - r.c[r.p], p.at[r.q] - r.c[r.q]))}, centre ${coords(r.c)}` : '';
         row('point', `${k + 1}: ${coords(p.at)} · ${how}${arc}`);
       });

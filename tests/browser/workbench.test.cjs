@@ -4,7 +4,9 @@
 // against the run's count, an error typed in the editor marked at its line, stepping the debugger
 // forward and back with #104 changing, a watchpoint on #104 stopped on (variables the control has
 // not refused), a move clicked landing on its line; the machine that of `ncurve run` without
-// --machine; at 1000 x 700 the axes readable in every view; an empty editor calm. Screenshots go to
+// --machine; at 1000 x 700 the axes readable in every view; Measure on a program of hand-known
+// points (ends, an arc's radius and centre, the view's plane, iso) at 1024 x 768 and 1920 x 1080;
+// axis numbers zoomed in and out; the holes of a G81 pattern; an empty editor calm. Screenshots go to
 // OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {execFileSync} = require('child_process');
@@ -238,7 +240,7 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     // off the path in the top view: the point of the XY plane under the pointer (at the first point's Z)
     await clickAt([0, 0, -1]);
     text = await clickAt([10, 30, -1]);
-    check(/2: X10 Y30 Z-1 · in the view's plane/.test(text) && /distance 31\.623/.test(text), `off the path, the plane's point: ${JSON.stringify(text)}`);
+    check(/2: X10 Y30 Z-1 · off the path, in the view's plane \(Z as point 1\)/.test(text) && /distance 31\.623/.test(text), `off the path, the plane's point: ${JSON.stringify(text)}`);
     // iso: on the path only; the top of the plunge (X0 Y0 Z5) apart from its foot
     await page.evaluate(() => { ncurveWorkbench.plot.setView('iso'); ncurveWorkbench.plot.render(); });
     await clickAt([0, 0, 5]);
