@@ -234,20 +234,20 @@
           if (!along) visLo = Math.max(visLo, R.v0), visHi = Math.min(visHi, R.v1);
           if (visLo <= visHi) {
             // the step: the numbers 48 px apart at least, and as far apart as their text needs
-            const along = (st) => {
+            const room = (st) => {
               const chars = Math.max(...[visLo, visHi].map((v) => formatNumber(Math.round(v / st) * st, st).length));
               return Math.max(48, Math.abs(d[0]) * chars * charW + Math.abs(d[1]) * NUMBER_H + 12);
             };
             step = stepAtLeast(48 / ppv);
-            for (let g = 0; g < 8 && step * ppv < along(step); g++) step = stepAtLeast(step * 1.5);
+            for (let g = 0; g < 8 && step * ppv < room(step); g++) step = stepAtLeast(step * 1.5);
             values = multiples(visLo, visHi, step);
             // fewer than two: the two multiples of a finer step nearest the ends, if far enough apart
             if (values.length < 2) {
               for (let st = stepAtLeast(step / 2.5), g = 0; g < 4; st = stepAtLeast(st / 2.5), g++) {
                 const m = multiples(visLo, visHi, st);
-                if (m.length >= 2 && (m[m.length - 1] - m[0]) * ppv >= along(st)) {
+                if (m.length >= 2 && (m[m.length - 1] - m[0]) * ppv >= room(st)) {
                   values = [m[0], ...values.filter((v) => v - m[0] > 0.5 * st && m[m.length - 1] - v > 0.5 * st &&
-                    Math.min(v - m[0], m[m.length - 1] - v) * ppv >= along(st)), m[m.length - 1]];
+                    Math.min(v - m[0], m[m.length - 1] - v) * ppv >= room(st)), m[m.length - 1]];
                   step = st;
                   break;
                 }
