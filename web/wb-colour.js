@@ -39,7 +39,12 @@
         legend.append(item);
       });
       const holes = plot.state().holes.length;
-      if (holes) legend.append(el('span', 'item holes', `holes ${holes}`));
+      if (holes) {  // the markers' ring and cross
+        const item = el('span', 'item holes'), sw = el('span', '', '⊕');
+        sw.style.cssText = 'font-size:15px;line-height:1;margin-right:4px';
+        item.append(sw, document.createTextNode(`holes ${holes}`));
+        legend.append(item);
+      }
       legend.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves · M: measure'));
     }
     // the generated curve in grey under the path while the generated program is in the editor

@@ -321,7 +321,7 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     const holes = await page.evaluate(() => ({list: ncurveWorkbench.plot.state().holes,
       legend: document.querySelector('#legend .holes') && document.querySelector('#legend .holes').textContent}));
     const expected = [10, 20, 30, 40, 50, 60].map((x) => [x, 10, 2]);
-    check(JSON.stringify(holes.list) === JSON.stringify(expected) && holes.legend === 'holes 6',
+    check(JSON.stringify(holes.list) === JSON.stringify(expected) && holes.legend === '⊕holes 6',
           `holes marked at ${JSON.stringify(holes.list)} (the R plane, Z2), legend "${holes.legend}"`);
     // a marker drawn at each: a dark pixel at the hole's centre in the top view, none between two
     await page.mouse.move(5, 5);
