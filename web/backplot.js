@@ -1,8 +1,8 @@
 // ncurve's 3D backplot: the moves of a run as GPU line segments (one BufferGeometry per kind of
 // move), orbit / pan / zoom, standard views, axes with ticks (backplot-axes.js), hover and click on a move. Used by
 // the page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js,
-// OrbitControls (Debian's libjs-three, release 111), backplot-geometry.js and backplot-axes.js
-// loaded first, and backplot-part.js for setPart.
+// OrbitControls (Debian's libjs-three, release 111), backplot-geometry.js, backplot-axes.js,
+// backplot-holes.js and backplot-measure.js loaded first, and backplot-part.js for setPart.
 //
 //   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
 //   const plot = NcurveBackplot.create(container, moves, {onHover(i) {}, onClick(i) {}});
@@ -11,6 +11,7 @@
 //   plot.setPart(NcurveBackplot.decodePart(data.part));   // the cut part, shaded, under the moves
 //   options.frame: another box the views fit too ({lo, hi, frameLo, frameHi}, backplot-geometry.js);
 //   plot.addLayer(object3D) draws it with the moves (freed with them), plot.toWorld(p) places it
+//   plot.measure.set(true);  // the Measure tool (backplot-measure.js); options.measureWhere(i) names a move
 //
 // moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32/64Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
@@ -299,7 +300,17 @@
       const c = renderer.domElement;
       return [(v3.x + 1) / 2 * c.clientWidth, (1 - v3.y) / 2 * c.clientHeight];
     };
-    const placeLabels = () => axes.place(project, renderer.domElement.clientWidth, renderer.domElement.clientHeight);
+    const look = new THREE.Vector3();
+    const placeLabels = () => {
+      camera.getWorldDirection(look);
+      const along = Math.max(Math.abs(look.x), Math.abs(look.y), Math.abs(look.z)) > 0.999;
+      axes.place(project, renderer.domElement.clientWidth, renderer.domElement.clientHeight, along);
+    };
+    // the drilled holes marked (backplot-holes.js); the Measure tool (backplot-measure.js)
+    const holes = global.NcurveBackplotHoles.create({scene, moves, geometry: G});
+    const measure = global.NcurveBackplotMeasure.create({scene, container, canvas: renderer.domElement, camera, moves, geometry: G,
+      where: options.measureWhere || ((i) => `move ${i + 1}`), requestRender});
+    if (options.measure) measure.set(true);
 
     let pending = false;
     function requestRender() {
@@ -334,9 +345,11 @@
         sun.target.position.copy(controls.target);
         sun.target.updateMatrixWorld();
       }
+      // the labels first: they set the tick marks and the grid this frame draws
+      camera.updateMatrixWorld();
+      placeLabels();
       renderer.setRenderTarget(null);
       renderer.render(scene, camera);
-      placeLabels();
       if (api.onRender) api.onRender();
       if (preview) {
         preview = false;
@@ -390,7 +403,9 @@
     const el = renderer.domElement;
     listen(el, 'pointerdown', (e) => { down = [e.clientX, e.clientY]; setHover(-1); });
     listen(el, 'pointerup', (e) => {
-      if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4 && api.onClick) api.onClick(pick(e.clientX, e.clientY));
+      const still = down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4;
+      if (still && measure.on) measure.click(e.clientX, e.clientY);
+      else if (still && api.onClick) api.onClick(pick(e.clientX, e.clientY));
       down = null;
     });
     listen(el, 'pointermove', (e) => {
@@ -401,6 +416,7 @@
       global.requestAnimationFrame(() => { pickQueued = false; setHover(pick(lastPointer[0], lastPointer[1])); });
     });
     listen(el, 'pointerleave', () => setHover(-1));
+    listen(document, 'keydown', (e) => measure.key(e));
     // the container's own size, not the window's: a page around it may grow or shrink it (a header
     // wrapping onto two lines) and a canvas left bigger is cut off at the container's edge
     const sizeWatch = global.ResizeObserver ? new global.ResizeObserver(() => resize()) : null;
@@ -411,7 +427,7 @@
       onHover: options.onHover || null,
       onClick: options.onClick || null,
       onRender: null,
-      moves, camera, controls, renderer,
+      moves, camera, controls, renderer, measure,
       setView, fit: () => setView(viewName || lastView), fitAll: () => setView(viewName || lastView, true),
       views: Object.keys(VIEWS),
       pick,
@@ -525,6 +541,7 @@
           view: viewName, hovered, coarse,
           // on the canvas: each axis's tick marks and numbers shown, and the axis names (centre, size)
           axes: axes.shown(),
+          holes: holes.list(),  // the drilled holes marked: machine X Y Z of each hole's top
           reference: reference ? reference.geometry.attributes.position.count : 0,
           part: part ? part.geometry.index.count / 3 : 0,
           partDeviation: part ? part.userData.deviated : null,  // {within, gouge, left}: grid points coloured
@@ -545,6 +562,7 @@
             if (o.material) o.material.dispose();
           });
         pickTarget.dispose();
+        measure.dispose();
         container.removeChild(overlay);
         if (keep) return renderer;
         renderer.dispose();

@@ -115,10 +115,15 @@
     box.append(el('div', 'what', `move ${i + 1} of ${moves.count} · ${KIND_TEXT[k]}${feed} · to ${end}`));
   };
   const alarmLabel = data.alarm ? `${data.alarm.code} line ${data.alarm.line}` : '';
+  // a move's block as the Measure readout names it: its N number, file and line
+  const whereOf = (i) => {
+    const b = blockOf(i), nr = /^\s*(?:\/\d?\s*)?N(\d+)/i.exec(blockText(b.file, b.line));
+    return `${nr ? `block N${nr[1]} ` : ''}${files.length > 1 ? `${fileName(b.file)} ` : ''}line ${b.line}`;
+  };
   let plot;
   try {
     plot = NcurveBackplot.create(container, moves, {
-      alarmLabel,
+      alarmLabel, measureWhere: whereOf,
       onHover(i) {
         if (i < 0) { tip.hidden = true; return; }
         describe(tip, i);
@@ -166,7 +171,7 @@
   all.type = 'button';
   all.title = 'every move in the current view, the rapids to and from home too';
   all.addEventListener('click', () => plot.fitAll());
-  views.append(fit, all);
+  views.append(fit, all, plot.measure.button());
   plot.onRender = () => {
     const v = plot.state().view;
     for (const [name, b] of Object.entries(buttons)) b.classList.toggle('active', name === v);
@@ -186,6 +191,8 @@
   swatch(`<line x1="1" y1="6" x2="27" y2="6" stroke="${hex(C[1])}" stroke-width="2"/>`, `feed ${kinds.feed}`);
   swatch(`<line x1="1" y1="6" x2="27" y2="6" stroke="${hex(C[2])}" stroke-width="2"/>`, `arc ${kinds.arc}`);
   swatch('<circle cx="14" cy="6" r="4" fill="#111"/>', 'start');
+  const holes = plot.state().holes.length;
+  if (holes) swatch('<circle cx="14" cy="6" r="4.5" fill="none" stroke="#212121" stroke-width="1.5"/><path d="M14 0v12M8 6h12" stroke="#212121" stroke-width="1.5"/>', `holes ${holes}`);
   if (data.part) swatch('<rect x="2" y="1" width="24" height="10" fill="#d6d9de" stroke="#80858f"/>', 'part (cut stock)');
   if (data.part && data.part.deviation) {  // its walls against the design's curve
     const D = NcurveBackplot.DEVIATION_COLOURS, rgb = (c) => hex(c.map((v) => Math.round(255 * v)));
@@ -196,7 +203,7 @@
   }
   if (data.alarm) swatch('<path d="M9 1l10 10M19 1L9 11" stroke="#d50000" stroke-width="2.5"/>', 'alarm');
   swatch('<line x1="1" y1="6" x2="27" y2="6" stroke="#d81b60" stroke-width="2"/>', 'selected block');
-  legend.append(el('span', 'hint', 'drag: rotate · right-drag or shift-drag: pan · wheel: zoom · click a move: its block'));
+  legend.append(el('span', 'hint', 'drag: rotate · right- or shift-drag: pan · wheel: zoom · click: a block · M: measure'));
 
   plot.render();
   const tDrawn = performance.now();

@@ -39,7 +39,14 @@
         item.append(sw, document.createTextNode(`${nm} ${k[nm]}`));
         legend.append(item);
       });
-      legend.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves'));
+      const holes = plot.state().holes.length;
+      if (holes) {  // the markers' ring and cross
+        const item = el('span', 'item holes'), sw = el('span', '', '⊕');
+        sw.style.cssText = 'font-size:15px;line-height:1;margin-right:4px';
+        item.append(sw, document.createTextNode(`holes ${holes}`));
+        legend.append(item);
+      }
+      legend.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves · M: measure'));
     }
     // the run compared with (wb-compare.js), drawn grey under the path
     function comparedLegend(name) {

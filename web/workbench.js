@@ -13,7 +13,7 @@
   const W = window.ncurveWorkbench = {ready: false, runs: 0, refusals: 0, moveCount: 0, diagnostics: [], timing: {}, pos: 0, error: null,
     // what is shown is the run of the text in the editor, and no run is waiting
     settled: () => W.shownText === editor.text && !timer};
-  let profiles = [], answer = null, conv = null, plot = null, trace = null, mainFile = 0, viewName = '';
+  let profiles = [], answer = null, conv = null, plot = null, trace = null, mainFile = 0, viewName = '', measuring = false;
   const breakpoints = new Set(), watches = [];
   let tab = 'summary', name = 'program.nc', dirtyAnalysis = true;
 
@@ -188,12 +188,14 @@
     let renderer;
     if (plot) {  // the view kept, but a change to or from a lathe takes the machine's default view
       viewName = plot.moves.lathe === conv.lathe ? plot.state().view || viewName : '';
+      measuring = plot.measure.on;  // the Measure tool stays on, its points go with the old path
+      $('hover').hidden = true;  // the old path's
       renderer = plot.dispose({keepRenderer: true});
     }
     const s = answer.summary;
     plot = W.plot = NcurveBackplot.create($('plot'), conv, {
       renderer,
-      onHover, onClick,
+      onHover, onClick, measure: measuring, measureWhere: whereOf,
       view: viewName || undefined,
       alarmLabel: s.alarm ? `${s.alarm.code} line ${s.alarm.line}` : '',
       frame: compare.frame(conv),
@@ -233,7 +235,7 @@
     const all = el('button', '', 'Fit all');
     all.title = 'every move in the current view, the rapids to and from home too';
     all.onclick = () => { plot.fitAll(); mark(); };
-    box.append(fit, all);
+    box.append(fit, all, plot.measure.button());
     plot.controls.addEventListener('change', mark);
     mark();
   }
@@ -273,6 +275,11 @@
     let text = conv.lathe ? `X${fmt(conv.diameter ? 2 * e[0] : e[0])} Z${fmt(e[2])}` : `X${fmt(e[0])} Y${fmt(e[1])} Z${fmt(e[2])}`;
     conv.rotary.forEach((r, k) => { text += ` ${r.axis}${fmt(conv.rotaryEnd[k * conv.count + i])}`; });
     return text;
+  }
+  // a move's block as the Measure readout names it: its N number, file (if not the program's) and line
+  function whereOf(i) {
+    const f = conv.file[i], line = conv.line[i], nr = f === mainFile ? /^\s*(?:\/\d?\s*)?N(\d+)/i.exec(editor.lineText(line)) : null;
+    return `${nr ? `block N${nr[1]} ` : ''}${f === mainFile ? '' : `${answer.files[f] || '?'} `}line ${line}`;
   }
   function onClick(i) {
     W.clicked = i;

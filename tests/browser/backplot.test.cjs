@@ -2,7 +2,7 @@
 //   node backplot.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
 // Opens the pages of shipped examples and checks what is drawn: the number of moves against the
 // run's, a WebGL canvas that is not blank (pixels of a screenshot), the block shown when hovering
-// a move, the view buttons, the alarm, a rotary axis's range and ends, a lathe's axes, a hostile
+// a move, the view buttons, the alarm, a rotary axis's range and ends, a lathe's axes and centre hole, a hostile
 // comment kept as text. Screenshots go to OUT_DIR for a person to look at. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {execFileSync} = require('child_process');
@@ -358,6 +358,12 @@ async function lonelyMove(page, motions, kind) {
             `lathe: arcs drawn as arcs (${B.kinds.arc} arcs, ${B.segments.arc} segments)`);
       const names = await page.$$eval('.ncurve-label.axis-name', (l) => l.filter((e) => e.style.display !== 'none').map((e) => e.textContent));
       check(names.includes('Z, mm') && names.includes('X (diameter), mm'), `lathe: axes ${JSON.stringify(names)}`);
+      // the centre hole (G00 X0 Z3., G74 Z-20.) is the one hole, marked at X0 Z3; the roughing passes
+      // along Z (off the axis) are none
+      const holes = await page.evaluate(() => ({list: window.ncurveBackplot.plot.state().holes,
+        legend: document.getElementById('legend').textContent}));
+      check(JSON.stringify(holes.list) === '[[0,0,3]]' && holes.legend.includes('holes 1'),
+            `lathe: the G74 centre hole marked at X0 Z3 (${JSON.stringify(holes.list)}), counted in the legend`);
       await page.screenshot({path: path.join(out, 'browser_lathe.png')});
       check(errors.length === 0, `lathe: no script errors (${errors.join('; ')})`);
       await page.close();

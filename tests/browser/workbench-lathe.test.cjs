@@ -242,6 +242,24 @@ async function latheExample(context) {
     await page.keyboard.press('Shift+F10');
     w = await W();
     check(w.reads['#4001'] === undefined && w.reads['#5002'] === -10, 'one block back: #4001 not read yet');
+    // Measure in the ZX view, X as the profile programs it (a diameter): X⌀40 Z5 to X⌀30 Z-10 is
+    // ΔX⌀ -10 ΔZ -15, a true distance of sqrt(5^2 + 15^2) = 15.811; the G02 X40. Z-15. R5. from X⌀30
+    // Z-10 turns clockwise seen from +Y (Z right, X up) about X⌀40 Z-10
+    await page.evaluate(() => { ncurveWorkbench.plot.setView('zx'); ncurveWorkbench.plot.render(); });
+    await page.click('#views button:text-is("Measure")');
+    const measure = async (m) => {
+      const at = await page.evaluate((m) => ncurveWorkbench.plot.screenOfPoint(m), m);
+      await page.mouse.click(at.x, at.y);
+      return page.evaluate(() => document.querySelector('#plot .ncurve-measure').innerText);
+    };
+    await measure([20, 0, 5]);
+    let said = await measure([15, 0, -10]);
+    check(/1: X⌀40 Z5 · end of line 1/.test(said) && /2: X⌀30 Z-10 · end of line 4/.test(said) && /distance 15\.811 mm/.test(said) &&
+          /ΔX⌀ -10\.000\s+ΔZ -15\.000/.test(said) && !/Y/.test(said), `lathe Measure, X a diameter: ${JSON.stringify(said)}`);
+    said = await measure([20, 0, -15]);
+    check(/1: X⌀40 Z-15 · end of line 6 · arc radius 5\.000, centre X⌀40 Z-10/.test(said), `the arc's radius and centre: ${JSON.stringify(said)}`);
+    await page.screenshot({path: path.join(out, 'workbench-lathe-measure.png')});
+    await page.keyboard.press('Escape');
     // a watchpoint on #5002, a variable read: stops where a read gets a new value (5 after line 3,
     // -10 after line 5), not at a block that reads nothing new
     await page.fill('#watch-var', '#5002');

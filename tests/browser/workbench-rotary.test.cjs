@@ -54,15 +54,17 @@ const loopLine = lines.findIndex((l) => l.startsWith('G01 X[#101*SIN[#102*#1]] A
           `the hover text gives the move's end with its A: "${tip}"`);
     await page.screenshot({path: path.join(out, 'workbench-rotary.png')});
     await page.evaluate(() => ncurveWorkbench.plot.hover(-1));
-    // X runs -9.994 ... 9.994, ticks -8 ... 8 every 2, too close in the iso view to number each: with
-    // only 0 a round 10, the ends are numbered too, -8 and 8
+    // X runs -9.994 ... 9.994: in the iso view numbered at a 1, 2 or 5 x 10^n step within that range,
+    // 0 among them, at least three
     const xs = await page.evaluate(() => {
       const B = ncurveWorkbench.plot;
       B.setView('iso');
       B.render();
-      return [...document.querySelectorAll('.ncurve-label.tick-x')].filter((e) => e.style.display !== 'none').map((e) => e.textContent);
+      return [...document.querySelectorAll('.ncurve-label.tick-x')].filter((e) => e.style.display !== 'none').map((e) => Number(e.textContent));
     });
-    check(xs.join(' ') === '-8 0 8', `the X axis numbered -8, 0, 8 in the iso view: ${xs.join(' ')}`);
+    const step = xs[1] - xs[0], decade = step / Math.pow(10, Math.floor(Math.log10(step) + 1e-9));
+    check(xs.length >= 3 && xs.includes(0) && xs.every((v, i) => Math.abs(v - (xs[0] + i * step)) < 1e-9 && Math.abs(v) <= 9.994) &&
+          [1, 2, 5].some((d) => Math.abs(decade - d) < 1e-9), `the X axis numbered ${xs.join(' ')} in the iso view (step ${step})`);
 
     // a program that leaves A at 0: nothing said of it
     const before = await page.evaluate(() => ncurveWorkbench.runs);

@@ -4,7 +4,9 @@
 // against the run's count, an error typed in the editor marked at its line, stepping the debugger
 // forward and back with #104 changing, a watchpoint on #104 stopped on (variables the control has
 // not refused), a move clicked landing on its line; the machine that of `ncurve run` without
-// --machine; at 1000 x 700 the axes readable in every view; an empty editor calm. Screenshots go to
+// --machine; at 1000 x 700 the axes readable in every view; Measure on a program of hand-known
+// points (ends, an arc's radius and centre, the view's plane, iso) at 1024 x 768 and 1920 x 1080;
+// axis numbers zoomed in and out; the holes of a G81 pattern; an empty editor calm. Screenshots go to
 // OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {execFileSync} = require('child_process');
@@ -195,6 +197,159 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     await axesLook('100 x 60 x 2.5 mm');
     await page.evaluate(() => ncurveWorkbench.plot.setView('iso'));
     await page.screenshot({path: path.join(out, 'workbench-axes-flat.png')});
+    // Measure, on a program of hand-known points: the line X0 Y0 -> X30 Y40 is 50 long (30, 40, 0);
+    // the arc G2 X50 Y60 R20 from X30 Y40 has its centre at X50 Y40 and its middle at 135 degrees,
+    // X50-20cos45 Y40+20sin45, 2*20*sin(22.5) = 15.307 from its end
+    before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', 'G17 G90 G21 G0 X0 Y0 Z5.\nG1 Z-1. F100.\nG1 X30. Y0\nN40 G1 X30. Y40.\nG2 X50. Y60. R20.\nM30\n');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    const readout = () => page.evaluate(() => {
+      const p = document.querySelector('#plot .ncurve-measure');
+      return p && !p.hidden ? p.innerText : '';
+    });
+    // a click at machine point m as the view shows it (on the canvas, not under the readout or
+    // another box); the readout after it
+    const hidden = [];
+    const clickAt = async (m) => {
+      const at = await page.evaluate((m) => {
+        const p = ncurveWorkbench.plot.screenOfPoint(m);
+        return Object.assign(p, {canvas: document.elementFromPoint(p.x, p.y) === ncurveWorkbench.plot.renderer.domElement});
+      }, m);
+      if (!at.canvas) hidden.push(m);
+      await page.mouse.click(at.x, at.y);
+      return readout();
+    };
+    const fitTop = () => page.evaluate(() => { ncurveWorkbench.plot.setView('top'); ncurveWorkbench.plot.render(); });
+    await page.setViewportSize({width: 1024, height: 768});
+    await page.waitForTimeout(200);
+    await fitTop();
+    await page.click('#views button:text-is("Measure")');
+    check(/click a point of the path/.test(await readout()) && await page.evaluate(() => ncurveWorkbench.plot.measure.on),
+          'the Measure button opens the readout');
+    await clickAt([0, 0, -1]);
+    let text = await clickAt([30, 40, -1]);
+    check(/distance 50\.000 mm/.test(text) && /ΔX 30\.000\s+ΔY 40\.000\s+ΔZ 0\.000/.test(text) && /1: X0 Y0 Z-1 · end of line 2/.test(text) &&
+          /2: X30 Y40 Z-1 · end of block N40 line 4/.test(text), `top view: X0 Y0 to X30 Y40, ends snapped: ${JSON.stringify(text)}`);
+    const mid = [50 - 20 * Math.SQRT1_2, 40 + 20 * Math.SQRT1_2, -1];
+    text = await clickAt(mid);
+    check(/1: X35\.858 Y54\.142 Z-1 · on line 5 · arc radius 20\.000, centre X50 Y40 Z-1/.test(text) && !/distance/.test(text),
+          `a third click starts again, on the arc: its radius and centre: ${JSON.stringify(text)}`);
+    text = await clickAt([50, 60, -1]);
+    check(/distance 15\.307 mm/.test(text), `from the arc's middle to its end 15.307: ${JSON.stringify(text)}`);
+    await page.screenshot({path: path.join(out, 'workbench-measure-1024.png')});
+    // off the path in the top view: the point of the XY plane under the pointer (at the first point's Z)
+    await clickAt([0, 0, -1]);
+    text = await clickAt([10, 30, -1]);
+    check(/2: X10 Y30 Z-1 · off the path, in the view's plane \(Z as point 1\)/.test(text) && /distance 31\.623/.test(text), `off the path, the plane's point: ${JSON.stringify(text)}`);
+    // iso: on the path only; the top of the plunge (X0 Y0 Z5) apart from its foot
+    await page.evaluate(() => { ncurveWorkbench.plot.setView('iso'); ncurveWorkbench.plot.render(); });
+    await clickAt([0, 0, 5]);
+    text = await clickAt([30, 40, -1]);
+    check(/distance 50\.359 mm/.test(text) && /ΔZ -6\.000/.test(text), `iso: X0 Y0 Z5 to X30 Y40 Z-1 (sqrt(2536) = 50.359): ${JSON.stringify(text)}`);
+    const empty = await page.evaluate(() => { const r = ncurveWorkbench.plot.renderer.domElement.getBoundingClientRect(); return {x: r.right - 40, y: r.top + r.height / 2}; });
+    await page.mouse.click(empty.x, empty.y);
+    check(/no move under the pointer/.test(await readout()), 'iso: a click off the path picks nothing');
+    await page.evaluate(() => document.activeElement && document.activeElement.blur());
+    await page.keyboard.press('Escape');
+    check(await readout() === '' && !(await page.evaluate(() => ncurveWorkbench.plot.measure.on)), 'Esc leaves Measure');
+    await page.keyboard.press('m');
+    check(/click a point/.test(await readout()), 'the key M opens it again');
+    await page.setViewportSize({width: 1920, height: 1080});
+    await page.waitForTimeout(200);
+    await fitTop();
+    await clickAt([0, 0, -1]);
+    text = await clickAt([30, 40, -1]);
+    check(/distance 50\.000 mm/.test(text), 'at 1920 x 1080 too');
+    await page.mouse.move(5, 5);
+    await page.screenshot({path: path.join(out, 'workbench-measure-1920.png')});
+    check(hidden.length === 0, `every point clicked on the canvas, none under the readout or a box (${JSON.stringify(hidden)})`);
+    await page.keyboard.press('m');
+    await page.setViewportSize({width: 1024, height: 768});
+    await page.waitForTimeout(200);
+
+    // axis numbers at every zoom: 10 wheel notches in over the arc's middle, then 10 out from the
+    // fitted view; each time at least 3 numbers on X and Y, inside the canvas, at a 1, 2 or 5 x 10^n
+    // step, each where its value is on the screen
+    const axisNumbers = () => page.evaluate(() => {
+      const B = ncurveWorkbench.plot;
+      B.render();
+      const c = B.renderer.domElement.getBoundingClientRect(), out = {};
+      for (const [k, axis] of [[0, 'x'], [1, 'y']]) {
+        out[axis] = [...document.querySelectorAll(`#plot .ncurve-label.tick-${axis}`)].filter((e) => e.style.display !== 'none').map((e) => {
+          const r = e.getBoundingClientRect(), v = Number(e.textContent), p = [0, 0, -1];
+          p[k] = v;
+          const at = B.screenOfPoint(p);
+          return {v, inside: r.left >= c.left && r.right <= c.right && r.top >= c.top && r.bottom <= c.bottom,
+            off: k === 0 ? Math.abs((r.left + r.right) / 2 - at.x) : Math.abs((r.top + r.bottom) / 2 - at.y)};
+        });
+      }
+      return out;
+    });
+    const decade = (step) => { const m = step / Math.pow(10, Math.floor(Math.log10(step) + 1e-9)); return [1, 2, 5].some((d) => Math.abs(m - d) < 1e-6); };
+    const numbersOk = (nums, what) => {
+      for (const axis of ['x', 'y']) {
+        const list = nums[axis], steps = list.slice(1).map((e, i) => e.v - list[i].v);
+        const step = steps[0];
+        check(list.length >= 3 && list.every((e) => e.inside && e.off < 2 && Number.isFinite(e.v)) && decade(step) &&
+              steps.every((d) => Math.abs(d - step) < step * 1e-6),
+              `${what}: ${axis.toUpperCase()} numbered ${list.map((e) => e.v).join(' ')} (step ${step}), inside the canvas, each at its value (${Math.max(...list.map((e) => e.off)).toFixed(1)} px off)`);
+      }
+    };
+    await page.evaluate(() => { ncurveWorkbench.plot.setView('top'); ncurveWorkbench.plot.render(); });
+    const over = await page.evaluate((m) => ncurveWorkbench.plot.screenOfPoint(m), mid);
+    await page.mouse.move(over.x, over.y);
+    const zoom = () => page.evaluate(() => ncurveWorkbench.plot.state().camera.zoom);
+    let z0 = await zoom();
+    for (let i = 0; i < 10; i++) await page.mouse.wheel(0, -100);
+    await page.waitForFunction((z) => ncurveWorkbench.plot.state().camera.zoom > z * 6, z0);
+    numbersOk(await axisNumbers(), 'zoomed in 10 notches');
+    await page.screenshot({path: path.join(out, 'workbench-zoomed-in.png')});
+    await page.evaluate(() => { ncurveWorkbench.plot.setView('top'); ncurveWorkbench.plot.render(); });
+    z0 = await zoom();
+    for (let i = 0; i < 10; i++) await page.mouse.wheel(0, 100);
+    await page.waitForFunction((z) => ncurveWorkbench.plot.state().camera.zoom < z / 6, z0);
+    numbersOk(await axisNumbers(), 'zoomed out 10 notches');
+    await page.screenshot({path: path.join(out, 'workbench-zoomed-out.png')});
+
+    // holes: G81 at X10 Y10, X20 Y10, X30 Y10, then G91 X10 K3 on from there: X40, X50, X60 (Y10),
+    // R-8 from the initial Z10 and Z-7 from there keeping point R at Z2; the pocket's entry (a plunge,
+    // then a cut across) is none
+    before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', 'G17 G21 G90 G0 X0 Y0 Z10.\nG1 Z-1. F100.\nX5.\nG0 Z10.\nG99 G81 X10. Y10. Z-5. R2. F100.\nX20.\nX30.\n' +
+      'G91 X10. R-8. Z-7. K3\nG80 G90 G0 Z10.\nM30\n');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    const holes = await page.evaluate(() => ({list: ncurveWorkbench.plot.state().holes,
+      legend: document.querySelector('#legend .holes') && document.querySelector('#legend .holes').textContent}));
+    const expected = [10, 20, 30, 40, 50, 60].map((x) => [x, 10, 2]);
+    check(JSON.stringify(holes.list) === JSON.stringify(expected) && holes.legend === '⊕holes 6',
+          `holes marked at ${JSON.stringify(holes.list)} (the R plane, Z2), legend "${holes.legend}"`);
+    // a marker drawn at each: a dark pixel at the hole's centre in the top view, none between two
+    await page.mouse.move(5, 5);
+    await fitTop();
+    const dark = async (m) => {
+      const at = await page.evaluate((m) => ncurveWorkbench.plot.screenOfPoint(m), m);
+      const png = await page.screenshot({clip: {x: Math.round(at.x) - 1, y: Math.round(at.y) - 1, width: 3, height: 3}});
+      return page.evaluate(async (b64) => {
+        const img = new Image();
+        img.src = 'data:image/png;base64,' + b64;
+        await img.decode();
+        const c = document.createElement('canvas');
+        c.width = c.height = 3;
+        const g = c.getContext('2d');
+        g.drawImage(img, 0, 0);
+        const d = g.getImageData(0, 0, 3, 3).data;
+        let least = 765;
+        for (let i = 0; i < d.length; i += 4) least = Math.min(least, d[i] + d[i + 1] + d[i + 2]);
+        return least;
+      }, png.toString('base64'));
+    };
+    const atHoles = [];
+    for (const h of expected) atHoles.push(await dark(h));
+    const between = await dark([15, 20, 2]);
+    check(atHoles.every((v) => v < 150) && between > 600, `a dark mark on each hole (${atHoles.join(' ')}), none off them (${between})`);
+    await page.screenshot({path: path.join(out, 'workbench-holes.png')});
+    await page.setViewportSize({width: 1000, height: 700});
+
     // the editor cleared: an empty plot and a calm note, no request and no error
     for (const empty of ['', '%\n\n%\n']) {
       before = await page.evaluate(() => ncurveWorkbench.runs);
