@@ -1,7 +1,9 @@
 // The moves of a run as columns (one array per field) for `POST /api/run`: a third of the size of
 // JSON Lines, and what a backplot uploads as it is.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,10 @@ class MoveColumns final : public machine::MoveSink {
 public:
   // Keeps at most `limit` moves (about 60 bytes each); the run's summary counts them all.
   MoveColumns(const machine::MachineProfile& profile, FileTable& files, std::size_t limit);
+  // On a lathe: the imaginary tip's offset from the nose centre (Z, X radius) for the move in hand
+  // (machine::Interpreter::nose_tip_now), which a compensated arc's centre carries; none given, or
+  // moves of the nose centre (nose_centre), the arc's centre is the programmed one.
+  void follow_nose_tip(std::function<std::array<double, 2>()> tip) { nose_tip_ = std::move(tip); }
   void on_move(const machine::Move& m) override;
   std::size_t count() const { return kind_.size(); }
   bool complete() const { return dropped_ == 0; }
@@ -42,6 +48,15 @@ private:
   std::vector<std::uint8_t> plane_, cw_;
   std::vector<std::uint32_t> code_at_;
   std::vector<int> code_;
+  // the programmed contour under cutter / tool-nose radius compensation: the end of each compensated
+  // move as programmed (not the corners compensation inserts) and each such arc's centre and sweep
+  void note_programmed(const machine::Move& m, std::uint32_t index);
+  std::function<std::array<double, 2>()> nose_tip_;
+  machine::AxisVector programmed_now_{};  // where the program has the tool: the start of the next programmed move
+  std::vector<std::uint32_t> programmed_at_;
+  std::vector<double> px_, py_, pz_, psx_, psy_, psz_;
+  std::vector<std::uint32_t> programmed_arc_at_;
+  std::vector<double> pcx_, pcy_, pcz_, psweep_;
   // a dog-leg rapid's corners (non-linear positioning), in order
   const machine::MachineProfile& profile_;
   std::vector<std::uint32_t> corner_at_;
