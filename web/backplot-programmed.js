@@ -6,6 +6,7 @@
 //   programmed: {count, kind (1 line, 2 arc), start, end (X Y Z each), arcIndex, arcs (centre X Y Z,
 //   sweep in radians, plane per arc)}; geometry: the path's (its origin and axes)
 //   layer.dash(worldPerPixel); layer.show(on); layer.points() -> machine X Y Z of each segment's ends
+//   NcurveBackplotProgrammed.decode(data): the contour from `run --html`'s data (docs/html.md)
 (function (global) {
   'use strict';
   const THREE = global.THREE;
@@ -52,5 +53,27 @@
     };
   }
 
-  global.NcurveBackplotProgrammed = {create, COLOUR};
+  // `run --html`'s "programmed" ([motion, start X Y Z, end X Y Z] each) and "programmed_arcs"
+  // ([motion, centre X Y Z, sweep, plane] each) as create takes them
+  function decode(d) {
+    const P = d.programmed || [], A = d.programmed_arcs || [], n = P.length;
+    const c = {count: n, kind: new Uint8Array(n), start: new Float64Array(3 * n), end: new Float64Array(3 * n),
+      arcIndex: new Int32Array(n), arcs: new Float32Array(5 * A.length)};
+    for (let e = 0, a = 0; e < n; e++) {
+      const p = P[e];
+      c.start.set(p.slice(1, 4), 3 * e);
+      c.end.set(p.slice(4, 7), 3 * e);
+      c.kind[e] = 1;
+      c.arcIndex[e] = -1;
+      while (a < A.length && A[a][0] < p[0]) a++;
+      if (a < A.length && A[a][0] === p[0]) {
+        c.arcs.set(A[a].slice(1, 6), 5 * a);
+        c.kind[e] = 2;
+        c.arcIndex[e] = a;
+      }
+    }
+    return c;
+  }
+
+  global.NcurveBackplotProgrammed = {create, decode, COLOUR};
 })(window);

@@ -73,6 +73,7 @@
       alarmAt: d.alarm ? d.alarm.at : null,
       rotary: d.rotary || [],
       rotaryEnd: new Float64Array(bytes(d.rotary_end)),
+      programmed: global.NcurveBackplotProgrammed ? global.NcurveBackplotProgrammed.decode(d) : null,
     };
   }
 

@@ -1,6 +1,5 @@
 #include "serve/move_columns.hpp"
 
-#include <cmath>
 #include <numbers>
 
 #include "machine/rapid_path.hpp"
@@ -27,7 +26,6 @@ void MoveColumns::on_move(const Move& m) {
   const bool placed = m.is_motion() || m.kind == MoveKind::dwell;
   const machine::AxisVector& end = m.end;  // an event's: where the program has the tool
   if (placed && (index == 0 || m.start != last_end_)) {
-    programmed_now_ = m.start;
     start_at_.push_back(index);
     sx_.push_back(frame_.x(m.start[0]));
     sy_.push_back(m.start[1]);
@@ -60,7 +58,7 @@ void MoveColumns::on_move(const Move& m) {
       kz_.push_back(path[k][2]);
     }
   }
-  if (placed) note_programmed(m, index);
+  if (m.is_motion()) note_programmed(m, index);
   if (!placed) {
     code_at_.push_back(index);
     code_.push_back(m.code);
@@ -69,46 +67,22 @@ void MoveColumns::on_move(const Move& m) {
 }
 
 void MoveColumns::note_programmed(const Move& m, std::uint32_t index) {
-  if (m.corner || !m.is_motion()) return;  // a corner has no programmed move of its own
-  const machine::AxisVector start = programmed_now_;
-  programmed_now_ = m.compensated ? m.programmed_end : m.end;
-  // a compensated move, or the one cancelling the offset (from the tool centre to a programmed point)
-  if (!m.compensated && m.start == start) return;
+  const std::array<double, 2> tip = nose_tip_ && profile_.lathe() ? nose_tip_() : std::array<double, 2>{};
+  const auto piece = contour_.on_motion(m, tip);
+  if (!piece) return;
   programmed_at_.push_back(index);
-  px_.push_back(frame_.x(programmed_now_[0]));
-  py_.push_back(programmed_now_[1]);
-  pz_.push_back(programmed_now_[2]);
-  psx_.push_back(frame_.x(start[0]));
-  psy_.push_back(start[1]);
-  psz_.push_back(start[2]);
-  if (!m.compensated) return;
-  if (m.kind != MoveKind::arc) return;
-  // the compensated arc is concentric with the programmed one, moved by the imaginary tip on a lathe
-  std::array<double, 3> c = m.center;
-  if (nose_tip_ && profile_.lathe()) {
-    const auto tip = nose_tip_();
-    c[2] -= tip[0];
-    c[0] -= tip[1];
-  }
-  const machine::PlaneAxes pa = machine::plane_axes(m.plane);
-  const double a0 = std::atan2(start[pa.q] - c[pa.q], start[pa.p] - c[pa.p]);
-  const double a1 = std::atan2(m.programmed_end[pa.q] - c[pa.q], m.programmed_end[pa.p] - c[pa.p]);
-  constexpr double turn = 2 * std::numbers::pi;
-  double sweep = a1 - a0;
-  if (std::fabs(m.sweep) > turn - 1e-9) {
-    sweep = m.sweep > 0 ? turn : -turn;
-  } else if (m.sweep < 0) {
-    while (sweep >= -1e-12) sweep -= turn;
-    while (sweep < -turn) sweep += turn;
-  } else {
-    while (sweep <= 1e-12) sweep += turn;
-    while (sweep > turn) sweep -= turn;
-  }
+  px_.push_back(frame_.x(piece->end[0]));
+  py_.push_back(piece->end[1]);
+  pz_.push_back(piece->end[2]);
+  psx_.push_back(frame_.x(piece->start[0]));
+  psy_.push_back(piece->start[1]);
+  psz_.push_back(piece->start[2]);
+  if (!piece->arc) return;
   programmed_arc_at_.push_back(index);
-  pcx_.push_back(frame_.x(c[0]));
-  pcy_.push_back(c[1]);
-  pcz_.push_back(c[2]);
-  psweep_.push_back(sweep * 180 / std::numbers::pi);
+  pcx_.push_back(frame_.x(piece->centre[0]));
+  pcy_.push_back(piece->centre[1]);
+  pcz_.push_back(piece->centre[2]);
+  psweep_.push_back(piece->sweep * 180 / std::numbers::pi);
 }
 
 void MoveColumns::write_json(Columns& out) const {

@@ -9,6 +9,7 @@
 
 #include "machine/move.hpp"
 #include "machine/profile.hpp"
+#include "report/programmed_contour.hpp"
 #include "report/writers.hpp"
 #include "serve/json_out.hpp"
 
@@ -48,11 +49,10 @@ private:
   std::vector<std::uint8_t> plane_, cw_;
   std::vector<std::uint32_t> code_at_;
   std::vector<int> code_;
-  // the programmed contour under cutter / tool-nose radius compensation: the end of each compensated
-  // move as programmed (not the corners compensation inserts) and each such arc's centre and sweep
+  // the programmed contour under cutter / tool-nose radius compensation (report::ProgrammedContour)
   void note_programmed(const machine::Move& m, std::uint32_t index);
   std::function<std::array<double, 2>()> nose_tip_;
-  machine::AxisVector programmed_now_{};  // where the program has the tool: the start of the next programmed move
+  report::ProgrammedContour contour_;
   std::vector<std::uint32_t> programmed_at_;
   std::vector<double> px_, py_, pz_, psx_, psy_, psz_;
   std::vector<std::uint32_t> programmed_arc_at_;
