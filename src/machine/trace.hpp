@@ -14,8 +14,9 @@ namespace ncurve::machine {
 
 class ExecutionTrace final : public ExecutionObserver {
 public:
-  // The most records kept (executed blocks, variable writes, level entries, modal changes and
-  // system variable reads together, about 32 bytes each): past it the trace stops, whole blocks only, and says so.
+  // The most records kept (executed blocks, variable writes, level entries, modal and tool offset
+  // changes and system variable reads together, about 32 bytes each): past it the trace stops,
+  // whole blocks only, and says so.
   static constexpr std::size_t kDefaultLimit = 2'000'000;
   static constexpr std::size_t kMaxLimit = 20'000'000;
   explicit ExecutionTrace(std::size_t limit = kDefaultLimit) : limit_(limit) {}

@@ -39,7 +39,8 @@ void BackplotData::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
   const std::array<double, 3> a{m.start[0], m.start[1], m.start[2]}, b{m.end[0], m.end[1], m.end[2]};
   other_.add(m);
-  const auto piece = contour_.on_motion(m, nose_tip_ && lathe_ ? nose_tip_() : std::array<double, 2>{});
+  const bool arc = m.compensated && m.kind == machine::MoveKind::arc;  // (the tip matters to it only)
+  const auto piece = contour_.on_motion(m, arc && nose_tip_ && lathe_ ? nose_tip_() : std::array<double, 2>{});
   if (piece && kind_.size() < limit_) {
     const auto at = static_cast<double>(kind_.size());
     programmed_.push_back({at, piece->start[0], piece->start[1], piece->start[2], piece->end[0], piece->end[1], piece->end[2]});

@@ -67,7 +67,9 @@ void MoveColumns::on_move(const Move& m) {
 }
 
 void MoveColumns::note_programmed(const Move& m, std::uint32_t index) {
-  const std::array<double, 2> tip = nose_tip_ && profile_.lathe() ? nose_tip_() : std::array<double, 2>{};
+  // (the tip matters to a compensated arc only)
+  const bool arc = m.compensated && m.kind == MoveKind::arc;
+  const std::array<double, 2> tip = arc && nose_tip_ && profile_.lathe() ? nose_tip_() : std::array<double, 2>{};
   const auto piece = contour_.on_motion(m, tip);
   if (!piece) return;
   programmed_at_.push_back(index);
