@@ -2,7 +2,8 @@
 // move), orbit / pan / zoom, standard views, axes with ticks (backplot-axes.js), hover and click on a move. Used by
 // the page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js,
 // OrbitControls (Debian's libjs-three, release 111), backplot-geometry.js, backplot-axes.js,
-// backplot-holes.js and backplot-measure.js loaded first, and backplot-part.js for setPart.
+// backplot-holes.js and backplot-measure.js loaded first, backplot-part.js for setPart,
+// backplot-programmed.js for moves.programmed and backplot-cutter.js for setCutter.
 //
 //   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
 //   const plot = NcurveBackplot.create(container, moves, {onHover(i) {}, onClick(i) {}});
@@ -12,6 +13,8 @@
 //   options.frame: another box the views fit too ({lo, hi, frameLo, frameHi}, backplot-geometry.js);
 //   plot.addLayer(object3D) draws it with the moves (freed with them), plot.toWorld(p) places it
 //   plot.measure.set(true);  // the Measure tool (backplot-measure.js); options.measureWhere(i) names a move
+//   plot.showProgrammed(false);  // moves.programmed: the programmed contour beside a compensated path
+//   plot.setCutter({centre: [x, y, z], radius: 5, plane: 17, height: 15});  // the tool drawn at a point
 //
 // moves: {count, kind: Uint8Array (0 rapid, 1 feed, 2 arc), start, end: Float32/64Array (X Y Z of
 // each move, X as a radius on a lathe), arcIndex: Int32Array (per move, its arc or -1), arcs:
@@ -19,7 +22,8 @@
 // rapidCorners: Map (a dog-leg rapid's number -> its corners' X Y Z in order; none: a straight rapid),
 // block: Uint32Array (per move, its block), lathe, diameter, inch, plane, alarmAt: [X, Y, Z] | null,
 // rotary: [{axis, unit, min, max}] (the A, B, C axes the run moved, not drawn), rotaryEnd:
-// Float64Array (per rotary axis in turn, its end for each move)}.
+// Float64Array (per rotary axis in turn, its end for each move), programmed (optional: the programmed
+// contour, as backplot-programmed.js takes it)}.
 (function (global) {
   'use strict';
   const THREE = global.THREE;
@@ -72,6 +76,7 @@
       alarmAt: d.alarm ? d.alarm.at : null,
       rotary: d.rotary || [],
       rotaryEnd: new Float64Array(bytes(d.rotary_end)),
+      programmed: global.NcurveBackplotProgrammed ? global.NcurveBackplotProgrammed.decode(d) : null,
     };
   }
 
@@ -162,6 +167,9 @@
     };
 
     let reference = null;  // setReference's line
+    const programmed = global.NcurveBackplotProgrammed
+      ? global.NcurveBackplotProgrammed.create(scene, moves.programmed, G, !!moves.lathe) : null;
+    const cutter = global.NcurveBackplotCutter ? global.NcurveBackplotCutter.create(scene, toWorld) : null;
     let part = null;  // setPart's mesh, and its lights
     const partLights = [new THREE.AmbientLight(0xffffff, 0.55), new THREE.DirectionalLight(0xffffff, 0.55)];
     // the highlighted moves, drawn over the rest
@@ -339,6 +347,7 @@
       lastRender = now;
       const wpp = (camera.top - camera.bottom) / camera.zoom / Math.max(renderer.domElement.clientHeight, 1);
       if (kinds[0]) kinds[0].material.dashSize = 6 * wpp, kinds[0].material.gapSize = 4 * wpp;
+      if (programmed) programmed.dash(wpp);
       if (part) {  // the light from over the viewer's shoulder
         const sun = partLights[1];
         sun.position.copy(camera.position).addScaledVector(camera.up, diag);
@@ -516,6 +525,16 @@
         if (p) api.toolLabel.world.fromArray(toWorld(p, [0, 0, 0]));
         requestRender();
       },
+      // the programmed contour (moves.programmed) shown or not; its drawn segments' ends, machine X Y Z
+      showProgrammed(on) {
+        if (programmed) programmed.show(on), requestRender();
+      },
+      programmedPoints: () => (programmed ? Array.from(programmed.points()) : []),
+      // the tool drawn at a point (backplot-cutter.js), null hides it; its circle's points, machine X Y Z
+      setCutter(spec) {
+        if (cutter) cutter.set(spec), requestRender();
+      },
+      cutterPoints: () => (cutter ? cutter.points() : []),
       // where move i's middle is on the page (client coordinates)
       screenOf(i) {
         const L = layers[moves.kind[i]], s = first[i] + (segOf[i] >> 1), v = 6 * s;
@@ -543,6 +562,8 @@
           axes: axes.shown(),
           holes: holes.list(),  // the drilled holes marked: machine X Y Z of each hole's top
           reference: reference ? reference.geometry.attributes.position.count : 0,
+          programmed: programmed ? {moves: programmed.moves, segments: programmed.segments, visible: programmed.visible} : null,
+          cutter: cutter ? cutter.state() : null,
           part: part ? part.geometry.index.count / 3 : 0,
           partDeviation: part ? part.userData.deviated : null,  // {within, gouge, left}: grid points coloured
           camera: {position: camera.position.toArray(), zoom: camera.zoom, target: controls.target.toArray()},

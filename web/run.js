@@ -202,6 +202,18 @@
     swatch(`<rect x="2" y="1" width="24" height="10" fill="${rgb(D.left)}"/>`, 'short of it (stock left)');
   }
   if (data.alarm) swatch('<path d="M9 1l10 10M19 1L9 11" stroke="#d50000" stroke-width="2.5"/>', 'alarm');
+  // under cutter compensation: the programmed contour beside the tool centre's path, a box to hide it
+  const programmed = plot.state().programmed;
+  if (programmed) {
+    swatch(`<line x1="1" y1="6" x2="27" y2="6" stroke="${hex(NcurveBackplotProgrammed.COLOUR)}" stroke-width="2" stroke-dasharray="4 3"/>`,
+      `programmed ${programmed.moves}`);
+    const box = el('input');
+    box.type = 'checkbox';
+    box.checked = true;
+    box.title = 'the contour as programmed; the path drawn is the tool centre\'s (cutter radius compensation)';
+    box.addEventListener('change', () => plot.showProgrammed(box.checked));
+    legend.lastChild.prepend(box);
+  }
   swatch('<line x1="1" y1="6" x2="27" y2="6" stroke="#d81b60" stroke-width="2"/>', 'selected block');
   legend.append(el('span', 'hint', 'drag: rotate · right- or shift-drag: pan · wheel: zoom · click: a block · M: measure'));
 

@@ -103,6 +103,32 @@
     c.rotary = moved.map((o) => ({axis: o.axis, unit: (p.rotary || '').includes(o.axis) ? 'deg' : 'mm', min: o.min, max: o.max}));
     c.rotaryEnd = new Float64Array(moved.length * n);
     moved.forEach((o, r) => c.rotaryEnd.set(o.end, r * n));
+    c.programmed = programmedForPlot(m, xs);
+    return c;
+  }
+  // the programmed contour under cutter compensation (the answer's "programmed" and "programmed_arcs")
+  // as moves the backplot takes: lines (kind 1) and arcs (kind 2) from each programmed start to end
+  function programmedForPlot(m, xs) {
+    const P = m.programmed, PA = m.programmed_arcs || {index: []};
+    const n = P ? P.index.length : 0;
+    const c = {count: n, kind: new Uint8Array(n), start: new Float64Array(3 * n), end: new Float64Array(3 * n),
+      arcIndex: new Int32Array(n), arcs: new Float32Array(5 * PA.index.length), move: new Uint32Array(n), lathe: false};
+    const AR = m.arcs;
+    for (let e = 0, a = 0, b = 0; e < n; e++) {
+      const i = P.index[e];
+      c.start.set([P.sx[e] * xs, P.sy[e], P.sz[e]], 3 * e);
+      c.end.set([P.x[e] * xs, P.y[e], P.z[e]], 3 * e);
+      c.move[e] = i;
+      c.kind[e] = 1;
+      c.arcIndex[e] = -1;
+      while (a < PA.index.length && PA.index[a] < i) a++;
+      if (a < PA.index.length && PA.index[a] === i) {
+        while (b < AR.index.length && AR.index[b] < i) b++;
+        c.arcs.set([PA.cx[a] * xs, PA.cy[a], PA.cz[a], PA.sweep_deg[a] * Math.PI / 180, AR.plane[b]], 5 * a);
+        c.kind[e] = 2;
+        c.arcIndex[e] = a;
+      }
+    }
     return c;
   }
 

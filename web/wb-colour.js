@@ -46,6 +46,7 @@
         item.append(sw, document.createTextNode(`holes ${holes}`));
         legend.append(item);
       }
+      programmedLegend(plot);
       legend.append(el('span', 'hint', 'click a move: its line · put the cursor on a line: its moves · M: measure'));
     }
     // the run compared with (wb-compare.js), drawn grey under the path
@@ -54,6 +55,22 @@
       sw.style.cssText = `display:inline-block;width:18px;height:0;border-top:2px solid rgb(${GREY.join(',')})`;
       item.append(sw, document.createTextNode(`compared: ${name}`));
       legend.insertBefore(item, legend.querySelector('.hint'));
+    }
+    // under cutter compensation: the programmed contour (dashed) beside the tool centre's path, a box
+    // to hide it
+    let programmedShown = true;
+    function programmedLegend(plot) {
+      const p = plot.state().programmed;
+      if (!p) return;
+      plot.showProgrammed(programmedShown);
+      const item = el('label', 'item wb-programmed'), box = el('input'), sw = el('span', '');
+      box.type = 'checkbox';
+      box.checked = programmedShown;
+      box.onchange = () => { programmedShown = box.checked; plot.showProgrammed(programmedShown); };
+      sw.style.cssText = `display:inline-block;width:18px;height:0;border-top:2px dashed rgb(${NcurveBackplotProgrammed.COLOUR.join(',')})`;
+      item.title = 'the contour as programmed; the path drawn is the tool centre\'s (cutter radius compensation)';
+      item.append(box, sw, document.createTextNode(` programmed ${p.moves}`));
+      legend.append(item);
     }
     // the generated curve in grey under the path while the generated program is in the editor
     function showReference() {
@@ -150,6 +167,7 @@
       scale.append(bar, labels);
       const most = mode === 'deviation' ? `max ${fmt(info.most, 6)} mm` : `highest ${fmt(info.most, 0)} mm/min`;
       legend.append(el('span', 'item', `${S.title}, ${S.unit}`), scale, el('span', 'item', most), el('span', 'hint', info.grey));
+      programmedLegend(now().plot);
     }
     return {apply, setMode, showReference, get mode() { return mode; }};
   }

@@ -4,7 +4,8 @@
 // watched variable), forwards or backwards. No re-run: everything comes from the trace.
 // The system variables the program read are shown with the value each read last.
 //   const t = NcurveTrace.create(trace);  t.at(k) -> {block, line, file, stack, vars, changed, modal, move,
-//                                                     reads, readNow, readChanged}
+//                                                     reads, readNow, readChanged, tool}
+//   (tool: the offsets in force, {offset, radius, length, tip} of the trace's "tool", or null)
 //   NcurveTrace.systemName(5021, profile) -> 'machine X' (docs/run.md's table; '' where it has none)
 (function (global) {
   'use strict';
@@ -101,6 +102,16 @@
       for (let c = 0; c < M.block.length && M.block[c] <= k; c++) out.set(M.var[c], value(M.value[c]));
       return out;
     };
+    // the tool offsets in force at position k: the last change at or before it
+    const T = trace.tool || {block: []};
+    const toolAt = (k) => {
+      let lo = 0, hi = T.block.length - 1, at = -1;
+      while (lo <= hi) {
+        const mid = (lo + hi) >> 1;
+        if (T.block[mid] <= k) at = mid, lo = mid + 1; else hi = mid - 1;
+      }
+      return at < 0 ? null : {offset: T.offset[at], radius: T.radius[at], length: T.length[at], tip: T.tip[at]};
+    };
     // variables written by block b (its keys), and whether one of them is v with a change
     const writesOf = (b) => {
       const out = [];
@@ -131,7 +142,7 @@
           reads, readNow, readChanged,
           k, block: k < n ? k : -1, line: k < n ? B.line[k] : 0, file: k < n ? B.file[k] : -1,
           stack: trace.stacks[B.stack[Math.min(k, n - 1)]] || [], vars, changed, modal: modalAt(k),
-          move: k < n ? B.move[k] : trace.moves,
+          move: k < n ? B.move[k] : trace.moves, tool: toolAt(k),
         };
       },
       // the next position after k (dir +1) or before it (-1) where a breakpoint holds: block b on a

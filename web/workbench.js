@@ -14,7 +14,7 @@
     // what is shown is the run of the text in the editor, and no run is waiting
     settled: () => W.shownText === editor.text && !timer};
   let profiles = [], answer = null, conv = null, plot = null, trace = null, mainFile = 0, viewName = '', measuring = false;
-  const breakpoints = new Set(), watches = [];
+  const breakpoints = new Set();
   let tab = 'summary', name = 'program.nc', dirtyAnalysis = true;
 
   const editor = W.editor = NcurveEditor.create($('editor'), {
@@ -351,6 +351,9 @@
     plot.setColors((i) => (i >= cut ? DIM : null));
     const at = cut > 0 ? conv.end.subarray(3 * cut - 3, 3 * cut) : conv.count ? conv.start.subarray(0, 3) : null;
     plot.setTool(at ? Array.from(at) : null);
+    // the tool in use there (wb-tool.js), drawn in the view
+    const tool = W.tool = NcurveToolAtStep.show($('dbg-tool'), st, !!(answer.profile && answer.profile.lathe), at ? Array.from(at) : null);
+    plot.setCutter(tool.cutter);
     part.step(cut);
     // the call stack, innermost first
     const stack = $('dbg-stack');
@@ -444,40 +447,8 @@
   $('dbg-next-break').onclick = () => seek(1);
   $('dbg-prev-break').onclick = () => seek(-1);
   $('dbg-slider').oninput = () => goTo(+$('dbg-slider').value);
-  const showWatches = () => {
-    const box = $('watches');
-    box.textContent = '';
-    for (const v of watches) {
-      const w = el('span', 'w', `#${v}`);
-      w.title = 'remove';
-      w.onclick = () => { watches.splice(watches.indexOf(v), 1); showWatches(); };
-      box.append(w);
-    }
-  };
-  // a watch is a variable the control has: #0 never changes, and the rest is asked of the interpreter
-  // (a run of #1=#N on the machine chosen), so a number it has not (#99999) is refused in its words
-  $('watch-add').onclick = async () => {
-    const box = $('watch-var'), text = box.value.trim();
-    const refuse = (why) => { $('watch-why').textContent = why; box.setAttribute('aria-invalid', 'true'); };
-    const m = /^#?\s*(\d{1,8})$/.exec(text);
-    if (!m) return refuse(`${JSON.stringify(text)} is not a variable: # and its number, e.g. #104`);
-    const v = +m[1];
-    if (v === 0) return refuse('#0 is always vacant: it never changes');
-    let why = '';
-    try {
-      const r = await fetch('/api/run', {method: 'POST', headers: {'Content-Type': 'application/json'},
-        body: JSON.stringify({program: `#1=#${v}\nM30\n`, name: 'watch.nc', machine: $('machine').value || undefined, moves: false})});
-      const j = await r.json(), a = j.summary && j.summary.alarm;
-      why = a ? `${a.code} ${a.message}` : j.error || '';
-    } catch (e) { why = `the server did not answer: ${e.message}`; }
-    if (why) return refuse(why);
-    $('watch-why').textContent = '';
-    box.removeAttribute('aria-invalid');
-    if (!watches.includes(v)) watches.push(v);
-    box.value = '';
-    showWatches();
-  };
-  $('watch-var').addEventListener('keydown', (e) => { if (e.key === 'Enter') $('watch-add').click(); });
+  // the watches (wb-watch.js), checked on the machine with the Settings the program runs with
+  const watches = NcurveWatch.create({request: programRequest}).list;
   W.goTo = goTo;
   // keys, with the Debugger tab open: F10 / Shift+F10 one block on / back and F5 / Shift+F5 on to the
   // next / back to the previous breakpoint anywhere (the editor too); ← → Home End elsewhere than in
@@ -499,17 +470,22 @@
 
   // ---- tabs, analyze, generate ----
   function setTab(t) {
+    if (!$('tab-' + t)) return;
     tab = t;
+    try { localStorage.setItem(TAB_KEY, t); } catch (e) { /* not kept */ }
     for (const b of document.querySelectorAll('.wb-tabs button')) b.classList.toggle('on', b.dataset.tab === t);
     for (const p of ['summary', 'debug', 'analyze', 'gen', 'settings', 'compare']) $('tab-' + p).hidden = p !== t;
     if (!plot) return;
     if (t === 'debug') goTo(W.pos);
-    else { colour.apply(); plot.setTool(null); editor.setCurrentLine(0); }
+    else { colour.apply(); plot.setTool(null); plot.setCutter(null); editor.setCurrentLine(0); }
     if (t === 'analyze' && dirtyAnalysis) analyze();
     if (t === 'compare') compare.shown();
   }
   for (const b of document.querySelectorAll('.wb-tabs button')) b.onclick = () => setTab(b.dataset.tab);
   W.setTab = setTab;
+  // the tab open is kept in this browser across a reload
+  const TAB_KEY = 'ncurve-workbench-tab';
+  try { setTab(localStorage.getItem(TAB_KEY) || tab); } catch (e) { /* the first tab */ }
   async function analyze() {
     dirtyAnalysis = false;
     const box = $('analysis');
@@ -541,13 +517,16 @@
     const machine = $('machine').value;
     let request;
     try { request = genFields.request(machine); } catch (e) { fail(e.message); return; }
+    // generated for, and measured on, the control the page runs on: its parameters and tool offsets
+    const control = settings.request();
+    Object.assign(request, {param: control.param, tool_offsets: control.tool_offsets});
     let r, g;
     try {
       r = await fetch('/api/gen', {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(request)});
       g = await r.json();
     } catch (e) { fail(`the server did not answer: ${e.message}`); return; }
     for (const w of g.warnings || []) $('gen-warnings').append(el('li', '', `warning: ${w}`));
-    if (g.error || !g.program) { fail(`${r.status}: ${g.error || 'no program'}`); return; }
+    if (g.error || !g.program) { settings.refused(g.error); fail(`${r.status}: ${g.error || 'no program'}`); return; }
     const param = g.parameters || {}, set = Object.keys(param).map((k) => `No.${k} = ${param[k]}`).join(', ');
     $('gen-out').textContent = `max deviation ${fmt(g.max_deviation, 6)} mm (tolerance ${g.tolerance} mm), ` +
       `${g.move_deviation.index.length} moves on the curve; the curve in grey, ${g.reference.count} points: generated into the editor` +

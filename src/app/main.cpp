@@ -198,6 +198,7 @@ int run_command(const app::RunArgs& a) {
   machine::MoveSink& target = verify_tee ? static_cast<machine::MoveSink&>(*verify_tee) : shown;
   setup.options.path_tolerance = a.arc_tol;  // G12.1/G07.1 paths as the CSV's arcs
   machine::Interpreter interp(profile, lib, setup.options);
+  if (html && !setup.options.nose_centre) html->follow_nose_tip([&interp] { return interp.nose_tip_now(); });
   machine::RunResult result = interp.run(target);
   if (result.alarm) target.stopped(*result.alarm);  // a cut-off path says so at its end
   if (background) background->finish();

@@ -46,6 +46,8 @@ public:
   // Tell this observer each block, call, return and variable write of the next runs (null: none).
   void observe(ExecutionObserver* observer) { observer_ = observer; }
   std::uint64_t plain_lane_blocks() const { return plain_lane_blocks_; }
+  // The imaginary tip's offset from the nose centre for the move being delivered (lathe).
+  V2 tip_of_move() const { return nose_tip_now(); }
 
   // ---- what the G-code table's actions (g_actions.cpp and a code's own file) use ----
   struct Cmd {  // a word of the block in hand, its value evaluated
@@ -346,6 +348,7 @@ private:
   bool modal_stale_ = true;      // an NC block ran since it was read
   bool shape_read_ = false;      // G71..G73 reading their shape: its blocks are the cycle block's
   void observe_block(const nc::Block& b);
+  ToolInForce tool_in_force() const;
   void observe_call(const Frame& f);
   void observe_repeat(const Frame& f);  // a repeated macro call's locals back to its arguments
   void observed_write(int n, nc::Value v, std::uint16_t column);

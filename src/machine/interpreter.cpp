@@ -221,7 +221,10 @@ RunResult Executor::run(MoveSink& sink) {
     }
   }
   if (file_checks_) finish_file_checks(*main);
-  if (observer_) observer_->finished(moves_delivered(), modal_readout());
+  if (observer_) {
+    observer_->tool(tool_in_force());
+    observer_->finished(moves_delivered(), modal_readout());
+  }
   return result_;
 }
 
@@ -429,5 +432,10 @@ std::uint64_t Interpreter::plain_lane_blocks() const { return executor_->plain_l
 
 nc::Value Interpreter::variable(int number) { return executor_->variable(number); }
 void Interpreter::observe(ExecutionObserver* observer) { executor_->observe(observer); }
+
+std::array<double, 2> Interpreter::nose_tip_now() const {
+  const V2 tip = executor_->tip_of_move();
+  return {tip.x, tip.y};
+}
 
 }  // namespace ncurve::machine

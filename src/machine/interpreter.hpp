@@ -90,6 +90,10 @@ public:
   std::uint64_t plain_lane_blocks() const;
   // Tell this observer each block, call, return and variable write of the next runs (null: none).
   void observe(ExecutionObserver* observer);
+  // The imaginary tool tip's offset from the tool-nose centre (Z, X as a radius) for the move the
+  // sink is given now: a lathe's, none on a mill or under G12.1/G07.1. The put-out arc's centre
+  // under tool-nose radius compensation is the programmed arc's centre plus this.
+  std::array<double, 2> nose_tip_now() const;
 
 private:
   std::unique_ptr<Executor> executor_;

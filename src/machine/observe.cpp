@@ -32,7 +32,22 @@ void Executor::observe_block(const nc::Block& b) {
   if (shape_read_) return;
   if (modal_stale_) observed_modal_ = modal_readout();
   modal_stale_ = b.kind == nc::Statement::nc;
+  observer_->tool(tool_in_force());
   observer_->block(*prog_, b, moves_delivered(), observed_modal_);
+}
+
+ToolInForce Executor::tool_in_force() const {
+  ToolInForce t;
+  if (profile_.lathe()) {
+    t.offset = lathe_offset_;
+    t.radius = nose_radius();
+    if (auto it = lathe_offsets_.find(lathe_offset_); it != lathe_offsets_.end()) t.tip = static_cast<int>(it->second.tip);
+  } else {
+    t.offset = d_;
+    t.radius = radius_offset(d_);
+    t.length = length_offset(h_);
+  }
+  return t;
 }
 
 void Executor::observe_call(const Frame& f) {

@@ -31,12 +31,26 @@ inline constexpr std::array<int, 28> kModalVariables = {
     4015, 4016, 4017, 4018, 4019, 4020, 4021, 4022, 4107, 4109, 4111, 4113, 4119, 4120};
 using ModalReadout = std::array<nc::Value, kModalVariables.size()>;
 
+// The tool offsets in force as a block starts (the debugger's tool at the step): on a mill the D
+// offset and its cutter radius and the H offset's length; on a lathe the offset set, its nose
+// radius and tip. Geometry plus wear, mm.
+struct ToolInForce {
+  std::int32_t offset = 0;  // D (mill) or the offset set of the T code (lathe)
+  double radius = 0;        // D's cutter radius (mill) or the nose radius (lathe)
+  double length = 0;        // H's length (mill)
+  std::int32_t tip = 0;     // the imaginary tip 0..9 (lathe)
+  bool operator==(const ToolInForce&) const = default;
+};
+
 class ExecutionObserver {
 public:
   virtual ~ExecutionObserver() = default;
   // A block starts: `moves` moves were delivered before it, `modal` is the state it starts in.
   virtual void block(const nc::Program& program, const nc::Block& block, std::uint64_t moves,
                      const ModalReadout& modal) = 0;
+  // The tool offsets in force for the block about to start (told before each block and before
+  // finished()).
+  virtual void tool(const ToolInForce& /*in_force*/) {}
   // A call pushed this frame (during the calling block); a macro's level starts all vacant, and
   // its arguments follow as variable writes.
   virtual void entered(const CallFrame& frame) = 0;

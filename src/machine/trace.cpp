@@ -13,7 +13,7 @@ bool same(const nc::Value& a, const nc::Value& b) { return a.vacant == b.vacant 
 std::string ExecutionTrace::limit_message() const {
   if (complete_) return {};
   return fmt::format("the trace holds the first {} of the {} blocks executed: it keeps at most {} records (blocks, "
-                     "variable writes, modal changes and system variable reads; raise trace_limit, at most {})",
+                     "variable writes, modal and tool offset changes and system variable reads; raise trace_limit, at most {})",
                      blocks_.size(), executed_, limit_, kMaxLimit);
 }
 
@@ -28,6 +28,7 @@ bool ExecutionTrace::room(std::size_t more, bool mid_block) {
     std::erase_if(entries_, [&](const Entry& e) { return e.block == last; });
     std::erase_if(modal_, [&](const ModalChange& m) { return m.block == last; });
     std::erase_if(reads_, [&](const Read& r) { return r.block == last; });
+    std::erase_if(tools_, [&](const ToolChange& t) { return t.block == last; });
     blocks_.pop_back();
   }
   return false;
@@ -41,10 +42,14 @@ void ExecutionTrace::note_modal(std::int64_t block, const ModalReadout& modal) {
   }
 }
 
+void ExecutionTrace::note_tool(std::int64_t block) {
+  if (tools_.empty() || !(tools_.back().tool == tool_told_)) tools_.push_back({block, tool_told_});
+}
+
 void ExecutionTrace::block(const nc::Program& program, const nc::Block& b, std::uint64_t moves,
                            const ModalReadout& modal) {
   ++executed_;
-  if (!room(1 + modal.size(), false)) return;
+  if (!room(2 + modal.size(), false)) return;
   const nc::SourceFile* file = program.file.get();
   auto it = std::find(files_.begin(), files_.end(), file);
   const auto file_index = static_cast<std::uint32_t>(it - files_.begin());
@@ -56,6 +61,7 @@ void ExecutionTrace::block(const nc::Program& program, const nc::Block& b, std::
   const auto index = static_cast<std::int64_t>(blocks_.size());
   if (index == 0) initial_modal_ = modal_now_ = modal;
   else note_modal(index, modal);
+  note_tool(index);
   blocks_.push_back({file_index, b.line, static_cast<std::uint32_t>(stacks_.size() - 1), moves});
 }
 
@@ -92,7 +98,10 @@ void ExecutionTrace::read(int number, nc::Value value) {
 
 void ExecutionTrace::finished(std::uint64_t moves, const ModalReadout& modal) {
   total_moves_ = moves;
-  if (complete_ && !blocks_.empty()) note_modal(static_cast<std::int64_t>(blocks_.size()), modal);
+  if (complete_ && !blocks_.empty()) {
+    note_modal(static_cast<std::int64_t>(blocks_.size()), modal);
+    note_tool(static_cast<std::int64_t>(blocks_.size()));
+  }
 }
 
 }  // namespace ncurve::machine

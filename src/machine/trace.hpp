@@ -14,8 +14,9 @@ namespace ncurve::machine {
 
 class ExecutionTrace final : public ExecutionObserver {
 public:
-  // The most records kept (executed blocks, variable writes, level entries, modal changes and
-  // system variable reads together, about 32 bytes each): past it the trace stops, whole blocks only, and says so.
+  // The most records kept (executed blocks, variable writes, level entries, modal and tool offset
+  // changes and system variable reads together, about 32 bytes each): past it the trace stops,
+  // whole blocks only, and says so.
   static constexpr std::size_t kDefaultLimit = 2'000'000;
   static constexpr std::size_t kMaxLimit = 20'000'000;
   explicit ExecutionTrace(std::size_t limit = kDefaultLimit) : limit_(limit) {}
@@ -52,6 +53,12 @@ public:
     double value = 0;        // NaN: vacant
   };
 
+  // The tool offsets in force (ToolInForce) changed to these from `block` on.
+  struct ToolChange {
+    std::int64_t block = 0;  // == blocks().size(): the state after the last block
+    ToolInForce tool;
+  };
+
   static double encode(nc::Value v) { return v.vacant ? std::numeric_limits<double>::quiet_NaN() : v.v; }
 
   const std::vector<const nc::SourceFile*>& files() const { return files_; }
@@ -62,6 +69,8 @@ public:
   const std::vector<Read>& reads() const { return reads_; }
   const ModalReadout& initial_modal() const { return initial_modal_; }
   const std::vector<ModalChange>& modal_changes() const { return modal_; }
+  // The first is the state at the first block.
+  const std::vector<ToolChange>& tool_changes() const { return tools_; }
   std::uint64_t total_moves() const { return total_moves_; }
   std::size_t limit() const { return limit_; }
   // Whether every executed block is in the trace; if not, why.
@@ -69,6 +78,7 @@ public:
   std::string limit_message() const;
 
   void block(const nc::Program& program, const nc::Block& block, std::uint64_t moves, const ModalReadout& modal) override;
+  void tool(const ToolInForce& in_force) override { tool_told_ = in_force; }
   void entered(const CallFrame& frame) override;
   void left() override;
   void variable(int number, std::int32_t level, nc::Value old, nc::Value now) override;
@@ -78,8 +88,9 @@ public:
 private:
   bool room(std::size_t more, bool mid_block);  // false past the limit (the trace then ends with whole blocks)
   void note_modal(std::int64_t block, const ModalReadout& modal);
+  void note_tool(std::int64_t block);
   std::size_t records() const {
-    return blocks_.size() + writes_.size() + entries_.size() + modal_.size() + reads_.size();
+    return blocks_.size() + writes_.size() + entries_.size() + modal_.size() + reads_.size() + tools_.size();
   }
 
   std::size_t limit_;
@@ -93,6 +104,8 @@ private:
   std::vector<Entry> entries_;
   std::vector<Read> reads_;
   std::vector<ModalChange> modal_;
+  std::vector<ToolChange> tools_;
+  ToolInForce tool_told_{};  // as the interpreter told it last
   ModalReadout initial_modal_{};
   ModalReadout modal_now_{};
   std::uint64_t total_moves_ = 0;

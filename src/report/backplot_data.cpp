@@ -39,6 +39,15 @@ void BackplotData::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
   const std::array<double, 3> a{m.start[0], m.start[1], m.start[2]}, b{m.end[0], m.end[1], m.end[2]};
   other_.add(m);
+  const bool arc = m.compensated && m.kind == machine::MoveKind::arc;  // (the tip matters to it only)
+  const auto piece = contour_.on_motion(m, arc && nose_tip_ && lathe_ ? nose_tip_() : std::array<double, 2>{});
+  if (piece && kind_.size() < limit_) {
+    const auto at = static_cast<double>(kind_.size());
+    programmed_.push_back({at, piece->start[0], piece->start[1], piece->start[2], piece->end[0], piece->end[1], piece->end[2]});
+    if (piece->arc)
+      programmed_arcs_.push_back({at, piece->centre[0], piece->centre[1], piece->centre[2], piece->sweep,
+                                  static_cast<double>(m.plane)});
+  }
   if (kind_.size() >= limit_) {
     ++left_out_;
     last_ = b;
@@ -124,6 +133,13 @@ std::string BackplotData::json(bool inch) const {
   nlohmann::json corners = nlohmann::json::array();
   for (const auto& c : corners_) corners.push_back({static_cast<std::uint32_t>(c[0]), c[1], c[2], c[3]});
   head["rapid_corners"] = corners;
+  nlohmann::json programmed = nlohmann::json::array(), programmed_arcs = nlohmann::json::array();
+  for (const auto& p : programmed_)
+    programmed.push_back({static_cast<std::uint32_t>(p[0]), p[1], p[2], p[3], p[4], p[5], p[6]});
+  for (const auto& a : programmed_arcs_)
+    programmed_arcs.push_back({static_cast<std::uint32_t>(a[0]), a[1], a[2], a[3], a[4], static_cast<int>(a[5])});
+  head["programmed"] = programmed;
+  head["programmed_arcs"] = programmed_arcs;
   std::size_t text_bytes = 0;
   for (const auto* f : files_) text_bytes += f->size();
   nlohmann::json files = nlohmann::json::array();

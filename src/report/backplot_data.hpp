@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -17,6 +18,7 @@
 #include "machine/move.hpp"
 #include "nc/diagnostic.hpp"
 #include "report/lathe_part.hpp"
+#include "report/programmed_contour.hpp"
 #include "report/other_axes.hpp"
 #include "sim/part_stl.hpp"
 
@@ -30,6 +32,10 @@ public:
   static constexpr std::size_t kMostSourceBytes = 32u << 20;
 
   explicit BackplotData(const machine::MachineProfile& profile, std::size_t limit = kDefaultLimit);
+  // On a lathe: the imaginary tip's offset from the nose centre for the move in hand
+  // (machine::Interpreter::nose_tip_now), which a compensated arc's centre carries; none given (or
+  // moves of the nose centre), the arc's centre is the programmed one.
+  void follow_nose_tip(std::function<std::array<double, 2>()> tip) { nose_tip_ = std::move(tip); }
   void on_move(const machine::Move& m) override;
   void stopped(const nc::Diagnostic& alarm) override;
 
@@ -73,6 +79,12 @@ private:
   // the A, B and C axes (the drawing is of X Y Z), and each one's end for each motion kept
   OtherAxes other_;
   std::array<std::vector<double>, 3> other_end_;
+  // the programmed contour beside a compensated path: per piece its motion, start and end X Y Z; per
+  // arc among them its motion, centre X Y Z, sweep (radians) and plane
+  ProgrammedContour contour_;
+  std::function<std::array<double, 2>()> nose_tip_;
+  std::vector<std::array<double, 7>> programmed_;
+  std::vector<std::array<double, 6>> programmed_arcs_;
   std::optional<sim::PartGrid> part_;
   std::optional<LathePart> lathe_part_;
   nlohmann::json deviation_;

@@ -58,11 +58,33 @@ void MoveColumns::on_move(const Move& m) {
       kz_.push_back(path[k][2]);
     }
   }
+  if (m.is_motion()) note_programmed(m, index);
   if (!placed) {
     code_at_.push_back(index);
     code_.push_back(m.code);
   }
   if (placed) last_end_ = m.end;
+}
+
+void MoveColumns::note_programmed(const Move& m, std::uint32_t index) {
+  // (the tip matters to a compensated arc only)
+  const bool arc = m.compensated && m.kind == MoveKind::arc;
+  const std::array<double, 2> tip = arc && nose_tip_ && profile_.lathe() ? nose_tip_() : std::array<double, 2>{};
+  const auto piece = contour_.on_motion(m, tip);
+  if (!piece) return;
+  programmed_at_.push_back(index);
+  px_.push_back(frame_.x(piece->end[0]));
+  py_.push_back(piece->end[1]);
+  pz_.push_back(piece->end[2]);
+  psx_.push_back(frame_.x(piece->start[0]));
+  psy_.push_back(piece->start[1]);
+  psz_.push_back(piece->start[2]);
+  if (!piece->arc) return;
+  programmed_arc_at_.push_back(index);
+  pcx_.push_back(frame_.x(piece->centre[0]));
+  pcy_.push_back(piece->centre[1]);
+  pcz_.push_back(piece->centre[2]);
+  psweep_.push_back(piece->sweep * 180 / std::numbers::pi);
 }
 
 void MoveColumns::write_json(Columns& out) const {
@@ -128,6 +150,30 @@ void MoveColumns::write_json(Columns& out) const {
   put_array(out, "y", ky_, num);
   b.push_back(',');
   put_array(out, "z", kz_, num);
+  b.append(std::string_view("},\"programmed\":{"));
+  put_array(out, "index", programmed_at_, whole);
+  b.push_back(',');
+  put_array(out, "x", px_, num);
+  b.push_back(',');
+  put_array(out, "y", py_, num);
+  b.push_back(',');
+  put_array(out, "z", pz_, num);
+  b.push_back(',');
+  put_array(out, "sx", psx_, num);
+  b.push_back(',');
+  put_array(out, "sy", psy_, num);
+  b.push_back(',');
+  put_array(out, "sz", psz_, num);
+  b.append(std::string_view("},\"programmed_arcs\":{"));
+  put_array(out, "index", programmed_arc_at_, whole);
+  b.push_back(',');
+  put_array(out, "cx", pcx_, num);
+  b.push_back(',');
+  put_array(out, "cy", pcy_, num);
+  b.push_back(',');
+  put_array(out, "cz", pcz_, num);
+  b.push_back(',');
+  put_array(out, "sweep_deg", psweep_, num);
   b.append(std::string_view("}}"));
 }
 

@@ -1,12 +1,15 @@
 // The moves of a run as columns (one array per field) for `POST /api/run`: a third of the size of
 // JSON Lines, and what a backplot uploads as it is.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "machine/move.hpp"
 #include "machine/profile.hpp"
+#include "report/programmed_contour.hpp"
 #include "report/writers.hpp"
 #include "serve/json_out.hpp"
 
@@ -16,6 +19,10 @@ class MoveColumns final : public machine::MoveSink {
 public:
   // Keeps at most `limit` moves (about 60 bytes each); the run's summary counts them all.
   MoveColumns(const machine::MachineProfile& profile, FileTable& files, std::size_t limit);
+  // On a lathe: the imaginary tip's offset from the nose centre (Z, X radius) for the move in hand
+  // (machine::Interpreter::nose_tip_now), which a compensated arc's centre carries; none given, or
+  // moves of the nose centre (nose_centre), the arc's centre is the programmed one.
+  void follow_nose_tip(std::function<std::array<double, 2>()> tip) { nose_tip_ = std::move(tip); }
   void on_move(const machine::Move& m) override;
   std::size_t count() const { return kind_.size(); }
   bool complete() const { return dropped_ == 0; }
@@ -42,6 +49,14 @@ private:
   std::vector<std::uint8_t> plane_, cw_;
   std::vector<std::uint32_t> code_at_;
   std::vector<int> code_;
+  // the programmed contour under cutter / tool-nose radius compensation (report::ProgrammedContour)
+  void note_programmed(const machine::Move& m, std::uint32_t index);
+  std::function<std::array<double, 2>()> nose_tip_;
+  report::ProgrammedContour contour_;
+  std::vector<std::uint32_t> programmed_at_;
+  std::vector<double> px_, py_, pz_, psx_, psy_, psz_;
+  std::vector<std::uint32_t> programmed_arc_at_;
+  std::vector<double> pcx_, pcy_, pcz_, psweep_;
   // a dog-leg rapid's corners (non-linear positioning), in order
   const machine::MachineProfile& profile_;
   std::vector<std::uint32_t> corner_at_;

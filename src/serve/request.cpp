@@ -98,6 +98,33 @@ std::size_t program_memory(std::string_view program) {
   return nc::compiled_size(program.size(), program_lines(program));
 }
 
+std::vector<std::string> option_values(const json& j, const char* key) {
+  std::vector<std::string> out;
+  auto it = j.find(key);
+  if (it == j.end() || it->is_null()) return out;
+  const bool set = std::string_view(key) == "set";
+  if (it->is_array()) {
+    for (const auto& v : *it) {
+      if (!v.is_string())
+        throw ApiError(400, fmt::format("\"{}\": each entry is a string as --{} takes it, e.g. \"{}\"", key, key,
+                                        set ? "#100=5" : "6050=102"));
+      out.push_back(v.get<std::string>());
+    }
+    return out;
+  }
+  if (!it->is_object())
+    throw ApiError(400, fmt::format("\"{}\" must be an object, e.g. {{\"{}\": {}}}, or a list of --{} values, e.g. "
+                                    "[\"{}\"]",
+                                    key, set ? "#100" : "6050", set ? 5 : 102, key, set ? "#100=5" : "6050=102"));
+  for (const auto& [k, v] : it->items()) {
+    if (!v.is_number()) throw ApiError(400, fmt::format("\"{}\": the value of \"{}\" must be a number", key, k));
+    const double x = v.get<double>();
+    if (set) out.push_back(fmt::format("{}{}={}", k.starts_with('#') ? "" : "#", k, x));
+    else out.push_back(fmt::format("{}={}", k, x));
+  }
+  return out;
+}
+
 app::RunInputs run_inputs(const ServeConfig& config, const json& j) {
   app::RunInputs in;
   in.text = get_string(j, "program", true);
@@ -126,33 +153,8 @@ app::RunInputs run_inputs(const ServeConfig& config, const json& j) {
     in.max_seconds = *seconds;
   }
   in.nose_centre = get_bool(j, "nose_centre", false);
-  // an object {"#100": 5}, or the command line's values ["#100=5"] (its message for a bad one)
-  auto pairs = [&](const char* key, auto add) {
-    auto it = j.find(key);
-    if (it == j.end() || it->is_null()) return;
-    const bool set = std::string_view(key) == "set";
-    if (it->is_array()) {
-      for (const auto& v : *it) {
-        if (!v.is_string())
-          throw ApiError(400, fmt::format("\"{}\": each entry is a string as --{} takes it, e.g. \"{}\"", key, key,
-                                          set ? "#100=5" : "6050=102"));
-        (set ? in.sets : in.params).push_back(v.template get<std::string>());
-      }
-      return;
-    }
-    if (!it->is_object())
-      throw ApiError(400, fmt::format("\"{}\" must be an object, e.g. {{\"{}\": {}}}, or a list of --{} values, e.g. "
-                                      "[\"{}\"]",
-                                      key, set ? "#100" : "6050", set ? 5 : 102, key, set ? "#100=5" : "6050=102"));
-    for (const auto& [k, v] : it->items()) {
-      if (!v.is_number()) throw ApiError(400, fmt::format("\"{}\": the value of \"{}\" must be a number", key, k));
-      add(k, v.template get<double>());
-    }
-  };
-  pairs("set", [&](const std::string& k, double v) {
-    in.sets.push_back(fmt::format("{}{}={}", k.starts_with('#') ? "" : "#", k, v));
-  });
-  pairs("param", [&](const std::string& k, double v) { in.params.push_back(fmt::format("{}={}", k, v)); });
+  in.sets = option_values(j, "set");
+  in.params = option_values(j, "param");
   return in;
 }
 

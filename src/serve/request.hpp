@@ -17,6 +17,9 @@ void check_keys(const nlohmann::json& j, std::initializer_list<const char*> know
 std::optional<std::string> get_string(const nlohmann::json& j, const char* key, bool required = false);
 std::optional<double> get_number(const nlohmann::json& j, const char* key);
 bool get_bool(const nlohmann::json& j, const char* key, bool otherwise);
+// "set" or "param" as the command line's values ("#100=5", "6050=102"): an object {"#100": 5} or a
+// list of --set / --param values; ApiError 400 on a bad shape (a bad value is the command's error).
+std::vector<std::string> option_values(const nlohmann::json& j, const char* key);
 // program, name, machine, set, param, max_steps, max_seconds, nose_centre of a run or analyze request.
 app::RunInputs run_inputs(const ServeConfig& config, const nlohmann::json& j);
 // The profile read and the program parsed; a bad one is ApiError 400 (running out of memory is not).

@@ -137,6 +137,7 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   if (want_trace) trace.emplace(trace_limit);
   machine::Interpreter interp(setup.profile, *setup.lib, setup.options);
   if (trace) interp.observe(&*trace);
+  if (moves && !in.nose_centre) moves->follow_nose_tip([&interp] { return interp.nose_tip_now(); });
   machine::MoveSink& shown = moves ? static_cast<machine::MoveSink&>(*moves) : no_moves;
   std::optional<report::TeeSink> tee;
   if (verify && verify->sink()) tee.emplace(shown, *verify->sink());

@@ -46,7 +46,8 @@ Answer api_gen(const ServeConfig& config, const std::string& body) {
   const json j = parse_body(body);
   check_keys(j, {"curve", "params", "x", "y", "z", "t", "from", "to", "tol", "form", "lines", "machine", "feed", "depth",
                  "step_down", "clearance", "program_number", "tool_radius", "tip", "side", "cycle_program",
-                 "macro_only", "tool", "spindle", "spindle_ccw", "css", "max_rpm", "coolant", "inch", "max_moves"},
+                 "macro_only", "tool", "spindle", "spindle_ccw", "css", "max_rpm", "coolant", "inch", "max_moves",
+                 "param", "tool_offsets"},
              "POST /api/gen");
   app::GenArgs a;
   a.curve = get_string(j, "curve", true).value();
@@ -107,6 +108,13 @@ Answer api_gen(const ServeConfig& config, const std::string& body) {
   } catch (const std::exception& e) {
     throw ApiError(400, e.what());
   }
+  // the control the program is generated for and measured on: the run's parameters and tool offsets
+  try {
+    app::apply_parameters(job->options.profile, option_values(j, "param"));
+  } catch (const std::runtime_error& e) {
+    throw ApiError(400, e.what());
+  }
+  apply_tool_offsets(j, job->options.profile);
   // what the command line prints as "warning: ..." before it generates, in the answer or the error
   const std::vector<std::string> warnings = app::gen_warnings(*job);
   gen::Result r;

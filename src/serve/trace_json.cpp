@@ -102,6 +102,18 @@ void write_trace_json(Columns& out, const ExecutionTrace& t, FileTable& files) {
   put_array(out, "var", column<std::int32_t>(r, [](const ExecutionTrace::Read& x) { return x.number; }), whole);
   b.push_back(',');
   put_array(out, "value", column<double>(r, [](const ExecutionTrace::Read& x) { return x.value; }), num);
+  const auto& tc = t.tool_changes();
+  b.append(std::string_view("},\"tool\":{"));
+  put_array(out, "block", column<std::int64_t>(tc, [](const ExecutionTrace::ToolChange& x) { return x.block; }), whole);
+  b.push_back(',');
+  put_array(out, "offset", column<std::int32_t>(tc, [](const ExecutionTrace::ToolChange& x) { return x.tool.offset; }),
+            whole);
+  b.push_back(',');
+  put_array(out, "radius", column<double>(tc, [](const ExecutionTrace::ToolChange& x) { return x.tool.radius; }), num);
+  b.push_back(',');
+  put_array(out, "length", column<double>(tc, [](const ExecutionTrace::ToolChange& x) { return x.tool.length; }), num);
+  b.push_back(',');
+  put_array(out, "tip", column<std::int32_t>(tc, [](const ExecutionTrace::ToolChange& x) { return x.tool.tip; }), whole);
   b.append(std::string_view("}}"));
 }
 

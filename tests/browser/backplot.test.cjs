@@ -3,7 +3,7 @@
 // Opens the pages of shipped examples and checks what is drawn: the number of moves against the
 // run's, a WebGL canvas that is not blank (pixels of a screenshot), the block shown when hovering
 // a move, the view buttons, the alarm, a rotary axis's range and ends, a lathe's axes and centre hole, a hostile
-// comment kept as text. Screenshots go to OUT_DIR for a person to look at. Exit 77 (skipped) where no Chromium is installed.
+// comment kept as text, the programmed contour beside a compensated path. Screenshots go to OUT_DIR for a person to look at. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {execFileSync} = require('child_process');
 const fs = require('fs');
@@ -204,6 +204,33 @@ async function lonelyMove(page, motions, kind) {
       await page.close();
     }
 
+    // under G41 D1 of radius 5 (a profile setting offset 1), a 40 x 30 contour clockwise whose top is
+    // a half circle G02 about (20, 30): the programmed contour drawn dashed through the program's
+    // corners, its arc on the circle of radius 20 about (20, 30), beside the tool centre's path
+    {
+      const program = path.join(out, 'browser_programmed.nc'), profile = path.join(out, 'browser_programmed.toml');
+      fs.writeFileSync(program, 'G90 G17 G21 G54 G00 X-20. Y-20. Z5.\nG01 Z-1. F200.\nG41 D1 G01 X0 Y0 F500.\nY30.\n' +
+                       'G02 X40. Y30. I20. J0\nG01 Y0\nX0\nG40 G01 X-20. Y-20.\nG00 Z5.\nM30\n');
+      fs.writeFileSync(profile, '[machine]\noffset_memory = "A"\n[tool_offsets]\n"1" = 5\n');
+      const {page, errors} = await open(context, page_of('browser_programmed', program, ['--machine', profile]).html);
+      const drawn = await page.evaluate(() => ({state: ncurveBackplot.plot.state().programmed, points: ncurveBackplot.plot.programmedPoints(),
+        legend: document.getElementById('legend').textContent}));
+      const pts = [];
+      for (let v = 0; v < drawn.points.length; v += 3) pts.push(drawn.points.slice(v, v + 3));
+      const near = (p, x, y) => Math.abs(p[0] - x) < 1e-4 && Math.abs(p[1] - y) < 1e-4;
+      const arc = pts.filter((p) => p[1] > 30 + 1e-3);
+      check(drawn.state && drawn.state.moves === 6 && [[0, 0], [0, 30], [40, 30], [40, 0], [-20, -20]].every(([x, y]) => pts.some((p) => near(p, x, y))) &&
+            arc.length >= 8 && arc.every((p) => Math.abs(Math.hypot(p[0] - 20, p[1] - 30) - 20) < 1e-3) && /programmed 6/.test(drawn.legend),
+            `programmed: ${drawn.state && drawn.state.moves} moves dashed through the corners, ${arc.length} points of the arc 20 from (20, 30)`);
+      await page.click('#legend input[type=checkbox]');
+      check((await page.evaluate(() => ncurveBackplot.plot.state().programmed.visible)) === false, 'programmed: the legend\'s box hides it');
+      await page.click('#legend input[type=checkbox]');
+      await page.evaluate(() => ncurveBackplot.plot.setView('top'));
+      await page.screenshot({path: path.join(out, 'browser_programmed.png')});
+      check(errors.length === 0, `programmed: no script errors (${errors.join('; ')})`);
+      await page.close();
+    }
+
     // run --setup --html: the cut part shaded under the path, the groove darker than the top
     {
       const {html, summary} = page_of('browser_part', path.join(src, 'examples/spiral.nc'),
@@ -273,9 +300,10 @@ async function lonelyMove(page, motions, kind) {
       };
       const apart = (a, b) => Math.abs(a[0] - b[0]) + Math.abs(a[1] - b[1]) + Math.abs(a[2] - b[2]);
       // (the ZX view fits the path: the chuck's end of the bar, Z-70, is at the page's left, the axis
-      // low on it, so below the axis only a little of the part is in view)
+      // low on it, so below the axis only a little of the part is in view, above the legend: two lines
+      // with the programmed contour's entry, G70 running under G42)
       const background = await colour([40, 0, -70]);
-      const inside = [await colour([24, 0, -70]), await colour([0, 0, -70]), await colour([-9, 0, -70])];
+      const inside = [await colour([24, 0, -70]), await colour([0, 0, -70]), await colour([-5, 0, -70])];
       const outside = [await colour([26.5, 0, -70]), await colour([5, 0, 15])];
       check(inside.every((c) => apart(c, background) > 60),
             `lathe part: drawn within radius 25 on both sides of the axis (${JSON.stringify(inside)} against ${background})`);

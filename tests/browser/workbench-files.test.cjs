@@ -11,7 +11,12 @@
 // --param refused beside their fields in the CLI's words, a tool offset edited moving the G41 D1
 // contour by the new radius (worked out by hand). Generate: each curve's fields, defaults and units
 // against `ncurve gen --list`, gen's default form and tolerance, an expression's NAME=VALUE
-// parameters. Screenshots of the Settings tab at 1024 x 768 and 1920 x 1080 (workbench-settings-*.png).
+// parameters, gen asked with the Settings' parameters. A 40 x 30 rectangle clockwise under G41 D1 of
+// radius 5: the tool centre's sides on X-5..45, Y-5..35, the programmed contour drawn dashed through
+// the program's corners (hidden and shown by its legend's box), the debugger's tool (T1, D1 radius 5,
+// G41) and the cutter's circle of radius 5 about the last point; a watch checked with the Settings;
+// the tab open kept across a reload. Screenshots of the Settings tab and of the debugger on the
+// rectangle at 1024 x 768 and 1920 x 1080 (workbench-settings-*.png, workbench-tool-*.png).
 'use strict';
 const {execFileSync, spawnSync} = require('child_process');
 const fs = require('fs');
@@ -174,6 +179,9 @@ function genList() {
           w.summary.machine === before.summary.machine && setKept === '#100=7',
           `reloaded: the text, "${w.menu}", machine ${w.machine} (${w.summary.machine}), --set ${setKept}`);
     check(w.where.every((x) => x.startsWith('untitled.nc:')) && w.where.length > 0, 'reloaded: its diagnostics name it');
+    const tabKept = await page.evaluate(() => !document.getElementById('tab-settings').hidden &&
+      document.querySelector('.wb-tabs button.on').dataset.tab);
+    check(tabKept === 'settings', `reloaded: the Settings tab still open (${tabKept})`);
     // an edited server file comes back as its own entry with the edit
     await choose('spiral.nc');
     await typeAll('G00 X1. Y2.\nM30\n');
@@ -298,6 +306,80 @@ function genList() {
     }
     w = await W();
     check(/tool offsets: No\.1 length 3/.test(w.note), `the offset in force, in the header: ${w.note}`);
+
+    // ---- the programmed contour and the tool at the step: a 40 x 30 rectangle clockwise under G41 D1,
+    // radius 5 (the cutter on the left of its way: outside, its centre on X-5..45, Y-5..35; the last
+    // side, before G40, ends square to its end) ----
+    await setting('#set-offsets tr[data-offset="1"] input[data-field="length"]', '5');
+    await typeAll('T1 M06\nG90 G17 G21 G54 G00 G43 H1 X-20. Y-20. Z5.\nG01 Z-1. F200.\nG41 D1 G01 X0 Y0 F500.\nY30.\nX40.\nY0\nX0\n' +
+                  'G40 G01 X-20. Y-20.\nG00 Z5.\nM30\n');
+    const tool = [[-5, 35], [45, 35], [45, -5], [0, -5]], sides = [];
+    for (let side = 0; side < 4; side++) sides.push(await endOf(5 + side));
+    check(sides.every((e, k) => e && Math.abs(e[0] - tool[k][0]) < 1e-6 && Math.abs(e[1] - tool[k][1]) < 1e-6),
+          `the tool centre's sides end at ${JSON.stringify(sides)} (by hand ${JSON.stringify(tool)})`);
+    const drawn = await page.evaluate(() => ({state: ncurveWorkbench.plot.state().programmed, points: ncurveWorkbench.plot.programmedPoints(),
+      legend: document.querySelector('#legend .wb-programmed') && document.querySelector('#legend .wb-programmed').textContent}));
+    const pts = [];
+    for (let v = 0; v < drawn.points.length; v += 3) pts.push(drawn.points.slice(v, v + 3));
+    const near = (p, x, y) => Math.abs(p[0] - x) < 1e-4 && Math.abs(p[1] - y) < 1e-4;
+    // every point on the rectangle's sides, or on the way in and out along X = Y from (-20, -20)
+    const onContour = (p) => ((Math.abs(p[0]) < 1e-4 || Math.abs(p[0] - 40) < 1e-4) && p[1] > -1e-4 && p[1] < 30 + 1e-4) ||
+      ((Math.abs(p[1]) < 1e-4 || Math.abs(p[1] - 30) < 1e-4) && p[0] > -1e-4 && p[0] < 40 + 1e-4) ||
+      (Math.abs(p[0] - p[1]) < 1e-4 && p[0] > -20 - 1e-4 && p[0] < 1e-4);
+    check(drawn.state && drawn.state.moves === 6 && drawn.state.visible && pts.length === 12 &&
+          [[0, 0], [0, 30], [40, 30], [40, 0], [-20, -20]].every(([x, y]) => pts.some((p) => near(p, x, y))) &&
+          pts.every(onContour) && pts.every((p) => Math.abs(p[2] + 1) < 1e-4) && /programmed 6/.test(drawn.legend || ''),
+          `the programmed contour dashed: ${drawn.state && drawn.state.moves} moves through the rectangle's corners at Z-1 ` +
+          `(${pts.map((p) => p.slice(0, 2).map((v) => +v.toFixed(3)).join(',')).join(' ')}); legend "${drawn.legend}"`);
+    await page.click('#legend .wb-programmed input');
+    const hidden = await page.evaluate(() => ncurveWorkbench.plot.state().programmed.visible);
+    await page.click('#legend .wb-programmed input');
+    const again = await page.evaluate(() => ncurveWorkbench.plot.state().programmed.visible);
+    check(hidden === false && again === true, `its box hides it and shows it again (${hidden}, ${again})`);
+    // the debugger: after Y30. (block 5: X40. next) T1, D1 of radius 5 under G41 and H1 of length 5
+    // (offset memory A: one value for H and D) under G43; at the end the
+    // cutter's circle about the last point, X-20 Y-20 Z5, of radius 5
+    await page.click('button[data-tab="debug"]');
+    await page.waitForFunction(() => ncurveWorkbench.trace && ncurveWorkbench.settled());
+    await page.evaluate(() => ncurveWorkbench.goTo(5));
+    const atStep = await page.evaluate(() => ({line: ncurveWorkbench.state.line, text: document.getElementById('dbg-tool').innerText,
+      cutter: ncurveWorkbench.plot.state().cutter}));
+    check(atStep.line === 6 && /T1\b/.test(atStep.text) && /D1 radius 5 mm \(G41\)/.test(atStep.text) &&
+          /H1 length 5 mm \(G43\)/.test(atStep.text) && atStep.cutter && atStep.cutter.radius === 5,
+          `block 5 (line ${atStep.line}): the tool "${atStep.text.replace(/\n/g, ' · ')}", a cutter of radius ${atStep.cutter && atStep.cutter.radius} drawn`);
+    await page.evaluate(() => ncurveWorkbench.goTo(Infinity));
+    const circle = await page.evaluate(() => ncurveWorkbench.plot.cutterPoints());
+    let ring = circle.length >= 3 * 32;
+    for (let v = 0; v < circle.length; v += 3)
+      ring = ring && Math.abs(Math.hypot(circle[v] + 20, circle[v + 1] + 20) - 5) < 1e-6 && Math.abs(circle[v + 2] - 5) < 1e-9;
+    check(ring, `after the last block: the cutter's circle, ${circle.length / 3} points, 5 mm from X-20 Y-20 at Z5`);
+    await page.evaluate(() => ncurveWorkbench.goTo(5));
+    for (const [size, file] of [[{width: 1024, height: 768}, 'workbench-tool-1024.png'], [{width: 1920, height: 1080}, 'workbench-tool-1920.png']]) {
+      await page.setViewportSize(size);
+      await page.waitForTimeout(300);
+      const fit = await page.evaluate(() => {
+        const t = document.getElementById('dbg-tool').getBoundingClientRect(), p = document.getElementById('tab-debug').getBoundingClientRect();
+        const legend = document.getElementById('legend').getBoundingClientRect(), plot = document.getElementById('plot').getBoundingClientRect();
+        return t.width > 0 && t.left >= p.left && t.right <= p.right + 1 && t.right <= innerWidth && legend.right <= plot.right + 1 && legend.bottom <= plot.bottom + 1;
+      });
+      check(fit, `${size.width} x ${size.height}: the tool in the debugger's panel, the legend inside the plot`);
+      await page.screenshot({path: path.join(out, file)});
+    }
+    await page.setViewportSize({width: 1400, height: 860});
+    // a watch is checked with the Settings: a bad --set refuses it in the --set's words
+    await page.click('button[data-tab="settings"]');
+    await setting('#set-vars', '#abc=1');
+    await page.click('button[data-tab="debug"]');
+    await page.fill('#watch-var', '#100');
+    await page.click('#watch-add');
+    await page.waitForFunction(() => document.getElementById('watch-why').textContent !== '');
+    const watchWhy = await text('watch-why'), sent = await page.evaluate(() => ncurveWorkbench.watchRequest);
+    check(watchWhy === "--set: '#abc=1' is not of the form #100=5" && sent.tool_offsets && sent.tool_offsets['1'].length === 5 &&
+          Array.isArray(sent.lib) && sent.max_steps === undefined,
+          `a watch asked with the Settings: "${watchWhy}", sent ${JSON.stringify(sent)}`);
+    await page.click('button[data-tab="settings"]');
+    await setting('#set-vars', '');
+    await setting('#set-offsets tr[data-offset="1"] input[data-field="length"]', '3');
     await setting('#set-offsets tr[data-offset="1"] input[data-field="length"]', 'abc');
     await page.waitForFunction(() => document.getElementById('set-offsets-why').textContent !== '', null,
                                {timeout: 30000}).catch(() => {});
@@ -344,6 +426,18 @@ function genList() {
         Math.abs(f.value - c.params[k].value) <= 1e-9 * Math.max(1, Math.abs(c.params[k].value)) && f.unit === c.params[k].unit);
       check(same, `${c.name}: ${fields.map((f) => `${f.name} ${f.value} ${f.unit}`).join(', ') || 'no parameters'} (gen --list: ${c.params.map((p) => `${p.name} ${p.value} ${p.unit}`).join(', ')})`);
     }
+    // gen asked with the Settings' parameters: a bad one refused by /api/gen in --param's words
+    await page.click('button[data-tab="settings"]');
+    await setting('#set-param', '3410=x');
+    await page.click('button[data-tab="gen"]');
+    await page.selectOption('#gen-curve', 'ellipse');
+    await page.click('#gen');
+    await page.waitForFunction(() => document.getElementById('gen-error').textContent !== '');
+    why = await text('gen-error');
+    check(why === "400: --param: '3410=x' is not of the form 6050=102", `gen with the Settings' --param 3410=x: ${why}`);
+    await page.click('button[data-tab="settings"]');
+    await setting('#set-param', '');
+    await page.click('button[data-tab="gen"]');
     // an ellipse's a and b typed in the fields, generated: its extents are the new semi-axes
     await page.selectOption('#gen-curve', 'ellipse');
     await page.fill('#gen-fields input[data-param="a"]', '50');

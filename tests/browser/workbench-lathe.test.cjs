@@ -3,7 +3,9 @@
 // Checks: the server's profile selected, the moves drawn against `ncurve run --json`, the ZX view
 // with Z across and X up (drawn as a radius, labelled as a diameter), a hovered move's end as the
 // program writes it, the G71 block making its roughing in one step, the debugger's keys, and the
-// system variables a program reads in the watch; with no FILE, the shipped lathe example. Screenshots go to OUT_DIR. Exit 77 without Chromium.
+// system variables a program reads in the watch, a programmed arc under tool-nose radius compensation
+// drawn on its circle and the nose circle about the nose centre at the end; with no FILE, the shipped
+// lathe example. Screenshots go to OUT_DIR. Exit 77 without Chromium.
 'use strict';
 const {execFileSync} = require('child_process');
 const path = require('path');
@@ -272,6 +274,29 @@ async function latheExample(context) {
     await page.keyboard.press('F5');
     w = await W();
     check(w.line === 6 && w.reads['#5002'] === -10, `and after line 5 (on ${w.line}, #5002 = ${w.reads['#5002']})`);
+
+    // tool-nose radius compensation, fanuc-lathe's offset 1 (nose R 0.4, tip 3): the programmed quarter
+    // arc about X0 Z-10 (I0 K-10) from X0 Z0 to X20 (a diameter) Z-10 drawn dashed on its circle of
+    // radius 10; after the last block the tip at X40 Z-30 and the nose circle of 0.4 about the nose
+    // centre, tip 3 putting the tip at -X -Z of it: X radius 20.4, Z -29.6
+    const before = (await W()).runs;
+    await page.evaluate((t) => { ncurveWorkbench.editor.setText(t); document.getElementById('run').click(); },
+      'T0101\nG00 X0 Z5.\nG42 G01 X0 Z0 F0.1\nG03 X20. Z-10. I0 K-10.\nG01 Z-30.\nG40 G00 X40.\nM30\n');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    const dashed = await page.evaluate(() => ncurveWorkbench.plot.programmedPoints());
+    let onArc = 0, off = 0;
+    for (let v = 0; v < dashed.length; v += 3) {
+      const x = dashed[v], z = dashed[v + 2];
+      if (z < -1e-4 && z > -10 + 1e-4) (Math.abs(Math.hypot(x, z + 10) - 10) < 1e-3 ? onArc++ : off++);
+    }
+    check(onArc >= 8 && off === 0, `the programmed arc dashed on its circle about X0 Z-10: ${onArc} points on it, ${off} off`);
+    await page.evaluate(() => ncurveWorkbench.goTo(Infinity));
+    const nose = await page.evaluate(() => ({text: document.getElementById('dbg-tool').innerText, points: ncurveWorkbench.plot.cutterPoints()}));
+    let round = nose.points.length >= 3 * 32;
+    for (let v = 0; v < nose.points.length; v += 3)
+      round = round && Math.abs(Math.hypot(nose.points[v] - 20.4, nose.points[v + 2] + 29.6) - 0.4) < 1e-5;
+    check(/T0101/.test(nose.text) && /offset 1 nose R 0\.4 mm/.test(nose.text) && /tip 3/.test(nose.text) && round,
+          `after the last block: "${nose.text.replace(/\n/g, ' · ')}", the nose circle 0.4 about X(radius) 20.4 Z-29.6`);
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
     await latheExample(context);
   } catch (e) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <iterator>
+#include <numbers>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -102,7 +104,7 @@ TEST(HtmlPage, EmbedsThreeJsAndTheScripts) {
   EXPECT_NE(web::asset("backplot.js").find("NcurveBackplot"), std::string_view::npos);
   EXPECT_TRUE(web::asset("nothing.js").empty());
   const Page p = page("G00 X10 Y0\nG01 X20 F100\nM30\n");
-  for (const char* name : {"three.min.js", "OrbitControls.js", "backplot-geometry.js", "backplot-axes.js", "backplot-holes.js", "backplot-measure.js", "backplot-part.js", "backplot.js",
+  for (const char* name : {"three.min.js", "OrbitControls.js", "backplot-geometry.js", "backplot-axes.js", "backplot-holes.js", "backplot-measure.js", "backplot-part.js", "backplot-programmed.js", "backplot.js",
                            "run.js", "backplot.css"})
     EXPECT_NE(p.html.find(web::asset(name)), std::string::npos) << name;
   // offline: no address to load anything from
@@ -180,9 +182,9 @@ TEST(HtmlPage, HostileCommentStaysText) {
   const std::string hostile = "(</script><script>alert(1)</script>)";
   const Page p = page("G00 X1 Y1\nG00 X2 " + hostile + "\nM30\n");
   EXPECT_EQ(p.ran.alarm_code(), "PS0009");
-  // the page's own eleven scripts (two data blocks, nine programs), and no other
-  EXPECT_EQ(count(p.html, "<script"), 11u);
-  EXPECT_EQ(count(p.html, "</script"), 11u);
+  // the page's own twelve scripts (two data blocks, ten programs), and no other
+  EXPECT_EQ(count(p.html, "<script"), 12u);
+  EXPECT_EQ(count(p.html, "</script"), 12u);
   EXPECT_EQ(p.html.find("<script>alert"), std::string::npos);
   // the text itself is there, escaped, and reads back unchanged
   EXPECT_EQ(p.data["alarm"]["block"], "G00 X2 " + hostile);
@@ -208,4 +210,36 @@ TEST(HtmlPage, LatheKeepsXAsARadius) {
   ASSERT_EQ(end.size(), 6u);
   EXPECT_NEAR(end[0], 30, 1e-5);
   EXPECT_NEAR(end[5], -10, 1e-5);
+}
+
+// A 40 x 30 rectangle from (0, 0) clockwise under G41 D1 of radius 5 (the cutter outside), its top
+// a half circle G02 about (20, 30): the page's programmed contour is the program's, the approach from
+// (-20, -20), the sides corner to corner, the arc about (20, 30) sweeping -180°, the G40 move out.
+TEST(HtmlPage, ProgrammedContourBesideTheCompensatedPath) {
+  machine::MachineProfile profile = machine::default_mill();
+  profile.tool_offsets[1].geometry = profile.tool_offsets[1].d_geometry = 5;
+  const Page p = page("G90 G17 G21 G54 G00 X-20. Y-20. Z5.\nG01 Z-1. F200.\nG41 D1 G01 X0 Y0 F500.\nY30.\n"
+                      "G02 X40. Y30. I20. J0\nG01 Y0\nX0\nG40 G01 X-20. Y-20.\nG00 Z5.\nM30\n",
+                      profile);
+  const nlohmann::json& pr = p.data["programmed"];
+  const double want[][4] = {{-20, -20, 0, 0}, {0, 0, 0, 30}, {0, 30, 40, 30}, {40, 30, 40, 0}, {40, 0, 0, 0}, {0, 0, -20, -20}};
+  ASSERT_EQ(pr.size(), std::size(want));
+  for (std::size_t e = 0; e < pr.size(); ++e) {
+    EXPECT_NEAR(pr[e][1].get<double>(), want[e][0], 1e-9) << e;
+    EXPECT_NEAR(pr[e][2].get<double>(), want[e][1], 1e-9) << e;
+    EXPECT_NEAR(pr[e][4].get<double>(), want[e][2], 1e-9) << e;
+    EXPECT_NEAR(pr[e][5].get<double>(), want[e][3], 1e-9) << e;
+    EXPECT_EQ(pr[e][6], -1) << e;
+  }
+  const nlohmann::json& arcs = p.data["programmed_arcs"];
+  ASSERT_EQ(arcs.size(), 1u);
+  EXPECT_EQ(arcs[0][0], pr[2][0]);  // the same motion
+  EXPECT_NEAR(arcs[0][1].get<double>(), 20, 1e-9);
+  EXPECT_NEAR(arcs[0][2].get<double>(), 30, 1e-9);
+  EXPECT_NEAR(arcs[0][4].get<double>(), -std::numbers::pi, 1e-9);
+  EXPECT_EQ(arcs[0][5], 17);
+  // without compensation: none
+  const Page plain = page("G00 X0 Y0 Z5.\nG01 X40. F500.\nG02 X0 I-20.\nM30\n");
+  EXPECT_TRUE(plain.data["programmed"].empty());
+  EXPECT_TRUE(plain.data["programmed_arcs"].empty());
 }
