@@ -11,17 +11,6 @@
 
 namespace ncurve::machine {
 
-namespace {
-
-bool takes_no_sign(char letter) {
-  return letter == 'M' || letter == 'S' || letter == 'T' || letter == 'H' || letter == 'D';
-}
-
-}  // namespace
-
-bool Executor::word_needs_check(char letter, double value) const {
-  return (letter != 'G' && have_[letter - 'A']) || (value < 0 && takes_no_sign(letter));
-}
 
 void Executor::check_block_words() {
   // a minus sign where the address takes none: T-1 would select no tool, S-100 no speed

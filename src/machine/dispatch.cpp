@@ -232,9 +232,11 @@ bool Executor::macro_call_block(const Block& b, SubprogramCall& sub) {
       if (cmds_.size() == 1) return true;
     }
   }
+  int g_macros = 0;  // nonzero when a G code calls a macro
+  for (int code : profile_.g_code_macros) g_macros |= code;
   if (!frames_.back().custom) {
     for (int g : g_codes_)
-      for (int i = 0; i < 10; ++i)
+      for (int i = 0; i < 10 && g_macros != 0; ++i)
         if (profile_.g_code_macros[i] != 0 && g == profile_.g_code_macros[i] * 10) {
           std::vector<Arg> args = arguments(false, g, -1);
           call_macro(9010 + i, args, 1, true, false, b.column);

@@ -140,7 +140,13 @@ private:
   double dimension_raw(const Cmd& c) const;  // program units, decimal point rule and rounding, no inch
   std::vector<Arg> arguments(bool skip_p_l, int skip_g, int skip_m) const;
   // checks on the block's words before they act (block_words.cpp)
-  bool word_needs_check(char letter, double value) const;
+  // A minus sign where the address takes none (T-1, S-100), or a letter again but G: check_block_words
+  static bool takes_no_sign(char letter) {
+    return letter == 'M' || letter == 'S' || letter == 'T' || letter == 'H' || letter == 'D';
+  }
+  bool word_needs_check(char letter, double value) const {
+    return (letter != 'G' && have_[letter - 'A']) || (value < 0 && takes_no_sign(letter));
+  }
   void check_block_words();
   void check_word_digits(char letter, double value, bool dimension, std::uint16_t column) const;
   void assign_arguments(const std::vector<Arg>& args);

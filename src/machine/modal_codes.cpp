@@ -67,9 +67,10 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
   } cancel_cycle{this, group01};
   for (std::size_t i = 0; i < g_codes_.size(); ++i) {
     int g = g_codes_[i];
-    std::uint16_t column = 0;
-    for (const Cmd& c : cmds_)
-      if (c.letter == 'G' && std::lround(c.value * 10) == g) column = c.column;
+    std::uint16_t column = 0;  // G00..G03 need it only to check a transform or developed mode
+    if ((g != 0 && g != 10 && g != 20 && g != 30) || xf_on_ || developed_)
+      for (const Cmd& c : cmds_)
+        if (c.letter == 'G' && std::lround(c.value * 10) == g) column = c.column;
     if (xf_on_) check_code_in_transform(g, column);
     if (developed_) [[unlikely]] check_code_in_developed(g, column);  // polar_cylindrical.cpp
     switch (g) {

@@ -308,7 +308,7 @@ void LineReader::read(std::string_view text, ReadState& state, Program*& current
       ++unchecked;
       continue;
     }
-    if (current && plain_nc_line(raw, line, *current, max_digits_)) {
+    if (current && eol < text.size() && plain_nc_line(raw, line, *current, max_digits_)) {  // a last line without '\n' goes below
       state.started = true;
       continue;
     }

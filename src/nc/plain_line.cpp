@@ -11,9 +11,9 @@ constexpr unsigned digit(char c) { return static_cast<unsigned>(c - '0'); }  // 
 constexpr unsigned letter_index(char c) { return static_cast<unsigned>((c | 0x20) - 'a'); }
 
 // Reads a run of digits from p into m (m * 10^count + value); returns how many.
-inline int read_digits(const char*& p, const char* end, std::uint64_t& m) {
+inline int read_digits(const char*& p, std::uint64_t& m) {
   const char* first = p;
-  for (; p != end && digit(*p) < 10; ++p) m = m * 10 + digit(*p);  // wraps past 19 digits, then unused
+  for (; digit(*p) < 10; ++p) m = m * 10 + digit(*p);  // wraps past 19 digits, then unused
   return static_cast<int>(p - first);
 }
 }  // namespace
@@ -21,9 +21,9 @@ inline int read_digits(const char*& p, const char* end, std::uint64_t& m) {
 bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int max_digits) {
   if (raw.size() > kMaxBlockChars) return false;
   const char* const begin = raw.data();
-  const char* const end = begin + raw.size();
+  const char* const end = begin + raw.size();  // a '\n': every loop below stops there
   const char* p = begin;
-  while (p != end && blank(*p)) ++p;
+  while (blank(*p)) ++p;
   if (p == end) return false;
   const std::size_t words_mark = prog.words.size();
   const std::uint16_t first_col = static_cast<std::uint16_t>(p - begin + 1);
@@ -44,18 +44,18 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
     w.letter = static_cast<char>('A' + k);
     w.column = static_cast<std::uint16_t>(p - begin + 1);
     ++p;
-    while (p != end && blank(*p)) ++p;
-    bool negative = false;
-    if (p != end && (*p == '-' || *p == '+')) negative = *p++ == '-';
+    while (blank(*p)) ++p;
+    const bool negative = *p == '-';
+    p += negative || *p == '+';
     std::uint64_t mantissa = 0;
-    int digits = read_digits(p, end, mantissa);
+    int digits = read_digits(p, mantissa);
     int fraction = -1;
-    if (p != end && *p == '.') {
+    if (*p == '.') {
       ++p;
-      fraction = read_digits(p, end, mantissa);
+      fraction = read_digits(p, mantissa);
       digits += fraction;
     }
-    while (p != end && blank(*p)) ++p;
+    while (blank(*p)) ++p;
     // blanks inside the number, a second point, or what follows not a letter: the general scanner's
     if (digits == 0 || digits > max_digits || (p != end && letter_index(*p) >= 26)) return give_up();
     w.decimal_point = fraction >= 0;

@@ -9,7 +9,8 @@ namespace ncurve::nc::text {
 
 // Compiles a line of nothing but plain address words straight from the raw text and returns true;
 // anything else (macros, comments, N, '/', errors) returns false, leaving prog as it was, for the
-// general scanner and compile_block, which give the same result for plain lines.
+// general scanner and compile_block, which give the same result for plain lines. The line's text
+// must be followed by '\n' (raw.data()[raw.size()]), where its scanning stops.
 bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int max_digits);
 
 }  // namespace ncurve::nc::text
