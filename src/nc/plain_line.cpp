@@ -26,7 +26,16 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
   while (blank(*p)) ++p;
   if (p == end) return false;
   const std::size_t words_mark = prog.words.size();
-  const std::uint16_t first_col = static_cast<std::uint16_t>(p - begin + 1);
+  std::int32_t sequence = -1;  // N1..N99999999 written first, digits only, then a word
+  if ((*p | 0x20) == 'n') {
+    std::uint64_t n = 0;
+    const int digits = read_digits(++p, n);
+    if (digits == 0 || digits > 8 || (!blank(*p) && letter_index(*p) >= 26)) return false;
+    sequence = static_cast<std::int32_t>(n);
+    while (blank(*p)) ++p;
+    if (p == end) return false;  // N alone: the general scanner's empty block
+  }
+  const std::uint16_t first_col = static_cast<std::uint16_t>(p - begin + 1);  // the first word's
   constexpr std::uint32_t kMotionLetters = 1u << ('G' - 'A') | 1u << ('X' - 'A') | 1u << ('Y' - 'A') |
                                            1u << ('Z' - 'A') | 1u << ('F' - 'A');
   std::uint32_t letters = 0, twice = 0;
@@ -73,6 +82,10 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
     b.plain_motion = !g_word ? PlainMotion::modal : g_plain ? PlainMotion::coded : PlainMotion::no;
   b.line = line;
   b.column = first_col;
+  if (sequence >= 0) {
+    b.sequence = sequence;
+    prog.sequence_index.emplace(sequence, static_cast<std::int32_t>(prog.blocks.size() - 1));
+  }
   b.words_begin = static_cast<std::uint32_t>(words_mark);
   b.words_end = static_cast<std::uint32_t>(prog.words.size());
   return true;

@@ -144,10 +144,12 @@ TEST(Parser, PlainLinesCompileAsTheGeneralScannerDoes) {
       "X",                      "X1-2",                  "XY1",                "G01 X1 N10",
       "M30 O12",                "\tG00\tX0\r",           "X0.000000000000000001", "G4X-0", "X0.00555555555555556",
       "X-.0000000000000000000000001234", "X 1 2 . 3 4 0", "X-0.", "Y+.0", "G01X1.Y2.Z3.F4.",
+      "N10 G01 X1.", "N0010X1", "N 10 X1", "N123456789 X1", "N12345678 X1", "N10", "N10 ", "N10.5 X1",
+      "N X1", "G01 N10 X1", "n7 g1 x2", "N10 N20 X1", "N10 O5",
   };
   std::vector<std::string> all(std::begin(lines), std::end(lines));
   std::mt19937 rng(7);  // and lines of random plain-looking characters
-  const std::string alphabet = "XYZGFO 0123456789.-+\t";
+  const std::string alphabet = "XYZGFON 0123456789.-+\t";
   for (int i = 0; i < 3000; ++i) {
     std::string line;
     for (int n = static_cast<int>(rng() % 20); n > 0; --n) line += alphabet[rng() % alphabet.size()];
@@ -173,9 +175,13 @@ TEST(Parser, PlainLinesCompileAsTheGeneralScannerDoes) {
       EXPECT_EQ(a.words[i].literal, b.words[i].literal);
       EXPECT_EQ(a.words[i].value, b.words[i].value);
       EXPECT_EQ(std::signbit(a.words[i].value), std::signbit(b.words[i].value));
-      if (a.words[i].decimal_point) EXPECT_EQ(a.words[i].decimals, b.words[i].decimals);
+      if (a.words[i].decimal_point) {
+        EXPECT_EQ(a.words[i].decimals, b.words[i].decimals);
+      }
     }
+    EXPECT_EQ(a.sequence_index, b.sequence_index);
     for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+      EXPECT_EQ(a.blocks[i].sequence, b.blocks[i].sequence);
       EXPECT_EQ(a.blocks[i].kind, b.blocks[i].kind);
       EXPECT_EQ(a.blocks[i].column, b.blocks[i].column);
       EXPECT_EQ(a.blocks[i].error >= 0, b.blocks[i].error >= 0);
