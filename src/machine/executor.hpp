@@ -106,6 +106,7 @@ private:
   bool plain_lane_open(const nc::Block& b) const;
   void plain_motion_block(const nc::Block& b);
   std::uint64_t plain_lane_blocks_ = 0;
+  bool g01_calls_macro() const;  // No.6050..6059 make G01 a macro call
   bool macro_call_block(const nc::Block& b, SubprogramCall& sub);
   void word_settings(const std::vector<int>& one_shot, SubprogramCall& sub);
   bool block_motion(const std::vector<int>& one_shot);
@@ -496,6 +497,7 @@ private:
   LatheCycle lathe_cycle_;
   bool g76_reads_a_ = false;  // the one-block G76 reads its end point: A is its tool angle
   std::uint64_t thread_block_ = 0;  // RunStats::blocks at the last G32 cut: the next block continues it
+  bool g01_macro_ = g01_calls_macro();  // kept as G10 L52 changes the profile
   int thread_chamfer_ = profile_.thread_chamfer;  // G76 P(m)(r)(a), Q(dmin), R(d) rewrite these
   int g76_finish_count_ = profile_.g76_finish_count;
   int g76_tool_angle_ = profile_.g76_tool_angle;

@@ -16,7 +16,11 @@ bool Executor::plain_lane_open(const nc::Block& b) const {
       profile_.lathe() || !has_axis_[0] || !has_axis_[1] || !has_axis_[2] || compensating() || comp_->offset_mode())
     return false;
   if (b.plain_motion == nc::PlainMotion::modal) return modal_.motion == 0 || modal_.motion == 1;
-  return std::ranges::find(profile_.g_code_macros, 1) == profile_.g_code_macros.end();  // G01 calling a macro (0: none)
+  return !g01_macro_;
+}
+
+bool Executor::g01_calls_macro() const {
+  return std::ranges::find(profile_.g_code_macros, 1) != profile_.g_code_macros.end();
 }
 
 // The words are not kept as the general path's cmds_: nothing reads them after the block.

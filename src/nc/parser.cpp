@@ -291,11 +291,19 @@ void LineReader::read(std::string_view text, ReadState& state, Program*& current
   const bool streamed = !file_.whole();
   std::size_t pos = 0;
   Scanner& ls = *scanner_;
+  const std::size_t ended_lines = text.rfind('\n') + 1;  // the lines before end in '\n' (0: none)
   while (pos < text.size() && !state.done) {
-    std::size_t eol = text.find('\n', pos);
-    if (eol == std::string_view::npos) eol = text.size();
     const std::uint32_t line = ++state.line;
     if (streamed) file_.line_read(line, state.offset + pos);
+    if (pos < ended_lines && current && syntax.kept < kMaxDiagnostics) {
+      if (const char* nl = plain_nc_line(text.data() + pos, line, *current, max_digits_)) {
+        state.started = true;
+        pos = static_cast<std::size_t>(nl - text.data()) + 1;
+        continue;
+      }
+    }
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
     std::string_view raw(text.data() + pos, eol - pos);
     pos = eol + 1;
 
@@ -306,10 +314,6 @@ void LineReader::read(std::string_view text, ReadState& state, Program*& current
     }
     if (syntax.kept >= kMaxDiagnostics && current && last_alarms(current, state) && cannot_be_a_target(raw, *current)) {
       ++unchecked;
-      continue;
-    }
-    if (current && eol < text.size() && plain_nc_line(raw, line, *current, max_digits_)) {  // a last line without '\n' goes below
-      state.started = true;
       continue;
     }
     ls.clear();

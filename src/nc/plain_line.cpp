@@ -18,22 +18,19 @@ inline int read_digits(const char*& p, std::uint64_t& m) {
 }
 }  // namespace
 
-bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int max_digits) {
-  if (raw.size() > kMaxBlockChars) return false;
-  const char* const begin = raw.data();
-  const char* const end = begin + raw.size();  // a '\n': every loop below stops there
-  const char* p = begin;
+const char* plain_nc_line(const char* begin, std::uint32_t line, Program& prog, int max_digits) {
+  const char* p = begin;  // every loop below stops at the line's '\n'
   while (blank(*p)) ++p;
-  if (p == end) return false;
+  if (*p == '\n') return nullptr;
   const std::size_t words_mark = prog.words.size();
   std::int32_t sequence = -1;  // N1..N99999999 written first, digits only, then a word
   if ((*p | 0x20) == 'n') {
     std::uint64_t n = 0;
     const int digits = read_digits(++p, n);
-    if (digits == 0 || digits > 8 || (!blank(*p) && letter_index(*p) >= 26)) return false;
+    if (digits == 0 || digits > 8 || (!blank(*p) && letter_index(*p) >= 26)) return nullptr;
     sequence = static_cast<std::int32_t>(n);
     while (blank(*p)) ++p;
-    if (p == end) return false;  // N alone: the general scanner's empty block
+    if (*p == '\n') return nullptr;  // N alone: the general scanner's empty block
   }
   const std::uint16_t first_col = static_cast<std::uint16_t>(p - begin + 1);  // the first word's
   constexpr std::uint32_t kMotionLetters = 1u << ('G' - 'A') | 1u << ('X' - 'A') | 1u << ('Y' - 'A') |
@@ -42,11 +39,11 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
   bool g_plain = true;  // no G word, or G00 / G01
   bool g_word = false;
   bool negative_feed = false;
-  auto give_up = [&] {
+  auto give_up = [&]() -> const char* {
     prog.words.resize(words_mark);
-    return false;
+    return nullptr;
   };
-  while (p != end) {
+  while (*p != '\n') {
     const unsigned k = letter_index(*p);
     if (k >= 26 || k == 'O' - 'A' || k == 'N' - 'A') return give_up();  // O, N or the general scanner's
     Word& w = prog.words.emplace_back();
@@ -66,7 +63,7 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
     }
     while (blank(*p)) ++p;
     // blanks inside the number, a second point, or what follows not a letter: the general scanner's
-    if (digits == 0 || digits > max_digits || (p != end && letter_index(*p) >= 26)) return give_up();
+    if (digits == 0 || digits > max_digits || (*p != '\n' && letter_index(*p) >= 26)) return give_up();
     w.decimal_point = fraction >= 0;
     w.decimals = static_cast<std::uint8_t>(fraction > 0 ? fraction : 0);
     const double v = fraction > 0 ? scaled_decimal(static_cast<std::int64_t>(mantissa), fraction) : static_cast<double>(mantissa);
@@ -76,6 +73,7 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
     if (k == 'G' - 'A') g_word = true, g_plain = !w.decimal_point && (w.value == 0 || w.value == 1);
     if (k == 'F' - 'A') negative_feed = negative;
   }
+  if (static_cast<std::size_t>(p - begin) > kMaxBlockChars) return give_up();
   Block& b = prog.blocks.emplace_back();
   b.kind = Statement::nc;
   if ((letters & ~kMotionLetters) == 0 && twice == 0 && !negative_feed)
@@ -88,7 +86,7 @@ bool plain_nc_line(std::string_view raw, std::uint32_t line, Program& prog, int 
   }
   b.words_begin = static_cast<std::uint32_t>(words_mark);
   b.words_end = static_cast<std::uint32_t>(prog.words.size());
-  return true;
+  return p;
 }
 
 }  // namespace ncurve::nc::text

@@ -24,7 +24,7 @@ std::string random_program(std::mt19937& rng) {
       "G55", "G54", "G02 X10. Y0 R5. F300.", "G03 X0 Y0 R5.", "G61", "G64", "G09 G01 X3. Y3.",
       "G01 X5. ,C1.", "G01 Y8. ,R1.", "G01 X0 Y0", "M03 S1000", "M05", "G94", "G95", "G65 P9001 A1.",
       "G66 P9001 A2.", "G67", "G16", "G15", "X1 Y2", "G01 X2", "#1=#1+1", "G28 Z0", "G04 P100",
-      "G01 F-5.", "G01 X1. X2.", "F0", "G1. X1.", "G01 G00 X3.",
+      "G01 F-5.", "G01 X1. X2.", "F0", "G1. X1.", "G01 G00 X3.", "G10 L52\nN6050 R1\nG11",
   };
   std::string s = "O1000\nG21 G90 G17 G54 G40 G80 G49\nG10 L11 P1 R2.\nG10 L11 P2 R1.5\nG10 L10 P1 R50.\n";
   for (int n = 20 + pick(60); n > 0; --n) {
@@ -77,7 +77,8 @@ void expect_same(const test::Ran& lane, const test::Ran& general) {
 }  // namespace
 
 TEST(PlainLane, RandomProgramsRunAsByTheGeneralPath) {
-  const std::map<std::string, std::string> macros = {{"O9001.nc", "O9001\nG91 G01 X#1 F100.\nG90\nM99\n"}};
+  const std::map<std::string, std::string> macros = {{"O9001.nc", "O9001\nG91 G01 X#1 F100.\nG90\nM99\n"},
+                                                      {"O9010.nc", "O9010\nG01 X[#24+1] F300.\nM99\n"}};
   std::mt19937 rng(11);
   std::uint64_t laned = 0;
   for (int k = 0; k < 2000; ++k) {

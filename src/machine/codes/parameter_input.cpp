@@ -157,6 +157,7 @@ void Executor::set_parameters_by_program(int n, const std::vector<std::pair<std:
                                n),
          column);
   profile_ = std::move(changed);
+  g01_macro_ = g01_calls_macro();
   // values a program also changes (G71 U, G76 P Q R rewrite these parameters), and cached settings
   switch (n) {
     case 5130: thread_chamfer_ = profile_.thread_chamfer; break;
