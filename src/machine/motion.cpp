@@ -150,10 +150,13 @@ OffsetOfMove Executor::offset_of_move(const PlaneAxes& pa) const {
   return o;
 }
 
+// Rapid axes move independently: the slowest axis sets the time (an axis that does not move, none).
 double Executor::rapid_seconds(const AxisVector& from, const AxisVector& to) const {
   double slowest = 0;
-  for (int a = 0; a < kAxes; ++a)
-    if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(to[a] - from[a]) / profile_.rapid_rate[a]);
+  for (int a = 0; a < kAxes; ++a) {
+    const double d = std::fabs(to[a] - from[a]);
+    if (d != 0 && profile_.rapid_rate[a] > 0) slowest = std::max(slowest, d / profile_.rapid_rate[a]);
+  }
   return slowest * 60.0;
 }
 
@@ -225,12 +228,9 @@ void Executor::linear(MoveKind kind, const AxisVector& target) {
     const double fed = extra_axes_ ? combined_length(coords_.pos, target, m.length) : m.length;  // F on every axis
     m.seconds = feed_seconds(fed, coords_.pos[0], target[0]);
     clamp_cutting_feed(m, fed);
-  } else {  // rapid axes move independently: the slowest axis sets the time
-    double slowest = 0;
-    for (int a = 0; a < kAxes; ++a)
-      if (profile_.rapid_rate[a] > 0) slowest = std::max(slowest, std::fabs(target[a] - coords_.pos[a]) / profile_.rapid_rate[a]);
+  } else {
     m.feed = 0;
-    m.seconds = slowest * 60.0;
+    m.seconds = rapid_seconds(coords_.pos, target);
   }
   coords_.pos = target;
   if (rolls_) wrap_rotary();
