@@ -7,6 +7,8 @@
 (function (global) {
   'use strict';
   const {el, fmt} = global.NcurveDom;
+  // a G code as the control's screen shows it: two digits before the point (G00, G01, G05.1, G13.1)
+  const gCode = (v) => `G${v < 10 ? '0' : ''}${fmt(v, 1)}`;
   const num = (v) => (v === null || v === undefined || v !== v ? '<vacant>' : fmt(v, 6));
 
   // boxes: the list, the modal block and the table; st: NcurveTrace's at(k); trace: the NcurveTrace;
@@ -28,7 +30,7 @@
     for (const [v, val] of st.modal) {
       // (0 is G00 in group 1 only: a group the control gives no code reads 0)
       if (v > 4022) { if (!(lathe && (v === 4107 || v === 4111))) other.push(`${letters[v]}${num(val)}`); }  // a lathe has no D, H
-      else if (val !== null && (val !== 0 || v === 4001) && (!groups.size || groups.has(v - 4000))) G.push(`G${fmt(val, 1)}`);
+      else if (val !== null && (val !== 0 || v === 4001) && (!groups.size || groups.has(v - 4000))) G.push(gCode(val));
     }
     boxes.modal.textContent = G.join(' ') + '\n' + other.join(' ');
     boxes.modal.style.whiteSpace = 'pre-wrap';
