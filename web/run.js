@@ -49,7 +49,12 @@
   title.append(result);
   head.append(title);
   const facts = el('dl', 'facts');
-  const fact = (name, value) => { facts.append(el('dt', '', name), el('dd', '', value)); };
+  // a name and its value in a box of their own: a row of the header wraps between facts, not inside one
+  const fact = (name, value) => {
+    const pair = el('div', 'fact');
+    pair.append(el('dt', '', name), el('dd', '', value));
+    facts.append(pair);
+  };
   const kinds = {rapid: 0, feed: 0, arc: 0};
   for (let i = 0; i < moves.count; i++) kinds[NcurveBackplot.KIND_NAMES[moves.kind[i]]]++;
   fact('motions', `${summary.motions} — ${kinds.rapid} rapid, ${kinds.feed} feed, ${kinds.arc} arc`);

@@ -334,7 +334,6 @@
     if (!trace.complete) $('dbg-pos').title = trace.message || '';
     goTo(Math.min(W.pos, trace.count), true);
   }
-  const num = (v) => (v === null || v === undefined || v !== v ? '<vacant>' : fmt(v, 6));
   function goTo(k, quiet) {
     if (!trace) return;
     k = Math.max(0, Math.min(trace.count, k));
@@ -355,84 +354,12 @@
     const tool = W.tool = NcurveToolAtStep.show($('dbg-tool'), st, !!(answer.profile && answer.profile.lathe), at ? Array.from(at) : null);
     plot.setCutter(tool.cutter);
     part.step(cut);
-    // the call stack, innermost first
-    const stack = $('dbg-stack');
-    stack.textContent = '';
-    for (const f of st.stack.slice().reverse()) {
-      const o = f.program >= 0 ? `O${String(f.program).padStart(4, '0')}` : '(no O number)';
-      const call = f.call_line ? ` ← ${answer.files[f.call_file] || ''} line ${f.call_line}` : '';
-      stack.append(el('li', '', `${f.kind} ${o}${f.custom ? ' custom' : ''}${f.modal ? ' G66' : ''} · level ${f.level}${call}`));
-    }
-    // modal state
-    const G = [], other = [];
-    const letters = {4107: 'D', 4109: 'F', 4111: 'H', 4113: 'M', 4119: 'S', 4120: 'T'};
-    // the groups this machine's G codes have (a system-A lathe has no G90/G91 group, its G98/G99 are feeds)
-    const groups = new Set((answer.profile && answer.profile.modal_groups) || []);
-    const lathe = !!(answer.profile && answer.profile.lathe);
-    for (const [v, val] of st.modal) {
-      // (0 is G00 in group 1 only: a group the control gives no code reads 0)
-      if (v > 4022) { if (!(lathe && (v === 4107 || v === 4111))) other.push(`${letters[v]}${num(val)}`); }  // a lathe has no D, H
-      else if (val !== null && (val !== 0 || v === 4001) && (!groups.size || groups.has(v - 4000))) G.push(`G${fmt(val, 1)}`);
-    }
-    $('dbg-modal').textContent = G.join(' ') + '\n' + other.join(' ');
-    $('dbg-modal').style.whiteSpace = 'pre-wrap';
-    // variables: locals of each level, commons, the rest
-    const table = $('dbg-vars');
-    table.textContent = '';
-    const rows = (title, entries) => {
-      if (!entries.length) return;
-      const h = el('tr');
-      const th = el('th', '', title);
-      th.colSpan = 2;
-      h.append(th);
-      table.append(h);
-      for (const [label, key] of entries) {
-        const tr = el('tr', st.changed.has(key) ? 'changed' : '');
-        tr.dataset.key = key;
-        tr.append(el('td', '', label), el('td', '', num(st.vars.get(key))));
-        table.append(tr);
-      }
-    };
-    const levels = [...new Set(st.stack.map((f) => f.level))].reverse();
-    for (const level of levels) {
-      const e = [];
-      for (let v = 1; v <= 33; v++) {
-        const key = trace.key(v, level);
-        if (st.vars.has(key) || st.changed.has(key)) e.push([`#${v}`, key]);
-      }
-      rows(`locals, level ${level}${level === levels[0] ? ' (current)' : ''}`, e);
-    }
-    const common = [], system = [];
-    const keys = new Set([...st.vars.keys(), ...st.changed]);
-    for (const key of [...keys].filter((x) => x < 0).sort((a, b) => b - a)) {
-      const v = -key;
-      if ((v >= 100 && v <= 199) || (v >= 500 && v <= 999)) common.push([`#${v}`, key]);
-      else system.push([`#${v} ${NcurveTrace.systemName(v, profile())}`.trim(), key]);
-    }
-    rows('common variables', common);
-    rows('system variables written', system);
-    showReads(st, table);
-    W.vars = Object.fromEntries([...st.vars].map(([key, v]) => [key < 0 ? `#${-key}` : `L${Math.floor(key / 100000)}#${key % 100000}`, v]));
-  }
-  // the system variables the program has read so far, each with the value it read last; those the
-  // block just run read in yellow when the value differs from the step before
-  function showReads(st, table) {
-    W.reads = Object.fromEntries([...st.reads].map(([v, x]) => [`#${v}`, x]));
-    W.readChanged = [...st.readChanged].map((v) => `#${v}`);
-    if (!st.reads.size) return;
-    const h = el('tr'), th = el('th', '', 'system variables read (value at the last read)');
-    th.colSpan = 2;
-    h.append(th);
-    table.append(h);
-    const p = profile();
-    for (const v of [...st.reads.keys()].sort((a, b) => a - b)) {
-      const tr = el('tr', st.readChanged.has(v) ? 'changed' : st.readNow.has(v) ? 'read' : '');
-      tr.dataset.sys = v;
-      const label = el('td', '', `#${v}`), what = NcurveTrace.systemName(v, p);
-      if (what) label.append(el('span', 'what', ` ${what}`));
-      tr.append(label, el('td', '', num(st.reads.get(v))));
-      table.append(tr);
-    }
+    // the call stack, the modal state and the variables (wb-step.js)
+    const shown = NcurveStepView.show({stack: $('dbg-stack'), modal: $('dbg-modal'), vars: $('dbg-vars')}, st,
+      {trace, files: answer.files, profile: answer.profile, machine: profile()});
+    W.vars = shown.vars;
+    W.reads = shown.reads;
+    W.readChanged = shown.readChanged;
   }
   const step = (d) => goTo(W.pos + d);
   const seek = (dir) => {

@@ -7,7 +7,8 @@ namespace ncurve::app {
 
 void add_serve_command(CLI::App& app, ServeArgs& a) {
   CLI::App* cmd = app.add_subcommand("serve", "the local web workbench and its JSON API (http://127.0.0.1:8080)");
-  cmd->add_option("files", a.files, "part programs the page can open (GET /api/files)")->check(CLI::ExistingFile);
+  cmd->add_option("files", a.files, "part programs the page can open (GET /api/files), or folders of them")
+      ->check(CLI::ExistingPath);
   cmd->add_option("--port", a.port, "TCP port (default 8080; 0: any free port, printed)")->check(whole(0, 65535));
   cmd->add_option("--host", a.host,
                   "address to listen on (default 127.0.0.1, this machine only; 0.0.0.0 lets any machine that can "

@@ -1,6 +1,7 @@
 // The checks of a whole file before its run: NC2001 (words with and without a decimal point), and
 // the profile hints; for a streamed file, made piece by piece and given at the end of the run.
 #include "machine/executor.hpp"
+#include "machine/g_codes.hpp"
 #include "machine/word_values.hpp"
 
 #include <fmt/format.h>
@@ -40,6 +41,28 @@ std::string shown_number(double v, int decimals) {
   return s == "-0" ? "0" : s;
 }
 
+// Whether block b runs in a drilling canned cycle's mode, `before` the mode the blocks before it left:
+// G73/G74/G76/G81..G89 (a lathe's G83..G89) start it, G80 or a group 01 code in the block ends it,
+// as the executor's select_canned_cycle and cancel_canned_cycle. A G code the profile makes a macro
+// call starts nothing.
+bool in_drilling_cycle(const MachineProfile& profile, const nc::Program& p, const nc::Block& b, bool before) {
+  const GMachine machine = g_machine(profile);
+  bool starts = false, ends = false;
+  for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
+    const nc::Word& word = p.words[w];
+    if (word.letter != 'G' || !word.literal) continue;
+    const int g = round_int(word.value * 10);
+    bool macro = false;
+    for (int code : profile.g_code_macros) macro |= code != 0 && g == std::abs(code) * 10;
+    if (macro) continue;
+    const bool lathe_cycle = g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890;
+    const bool mill_cycle = g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890 && g % 10 == 0);
+    if (profile.lathe() ? lathe_cycle : mill_cycle) starts = true;
+    if (g == 800 || g_group(g, machine) == 1) ends = true;
+  }
+  return (before || starts) && !ends;
+}
+
 // Programs that mix dimension words with and without a decimal point are a classic source of
 // scrapped parts. A word of a macro call (G65, G66, a custom G code) is an argument, not an axis.
 // The search goes through a program's blocks in order, a piece at a time when it is streamed.
@@ -58,9 +81,11 @@ void search_decimal_points(const MachineProfile& profile, const nc::Program& pie
   const nc::Program* p = &piece;
   for (const auto& b : p->blocks) {
     if (b.kind != nc::Statement::nc) continue;  // DPRNT's range indexes Program::prints
+    found.in_cycle = in_drilling_cycle(profile, *p, b, found.in_cycle);
     for (std::uint32_t w = b.words_begin; w < b.words_end; ++w) {
       const nc::Word& word = p->words[w];
       if (!word.literal || !scaled_address(word.letter)) continue;
+      if (found.in_cycle && word.letter == profile.drilling.repeat_address) continue;  // K: the number of repeats
       if (word.letter == 'Q' && profile.lathe() && block_has_g(*p, b, 700, 730)) continue;  // Q: a sequence number
       if (word.letter == 'Q' && profile.lathe()) continue;  // and a start angle (G32, G92), a depth in increments (G76)
       if (word.letter == 'R' && profile.lathe() && block_has_g(*p, b, 730, 730)) continue;  // G73 R: divisions

@@ -19,6 +19,7 @@ struct DecimalPointSearch {
   std::uint16_t column = 0;
   std::uint32_t line = 0;
   bool argument = false;
+  bool in_cycle = false;  // a drilling canned cycle's mode, as the blocks read so far leave it
 };
 
 // A streamed main file's checks of every program, made as its pieces are read (on a thread beside the

@@ -3,7 +3,8 @@
 // Opens the pages of shipped examples and checks what is drawn: the number of moves against the
 // run's, a WebGL canvas that is not blank (pixels of a screenshot), the block shown when hovering
 // a move, the view buttons, the alarm, a rotary axis's range and ends, a lathe's axes and centre hole, a hostile
-// comment kept as text, the programmed contour beside a compensated path. Screenshots go to OUT_DIR for a person to look at. Exit 77 (skipped) where no Chromium is installed.
+// comment kept as text, the programmed contour beside a compensated path, the header's facts each
+// on one row from 1024 to 1920 px. Screenshots go to OUT_DIR for a person to look at. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {execFileSync} = require('child_process');
 const fs = require('fs');
@@ -227,6 +228,20 @@ async function lonelyMove(page, motions, kind) {
       await page.click('#legend input[type=checkbox]');
       await page.evaluate(() => ncurveBackplot.plot.setView('top'));
       await page.screenshot({path: path.join(out, 'browser_programmed.png')});
+      // from 1024 px up the header's rows wrap between its facts, each name on the row of its value
+      const apart = [];
+      for (let width = 1024; width <= 1920; width += 8) {
+        await page.setViewportSize({width, height: 768});
+        const names = await page.evaluate(() => [...document.querySelectorAll('#summary dt')].filter((dt) => {
+          const dd = dt.nextElementSibling;
+          return !dd || Math.abs(dt.getClientRects()[0].top - dd.getClientRects()[0].top) > 2;
+        }).map((dt) => dt.textContent));
+        if (names.length) apart.push(`${width} px: ${names.join(', ')}`);
+      }
+      check(apart.length === 0, `1024 to 1920 px: each fact's name on the row of its value (apart: ${apart.slice(0, 3).join('; ') || 'none'})`);
+      await page.setViewportSize({width: 1024, height: 768});
+      await page.screenshot({path: path.join(out, 'browser_programmed-1024.png')});
+      await page.setViewportSize({width: 1280, height: 800});
       check(errors.length === 0, `programmed: no script errors (${errors.join('; ')})`);
       await page.close();
     }

@@ -16,7 +16,8 @@
 // the program's corners (hidden and shown by its legend's box), the debugger's tool (T1, D1 radius 5,
 // G41) and the cutter's circle of radius 5 about the last point; a watch checked with the Settings;
 // the tab open kept across a reload. Screenshots of the Settings tab and of the debugger on the
-// rectangle at 1024 x 768 and 1920 x 1080 (workbench-settings-*.png, workbench-tool-*.png).
+// rectangle at 1024 x 768 and 1920 x 1080 (workbench-settings-*.png, workbench-tool-*.png), the
+// Settings, the tabs' names on one line, and a lathe's offsets within the panel at 1024.
 'use strict';
 const {execFileSync, spawnSync} = require('child_process');
 const fs = require('fs');
@@ -392,21 +393,38 @@ function genList() {
     await ran(n);
     const shown = await page.inputValue('#set-offsets tr[data-offset="1"] input[data-field="length"]');
     check(shown === '100', `fanuc-mill: its offset 1 shown as its profile gives it (${shown}); the edit kept for the factory mill`);
+    // the Settings inside their panel, and each tab's name on one line (the open tab's in bold too)
+    const fits = () => page.evaluate(() => {
+      const p = document.getElementById('tab-settings'), r = p.getBoundingClientRect();
+      const inside = [...p.querySelectorAll('textarea, input, button, label')].every((e) => {
+        const b = e.getBoundingClientRect();
+        return b.width === 0 || (b.left >= r.left - 1 && b.right <= r.right + 1);
+      });
+      const bar = document.querySelector('.wb-bar').getBoundingClientRect();
+      const tabs = [...document.querySelectorAll('.wb-tabs button')].map((b) => b.getBoundingClientRect().height);
+      return {inside, across: p.scrollWidth <= p.clientWidth + 1, bar: bar.height, width: innerWidth,
+        tabs: tabs.every((h) => h === tabs[0]) && tabs[0] < 36 ? 'one line' : tabs.join(' ')};
+    });
     for (const [size, file] of [[{width: 1024, height: 768}, 'workbench-settings-1024.png'], [{width: 1920, height: 1080}, 'workbench-settings-1920.png']]) {
       await page.setViewportSize(size);
       await page.waitForTimeout(300);
-      const fit = await page.evaluate(() => {
-        const p = document.getElementById('tab-settings'), r = p.getBoundingClientRect();
-        const inside = [...p.querySelectorAll('textarea, input, button, label')].every((e) => {
-          const b = e.getBoundingClientRect();
-          return b.width === 0 || (b.left >= r.left - 1 && b.right <= r.right + 1);
-        });
-        const bar = document.querySelector('.wb-bar').getBoundingClientRect();
-        return {inside, across: p.scrollWidth <= p.clientWidth + 1, bar: bar.height, width: innerWidth};
-      });
-      check(fit.inside && fit.across && fit.bar < 100, `${size.width} x ${size.height}: the Settings within the panel, the header ${fit.bar} px tall`);
+      const fit = await fits();
+      check(fit.inside && fit.across && fit.bar < 100 && fit.tabs === 'one line',
+            `${size.width} x ${size.height}: the Settings within the panel, the header ${fit.bar} px tall, the tabs' names on ${fit.tabs}`);
       await page.screenshot({path: path.join(out, file)});
     }
+    // a lathe's seven offset columns, one edited (its "profile's" button beside), within the panel at 1024
+    await page.setViewportSize({width: 1024, height: 768});
+    n = await runs();
+    await page.selectOption('#machine', 'fanuc-lathe');
+    await ran(n);
+    await setting('#set-offsets tr[data-offset="1"] input[data-field="x_wear"]', '0.02');
+    let fit = await fits();
+    check(fit.inside && fit.across && fit.tabs === 'one line', `1024 x 768: a lathe's offsets within the panel (${fit.inside}, ${fit.across})`);
+    await page.screenshot({path: path.join(out, 'workbench-settings-lathe-1024.png')});
+    n = await runs();
+    await page.click('#set-offsets-reset');
+    await ran(n);
     await page.setViewportSize({width: 1400, height: 860});
     n = await runs();
     await page.selectOption('#machine', '');

@@ -2,7 +2,8 @@
 //   node workbench-lathe.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
 // Checks: the server's profile selected, the moves drawn against `ncurve run --json`, the ZX view
 // with Z across and X up (drawn as a radius, labelled as a diameter), a hovered move's end as the
-// program writes it, the G71 block making its roughing in one step, the debugger's keys, and the
+// program writes it, the G71 block making its roughing in one step, the debugger's keys, its modal
+// line's codes written as the control's screen writes them (two digits: G00, G01), and the
 // system variables a program reads in the watch, a programmed arc under tool-nose radius compensation
 // drawn on its circle and the nose circle about the nose centre at the end; with no FILE, the shipped
 // lathe example. Screenshots go to OUT_DIR. Exit 77 without Chromium.
@@ -171,6 +172,8 @@ async function latheExample(context) {
     const gs = (await page.textContent('#dbg-modal')).split('\n')[0].split(' ');
     check(gs.includes('G99') && gs.includes('G18') && !gs.includes('G98') && !gs.includes('G90') && !gs.includes('G91'),
           `the modal line on a system-A lathe: ${gs.join(' ')}`);
+    // written as the control's screen writes them, two digits before the point: G00 or G01 in group 01
+    check(gs.every((g) => /^G\d\d(\.\d)?$/.test(g)) && /^G0[0-3]$/.test(gs[0]), `each code with two digits (${gs[0]} ...)`);
     const words = (await page.textContent('#dbg-modal')).split('\n')[1].split(' ');
     check(words.includes('F0.25') && words.includes('T101') && !words.some((w) => /^[DH]/.test(w)),
           `the lathe's modal words, no D or H offset (a mill's): ${words.join(' ')}`);

@@ -73,6 +73,39 @@ TEST(CannedCycles, G91RepeatsStepByTheIncrement) {
                       {2, R, 30, 0, 2}, {2, L, 30, 0, -5}, {2, R, 30, 0, 2}});
 }
 
+// K in cycle mode is the number of repeats, a count: K3 beside decimal points is no mixed program
+// (NC2001), while X10 without its point still is. G91: R from the initial level (10 - 8 = 2), Z from
+// R (2 - 7 = -5); three holes stepping X by 10 from X10.
+TEST(CannedCycles, TheRepeatCountIsNoDimension) {
+  const std::string holes = "G90 G99 G81 X10. Y10. Z-5. R2. F200.\nG91 X10. R-8. Z-7. K3\nG80\nM30\n";
+  auto r = run("G90 G00 X0. Y0. Z10.\n" + holes);
+  expect_moves(r, 2, {{2, R, 10, 10, 10}, {2, R, 10, 10, 2}, {2, L, 10, 10, -5}, {2, R, 10, 10, 2},
+                      {3, R, 20, 10, 2}, {3, L, 20, 10, -5}, {3, R, 20, 10, 2},
+                      {3, R, 30, 10, 2}, {3, L, 30, 10, -5}, {3, R, 30, 10, 2},
+                      {3, R, 40, 10, 2}, {3, L, 40, 10, -5}, {3, R, 40, 10, 2}});
+  for (const auto& w : r.result.warnings) EXPECT_NE(w.code, "NC2001") << nc::format(w);
+  auto mixed = run("G90 G00 X0. Y0. Z10.\nG90 G99 G81 X10 Y10. Z-5. R2. F200.\nG91 X10. R-8. Z-7. K3\nG80\nM30\n");
+  ASSERT_EQ(mixed.result.warnings.size(), 1u);
+  EXPECT_EQ(mixed.result.warnings[0].code, "NC2001");
+  EXPECT_NE(mixed.result.warnings[0].message.find("X10 is read as 0.01 mm"), std::string::npos)
+      << mixed.result.warnings[0].message;
+  // the cycle ends with G80 and with a group 01 code: K3 after either is no repeat count
+  for (const char* end : {"G80\nG00 X20. K3\n", "G00 X20. K3\n"}) {
+    auto after = run(std::string("G90 G00 X0. Y0. Z10.\nG99 G81 X10. Y10. Z-5. R2. F200.\n") + end + "M30\n");
+    bool warned = false;
+    for (const auto& w : after.result.warnings)
+      warned |= w.code == "NC2001" && w.message.find("K3 is read as 0.003 mm") != std::string::npos;
+    EXPECT_TRUE(warned) << end;
+  }
+  // each program of a file is read from out of cycle mode: O0002's K3 is no repeat count, though
+  // O0001 ends in it
+  auto two = run("O0001\nG90 G00 X0. Y0. Z10.\nG99 G81 X10. Y10. Z-5. R2. F200.\nM30\nO0002\nX20. K3\nM99\n");
+  bool warned = false;
+  for (const auto& w : two.result.warnings)
+    warned |= w.code == "NC2001" && w.message.find("K3 is read as 0.003 mm") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 TEST(CannedCycles, K0StoresTheDataAndDrillsNothing) {
   auto r = run("G90 G00 X0. Y0. Z20.\nG98 G81 X10. Z-5. R2. K0 F100.\nX20.\nM30\n");
   expect_moves(r, 2, {{3, R, 20, 0, 20}, {3, R, 20, 0, 2}, {3, L, 20, 0, -5}, {3, R, 20, 0, 20}});
