@@ -1,0 +1,64 @@
+# Type stubs of the module ncurve (docs/python.md), kept by hand beside src/python/.
+import os
+from typing import Any, Mapping, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+# the names of moves["kind"]: MOVE_KINDS[kind]
+MOVE_KINDS: tuple[str, ...]
+
+_Text = Union[str, os.PathLike[str]]
+_Number = Union[int, float, str]
+
+class Diagnostic:
+    """An alarm, warning or syntax problem of a run: where it is and what it says."""
+    @property
+    def severity(self) -> str: ...
+    @property
+    def code(self) -> str: ...
+    @property
+    def message(self) -> str: ...
+    @property
+    def file(self) -> str | None: ...
+    @property
+    def line(self) -> int: ...
+    @property
+    def column(self) -> int: ...
+    @property
+    def block(self) -> str: ...
+    @property
+    def called_from(self) -> list[tuple[str | None, int, str]]: ...
+
+class Run:
+    """The result of run(): the moves and the summary of one run."""
+    @property
+    def moves(self) -> npt.NDArray[np.void]: ...
+    @property
+    def files(self) -> list[str]: ...
+    @property
+    def summary(self) -> dict[str, Any]: ...
+    @property
+    def diagnostics(self) -> list[Diagnostic]: ...
+    @property
+    def alarm(self) -> Diagnostic | None: ...
+    @property
+    def ok(self) -> bool: ...
+    @property
+    def printed(self) -> bytes: ...
+
+def run(
+    program: _Text,
+    *,
+    machine: _Text | None = None,
+    lib: _Text | Sequence[_Text] = (),
+    set: Mapping[Union[int, str], _Number] = {},
+    params: Mapping[Union[int, str], _Number] = {},
+    max_steps: int | None = None,
+    max_seconds: float | None = None,
+    nose_centre: bool = False,
+) -> Run:
+    """Execute a part program as `ncurve run` does; see help(ncurve.run)."""
+    ...
