@@ -32,12 +32,10 @@ struct Run {
 struct Argument {
   const char* name;
   const char* option;  // the CLI's ("program" for the positional one)
-  const char* python;  // what Python takes beyond the CLI's value
+  const char* python;  // what Python takes beyond the CLI's value (null: the help is Python's own)
 };
 constexpr Argument kArguments[] = {
-    {"program", "program",
-     "A str with a line break is the program's text (named <text> in messages); a str without one, or an "
-     "os.PathLike, is a file (a file of 8 MB or more is read block by block as the run reaches it)."},
+    {"program", "program", nullptr},  // kProgram
     {"machine", "--machine", "Also the TOML text itself (a str with a line break), or an os.PathLike."},
     {"lib", "--lib", "A folder, or a list of them."},
     {"set", "--set", "A dict: {100: 5} or {'#100': 5}."},
@@ -47,6 +45,13 @@ constexpr Argument kArguments[] = {
     {"nose_centre", "--nose-centre", ""},
 };
 
+const char* const kSignature =
+    "run(program, *, machine=None, lib=(), set={}, params={}, max_steps=None, max_seconds=None, nose_centre=False) "
+    "-> ncurve.Run";
+// the positional argument's help: the CLI's speaks of standard input
+const char* const kProgram =
+    "part program: its text (a str with a line break; named <text> in messages), or its file (a str without a "
+    "line break, or an os.PathLike; a file of 8 MB or more is read block by block as the run reaches it)";
 const char* const kRunHead =
     "Execute a part program as a FANUC control would and report the tool path: `ncurve run PROGRAM "
     "[options]` (docs/run.md) from Python.";
@@ -63,10 +68,12 @@ std::string run_doc() {
   app::RunInputs in;
   CLI::App command("run");
   app::add_run_inputs(&command, in, true);
-  std::string doc = wrapped(kRunHead, 0) + "\nArguments (the CLI's option in brackets):\n";
+  std::string doc = std::string(kSignature) + "\n\n" + wrapped(kRunHead, 0) +
+                    "\nArguments (the CLI's option in brackets):\n";
   for (const Argument& a : kArguments) {
-    std::string text = command.get_option(a.option)->get_description();
-    text = fmt::format("{}. {} [{}]", text, a.python, a.option);
+    std::string text = a.python ? command.get_option(a.option)->get_description() : std::string(kProgram);
+    const std::string more = a.python && *a.python ? std::string(" ") + a.python : "";
+    text = fmt::format("{}.{} [{}]", text, more, a.option);
     doc += fmt::format("  {}\n", a.name) + wrapped(text, 6);
   }
   return doc + "\n" + wrapped(kRunTail, 0);
@@ -99,8 +106,8 @@ void add_assignments(std::vector<std::string>& words, py::handle values, const c
   }
 }
 
-Run run(py::handle program, py::handle machine, py::handle lib, py::handle set, py::handle params,
-        py::handle max_steps, py::handle max_seconds, bool nose_centre) {
+Run run(const py::object& program, const py::object& machine, const py::object& lib, const py::object& set,
+        const py::object& params, const py::object& max_steps, const py::object& max_seconds, bool nose_centre) {
   // the arguments as the command line's words, parsed by the command's options
   app::RunInputs in;
   CLI::App command("run");
@@ -208,6 +215,8 @@ void add_run(py::module_& m) {
       });
 
   static const std::string doc = run_doc();
+  py::options options;
+  options.disable_function_signatures();  // the doc's first line is the signature, in Python's words
   m.def("run", &run, doc.c_str(), py::arg("program"), py::kw_only(), py::arg("machine") = py::none(),
         py::arg("lib") = py::tuple(), py::arg("set") = py::dict(), py::arg("params") = py::dict(),
         py::arg("max_steps") = py::none(), py::arg("max_seconds") = py::none(), py::arg("nose_centre") = false);
