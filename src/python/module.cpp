@@ -2,6 +2,7 @@
 // binding is in a folder of its own; this file registers them and finds the shipped files.
 #include <dlfcn.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <filesystem>
 #include <string>
@@ -37,6 +38,9 @@ PYBIND11_MODULE(ncurve, m) {
       "run() executes a part program as `ncurve run` does and gives its moves as a NumPy array.";
   m.attr("__version__") = NCURVE_VERSION;
   find_shipped_files();
+  m.def("shipped_dir", &ncurve::app::shipped_dir,
+        "The folder of the shipped profiles, macros and examples the names machine='fanuc-lathe' and "
+        "lib='macros' are found in (as `ncurve --version` says), or None.");
   ncurve::python::add_diagnostic_class(m);
   ncurve::python::add_run(m);
 }

@@ -13,6 +13,10 @@ MOVE_KINDS: tuple[str, ...]
 _Text = Union[str, os.PathLike[str]]
 _Number = Union[int, float, str]
 
+def shipped_dir() -> str | None:
+    """The folder of the shipped profiles, macros and examples, or None."""
+    ...
+
 class Diagnostic:
     """An alarm, warning or syntax problem of a run: where it is and what it says."""
     @property

@@ -157,3 +157,21 @@ def test_program_of_a_wrong_type_raises():
 def test_max_steps_stops_a_runaway_program():
     r = ncurve.run("WHILE [1 EQ 1] DO1\n#1=#1+1\nEND1\nM30\n", max_steps=1000)
     assert not r.ok and r.alarm.code and len(r.moves) == 0
+
+
+def test_shipped_files_are_the_source_trees():
+    # in the build folder the module finds the profiles and macros of the source tree it was built from
+    assert os.path.realpath(ncurve.shipped_dir()) == os.path.realpath(os.path.join(os.path.dirname(example("x")), ".."))
+
+
+def test_stubs_name_what_the_module_has():
+    """ncurve.pyi (beside the module) declares every public name, and each class's attributes."""
+    import ast
+    stub = os.path.join(os.path.dirname(ncurve.__file__), "ncurve.pyi")
+    tree = ast.parse(open(stub, encoding="utf-8").read())
+    top = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    top |= {n.target.id for n in tree.body if isinstance(n, ast.AnnAssign)}
+    assert top == {n for n in dir(ncurve) if not n.startswith("_")} | {"__version__"}
+    for cls in (n for n in tree.body if isinstance(n, ast.ClassDef)):
+        declared = {f.name for f in cls.body if isinstance(f, ast.FunctionDef)}
+        assert declared == {n for n in dir(getattr(ncurve, cls.name)) if not n.startswith("_")}, cls.name
