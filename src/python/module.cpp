@@ -9,6 +9,7 @@
 
 #include "app/shipped.hpp"
 #include "python/common/diagnostic.hpp"
+#include "python/gen/gen.hpp"
 #include "python/run/run.hpp"
 
 namespace py = pybind11;
@@ -35,7 +36,8 @@ void find_shipped_files() {
 PYBIND11_MODULE(ncurve, m) {
   m.doc() =
       "ncurve: run, generate and analyse FANUC Custom Macro B programs for non-circular curves (docs/python.md).\n"
-      "run() executes a part program as `ncurve run` does and gives its moves as a NumPy array.";
+      "run() executes a part program as `ncurve run` does and gives its moves as a NumPy array; gen() writes the "
+      "program for a curve as `ncurve gen` does.";
   m.attr("__version__") = NCURVE_VERSION;
   find_shipped_files();
   m.def("shipped_dir", &ncurve::app::shipped_dir,
@@ -43,4 +45,5 @@ PYBIND11_MODULE(ncurve, m) {
         "lib='macros' are found in (as `ncurve --version` says), or None.");
   ncurve::python::add_diagnostic_class(m);
   ncurve::python::add_run(m);
+  ncurve::python::add_gen(m);
 }

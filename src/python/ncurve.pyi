@@ -66,3 +66,28 @@ def run(
 ) -> Run:
     """Execute a part program as `ncurve run` does; see help(ncurve.run)."""
     ...
+
+class Gen:
+    """The result of gen(): the program and its statistics."""
+    @property
+    def text(self) -> str: ...
+    @property
+    def macro(self) -> str: ...
+    @property
+    def stats(self) -> dict[str, Any]: ...
+    @property
+    def warnings(self) -> list[str]: ...
+    @property
+    def ok(self) -> bool: ...
+
+def gen(
+    curve: str,
+    tol: float | None = None,
+    *,
+    form: str | None = None,
+    machine: _Text | None = None,
+    t: tuple[float, float] | None = None,
+    **options: Union[_Number, bool],
+) -> Gen:
+    """Write a program for a curve as `ncurve gen` does; see help(ncurve.gen)."""
+    ...
