@@ -6,9 +6,17 @@ import subprocess
 
 import pytest
 
-# each test file imports the module (from PYTHONPATH=build/python) with
-# pytest.importorskip("ncurve", reason=NOT_BUILT): skipped, saying why, where it is not built
 NOT_BUILT = "the ncurve module is not built (NCURVE_PYTHON=OFF, or pybind11-dev / python3-numpy missing)"
+
+
+def import_ncurve():
+    """The module of the build under test (NCURVE_MODULE_DIR, which ctest sets), for each test file;
+    its tests skipped, saying why, where it is not built, not an installed one tested in its place."""
+    module = pytest.importorskip("ncurve", reason=NOT_BUILT)
+    expected = os.environ.get("NCURVE_MODULE_DIR")
+    if expected and os.path.realpath(os.path.dirname(module.__file__)) != os.path.realpath(expected):
+        pytest.skip(f"{NOT_BUILT}: ncurve was imported from {module.__file__} instead", allow_module_level=True)
+    return module
 
 SOURCE = os.environ.get("NCURVE_SOURCE", os.path.join(os.path.dirname(__file__), "..", ".."))
 

@@ -5,9 +5,9 @@ import re
 
 import pytest
 
-from conftest import NOT_BUILT, SOURCE
+from conftest import SOURCE, import_ncurve
 
-pytest.importorskip("ncurve", reason=NOT_BUILT)
+import_ncurve()
 
 with open(os.path.join(SOURCE, "docs", "python.md"), encoding="utf-8") as f:
     BLOCKS = re.findall(r"^```python\n(.*?)^```", f.read(), re.S | re.M)

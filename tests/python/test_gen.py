@@ -4,9 +4,9 @@ import json
 
 import pytest
 
-from conftest import NOT_BUILT
+from conftest import import_ncurve
 
-ncurve = pytest.importorskip("ncurve", reason=NOT_BUILT)
+ncurve = import_ncurve()
 
 CASES = [
     (("spiral", 0.005), {}, ["spiral", "--tol", "0.005"]),

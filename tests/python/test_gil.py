@@ -6,9 +6,9 @@ import time
 
 import pytest
 
-from conftest import NOT_BUILT
+from conftest import import_ncurve
 
-ncurve = pytest.importorskip("ncurve", reason=NOT_BUILT)
+ncurve = import_ncurve()
 
 # about a quarter of a second a million turns on this machine; three steps a turn
 LOOP = "#1=0\nWHILE [#1 LT {}] DO1\n#1=#1+1\nEND1\nM30\n"

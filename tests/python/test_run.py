@@ -6,9 +6,9 @@ import os
 import numpy as np
 import pytest
 
-from conftest import NOT_BUILT, example
+from conftest import example, import_ncurve
 
-ncurve = pytest.importorskip("ncurve", reason=NOT_BUILT)
+ncurve = import_ncurve()
 
 # Line numbers are the text's; decimal points everywhere (X10 without one is 10 increments, 0.01 mm).
 HAND = """G90 G17 G21 G94

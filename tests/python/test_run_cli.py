@@ -8,9 +8,9 @@ import math
 import numpy as np
 import pytest
 
-from conftest import NOT_BUILT, example
+from conftest import example, import_ncurve
 
-ncurve = pytest.importorskip("ncurve", reason=NOT_BUILT)
+ncurve = import_ncurve()
 
 ARCS = """G90 G17 G21 G94
 G00 X0. Y0. Z2.
