@@ -54,10 +54,8 @@ bool is_macro_form(gen::Form f) {
   return f == gen::Form::macro || f == gen::Form::adaptive_macro || f == gen::Form::cycle;
 }
 
-// The program's time and, for a macro form, that of the same curve as G01 lines.
-struct GenTimes {
-  std::optional<motion::PlanTotals> form, expanded;
-};
+}  // namespace
+
 GenTimes gen_times(const GenJob& job, const gen::Result& r) {
   GenTimes t;
   t.form = time_of(job.options, r);
@@ -75,8 +73,10 @@ GenTimes gen_times(const GenJob& job, const gen::Result& r) {
   return t;
 }
 
+namespace {
 // A macro form this many times slower than the G01 lines is warned of.
 constexpr double kSlowerThanExpanded = 1.5;
+}  // namespace
 
 std::string slower_warning(const GenJob& job, const GenTimes& t) {
   if (!t.form || !t.expanded || t.form->seconds <= kSlowerThanExpanded * t.expanded->seconds) return {};
@@ -88,7 +88,11 @@ std::string slower_warning(const GenJob& job, const GenTimes& t) {
       t.expanded->seconds, t.expanded->stops);
 }
 
-}  // namespace
+void add_gen_times(nlohmann::json& j, const GenTimes& times, const std::string& program_text) {
+  if (times.form) j["cycle_time_s"] = times.form->seconds;
+  if (times.expanded) j["expanded_cycle_time_s"] = times.expanded->seconds;
+  j["common_variables"] = common_variables_set(program_text);
+}
 
 std::vector<int> common_variables_set(const std::string& text) {
   std::string code;  // the text without comments
@@ -314,9 +318,7 @@ int gen_command(const GenArgs& a) {
   const std::vector<int> commons = common_variables_set(r.text);
   if (a.json) {
     nlohmann::json j = gen_json(*job, r, output.empty() ? &program : nullptr);
-    if (times.form) j["cycle_time_s"] = times.form->seconds;
-    if (times.expanded) j["expanded_cycle_time_s"] = times.expanded->seconds;
-    j["common_variables"] = commons;
+    add_gen_times(j, times, r.text);
     std::cout << j.dump(2) << "\n";
   } else {
     if (output.empty()) std::cout << program;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gen/generate.hpp"
+#include "motion/planner.hpp"
 
 namespace ncurve::app {
 
@@ -65,5 +66,15 @@ std::vector<int> common_variables_set(const std::string& text);
 std::string variable_ranges(const std::vector<int>& numbers);
 // The statistics of `ncurve gen --json`, with the program's text when program is given.
 nlohmann::json gen_json(const GenJob& job, const gen::Result& result, const std::string* program);
+// The program's cycle time as `ncurve analyze` estimates it and, for a macro form, that of the same
+// curve as G01 lines (none where one does not run).
+struct GenTimes {
+  std::optional<motion::PlanTotals> form, expanded;
+};
+GenTimes gen_times(const GenJob& job, const gen::Result& result);
+// The warning of a macro form much slower than the G01 lines; empty if it is not.
+std::string slower_warning(const GenJob& job, const GenTimes& times);
+// What `ncurve gen --json` adds to gen_json: cycle_time_s, expanded_cycle_time_s, common_variables.
+void add_gen_times(nlohmann::json& j, const GenTimes& times, const std::string& program_text);
 
 }  // namespace ncurve::app

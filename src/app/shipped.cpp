@@ -18,10 +18,19 @@ bool holds_shipped_files(const fs::path& dir) {
   return fs::is_directory(dir / "profiles", ec) && fs::is_directory(dir / "macros", ec);
 }
 
+std::string& chosen_dir() {
+  static std::string dir;
+  return dir;
+}
+
 }  // namespace
+
+void set_shipped_dir(std::string dir) { chosen_dir() = std::move(dir); }
 
 std::optional<std::string> shipped_dir() {
   std::error_code ec;
+  if (const std::string& dir = chosen_dir(); !dir.empty())
+    return holds_shipped_files(dir) ? std::optional(fs::weakly_canonical(dir, ec).string()) : std::nullopt;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) return std::nullopt;
   fs::path bin = exe.parent_path();

@@ -11,6 +11,9 @@ namespace ncurve::app {
 
 // The folder holding profiles/ and macros/, if there is one.
 std::optional<std::string> shipped_dir();
+// Where shipped_dir() looks when the process is not ncurve's binary (the Python module, which
+// knows where it was installed): this folder if it holds profiles/ and macros/.
+void set_shipped_dir(std::string dir);
 // The names of the shipped profiles (file stems), sorted; none without a shipped folder.
 std::vector<std::string> shipped_profiles();
 // A profile path as given, or a shipped profile by name ("fanuc-lathe", "fanuc-lathe.toml").

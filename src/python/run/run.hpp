@@ -1,0 +1,11 @@
+// ncurve.run(): a part program executed as `ncurve run` executes it, its moves as a NumPy array.
+#pragma once
+#include <pybind11/pybind11.h>
+
+namespace ncurve::python {
+namespace py = pybind11;
+
+// Registers ncurve.run, the class ncurve.Run and ncurve.MOVE_KINDS.
+void add_run(py::module_& m);
+
+}  // namespace ncurve::python
