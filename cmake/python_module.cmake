@@ -43,7 +43,8 @@ pybind11_add_module(ncurve_python MODULE NO_EXTRAS
   src/python/common/diagnostic.cpp
   src/python/run/move_records.cpp
   src/python/run/run.cpp
-  src/python/gen/gen.cpp)
+  src/python/gen/gen.cpp
+  src/python/geom/curve.cpp)
 set_target_properties(ncurve_python PROPERTIES OUTPUT_NAME ncurve LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/python)
 target_link_libraries(ncurve_python PRIVATE ncurve_app)
 

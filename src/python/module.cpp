@@ -10,6 +10,7 @@
 #include "app/shipped.hpp"
 #include "python/common/diagnostic.hpp"
 #include "python/gen/gen.hpp"
+#include "python/geom/curve.hpp"
 #include "python/run/run.hpp"
 
 namespace py = pybind11;
@@ -37,7 +38,7 @@ PYBIND11_MODULE(ncurve, m) {
   m.doc() =
       "ncurve: run, generate and analyse FANUC Custom Macro B programs for non-circular curves (docs/python.md).\n"
       "run() executes a part program as `ncurve run` does and gives its moves as a NumPy array; gen() writes the "
-      "program for a curve as `ncurve gen` does.";
+      "program for a curve as `ncurve gen` does; curve() samples a curve as arrays.";
   m.attr("__version__") = NCURVE_VERSION;
   find_shipped_files();
   m.def("shipped_dir", &ncurve::app::shipped_dir,
@@ -46,4 +47,5 @@ PYBIND11_MODULE(ncurve, m) {
   ncurve::python::add_diagnostic_class(m);
   ncurve::python::add_run(m);
   ncurve::python::add_gen(m);
+  ncurve::python::add_curve(m);
 }

@@ -91,3 +91,34 @@ def gen(
 ) -> Gen:
     """Write a program for a curve as `ncurve gen` does; see help(ncurve.gen)."""
     ...
+
+class CurveSamples:
+    """The samples of curve(): a curve's points, derivatives and curvature as NumPy arrays."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def range(self) -> tuple[float, float]: ...
+    @property
+    def params(self) -> dict[str, float]: ...
+    @property
+    def t(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def point(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def d1(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def d2(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def curvature(self) -> npt.NDArray[np.float64]: ...
+
+def curve(
+    curve: str,
+    *,
+    t: tuple[float, float] | None = None,
+    n: int = 1001,
+    at: npt.ArrayLike | None = None,
+    machine: _Text | None = None,
+    **params: _Number,
+) -> CurveSamples:
+    """A curve sampled as arrays; see help(ncurve.curve)."""
+    ...
