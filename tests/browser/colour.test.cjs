@@ -10,7 +10,7 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage, finish} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -25,7 +25,7 @@ fs.writeFileSync(zigzag, ['%', 'O0001', 'G90 G17 G21', 'G00 X0. Y0. Z5.', 'G01 Z
 (async () => {
   const {server, port} = await serve(ncurve, [path.join(src, 'examples/spiral.nc'), zigzag]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
-  try {
+  await finish({check, counts, out}, async () => {
     const {page, errors} = await newPage(context);
     await page.goto(`http://127.0.0.1:${port}/`);
     await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1);
@@ -102,12 +102,8 @@ fs.writeFileSync(zigzag, ['%', 'O0001', 'G90 G17 G21', 'G00 X0. Y0. Z5.', 'G01 Z
     check(state.reference === gen.reference.count, 'the curve still drawn under the edited program');
     await page.screenshot({path: path.join(out, 'workbench-gen-edited.png')});
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
-  } catch (e) {
-    check(false, String(e && e.stack || e));
-  } finally {
+  }, async () => {
     await close();
     server.kill();
-  }
-  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
-  process.exit(counts.failed ? 1 : 0);
+  });
 })();

@@ -71,4 +71,18 @@ async function newPage(context, timeout = 60000) {
   return {page, errors};
 }
 
-module.exports = {browser, checker, launch, serve, newPage};
+// Runs the checks in `body`, an exception counted as a failed check, then `cleanup`; prints the counts
+// and ends the process, 1 on a failure.
+async function finish({check, counts, out}, body, cleanup) {
+  try {
+    await body();
+  } catch (e) {
+    check(false, String(e && e.stack || e));
+  } finally {
+    await cleanup();
+  }
+  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
+  process.exit(counts.failed ? 1 : 0);
+}
+
+module.exports = {browser, checker, launch, serve, newPage, finish};

@@ -12,7 +12,7 @@
 'use strict';
 const {execFileSync} = require('child_process');
 const path = require('path');
-const {browser, checker, launch, serve} = require('./harness.cjs');
+const {browser, checker, launch, serve, finish} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -35,7 +35,7 @@ function genList() {
   const listed = genList();
   const {server, port} = await serve(ncurve, [path.join(src, 'examples/spiral.nc')]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
-  try {
+  await finish({check, counts, out}, async () => {
     const page = await context.newPage();
     page.setDefaultTimeout(60000);
     const errors = [];
@@ -201,12 +201,8 @@ function genList() {
           `a broken profile: ${st.text} (selector: ${st.shown})`);
     await page.screenshot({path: path.join(out, 'workbench-machine-broken.png')});
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
-  } catch (e) {
-    check(false, String(e && e.stack || e));
-  } finally {
+  }, async () => {
     await close();
     server.kill();
-  }
-  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
-  process.exit(counts.failed ? 1 : 0);
+  });
 })();

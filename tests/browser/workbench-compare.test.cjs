@@ -10,7 +10,7 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage, finish} = require('./harness.cjs');
 
 const [ncurve, , out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -33,7 +33,7 @@ fs.writeFileSync(path.join(dir, 'compare-b.nc'), B.join('\n'));
 (async () => {
   const {server, port} = await serve(ncurve, [path.join(dir, 'compare-a.nc'), path.join(dir, 'compare-b.nc')]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
-  try {
+  await finish({check, counts, out}, async () => {
     const {page, errors} = await newPage(context);
     await page.goto(`http://127.0.0.1:${port}/`);
     await page.waitForFunction(() => window.ncurveWorkbench && ncurveWorkbench.runs >= 1 && ncurveWorkbench.settled());
@@ -159,12 +159,8 @@ fs.writeFileSync(path.join(dir, 'compare-b.nc'), B.join('\n'));
     check(await page.textContent('#cmp-status') === 'empty.nc: the file holds no program' && c.label === 'b-local.nc (this computer)' && c.count === 7,
       `an empty file refused beside the menu, the comparison kept (${await page.textContent('#cmp-status')})`);
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
-  } catch (e) {
-    check(false, String(e && e.stack || e));
-  } finally {
+  }, async () => {
     await close();
     server.kill();
-  }
-  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
-  process.exit(counts.failed ? 1 : 0);
+  });
 })();

@@ -22,7 +22,7 @@
 const {execFileSync, spawnSync} = require('child_process');
 const fs = require('fs');
 const path = require('path');
-const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage, finish} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -55,7 +55,7 @@ function genList() {
   const {server, port} = await serve(ncurve, [example('spiral.nc'), example('alarm.nc'), example('custom-cycle.nc'),
     '--lib', macros]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
-  try {
+  await finish({check, counts, out}, async () => {
     const {page, errors: all} = await newPage(context);
     const errors = {get length() { return this.list().length; }, list: () => all.filter((e) => !/status of 400/.test(e)),
       join: (sep) => errors.list().join(sep)};  // the refusals asked for
@@ -494,12 +494,8 @@ function genList() {
     await page.selectOption('#gen-curve', 'trochoid');
     await page.screenshot({path: path.join(out, 'workbench-gen-fields-1024.png')});
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
-  } catch (e) {
-    check(false, String(e && e.stack || e));
-  } finally {
+  }, async () => {
     await close();
     server.kill();
-  }
-  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
-  process.exit(counts.failed ? 1 : 0);
+  });
 })();

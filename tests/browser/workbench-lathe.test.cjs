@@ -10,7 +10,7 @@
 'use strict';
 const {execFileSync} = require('child_process');
 const path = require('path');
-const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage, finish} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -47,7 +47,7 @@ async function latheExample(context) {
 (async () => {
   const {server, port} = await serve(ncurve, ['--machine', 'fanuc-lathe', file]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
-  try {
+  await finish({check, counts, out}, async () => {
     const {page, errors} = await newPage(context);
     await page.goto(`http://127.0.0.1:${port}/`);
     await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1);
@@ -302,12 +302,8 @@ async function latheExample(context) {
           `after the last block: "${nose.text.replace(/\n/g, ' · ')}", the nose circle 0.4 about X(radius) 20.4 Z-29.6`);
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
     await latheExample(context);
-  } catch (e) {
-    check(false, String(e && e.stack || e));
-  } finally {
+  }, async () => {
     await close();
     server.kill();
-  }
-  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
-  process.exit(counts.failed ? 1 : 0);
+  });
 })();

@@ -5,7 +5,7 @@
 // go to OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const path = require('path');
-const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage, finish} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -14,7 +14,7 @@ const {check, counts} = checker();
 (async () => {
   const {server, port} = await serve(ncurve, [path.join(src, 'examples/spiral.nc')]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
-  try {
+  await finish({check, counts, out}, async () => {
     const {page, errors} = await newPage(context);
     await page.goto(`http://127.0.0.1:${port}/`);
     await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1 && ncurveWorkbench.trace);
@@ -83,12 +83,8 @@ const {check, counts} = checker();
           `the click goes to line 3 and marks the place on the part: ${JSON.stringify(at)}`);
     await page.screenshot({path: path.join(out, 'workbench-part-finding.png')});
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
-  } catch (e) {
-    check(false, String(e && e.stack || e));
-  } finally {
+  }, async () => {
     await close();
     server.kill();
-  }
-  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
-  process.exit(counts.failed ? 1 : 0);
+  });
 })();

@@ -7,7 +7,7 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage, finish} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -24,7 +24,7 @@ const loopLine = lines.findIndex((l) => l.startsWith('G01 X[#101*SIN[#102*#1]] A
 (async () => {
   const {server, port} = await serve(ncurve, ['--machine', machine, file]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
-  try {
+  await finish({check, counts, out}, async () => {
     const {page, errors} = await newPage(context);
     await page.goto(`http://127.0.0.1:${port}/`);
     await page.waitForFunction(() => window.ncurveWorkbench && ncurveWorkbench.runs >= 1 && ncurveWorkbench.settled());
@@ -75,12 +75,8 @@ const loopLine = lines.findIndex((l) => l.startsWith('G01 X[#101*SIN[#102*#1]] A
     check(await fact('axes not drawn') === null && / to X10 Y5 Z-1$/.test(flat),
           `A left at 0: not named in the Summary, not in the hover text ("${flat}")`);
     check(errors.length === 0, `no script errors (${errors.join('; ')})`);
-  } catch (e) {
-    check(false, String(e && e.stack || e));
-  } finally {
+  }, async () => {
     await close();
     server.kill();
-  }
-  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
-  process.exit(counts.failed ? 1 : 0);
+  });
 })();

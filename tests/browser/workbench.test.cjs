@@ -12,7 +12,7 @@
 const {execFileSync} = require('child_process');
 const fs = require('fs');
 const path = require('path');
-const {browser, checker, launch, serve, newPage} = require('./harness.cjs');
+const {browser, checker, launch, serve, newPage, finish} = require('./harness.cjs');
 
 const [ncurve, src, out, modules] = process.argv.slice(2);
 const {chromium, driver} = browser(modules, out);
@@ -24,7 +24,7 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
 (async () => {
   const {server, port} = await serve(ncurve, [spiral]);
   const {context, close} = await launch(driver, chromium, {width: 1400, height: 860});
-  try {
+  await finish({check, counts, out}, async () => {
     const {page, errors} = await newPage(context);
     const offsite = [];
     page.on('request', (r) => { if (!r.url().startsWith(`http://127.0.0.1:${port}/`)) offsite.push(r.url()); });
@@ -374,12 +374,8 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
           /:3:/.test(listed[1].where) && !listed[1].alarm,
           `the diagnostics listed by line, the alarm (line 2) first and marked: ${JSON.stringify(listed)} (answered ${answered})`);
     check(errors.length === 0, `still no script errors (${errors.join('; ')})`);
-  } catch (e) {
-    check(false, String(e && e.stack || e));
-  } finally {
+  }, async () => {
     await close();
     server.kill();
-  }
-  console.log(`${counts.passed} passed, ${counts.failed} failed; screenshots in ${out}`);
-  process.exit(counts.failed ? 1 : 0);
+  });
 })();
