@@ -29,7 +29,11 @@
     const lathe = !!(profile && profile.lathe);
     for (const [v, val] of st.modal) {
       // (0 is G00 in group 1 only: a group the control gives no code reads 0)
-      if (v > 4022) { if (!(lathe && (v === 4107 || v === 4111))) other.push(`${letters[v]}${num(val)}`); }  // a lathe has no D, H
+      if (v > 4022) {  // a lathe has no D, H; its T is the tool and offset numbers, two digits each (T0101)
+        if (lathe && (v === 4107 || v === 4111)) continue;
+        const lathe_t = lathe && v === 4120 && Number.isInteger(val) && val >= 0;
+        other.push(`${letters[v]}${lathe_t ? String(val).padStart(4, '0') : num(val)}`);
+      }
       else if (val !== null && (val !== 0 || v === 4001) && (!groups.size || groups.has(v - 4000))) G.push(gCode(val));
     }
     boxes.modal.textContent = G.join(' ') + '\n' + other.join(' ');

@@ -175,7 +175,7 @@ async function latheExample(context) {
     // written as the control's screen writes them, two digits before the point: G00 or G01 in group 01
     check(gs.every((g) => /^G\d\d(\.\d)?$/.test(g)) && /^G0[0-3]$/.test(gs[0]), `each code with two digits (${gs[0]} ...)`);
     const words = (await page.textContent('#dbg-modal')).split('\n')[1].split(' ');
-    check(words.includes('F0.25') && words.includes('T101') && !words.some((w) => /^[DH]/.test(w)),
+    check(words.includes('F0.25') && words.includes('T0101') && !words.some((w) => /^[DH]/.test(w)),
           `the lathe's modal words, no D or H offset (a mill's): ${words.join(' ')}`);
     const counted = await page.textContent('#dbg-pos');
     check(counted.includes(`of ${summary.blocks_executed} `),
