@@ -52,12 +52,8 @@ bool in_drilling_cycle(const MachineProfile& profile, const nc::Program& p, cons
     const nc::Word& word = p.words[w];
     if (word.letter != 'G' || !word.literal) continue;
     const int g = round_int(word.value * 10);
-    bool macro = false;
-    for (int code : profile.g_code_macros) macro |= code != 0 && g == std::abs(code) * 10;
-    if (macro) continue;
-    const bool lathe_cycle = g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890;
-    const bool mill_cycle = g == 730 || g == 740 || g == 760 || (g >= 810 && g <= 890 && g % 10 == 0);
-    if (profile.lathe() ? lathe_cycle : mill_cycle) starts = true;
+    if (macro_g_code(profile, g)) continue;
+    if (drilling_cycle_code(g, profile.lathe())) starts = true;
     if (g == 800 || g_group(g, machine) == 1) ends = true;
   }
   return (before || starts) && !ends;
@@ -72,9 +68,7 @@ void search_decimal_points(const MachineProfile& profile, const nc::Program& pie
       const nc::Word& word = p.words[w];
       if (word.letter != 'G' || !word.literal) continue;
       int g = round_int(word.value * 10);
-      if (g == 650 || g == 660 || g == 661) return true;
-      for (int code : profile.g_code_macros)
-        if (code != 0 && g == std::abs(code) * 10) return true;
+      if (g == 650 || g == 660 || g == 661 || macro_g_code(profile, g)) return true;
     }
     return false;
   };

@@ -52,6 +52,18 @@ const GCode* g_code(int g, GMachine m);
 // The action of one-shot code g (x10) as the dispatch keeps it (a lathe's cycles as system A writes
 // them), or nullptr.
 GAction g_action(int g, GMachine m);
+// Whether g (x10) selects a drilling canned cycle: G73/G74/G76/G81..G89 on a mill, G83..G85 and
+// G87..G89 on a lathe.
+inline bool drilling_cycle_code(int g, bool lathe) {
+  if (lathe) return g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890;
+  return g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890));
+}
+// Whether the profile makes g (x10) a custom macro call (No.6050..6059), as the file's checks read it.
+inline bool macro_g_code(const MachineProfile& p, int g) {
+  for (int code : p.g_code_macros)
+    if (code != 0 && g == (code < 0 ? -code : code) * 10) return true;
+  return false;
+}
 // The group of g on m; 0 for a one-shot code or none.
 int g_group(int g, GMachine m);
 // The modal groups (1..) m's G-code table has, in order: those the control shows among its modal codes.

@@ -193,8 +193,7 @@ void Executor::handle_g_codes(std::vector<int>& one_shot) {
         }
         if (lathe && g >= 700 && g <= 760)
           alarm("NC9001", fmt::format("G{} (multiple repetitive cycle) is not supported yet", g / 10), column);
-        const bool lathe_drilling = g == 830 || g == 840 || g == 850 || g == 870 || g == 880 || g == 890;
-        if (lathe ? lathe_drilling : (g % 10 == 0 && ((g >= 730 && g <= 760 && g != 750) || (g >= 810 && g <= 890)))) {
+        if (drilling_cycle_code(g, lathe)) {
           select_canned_cycle(g, column);
           break;
         }
