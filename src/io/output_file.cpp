@@ -107,6 +107,9 @@ OutputFile::OutputFile(std::string path, const std::vector<std::string>& inputs)
     temporary_ = make_temporary(path_);
     track(temporary_);
   }
+  constexpr std::size_t kBuffer = 1 << 20;
+  buffer_ = std::make_unique_for_overwrite<char[]>(kBuffer);
+  file_.rdbuf()->pubsetbuf(buffer_.get(), kBuffer);  // before open, as libstdc++ requires
   errno = 0;
   file_.open(in_place ? path_ : temporary_, std::ios::binary | std::ios::trunc);
   if (!file_) {

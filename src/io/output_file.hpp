@@ -3,6 +3,7 @@
 // a device or pipe (/dev/null, /dev/stdout) is written in place, its writes checked the same.
 #pragma once
 #include <fstream>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,7 @@ public:
 private:
   std::string path_;
   std::string temporary_;  // empty when writing in place
+  std::unique_ptr<char[]> buffer_;  // the file stream's: large writes, few system calls
   std::ofstream file_;
   std::ostream* out_;
   bool committed_ = false;
