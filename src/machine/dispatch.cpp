@@ -57,10 +57,6 @@ std::vector<Executor::Arg> Executor::arguments(bool skip_p_l, int skip_g, int sk
 }
 
 void Executor::exec_nc(const Block& b) {
-  if (b.plain_motion != nc::PlainMotion::no && plain_lane_open(b)) {
-    plain_motion_block(b);
-    return;
-  }
   if (!read_words(b)) return;
   SubprogramCall sub;
   if (macro_call_block(b, sub)) return;  // G65, G66 and custom G/M codes take the whole block

@@ -104,7 +104,10 @@ private:
   void exec_nc(const nc::Block& b);
   bool read_words(const nc::Block& b);
   bool plain_lane_open(const nc::Block& b) const;
-  void plain_motion_block(const nc::Block& b);
+  // Runs `first` and the lane blocks after it in its piece as step() would run them one by one.
+  void plain_motion_blocks(const nc::Block& first);
+  void plain_motion_block(const nc::Block& b, Move& m);
+  double plain_dimension(const nc::Word& w) const;
   std::uint64_t plain_lane_blocks_ = 0;
   bool g01_calls_macro() const;  // No.6050..6059 make G01 a macro call
   bool macro_call_block(const nc::Block& b, SubprogramCall& sub);
@@ -157,6 +160,7 @@ private:
   bool axis_target(AxisVector& target, bool force_absolute = false);
   void motion(const AxisVector& target);
   void linear(MoveKind kind, const AxisVector& target);
+  void linear_into(Move& m, MoveKind kind, const AxisVector& target);  // m: kind, ends, feed, time set
   void arc(const AxisVector& target, bool clockwise);
   void emit(Move& m);  // the block's move or event into the path stages (path_corner_ first)
   // what the path stages read of the control (their interfaces), and their alarms and warnings

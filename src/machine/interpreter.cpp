@@ -345,6 +345,10 @@ void Executor::step() {
         parameter_input_block(b);
         break;
       }
+      if (b.plain_motion != nc::PlainMotion::no && plain_lane_open(b)) {
+        plain_motion_blocks(b);
+        break;
+      }
       const bool g40 = modal_.comp_side != 0;
       const bool from_cancel = modal_.comp_side == 0 && !comp_->offset_mode();
       macro_call_block_ = false;

@@ -216,6 +216,10 @@ void Executor::emit_event(MoveKind kind, int code) {
 
 void Executor::linear(MoveKind kind, const AxisVector& target) {
   Move m;
+  linear_into(m, kind, target);
+}
+
+void Executor::linear_into(Move& m, MoveKind kind, const AxisVector& target) {
   m.kind = kind;
   m.start = coords_.pos;
   m.end = target;
