@@ -70,22 +70,6 @@ std::string where(const machine::Move& m) {
   return m.file ? fmt::format("{}:{}", m.file->name(), m.line) : fmt::format("line {}", m.line);
 }
 
-// --kv 30 or --kv 30,25 over the profile's servo settings: the gains of its first two axes (X and
-// Y on a mill, X and Z on a lathe), one value for both; and --feed-forward.
-void apply_servo_options(machine::MachineProfile& p, const AnalyzeArgs& a) {
-  if (a.feed_forward) p.servo.feed_forward = *a.feed_forward;
-  const std::vector<std::string>& kv = a.kv;
-  if (kv.empty()) return;
-  if (kv.size() > 2 || kv.size() > p.axes.size())
-    throw std::runtime_error(fmt::format("--kv takes one gain per axis of {}, at most two", p.axes));
-  for (std::size_t i = 0; i < 2 && i < p.axes.size(); ++i) {
-    const std::string& text = kv[std::min(i, kv.size() - 1)];
-    const std::optional<double> v = units::finite_number(text);
-    if (!v || !(*v > 0)) throw std::runtime_error(fmt::format("--kv: '{}' is not a gain in 1/s", text));
-    p.servo.kv[static_cast<std::size_t>(machine::axis_index(p.axes[i]))] = *v;
-  }
-}
-
 // "Kv X 30 Y 30 /s" over the profile's first two axes.
 std::string gains(const machine::MachineProfile& p) {
   std::string s = "Kv";
@@ -134,30 +118,7 @@ int circle_command(const AnalyzeArgs& a) {
                                : "";
   if (!a.plot.empty() && !save(a.plot, report::polar_svg(r, test, plane, subtitle), {a.in.machine})) return 2;
   if (a.json) {
-    nlohmann::json j;
-    j["radius"] = test.radius;
-    j["feed"] = test.feed;
-    j["feed_reached"] = r.feed_reached;
-    j["direction"] = test.clockwise ? "cw" : "ccw";
-    j["plane"] = std::string{plane.p_name, plane.q_name};
-    j["axes"] = nlohmann::json::array();
-    for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i) j["axes"].push_back(std::string(1, profile.axes[i]));
-    j["kv"] = nlohmann::json::array();
-    for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i)
-      j["kv"].push_back(sv.kv[static_cast<std::size_t>(machine::axis_index(profile.axes[i]))]);
-    j["feed_forward"] = sv.feed_forward;
-    j["radius_reduction"] = r.radius_reduction;
-    j["roundness"] = r.roundness;
-    j["max_deviation_angle"] = r.max_deviation_angle;
-    j["angle_meaningful"] = r.angle_meaningful;
-    j["max_contour_error"] = r.max_contour_error;
-    j["closed_form"] = {{"fanuc_radius_reduction", r.fanuc_radius_reduction},
-                        {"first_order_roundness", r.first_order_roundness},
-                        {"harmonic_radius_reduction", r.harmonic_radius_reduction},
-                        {"harmonic_roundness", r.harmonic_roundness},
-                        {"harmonic_angle", r.harmonic_angle},
-                        {"seed002_error", r.seed002_error},
-                        {"seed002_angle", r.seed002_angle}};
+    const nlohmann::json j = circle_json(profile, test, r);
     std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // a name that is not UTF-8 gets U+FFFD
     return 0;
   }
@@ -244,11 +205,7 @@ int program_command(const AnalyzeArgs& a) {
                          b.programmed, b.cap, motion::to_string(b.limit), b.v_in, b.v_peak, b.v_out, b.start, b.seconds,
                          b.wait, b.settle, b.starved ? 1 : 0);
     if (sim) {
-      if ((b.start + b.seconds) / profile.servo.period > a.max_ticks)
-        throw base::BoundExceeded(fmt::format(
-            "--servo: the program runs longer than {:.3g} servo periods of {:g} ms ({:.4g} s of machine time), at {}: "
-            "raise --max-ticks",
-            a.max_ticks, profile.servo.period * 1000, a.max_ticks * profile.servo.period, where(b.move)));
+      check_servo_ticks(b, profile, a.max_ticks);
       sim->on_block(b);
     }
     if (b.wait > slowest_wait.wait) slowest_wait = b;
@@ -427,6 +384,30 @@ int program_command(const AnalyzeArgs& a) {
 
 }  // namespace
 
+// --kv 30 or --kv 30,25 over the profile's servo settings: the gains of its first two axes (X and
+// Y on a mill, X and Z on a lathe), one value for both; and --feed-forward.
+void apply_servo_options(machine::MachineProfile& p, const AnalyzeArgs& a) {
+  if (a.feed_forward) p.servo.feed_forward = *a.feed_forward;
+  const std::vector<std::string>& kv = a.kv;
+  if (kv.empty()) return;
+  if (kv.size() > 2 || kv.size() > p.axes.size())
+    throw std::runtime_error(fmt::format("--kv takes one gain per axis of {}, at most two", p.axes));
+  for (std::size_t i = 0; i < 2 && i < p.axes.size(); ++i) {
+    const std::string& text = kv[std::min(i, kv.size() - 1)];
+    const std::optional<double> v = units::finite_number(text);
+    if (!v || !(*v > 0)) throw std::runtime_error(fmt::format("--kv: '{}' is not a gain in 1/s", text));
+    p.servo.kv[static_cast<std::size_t>(machine::axis_index(p.axes[i]))] = *v;
+  }
+}
+
+void check_servo_ticks(const motion::BlockTime& b, const machine::MachineProfile& profile, double max_ticks) {
+  if ((b.start + b.seconds) / profile.servo.period > max_ticks)
+    throw base::BoundExceeded(fmt::format(
+        "--servo: the program runs longer than {:.3g} servo periods of {:g} ms ({:.4g} s of machine time), at {}: "
+        "raise --max-ticks",
+        max_ticks, profile.servo.period * 1000, max_ticks * profile.servo.period, where(b.move)));
+}
+
 motion::PlanTotals program_time(const std::string& name, const std::string& text,
                                 const machine::MachineProfile& profile) {
   machine::ProgramLibrary lib(profile.parse_options());
@@ -476,6 +457,37 @@ nlohmann::json analyze_json(const std::string& program, const machine::MachinePr
     j["contour_error"] = contour_json(sim->cutting());
     j["rapid_contour_error"] = contour_json(sim->rapids());
   }
+  return j;
+}
+
+nlohmann::json circle_json(const machine::MachineProfile& profile, const motion::CircleTest& test,
+                           const motion::CircleResult& r) {
+  const motion::CirclePlane plane = motion::circle_plane(profile);
+  const auto& sv = profile.servo;
+  nlohmann::json j;
+  j["radius"] = test.radius;
+  j["feed"] = test.feed;
+  j["feed_reached"] = r.feed_reached;
+  j["direction"] = test.clockwise ? "cw" : "ccw";
+  j["plane"] = std::string{plane.p_name, plane.q_name};
+  j["axes"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i) j["axes"].push_back(std::string(1, profile.axes[i]));
+  j["kv"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i)
+    j["kv"].push_back(sv.kv[static_cast<std::size_t>(machine::axis_index(profile.axes[i]))]);
+  j["feed_forward"] = sv.feed_forward;
+  j["radius_reduction"] = r.radius_reduction;
+  j["roundness"] = r.roundness;
+  j["max_deviation_angle"] = r.max_deviation_angle;
+  j["angle_meaningful"] = r.angle_meaningful;
+  j["max_contour_error"] = r.max_contour_error;
+  j["closed_form"] = {{"fanuc_radius_reduction", r.fanuc_radius_reduction},
+                      {"first_order_roundness", r.first_order_roundness},
+                      {"harmonic_radius_reduction", r.harmonic_radius_reduction},
+                      {"harmonic_roundness", r.harmonic_roundness},
+                      {"harmonic_angle", r.harmonic_angle},
+                      {"seed002_error", r.seed002_error},
+                      {"seed002_angle", r.seed002_angle}};
   return j;
 }
 

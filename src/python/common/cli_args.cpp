@@ -44,6 +44,14 @@ std::vector<std::string> option_list(py::handle values, std::string_view what) {
   return out;
 }
 
+std::vector<std::string> gains(py::handle values) {
+  if (values.is_none()) return {};
+  if (py::isinstance<py::str>(values) || !py::isinstance<py::iterable>(values)) return {option_text(values, "kv")};
+  std::vector<std::string> out;
+  for (py::handle v : values) out.push_back(option_text(v, "kv"));
+  return out;
+}
+
 void parse_options(CLI::App& command, const std::vector<std::string>& words) {
   std::vector<std::string> reversed(words.rbegin(), words.rend());  // CLI11 takes them last first
   try {

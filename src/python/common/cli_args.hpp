@@ -25,6 +25,9 @@ TextOrPath text_or_path(py::handle value, std::string_view what);
 // One value or an iterable of them (a single str or path is one), each by option_text.
 std::vector<std::string> option_list(py::handle values, std::string_view what);
 
+// --kv's values: one gain (a number) or a list of them, each by option_text.
+std::vector<std::string> gains(py::handle values);
+
 // Parses "--option=value" words (and positional values) in order with the command's options;
 // ValueError with CLI11's message ("--machine: no profile file 'x' ...") for a bad one.
 void parse_options(CLI::App& command, const std::vector<std::string>& words);
