@@ -48,6 +48,7 @@ pybind11_add_module(ncurve_python MODULE NO_EXTRAS
   src/python/analyze/analyze.cpp
   src/python/analyze/circle.cpp
   src/python/helicoid/helicoid.cpp
+  src/python/verify/verify.cpp
   src/python/gen/gen.cpp
   src/python/geom/curve.cpp)
 set_target_properties(ncurve_python PROPERTIES OUTPUT_NAME ncurve LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/python)

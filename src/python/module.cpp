@@ -14,6 +14,7 @@
 #include "python/geom/curve.hpp"
 #include "python/helicoid/helicoid.hpp"
 #include "python/run/run.hpp"
+#include "python/verify/verify.hpp"
 
 namespace py = pybind11;
 
@@ -42,7 +43,7 @@ PYBIND11_MODULE(ncurve, m) {
       "run() executes a part program as `ncurve run` does and gives its moves as a NumPy array; gen() writes the "
       "program for a curve as `ncurve gen` does; curve() samples a curve as arrays; analyze() plans a program's cycle "
       "time as `ncurve analyze`; circle_test() is `ncurve analyze circle`; helicoid() finds disc-cutter locations "
-      "as `ncurve helicoid`.";
+      "as `ncurve helicoid`; verify() cuts the stock as `ncurve run --verify`.";
   m.attr("__version__") = NCURVE_VERSION;
   find_shipped_files();
   m.def("shipped_dir", &ncurve::app::shipped_dir,
@@ -55,4 +56,5 @@ PYBIND11_MODULE(ncurve, m) {
   ncurve::python::add_analyze(m);
   ncurve::python::add_circle_test(m);
   ncurve::python::add_helicoid(m);
+  ncurve::python::add_verify(m);
 }
