@@ -76,7 +76,7 @@ const char* const kHead =
     "How long a program runs on a machine and how far the machine strays from it: `ncurve analyze PROGRAM "
     "[options] --json --blocks FILE` (docs/analyze.md) from Python.";
 const char* const kProgram =
-    "program: as run() takes it (its text, or its file), or an ncurve.Run, whose program, machine and options "
+    "as run() takes it (its text, or its file), or an ncurve.Run, whose program, machine and options "
     "are analysed again (then give none of machine .. max_seconds).";
 const char* const kTail =
     "Returns an ncurve.Analysis: `summary` (the dict of `ncurve analyze --json`: cycle_time_s, motion_s, wait_s, "
