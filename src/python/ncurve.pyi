@@ -233,6 +233,11 @@ def verify(
     resolution: _Number | None = None,
     design: _Text | None = None,
     tol: _Number | None = None,
+    curve: str | None = None,
+    t: tuple[float, float] | None = None,
+    wall: str | None = None,
+    max_moves: int | None = None,
+    **curve_params: _Number | str,
 ) -> Verification:
     """Cut the stock with a program's moves, `ncurve run --verify`; see help(ncurve.verify)."""
     ...

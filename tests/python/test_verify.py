@@ -109,3 +109,30 @@ def test_bad_argument_raises_the_clis_message(cli, kwargs, args):
     with pytest.raises(ValueError) as e:
         ncurve.verify(example("spiral.nc"), **kwargs)
     assert str(e.value) in done.stderr
+
+
+def test_walls_against_a_curve(cli):
+    """The spiral paper's part (docs/papers.md): the groove's walls within 7.3 um of the spiral moved by
+    the cutter's radius, 1787 of the 9563 wall points beyond 5 um; and the CLI's same report."""
+    j = cli_verify(cli, example("spiral.nc"), "--setup", example("spiral.setup.toml"), "--curve", "spiral", "--tol",
+                   "0.005")
+    v = ncurve.verify(example("spiral.nc"), setup=example("spiral.setup.toml"), curve="spiral", tol=0.005)
+    assert v.summary == j
+    walls = v.summary["verify"]["curve"]
+    assert (walls["points"], walls["beyond_tol"]) == (9563, 1787)
+    assert max(walls["largest_gouge_mm"], walls["largest_left_mm"]) == pytest.approx(0.0073, abs=5e-5)
+    assert [d.code for d in v.findings] == ["NC2087", "NC2088"]
+    # the same spiral r = 1 + 2 theta as an expression of t in degrees
+    e = ncurve.verify(example("spiral.nc"), setup=example("spiral.setup.toml"), curve="expr", t=(0, 360), tol=0.005,
+                      x="[1+2*t*PI/180]*COS[t]", y="[1+2*t*PI/180]*SIN[t]")
+    assert (e.summary["verify"]["curve"]["points"], e.summary["verify"]["curve"]["beyond_tol"]) == (9563, 1787)
+
+
+def test_a_curves_parameter_is_checked_as_the_cli_does(cli):
+    done = cli("run", example("spiral.nc"), "--curve", "spiral", "--rr", "3")
+    assert done.returncode == 2
+    with pytest.raises(ValueError) as e:
+        ncurve.verify(example("spiral.nc"), curve="spiral", rr=3)
+    assert str(e.value) in done.stderr
+    with pytest.raises(TypeError, match="needs curve="):
+        ncurve.verify(example("spiral.nc"), r0=3)

@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "app/cli_checks.hpp"
 #include "app/run_setup.hpp"
 #include "app/run_verify.hpp"
 #include "python/common/cli_args.hpp"
@@ -32,7 +33,8 @@ struct Verification {
 
 const char* const kSignature =
     "verify(program, *, setup=None, machine=None, lib=(), set={}, params={}, max_steps=None, max_seconds=None, "
-    "nose_centre=False, resolution=None, design=None, tol=None) -> ncurve.Verification";
+    "nose_centre=False, resolution=None, design=None, tol=None, curve=None, t=None, wall=None, max_moves=None, "
+    "**curve_params) -> ncurve.Verification";
 const char* const kHead =
     "Cut the stock with a program's moves and report what goes wrong (a rapid through material, a cut deeper than "
     "the flutes, a holder or fixture hit, ...): `ncurve run PROGRAM --verify --setup FILE --json` (docs/verify.md) "
@@ -44,7 +46,8 @@ const char* const kTail =
     "volume_removed_mm3, findings, ...), and the cut part: on a mill `heights` (the Z-map, a 2-D array (ny, nx), "
     "cell [j, i] centred at origin + ((i + 0.5) cell, (j + 0.5) cell)), `origin` (x, y) and `cell` (mm); on a "
     "lathe `section` (the half-section's polygons, each an (n, 2) array of Z and X as a radius). A bad argument "
-    "raises ValueError with the CLI's message. The GIL is released while it works.";
+    "raises ValueError with the CLI's message. With curve, summary['verify']['curve'] has the walls against it. "
+    "The GIL is released while it works.";
 const char* const kRunArgs[][2] = {{"machine", "--machine"},   {"lib", "--lib"},
                                    {"set", "--set"},           {"params", "--param"},
                                    {"max_steps", "--max-steps"}, {"max_seconds", "--max-seconds"},
@@ -54,7 +57,11 @@ const char* const kOwnArgs[][3] = {
                          "the defaults (--verify alone)."},
     {"resolution", "--resolution", ""},
     {"design", "--design", ""},
-    {"tol", "--tol", ""}};
+    {"tol", "--tol", ""},
+    {"curve", "--curve", " Its parameters as keywords (a=40; expr's x, y, z as strings), as gen() takes them."},
+    {"t", "--from", " (FROM, TO): --from and --to (--t FROM:TO for expr)."},
+    {"wall", "--wall", ""},
+    {"max_moves", "--max-moves", ""}};
 
 std::string verify_doc() {
   app::RunInputs in;
@@ -77,7 +84,8 @@ std::string verify_doc() {
 Verification verify(const py::object& program, const py::object& setup_file, const py::object& machine,
                     const py::object& lib, const py::object& set, const py::object& params, const py::object& max_steps,
                     const py::object& max_seconds, bool nose_centre, const py::object& resolution,
-                    const py::object& design, const py::object& tol) {
+                    const py::object& design, const py::object& tol, const py::object& curve, const py::object& t,
+                    const py::object& wall, const py::object& max_moves, const py::kwargs& curve_params) {
   app::RunInputs in;
   app::VerifyArgs va;
   CLI::App command("run");
@@ -94,7 +102,30 @@ Verification verify(const py::object& program, const py::object& setup_file, con
   if (!resolution.is_none()) words.push_back("--resolution=" + option_text(resolution, "resolution"));
   if (!design.is_none()) words.push_back("--design=" + option_text(design, "design"));
   if (!tol.is_none()) words.push_back("--tol=" + option_text(tol, "tol"));
+  if (!curve.is_none()) words.push_back("--curve=" + option_text(curve, "curve"));
+  if (!t.is_none()) {
+    if (!py::isinstance<py::sequence>(t) || py::isinstance<py::str>(t) || py::len(t) != 2)
+      throw py::type_error("t: expected (FROM, TO)");
+    const py::sequence range = py::reinterpret_borrow<py::sequence>(t);
+    const std::string from = option_text(range[0], "t"), to = option_text(range[1], "t");
+    if (!curve.is_none() && option_text(curve, "curve") == "expr") words.push_back(fmt::format("--t={}:{}", from, to));
+    else words.insert(words.end(), {"--from=" + from, "--to=" + to});
+  }
+  if (!wall.is_none()) words.push_back("--wall=" + option_text(wall, "wall"));
+  if (!max_moves.is_none()) words.push_back("--max-moves=" + option_text(max_moves, "max_moves"));
+  // the curve's parameters: expr's expressions as its options, the others as the pairs --NAME VALUE
+  if (curve.is_none() && py::len(curve_params) > 0)
+    throw py::type_error(fmt::format("verify() got an unexpected keyword argument '{}' (a curve's parameter needs curve=)",
+                                     py::str(curve_params.begin()->first).cast<std::string>()));
+  for (auto [key, value] : curve_params) {
+    const std::string name = key.cast<std::string>();
+    if (name == "x" || name == "y" || name == "z") words.push_back(fmt::format("--{}={}", name, option_text(value, name)));
+    else words.insert(words.end(), {"--" + name, option_text(value, name)});
+  }
   parse_options(command, words);
+  va.curve_extras = command.remaining();
+  va.curve.command = "ncurve run";
+  va.curve.options = app::long_options(command);
   given.apply(in);
   if (setup_text && setup_text->text) va.setup_text = setup_text->value;
 
@@ -200,7 +231,8 @@ void add_verify(py::module_& m) {
         py::arg("machine") = py::none(), py::arg("lib") = py::tuple(), py::arg("set") = py::dict(),
         py::arg("params") = py::dict(), py::arg("max_steps") = py::none(), py::arg("max_seconds") = py::none(),
         py::arg("nose_centre") = false, py::arg("resolution") = py::none(), py::arg("design") = py::none(),
-        py::arg("tol") = py::none());
+        py::arg("tol") = py::none(), py::arg("curve") = py::none(), py::arg("t") = py::none(),
+        py::arg("wall") = py::none(), py::arg("max_moves") = py::none());
 }
 
 }  // namespace ncurve::python
