@@ -83,3 +83,12 @@ def test_a_trace_past_its_limit_says_so():
         r.variables_at(len(STEPS))
     with pytest.raises(ValueError, match="trace_limit"):
         ncurve.run(PROGRAM, trace=True, trace_limit=0)
+
+
+def test_every_step_of_a_long_loop_in_any_order():
+    """#1 after k blocks is the number of `#1=#1+1` blocks among the first k: at every step of a loop of
+    600 turns (past the states kept every so many blocks), asked for backwards and forwards."""
+    r = ncurve.run("#1=0\nWHILE [#1 LT 600] DO1\n#1=#1+1\nEND1\nM30\n", trace=True)
+    increments = np.concatenate([[0], np.cumsum(r.steps["line"] == 3)])
+    steps = list(range(len(r.steps), -1, -1)) + list(range(0, len(r.steps) + 1, 7))
+    assert [r.variables_at(k)[1] for k in steps] == [None if k == 0 else float(increments[k]) for k in steps]  # vacant before #1=0

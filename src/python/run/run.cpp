@@ -30,7 +30,7 @@ struct Run {
   py::object alarm = py::none();
   bool ok = true;
   py::bytes printed;
-  std::shared_ptr<const machine::ExecutionTrace> trace;  // trace=True: what each block changed
+  std::shared_ptr<const StepVariables> trace;  // trace=True: what each block changed
   py::object steps = py::none();
   app::RunInputs inputs;  // as parsed: what analyze() of this Run runs again
 };
@@ -178,7 +178,7 @@ Run run(const py::object& program, const py::object& machine, const py::object& 
   std::vector<std::string> files = records->files();
   if (recorded) {
     out.steps = step_records(*recorded, files);
-    out.trace = std::move(recorded);
+    out.trace = std::make_shared<const StepVariables>(std::move(recorded));
   }
   for (const std::string& f : files) out.files.append(decoded(f));
   // the records handed to NumPy as they are: the capsule frees them with the array
@@ -224,7 +224,7 @@ void add_run(py::module_& m) {
           "variables_at",
           [](const Run& r, std::int64_t step) {
             if (!r.trace) throw py::value_error(kNotTraced);
-            return variables_at(*r.trace, step);
+            return r.trace->at(step);
           },
           py::arg("step"),
           "The variables at step `step` (0 .. len(steps)): the state after that many blocks, before block `step` "
@@ -232,7 +232,7 @@ void add_run(py::module_& m) {
           "of the local level the block runs at, then every common and system variable written so far; None for "
           "a vacant one. IndexError outside the steps; ValueError when the run was not traced (trace=True).")
       .def_property_readonly(
-          "trace_complete", [](const Run& r) { return r.trace ? py::object(py::bool_(r.trace->complete())) : py::object(py::none()); },
+          "trace_complete", [](const Run& r) { return r.trace ? py::object(py::bool_(r.trace->trace().complete())) : py::object(py::none()); },
           "trace=True: whether every executed block is in the trace (False past trace_limit); None otherwise")
       .def("__repr__", [](const Run& r) {
         return py::str("<ncurve.Run: {} moves, {}>")

@@ -60,26 +60,44 @@ py::array step_records(const machine::ExecutionTrace& trace, std::vector<std::st
   return out;
 }
 
-py::dict variables_at(const machine::ExecutionTrace& trace, std::int64_t step) {
-  const auto& blocks = trace.blocks();
+StepVariables::StepVariables(std::shared_ptr<const machine::ExecutionTrace> trace) : trace_(std::move(trace)) {
+  const auto n = static_cast<std::int64_t>(trace_->blocks().size());
+  every_ = std::max<std::int64_t>(64, n / 200);
+}
+
+void StepVariables::apply(State& vars, std::int64_t from, std::int64_t to, Cursor& at) const {
+  const auto& writes = trace_->writes();
+  const auto& entries = trace_->entries();
+  for (std::int64_t b = from; b < to; ++b) {
+    for (; at.entry < entries.size() && entries[at.entry].block <= b; ++at.entry)
+      if (entries[at.entry].block == b)
+        for (std::int32_t v = 1; v <= kLocals; ++v) vars.erase({entries[at.entry].level, v});
+    for (; at.write < writes.size() && writes[at.write].block <= b; ++at.write)
+      vars[{writes[at.write].level, writes[at.write].number}] = writes[at.write].new_value;
+  }
+}
+
+py::dict StepVariables::at(std::int64_t step) const {
+  const auto& blocks = trace_->blocks();
   const auto n = static_cast<std::int64_t>(blocks.size());
   if (step < 0 || step > n)
     throw py::index_error(fmt::format("step {} is outside the run's steps 0..{} (step {}: after the last block){}{}",
-                                      step, n, n, trace.complete() ? "" : "; ", trace.limit_message()));
-  // the presets and blocks 0..step-1: each block's new levels cleared, then its writes applied
-  std::map<std::pair<std::int32_t, std::int32_t>, double> vars;  // (level, number); level -1 for non-locals
-  const auto& writes = trace.writes();
-  const auto& entries = trace.entries();
-  std::size_t w = 0, e = 0;
-  for (std::int64_t b = -1; b < step; ++b) {
-    for (; e < entries.size() && entries[e].block <= b; ++e)
-      if (entries[e].block == b)
-        for (std::int32_t v = 1; v <= kLocals; ++v) vars.erase({entries[e].level, v});
-    for (; w < writes.size() && writes[w].block <= b; ++w) vars[{writes[w].level, writes[w].number}] = writes[w].new_value;
+                                      step, n, n, trace_->complete() ? "" : "; ", trace_->limit_message()));
+  if (snapshots_.empty()) {  // the states at steps 0, every, 2 every, ...: any step is at most `every` blocks away
+    State vars;
+    Cursor at;
+    apply(vars, -1, 0, at);  // the presets
+    for (std::int64_t k = 0; k <= n; k += every_) {
+      if (k > 0) apply(vars, k - every_, k, at);
+      snapshots_.push_back({vars, at});
+    }
   }
+  auto [vars, at] = snapshots_[static_cast<std::size_t>(step / every_)];
+  apply(vars, step / every_ * every_, step, at);
   std::int32_t level = 0;  // of the innermost call the block runs in
   if (n > 0)
-    if (const auto& stack = trace.stacks()[blocks[static_cast<std::size_t>(std::min(step, n - 1))].stack]; !stack.empty())
+    if (const auto& stack = trace_->stacks()[blocks[static_cast<std::size_t>(std::min(step, n - 1))].stack];
+        !stack.empty())
       level = stack.back().level;
   py::dict out;
   for (std::int32_t v = 1; v <= kLocals; ++v) {

@@ -6,6 +6,8 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,7 +22,26 @@ py::array step_records(const machine::ExecutionTrace& trace, std::vector<std::st
 
 // The variables at step k, the state after k blocks (before block k runs; k = the number of
 // blocks: after the last): {number: value or None} with #1..#33 of the level the block runs at,
-// and every other variable written so far. IndexError outside 0..blocks.
-py::dict variables_at(const machine::ExecutionTrace& trace, std::int64_t step);
+// and every other variable written so far. IndexError outside 0..blocks. States are kept every
+// `every` blocks (made at the first call, under the GIL), so that a step costs at most that many
+// blocks' writes, as the workbench debugger does it.
+class StepVariables {
+public:
+  explicit StepVariables(std::shared_ptr<const machine::ExecutionTrace> trace);
+  py::dict at(std::int64_t step) const;
+  const machine::ExecutionTrace& trace() const { return *trace_; }
+
+private:
+  using State = std::map<std::pair<std::int32_t, std::int32_t>, double>;  // (level, number); level -1: not a local
+  struct Cursor {  // the next level entry and write to apply
+    std::size_t entry = 0, write = 0;
+  };
+  // Blocks from .. to-1 (-1: the presets): each block's new levels cleared, then its writes applied.
+  void apply(State& vars, std::int64_t from, std::int64_t to, Cursor& at) const;
+
+  std::shared_ptr<const machine::ExecutionTrace> trace_;
+  std::int64_t every_ = 64;
+  mutable std::vector<std::pair<State, Cursor>> snapshots_;
+};
 
 }  // namespace ncurve::python
