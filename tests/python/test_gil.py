@@ -108,3 +108,8 @@ def test_the_other_functions_release_it_too(name):
 def test_helicoid_releases_it():
     steps, longest, total = main_thread_pause(lambda: ncurve.helicoid("seed004", step=0.5))
     assert steps > 20 and longest < 0.5 * total, (steps, longest, total)
+
+
+def test_circle_test_releases_it():
+    steps, longest, total = main_thread_pause(lambda: ncurve.circle_test(120, 140))
+    assert steps > 20 and longest < 0.5 * total, (steps, longest, total)
