@@ -14,6 +14,8 @@
 
 namespace ncurve::app {
 
+struct VerifyArgs;  // app/run_verify.hpp
+
 struct AnalyzeArgs {
   RunInputs in;
   bool json = false;
@@ -49,6 +51,8 @@ motion::PlanTotals program_time(const std::string& name, const std::string& text
                                 const machine::MachineProfile& profile);
 // --kv and --feed-forward over the profile's servo settings; std::runtime_error for a bad gain.
 void apply_servo_options(machine::MachineProfile& p, const AnalyzeArgs& a);
+// --curve: how the part is cut and its walls measured (--setup, --wall, --tol, --max-moves).
+VerifyArgs analyze_part(const AnalyzeArgs& a);
 // base::BoundExceeded when the servo model would run past max_ticks periods at this block (--max-ticks).
 void check_servo_ticks(const motion::BlockTime& b, const machine::MachineProfile& profile, double max_ticks);
 // What `analyze circle --json` writes of a circular test.

@@ -162,6 +162,14 @@ def analyze(
     kv: _Number | Sequence[_Number] | None = None,
     feed_forward: float | None = None,
     max_ticks: float | None = None,
+    curve: str | None = None,
+    t: tuple[float, float] | None = None,
+    tol: _Number | None = None,
+    programmed: bool = False,
+    setup: _Text | None = None,
+    wall: str | None = None,
+    max_moves: int | None = None,
+    **curve_params: _Number | str,
 ) -> Analysis:
     """A program's cycle time as `ncurve analyze` plans it; see help(ncurve.analyze)."""
     ...

@@ -86,3 +86,37 @@ def test_bad_argument_raises_the_clis_message(cli, kwargs, args):
     with pytest.raises(ValueError) as e:
         ncurve.analyze(example("spiral.nc"), **kwargs)
     assert str(e.value) in done.stderr
+
+
+def test_shape_error_against_a_curve(cli):
+    """The spiral paper's chords (docs/papers.md): 100 chords of 3.6 deg deviate up to 7.15 um from the
+    spiral, 31 of them beyond 5 um; Narayan's length 48.0798 mm, Khan's 53.39 mm; and the CLI's same
+    --json, the part cut beside it."""
+    done = cli("analyze", example("spiral.nc"), "--curve", "spiral", "--tol", "0.005", "--json")
+    assert done.returncode == 0, done.stderr
+    a = ncurve.analyze(example("spiral.nc"), curve="spiral", tol=0.005)
+    assert a.summary == json.loads(done.stdout)
+    shape = a.summary["shape_error"]
+    assert (shape["blocks"], shape["blocks_beyond_tolerance"]) == (100, 31)
+    assert shape["max_mm"] == pytest.approx(0.00715, abs=5e-6)
+    models = a.summary["shape_models"]
+    assert models["narayan_length_mm"] == pytest.approx(48.0798, abs=1e-4)
+    assert models["khan_length_mm"] == pytest.approx(53.39, abs=0.005)
+    assert a.summary["part"]["verified"]
+
+
+def test_a_contour_off_the_curve_raises_the_clis_message(cli):
+    done = cli("analyze", example("spiral.nc"), "--curve", "ellipse")
+    assert done.returncode == 1
+    with pytest.raises(RuntimeError) as e:
+        ncurve.analyze(example("spiral.nc"), curve="ellipse")
+    assert str(e.value) in done.stderr
+    done = cli("analyze", example("spiral.nc"), "--tol", "0.005")
+    assert done.returncode == 2
+    with pytest.raises(ValueError) as e:
+        ncurve.analyze(example("spiral.nc"), tol=0.005)
+    assert str(e.value) in done.stderr
+    done = cli("analyze", example("spiral.nc"), "--curve", "spiral", "--rr", "3")
+    with pytest.raises(ValueError) as e:
+        ncurve.analyze(example("spiral.nc"), curve="spiral", rr=3)
+    assert str(e.value) in done.stderr

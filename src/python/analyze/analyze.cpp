@@ -8,6 +8,9 @@
 #include <optional>
 
 #include "app/analyze_command.hpp"
+#include "app/analyze_contour.hpp"
+#include "app/analyze_shape.hpp"
+#include "app/run_verify.hpp"
 #include "base/bounds.hpp"
 #include "python/common/cli_args.hpp"
 #include "python/common/diagnostic.hpp"
@@ -71,7 +74,8 @@ py::dtype block_dtype() {
 
 const char* const kSignature =
     "analyze(program, *, machine=None, lib=(), set={}, params={}, max_steps=None, max_seconds=None, servo=False, "
-    "kv=None, feed_forward=None, max_ticks=None) -> ncurve.Analysis";
+    "kv=None, feed_forward=None, max_ticks=None, curve=None, t=None, tol=None, programmed=False, setup=None, "
+    "wall=None, max_moves=None, **curve_params) -> ncurve.Analysis";
 const char* const kHead =
     "How long a program runs on a machine and how far the machine strays from it: `ncurve analyze PROGRAM "
     "[options] --json --blocks FILE` (docs/analyze.md) from Python.";
@@ -83,13 +87,25 @@ const char* const kTail =
     "..., and with servo=True contour_error), `blocks` (a NumPy structured array, a record a motion with the "
     "columns of --blocks: file (index into `files`), line, kind (ncurve.MOVE_KINDS), length_mm, "
     "programmed_mm_min, cap_mm_min, limit (ncurve.FEED_LIMITS), v_in_mm_min, v_peak_mm_min, v_out_mm_min, "
-    "start_s, seconds, wait_s, settle_s, starved), `files`, `diagnostics`, `alarm`, `ok`. A program that stops on "
+    "start_s, seconds, wait_s, settle_s, starved), `files`, `diagnostics`, `alarm`, `ok`. With curve, the summary "
+    "has the shape error against it and the part cut (`shape`, `part`, as --json has them); a contour that does "
+    "not follow the curve raises RuntimeError with the CLI's message. A program that stops on "
     "an alarm returns what was planned up to it and the alarm (the CLI prints the alarm and no totals). A bad "
     "argument raises ValueError with the CLI's message. The GIL is released while it works.";
 // the run's options (as run() takes them), then analyze's own
 const char* const kRunOptions[] = {"--machine", "--lib", "--set", "--param", "--max-steps", "--max-seconds"};
-const char* const kOwnOptions[][2] = {
-    {"servo", "--servo"}, {"kv", "--kv"}, {"feed_forward", "--feed-forward"}, {"max_ticks", "--max-ticks"}};
+const char* const kOwnOptions[][3] = {
+    {"servo", "--servo", ""},
+    {"kv", "--kv", " One gain, or a list of two."},
+    {"feed_forward", "--feed-forward", ""},
+    {"max_ticks", "--max-ticks", ""},
+    {"curve", "--curve", " Its parameters as keywords (a=40; expr's x, y, z as strings), as gen() takes them."},
+    {"t", "--from", " (FROM, TO): --from and --to (--t FROM:TO for expr)."},
+    {"tol", "--tol", ""},
+    {"programmed", "--programmed", ""},
+    {"setup", "--setup", ""},
+    {"wall", "--wall", ""},
+    {"max_moves", "--max-moves", ""}};
 
 std::string analyze_doc() {
   app::AnalyzeArgs args;
@@ -103,15 +119,18 @@ std::string analyze_doc() {
            wrapped(fmt::format("{}. As run() takes it. [{}]", args.command->get_option(kRunOptions[i])->get_description(),
                                kRunOptions[i]),
                    6);
-  for (const auto& [name, option] : kOwnOptions)
+  for (const auto& [name, option, more] : kOwnOptions)
     doc += fmt::format("  {}\n", name) +
-           wrapped(fmt::format("{}. [{}]", args.command->get_option(option)->get_description(), option), 6);
+           wrapped(fmt::format("{}.{} [{}]", args.command->get_option(option)->get_description(), more, option), 6);
   return doc + "\n" + wrapped(kTail, 0);
 }
 
 Analysis analyze(const py::object& program, const py::object& machine, const py::object& lib, const py::object& set,
                  const py::object& params, const py::object& max_steps, const py::object& max_seconds, bool servo,
-                 const py::object& kv, const py::object& feed_forward, const py::object& max_ticks) {
+                 const py::object& kv, const py::object& feed_forward, const py::object& max_ticks,
+                 const py::object& curve_name, const py::object& t, const py::object& tol, bool programmed,
+                 const py::object& setup_file, const py::object& wall, const py::object& max_moves,
+                 const py::kwargs& curve_params) {
   app::AnalyzeArgs args;
   CLI::App app;
   app::add_analyze_command(app, args);
@@ -133,7 +152,16 @@ Analysis analyze(const py::object& program, const py::object& machine, const py:
   for (const std::string& k : gains(kv)) words.push_back("--kv=" + k);
   if (!feed_forward.is_none()) words.push_back("--feed-forward=" + option_text(feed_forward, "feed_forward"));
   if (!max_ticks.is_none()) words.push_back("--max-ticks=" + option_text(max_ticks, "max_ticks"));
+  if (!tol.is_none()) words.push_back("--tol=" + option_text(tol, "tol"));
+  if (programmed) words.push_back("--programmed");
+  if (!setup_file.is_none()) words.push_back("--setup=" + option_text(setup_file, "setup"));
+  if (!wall.is_none()) words.push_back("--wall=" + option_text(wall, "wall"));
+  if (!max_moves.is_none()) words.push_back("--max-moves=" + option_text(max_moves, "max_moves"));
+  add_curve_words(words, curve_name, t, curve_params, "analyze");
   parse_options(app, words);
+  const std::vector<std::string> extras = args.command->remaining();
+  if (args.curve.name.empty() && args.tol > 0)  // the CLI's words
+    throw py::value_error("--shape-csv, --shape-plot and --tol need a nominal curve (--curve NAME ...)");
   if (of_run) {
     args.in = *of_run;
   } else {
@@ -145,13 +173,23 @@ Analysis analyze(const py::object& program, const py::object& machine, const py:
   std::vector<std::string> files;
   machine::RunResult result;
   nlohmann::json summary;
-  std::string refused;  // why the CLI would exit 2
+  std::string refused, failed;  // why the CLI would exit 2, 1
   {
     py::gil_scoped_release free_python;
     try {
       setup.emplace(app::prepare_run(args.in));
       app::apply_servo_options(setup->profile, args);
       const machine::MachineProfile& profile = setup->profile;
+      std::optional<geom::Curve> curve;
+      if (!args.curve.name.empty()) {
+        try {
+          curve.emplace(app::build_curve(args.curve, extras, profile));
+        } catch (const std::bad_alloc&) {
+          throw;
+        } catch (const std::exception& e) {
+          throw std::runtime_error(std::string("--curve: ") + e.what());
+        }
+      }
       std::optional<motion::ServoSim> sim;
       if (args.servo) sim.emplace(profile);
       auto file_index = [&](const nc::SourceFile* f) {
@@ -169,17 +207,47 @@ Analysis analyze(const py::object& program, const py::object& machine, const py:
           sim->on_block(b);
         }
       });
+      app::ContourTee tee;  // the moves to the planner, and with a curve to the part and the contour
+      tee.planner = &planner;
+      tee.profile = &profile;
+      tee.max_moves = args.max_moves;
+      tee.programmed = args.programmed;
+      std::vector<machine::Move> contour;
+      std::optional<app::RunVerification> part;
+      if (curve) {
+        tee.contour = &contour;
+        tee.plane_only = !profile.lathe() && curve->planar_z();
+        part.emplace(app::analyze_part(args), profile, *setup->lib, setup->options);
+        tee.part = part->sink();
+      }
       machine::Interpreter interp(profile, *setup->lib, setup->options);
-      result = interp.run(planner);
+      result = interp.run(tee);
       planner.finish();
       if (sim) app::settle(*sim, profile);
+      if (part) part->finish(result);
       summary = app::analyze_json(args.in.program, profile, planner.totals(), sim ? &*sim : nullptr);
+      if (curve && result.ok()) {
+        app::shape::Report shape;
+        shape.path = !tee.compensated ? app::shape::Path::plain
+                     : args.programmed ? app::shape::Path::programmed
+                                       : app::shape::Path::tool;
+        if (auto why = app::shape::measure(std::move(contour), *curve, profile, args.tol, shape)) {
+          failed = *why;
+          if (shape.path == app::shape::Path::tool)
+            failed += "; the path measured is the tool's, radius compensation applied (G41/G42): --programmed "
+                      "measures the contour as programmed";
+        } else {
+          app::shape::add_json(summary, *curve, shape, args.tol);
+          summary["part"] = report::verify_json(part->report());
+        }
+      }
     } catch (const std::bad_alloc&) {
       throw;
     } catch (const std::exception& e) {
       refused = e.what();
     }
   }
+  if (!failed.empty()) throw std::runtime_error(failed);
   if (!refused.empty()) throw py::value_error(refused);
 
   Analysis out;
@@ -227,7 +295,10 @@ void add_analyze(py::module_& m) {
   m.def("analyze", &analyze, doc.c_str(), py::arg("program"), py::kw_only(), py::arg("machine") = py::none(),
         py::arg("lib") = py::tuple(), py::arg("set") = py::dict(), py::arg("params") = py::dict(),
         py::arg("max_steps") = py::none(), py::arg("max_seconds") = py::none(), py::arg("servo") = false,
-        py::arg("kv") = py::none(), py::arg("feed_forward") = py::none(), py::arg("max_ticks") = py::none());
+        py::arg("kv") = py::none(), py::arg("feed_forward") = py::none(), py::arg("max_ticks") = py::none(),
+        py::arg("curve") = py::none(), py::arg("t") = py::none(), py::arg("tol") = py::none(),
+        py::arg("programmed") = false, py::arg("setup") = py::none(), py::arg("wall") = py::none(),
+        py::arg("max_moves") = py::none());
 }
 
 }  // namespace ncurve::python

@@ -102,26 +102,9 @@ Verification verify(const py::object& program, const py::object& setup_file, con
   if (!resolution.is_none()) words.push_back("--resolution=" + option_text(resolution, "resolution"));
   if (!design.is_none()) words.push_back("--design=" + option_text(design, "design"));
   if (!tol.is_none()) words.push_back("--tol=" + option_text(tol, "tol"));
-  if (!curve.is_none()) words.push_back("--curve=" + option_text(curve, "curve"));
-  if (!t.is_none()) {
-    if (!py::isinstance<py::sequence>(t) || py::isinstance<py::str>(t) || py::len(t) != 2)
-      throw py::type_error("t: expected (FROM, TO)");
-    const py::sequence range = py::reinterpret_borrow<py::sequence>(t);
-    const std::string from = option_text(range[0], "t"), to = option_text(range[1], "t");
-    if (!curve.is_none() && option_text(curve, "curve") == "expr") words.push_back(fmt::format("--t={}:{}", from, to));
-    else words.insert(words.end(), {"--from=" + from, "--to=" + to});
-  }
   if (!wall.is_none()) words.push_back("--wall=" + option_text(wall, "wall"));
   if (!max_moves.is_none()) words.push_back("--max-moves=" + option_text(max_moves, "max_moves"));
-  // the curve's parameters: expr's expressions as its options, the others as the pairs --NAME VALUE
-  if (curve.is_none() && py::len(curve_params) > 0)
-    throw py::type_error(fmt::format("verify() got an unexpected keyword argument '{}' (a curve's parameter needs curve=)",
-                                     py::str(curve_params.begin()->first).cast<std::string>()));
-  for (auto [key, value] : curve_params) {
-    const std::string name = key.cast<std::string>();
-    if (name == "x" || name == "y" || name == "z") words.push_back(fmt::format("--{}={}", name, option_text(value, name)));
-    else words.insert(words.end(), {"--" + name, option_text(value, name)});
-  }
+  add_curve_words(words, curve, t, curve_params, "verify");
   parse_options(command, words);
   va.curve_extras = command.remaining();
   va.curve.command = "ncurve run";
