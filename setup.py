@@ -39,7 +39,8 @@ class CMakeBuild(build_ext):
 def shipped(folder):
     """(destination, files) pairs of a shipped folder, for share/ncurve under the prefix."""
     out = []
-    for here, _, files in os.walk(os.path.join(SOURCE, folder)):
+    for here, folders, files in os.walk(os.path.join(SOURCE, folder)):
+        folders[:] = [f for f in folders if f != "__pycache__"]
         rel = os.path.relpath(here, SOURCE)
         out.append((os.path.join("share", "ncurve", rel), [os.path.join(rel, f) for f in sorted(files)]))
     return out
