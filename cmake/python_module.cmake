@@ -41,8 +41,14 @@ pybind11_add_module(ncurve_python MODULE NO_EXTRAS
   src/python/module.cpp
   src/python/common/cli_args.cpp
   src/python/common/diagnostic.cpp
+  src/python/common/run_args.cpp
   src/python/run/move_records.cpp
   src/python/run/run.cpp
+  src/python/run/steps.cpp
+  src/python/analyze/analyze.cpp
+  src/python/analyze/circle.cpp
+  src/python/helicoid/helicoid.cpp
+  src/python/verify/verify.cpp
   src/python/gen/gen.cpp
   src/python/geom/curve.cpp)
 set_target_properties(ncurve_python PROPERTIES OUTPUT_NAME ncurve LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/python)

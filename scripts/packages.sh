@@ -10,6 +10,9 @@ tool_packages=(cmake ninja-build g++ pkg-config libfmt-dev libcli11-dev libtomlp
 # python3-pytest: the Python module's tests (tests/python)
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev python3 python3-pytest linuxcnc-uspace chromium)
 fuzz_packages=(clang libclang-rt-14-dev)
+# `pip install .` of the Python module offline (pyproject.toml, setup.py; docs/python.md): Debian's pip,
+# venv, setuptools and wheel, with --no-build-isolation
+pip_packages=(python3-pip python3-venv python3-setuptools python3-wheel)
 ensure_packages() {
   local missing=() p
   for p in "$@"; do

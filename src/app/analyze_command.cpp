@@ -7,7 +7,6 @@
 #include <fstream>
 #include <iostream>
 #include <new>
-#include <numbers>
 
 #include "gen/generate.hpp"
 #include "gen/shape_models.hpp"
@@ -19,6 +18,7 @@
 #include "report/feed_trace.hpp"
 #include "report/motion_plots.hpp"
 #include "report/verify_report.hpp"
+#include "app/analyze_contour.hpp"
 #include "app/analyze_shape.hpp"
 #include "app/run_verify.hpp"
 #include "app/cli_units.hpp"
@@ -41,49 +41,8 @@ std::string part_text(const report::VerifyReport& r) {
 }
 
 
-// A radius-compensated move as programmed: from the programmed end of the move before to its own.
-// An arc keeps its centre (concentric with the tool's), less the imaginary tip's shift on a lathe.
-machine::Move as_programmed(const machine::Move& m, const machine::AxisVector& from, const std::array<double, 3>& tip) {
-  machine::Move p = m;
-  p.start = from;
-  p.end = m.programmed_end;
-  if (m.kind != machine::MoveKind::arc) {
-    p.length = std::hypot(p.end[0] - p.start[0], p.end[1] - p.start[1], p.end[2] - p.start[2]);
-    return p;
-  }
-  const machine::PlaneAxes pa = machine::plane_axes(m.plane);
-  for (int a = 0; a < 3; ++a) p.center[a] = m.center[a] - tip[a];
-  const double sp = p.start[pa.p] - p.center[pa.p], sq = p.start[pa.q] - p.center[pa.q];
-  const double ep = p.end[pa.p] - p.center[pa.p], eq = p.end[pa.q] - p.center[pa.q];
-  constexpr double kTwoPi = 2 * std::numbers::pi;
-  double sweep = std::atan2(sp * eq - sq * ep, sp * ep + sq * eq);
-  const bool full = std::fabs(m.sweep) > kTwoPi - 1e-9;
-  if (m.sweep > 0 && (sweep <= 1e-12 || full)) sweep += kTwoPi;
-  if (m.sweep < 0 && (sweep >= -1e-12 || full)) sweep -= kTwoPi;
-  p.sweep = sweep;
-  const double radius = (std::hypot(sp, sq) + std::hypot(ep, eq)) / 2;
-  p.length = std::hypot(std::fabs(sweep) * radius, p.end[pa.n] - p.start[pa.n]);
-  return p;
-}
-
 std::string where(const machine::Move& m) {
   return m.file ? fmt::format("{}:{}", m.file->name(), m.line) : fmt::format("line {}", m.line);
-}
-
-// --kv 30 or --kv 30,25 over the profile's servo settings: the gains of its first two axes (X and
-// Y on a mill, X and Z on a lathe), one value for both; and --feed-forward.
-void apply_servo_options(machine::MachineProfile& p, const AnalyzeArgs& a) {
-  if (a.feed_forward) p.servo.feed_forward = *a.feed_forward;
-  const std::vector<std::string>& kv = a.kv;
-  if (kv.empty()) return;
-  if (kv.size() > 2 || kv.size() > p.axes.size())
-    throw std::runtime_error(fmt::format("--kv takes one gain per axis of {}, at most two", p.axes));
-  for (std::size_t i = 0; i < 2 && i < p.axes.size(); ++i) {
-    const std::string& text = kv[std::min(i, kv.size() - 1)];
-    const std::optional<double> v = units::finite_number(text);
-    if (!v || !(*v > 0)) throw std::runtime_error(fmt::format("--kv: '{}' is not a gain in 1/s", text));
-    p.servo.kv[static_cast<std::size_t>(machine::axis_index(p.axes[i]))] = *v;
-  }
 }
 
 // "Kv X 30 Y 30 /s" over the profile's first two axes.
@@ -134,30 +93,7 @@ int circle_command(const AnalyzeArgs& a) {
                                : "";
   if (!a.plot.empty() && !save(a.plot, report::polar_svg(r, test, plane, subtitle), {a.in.machine})) return 2;
   if (a.json) {
-    nlohmann::json j;
-    j["radius"] = test.radius;
-    j["feed"] = test.feed;
-    j["feed_reached"] = r.feed_reached;
-    j["direction"] = test.clockwise ? "cw" : "ccw";
-    j["plane"] = std::string{plane.p_name, plane.q_name};
-    j["axes"] = nlohmann::json::array();
-    for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i) j["axes"].push_back(std::string(1, profile.axes[i]));
-    j["kv"] = nlohmann::json::array();
-    for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i)
-      j["kv"].push_back(sv.kv[static_cast<std::size_t>(machine::axis_index(profile.axes[i]))]);
-    j["feed_forward"] = sv.feed_forward;
-    j["radius_reduction"] = r.radius_reduction;
-    j["roundness"] = r.roundness;
-    j["max_deviation_angle"] = r.max_deviation_angle;
-    j["angle_meaningful"] = r.angle_meaningful;
-    j["max_contour_error"] = r.max_contour_error;
-    j["closed_form"] = {{"fanuc_radius_reduction", r.fanuc_radius_reduction},
-                        {"first_order_roundness", r.first_order_roundness},
-                        {"harmonic_radius_reduction", r.harmonic_radius_reduction},
-                        {"harmonic_roundness", r.harmonic_roundness},
-                        {"harmonic_angle", r.harmonic_angle},
-                        {"seed002_error", r.seed002_error},
-                        {"seed002_angle", r.seed002_angle}};
+    const nlohmann::json j = circle_json(profile, test, r);
     std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // a name that is not UTF-8 gets U+FFFD
     return 0;
   }
@@ -244,11 +180,7 @@ int program_command(const AnalyzeArgs& a) {
                          b.programmed, b.cap, motion::to_string(b.limit), b.v_in, b.v_peak, b.v_out, b.start, b.seconds,
                          b.wait, b.settle, b.starved ? 1 : 0);
     if (sim) {
-      if ((b.start + b.seconds) / profile.servo.period > a.max_ticks)
-        throw base::BoundExceeded(fmt::format(
-            "--servo: the program runs longer than {:.3g} servo periods of {:g} ms ({:.4g} s of machine time), at {}: "
-            "raise --max-ticks",
-            a.max_ticks, profile.servo.period * 1000, a.max_ticks * profile.servo.period, where(b.move)));
+      check_servo_ticks(b, profile, a.max_ticks);
       sim->on_block(b);
     }
     if (b.wait > slowest_wait.wait) slowest_wait = b;
@@ -256,60 +188,9 @@ int program_command(const AnalyzeArgs& a) {
       trace.add({b.length, b.programmed, b.v_in, b.v_peak, b.v_out, b.profile.up.distance(b.profile.up.duration()),
                  b.profile.down.distance(b.profile.down.duration()), b.starved});
   });
-  // The contour measured against the curve: feed moves (lines and arcs), and for a plane curve on a
-  // mill only those that stay at one Z (plunges and retracts are not part of the contour).
-  // With --programmed, a compensated move is taken as programmed and the compensation's corner
-  // moves are left out.
-  struct Tee final : machine::MoveSink {
-    machine::MoveSink* planner = nullptr;
-    std::vector<machine::Move>* contour = nullptr;
-    const machine::MachineProfile* profile = nullptr;
-    std::size_t max_moves = 0;
-    bool plane_only = false;
-    bool programmed = false;
-    bool compensated = false;            // a compensated move was met
-    machine::AxisVector at_programmed{};  // where the program put the tool, compensation aside
-    bool moved = false;
-    std::array<double, 3> tip{};          // lathe: the imaginary tip from the nose centre (X radius, Y, Z)
-    std::uint64_t moves = 0;
-    base::Progress progress{"ncurve analyze", "moves"};
-    machine::MoveSink* part = nullptr;  // the verifier cutting the part
-    void on_move(const machine::Move& m) override {
-      progress.at(++moves);
-      planner->on_move(m);
-      if (part) part->on_move(m);
-      if (m.kind == machine::MoveKind::tool_change && profile->lathe()) {  // T: its offset's nose radius and tip
-        auto it = profile->lathe_offsets.find(m.code % 100);
-        const machine::LatheOffset o = it == profile->lathe_offsets.end() ? machine::LatheOffset{} : it->second;
-        const machine::TipDirection d = machine::tip_direction(static_cast<int>(o.tip));
-        tip = {d.x * (o.r + o.r_wear), 0, d.z * (o.r + o.r_wear)};
-      }
-      if (!m.is_motion()) return;
-      const machine::AxisVector from = moved ? at_programmed : m.start;
-      moved = true;
-      at_programmed = m.compensated ? m.programmed_end : m.end;
-      if (m.compensated && !m.corner) compensated = true;
-      if (!contour || (m.kind != machine::MoveKind::line && m.kind != machine::MoveKind::arc)) return;
-      // as programmed: a compensated move, and the cancel move after it from the programmed point
-      if (programmed && (m.compensated || (m.kind == machine::MoveKind::line && from != m.start))) {
-        if (m.corner) return;
-        machine::Move c = m;
-        if (!m.compensated) c.programmed_end = m.end;
-        const machine::Move p = as_programmed(c, from, tip);
-        if (p.length <= 0) return;  // a block the compensation made in two moves
-        return keep(p);
-      }
-      keep(m);
-    }
-    void keep(const machine::Move& m) {
-      if (plane_only && m.end[2] != m.start[2]) return;
-      if (contour->size() >= max_moves)
-        throw base::BoundExceeded(fmt::format("--curve keeps every contour move to measure it: more than {}, at {}: "
-                                              "raise --max-moves",
-                                              max_moves, where(m)));
-      contour->push_back(m);
-    }
-  } tee;
+  ContourTee tee;
+  base::Progress progress{"ncurve analyze", "moves"};
+  tee.progress = &progress;
   tee.max_moves = a.max_moves;
   tee.profile = &profile;
   tee.programmed = a.programmed;
@@ -322,14 +203,7 @@ int program_command(const AnalyzeArgs& a) {
   // the part cut: its walls against the curve and the material each tool removed (a mill's)
   std::optional<RunVerification> part;
   if (curve) {
-    VerifyArgs va;
-    va.verify = true;
-    va.setup = a.setup;
-    va.curve = a.curve;
-    va.curve_extras = a.command->remaining();
-    va.tol = a.tol > 0 ? a.tol : 0.01;
-    va.wall = a.wall;
-    va.max_moves = a.max_moves;
+    const VerifyArgs va = analyze_part(a);
     try {
       part.emplace(va, profile, *setup.lib, setup.options);
     } catch (const std::bad_alloc&) {
@@ -427,6 +301,42 @@ int program_command(const AnalyzeArgs& a) {
 
 }  // namespace
 
+// --kv 30 or --kv 30,25 over the profile's servo settings: the gains of its first two axes (X and
+// Y on a mill, X and Z on a lathe), one value for both; and --feed-forward.
+void apply_servo_options(machine::MachineProfile& p, const AnalyzeArgs& a) {
+  if (a.feed_forward) p.servo.feed_forward = *a.feed_forward;
+  const std::vector<std::string>& kv = a.kv;
+  if (kv.empty()) return;
+  if (kv.size() > 2 || kv.size() > p.axes.size())
+    throw std::runtime_error(fmt::format("--kv takes one gain per axis of {}, at most two", p.axes));
+  for (std::size_t i = 0; i < 2 && i < p.axes.size(); ++i) {
+    const std::string& text = kv[std::min(i, kv.size() - 1)];
+    const std::optional<double> v = units::finite_number(text);
+    if (!v || !(*v > 0)) throw std::runtime_error(fmt::format("--kv: '{}' is not a gain in 1/s", text));
+    p.servo.kv[static_cast<std::size_t>(machine::axis_index(p.axes[i]))] = *v;
+  }
+}
+
+VerifyArgs analyze_part(const AnalyzeArgs& a) {
+  VerifyArgs va;
+  va.verify = true;
+  va.setup = a.setup;
+  va.curve = a.curve;
+  va.curve_extras = a.command->remaining();
+  va.tol = a.tol > 0 ? a.tol : 0.01;
+  va.wall = a.wall;
+  va.max_moves = a.max_moves;
+  return va;
+}
+
+void check_servo_ticks(const motion::BlockTime& b, const machine::MachineProfile& profile, double max_ticks) {
+  if ((b.start + b.seconds) / profile.servo.period > max_ticks)
+    throw base::BoundExceeded(fmt::format(
+        "--servo: the program runs longer than {:.3g} servo periods of {:g} ms ({:.4g} s of machine time), at {}: "
+        "raise --max-ticks",
+        max_ticks, profile.servo.period * 1000, max_ticks * profile.servo.period, where(b.move)));
+}
+
 motion::PlanTotals program_time(const std::string& name, const std::string& text,
                                 const machine::MachineProfile& profile) {
   machine::ProgramLibrary lib(profile.parse_options());
@@ -476,6 +386,37 @@ nlohmann::json analyze_json(const std::string& program, const machine::MachinePr
     j["contour_error"] = contour_json(sim->cutting());
     j["rapid_contour_error"] = contour_json(sim->rapids());
   }
+  return j;
+}
+
+nlohmann::json circle_json(const machine::MachineProfile& profile, const motion::CircleTest& test,
+                           const motion::CircleResult& r) {
+  const motion::CirclePlane plane = motion::circle_plane(profile);
+  const auto& sv = profile.servo;
+  nlohmann::json j;
+  j["radius"] = test.radius;
+  j["feed"] = test.feed;
+  j["feed_reached"] = r.feed_reached;
+  j["direction"] = test.clockwise ? "cw" : "ccw";
+  j["plane"] = std::string{plane.p_name, plane.q_name};
+  j["axes"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i) j["axes"].push_back(std::string(1, profile.axes[i]));
+  j["kv"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < 2 && i < profile.axes.size(); ++i)
+    j["kv"].push_back(sv.kv[static_cast<std::size_t>(machine::axis_index(profile.axes[i]))]);
+  j["feed_forward"] = sv.feed_forward;
+  j["radius_reduction"] = r.radius_reduction;
+  j["roundness"] = r.roundness;
+  j["max_deviation_angle"] = r.max_deviation_angle;
+  j["angle_meaningful"] = r.angle_meaningful;
+  j["max_contour_error"] = r.max_contour_error;
+  j["closed_form"] = {{"fanuc_radius_reduction", r.fanuc_radius_reduction},
+                      {"first_order_roundness", r.first_order_roundness},
+                      {"harmonic_radius_reduction", r.harmonic_radius_reduction},
+                      {"harmonic_roundness", r.harmonic_roundness},
+                      {"harmonic_angle", r.harmonic_angle},
+                      {"seed002_error", r.seed002_error},
+                      {"seed002_angle", r.seed002_angle}};
   return j;
 }
 

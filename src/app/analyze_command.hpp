@@ -8,10 +8,13 @@
 
 #include "app/curve_args.hpp"
 #include "app/run_setup.hpp"
+#include "motion/circle.hpp"
 #include "motion/planner.hpp"
 #include "motion/servo.hpp"
 
 namespace ncurve::app {
+
+struct VerifyArgs;  // app/run_verify.hpp
 
 struct AnalyzeArgs {
   RunInputs in;
@@ -46,6 +49,15 @@ nlohmann::json analyze_json(const std::string& program, const machine::MachinePr
 // processing time). Throws std::runtime_error with the alarm when the program stops on one.
 motion::PlanTotals program_time(const std::string& name, const std::string& text,
                                 const machine::MachineProfile& profile);
+// --kv and --feed-forward over the profile's servo settings; std::runtime_error for a bad gain.
+void apply_servo_options(machine::MachineProfile& p, const AnalyzeArgs& a);
+// --curve: how the part is cut and its walls measured (--setup, --wall, --tol, --max-moves).
+VerifyArgs analyze_part(const AnalyzeArgs& a);
+// base::BoundExceeded when the servo model would run past max_ticks periods at this block (--max-ticks).
+void check_servo_ticks(const motion::BlockTime& b, const machine::MachineProfile& profile, double max_ticks);
+// What `analyze circle --json` writes of a circular test.
+nlohmann::json circle_json(const machine::MachineProfile& profile, const motion::CircleTest& test,
+                           const motion::CircleResult& r);
 // Lets the servo model settle after the last block (five time constants of the slowest loop).
 void settle(motion::ServoSim& sim, const machine::MachineProfile& profile);
 

@@ -93,18 +93,15 @@ void add_helicoid_command(CLI::App& app, HelicoidArgs& a) {
   a.command = h;
 }
 
-int helicoid_command(const HelicoidArgs& a) {
+void helicoid_job(const HelicoidArgs& a, std::optional<helicoid::ContactSearch>& search, helicoid::Job& job,
+                  bool progress_shown) {
   using namespace helicoid;
-  std::optional<ContactSearch> search;
-  Job job;
   std::vector<double> psis, centre_distances;
   // refused before the search, which can take long: no output over an input
   const std::vector<std::string> inputs{a.profile_csv, a.cutter_profile};
   for (const std::string* out : {&a.output, &a.program, &a.plot})
-    if (io::same_file(*out, inputs)) {
-      std::cerr << "ncurve helicoid: error: " << *out << ": refusing to write over an input file\n";
-      return 2;
-    }
+    if (io::same_file(*out, inputs))
+      throw HelicoidRefused(fmt::format("error: {}: refusing to write over an input file", *out));
   try {
     const bool seed = a.example == "seed004";
     std::optional<EndProfile> profile;
@@ -269,22 +266,26 @@ int helicoid_command(const HelicoidArgs& a) {
   } catch (const std::bad_alloc&) {
     throw;  // main() says what ran out
   } catch (const std::exception& e) {
-    std::cerr << "ncurve helicoid: " << e.what() << "\n";
-    return 2;
+    throw HelicoidRefused(e.what());
   }
-  try {
-    base::Progress progress("ncurve helicoid", "contacts",
-                            a.final_motion != "x" ? psis.size() * centre_distances.size() : psis.size());
+  {
+    std::optional<base::Progress> shown;
+    if (progress_shown)
+      shown.emplace("ncurve helicoid", "contacts",
+                    a.final_motion != "x" ? psis.size() * centre_distances.size() : psis.size());
+    auto progress = [&](std::size_t n) {
+      if (shown) shown->at(n);
+    };
     if (a.final_motion != "x") {
       for (double distance : centre_distances) {
         AxialMotion motion{distance, a.start_z, a.final_motion == "z+" ? 1 : -1};
         const std::size_t before = job.contacts.size();
-        for (auto& c : search->run_axial(psis, job.method, motion, [&](std::size_t n) { progress.at(before + n); }))
+        for (auto& c : search->run_axial(psis, job.method, motion, [&](std::size_t n) { progress(before + n); }))
           job.contacts.push_back(c);
       }
       job.final_motion = a.final_motion;
     } else {
-      job.contacts = search->run(psis, job.method, [&](std::size_t n) { progress.at(n); });
+      job.contacts = search->run(psis, job.method, [&](std::size_t n) { progress(n); });
     }
     for (const auto& c : job.contacts) {
       if (c.normal_angle > 1e-3)
@@ -306,12 +307,24 @@ int helicoid_command(const HelicoidArgs& a) {
       job.passes = plan.passes;
       job.pass_tolerance = *a.program_tol;
     }
+  }
+}
+
+int helicoid_command(const HelicoidArgs& a) {
+  std::optional<helicoid::ContactSearch> search;
+  helicoid::Job job;
+  try {
+    helicoid_job(a, search, job, true);
   } catch (const std::bad_alloc&) {
     throw;  // main() says what ran out
+  } catch (const HelicoidRefused& e) {
+    std::cerr << "ncurve helicoid: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "ncurve helicoid: " << e.what() << "\n";
     return 1;
   }
+  using namespace helicoid;
   std::string table = a.json ? contacts_json(job, *search) : a.csv ? contacts_csv(job) : contacts_text(job, *search);
   if (a.output.empty()) std::cout << table;
   else if (!save(a.output, table)) return 2;

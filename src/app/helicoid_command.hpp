@@ -3,7 +3,10 @@
 #include <CLI/CLI.hpp>
 
 #include <optional>
+#include <stdexcept>
 #include <string>
+
+#include "helicoid/report.hpp"
 
 namespace ncurve::app {
 
@@ -34,6 +37,14 @@ struct HelicoidArgs {
 };
 
 void add_helicoid_command(CLI::App& app, HelicoidArgs& args);
+// Arguments the command refuses before it searches (it exits 2).
+struct HelicoidRefused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+// The contact table of the arguments (files, --plot and --program aside): the search and its job.
+// Throws HelicoidRefused for bad arguments, std::runtime_error for a search that fails (exit 1).
+void helicoid_job(const HelicoidArgs& a, std::optional<helicoid::ContactSearch>& search, helicoid::Job& job,
+                  bool progress_shown);
 int helicoid_command(const HelicoidArgs& args);
 
 }  // namespace ncurve::app

@@ -8,10 +8,13 @@
 #include <string>
 
 #include "app/shipped.hpp"
+#include "python/analyze/analyze.hpp"
 #include "python/common/diagnostic.hpp"
 #include "python/gen/gen.hpp"
 #include "python/geom/curve.hpp"
+#include "python/helicoid/helicoid.hpp"
 #include "python/run/run.hpp"
+#include "python/verify/verify.hpp"
 
 namespace py = pybind11;
 
@@ -38,7 +41,9 @@ PYBIND11_MODULE(ncurve, m) {
   m.doc() =
       "ncurve: run, generate and analyse FANUC Custom Macro B programs for non-circular curves (docs/python.md).\n"
       "run() executes a part program as `ncurve run` does and gives its moves as a NumPy array; gen() writes the "
-      "program for a curve as `ncurve gen` does; curve() samples a curve as arrays.";
+      "program for a curve as `ncurve gen` does; curve() samples a curve as arrays; analyze() plans a program's cycle "
+      "time as `ncurve analyze`; circle_test() is `ncurve analyze circle`; helicoid() finds disc-cutter locations "
+      "as `ncurve helicoid`; verify() cuts the stock as `ncurve run --verify`.";
   m.attr("__version__") = NCURVE_VERSION;
   find_shipped_files();
   m.def("shipped_dir", &ncurve::app::shipped_dir,
@@ -48,4 +53,8 @@ PYBIND11_MODULE(ncurve, m) {
   ncurve::python::add_run(m);
   ncurve::python::add_gen(m);
   ncurve::python::add_curve(m);
+  ncurve::python::add_analyze(m);
+  ncurve::python::add_circle_test(m);
+  ncurve::python::add_helicoid(m);
+  ncurve::python::add_verify(m);
 }

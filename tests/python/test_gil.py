@@ -76,3 +76,40 @@ def test_two_runs_at_once_take_half_the_time_on_two_cores(cli, tmp_path):
     if max(processes) <= 1.2:
         pytest.skip(f"no second core free now (two processes at once: {max(processes):.2f} cores)")
     assert max(threads) > 1.2, (threads, processes)
+
+
+def main_thread_pause(work):
+    """The main thread's longest pause while `work` runs on another thread, and the whole time."""
+    worker = threading.Thread(target=work)
+    steps, longest = 0, 0.0
+    start = last = time.perf_counter()
+    worker.start()
+    while worker.is_alive():
+        now = time.perf_counter()
+        longest = max(longest, now - last)
+        last = now
+        steps += 1
+        time.sleep(0.001)
+    worker.join()
+    return steps, longest, time.perf_counter() - start
+
+
+@pytest.mark.parametrize("name", ["analyze", "verify", "trace"])
+def test_the_other_functions_release_it_too(name):
+    """analyze(), verify() and a traced run of the same long loop: the main thread goes on meanwhile."""
+    program = LOOP.format(1_000_000)
+    work = {"analyze": lambda: ncurve.analyze(program),
+            "verify": lambda: ncurve.verify(program),
+            "trace": lambda: ncurve.run(program, trace=True, trace_limit=100)}[name]
+    steps, longest, total = main_thread_pause(work)
+    assert steps > 20 and longest < 0.5 * total, (steps, longest, total)
+
+
+def test_helicoid_releases_it():
+    steps, longest, total = main_thread_pause(lambda: ncurve.helicoid("seed004", step=0.5))
+    assert steps > 20 and longest < 0.5 * total, (steps, longest, total)
+
+
+def test_circle_test_releases_it():
+    steps, longest, total = main_thread_pause(lambda: ncurve.circle_test(120, 140))
+    assert steps > 20 and longest < 0.5 * total, (steps, longest, total)

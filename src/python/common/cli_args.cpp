@@ -44,6 +44,37 @@ std::vector<std::string> option_list(py::handle values, std::string_view what) {
   return out;
 }
 
+std::vector<std::string> gains(py::handle values) {
+  if (values.is_none()) return {};
+  if (py::isinstance<py::str>(values) || !py::isinstance<py::iterable>(values)) return {option_text(values, "kv")};
+  std::vector<std::string> out;
+  for (py::handle v : values) out.push_back(option_text(v, "kv"));
+  return out;
+}
+
+void add_curve_words(std::vector<std::string>& words, const py::object& curve, const py::object& t,
+                     const py::kwargs& params, std::string_view function) {
+  if (curve.is_none() && (py::len(params) > 0 || !t.is_none()))
+    throw py::type_error(fmt::format("{}() got an unexpected keyword argument '{}' (a curve's parameter needs curve=)",
+                                     function, t.is_none() ? py::str(params.begin()->first).cast<std::string>() : "t"));
+  if (curve.is_none()) return;
+  const std::string name = option_text(curve, "curve");
+  words.push_back("--curve=" + name);
+  if (!t.is_none()) {
+    if (!py::isinstance<py::sequence>(t) || py::isinstance<py::str>(t) || py::len(t) != 2)
+      throw py::type_error("t: expected (FROM, TO)");
+    const py::sequence range = py::reinterpret_borrow<py::sequence>(t);
+    const std::string from = option_text(range[0], "t"), to = option_text(range[1], "t");
+    if (name == "expr") words.push_back(fmt::format("--t={}:{}", from, to));
+    else words.insert(words.end(), {"--from=" + from, "--to=" + to});
+  }
+  for (auto [key, value] : params) {
+    const std::string k = key.cast<std::string>();
+    if (k == "x" || k == "y" || k == "z") words.push_back(fmt::format("--{}={}", k, option_text(value, k)));
+    else words.insert(words.end(), {"--" + k, option_text(value, k)});
+  }
+}
+
 void parse_options(CLI::App& command, const std::vector<std::string>& words) {
   std::vector<std::string> reversed(words.rbegin(), words.rend());  // CLI11 takes them last first
   try {

@@ -25,6 +25,15 @@ TextOrPath text_or_path(py::handle value, std::string_view what);
 // One value or an iterable of them (a single str or path is one), each by option_text.
 std::vector<std::string> option_list(py::handle values, std::string_view what);
 
+// --kv's values: one gain (a number) or a list of them, each by option_text.
+std::vector<std::string> gains(py::handle values);
+
+// A curve as `--curve` takes it (run --verify, analyze): --curve=NAME, t=(FROM, TO) as --from/--to
+// (--t FROM:TO for expr), expr's x, y, z as their options and every other parameter as the pair
+// --NAME VALUE the command leaves over for the curve. TypeError for a parameter without a curve.
+void add_curve_words(std::vector<std::string>& words, const py::object& curve, const py::object& t,
+                     const py::kwargs& params, std::string_view function);
+
 // Parses "--option=value" words (and positional values) in order with the command's options;
 // ValueError with CLI11's message ("--machine: no profile file 'x' ...") for a bad one.
 void parse_options(CLI::App& command, const std::vector<std::string>& words);

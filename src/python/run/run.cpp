@@ -3,14 +3,18 @@
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <optional>
 
 #include "app/run_setup.hpp"
 #include "machine/interpreter.hpp"
 #include "python/common/cli_args.hpp"
 #include "python/common/diagnostic.hpp"
+#include "python/common/run_args.hpp"
 #include "python/run/move_records.hpp"
+#include "python/run/steps.hpp"
 #include "report/summary.hpp"
 
 namespace ncurve::python {
@@ -26,7 +30,14 @@ struct Run {
   py::object alarm = py::none();
   bool ok = true;
   py::bytes printed;
+  std::shared_ptr<const StepVariables> trace;  // trace=True: what each block changed
+  py::object steps = py::none();
+  app::RunInputs inputs;  // as parsed: what analyze() of this Run runs again
 };
+
+const char* const kNotTraced =
+    "the run recorded no variables: run it with ncurve.run(..., trace=True) (as the workbench's /api/run "
+    "\"trace\": true)";
 
 // The Python arguments with the CLI option each stands for, in the order of help().
 struct Argument {
@@ -43,11 +54,16 @@ constexpr Argument kArguments[] = {
     {"max_steps", "--max-steps", "None: the CLI's default."},
     {"max_seconds", "--max-seconds", "None: the CLI's default."},
     {"nose_centre", "--nose-centre", ""},
+    {"trace", nullptr, "record what each block changes, as the workbench debugger's trace (/api/run \"trace\": true): "
+                       "Run.steps and Run.variables_at(step). About 32 bytes a block, variable write and system "
+                       "variable read. [/api/run \"trace\"]"},
+    {"trace_limit", nullptr, "the most trace records (None: 2,000,000; at most 20,000,000); past it the trace "
+                             "stops at a whole block and says so. [/api/run \"trace_limit\"]"},
 };
 
 const char* const kSignature =
-    "run(program, *, machine=None, lib=(), set={}, params={}, max_steps=None, max_seconds=None, nose_centre=False) "
-    "-> ncurve.Run";
+    "run(program, *, machine=None, lib=(), set={}, params={}, max_steps=None, max_seconds=None, nose_centre=False, "
+    "trace=False, trace_limit=None) -> ncurve.Run";
 // the positional argument's help: the CLI's speaks of standard input
 const char* const kProgram =
     "part program: its text (a str with a line break; named <text> in messages), or its file (a str without a "
@@ -71,6 +87,10 @@ std::string run_doc() {
   std::string doc = std::string(kSignature) + "\n\n" + wrapped(kRunHead, 0) +
                     "\nArguments (the CLI's option in brackets):\n";
   for (const Argument& a : kArguments) {
+    if (!a.option) {  // the server's, not the CLI's
+      doc += fmt::format("  {}\n", a.name) + wrapped(a.python, 6);
+      continue;
+    }
     std::string text = a.python ? command.get_option(a.option)->get_description() : std::string(kProgram);
     const std::string more = a.python && *a.python ? std::string(" ") + a.python : "";
     text = fmt::format("{}.{} [{}]", text, more, a.option);
@@ -92,54 +112,30 @@ py::dtype record_dtype(const MoveRecords& records) {
   return py::dtype::from_args(spec);
 }
 
-// A dict's items as "KEY=VALUE" words of an option: "#" before a --set key without one.
-void add_assignments(std::vector<std::string>& words, py::handle values, const char* option, const char* what,
-                     bool hash) {
-  if (values.is_none()) return;
-  if (!py::isinstance<py::dict>(values))
-    throw py::type_error(fmt::format("{}: expected a dict, got {}", what,
-                                     py::str(py::type::handle_of(values).attr("__name__")).cast<std::string>()));
-  for (auto [key, value] : py::reinterpret_borrow<py::dict>(values)) {
-    std::string k = option_text(key, what);
-    if (hash && !k.starts_with('#')) k = "#" + k;
-    words.push_back(fmt::format("{}={}={}", option, k, option_text(value, what)));
-  }
-}
-
 Run run(const py::object& program, const py::object& machine, const py::object& lib, const py::object& set,
-        const py::object& params, const py::object& max_steps, const py::object& max_seconds, bool nose_centre) {
+        const py::object& params, const py::object& max_steps, const py::object& max_seconds, bool nose_centre, bool trace,
+        const py::object& trace_limit) {
   // the arguments as the command line's words, parsed by the command's options
   app::RunInputs in;
   CLI::App command("run");
   app::add_run_inputs(&command, in, true);
-  std::vector<std::string> words;
-  const TextOrPath source = text_or_path(program, "program");
-  words.push_back(source.text ? "-" : source.value);  // the text is given below ("-" passes the file check)
-  std::optional<TextOrPath> profile;
-  if (!machine.is_none()) {
-    profile = text_or_path(machine, "machine");
-    if (!profile->text) words.push_back("--machine=" + profile->value);
+  const RunWords given = run_words(program, machine, lib, set, params, max_steps, max_seconds, nose_centre);
+  parse_options(command, given.words);
+  std::size_t most_records = machine::ExecutionTrace::kDefaultLimit;
+  if (!trace_limit.is_none()) {
+    const double limit = py::float_(trace_limit);
+    if (!(limit >= 1 && limit <= static_cast<double>(machine::ExecutionTrace::kMaxLimit)) || limit != std::floor(limit))
+      throw py::value_error(fmt::format("trace_limit is a whole number from 1 to {}", machine::ExecutionTrace::kMaxLimit));
+    most_records = static_cast<std::size_t>(limit);
   }
-  for (const std::string& folder : option_list(lib, "lib")) words.push_back("--lib=" + folder);
-  add_assignments(words, set, "--set", "set", true);
-  add_assignments(words, params, "--param", "params", false);
-  if (!max_steps.is_none()) words.push_back("--max-steps=" + option_text(max_steps, "max_steps"));
-  if (!max_seconds.is_none()) words.push_back("--max-seconds=" + option_text(max_seconds, "max_seconds"));
-  if (nose_centre) words.push_back("--nose-centre");
-  parse_options(command, words);
-  if (source.text) {
-    in.program = "<text>";
-    in.text = source.value;
-  }
-  if (profile && profile->text) {
-    in.machine = "<text>";
-    in.machine_text = profile->value;
-  }
+  given.apply(in);
 
   std::optional<app::RunSetup> setup;
   std::optional<MoveRecords> records;
   machine::RunResult result;
   std::string refused;  // why the CLI would not run it
+  std::shared_ptr<machine::ExecutionTrace> recorded;
+  if (trace) recorded = std::make_shared<machine::ExecutionTrace>(most_records);
   {
     py::gil_scoped_release free_python;
     try {
@@ -152,6 +148,7 @@ Run run(const py::object& program, const py::object& machine, const py::object& 
     if (setup) {
       records.emplace(setup->profile);
       machine::Interpreter interp(setup->profile, *setup->lib, setup->options);
+      if (recorded) interp.observe(recorded.get());
       result = interp.run(*records);
       if (setup->lib->streamed()) app::complete_problems(*setup);  // the file is read to its end
     }
@@ -176,8 +173,14 @@ Run run(const py::object& program, const py::object& machine, const py::object& 
     out.diagnostics.append(out.alarm);
   }
   out.ok = result.ok();
+  out.inputs = in;
   out.printed = py::bytes(result.output.bytes);
-  for (const std::string& f : records->files()) out.files.append(decoded(f));
+  std::vector<std::string> files = records->files();
+  if (recorded) {
+    out.steps = step_records(*recorded, files);
+    out.trace = std::make_shared<const StepVariables>(std::move(recorded));
+  }
+  for (const std::string& f : files) out.files.append(decoded(f));
   // the records handed to NumPy as they are: the capsule frees them with the array
   const py::dtype dtype = record_dtype(*records);
   const std::size_t count = records->count();
@@ -190,6 +193,10 @@ Run run(const py::object& program, const py::object& machine, const py::object& 
 }
 
 }  // namespace
+
+const app::RunInputs* run_inputs(py::handle value) {
+  return py::isinstance<Run>(value) ? &value.cast<const Run&>().inputs : nullptr;
+}
 
 void add_run(py::module_& m) {
   py::tuple kinds(10);
@@ -209,6 +216,24 @@ void add_run(py::module_& m) {
       .def_readonly("alarm", &Run::alarm, "the ncurve.Diagnostic the run stopped on, or None")
       .def_readonly("ok", &Run::ok, "True when the program ran to its end without an alarm")
       .def_readonly("printed", &Run::printed, "the bytes POPEN, DPRNT, BPRNT and PCLOS sent (as --dprnt writes them)")
+      .def_readonly("steps", &Run::steps,
+                    "trace=True: numpy structured array, a record per executed block (step k is the k-th): file "
+                    "(index into files), line, move (moves made before it), level (local variable level), depth "
+                    "(calls open), program (O number); None otherwise")
+      .def(
+          "variables_at",
+          [](const Run& r, std::int64_t step) {
+            if (!r.trace) throw py::value_error(kNotTraced);
+            return r.trace->at(step);
+          },
+          py::arg("step"),
+          "The variables at step `step` (0 .. len(steps)): the state after that many blocks, before block `step` "
+          "runs (len(steps): after the last), as the workbench debugger shows it. A dict {number: value}: #1..#33 "
+          "of the local level the block runs at, then every common and system variable written so far; None for "
+          "a vacant one. IndexError outside the steps; ValueError when the run was not traced (trace=True).")
+      .def_property_readonly(
+          "trace_complete", [](const Run& r) { return r.trace ? py::object(py::bool_(r.trace->trace().complete())) : py::object(py::none()); },
+          "trace=True: whether every executed block is in the trace (False past trace_limit); None otherwise")
       .def("__repr__", [](const Run& r) {
         return py::str("<ncurve.Run: {} moves, {}>")
             .format(r.moves.size(), r.ok ? py::str("ok") : py::str("alarm {}").format(r.alarm.attr("code")));
@@ -219,7 +244,8 @@ void add_run(py::module_& m) {
   options.disable_function_signatures();  // the doc's first line is the signature, in Python's words
   m.def("run", &run, doc.c_str(), py::arg("program"), py::kw_only(), py::arg("machine") = py::none(),
         py::arg("lib") = py::tuple(), py::arg("set") = py::dict(), py::arg("params") = py::dict(),
-        py::arg("max_steps") = py::none(), py::arg("max_seconds") = py::none(), py::arg("nose_centre") = false);
+        py::arg("max_steps") = py::none(), py::arg("max_seconds") = py::none(), py::arg("nose_centre") = false,
+        py::arg("trace") = false, py::arg("trace_limit") = py::none());
 }
 
 }  // namespace ncurve::python
