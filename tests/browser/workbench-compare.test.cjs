@@ -92,8 +92,11 @@ fs.writeFileSync(path.join(dir, 'compare-b.nc'), B.join('\n'));
       c.entries[0].now === 7 && c.entries[0].what === 'line to X32.000 Y10.000 Z-1.000',
       `a line inserted: listed as inserted at line 7, nothing else (${JSON.stringify(c.entries)})`);
 
-    // 3. A from the server against compare-b.nc, run as the editor's program is
-    await page.evaluate(() => ncurveWorkbench.open('compare-a.nc'));
+    // 3. A from the server against compare-b.nc, run as the editor's program is (Revert: the edits
+    // above dropped, the file read again)
+    page.once('dialog', (d) => d.accept());
+    await page.click('#revert');
+    await page.waitForFunction(() => !ncurveWorkbench.edited.includes('compare-a.nc') && ncurveWorkbench.settled());
     await page.selectOption('#cmp-with', 'file:compare-b.nc');
     await page.waitForFunction(() => ncurveWorkbench.compare.source === 'file');
     await compared();
