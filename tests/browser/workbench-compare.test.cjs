@@ -2,7 +2,8 @@
 //   node workbench-compare.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
 // Checks, against the programs' own coordinates: the run kept, one coordinate edited in the editor
 // lists exactly that block with its old and new end; a line inserted lists it as inserted and
-// nothing else; the other file (the server's, then the same text from this computer) lists the
+// nothing else; the other file (the server's, after Revert drops the edits above, then the same text
+// from this computer) lists the
 // blocks worked out below, those after an edited G91 increment grouped as moved by its offset; an
 // entry clicked selects its line and highlights its moves; the other run drawn grey and the view
 // fitted to it, not when hidden. Screenshots workbench-compare-1024.png, -1920.png in OUT_DIR.

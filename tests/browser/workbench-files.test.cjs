@@ -5,11 +5,14 @@
 // program (Ctrl+S not left to the browser); a file opened by the file input and one dropped onto
 // the editor are in the editor, named so in the menu and the diagnostics; New and a paste over the
 // whole text give untitled.nc, never the last program's name; a reload keeps the text, the program's
-// entry, the machine and the Settings. The Settings against the command line run in the test:
+// entry, the machine and the Settings; a server file's edits kept per file across another program
+// chosen and a reload, marked in the menu and the title, kept by Save, dropped by Revert (asked
+// first), and no edit once typed back to the file's text. The Settings against the command line run in the test:
 // --set "#100=2" completing examples/alarm.nc, --param 6050=102 and --lib macros making G102 of
 // examples/custom-cycle.nc call O9010 (and without the folder the CLI's alarm), a bad --set and
 // --param refused beside their fields in the CLI's words, a tool offset edited moving the G41 D1
-// contour by the new radius (worked out by hand). Generate: each curve's fields, defaults and units
+// contour by the new radius (worked out by hand), offset memory A's value named H length and D
+// radius in the header, NC2071 shown in the CLI's words with a button to the Settings' offsets. Generate: each curve's fields, defaults and units
 // against `ncurve gen --list`, gen's default form and tolerance, an expression's NAME=VALUE
 // parameters, gen asked with the Settings' parameters. A 40 x 30 rectangle clockwise under G41 D1 of
 // radius 5: the tool centre's sides on X-5..45, Y-5..35, the programmed contour drawn dashed through

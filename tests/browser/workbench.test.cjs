@@ -6,7 +6,8 @@
 // not refused), a move clicked landing on its line; the machine that of `ncurve run` without
 // --machine; at 1000 x 700 the axes readable in every view; Measure on a program of hand-known
 // points (ends, an arc's radius and centre, the view's plane, iso) at 1024 x 768 and 1920 x 1080;
-// axis numbers zoomed in and out; the holes of a G81 pattern; an empty editor calm. Screenshots go to
+// axis numbers zoomed in and out, no number or axis name over another (one rapid zoomed out in the
+// Iso view too); the holes of a G81 pattern; an empty editor calm. Screenshots go to
 // OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {execFileSync} = require('child_process');
