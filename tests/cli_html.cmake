@@ -21,7 +21,7 @@ file(READ ${OUT}/html_spiral.html page)
 expect_text("${page}" "<title>${SRC}/examples/spiral.nc · ncurve backplot</title>" "title")
 expect_text("${page}" "REVISION=\"111\"" "three.js embedded")
 expect_text("${page}" "\"motions\":104" "the motions encoded")
-count_text("${page}" "<script" 12 "the page's scripts")  # the two data blocks and ten scripts
+count_text("${page}" "<script" 15 "the page's scripts")  # the two data blocks and thirteen scripts
 
 # the page on standard output, the summary on the terminal
 run_expect(0 "run --html -" ${NCURVE} run ${SRC}/examples/spiral.nc --html - --json)

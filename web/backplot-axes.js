@@ -179,6 +179,23 @@
     };
     const covered = (x, y, w, h, over) => over.some((r) => x + w / 2 > r.l && x - w / 2 < r.r && y + h / 2 > r.t && y - h / 2 < r.b);
     const NUMBER_H = 14, charW = 6.6;  // a number's height and the width of a character, px (11 px tabular figures)
+    // a number's width as the page's font draws it (measured once a text), the estimate before the
+    // fonts are known
+    let measurer = null;
+    const widths = new Map();
+    const textWidth = (text) => {
+      let w = widths.get(text);
+      if (w !== undefined) return w;
+      if (!measurer) {
+        const cs = global.getComputedStyle(numberLabel(0, 0));
+        if (!cs.fontSize) return text.length * charW;
+        measurer = document.createElement('canvas').getContext('2d');
+        measurer.font = `${cs.fontStyle} ${cs.fontWeight} ${cs.fontSize} ${cs.fontFamily}`;
+      }
+      w = Math.ceil(measurer.measureText(text).width);
+      widths.set(text, w);
+      return w;
+    };
 
     // each frame (along: the camera looks along a world axis): per axis, its line across the canvas
     // (in a view along an axis, beyond the box where that is smaller than the canvas),
@@ -282,19 +299,21 @@
         const w = L.el.offsetWidth, h = L.el.offsetHeight;
         const end = R.flat || endOn ? B : at(Math.max(R.v1, Math.min(visHi, lineHi)), s - 16);
         const far = Math.abs(d[0]) * w / 2 + Math.abs(d[1]) * h / 2 + 10;
-        const [x, y] = keepClear(end[0] + d[0] * far, end[1] + d[1] * far, w, h, W, H, over);
+        const placed = shown.names.map((o) => ({l: o.x - o.w / 2 - 3, r: o.x + o.w / 2 + 3, t: o.y - o.h / 2 - 2, b: o.y + o.h / 2 + 2}));
+        const [x, y] = keepClear(end[0] + d[0] * far, end[1] + d[1] * far, w, h, W, H, over.concat(placed));
         shown.names.push({text: L.el.textContent, x, y, w, h});
         L.el.style.transform = `translate(${x.toFixed(1)}px, ${y.toFixed(1)}px) translate(-50%, -50%)`;
       }
-      // the numbers, where on the canvas and off the boxes and the names
+      // the numbers, where on the canvas and off the boxes, the names and the numbers placed before
+      // (their widths measured): one that would overlap is left out
       const clear = over.concat(shown.names.map((n) => ({l: n.x - n.w / 2 - 3, r: n.x + n.w / 2 + 3, t: n.y - n.h / 2, b: n.y + n.h / 2})));
       for (const {k, values, step, number} of pending) {
-        const pool = numberPool[k], others = clear.length;
+        const pool = numberPool[k];
         let used = 0;
         for (const v of values) {
           const [x, y] = number(v);
-          const text = formatNumber(v, step), w = text.length * charW + 2;
-          if (x < w / 2 || x > W - w / 2 || y < NUMBER_H / 2 || y > H - NUMBER_H / 2 || covered(x, y, w, NUMBER_H, clear.slice(0, others))) continue;
+          const text = formatNumber(v, step), w = textWidth(text) + 2;
+          if (x < w / 2 || x > W - w / 2 || y < NUMBER_H / 2 || y > H - NUMBER_H / 2 || covered(x, y, w, NUMBER_H, clear)) continue;
           const el = numberLabel(k, used++);
           if (el.textContent !== text) el.textContent = text;
           el.style.display = '';

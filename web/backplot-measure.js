@@ -3,7 +3,8 @@
 // end within SNAP px, else to the nearest point of a move; in a view along an axis (top, front,
 // ZX...) a click off the path takes the point of the view's plane under the pointer. The points and
 // the line between them are drawn in the scene; the readout is a panel over the view, in the place
-// of the legend (.ncurve-legend of the container), which it hides while it is on. Needs three.js.
+// of the legend (.ncurve-legend of the container), which it hides while it is on. A click looks
+// only at the segments and ends near its line of sight (backplot-snap.js). Needs three.js.
 //
 //   const m = NcurveBackplotMeasure.create({scene, container, canvas, camera, moves, geometry, where, requestRender});
 //   m.set(true); m.click(clientX, clientY); m.key(event); m.state(); m.button(); m.dispose();
@@ -93,6 +94,18 @@
       return at;
     };
 
+    // the segments and move ends near a click's line of sight (backplot-snap.js), indexed at the first click
+    let index = null, looked = 0;
+    const nearClick = (x, y, onSegment, onEnd) => {
+      if (!index) index = global.NcurveBackplotSnap.build(moves, G);
+      const from = new THREE.Vector3(x / canvas.clientWidth * 2 - 1, 1 - y / canvas.clientHeight * 2, -1).unproject(camera);
+      const dir = new THREE.Vector3();
+      camera.getWorldDirection(dir);
+      const wpp = (camera.top - camera.bottom) / camera.zoom / Math.max(canvas.clientHeight, 1);
+      looked = 0;
+      index.near(from.toArray(), dir.toArray(), SNAP * wpp * 1.01, (id) => { looked++; onSegment(id); }, (i) => { looked++; onEnd(i); });
+    };
+
     // what a click at canvas x, y lands on, or null
     const locate = (x, y) => {
       const proj = screenOf(), s = [0, 0], w = [0, 0, 0];
@@ -102,7 +115,11 @@
       const view = new THREE.Vector3();
       camera.getWorldDirection(view);
       const E = moves.end, [P0, P1, P2] = perm, O0 = origin[P0], O1 = origin[P1], O2 = origin[P2];
-      for (let i = 0, o = 0; i < n; i++, o += 3) {
+      const endCandidates = [], segCandidates = [];
+      nearClick(x, y, (id) => segCandidates.push(id), (i) => endCandidates.push(i));
+      endCandidates.sort((p, q) => p - q);  // in the path's order, as a look at every one takes them
+      for (const i of endCandidates) {
+        const o = 3 * i;
         w[0] = E[o + P0] - O0, w[1] = E[o + P1] - O1, w[2] = E[o + P2] - O2;
         proj(w[0], w[1], w[2], s);
         const d = Math.hypot(s[0] - x, s[1] - y);
@@ -115,17 +132,16 @@
       // else the nearest point of a drawn segment within SNAP px
       const sm = segMoves(), a = [0, 0], b = [0, 0];
       let hit = null, hitD = SNAP * SNAP;
-      G.layers.forEach((L, k) => {
-        const P = L.pos;
-        for (let seg = 0, v = 0; seg < L.count; seg++, v += 6) {
-          proj(P[v], P[v + 1], P[v + 2], a);
-          proj(P[v + 3], P[v + 4], P[v + 5], b);
-          const dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
-          const t = l2 > 0 ? Math.max(0, Math.min(1, ((x - a[0]) * dx + (y - a[1]) * dy) / l2)) : 0;
-          const d = (a[0] + t * dx - x) ** 2 + (a[1] + t * dy - y) ** 2;
-          if (d < hitD) hitD = d, hit = {k, seg, v, t};
-        }
-      });
+      segCandidates.sort((p, q) => p - q);  // in the path's order, as a look at every one takes them
+      for (const id of segCandidates) {
+        const [k, seg] = index.layerOf(id), P = G.layers[k].pos, v = 6 * seg;
+        proj(P[v], P[v + 1], P[v + 2], a);
+        proj(P[v + 3], P[v + 4], P[v + 5], b);
+        const dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+        const t = l2 > 0 ? Math.max(0, Math.min(1, ((x - a[0]) * dx + (y - a[1]) * dy) / l2)) : 0;
+        const d = (a[0] + t * dx - x) ** 2 + (a[1] + t * dy - y) ** 2;
+        if (d < hitD) hitD = d, hit = {k, seg, v, t};
+      }
       if (hit) {
         const i = sm[hit.k][hit.seg], arc = arcOf(i), P = G.layers[hit.k].pos, v = hit.v, t = hit.t;
         const at = arc ? onArc(arc, (hit.seg - G.first[i] + t) / G.segOf[i])
@@ -244,7 +260,8 @@
         const d = points.length === 2 ? [0, 1, 2].map((a) => points[1].at[a] - points[0].at[a]) : null;
         return {on, points: points.map((p) => ({at: p.at.slice(), snap: p.snap, move: p.move,
           arc: p.arc ? {centre: p.arc.c.slice(), radius: Math.hypot(p.at[p.arc.p] - p.arc.c[p.arc.p], p.at[p.arc.q] - p.arc.c[p.arc.q])} : null})),
-        distance: d ? Math.hypot(d[0], d[1], d[2]) : null, delta: d, text: panel.hidden ? '' : panel.innerText};
+        distance: d ? Math.hypot(d[0], d[1], d[2]) : null, delta: d, text: panel.hidden ? '' : panel.innerText,
+        looked, segments: index ? G.layers.reduce((t, L) => t + L.count, 0) : null};  // the last click's candidates, of all
       },
       dispose() { panel.remove(); },
     };

@@ -1,8 +1,8 @@
-// ncurve's 3D backplot: the moves of a run as GPU line segments (one BufferGeometry per kind of
-// move), orbit / pan / zoom, standard views, axes with ticks (backplot-axes.js), hover and click on a move. Used by
-// the page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js,
-// OrbitControls (Debian's libjs-three, release 111), backplot-geometry.js, backplot-axes.js,
-// backplot-holes.js and backplot-measure.js loaded first, backplot-part.js for setPart,
+// ncurve's 3D backplot: the moves of a run as GPU line segments (backplot-lines.js), orbit / pan /
+// zoom, standard views, axes with ticks (backplot-axes.js), hover and click on a move. Used by the
+// page of `ncurve run --html` (run.js) and meant for any other page: it needs three.js,
+// OrbitControls (Debian's libjs-three, release 111), backplot-decode.js, backplot-geometry.js,
+// backplot-lines.js, backplot-axes.js, backplot-holes.js and backplot-measure.js loaded first, backplot-part.js for setPart,
 // backplot-programmed.js for moves.programmed and backplot-cutter.js for setCutter.
 //
 //   const moves = NcurveBackplot.decode(data);        // the JSON of `run --html` (docs/html.md)
@@ -27,60 +27,9 @@
 (function (global) {
   'use strict';
   const THREE = global.THREE;
-  const KIND_NAMES = ['rapid', 'feed', 'arc'];
-  const KIND_COLORS = [[0xef, 0x6c, 0x00], [0x15, 0x65, 0xc0], [0x2e, 0x7d, 0x32]];
+  const {KIND_NAMES, KIND_COLORS} = global.NcurveBackplotLines;
   const HIGHLIGHT = 0xd81b60;
   const REFERENCE = 0x8f979f;  // setReference's curve
-
-  function bytes(b64) {
-    const bin = atob(b64 || '');
-    const out = new Uint8Array(bin.length);
-    for (let i = 0; i < bin.length; i++) out[i] = bin.charCodeAt(i);
-    return out.buffer;
-  }
-
-  // The moves from the data of `ncurve run --html` (base64 little-endian arrays).
-  function decode(d) {
-    const kind = new Uint8Array(bytes(d.kind));
-    const n = kind.length;
-    const end = new Float32Array(bytes(d.end));
-    const start = new Float32Array(3 * n);
-    const jumps = d.jumps || [];
-    let j = 0;
-    for (let i = 0; i < n; i++) {
-      if (j < jumps.length && jumps[j][0] === i) {
-        start[3 * i] = jumps[j][1], start[3 * i + 1] = jumps[j][2], start[3 * i + 2] = jumps[j][3];
-        j++;
-      } else if (i > 0) {
-        start[3 * i] = end[3 * i - 3], start[3 * i + 1] = end[3 * i - 2], start[3 * i + 2] = end[3 * i - 1];
-      }
-    }
-    const arcIndex = new Int32Array(n);
-    let a = 0;
-    for (let i = 0; i < n; i++) arcIndex[i] = kind[i] === 2 ? a++ : -1;
-    // a dog-leg rapid's corners (non-linear positioning): rapidCorners[i] = [x, y, z, ...] in order
-    const rapidCorners = new Map();
-    for (const c of d.rapid_corners || []) {
-      if (!(c[0] >= 0 && c[0] < n) || kind[c[0]] !== 0) continue;
-      if (!rapidCorners.has(c[0])) rapidCorners.set(c[0], []);
-      rapidCorners.get(c[0]).push(c[1], c[2], c[3]);
-    }
-    return {
-      count: n, kind, start, end, arcIndex, rapidCorners,
-      arcs: new Float32Array(bytes(d.arcs)),
-      feed: new Float32Array(bytes(d.feed)),
-      block: new Uint32Array(bytes(d.block)),
-      blockFile: new Uint16Array(bytes(d.block_file)),
-      blockLine: new Uint32Array(bytes(d.block_line)),
-      lathe: !!d.lathe, diameter: !!d.diameter, inch: !!d.inch, plane: d.plane || 17,
-      alarmAt: d.alarm ? d.alarm.at : null,
-      rotary: d.rotary || [],
-      rotaryEnd: new Float64Array(bytes(d.rotary_end)),
-      programmed: global.NcurveBackplotProgrammed ? global.NcurveBackplotProgrammed.decode(d) : null,
-    };
-  }
-
-
 
   function create(container, moves, options) {
     options = options || {};
@@ -89,82 +38,10 @@
     const G = global.NcurveBackplotGeometry.build(moves, options.frame);
     const {lo, hi, diag, origin, perm, toWorld, segOf, first, counts, moveCounts, total, layers} = G;
 
-    // one set of lines per kind, in the kind's colour until setColors gives each move its own
+    // the moves' lines, their colours and picking (backplot-lines.js)
     const scene = new THREE.Scene();
     scene.background = new THREE.Color(0xfcfcfd);
-    const kinds = [];  // per kind: {geometries, material, colors} or null
-    const coarseLines = [];  // [full, coarse] per kind, for big paths
-    layers.forEach((L, k) => {
-      if (!L.count) { kinds.push(null); return; }
-      const position = new THREE.BufferAttribute(L.pos, 3);
-      const g = new THREE.BufferGeometry();
-      g.setAttribute('position', position);
-      const color = new THREE.Color(`rgb(${KIND_COLORS[k].join(',')})`);
-      let m;
-      if (k === 0) {
-        g.setAttribute('lineDistance', new THREE.BufferAttribute(L.dist, 1));
-        m = new THREE.LineDashedMaterial({color, dashSize: 1, gapSize: 1});
-      } else {
-        m = new THREE.LineBasicMaterial({color});
-      }
-      const lines = new THREE.LineSegments(g, m);
-      lines.frustumCulled = false;
-      lines.name = KIND_NAMES[k];
-      scene.add(lines);
-      const kind = {geometries: [g], material: m, position, colors: null};
-      kinds.push(kind);
-      // while turning a big path on a slow GPU, and for its first frame: every step-th segment (in
-      // buffers of their own, uploaded at once); setColors copies their colours from the full ones
-      const step = Math.ceil(total / 150000);
-      if (step > 1) {
-        const kept = Math.ceil(L.count / step), cpos = new Float32Array(6 * kept), cdist = k === 0 ? new Float32Array(2 * kept) : null;
-        for (let seg = 0, o = 0; seg < L.count; seg += step, o++) {
-          cpos.set(L.pos.subarray(6 * seg, 6 * seg + 6), 6 * o);
-          if (cdist) cdist[2 * o] = L.dist[2 * seg], cdist[2 * o + 1] = L.dist[2 * seg + 1];
-        }
-        const cg = new THREE.BufferGeometry();
-        cg.setAttribute('position', new THREE.BufferAttribute(cpos, 3));
-        if (cdist) cg.setAttribute('lineDistance', new THREE.BufferAttribute(cdist, 1));
-        cg.userData = {step};
-        const coarse = new THREE.LineSegments(cg, m);
-        coarse.frustumCulled = false;
-        coarse.visible = false;
-        scene.add(coarse);
-        coarseLines.push([lines, coarse]);
-        kind.geometries.push(cg);
-      }
-    });
-    // the colour of each vertex, from the first setColors on
-    const vertexColors = (k) => {
-      const kind = kinds[k];
-      if (!kind.colors) {
-        kind.colors = new THREE.BufferAttribute(new Uint8Array(6 * counts[k]), 3, true);
-        kind.geometries[0].setAttribute('color', kind.colors);
-        const cg = kind.geometries[1];
-        if (cg) cg.setAttribute('color', kind.coarseColors = new THREE.BufferAttribute(
-          new Uint8Array(3 * cg.attributes.position.count), 3, true));
-        kind.material.vertexColors = THREE.VertexColors;
-        kind.material.color.set(0xffffff);
-        kind.material.needsUpdate = true;
-      }
-      return kind.colors;
-    };
-    // the pick scene (each move's number as its colour), made at the first pick
-    let pickScene = null;
-    const pickSceneNow = () => {
-      if (pickScene) return pickScene;
-      pickScene = new THREE.Scene();
-      kinds.forEach((kind, k) => {
-        if (!kind) return;
-        const pg = new THREE.BufferGeometry();
-        pg.setAttribute('position', kind.position);  // shared: uploaded once
-        pg.setAttribute('color', new THREE.BufferAttribute(G.pickColors(k), 3, true));
-        const pl = new THREE.LineSegments(pg, new THREE.LineBasicMaterial({vertexColors: THREE.VertexColors}));
-        pl.frustumCulled = false;
-        pickScene.add(pl);
-      });
-      return pickScene;
-    };
+    const lines = global.NcurveBackplotLines.create({scene, moves, geometry: G});
 
     let reference = null;  // setReference's line
     const programmed = global.NcurveBackplotProgrammed
@@ -330,7 +207,7 @@
     let interacting = false, coarse = false, lastRender = 0;
     const useCoarse = (on) => {
       coarse = on;
-      for (const [full, c] of coarseLines) full.visible = !on, c.visible = on;
+      lines.useCoarse(on);
     };
     controls.addEventListener('start', () => { interacting = true; lastRender = 0; });
     controls.addEventListener('end', () => {
@@ -338,15 +215,15 @@
       if (coarse) useCoarse(false), requestRender();
     });
     // a big path shows its coarse lines first, on a slow GPU long before the full ones are drawn
-    let preview = coarseLines.length > 0;
+    let preview = lines.hasCoarse;
     function render() {
       pending = false;
       const now = performance.now();
-      if (interacting && coarseLines.length && !coarse && lastRender && now - lastRender > 80) useCoarse(true);
+      if (interacting && lines.hasCoarse && !coarse && lastRender && now - lastRender > 80) useCoarse(true);
       if (preview) useCoarse(true);
       lastRender = now;
       const wpp = (camera.top - camera.bottom) / camera.zoom / Math.max(renderer.domElement.clientHeight, 1);
-      if (kinds[0]) kinds[0].material.dashSize = 6 * wpp, kinds[0].material.gapSize = 4 * wpp;
+      lines.dash(wpp);
       if (programmed) programmed.dash(wpp);
       if (part) {  // the light from over the viewer's shoulder
         const sun = partLights[1];
@@ -372,33 +249,7 @@
       requestRender();
     });
 
-    // picking: the pick scene (each move's number as its colour) rendered for a few pixels round the pointer
-    const PICK = 9;
-    const pickTarget = new THREE.WebGLRenderTarget(PICK, PICK);
-    const pickPixels = new Uint8Array(4 * PICK * PICK);
-    const pick = (clientX, clientY) => {
-      const rect = renderer.domElement.getBoundingClientRect();
-      const x = clientX - rect.left, y = clientY - rect.top;
-      if (x < 0 || y < 0 || x >= rect.width || y >= rect.height) return -1;
-      const dpr = renderer.getPixelRatio();
-      const W = Math.round(rect.width * dpr), H = Math.round(rect.height * dpr);
-      camera.setViewOffset(W, H, Math.round(x * dpr) - (PICK >> 1), Math.round(y * dpr) - (PICK >> 1), PICK, PICK);
-      renderer.setRenderTarget(pickTarget);
-      renderer.setClearColor(0x000000, 1);
-      renderer.render(pickSceneNow(), camera);
-      renderer.setRenderTarget(null);
-      camera.clearViewOffset();
-      renderer.readRenderTargetPixels(pickTarget, 0, 0, PICK, PICK, pickPixels);
-      let best = -1, bestD = Infinity;
-      for (let py = 0; py < PICK; py++) for (let px = 0; px < PICK; px++) {
-        const o = 4 * (py * PICK + px);
-        const id = pickPixels[o] | (pickPixels[o + 1] << 8) | (pickPixels[o + 2] << 16);
-        if (!id) continue;
-        const d = (px - (PICK >> 1)) ** 2 + (py - (PICK >> 1)) ** 2;
-        if (d < bestD) bestD = d, best = id - 1;
-      }
-      return best < n ? best : -1;
-    };
+    const pick = (clientX, clientY) => lines.pick(renderer, camera, clientX, clientY);
 
     let hovered = -1;
     const setHover = (i) => {
@@ -442,19 +293,7 @@
       pick,
       // colours: fn(i) -> [r, g, b] (0..255) or null for the kind's colour; no argument: by kind
       setColors(fn) {
-        const cols = kinds.map((kind, k) => (kind ? vertexColors(k) : null));
-        for (let i = 0; i < n; i++) {
-          const k = moves.kind[i], c = (fn && fn(i)) || KIND_COLORS[k], col = cols[k].array;
-          for (let v = 6 * first[i], e = 6 * (first[i] + segOf[i]); v < e; v += 3) col[v] = c[0], col[v + 1] = c[1], col[v + 2] = c[2];
-        }
-        kinds.forEach((kind) => {
-          if (!kind) return;
-          kind.colors.needsUpdate = true;
-          if (!kind.coarseColors) return;
-          const step = kind.geometries[1].userData.step, from = kind.colors.array, to = kind.coarseColors.array;
-          for (let seg = 0, o = 0; o < to.length; seg += step, o += 6) to.set(from.subarray(6 * seg, 6 * seg + 6), o);
-          kind.coarseColors.needsUpdate = true;
-        });
+        lines.setColors(fn);
         requestRender();
       },
       // a curve drawn thin and grey under the moves (a generated program's curve): points flat, X Y Z
@@ -577,12 +416,11 @@
         if (sizeWatch) sizeWatch.disconnect();
         controls.dispose();
         // free the GPU buffers and the context now, not at the next garbage collection
-        for (const s of pickScene ? [scene, pickScene] : [scene])
-          s.traverse((o) => {
-            if (o.geometry) o.geometry.dispose();
-            if (o.material) o.material.dispose();
-          });
-        pickTarget.dispose();
+        scene.traverse((o) => {
+          if (o.geometry) o.geometry.dispose();
+          if (o.material) o.material.dispose();
+        });
+        lines.dispose();
         measure.dispose();
         container.removeChild(overlay);
         if (keep) return renderer;
@@ -598,6 +436,7 @@
     return api;
   }
 
-  global.NcurveBackplot = {decode, decodePart: global.NcurveBackplotPart.decode, create, KIND_NAMES, KIND_COLORS,
-    DEVIATION_COLOURS: global.NcurveBackplotPart.DEVIATION_COLOURS, niceStep: global.NcurveBackplotAxes.niceStep};
+  global.NcurveBackplot = {decode: global.NcurveBackplotDecode.decode, decodePart: global.NcurveBackplotPart.decode, create,
+    KIND_NAMES, KIND_COLORS, DEVIATION_COLOURS: global.NcurveBackplotPart.DEVIATION_COLOURS,
+    niceStep: global.NcurveBackplotAxes.niceStep};
 })(window);

@@ -3,13 +3,19 @@
 // pasted over the whole editor named untitled.nc; and the editor's text, the program's name and the
 // machine kept in this browser (localStorage) across a reload. A program of this browser (new,
 // opened, pasted, restored) has its own entry in the Program menu, and its name is the one its
-// diagnostics give.
-//   const f = NcurveFiles.create({editor, menu, name(), load(text, name), onSave(name)});
-//   f.local(name, kind, text?), f.store(), f.restored(), f.choose() on the menu's entry
+// diagnostics give. A server file's edits are kept per file (in memory and in this browser) until
+// its text is the file's again or Revert reads the file anew: choosing it again brings them back,
+// and its menu entry and the page's title say it is edited. Save downloads a copy and leaves the
+// server's file as it is, so the mark stays.
+//   const f = NcurveFiles.create({editor, menu, name(), load(text, name), rename(n), machine()});
+//   f.local(name, kind, text?), f.store(), f.restored(), f.choose() on the menu's entry,
+//   f.opened(file, disk) -> the text to show, f.noteEdit() on each edit, f.revert()
 (function (global) {
   'use strict';
   const $ = (id) => document.getElementById(id);
   const KEY = 'ncurve-workbench-program';
+  const EDITS = 'ncurve-workbench-edits';  // {file: text} of the server's files edited
+  const same = (a, b) => a.replace(/\r\n?/g, '\n') === b.replace(/\r\n?/g, '\n');  // a textarea's line ends are \n
   const LOCAL = '\u0000local';
   const UNTITLED = 'untitled.nc';
 
@@ -17,6 +23,11 @@
   // load(text, name): the program shown, named so, run; machine(): {value, file: {name, text}}
   function create({editor, menu, name, load, rename, machine}) {
     let local = null;  // {name, kind, text}: the program of this browser
+    let edits = {};
+    try { edits = JSON.parse(localStorage.getItem(EDITS) || '{}') || {}; } catch (e) { edits = {}; }
+    const disk = {};  // file -> its text as last read from the server
+    let current = null;  // the server file in the editor, while its entry is the menu's choice
+    const serverFile = () => (current !== null && menu.value === current ? current : null);
     function entry(label) {
       let o = [...menu.options].find((x) => x.value === LOCAL);
       if (!o) { o = new Option('', LOCAL); menu.add(o, 0); }
@@ -95,6 +106,8 @@
       clearTimeout(timer);
       timer = 0;
       if (local && menu.value === LOCAL) local.text = editor.text;
+      noteEdit();
+      try { localStorage.setItem(EDITS, JSON.stringify(edits)); } catch (e) { /* over the quota: kept for this page */ }
       const m = machine();
       const state = {text: editor.text, name: name(), local: menu.value === LOCAL ? local && local.kind : null,
         menu: menu.value === LOCAL ? null : menu.value, machine: m.value, machineFile: m.file || null};
@@ -112,17 +125,85 @@
     }
     // the menu's entry of this browser's program chosen again: its text back
     function choose() {
-      return local ? load(local.text, local.name) : Promise.resolve();
+      const done = local ? load(local.text, local.name) : Promise.resolve();
+      mark();
+      return done;
     }
     // a restored program: its server file's entry when it was one (its text as edited), else its own
-    function restore(saved, serverNames) {
+    function restore(saved, serverNames, open) {
       if (!saved.local && serverNames.includes(saved.menu)) {
+        // its edits are kept per file; a text kept before they were is taken as its edit
+        if (edits[saved.menu] === undefined) edits[saved.menu] = saved.text;
         menu.value = saved.menu;
-        return load(saved.text, saved.name);
+        return open(saved.menu);
       }
       return useLocal(saved.name || UNTITLED, saved.local || 'restored', saved.text);
     }
-    return {useLocal, store, storeSoon, restored, restore, choose, save, LOCAL, UNTITLED,
+    // ---- the program opened first ----
+    // the first program given, unless its opening comments ask for another machine than `machine`
+    // (a `--machine NAME` as the examples' RUN lines write it): then the machine's shipped example
+    // when the server has it (the program the README tours), else the next that asks for none
+    async function first(programs, exampleName, machine) {
+      const head = async (f) => {
+        const r = await fetch('/api/files/' + encodeURIComponent(f));
+        return r.ok ? (await r.text()).split('\n').slice(0, 12).join('\n') : '';
+      };
+      const other = (text) => {
+        const m = /\(.*--machine[ =]+(?:\S*\/)?([\w.-]+?)(?:\.toml)?[\s)]/i.exec(text);
+        return m && m[1] !== machine;
+      };
+      if (!programs.length || !other(await head(programs[0]))) return programs[0] || '';
+      if (programs.includes(exampleName)) return exampleName;
+      for (const f of programs.slice(1)) if (!other(await head(f))) return f;
+      return programs[0];
+    }
+
+    // ---- a server file's edits: kept per file, marked, reverted ----
+    // a server file read from disk: its edits if it has some (dropped when the file now holds them)
+    function opened(file, text) {
+      disk[file] = text;
+      current = file;
+      const kept = edits[file];
+      if (kept !== undefined && same(kept, text)) delete edits[file];
+      mark();
+      return edits[file] !== undefined ? edits[file] : text;
+    }
+    // the editor's text against its file's on disk: an edit kept, or none when they are the same again
+    function noteEdit() {
+      const f = serverFile();
+      if (f !== null && disk[f] !== undefined) {
+        if (same(editor.text, disk[f])) delete edits[f];
+        else edits[f] = editor.text;
+      }
+      mark();
+    }
+    // the menu's entries of the files edited, the Revert button and the page's title
+    function mark() {
+      for (const o of menu.options) {
+        if (o.value === LOCAL || o.value.startsWith('\u0000') || !o.value) continue;
+        o.text = o.value + (edits[o.value] !== undefined ? ' (edited)' : '');
+      }
+      const f = serverFile(), edited = f !== null && edits[f] !== undefined;
+      $('revert').disabled = !edited;
+      $('revert').title = edited ? `read ${f} again from the server, the edits dropped` : 'the program is as its file on the server';
+      document.title = `${edited ? '\u25cf ' : ''}${name() || UNTITLED}${edited ? ' (edited)' : ''} \u00b7 ncurve workbench`;
+      global.ncurveWorkbench.edited = Object.keys(edits);
+    }
+    // Revert: the file read again from the server, its edits dropped (asked first)
+    async function revert() {
+      const f = serverFile();
+      if (f === null || edits[f] === undefined) return;
+      if (!global.confirm(`Revert ${f} to the file on the server? The edits made here are lost.`)) return;
+      const r = await fetch('/api/files/' + encodeURIComponent(f));
+      if (!r.ok) { global.ncurveWorkbench.error = `revert: ${r.status}`; return; }
+      delete edits[f];
+      const text = await r.text();
+      await load(opened(f, text), f);
+      store();
+    }
+    $('revert').onclick = revert;
+
+    return {useLocal, store, storeSoon, restored, restore, choose, save, first, opened, noteEdit, mark, revert, LOCAL, UNTITLED,
       get local() { return local; }};
   }
 

@@ -168,6 +168,15 @@
       return {param: param.length ? param : undefined, set: set.length ? set : undefined, lib: chosenLibs(),
         max_steps: state.steps.trim() ? num(state.steps) : undefined, tool_offsets: offsetsRequest()};
     }
+    // an offset's edited fields as the note says them: offset memory A and B hold one value an
+    // offset number, used as H's length and as D's radius alike, and the note says so
+    function offsetWords(fields) {
+      const words = Object.keys(fields).map((f) => `${f} ${fields[f]}`).join(' ');
+      if (profile.lathe || kind() === 'C') return words;
+      const one = fields.length === undefined ? '' : `${fields.length} (H length and D radius)`;
+      const wear = fields.length_wear === undefined ? '' : `wear ${fields.length_wear}`;
+      return [one, wear].filter(Boolean).join(', ');
+    }
     // the command line's options the page runs with (what a plain `ncurve run` does not)
     function inForce() {
       const words = [];
@@ -175,7 +184,7 @@
       for (const s of lines(state.set, 'set')) words.push(`--set "${s}"`);
       for (const l of chosenLibs()) words.push(`--lib ${l}`);
       if (state.steps.trim()) words.push(`--max-steps ${state.steps.trim()}`);
-      const ed = edits(), o = Object.keys(ed).map((n) => `${profile.lathe ? '' : 'No.'}${n} ${Object.keys(ed[n]).map((f) => `${f} ${ed[n][f]}`).join(' ')}`);
+      const ed = edits(), o = Object.keys(ed).map((n) => `${profile.lathe ? '' : 'No.'}${n} ${offsetWords(ed[n])}`);
       if (o.length) words.push(`tool offsets: ${o.join(', ')}`);
       return words;
     }

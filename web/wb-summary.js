@@ -39,7 +39,7 @@
       fact('part', v.verified ? `${fmt(v.volume_removed_mm3, 1)} mm³ removed from the ${v.stock_default ? 'box round the cuts' : 'setup\'s stock'}` +
         ` · ${n} finding${n === 1 ? '' : 's'} (listed under the editor)` + (v.setup ? ` · ${v.setup}` : '') : `not cut: ${v.refused}`);
     }
-    fact('warnings', s.warnings.length ? s.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}`).join('\n') : 'none');
+    fact('warnings', s.warnings.length ? s.warnings.map((w) => `${w.code} line ${w.line}: ${w.message}${global.NcurveDiagnostics.pointer(w)}`).join('\n') : 'none');
     if (!answer.moves.complete) fact('moves', answer.moves.message, 'alarm');
   }
 

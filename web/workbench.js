@@ -18,7 +18,7 @@
   let tab = 'summary', name = 'program.nc', dirtyAnalysis = true;
 
   const editor = W.editor = NcurveEditor.create($('editor'), {
-    onChange() { schedule(); dirtyAnalysis = true; files.storeSoon(); },
+    onChange() { schedule(); dirtyAnalysis = true; files.noteEdit(); files.storeSoon(); },
     onCursorLine(line) { showLineMoves(line); },
     onGutterClick(line) {
       if (breakpoints.has(line)) breakpoints.delete(line); else breakpoints.add(line);
@@ -158,7 +158,7 @@
     const t2 = performance.now();
     drawPlot();
     const t3 = performance.now();  // drawn at the next frame
-    editor.setDiagnostics(answer.diagnostics);
+    editor.setDiagnostics(answer.diagnostics.map((d) => Object.assign({}, d, {message: d.message + NcurveDiagnostics.pointer(d)})));
     showDiagnostics();
     showSummary();
     if (!traceToCome) setupTrace();
@@ -297,32 +297,9 @@
     plot.highlight(list);
   }
 
-  function showDiagnostics() {
-    const box = $('diags');
-    box.textContent = '';
-    // in the order of the text (the program's file first), the alarm (the answer's last) marked
-    const alarm = answer.summary && answer.summary.alarm ? answer.diagnostics[answer.diagnostics.length - 1] : null;
-    const order = (d) => [d.file && d.file !== name ? 1 : 0, d.file || '', d.line || 0, d.column || 0];
-    const before = (a, b) => {
-      const x = order(a), y = order(b);
-      for (let k = 0; k < x.length; k++) if (x[k] !== y[k]) return x[k] < y[k] ? -1 : 1;
-      return 0;
-    };
-    for (const d of [...answer.diagnostics].sort(before)) {
-      const li = el('li', d.severity + (d === alarm ? ' alarm' : ''));
-      li.append(el('span', 'where', `${d.file || ''}:${d.line}:${d.column || 1}`), el('strong', '', d.code),
-        document.createTextNode(' ' + d.message));
-      // a finding of the part: its place marked on the part too
-      const v = answer.summary && answer.summary.verify;
-      const found = v && v.findings && v.findings.find((f) => f.code === d.code && f.line === d.line && f.file === d.file);
-      li.onclick = () => {
-        if (!d.file || d.file === name) editor.selectLine(d.line);
-        if (found) plot.setTool(found.at), W.findingShown = found.at;
-      };
-      box.append(li);
-    }
-    box.hidden = !answer.diagnostics.length;
-  }
+  // the diagnostics under the editor (wb-diags.js)
+  const showDiagnostics = () => NcurveDiagnostics.show($('diags'), {answer, name, onLine: (line) => editor.selectLine(line),
+    onFinding(at) { plot.setTool(at); W.findingShown = at; }, onSettings: () => setTab('settings')});
   const showSummary = () => NcurveSummary.show($('summary'), answer, conv);
 
   // ---- the debugger ----
@@ -475,6 +452,7 @@
     name = GENERATED;
     editor.setText(genRef.text);
     genRef.text = editor.text;
+    files.mark();
   }
 
   // ---- colour: by kind, by the feed reached or by the deviation from the generated curve (wb-colour.js) ----
@@ -539,7 +517,10 @@
     const r = await fetch(fileName ? '/api/files/' + encodeURIComponent(fileName) : example.url);
     const text = await r.text();
     if (my !== loads) return;
-    await load(text, fileName || example.name);
+    // a server file's edits kept in this browser come back (wb-files.js)
+    const done = load(fileName ? files.opened(fileName, text) : text, fileName || example.name);
+    files.mark();
+    await done;
     files.store();
   }
   // a program into the editor, named so (in the diagnostics), and run
@@ -588,8 +569,12 @@
       const programs = fileNames.filter((n) => !n.endsWith('.setup.toml'));
       compare.setPrograms(programs);
       if (!programs.length) $('file').add(new Option(`${example.name} (example)`, ''));
-      if (saved && typeof saved.text === 'string') await files.restore(saved, programs.length ? programs : ['']);
-      else await open(programs.length ? programs[0] : '');
+      if (saved && typeof saved.text === 'string') await files.restore(saved, programs.length ? programs : [''], open);
+      else {  // the first program given, or one for this machine (wb-files.js), chosen in the menu
+        const f = await files.first(programs, example.name, $('machine').value);
+        if (f) $('file').value = f;
+        await open(f);
+      }
     } catch (e) {
       W.error = String(e);
       status(`cannot start: ${e.message}`, 'alarm');

@@ -185,6 +185,8 @@ private:
   double minutes_per_rev(double r0, double r1) const;
   void warn_spindle_limit(double rpm, std::uint16_t column);  // NC2090 (feed_time.cpp)
   void check_css_spindle_limit(const Move& m);
+  void check_centre_line(const Move& m);  // NC2077: a lathe's feed beyond X0 (centre_line.cpp)
+  bool beyond_centre_ = false;            // the last feed went beyond X0: warned already
   double feed_seconds(double length, double r0, double r1) const;
   double arc_feed_seconds(const Move& m, double planar) const;
   void clamp_cutting_feed(Move& m, double fed) {  // NC2073: over the maximum cutting feed (feed_time.cpp)

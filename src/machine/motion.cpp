@@ -125,6 +125,7 @@ void Executor::emit(Move& m) {
   }
   if (modal_.css && speed_ > 0 && (m.kind == MoveKind::line || m.kind == MoveKind::arc)) [[unlikely]]
     check_css_spindle_limit(m);
+  if (profile_.lathe() && !developed_ && (m.kind == MoveKind::line || m.kind == MoveKind::arc)) check_centre_line(m);
   path_corner_.on_move(m);
 }
 

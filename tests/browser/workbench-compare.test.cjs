@@ -2,7 +2,8 @@
 //   node workbench-compare.test.cjs NCURVE SOURCE_DIR OUT_DIR NODE_MODULES
 // Checks, against the programs' own coordinates: the run kept, one coordinate edited in the editor
 // lists exactly that block with its old and new end; a line inserted lists it as inserted and
-// nothing else; the other file (the server's, then the same text from this computer) lists the
+// nothing else; the other file (the server's, after Revert drops the edits above, then the same text
+// from this computer) lists the
 // blocks worked out below, those after an edited G91 increment grouped as moved by its offset; an
 // entry clicked selects its line and highlights its moves; the other run drawn grey and the view
 // fitted to it, not when hidden. Screenshots workbench-compare-1024.png, -1920.png in OUT_DIR.
@@ -92,8 +93,11 @@ fs.writeFileSync(path.join(dir, 'compare-b.nc'), B.join('\n'));
       c.entries[0].now === 7 && c.entries[0].what === 'line to X32.000 Y10.000 Z-1.000',
       `a line inserted: listed as inserted at line 7, nothing else (${JSON.stringify(c.entries)})`);
 
-    // 3. A from the server against compare-b.nc, run as the editor's program is
-    await page.evaluate(() => ncurveWorkbench.open('compare-a.nc'));
+    // 3. A from the server against compare-b.nc, run as the editor's program is (Revert: the edits
+    // above dropped, the file read again)
+    page.once('dialog', (d) => d.accept());
+    await page.click('#revert');
+    await page.waitForFunction(() => !ncurveWorkbench.edited.includes('compare-a.nc') && ncurveWorkbench.settled());
     await page.selectOption('#cmp-with', 'file:compare-b.nc');
     await page.waitForFunction(() => ncurveWorkbench.compare.source === 'file');
     await compared();

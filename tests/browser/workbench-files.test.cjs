@@ -5,11 +5,14 @@
 // program (Ctrl+S not left to the browser); a file opened by the file input and one dropped onto
 // the editor are in the editor, named so in the menu and the diagnostics; New and a paste over the
 // whole text give untitled.nc, never the last program's name; a reload keeps the text, the program's
-// entry, the machine and the Settings. The Settings against the command line run in the test:
+// entry, the machine and the Settings; a server file's edits kept per file across another program
+// chosen and a reload, marked in the menu and the title, kept by Save, dropped by Revert (asked
+// first), and no edit once typed back to the file's text. The Settings against the command line run in the test:
 // --set "#100=2" completing examples/alarm.nc, --param 6050=102 and --lib macros making G102 of
 // examples/custom-cycle.nc call O9010 (and without the folder the CLI's alarm), a bad --set and
 // --param refused beside their fields in the CLI's words, a tool offset edited moving the G41 D1
-// contour by the new radius (worked out by hand). Generate: each curve's fields, defaults and units
+// contour by the new radius (worked out by hand), offset memory A's value named H length and D
+// radius in the header, NC2071 shown in the CLI's words with a button to the Settings' offsets. Generate: each curve's fields, defaults and units
 // against `ncurve gen --list`, gen's default form and tolerance, an expression's NAME=VALUE
 // parameters, gen asked with the Settings' parameters. A 40 x 30 rectangle clockwise under G41 D1 of
 // radius 5: the tool centre's sides on X-5..45, Y-5..35, the programmed contour drawn dashed through
@@ -114,6 +117,7 @@ function genList() {
     check(dl.suggestedFilename() === 'spiral.nc' && bytes === w.text && bytes.endsWith('(EDITED)\n'),
           `Ctrl+S: spiral.nc, the edited text (${bytes.length} bytes)`);
     check(prevented.length === 1 && prevented[0] === true, `Ctrl+S kept from the browser (default prevented: ${prevented})`);
+    check(w.menu === 'spiral.nc (edited)', `edited, saved as a download: still marked (${w.menu})`);
 
     // ---- open a file of this computer: by the file input, by a drop onto the editor ----
     const mine = 'G90 G01 X10. F100.\n#1=[1+\nM30\n';
@@ -189,7 +193,54 @@ function genList() {
     await page.reload();
     await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1 && ncurveWorkbench.settled());
     w = await W();
-    check(w.text === 'G00 X1. Y2.\nM30\n' && w.menu === 'spiral.nc' && w.name === 'spiral.nc', `reloaded: spiral.nc as edited (${w.menu})`);
+    check(w.text === 'G00 X1. Y2.\nM30\n' && w.menu === 'spiral.nc (edited)' && w.name === 'spiral.nc', `reloaded: spiral.nc as edited (${w.menu})`);
+
+    // ---- a server file's edits kept per file: another program and back, a reload, Save, Revert ----
+    const disk = (f) => fs.readFileSync(example(f), 'utf8');
+    const marks = () => page.evaluate(() => ({title: document.title, revert: !document.getElementById('revert').disabled,
+      entries: [...document.getElementById('file').options].map((o) => o.text)}));
+    let m = await marks();
+    check(m.title.startsWith('\u25cf spiral.nc (edited)') && m.revert, `the edit marked in the title and Revert offered: "${m.title}"`);
+    await choose('alarm.nc');
+    w = await W();
+    m = await marks();
+    check(w.text === disk('alarm.nc') && w.menu === 'alarm.nc' && !m.title.startsWith('\u25cf') && !m.revert &&
+          m.entries.includes('spiral.nc (edited)'), `alarm.nc from disk, unmarked; the menu: ${m.entries.join(', ')}`);
+    await choose('spiral.nc');
+    w = await W();
+    check(w.text === 'G00 X1. Y2.\nM30\n' && w.menu === 'spiral.nc (edited)', `spiral.nc chosen again: the edit is there (${w.menu})`);
+    // alarm.nc edited too, the page reloaded on it: each file's edit under its own entry
+    await choose('alarm.nc');
+    await typeAll(disk('alarm.nc') + '(MINE)\n');
+    await page.reload();
+    await page.waitForFunction(() => window.ncurveWorkbench && window.ncurveWorkbench.runs >= 1 && ncurveWorkbench.settled());
+    w = await W();
+    m = await marks();
+    check(w.text === disk('alarm.nc') + '(MINE)\n' && w.menu === 'alarm.nc (edited)' && m.entries.includes('spiral.nc (edited)'),
+          `reloaded on alarm.nc: its edit, and spiral.nc's kept (${m.entries.join(', ')})`);
+    await choose('spiral.nc');
+    check((await W()).text === 'G00 X1. Y2.\nM30\n', 'and spiral.nc chosen after the reload: its edit');
+    // Save downloads a copy and leaves the server's file as it is: the mark stays
+    [dl] = await Promise.all([page.waitForEvent('download'), page.click('#save')]);
+    check(fs.readFileSync(await dl.path(), 'utf8') === 'G00 X1. Y2.\nM30\n' && (await W()).menu === 'spiral.nc (edited)',
+          'Save: the edited text downloaded, still marked edited');
+    // Revert asks first: refused, nothing changes; accepted, the file as on disk and no mark
+    page.once('dialog', (d) => d.dismiss());
+    await page.click('#revert');
+    await page.waitForTimeout(300);
+    check((await W()).text === 'G00 X1. Y2.\nM30\n', 'Revert refused at its question: the edit stays');
+    page.once('dialog', (d) => d.accept());
+    n = await runs();
+    await page.click('#revert');
+    await ran(n);
+    w = await W();
+    m = await marks();
+    check(w.text === disk('spiral.nc') && w.menu === 'spiral.nc' && !m.revert && !m.title.startsWith('\u25cf') &&
+          m.entries.includes('alarm.nc (edited)'), `Revert: spiral.nc as on disk, unmarked (${m.entries.join(', ')})`);
+    // an edit typed back to the file's text is no edit
+    await choose('alarm.nc');
+    await typeAll(disk('alarm.nc'));
+    check((await W()).menu === 'alarm.nc' && !(await marks()).revert, 'alarm.nc typed back to its file: unmarked');
     n = await runs();
     await page.selectOption('#machine', '');
     await ran(n);
@@ -306,7 +357,23 @@ function genList() {
             `D1 = ${r}: the bottom ends at ${JSON.stringify(b)}, the top at ${JSON.stringify(t)} (by hand ${40 - r},${r} and ${r},${20 - r})`);
     }
     w = await W();
-    check(/tool offsets: No\.1 length 3/.test(w.note), `the offset in force, in the header: ${w.note}`);
+    // offset memory A: the one value of No.1 is the D radius this contour is cut by, and the H length
+    check(/tool offsets: No\.1 3 \(H length and D radius\)/.test(w.note), `the offset in force, in the header: ${w.note}`);
+    // NC2071, a D the profile does not hold: the command line's message as it is, and beside it the
+    // page's way to the offsets, which opens the Settings tab
+    const noOffset = 'G90 G17 G00 X0 Y0 Z5.\nG01 Z-1. F100.\nG41 D7 G01 X10. Y0\nX20.\nG40 G00 X30.\nM30\n';
+    fs.writeFileSync(path.join(out, 'no-offset.nc'), noOffset);
+    const cliWarning = cli(path.join(out, 'no-offset.nc'), []).warnings.find((x) => x.code === 'NC2071');
+    await typeAll(noOffset);
+    await page.click('button[data-tab="summary"]');
+    const row = await page.evaluate(() => {
+      const li = [...document.querySelectorAll('#diags li')].find((l) => l.querySelector('strong').textContent === 'NC2071');
+      return li ? {text: li.textContent, go: li.querySelector('button') ? li.querySelector('button').textContent : ''} : null;
+    });
+    check(cliWarning && row && row.text.includes(' ' + cliWarning.message + ' ') && row.go === 'Settings: Tool offsets',
+          `NC2071: the CLI's message and the page's pointer (${row && row.text})`);
+    await page.click('#diags li button');
+    check(await page.evaluate(() => !document.getElementById('tab-settings').hidden), 'its pointer opens the Settings tab');
 
     // ---- the programmed contour and the tool at the step: a 40 x 30 rectangle clockwise under G41 D1,
     // radius 5 (the cutter on the left of its way: outside, its centre on X-5..45, Y-5..35; the last

@@ -6,7 +6,8 @@
 // not refused), a move clicked landing on its line; the machine that of `ncurve run` without
 // --machine; at 1000 x 700 the axes readable in every view; Measure on a program of hand-known
 // points (ends, an arc's radius and centre, the view's plane, iso) at 1024 x 768 and 1920 x 1080;
-// axis numbers zoomed in and out; the holes of a G81 pattern; an empty editor calm. Screenshots go to
+// axis numbers zoomed in and out, no number or axis name over another (one rapid zoomed out in the
+// Iso view too); the holes of a G81 pattern; an empty editor calm. Screenshots go to
 // OUT_DIR. Exit 77 (skipped) where no Chromium is installed.
 'use strict';
 const {execFileSync} = require('child_process');
@@ -162,6 +163,17 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     // name shown whole on the canvas, clear of the buttons and the legend
     await page.setViewportSize({width: 1000, height: 700});
     await page.waitForTimeout(200);
+    // the numbers and axis names shown whose boxes on the page overlap another's, in pairs
+    const labelsOverlapping = () => page.evaluate(() => {
+      const rs = [...document.querySelectorAll('#plot .ncurve-label.tick, #plot .ncurve-label.axis-name')]
+        .filter((e) => e.style.display !== 'none' && e.offsetWidth).map((e) => ({t: e.textContent, r: e.getBoundingClientRect()}));
+      const bad = [];
+      for (let i = 0; i < rs.length; i++) for (let j = i + 1; j < rs.length; j++) {
+        const a = rs[i].r, b = rs[j].r;
+        if (a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom) bad.push(`${rs[i].t} / ${rs[j].t}`);
+      }
+      return bad;
+    });
     const axesLook = async (what) => {
       for (const view of await page.evaluate(() => ncurveWorkbench.plot.views)) {
         const a = await page.evaluate((v) => {
@@ -183,6 +195,8 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
         check(a.fits && marks >= 8 && numbers >= 48 && a.axes.names.length >= 2 && bad.length === 0,
               `${what}, ${view}: marks ${marks.toFixed(0)} px apart, numbers ${numbers.toFixed(0)} px, names ${a.axes.names.map((n) => n.text).join(' · ')}` +
               (bad.length ? `; cut or covered: ${JSON.stringify(bad)} (canvas ${a.W} x ${a.H}, boxes ${JSON.stringify(a.boxes)})` : ''));
+        const overlapping = await labelsOverlapping();
+        check(overlapping.length === 0, `${what}, ${view}: no number or axis name over another (${overlapping.join(', ')})`);
       }
     };
     let before = await page.evaluate(() => ncurveWorkbench.runs);
@@ -295,6 +309,10 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
               `${what}: ${axis.toUpperCase()} numbered ${list.map((e) => e.v).join(' ')} (step ${step}), inside the canvas, each at its value (${Math.max(...list.map((e) => e.off)).toFixed(1)} px off)`);
       }
     };
+    const labelsClear = async (what) => {
+      const overlapping = await labelsOverlapping();
+      check(overlapping.length === 0, `${what}: no number or axis name over another (${overlapping.join(', ')})`);
+    };
     await page.evaluate(() => { ncurveWorkbench.plot.setView('top'); ncurveWorkbench.plot.render(); });
     const over = await page.evaluate((m) => ncurveWorkbench.plot.screenOfPoint(m), mid);
     await page.mouse.move(over.x, over.y);
@@ -303,13 +321,27 @@ const summary = JSON.parse(execFileSync(ncurve, ['run', spiral, '--json'], {enco
     for (let i = 0; i < 10; i++) await page.mouse.wheel(0, -100);
     await page.waitForFunction((z) => ncurveWorkbench.plot.state().camera.zoom > z * 6, z0);
     numbersOk(await axisNumbers(), 'zoomed in 10 notches');
+    await labelsClear('zoomed in 10 notches');
     await page.screenshot({path: path.join(out, 'workbench-zoomed-in.png')});
     await page.evaluate(() => { ncurveWorkbench.plot.setView('top'); ncurveWorkbench.plot.render(); });
     z0 = await zoom();
     for (let i = 0; i < 10; i++) await page.mouse.wheel(0, 100);
     await page.waitForFunction((z) => ncurveWorkbench.plot.state().camera.zoom < z / 6, z0);
     numbersOk(await axisNumbers(), 'zoomed out 10 notches');
+    await labelsClear('zoomed out 10 notches');
     await page.screenshot({path: path.join(out, 'workbench-zoomed-out.png')});
+    // one rapid, from the home X250 Y200 Z400 to X54 Z2, in the Iso view zoomed out 12 notches: its
+    // axes a few px long, their names side by side, none over another
+    before = await page.evaluate(() => ncurveWorkbench.runs);
+    await page.fill('.wb-input', 'G00 X54. Z2.\nM30\n');
+    await page.waitForFunction((n) => ncurveWorkbench.runs > n && ncurveWorkbench.settled(), before);
+    await page.evaluate(() => { ncurveWorkbench.plot.setView('iso'); ncurveWorkbench.plot.render(); });
+    const off = await page.evaluate(() => { const r = ncurveWorkbench.plot.renderer.domElement.getBoundingClientRect(); return {x: r.left + r.width * 0.37, y: r.top + r.height * 0.41}; });
+    await page.mouse.move(off.x, off.y);
+    for (let i = 0; i < 12; i++) await page.mouse.wheel(0, 100);
+    await page.waitForTimeout(100);
+    await labelsClear('one rapid, Iso, zoomed out 12 notches');
+    await page.screenshot({path: path.join(out, 'workbench-axes-names.png')});
 
     // holes: G81 at X10 Y10, X20 Y10, X30 Y10, then G91 X10 K3 on from there: X40, X50, X60 (Y10),
     // R-8 from the initial Z10 and Z-7 from there keeping point R at Z2; the pocket's entry (a plunge,

@@ -104,7 +104,7 @@ TEST(HtmlPage, EmbedsThreeJsAndTheScripts) {
   EXPECT_NE(web::asset("backplot.js").find("NcurveBackplot"), std::string_view::npos);
   EXPECT_TRUE(web::asset("nothing.js").empty());
   const Page p = page("G00 X10 Y0\nG01 X20 F100\nM30\n");
-  for (const char* name : {"three.min.js", "OrbitControls.js", "backplot-geometry.js", "backplot-axes.js", "backplot-holes.js", "backplot-measure.js", "backplot-part.js", "backplot-programmed.js", "backplot.js",
+  for (const char* name : {"three.min.js", "OrbitControls.js", "backplot-decode.js", "backplot-geometry.js", "backplot-lines.js", "backplot-axes.js", "backplot-holes.js", "backplot-snap.js", "backplot-measure.js", "backplot-part.js", "backplot-programmed.js", "backplot.js",
                            "run.js", "backplot.css"})
     EXPECT_NE(p.html.find(web::asset(name)), std::string::npos) << name;
   // offline: no address to load anything from
@@ -182,9 +182,9 @@ TEST(HtmlPage, HostileCommentStaysText) {
   const std::string hostile = "(</script><script>alert(1)</script>)";
   const Page p = page("G00 X1 Y1\nG00 X2 " + hostile + "\nM30\n");
   EXPECT_EQ(p.ran.alarm_code(), "PS0009");
-  // the page's own twelve scripts (two data blocks, ten programs), and no other
-  EXPECT_EQ(count(p.html, "<script"), 12u);
-  EXPECT_EQ(count(p.html, "</script"), 12u);
+  // the page's own fifteen scripts (two data blocks, thirteen programs), and no other
+  EXPECT_EQ(count(p.html, "<script"), 15u);
+  EXPECT_EQ(count(p.html, "</script"), 15u);
   EXPECT_EQ(p.html.find("<script>alert"), std::string::npos);
   // the text itself is there, escaped, and reads back unchanged
   EXPECT_EQ(p.data["alarm"]["block"], "G00 X2 " + hostile);
