@@ -16,6 +16,9 @@ namespace {
 // Below this much under X0 (a radius: half the least input increment of a diameter) the tool is
 // beyond the centre; nearer is X0 written by a computation's rounding.
 constexpr double kBeyond = 0.0005;
+// A facing cut's overshoot past the centre, as a radius, that is not warned (X-2. on a diameter); a
+// larger nose radius allows its own.
+constexpr double kFacingOvershoot = 1.0;
 
 // The lowest X a move reaches: a line's lower end, an arc's lowest point when its sweep passes the
 // angle where X is least (X one of the plane's axes), else its lower end.
@@ -46,15 +49,20 @@ void Executor::check_centre_line(const Move& m) {
     beyond_centre_ = false;
     return;
   }
+  if (low >= -std::max(kFacingOvershoot, nose_radius()) - kBeyond) {
+    beyond_centre_ = false;
+    return;
+  }
   if (beyond_centre_) return;
   beyond_centre_ = true;
   const bool dia = profile_.diameter_x;
   std::uint16_t column = has('X') ? word('X').column : has('U') ? word('U').column : 0;
-  const double shown = std::round((dia ? 2 * low : low) * 1000) / 1000;  // as a program writes it
+  const double places = modal_.inch ? 10000 : 1000;  // as a program writes it, in its units
+  const double shown = std::round((dia ? 2 * low : low) / (modal_.inch ? 25.4 : 1.0) * places) / places;
   warn("NC2077", fmt::format("the feed goes to X{:g}{}, beyond the spindle centre line (X0): a turning tool cuts on "
                              "its own side of the centre, so the far side is almost always a wrong sign of X or a "
                              "wrong centre of an arc or a curve (the control gives no alarm); a facing cut ends at X0, "
-                             "or a little past it on purpose where a nose radius would leave a pip",
+                             "or past it by no more than the nose radius or 1 mm, which is not warned",
                              shown, dia ? " (a diameter)" : ""),
        column);
 }
