@@ -1,11 +1,21 @@
 #include "nc/plain_line.hpp"
 
+#include <array>
+
 #include "nc/text.hpp"
 
 namespace ncurve::nc::text {
 
 namespace {
-constexpr bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+enum : std::uint8_t { kBlank = 1, kLetter = 2 };
+constexpr std::array<std::uint8_t, 256> kClass = [] {
+  std::array<std::uint8_t, 256> c{};
+  c[' '] = c['\t'] = c['\r'] = kBlank;
+  for (int k = 0; k < 26; ++k) c['A' + k] = c['a' + k] = kLetter;
+  return c;
+}();
+constexpr bool blank(char c) { return kClass[static_cast<unsigned char>(c)] & kBlank; }
+constexpr bool letter(char c) { return kClass[static_cast<unsigned char>(c)] & kLetter; }
 constexpr unsigned digit(char c) { return static_cast<unsigned>(c - '0'); }  // < 10 for a digit
 // A letter's index 0..25 (either case); 26 or more for anything else.
 constexpr unsigned letter_index(char c) { return static_cast<unsigned>((c | 0x20) - 'a'); }
@@ -16,6 +26,18 @@ inline int read_digits(const char*& p, std::uint64_t& m) {
   for (; digit(*p) < 10; ++p) m = m * 10 + digit(*p);  // wraps past 19 digits, then unused
   return static_cast<int>(p - first);
 }
+
+// A number's digits and point, one character at a time.
+inline void read_number(const char*& p, std::uint64_t& mantissa, int& digits, int& fraction) {
+  digits = read_digits(p, mantissa);
+  fraction = -1;
+  if (*p == '.') {
+    ++p;
+    fraction = read_digits(p, mantissa);
+    digits += fraction;
+  }
+}
+
 }  // namespace
 
 const char* plain_nc_line(const char* begin, std::uint32_t line, Program& prog, int max_digits) {
@@ -27,7 +49,7 @@ const char* plain_nc_line(const char* begin, std::uint32_t line, Program& prog, 
   if ((*p | 0x20) == 'n') {
     std::uint64_t n = 0;
     const int digits = read_digits(++p, n);
-    if (digits == 0 || digits > 8 || (!blank(*p) && letter_index(*p) >= 26)) return nullptr;
+    if (digits == 0 || digits > 8 || (!blank(*p) && !letter(*p))) return nullptr;
     sequence = static_cast<std::int32_t>(n);
     while (blank(*p)) ++p;
     if (*p == '\n') return nullptr;  // N alone: the general scanner's empty block
@@ -35,6 +57,7 @@ const char* plain_nc_line(const char* begin, std::uint32_t line, Program& prog, 
   const std::uint16_t first_col = static_cast<std::uint16_t>(p - begin + 1);  // the first word's
   constexpr std::uint32_t kMotionLetters = 1u << ('G' - 'A') | 1u << ('X' - 'A') | 1u << ('Y' - 'A') |
                                            1u << ('Z' - 'A') | 1u << ('F' - 'A');
+  constexpr std::uint32_t kNotHere = 1u << ('N' - 'A') | 1u << ('O' - 'A');  // the general scanner's
   std::uint32_t letters = 0, twice = 0;
   bool g_plain = true;  // no G word, or G00 / G01
   bool g_word = false;
@@ -45,32 +68,28 @@ const char* plain_nc_line(const char* begin, std::uint32_t line, Program& prog, 
   };
   while (*p != '\n') {
     const unsigned k = letter_index(*p);
-    if (k >= 26 || k == 'O' - 'A' || k == 'N' - 'A') return give_up();  // O, N or the general scanner's
-    Word& w = prog.words.emplace_back();
-    w.letter = static_cast<char>('A' + k);
-    w.column = static_cast<std::uint16_t>(p - begin + 1);
+    if (!letter(*p) || (kNotHere >> k & 1u)) return give_up();
+    const std::uint16_t column = static_cast<std::uint16_t>(p - begin + 1);
     ++p;
     while (blank(*p)) ++p;
     const bool negative = *p == '-';
     p += negative || *p == '+';
     std::uint64_t mantissa = 0;
-    int digits = read_digits(p, mantissa);
-    int fraction = -1;
-    if (*p == '.') {
-      ++p;
-      fraction = read_digits(p, mantissa);
-      digits += fraction;
-    }
+    int digits, fraction;
+    read_number(p, mantissa, digits, fraction);
     while (blank(*p)) ++p;
     // blanks inside the number, a second point, or what follows not a letter: the general scanner's
-    if (digits == 0 || digits > max_digits || (*p != '\n' && letter_index(*p) >= 26)) return give_up();
+    if (digits == 0 || digits > max_digits || (*p != '\n' && !letter(*p))) return give_up();
+    const double v = fraction > 0 ? scaled_decimal(static_cast<std::int64_t>(mantissa), fraction) : static_cast<double>(mantissa);
+    Word& w = prog.words.emplace_back();
+    w.letter = static_cast<char>('A' + k);
+    w.column = column;
     w.decimal_point = fraction >= 0;
     w.decimals = static_cast<std::uint8_t>(fraction > 0 ? fraction : 0);
-    const double v = fraction > 0 ? scaled_decimal(static_cast<std::int64_t>(mantissa), fraction) : static_cast<double>(mantissa);
     w.value = negative ? -v : v;
     twice |= letters & (1u << k);
     letters |= 1u << k;
-    if (k == 'G' - 'A') g_word = true, g_plain = !w.decimal_point && (w.value == 0 || w.value == 1);
+    if (k == 'G' - 'A') g_word = true, g_plain = fraction < 0 && (mantissa == 0 || mantissa == 1);
     if (k == 'F' - 'A') negative_feed = negative;
   }
   if (static_cast<std::size_t>(p - begin) > kMaxBlockChars) return give_up();

@@ -14,7 +14,6 @@
 namespace ncurve::nc {
 
 namespace {
-constexpr std::uint32_t kLineStride = 256;  // a streamed file's line index keeps one line start in this many
 constexpr std::size_t kMostLineBytes = std::size_t{1} << 20;  // of a streamed file's line, for quoting
 
 std::size_t read_at(int fd, char* to, std::size_t n, std::size_t offset) {
@@ -140,9 +139,8 @@ std::string SourceFile::all_text() const {
   return out;
 }
 
-void SourceFile::line_read(std::uint32_t number, std::size_t offset) const {
-  if (number > lines_read_) lines_read_ = number;
-  if (number % kLineStride == 1 && (number - 1) / kLineStride == sparse_starts_.size()) sparse_starts_.push_back(offset);
+void SourceFile::note_line_start(std::uint32_t number, std::size_t offset) const {
+  if ((number - 1) / kLineStride == sparse_starts_.size()) sparse_starts_.push_back(offset);
 }
 
 std::string SourceFile::line(std::uint32_t number) const {

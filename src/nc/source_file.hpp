@@ -35,10 +35,15 @@ public:
   // A streamed file: appends the text from byte `offset` (at most n bytes) to out; returns the bytes added.
   std::size_t read(std::size_t offset, std::size_t n, std::string& out) const;
   // A streamed file: the parser reports where line `number` starts, as it reads it (a sparse index is kept).
-  void line_read(std::uint32_t number, std::size_t offset) const;
+  void line_read(std::uint32_t number, std::size_t offset) const {
+    if (number > lines_read_) lines_read_ = number;
+    if (number % kLineStride == 1) [[unlikely]] note_line_start(number, offset);
+  }
 
 private:
+  static constexpr std::uint32_t kLineStride = 256;  // a streamed file's line index keeps one line start in this many
   SourceFile(std::string name, int fd, std::size_t skip, std::size_t size);
+  void note_line_start(std::uint32_t number, std::size_t offset) const;
   std::string name_;
   std::string text_;
   std::vector<std::size_t> line_starts_;  // whole: every line's; streamed: every kLineStride-th
