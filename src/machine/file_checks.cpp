@@ -127,20 +127,32 @@ void Executor::warn_mixed_decimal_points(const nc::Program& program) {
 
 
 Executor::~Executor() {
-  if (file_checks_) library_.main()->stream->forget_visitors();  // a run left by an exception
+  if (file_checks_ && library_.main()->stream) library_.main()->stream->forget_visitors();  // a run left by an exception
 }
 
-// Before the run: the main file's programs (a library program's when it is called); a streamed
-// file's as its pieces are read, given when it has been read.
+// Beside the run: the main file's programs (a library program's when it is called); a streamed
+// file's as its pieces are read; all given when the run ends, before the run's own warnings.
 void Executor::start_file_checks(const nc::Program& main) {
-  if (!main.stream) {
-    for (const auto& p : library_.programs())
-      if (p->file == main.file) warn_mixed_decimal_points(*p);
-    for (nc::Diagnostic& d : profile_hints(library_, profile_)) result_.warnings.push_back(std::move(d));
-    return;
-  }
   file_checks_ = std::make_unique<FileChecks>(profile_);
   if (base::cores() > 1) file_checks_->beside = std::make_unique<base::TaskThread>();
+  if (!main.stream) {  // the file's programs, as profile_hints() takes them, named here: the library may grow
+    std::vector<const nc::Program*> file;
+    for (const auto& p : library_.programs())
+      if (p->file == main.file) file.push_back(p.get());
+    FileChecks& c = *file_checks_;
+    auto check = [&c, file = std::move(file)] {
+      for (const nc::Program* p : file) {
+        DecimalPointSearch found;
+        search_decimal_points(c.profile, *p, found);
+        warn_decimal_points(c.profile, *p, found, c.found);
+      }
+      for (const nc::Program* p : file) c.hints.see(*p, *p);
+      for (nc::Diagnostic& d : c.hints.warnings()) c.found.push_back(std::move(d));
+    };
+    if (c.beside) c.beside->post(std::move(check));
+    else check();
+    return;
+  }
   main.stream->visit([this](const nc::Program& program, const nc::Program& piece, const std::shared_ptr<const void>& keep) {
     FileChecks& c = *file_checks_;
     auto check = [&c, &program, &piece, keep] {
@@ -156,12 +168,16 @@ void Executor::start_file_checks(const nc::Program& main) {
 // The file's warnings come first, as when they are found before the run; the run's then stop at 1000
 // in all, as they do when the file's come first (NC2001 of a called program is never held back).
 void Executor::finish_file_checks(const nc::Program& main) {
-  library_.read_all();
-  main.stream->forget_visitors();
+  if (main.stream) {
+    library_.read_all();
+    main.stream->forget_visitors();
+  }
   if (file_checks_->beside) file_checks_->beside->finish();
-  std::vector<nc::Diagnostic> all;
-  for (const auto& [program, found] : file_checks_->programs) warn_decimal_points(file_checks_->profile, *program, found, all);
-  for (nc::Diagnostic& d : file_checks_->hints.warnings()) all.push_back(std::move(d));
+  std::vector<nc::Diagnostic> all = std::move(file_checks_->found);
+  if (main.stream) {
+    for (const auto& [program, found] : file_checks_->programs) warn_decimal_points(file_checks_->profile, *program, found, all);
+    for (nc::Diagnostic& d : file_checks_->hints.warnings()) all.push_back(std::move(d));
+  }
   for (nc::Diagnostic& d : result_.warnings)
     if (d.code == "NC2001" || all.size() < 1000) all.push_back(std::move(d));
   result_.warnings = std::move(all);

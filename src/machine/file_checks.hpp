@@ -1,5 +1,4 @@
-// The checks of a whole main file before its run (file_checks.cpp): what a streamed file's keep
-// while its pieces are read.
+// The checks of the main file beside its run (file_checks.cpp): what they keep while they run.
 #pragma once
 #include <memory>
 #include <utility>
@@ -22,13 +21,14 @@ struct DecimalPointSearch {
   bool in_cycle = false;  // a drilling canned cycle's mode, as the blocks read so far leave it
 };
 
-// A streamed main file's checks of every program, made as its pieces are read (on a thread beside the
-// run where there are two cores) and given at the end.
+// The main file's checks of every program, made on a thread beside the run where there are two cores
+// (a streamed file's as its pieces are read) and given at the end.
 struct Executor::FileChecks {
   explicit FileChecks(const MachineProfile& start) : profile(start), hints(profile) {}
   MachineProfile profile;  // as the run starts (G10 L52 may change it): as the checks before a run see it
   ProfileHints hints;
-  std::vector<std::pair<const nc::Program*, DecimalPointSearch>> programs;
+  std::vector<std::pair<const nc::Program*, DecimalPointSearch>> programs;  // a streamed file's
+  std::vector<nc::Diagnostic> found;  // a file read whole: its warnings
   std::unique_ptr<base::TaskThread> beside;  // last: finishes the checks before the rest goes
 };
 
