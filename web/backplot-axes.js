@@ -224,8 +224,10 @@
         let nrm = [-d[1], d[0]];
         const mid = [(A[0] + B[0]) / 2 - centre[0], (A[1] + B[1]) / 2 - centre[1]];
         if (nrm[0] * mid[0] + nrm[1] * mid[1] < 0) nrm = [-nrm[0], -nrm[1]];
-        // seen end-on (short, and short for its length: not a short part zoomed out): no numbers, no marks
-        const endOn = len < 30 && !R.flat && unitPx[k] < 0.5 * viewScale;
+        // under 30 px: no numbers, no marks; but in a view along an axis only the one seen end-on (short
+        // for its length), not one in the view's plane that is short (a thin part, zoomed out): that
+        // one is a ruler across the canvas
+        const endOn = len < 30 && !R.flat && (!along || unitPx[k] < 0.5 * viewScale);
         let values = [], marks = [], step = 0, s = 0, visLo = -Infinity, visHi = Infinity;
         const ppv = R.flat ? 0 : len / (R.v1 - R.v0);  // px per unit shown
         const at = (v, off) => [A[0] + (v - R.v0) * ppv * d[0] + off * nrm[0], A[1] + (v - R.v0) * ppv * d[1] + off * nrm[1]];
