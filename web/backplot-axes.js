@@ -11,7 +11,7 @@
 //                                    // camera looks along a world axis)
 //   axes.marker('tool');             // a marker {world, hidden} to move, placed with the labels
 //   axes.shown();                    // what place showed: tick marks, numbers (their values, the
-//                                    // step per axis), names
+//                                    // step per axis), the axes' lines' ends, names
 (function (global) {
   'use strict';
   const THREE = global.THREE;
@@ -206,8 +206,15 @@
     const place = (project, W, H, along) => {
       const over = boxes();
       const centre = project(new THREE.Vector3((wlo[0] + whi[0]) / 2, (wlo[1] + whi[1]) / 2, (wlo[2] + whi[2]) / 2));
-      shown = {marks: [[], [], []], numbers: [[], [], []], values: [[], [], []], steps: [0, 0, 0], names: []};
+      shown = {marks: [[], [], []], numbers: [[], [], []], values: [[], [], []], steps: [0, 0, 0], lines: [null, null, null], names: []};
       const gridValues = [null, null], pending = [];
+      // how much of a world unit along each axis the screen shows: an orthographic view keeps
+      // sqrt(sum of squares / 2) of the three, its scale; an axis seen end-on keeps almost none
+      const unitPx = [0, 1, 2].map((k) => {
+        const q = project(new THREE.Vector3(k === 0 ? 1 : 0, k === 1 ? 1 : 0, k === 2 ? 1 : 0)), o = project(new THREE.Vector3(0, 0, 0));
+        return Math.hypot(q[0] - o[0], q[1] - o[1]);
+      });
+      const viewScale = Math.sqrt(unitPx.reduce((s, p) => s + p * p, 0) / 2) || 1;
       for (let k = 0; k < 3; k++) {
         if (!axisEnds[k]) continue;
         const R = range[k];
@@ -217,7 +224,10 @@
         let nrm = [-d[1], d[0]];
         const mid = [(A[0] + B[0]) / 2 - centre[0], (A[1] + B[1]) / 2 - centre[1]];
         if (nrm[0] * mid[0] + nrm[1] * mid[1] < 0) nrm = [-nrm[0], -nrm[1]];
-        const endOn = len < 30 && !R.flat;  // seen end-on: no numbers, no marks
+        // under 30 px: no numbers, no marks; but in a view along an axis only the one seen end-on (short
+        // for its length), not one in the view's plane that is short (a thin part, zoomed out): that
+        // one is a ruler across the canvas
+        const endOn = len < 30 && !R.flat && (!along || unitPx[k] < 0.5 * viewScale);
         let values = [], marks = [], step = 0, s = 0, visLo = -Infinity, visHi = Infinity;
         const ppv = R.flat ? 0 : len / (R.v1 - R.v0);  // px per unit shown
         const at = (v, off) => [A[0] + (v - R.v0) * ppv * d[0] + off * nrm[0], A[1] + (v - R.v0) * ppv * d[1] + off * nrm[1]];
@@ -276,17 +286,21 @@
           }
         }
         // the line over the box and the numbers beyond it
-        const lineLo = Math.min(R.v0, values.length ? values[0] : R.v0), lineHi = Math.max(R.v1, values.length ? values[values.length - 1] : R.v1);
+        // (and the marks beyond the last number: none off the line)
+        const lineLo = Math.min(R.v0, values.length ? values[0] : R.v0, marks.length ? marks[0] : R.v0);
+        const lineHi = Math.max(R.v1, values.length ? values[values.length - 1] : R.v1, marks.length ? marks[marks.length - 1] : R.v1);
         const key = `${marks.length} ${marks[0]} ${marks[marks.length - 1]} ${lineLo} ${lineHi}`;
         if (markLines[k].key !== key) {
           markLines[k].key = key;
           markLines[k].line.geometry.setAttribute('position', tickMarks(k, marks, lineLo, lineHi));
         }
-        for (const v of marks) {
+        const onScreen = (v) => {
           const p = axisEnds[k][0].slice();
           p[k] = toWorldValue(k, v);
-          shown.marks[k].push(project(new THREE.Vector3(...p)));
-        }
+          return project(new THREE.Vector3(...p));
+        };
+        for (const v of marks) shown.marks[k].push(onScreen(v));
+        if (!R.flat) shown.lines[k] = [onScreen(lineLo), onScreen(lineHi)];
         shown.steps[k] = step;
         if (k < 2) gridValues[k] = !R.flat && !endOn && values.length ? {step, visLo, visHi} : null;
         // the name beyond the end of the axis' part on the canvas

@@ -160,6 +160,9 @@
     const t3 = performance.now();  // drawn at the next frame
     editor.setDiagnostics(answer.diagnostics.map((d) => Object.assign({}, d, {message: d.message + NcurveDiagnostics.pointer(d)})));
     showDiagnostics();
+    // the machine the program's comments ask for, when another (wb-runline.js)
+    W.runLine = NcurveRunLine.show($('runline'), {text: answer.program, machine: $('machine').value,
+      shipped: profiles.filter((x) => x.name && !x.file).map((x) => x.name), onUse(n) { $('machine').value = machineShown = n; machineChanged(); }});
     showSummary();
     if (!traceToCome) setupTrace();
     else $('dbg-pos').textContent = 'the trace is coming…';

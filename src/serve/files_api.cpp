@@ -120,7 +120,7 @@ Answer page() { return asset("workbench.html"); }
 Answer asset(const std::string& name) {
   // the workbench's files and what they need, compiled in (cmake/embed_files.cmake)
   static constexpr std::string_view kServed[] = {"workbench.html", "workbench.css", "workbench.js", "wb-editor.js",
-                                                 "wb-debug.js", "wb-colour.js", "wb-answer.js", "wb-dom.js", "wb-part.js", "wb-summary.js", "wb-diags.js", "wb-files.js", "wb-settings.js", "wb-gen.js", "wb-compare.js", "wb-tool.js", "wb-watch.js", "wb-step.js", "backplot-decode.js", "backplot-geometry.js", "backplot-lines.js", "backplot-axes.js", "backplot-holes.js", "backplot-snap.js", "backplot-measure.js", "backplot-part.js", "backplot-programmed.js", "backplot-cutter.js", "backplot.js", "backplot-compare.js", "backplot.css", "three.min.js",
+                                                 "wb-debug.js", "wb-colour.js", "wb-answer.js", "wb-dom.js", "wb-part.js", "wb-summary.js", "wb-diags.js", "wb-runline.js", "wb-files.js", "wb-settings.js", "wb-gen.js", "wb-compare.js", "wb-tool.js", "wb-watch.js", "wb-step.js", "backplot-decode.js", "backplot-geometry.js", "backplot-lines.js", "backplot-axes.js", "backplot-holes.js", "backplot-snap.js", "backplot-measure.js", "backplot-part.js", "backplot-programmed.js", "backplot-cutter.js", "backplot.js", "backplot-compare.js", "backplot.css", "three.min.js",
                                                  "OrbitControls.js", "example.nc", "example-lathe.nc", "example.setup.toml"};
   for (std::string_view served : kServed) {
     if (served != name) continue;

@@ -109,6 +109,9 @@ function genList() {
     // parameter gen says to set), and is the current program, named so in the menu and diagnostics
     const forms = await page.evaluate(() => [...document.getElementById('gen-form').options].map((o) => o.value));
     check(forms.join() === 'expanded,arcs,macro,adaptive-macro,cycle', `the forms of gen --form: ${forms.join(' ')}`);
+    // each named as gen --help names it, what it makes after it
+    const named = await page.evaluate(() => [...document.getElementById('gen-form').options].map((o) => o.text));
+    check(named.every((t, i) => t === forms[i] || t.startsWith(forms[i] + ' (')), `the forms named as the CLI's: ${named.join(' | ')}`);
     await page.selectOption('#gen-curve', 'ellipse');
     await page.fill('#gen-tol', '0.005');
     for (const form of ['macro', 'adaptive-macro', 'cycle']) {
