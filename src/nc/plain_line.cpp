@@ -1,6 +1,7 @@
 #include "nc/plain_line.hpp"
 
 #include <array>
+#include <bit>
 
 #include "nc/text.hpp"
 
@@ -19,6 +20,8 @@ constexpr bool letter(char c) { return kClass[static_cast<unsigned char>(c)] & k
 constexpr unsigned digit(char c) { return static_cast<unsigned>(c - '0'); }  // < 10 for a digit
 // A letter's index 0..25 (either case); 26 or more for anything else.
 constexpr unsigned letter_index(char c) { return static_cast<unsigned>((c | 0x20) - 'a'); }
+
+constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
 
 // Reads a run of digits from p into m (m * 10^count + value); returns how many.
 inline int read_digits(const char*& p, std::uint64_t& m) {
@@ -80,13 +83,15 @@ const char* plain_nc_line(const char* begin, std::uint32_t line, Program& prog, 
     while (blank(*p)) ++p;
     // blanks inside the number, a second point, or what follows not a letter: the general scanner's
     if (digits == 0 || digits > max_digits || (*p != '\n' && !letter(*p))) return give_up();
-    const double v = fraction > 0 ? scaled_decimal(static_cast<std::int64_t>(mantissa), fraction) : static_cast<double>(mantissa);
+    // no branch on the data: over 10^0 when there is no fraction, the sign's bit set by xor
+    static_assert(kMostDigits <= 22);  // 10^digits is exact in a double: one rounding, as scaled_decimal
+    const double v = static_cast<double>(static_cast<std::int64_t>(mantissa)) / kPow10[fraction > 0 ? fraction : 0];
     Word& w = prog.words.emplace_back();
     w.letter = static_cast<char>('A' + k);
     w.column = column;
     w.decimal_point = fraction >= 0;
     w.decimals = static_cast<std::uint8_t>(fraction > 0 ? fraction : 0);
-    w.value = negative ? -v : v;
+    w.value = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^ (std::uint64_t{negative} << 63));
     twice |= letters & (1u << k);
     letters |= 1u << k;
     if (k == 'G' - 'A') g_word = true, g_plain = fraction < 0 && (mantissa == 0 || mantissa == 1);
