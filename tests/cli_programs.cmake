@@ -138,6 +138,14 @@ if(NOT rc EQUAL 0)
   message(SEND_ERROR "G103 with --param 6051=103 as the hint says: exit ${rc}\n${err}")
   math(EXPR failures "${failures}+1")
 endif()
+# a negative No.6051 (a modal call on the controls that take one) is refused, not taken as no call
+execute_process(COMMAND ${NCURVE} run "${g103}" --lib ${SRC}/macros --param 6051=-103 OUTPUT_QUIET ERROR_VARIABLE err
+                RESULT_VARIABLE rc)
+string(FIND "${err}" "parameter 6051 = -103: a negative G code" at)
+if(rc EQUAL 0 OR at EQUAL -1)
+  message(SEND_ERROR "--param 6051=-103: exit ${rc}, not refused by name:\n${err}")
+  math(EXPR failures "${failures}+1")
+endif()
 
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} program check(s) failed")

@@ -292,6 +292,9 @@ void set_parameter(MachineProfile& p, const std::string& key, double value) {
     if (known && value != std::floor(value))
       throw std::runtime_error(fmt::format("parameter {} takes a whole number, got {}", key, value));
     const int code = static_cast<int>(value);
+    if (n >= 6050 && n <= 6059 && code < 0)
+      throw std::runtime_error(fmt::format("parameter {} = {}: a negative G code (a modal call on the controls that "
+                                           "take one) is not simulated by ncurve: {} makes G{} a simple call, as G65", key, code, -code, -code));
     if (n >= 6050 && n <= 6059) p.g_code_macros[n - 6050] = code;
     else if (n >= 6080 && n <= 6089) p.m_code_macros[n - 6080] = code;
     else if (n >= 6071 && n <= 6079) p.m_code_subprograms[n - 6071] = code;

@@ -56,7 +56,7 @@ bool lathe_t_word(const nc::Program& p, const nc::Block& b, std::uint16_t column
 
 ProfileHints::ProfileHints(const MachineProfile& profile)
     : profile_(profile), mill_(!profile.lathe()), system_a_(profile.lathe() && profile.gcode_system == 'A') {
-  for (int code : profile.g_code_macros) motion_calls_ = motion_calls_ || (std::abs(code) >= 1 && std::abs(code) <= 3);
+  for (int code : profile.g_code_macros) motion_calls_ = motion_calls_ || (code >= 1 && code <= 3);
 }
 
 namespace {
@@ -115,7 +115,7 @@ void ProfileHints::see(const nc::Program& program, const nc::Program& p) {
     }
     const BlockWords w = words_of(p, b);
     bool call = w.has_g(650) || w.has_g(660) || w.has_g(661);
-    for (int code : profile.g_code_macros) call = call || (code != 0 && w.has_g(std::abs(code) * 10));
+    for (int code : profile.g_code_macros) call = call || (code != 0 && w.has_g(code * 10));
     if (call) continue;  // the words of a macro call are its arguments
     if (w.has_g(200)) inch_ = true;
     if (mill) {
