@@ -32,7 +32,7 @@ double Executor::dimension_raw(const Cmd& c) const {
   return round_to_increment(as_written(c.value, c.literal, c.decimal_point), per_unit);
 }
 
-double Executor::dimension(const Cmd& c) const { return modal_.inch ? dimension_raw(c) * 25.4 : dimension_raw(c); }
+double Executor::dimension_any(const Cmd& c) const { return modal_.inch ? dimension_raw(c) * 25.4 : dimension_raw(c); }
 
 int Executor::integer(const Cmd& c, const char* what) const {
   if (c.literal && c.decimal_point)
@@ -230,6 +230,7 @@ bool Executor::macro_call_block(const Block& b, SubprogramCall& sub) {
   }
   int g_macros = 0;  // nonzero when a G code calls a macro
   for (int code : profile_.g_code_macros) g_macros |= code;
+  if (g_macros == 0 && m_codes_.empty()) return false;  // no code of the block can call
   if (!frames_.back().custom) {
     for (int g : g_codes_)
       for (int i = 0; i < 10 && g_macros != 0; ++i)
@@ -328,6 +329,7 @@ bool Executor::block_motion(const std::vector<int>& one_shot) {
 
 // The block's M codes, after its motion; true when one left the block (a call, a return, the end).
 bool Executor::block_m_codes(const Block& b, const SubprogramCall& sub) {
+  if (m_codes_.empty()) return false;  // read_words lists every M word
   for (const Cmd& c : cmds_) {
     if (c.letter != 'M') continue;
     int m = integer(c, "M");

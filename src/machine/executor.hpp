@@ -60,7 +60,14 @@ public:
   };
   bool has(char letter) const { return have_[letter - 'A']; }
   const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
-  double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
+  // program units -> mm, decimal point rule applied; in line for the common word, a literal in mm
+  // with a point and no more decimals than the increment, which is its own value
+  double dimension(const Cmd& c) const {
+    if (!modal_.inch && c.literal && c.decimal_point && c.decimals <= on_grid_mm_ && std::fabs(c.value) < 1e9)
+      return c.value + 0.0;  // -0. rounds to +0
+    return dimension_any(c);
+  }
+  double dimension_any(const Cmd& c) const;
   int integer(const Cmd& c, const char* what) const;
   bool incremental() const { return modal_.incremental; }
   const MachineProfile& profile() const { return profile_; }
