@@ -61,10 +61,12 @@ public:
   bool has(char letter) const { return have_[letter - 'A']; }
   const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
   // program units -> mm, decimal point rule applied; in line for the common word, a literal in mm
-  // with a point and no more decimals than the increment, which is its own value
+  // with a point (dimension_raw's rule: on the grid already, or rounded to it)
   double dimension(const Cmd& c) const {
-    if (!modal_.inch && c.literal && c.decimal_point && c.decimals <= on_grid_mm_ && std::fabs(c.value) < 1e9)
-      return c.value + 0.0;  // -0. rounds to +0
+    if (!modal_.inch && c.literal && c.decimal_point) {
+      if (c.decimals <= on_grid_mm_ && std::fabs(c.value) < 1e9) return c.value + 0.0;  // -0. rounds to +0
+      return round_to_increment(c.value, per_unit_mm_);
+    }
     return dimension_any(c);
   }
   double dimension_any(const Cmd& c) const;
@@ -118,6 +120,7 @@ private:
   std::uint64_t plain_lane_blocks_ = 0;
   bool g01_calls_macro() const;  // No.6050..6059 make G01 a macro call
   bool macro_call_block(const nc::Block& b, SubprogramCall& sub);
+  bool macro_call_codes(const nc::Block& b, SubprogramCall& sub);  // macro_call_block's search
   void word_settings(const std::vector<int>& one_shot, SubprogramCall& sub);
   bool block_motion(const std::vector<int>& one_shot);
   bool block_m_codes(const nc::Block& b, const SubprogramCall& sub);
