@@ -51,12 +51,17 @@ public:
 
   // ---- what the G-code table's actions (g_actions.cpp and a code's own file) use ----
   struct Cmd {  // a word of the block in hand, its value evaluated
-    char letter;
-    bool decimal_point;
-    bool literal;
-    std::uint16_t column;
-    double value;
+    Cmd() = default;
+    Cmd(char letter, bool decimal_point, bool literal, std::uint16_t column, double value, std::uint8_t decimals = 255)
+        : letter(letter), literal(literal), decimal_point(decimal_point), decimals(decimals), column(column),
+          value(value) {}
+    // in nc::Word's order and 16 bytes: a block's words are copied into cmds_ as they are
+    char letter = 0;
+    bool literal = true;
+    bool decimal_point = false;
     std::uint8_t decimals = 255;  // a literal's digits after its point
+    std::uint16_t column = 0;
+    double value = 0;
   };
   bool has(char letter) const { return have_[letter - 'A']; }
   const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
