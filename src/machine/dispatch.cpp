@@ -32,7 +32,7 @@ double Executor::dimension_raw(const Cmd& c) const {
   return round_to_increment(as_written(c.value, c.literal, c.decimal_point), per_unit);
 }
 
-double Executor::dimension(const Cmd& c) const { return modal_.inch ? dimension_raw(c) * 25.4 : dimension_raw(c); }
+double Executor::dimension_any(const Cmd& c) const { return modal_.inch ? dimension_raw(c) * 25.4 : dimension_raw(c); }
 
 int Executor::integer(const Cmd& c, const char* what) const {
   if (c.literal && c.decimal_point)
@@ -169,8 +169,10 @@ bool Executor::read_words(const Block& b) {
   m_codes_.clear();
   word_check_ = false;
   vacant_word_.variable = 0;
+  const nc::Word* const words = unit_->words.data();  // held: the stores below could alias unit_
+  std::uint8_t slot = 0;                               // cmds_.size(), counted
   for (std::uint32_t i = b.words_begin; i < b.words_end; ++i) {
-    const nc::Word& w = unit_->words[i];
+    const nc::Word& w = words[i];
     Cmd c{w.letter, w.decimal_point, w.literal, w.column, w.value, w.decimals};
     if (!w.literal) {
       int vacant = 0;
@@ -189,14 +191,18 @@ bool Executor::read_words(const Block& b) {
     }
     if (word_needs_check(c.letter, c.value)) word_check_ = true;
     if (c.letter == 'G') {
-      if (c.literal && c.decimal_point && c.value * 10 != std::floor(c.value * 10))
-        alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
-      g_codes_.push_back(round_int(c.value * 10));
+      if (c.literal && !c.decimal_point && std::fabs(c.value) < 1e8) {
+        g_codes_.push_back(static_cast<int>(c.value) * 10);  // digits alone: a whole number (G01 is 10)
+      } else {
+        if (c.literal && c.decimal_point && c.value * 10 != std::floor(c.value * 10))
+          alarm("PS0010", fmt::format("G{} is not a G code", c.value), c.column);
+        g_codes_.push_back(round_int(c.value * 10));
+      }
     } else if (c.letter == 'M') {
       m_codes_.push_back(round_int(c.value));  // checked when acted on: G65 M1.5 is an argument
     }
     have_[k] = true;
-    slot_[k] = static_cast<std::uint8_t>(cmds_.size());
+    slot_[k] = slot++;
     cmds_.push_back(c);
   }
   return !cmds_.empty();
@@ -206,6 +212,14 @@ bool Executor::read_words(const Block& b) {
 // block is a call, which takes the whole block. Notes in `sub` a subprogram an M code (No.6071..6079)
 // calls, made after the block as M98 is.
 bool Executor::macro_call_block(const Block& b, SubprogramCall& sub) {
+  // most blocks: no G65, G66, G67 or M code, and the profile has no custom G code
+  bool maybe = !m_codes_.empty();
+  for (int g : g_codes_) maybe = maybe || g == 650 || g == 660 || g == 670;
+  if (!maybe && std::ranges::all_of(profile_.g_code_macros, [](int code) { return code == 0; })) return false;
+  return macro_call_codes(b, sub);
+}
+
+bool Executor::macro_call_codes(const Block& b, SubprogramCall& sub) {
   // Macro calls take the whole block.
   for (int g : g_codes_) {
     if (g == 650 || g == 660) {
@@ -230,6 +244,7 @@ bool Executor::macro_call_block(const Block& b, SubprogramCall& sub) {
   }
   int g_macros = 0;  // nonzero when a G code calls a macro
   for (int code : profile_.g_code_macros) g_macros |= code;
+  if (g_macros == 0 && m_codes_.empty()) return false;  // no code of the block can call
   if (!frames_.back().custom) {
     for (int g : g_codes_)
       for (int i = 0; i < 10 && g_macros != 0; ++i)
@@ -328,6 +343,7 @@ bool Executor::block_motion(const std::vector<int>& one_shot) {
 
 // The block's M codes, after its motion; true when one left the block (a call, a return, the end).
 bool Executor::block_m_codes(const Block& b, const SubprogramCall& sub) {
+  if (m_codes_.empty()) return false;  // read_words lists every M word
   for (const Cmd& c : cmds_) {
     if (c.letter != 'M') continue;
     int m = integer(c, "M");

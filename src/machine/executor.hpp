@@ -51,16 +51,30 @@ public:
 
   // ---- what the G-code table's actions (g_actions.cpp and a code's own file) use ----
   struct Cmd {  // a word of the block in hand, its value evaluated
-    char letter;
-    bool decimal_point;
-    bool literal;
-    std::uint16_t column;
-    double value;
+    Cmd() = default;
+    Cmd(char letter, bool decimal_point, bool literal, std::uint16_t column, double value, std::uint8_t decimals = 255)
+        : letter(letter), literal(literal), decimal_point(decimal_point), decimals(decimals), column(column),
+          value(value) {}
+    // in nc::Word's order and 16 bytes: a block's words are copied into cmds_ as they are
+    char letter = 0;
+    bool literal = true;
+    bool decimal_point = false;
     std::uint8_t decimals = 255;  // a literal's digits after its point
+    std::uint16_t column = 0;
+    double value = 0;
   };
   bool has(char letter) const { return have_[letter - 'A']; }
   const Cmd& word(char letter) const { return cmds_[slot_[letter - 'A']]; }
-  double dimension(const Cmd& c) const;  // program units -> mm, decimal point rule applied
+  // program units -> mm, decimal point rule applied; in line for the common word, a literal in mm
+  // with a point (dimension_raw's rule: on the grid already, or rounded to it)
+  double dimension(const Cmd& c) const {
+    if (!modal_.inch && c.literal && c.decimal_point) {
+      if (c.decimals <= on_grid_mm_ && std::fabs(c.value) < 1e9) return c.value + 0.0;  // -0. rounds to +0
+      return round_to_increment(c.value, per_unit_mm_);
+    }
+    return dimension_any(c);
+  }
+  double dimension_any(const Cmd& c) const;
   int integer(const Cmd& c, const char* what) const;
   bool incremental() const { return modal_.incremental; }
   const MachineProfile& profile() const { return profile_; }
@@ -111,6 +125,7 @@ private:
   std::uint64_t plain_lane_blocks_ = 0;
   bool g01_calls_macro() const;  // No.6050..6059 make G01 a macro call
   bool macro_call_block(const nc::Block& b, SubprogramCall& sub);
+  bool macro_call_codes(const nc::Block& b, SubprogramCall& sub);  // macro_call_block's search
   void word_settings(const std::vector<int>& one_shot, SubprogramCall& sub);
   bool block_motion(const std::vector<int>& one_shot);
   bool block_m_codes(const nc::Block& b, const SubprogramCall& sub);

@@ -51,9 +51,9 @@ double Executor::feed_seconds(double length, double r0, double r1) const {
 // The same along an arc, whose X radius is not linear in the distance: Simpson's rule on 64 pieces of
 // equal angle (the time per mm at one point is feed_seconds at constant radius).
 double Executor::arc_feed_seconds(const Move& m, double planar) const {
+  if (!modal_.feed_per_rev || !modal_.css || speed_ <= 0) return feed_seconds(planar, m.start[0], m.end[0]);
   const PlaneAxes pa = plane_axes(m.plane);
-  if (!modal_.feed_per_rev || !modal_.css || speed_ <= 0 || (pa.p != 0 && pa.q != 0))
-    return feed_seconds(planar, m.start[0], m.end[0]);
+  if (pa.p != 0 && pa.q != 0) return feed_seconds(planar, m.start[0], m.end[0]);
   const double a0 = std::atan2(m.start[pa.q] - m.center[pa.q], m.start[pa.p] - m.center[pa.p]);
   const double rs = std::hypot(m.start[pa.p] - m.center[pa.p], m.start[pa.q] - m.center[pa.q]);
   const double re = std::hypot(m.end[pa.p] - m.center[pa.p], m.end[pa.q] - m.center[pa.q]);

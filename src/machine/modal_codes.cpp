@@ -51,11 +51,22 @@ std::string unknown_g_code(int g, const MachineProfile& p, const ProgramLibrary&
 }  // namespace
 
 void Executor::handle_g_codes(std::vector<int>& one_shot) {
-  const bool lathe = profile_.lathe();
-  const bool system_a = lathe && profile_.gcode_system == 'A';
   exact_stop_once_ = false;
   position_offset_ = 0;
   cycle_m_done_ = false;
+  // Most blocks: no G code, or one motion code of group 01 outside a transform and developed mode,
+  // which sets the motion and ends a drilling canned cycle (as the loop below does, more cheaply).
+  if (g_codes_.empty()) return;
+  if (g_codes_.size() == 1 && !xf_on_ && !developed_) {
+    const int g = g_codes_.front();
+    if (g == 0 || g == 10 || g == 20 || g == 30) {
+      modal_.motion = g / 10;
+      if (modal_.cycle != 0) cancel_canned_cycle();
+      return;
+    }
+  }
+  const bool lathe = profile_.lathe();
+  const bool system_a = lathe && profile_.gcode_system == 'A';
   bool group01 = false;
   bool transform = false;  // a G15/G16, G50/G51, G50.1/G51.1, G68/G69 of a mill: transform_codes
   struct CancelCycle {  // after the block's codes: G00..G03 with G81 in one block cancel it too

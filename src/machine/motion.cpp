@@ -14,6 +14,19 @@ namespace ncurve::machine {
 namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
+// axis_index() in line: it runs for every word of every block that moves.
+int axis_of(char letter) {
+  switch (letter) {
+    case 'X': return 0;
+    case 'Y': return 1;
+    case 'Z': return 2;
+    case 'A': return 3;
+    case 'B': return 4;
+    case 'C': return 5;
+    default: return -1;
+  }
+}
+
 // Whether an arc from (sx, sy) to (ex, ey) about its centre, of less than a quarter turn, stays in
 // one quadrant with both ends clear of the axes by a millionth of a radian and more: it passes no
 // quadrant point, and the angles' test, whose rounding is far smaller than that, would find none.
@@ -25,11 +38,9 @@ bool inside_one_quadrant(double sx, double sy, double ex, double ey, double swee
 }  // namespace
 
 PlaneAxes plane_axes(int plane) {
-  switch (plane) {
-    case 18: return {2, 0, 1, 'K', 'I'};
-    case 19: return {1, 2, 0, 'J', 'K'};
-    default: return {0, 1, 2, 'I', 'J'};
-  }
+  // a table, not a switch: called for every move of a compensated path
+  static constexpr PlaneAxes kAxesOf[3] = {{0, 1, 2, 'I', 'J'}, {2, 0, 1, 'K', 'I'}, {1, 2, 0, 'J', 'K'}};
+  return kAxesOf[plane == 18 ? 1 : plane == 19 ? 2 : 0];
 }
 
 const char* to_string(MoveKind k) {
@@ -62,7 +73,7 @@ bool Executor::axis_target(AxisVector& target, bool force_absolute) {
   bool any = false;
   if (rolls_) roll_word_.fill(false);
   for (const Cmd& c : cmds_) {
-    int a = axis_index(c.letter);
+    int a = axis_of(c.letter);
     bool incremental = modal_.incremental && !force_absolute;
     if (system_a && (c.letter == 'U' || c.letter == 'V' || c.letter == 'W')) {
       a = c.letter == 'U' ? 0 : c.letter == 'V' ? 1 : 2;

@@ -341,8 +341,10 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
   }
   Elem& a = pending();
   Joint joint = startup_pending_ ? Joint::startup : side == 0 ? Joint::cancel : Joint::offset;
-  Corner k;
-  if (side == 0 && cancel_direction) {
+  const bool cancel_ij = side == 0 && cancel_direction;
+  const bool side_change = !cancel_ij && joint == Joint::offset && a.side != 0 && side != a.side;
+  Corner k = cancel_ij || side_change ? Corner{} : corner(a, b, joint);  // built in place: not copied
+  if (cancel_ij) {
     // G40 with I J: the vector at the end of the last block points as if the next block ran along (I, J)
     Elem ghost = a;
     ghost.arc = false;
@@ -352,7 +354,7 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
     k = corner(a, ghost, Joint::offset);
     k.inserted.clear();
     k.start_b = k.end_a;
-  } else if (joint == Joint::offset && a.side != 0 && side != a.side) {
+  } else if (side_change) {
     // G41 <-> G42: the vector at the end of the first block on its side meets the second block's
     // offset path on the new side where they intersect, else both end perpendicular
     auto x = intersect(a, a.side, a.r, b, b.side, b.r, a.e);
@@ -364,8 +366,6 @@ void RadiusCompensation::element(const Move& programmed, int side, double radius
       k.start_b = a.e + v2;
       k.inserted.push_back(k.start_b);
     }
-  } else {
-    k = corner(a, b, joint);
   }
   if (!k.inserted.empty() && std::isnan(k.inserted.front().x))
     fail(a.move, "PS0033",

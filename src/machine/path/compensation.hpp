@@ -92,10 +92,21 @@ private:
     V2 t_start() const { return ts; }
     V2 t_end() const { return te; }
   };
+  // The extra moves' end points at a corner: three at most (an outer corner between two arcs).
+  struct Inserted {
+    V2 p[3];
+    int n = 0;
+    void push_back(V2 x) { p[n++] = x; }
+    void clear() { n = 0; }
+    bool empty() const { return n == 0; }
+    const V2& front() const { return p[0]; }
+    const V2* begin() const { return p; }
+    const V2* end() const { return p + n; }
+  };
   struct Corner {
-    V2 end_a;                  // where the first element's compensated path ends
-    std::vector<V2> inserted;  // extra moves' end points
-    V2 start_b;                // where the second element's compensated path starts
+    V2 end_a;           // where the first element's compensated path ends
+    Inserted inserted;  // extra moves' end points (no heap: a corner is made for every block)
+    V2 start_b;         // where the second element's compensated path starts
   };
   enum class Joint { offset, startup, cancel };
 
