@@ -11,7 +11,7 @@
     const fact = (k, v, cls) => box.append(el('dt', '', k), el('dd', cls || '', v));
     if (s.none) { fact('program', 'none: the editor holds no program'); return; }
     if (s.ok) fact('result', 'completed', 'ok');
-    else if (s.alarm) fact('result', `ALARM ${s.alarm.code} ${s.alarm.file || ''} line ${s.alarm.line}: ${s.alarm.message}`, 'alarm');
+    else if (s.alarm) fact('result', `ALARM ${s.alarm.code} ${s.alarm.file || ''} line ${s.alarm.line}: ${s.alarm.message}${global.NcurveDiagnostics.pointer(s.alarm)}`, 'alarm');
     else fact('result', 'stopped', 'alarm');
     if (answer.error) fact('stopped', answer.error, 'alarm');
     fact('machine', s.machine);
