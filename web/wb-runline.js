@@ -24,11 +24,16 @@
     return m ? m[1] : null;
   }
 
-  // the --lib, --param and --set of those comments, each as the command line takes it (quotes off)
+  // the --lib, --param and --set of the run line among those comments: the first `(RUN: ...)`, else
+  // the first `(... ncurve run ...)`; not a `(RESULT: ... WITHOUT --PARAM 6050=102 ...)` nor a second
+  // run line of another case (alarm.nc's `(WITH A DEPTH: ... --set "#100=2" ...)`). Each value as the
+  // command line takes it, quotes off.
   function options(text) {
     const out = {lib: [], param: [], set: []};
-    for (const [comment] of head(text).matchAll(/\([^)]*\)/g)) {
-      for (const m of comment.matchAll(/--(lib|param|set)(?:\s+|=)("[^"]*"|'[^']*'|[^\s)]+)/gi)) {
+    const comments = [...head(text).matchAll(/\([^)]*\)/g)].map((m) => m[0]);
+    const line = comments.find((c) => /^\(\s*RUN\s*:/i.test(c)) || comments.find((c) => /\bncurve\s+run\b/i.test(c));
+    if (line) {
+      for (const m of line.matchAll(/--(lib|param|set)(?:\s+|=)("[^"]*"|'[^']*'|[^\s)]+)/gi)) {
         const v = m[2].replace(/^(["'])(.*)\1$/, '$2').trim();
         if (v && !out[m[1].toLowerCase()].includes(v)) out[m[1].toLowerCase()].push(v);
       }

@@ -9,7 +9,7 @@
 // and its button puts the parameter in the Settings (the run then alarms as the CLI's without
 // --lib). On `ncurve serve --lib macros examples/` with the folder unticked: the note names the
 // folder and the parameter, and its button ticks the one and sets the other: the run completes as
-// the CLI's with both (360 G01 moves), the note gone.
+// the CLI's with both (361 G01 moves: the plunge and the cycle's 360), the note gone.
 'use strict';
 const {spawnSync} = require('child_process');
 const path = require('path');
@@ -81,7 +81,9 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
 
     // NC9000 after 50 steps: the CLI's message, the page's pointer and its button to the field
     await p.setting('#set-steps', '50');
+    // (the CLI names the file as it was given, the page by its name)
     const stopped = cli(example('spiral.nc'), ['--max-steps', '50']).alarm;
+    stopped.message = stopped.message.split(example('spiral.nc')).join('spiral.nc');
     await p.page.click('button[data-tab="summary"]');
     const row = await p.page.evaluate(() => {
       const li = [...document.querySelectorAll('#diags li')].find((l) => l.querySelector('strong').textContent === 'NC9000');
@@ -132,7 +134,7 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
     await p.ran(k);
     n = await p.note();
     const ticked = await p.page.isChecked(`#set-libs input[value="${macros}"]`);
-    check(both.ok && n.ok && n.lines === both.moves.line && n.lines === 360 && n.motions === both.motions && ticked &&
+    check(both.ok && n.ok && n.lines === both.moves.line && n.lines === 361 && n.motions === both.motions && ticked &&
           n.param === '6050=102' && !n.shown,
           `applied: the folder ticked (${ticked}), 6050=102, completed with ${n.lines} G01 moves as the CLI's (${both.moves.line}), the note gone`);
     check(p.errors().length === 0, `no script errors (${p.errors().join(' | ')})`);
