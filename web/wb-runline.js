@@ -85,7 +85,8 @@
     [...words, ...unserved].forEach((w, k) => box.append(document.createTextNode(k ? ' ' : ''), el('code', '', w)));
     box.append(document.createTextNode(', not in the Settings.'));
     if (words.length) {
-      const apply = el('button', 'wb-runline-apply', 'Apply them');
+      // (named when the folder asked cannot be: the button does not apply that)
+      const apply = el('button', 'wb-runline-apply', need.unserved.length ? `Apply ${words.join(' ')}` : 'Apply them');
       apply.title = `put ${words.join(' ')} in the Settings tab (kept in this browser)`;
       apply.onclick = () => settings.use(need);
       box.append(document.createTextNode(' '), apply);

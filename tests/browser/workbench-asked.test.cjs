@@ -59,7 +59,7 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
       const text = (id) => page.evaluate((i) => document.getElementById(i).textContent, id);
       const note = () => page.evaluate(() => {
         const box = document.getElementById('runline'), s = ncurveWorkbench.summary;
-        return {shown: !box.hidden, text: box.textContent, apply: !!box.querySelector('.wb-runline-apply'),
+        return {shown: !box.hidden, text: box.textContent, apply: (box.querySelector('.wb-runline-apply') || {}).textContent || '',
           param: document.getElementById('set-param').value, ok: s.ok, alarm: s.alarm && s.alarm.code, lines: s.moves.line,
           motions: s.motions};
       });
@@ -93,8 +93,10 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
     check(stopped.code === 'NC9000' && /raise --max-steps/.test(stopped.message) && !stopped.message.includes('here:') && row &&
           row.text.includes(' ' + stopped.message + pointer) && row.go === 'Settings: Max steps',
           `NC9000: the CLI's message "${stopped.message}", in the page with its pointer (${row && row.text})`);
-    const result = await p.page.evaluate(() => document.querySelector('#summary dd').textContent);
-    check(result.includes(stopped.message + pointer), `the Summary's result: ${result}`);
+    const [result, summary] = await p.page.evaluate(() => [document.querySelector('#summary dd').textContent,
+      document.getElementById('summary').textContent]);
+    check(result.includes(stopped.message + pointer) && !summary.includes('"max_steps"'),
+          `the Summary's result, in the command line's words: ${result}`);
     await p.page.click('#diags li button');
     const at = await p.page.evaluate(() => ({tab: !document.getElementById('tab-settings').hidden, focus: document.activeElement.id}));
     check(at.tab && at.focus === 'set-steps', `its button opens the Settings tab at Max steps (${JSON.stringify(at)})`);
@@ -107,7 +109,7 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
     await p.choose('custom-cycle.nc');
     let n = await p.note();
     check(n.shown && /--param 6050=102/.test(n.text) && /--lib macros/.test(n.text) && /start the server with --lib FOLDER/.test(n.text) &&
-          n.apply, `custom-cycle.nc on serve examples/: the note "${n.text}"`);
+          n.apply === 'Apply --param 6050=102', `custom-cycle.nc on serve examples/: the note "${n.text}" (button "${n.apply}")`);
     await p.page.screenshot({path: path.join(out, 'workbench-runline-options-1400.png')});
     let k = await p.runs();
     await p.page.click('#runline .wb-runline-apply');
@@ -127,7 +129,7 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
     await p.ran(k);
     await p.choose('custom-cycle.nc');
     n = await p.note();
-    check(n.shown && n.text.includes(`--lib ${macros}`) && /--param 6050=102/.test(n.text) && !/FOLDER/.test(n.text) && n.apply,
+    check(n.shown && n.text.includes(`--lib ${macros}`) && /--param 6050=102/.test(n.text) && !/FOLDER/.test(n.text) && n.apply === 'Apply them',
           `custom-cycle.nc on serve --lib macros examples/, the folder unticked: the note "${n.text}"`);
     k = await p.runs();
     await p.page.click('#runline .wb-runline-apply');
