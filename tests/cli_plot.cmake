@@ -24,6 +24,17 @@ expect_text("${report}" "view=4" "four views")
 expect_text("${report}" "text label-u: X, in" "inch axes")
 expect_text("${report}" "text label-v: Y, in" "inch axes")
 
+# the caption counts the moves as the run's summary does, not the elements drawn: counted by hand,
+# 2 rapids (the first a dog-leg of several pieces on the factory mill, non-linear positioning),
+# 3 lines (X20. and X30. along one line, drawn as one element) and 1 arc
+file(WRITE ${OUT}/plot_count.nc "G90 G17 G21 G54\nG00 X10. Y20. Z5.\nG01 Z-1. F100.\nG01 X20.\nG01 X30.\n"
+     "G03 X40. Y30. I0 J10.\nG00 Z5.\nM30\n")
+run_expect(0 "run --plot of a counted program" ${NCURVE} run ${OUT}/plot_count.nc --plot ${OUT}/plot_count.svg)
+expect_text("${out}" "2 rapid, 3 line, 1 arc" "the run's summary")
+file(READ ${OUT}/plot_count.svg svg)
+expect_text("${svg}" ">6 motions: 2 rapid, 3 line and 1 arc moves<" "the plot's caption")
+check_plot(${OUT}/plot_count.svg "run --plot of a counted program")
+
 # one view; the drawing on standard output, the summary then on the terminal
 run_expect(0 "run --plot - --view xz" ${NCURVE} run ${SRC}/examples/spiral.nc --plot - --view xz)
 expect_text("${out}" "<svg" "plot on standard output")

@@ -4,9 +4,14 @@
 // --lib; GET /api/libs lists them), the most steps ("max_steps") and the tool offsets edited over
 // the profile's ("tool_offsets"). Kept in this browser (localStorage) across a reload; what is in
 // force is named in the header; a refused one's message (the server's 400, in the command line's
-// words) is shown beside its field.
+// words) is shown beside its field. Max steps is checked here first, as `run --max-steps` checks it
+// ("--max-steps: 'abc' is not a number ..."): a bad one is refused beside its field before any run.
 //   const s = NcurveSettings.create({note, onChange}); s.setLibs(libs); s.showProfile(profile, key);
-//   Object.assign(request, s.request(key)); s.refused(message) -> true when a setting was refused
+//   Object.assign(request, s.request(key)); s.refused(message) -> the message shown beside a field
+//   ('' none); s.refused('') before a request: the page's own refusal, else the fields cleared
+//   s.use({param: [...], set: [...], lib: [names]}): the lines put in the parameters and variables
+//   (one of the same number replaced), the folders ticked, and a run (a program's RUN comment,
+//   wb-runline.js); s.libs: the server's folders (GET /api/libs)
 (function (global) {
   'use strict';
   const {el, fmt} = global.NcurveDom;
@@ -155,6 +160,16 @@
 
     // ---- what is sent, what is in force, what was refused ----
     const num = (t) => (/^\s*[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?\s*$/i.test(t) ? Number(t) : t);
+    // Max steps as the command line checks --max-steps (a whole number from 1 to 1e+15, in its
+    // words); '' when it is one or empty
+    function stepsWhy() {
+      const t = state.steps.trim();
+      if (!t) return '';
+      if (!/^\+?(-?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?|-?inf(inity)?|-?nan)$/i.test(t))
+        return `--max-steps: '${t}' is not a number (expected a whole number from 1 to 1e+15)`;
+      const v = Number(t.replace(/^\+/, '').replace(/inf(inity)?$/i, 'Infinity'));
+      return Number.isInteger(v) && v >= 1 && v <= 1e15 ? '' : `--max-steps: must be a whole number from 1 to 1e+15, got ${t}`;
+    }
     function offsetsRequest() {
       const ed = edits(), out = {};
       for (const n of Object.keys(ed)) {
@@ -196,19 +211,34 @@
       const tab = document.querySelector('.wb-tabs button[data-tab="settings"]');
       if (tab) tab.textContent = words.length ? `Settings (${words.length})` : 'Settings';
     }
-    // the server's 400 beside the field it is about; null: none refused
-    const WHY = [['--param', 'set-param-why'], ['--set', 'set-vars-why'], ['"param"', 'set-param-why'], ['"set"', 'set-vars-why'],
+    // the server's 400 beside the field it is about, returned; null: none refused
+    const WHY = [['--param', 'set-param-why'], ['--set', 'set-vars-why'], ['--max-steps', 'set-steps-why'], ['"param"', 'set-param-why'], ['"set"', 'set-vars-why'],
       ['"lib"', 'set-lib-why'], ['"max_steps"', 'set-steps-why'], ['"tool_offsets"', 'set-offsets-why']];
+    // (a Max steps the page refuses is the refusal, whatever else the server said)
     function refused(message) {
       for (const [, id] of WHY) $(id).textContent = '';
       for (const id of ['set-param', 'set-vars', 'set-steps']) $(id).removeAttribute('aria-invalid');
-      if (!message) return false;
+      message = stepsWhy() || message;
+      if (!message) return '';
       const hit = WHY.find(([prefix]) => message.startsWith(prefix));
-      if (!hit) return false;
+      if (!hit) return '';
       $(hit[1]).textContent = message;
       const input = {'set-param-why': 'set-param', 'set-vars-why': 'set-vars', 'set-steps-why': 'set-steps'}[hit[1]];
       if (input) $(input).setAttribute('aria-invalid', 'true');
-      return true;
+      return message;
+    }
+    // lines, folders put in the Settings (a line of the same NUMBER= replaced), then a run
+    function use({param, set, lib}) {
+      const merge = (text, option, add) => {
+        const key = (l) => value(l, option).split('=')[0].trim().toUpperCase();
+        const keep = text.split('\n').filter((l) => l.trim() && !add.some((a) => key(a) === key(l)));
+        return keep.concat(add).join('\n');
+      };
+      if (param && param.length) $('set-param').value = state.param = merge(state.param, 'param', param);
+      if (set && set.length) $('set-vars').value = state.set = merge(state.set, 'set', set);
+      if (lib && lib.length && state.lib !== null) state.lib = [...new Set(state.lib.concat(lib))];
+      setLibs(libs);
+      changed(true);
     }
     function showProfile(p, machineKey) {
       const shown = machineKey + '\u0000' + JSON.stringify([p.lathe, p.offset_memory, p.tool_offsets]);
@@ -220,7 +250,7 @@
       showNote();
     }
     showNote();
-    return {setLibs, showProfile, request, refused, inForce, get state() { return state; }};
+    return {setLibs, showProfile, request, refused, inForce, use, get state() { return state; }, get libs() { return libs; }};
   }
 
   global.NcurveSettings = {create, lines};

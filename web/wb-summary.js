@@ -11,9 +11,11 @@
     const fact = (k, v, cls) => box.append(el('dt', '', k), el('dd', cls || '', v));
     if (s.none) { fact('program', 'none: the editor holds no program'); return; }
     if (s.ok) fact('result', 'completed', 'ok');
-    else if (s.alarm) fact('result', `ALARM ${s.alarm.code} ${s.alarm.file || ''} line ${s.alarm.line}: ${s.alarm.message}`, 'alarm');
+    else if (s.alarm) fact('result', `ALARM ${s.alarm.code} ${s.alarm.file || ''} line ${s.alarm.line}: ${s.alarm.message}${global.NcurveDiagnostics.pointer(s.alarm)}`, 'alarm');
     else fact('result', 'stopped', 'alarm');
-    if (answer.error) fact('stopped', answer.error, 'alarm');
+    // (a run stopped by its bounds, 422: its alarm above says so with the page's way to Max steps; the
+    // answer's note on a request's "max_steps" is for other clients)
+    if (answer.error && !s.alarm) fact('stopped', answer.error, 'alarm');
     fact('machine', s.machine);
     const mv = s.moves;
     fact('motions', `${s.motions} — ${mv.rapid} rapid, ${mv.line} feed, ${mv.arc} arc`);

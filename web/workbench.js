@@ -60,6 +60,8 @@
     if (inFlight) inFlight.abort();
     inFlight = null;
     if (!hasProgram()) { showNoProgram(t0); return; }
+    const own = settings.refused('');  // a Setting the page refuses itself, in the command line's words: no request
+    if (own) { status(own, 'alarm'); W.refusals++; return; }
     inFlight = new AbortController();
     status('running…', '');
     let r, j;
@@ -85,7 +87,6 @@
     }
     if (my !== seq) return;
     if (!j.summary) { settings.refused(j.error); status(`${r.status}: ${j.error}`, 'alarm'); W.refusals++; return; }
-    settings.refused(null);
     answer = j;
     answer.program = request.program;
     if (profile().file && j.profile) Object.assign(profile(), j.profile);  // a file's kind, as the server read it
@@ -160,8 +161,8 @@
     const t3 = performance.now();  // drawn at the next frame
     editor.setDiagnostics(answer.diagnostics.map((d) => Object.assign({}, d, {message: d.message + NcurveDiagnostics.pointer(d)})));
     showDiagnostics();
-    // the machine the program's comments ask for, when another (wb-runline.js)
-    W.runLine = NcurveRunLine.show($('runline'), {text: answer.program, machine: $('machine').value,
+    // the machine and Settings the program's comments ask for, when others (wb-runline.js)
+    W.runLine = NcurveRunLine.show($('runline'), {text: answer.program, machine: $('machine').value, settings,
       shipped: profiles.filter((x) => x.name && !x.file).map((x) => x.name), onUse(n) { $('machine').value = machineShown = n; machineChanged(); }});
     showSummary();
     if (!traceToCome) setupTrace();
@@ -175,8 +176,7 @@
       edit_to_drawn_ms: W.timing.edit ? t4 - W.timing.edit : null, drawn_at: t4});
     W.timing.edit = 0;
     if (!traceToCome) W.shownText = answer.program, W.runs++;
-    W.moveCount = conv.count;
-    W.diagnostics = answer.diagnostics;
+    W.moveCount = conv.count, W.diagnostics = answer.diagnostics;
     W.summary = s;
     W.ready = true;
     const result = s.ok ? 'completed' : s.alarm ? `ALARM ${s.alarm.code} line ${s.alarm.line}` : 'stopped';
@@ -403,7 +403,7 @@
     const a = W.analysis = await r.json();
     box.textContent = '';
     const fact = (k, v) => box.append(el('dt', '', k), el('dd', '', v));
-    if (a.error) { settings.refused(a.error); fact('error', a.error); return; }
+    if (a.error) { fact('error', settings.refused(a.error) || a.error); return; }
     const s = (v) => (v === undefined ? '—' : `${fmt(v, 2)} s`);
     fact('cycle time', `${s(a.cycle_time_s)}${a.ok ? '' : ' (up to the alarm)'}`);
     fact('motion', s(a.motion_s));

@@ -75,6 +75,7 @@ bool continues(const Vec& a, const Vec& b, const Vec& c) {
 
 void PathPlot::on_move(const machine::Move& m) {
   if (!m.is_motion()) return;
+  ++moves_by_kind_[m.kind == MoveKind::rapid ? 0 : m.kind == MoveKind::line ? 1 : 2];
   {  // the frame, of whole moves (a dog-leg's corners are the machine's, not the program's points)
     const Vec a = xyz(m.start), b = xyz(m.end);
     const bool cut = m.kind != MoveKind::rapid;
@@ -302,9 +303,9 @@ std::string PathPlot::svg(const PathPlotOptions& o) const {
   const bool single = views.size() == 1;
   const double W = single ? 960 : 1280, H = single ? 760 : 1100;
   plot::Page page(W, H);
-  std::uint64_t by_kind[3] = {0, 0, 0};
-  for (const auto& e : elements_) ++by_kind[e.kind == MoveKind::rapid ? 0 : e.kind == MoveKind::line ? 1 : 2];
-  double top = page.heading(o.title, fmt::format("{} motions drawn as {} rapid, {} feed and {} arc elements{}",
+  // the moves as the run's summary counts them (a dog-leg rapid one move, collinear moves apart)
+  const auto* by_kind = moves_by_kind_.data();
+  double top = page.heading(o.title, fmt::format("{} motions: {} rapid, {} line and {} arc moves{}",
                                                        motions_, by_kind[0], by_kind[1], by_kind[2],
                                                        lathe_ && views.front() == PlotView::xz && views.size() == 1
                                                            ? "; lathe: Z across, X up"

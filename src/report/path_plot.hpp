@@ -65,6 +65,7 @@ private:
   std::size_t limit_;
   std::vector<Element> elements_;
   std::uint64_t motions_ = 0, left_out_ = 0;
+  std::array<std::uint64_t, 3> moves_by_kind_{};  // rapid, line, arc: the moves, not the elements drawn
   double tol_ = 0;       // the bound of the simplification's error so far
   double last_tol_ = 0;  // the highest level a pass has simplified at
   std::size_t fresh_ = 0;  // elements from here on were added since the last pass
