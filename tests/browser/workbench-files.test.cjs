@@ -527,6 +527,10 @@ function genList() {
     await page.selectOption('#gen-curve', 'ellipse');
     await page.fill('#gen-fields input[data-param="a"]', '50');
     await page.fill('#gen-fields input[data-param="b"]', '10');
+    // (the run the cleared setting started, or one still in its 300 ms wait, ends first)
+    await page.waitForFunction(() => ncurveWorkbench.settled());
+    await page.waitForTimeout(400);
+    await page.waitForFunction(() => ncurveWorkbench.settled());
     n = await runs();
     await page.click('#gen');
     await ran(n);
