@@ -134,7 +134,8 @@ Executor::~Executor() {
 // file's as its pieces are read; all given when the run ends, before the run's own warnings.
 void Executor::start_file_checks(const nc::Program& main) {
   file_checks_ = std::make_unique<FileChecks>(profile_);
-  if (base::cores() > 1) file_checks_->beside = std::make_unique<base::TaskThread>();
+  // two pieces ahead at most: the checks are faster than the run, and each piece waiting is held in memory
+  if (base::cores() > 1) file_checks_->beside = std::make_unique<base::TaskThread>(2);
   if (!main.stream) {  // the file's programs, as profile_hints() takes them, named here: the library may grow
     std::vector<const nc::Program*> file;
     for (const auto& p : library_.programs())
