@@ -229,15 +229,8 @@ int run_command(const app::RunArgs& a) {
     }
   }
 
-  report::RunReport rep;
-  rep.source = a.in.program == "-" ? "<stdin>" : a.in.program;
-  rep.profile = &profile;
-  rep.result = &result;
-  rep.stats = report::source_stats(lib, lib.main()->file.get());
-  rep.text_problems = std::move(setup.problems);
-  rep.text_problems_left_out = setup.problems_left_out;
-  rep.unchecked_lines = setup.unchecked_lines;
-  if (verify) rep.verify = &verify->report();
+  report::RunReport rep = app::run_report(setup, a.in.program == "-" ? "<stdin>" : a.in.program, result,
+                                          verify ? &verify->report() : nullptr);
   std::string summary = a.json ? report::summary_json(rep) : report::summary_text(rep);
   if (plot && !app::save_plot(a.plot, a.view, *plot, interp, rep.source, setup.inputs)) return 2;
   if (html && !app::save_html(a.html, *html, interp.variable(4006).number() == 20, rep.source,

@@ -181,4 +181,18 @@ void complete_problems(RunSetup& s) {
   }
 }
 
+report::RunReport run_report(const RunSetup& s, std::string source, const machine::RunResult& result,
+                             const report::VerifyReport* verify) {
+  report::RunReport rep;
+  rep.source = std::move(source);
+  rep.profile = &s.profile;
+  rep.result = &result;
+  rep.stats = report::source_stats(*s.lib, s.lib->main()->file.get());
+  rep.text_problems = s.problems;
+  rep.text_problems_left_out = s.problems_left_out;
+  rep.unchecked_lines = s.unchecked_lines;
+  rep.verify = verify;
+  return rep;
+}
+
 }  // namespace ncurve::app

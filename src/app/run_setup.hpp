@@ -11,6 +11,7 @@
 #include "machine/interpreter.hpp"
 #include "machine/library.hpp"
 #include "machine/profile.hpp"
+#include "report/summary.hpp"
 
 namespace ncurve::app {
 
@@ -47,6 +48,9 @@ RunSetup prepare_run(const RunInputs& in);
 // prepare_run as `run` reads its program: a file of kStreamFrom bytes or more, or one too large to
 // read whole (--max-memory), as a stream.
 RunSetup prepare_run_of_any_size(RunInputs in);
+// The summary's report of a run of this setup, named `source` (its syntax problems copied).
+report::RunReport run_report(const RunSetup& s, std::string source, const machine::RunResult& result,
+                             const report::VerifyReport* verify = nullptr);
 // A streamed program's problems once the run is over (the file is then read to its end).
 void complete_problems(RunSetup& s);
 // Program files of this many bytes and more are streamed by `run` (RunInputs::stream).

@@ -144,15 +144,7 @@ Answer api_run(const ServeConfig& config, const std::string& body, const std::at
   machine::RunResult result = interp.run(tee ? static_cast<machine::MoveSink&>(*tee) : shown);
   if (verify) verify->finish(result);
 
-  report::RunReport rep;
-  rep.source = in.program;
-  rep.profile = &setup.profile;
-  rep.result = &result;
-  rep.stats = report::source_stats(*setup.lib, setup.lib->main()->file.get());
-  rep.text_problems = std::move(setup.problems);
-  rep.text_problems_left_out = setup.problems_left_out;
-  rep.unchecked_lines = setup.unchecked_lines;
-  if (verify) rep.verify = &verify->report();
+  report::RunReport rep = app::run_report(setup, in.program, result, verify ? &verify->report() : nullptr);
 
   fmt::memory_buffer b;
   auto it = fmt::appender(b);

@@ -107,4 +107,21 @@ std::string wrapped(std::string_view text, std::size_t indent, std::size_t width
   return out + line + "\n";
 }
 
+std::string option_name(std::string keyword) {
+  std::ranges::replace(keyword, '_', '-');
+  return keyword;
+}
+
+std::string options_doc(const CLI::App& command, const std::function<bool(const std::string&)>& skip) {
+  std::string doc;
+  for (const CLI::Option* o : command.get_options()) {
+    if (o->get_lnames().empty() || skip(o->get_lnames().front())) continue;
+    const std::string& name = o->get_lnames().front();
+    std::string keyword = name;
+    std::ranges::replace(keyword, '-', '_');
+    doc += fmt::format("  {}\n", keyword) + wrapped(fmt::format("{} [--{}]", o->get_description(), name), 6);
+  }
+  return doc;
+}
+
 }  // namespace ncurve::python

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <pybind11/pybind11.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -43,5 +44,11 @@ py::str decoded(std::string_view text);
 
 // `text` wrapped to lines of at most `width` characters, each after `indent` spaces (the first too).
 std::string wrapped(std::string_view text, std::size_t indent, std::size_t width = 100);
+
+// A Python keyword's option name: its underscores as dashes (nose_centre: nose-centre).
+std::string option_name(std::string keyword);
+// The command's options as a docstring lists them, those `skip` names by long name left out: each
+// keyword (dashes as underscores) and under it the option's description and [--option].
+std::string options_doc(const CLI::App& command, const std::function<bool(const std::string&)>& skip);
 
 }  // namespace ncurve::python

@@ -52,26 +52,17 @@ std::string gen_doc() {
   app::add_gen_command(app, args);
   std::string doc = std::string(kSignature) + "\n\n" + wrapped(kHead, 0) + "\n" + wrapped(kArgs, 0) +
                     "\nOptions (the CLI's option in brackets):\n";
-  for (const CLI::Option* o : args.command->get_options()) {
-    if (o->get_lnames().empty() || left_out(o->get_lnames().front())) continue;
-    std::string name = o->get_lnames().front();
-    if (name == "curve" || name == "tol" || name == "form" || name == "machine" || name == "from" || name == "to" ||
-        name == "t")
-      continue;
-    std::string python = name;
-    for (char& c : python)
-      if (c == '-') c = '_';
-    doc += fmt::format("  {}\n", python) + wrapped(fmt::format("{} [--{}]", o->get_description(), name), 6);
-  }
+  doc += options_doc(*args.command, [](const std::string& name) {
+    return left_out(name) || name == "curve" || name == "tol" || name == "form" || name == "machine" || name == "from" ||
+           name == "to" || name == "t";
+  });
   return doc + "\n" + wrapped(kTail, 0);
 }
 
 // A keyword as the command line's words: an option of gen as --name=value (a flag alone when True,
 // nothing when False), anything else as the pair --name value the curve's parameters are read from.
 void add_keyword(std::vector<std::string>& words, CLI::App& command, const std::string& key, py::handle value) {
-  std::string name = key;
-  for (char& c : name)
-    if (c == '_') c = '-';
+  const std::string name = option_name(key);
   const CLI::Option* option = command.get_option_no_throw("--" + name);
   if (option && left_out(name))
     throw py::type_error(fmt::format("gen() takes no {}: it writes no file and prints nothing", key));

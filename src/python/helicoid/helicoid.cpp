@@ -52,21 +52,13 @@ std::string helicoid_doc() {
   CLI::App app;
   app::add_helicoid_command(app, args);
   std::string doc = std::string(kSignature) + "\n\n" + wrapped(kHead, 0) + "\nOptions (the CLI's option in brackets):\n";
-  for (const CLI::Option* o : args.command->get_options()) {
-    if (o->get_lnames().empty() || left_out(o->get_lnames().front())) continue;
-    std::string name = o->get_lnames().front(), python = name;
-    for (char& c : python)
-      if (c == '-') c = '_';
-    doc += fmt::format("  {}\n", python) + wrapped(fmt::format("{} [--{}]", o->get_description(), name), 6);
-  }
+  doc += options_doc(*args.command, left_out);
   return doc + "\n" + wrapped(kTail, 0);
 }
 
 // A keyword as the option's word: a flag alone when True, a tuple as its values joined by ':'.
 void add_keyword(std::vector<std::string>& words, CLI::App& command, const std::string& key, py::handle value) {
-  std::string name = key;
-  for (char& c : name)
-    if (c == '_') c = '-';
+  const std::string name = option_name(key);
   const CLI::Option* option = command.get_option_no_throw("--" + name);
   if (!option) throw py::type_error(fmt::format("helicoid() got an unexpected keyword argument '{}'", key));
   if (left_out(name)) throw py::type_error(fmt::format("helicoid() takes no {}: it writes no file and prints nothing", key));

@@ -155,14 +155,7 @@ Run run(const py::object& program, const py::object& machine, const py::object& 
   }
   if (!setup) throw py::value_error(refused);
 
-  report::RunReport rep;
-  rep.source = in.program;
-  rep.profile = &setup->profile;
-  rep.result = &result;
-  rep.stats = report::source_stats(*setup->lib, setup->lib->main()->file.get());
-  rep.text_problems = setup->problems;
-  rep.text_problems_left_out = setup->problems_left_out;
-  rep.unchecked_lines = setup->unchecked_lines;
+  const report::RunReport rep = app::run_report(*setup, in.program, result);
 
   Run out;
   out.summary = py::dict(py::module_::import("json").attr("loads")(report::summary_json(rep)));

@@ -139,15 +139,7 @@ Verification verify(const py::object& program, const py::object& setup_file, con
   }
   if (!refused.empty()) throw py::value_error(refused);
 
-  report::RunReport rep;
-  rep.source = in.program;
-  rep.profile = &setup->profile;
-  rep.result = &result;
-  rep.stats = report::source_stats(*setup->lib, setup->lib->main()->file.get());
-  rep.text_problems = setup->problems;
-  rep.text_problems_left_out = setup->problems_left_out;
-  rep.unchecked_lines = setup->unchecked_lines;
-  rep.verify = &verification->report();
+  const report::RunReport rep = app::run_report(*setup, in.program, result, &verification->report());
 
   Verification out;
   out.summary = py::dict(py::module_::import("json").attr("loads")(report::summary_json(rep)));
