@@ -253,12 +253,7 @@ Analysis analyze(const py::object& program, const py::object& machine, const py:
   Analysis out;
   out.summary = py::dict(py::module_::import("json").attr("loads")(
       summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
-  for (const nc::Diagnostic& d : setup->problems) out.diagnostics.append(diagnostic_object(d));
-  for (const nc::Diagnostic& d : result.warnings) out.diagnostics.append(diagnostic_object(d));
-  if (result.alarm) {
-    out.alarm = diagnostic_object(*result.alarm);
-    out.diagnostics.append(out.alarm);
-  }
+  out.diagnostics = run_diagnostics(setup->problems, result, out.alarm);
   out.ok = result.ok();
   for (const std::string& f : files) out.files.append(decoded(f));
   out.blocks = py::array(block_dtype(), std::vector<py::ssize_t>{static_cast<py::ssize_t>(rows.size())}, std::vector<py::ssize_t>{});

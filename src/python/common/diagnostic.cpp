@@ -62,4 +62,13 @@ py::object diagnostic_object(const nc::Diagnostic& d) {
   return py::cast(std::move(out));
 }
 
+py::list run_diagnostics(const std::vector<nc::Diagnostic>& problems, const machine::RunResult& result, py::object& alarm) {
+  py::list all;
+  for (const nc::Diagnostic& d : problems) all.append(diagnostic_object(d));
+  for (const nc::Diagnostic& d : result.warnings) all.append(diagnostic_object(d));
+  alarm = result.alarm ? diagnostic_object(*result.alarm) : py::none();
+  if (result.alarm) all.append(alarm);
+  return all;
+}
+
 }  // namespace ncurve::python

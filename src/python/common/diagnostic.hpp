@@ -3,6 +3,9 @@
 #pragma once
 #include <pybind11/pybind11.h>
 
+#include <vector>
+
+#include "machine/interpreter.hpp"
 #include "nc/diagnostic.hpp"
 
 namespace ncurve::python {
@@ -12,5 +15,8 @@ namespace py = pybind11;
 void add_diagnostic_class(py::module_& m);
 // A Python ncurve.Diagnostic holding d's fields (the class must be registered).
 py::object diagnostic_object(const nc::Diagnostic& d);
+// A run's diagnostics in the CLI's order: the files' syntax problems, the run's warnings, then its
+// alarm, which `alarm` is also set to (None without one).
+py::list run_diagnostics(const std::vector<nc::Diagnostic>& problems, const machine::RunResult& result, py::object& alarm);
 
 }  // namespace ncurve::python

@@ -159,12 +159,7 @@ Run run(const py::object& program, const py::object& machine, const py::object& 
 
   Run out;
   out.summary = py::dict(py::module_::import("json").attr("loads")(report::summary_json(rep)));
-  for (const nc::Diagnostic& d : setup->problems) out.diagnostics.append(diagnostic_object(d));
-  for (const nc::Diagnostic& d : result.warnings) out.diagnostics.append(diagnostic_object(d));
-  if (result.alarm) {
-    out.alarm = diagnostic_object(*result.alarm);
-    out.diagnostics.append(out.alarm);
-  }
+  out.diagnostics = run_diagnostics(setup->problems, result, out.alarm);
   out.ok = result.ok();
   out.inputs = in;
   out.printed = py::bytes(result.output.bytes);

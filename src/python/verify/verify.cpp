@@ -143,16 +143,9 @@ Verification verify(const py::object& program, const py::object& setup_file, con
 
   Verification out;
   out.summary = py::dict(py::module_::import("json").attr("loads")(report::summary_json(rep)));
-  for (const nc::Diagnostic& d : setup->problems) out.diagnostics.append(diagnostic_object(d));
-  for (std::size_t i = 0; i < result.warnings.size(); ++i) {
-    py::object d = diagnostic_object(result.warnings[i]);
-    out.diagnostics.append(d);
-    if (i >= warnings_before) out.findings.append(d);
-  }
-  if (result.alarm) {
-    out.alarm = diagnostic_object(*result.alarm);
-    out.diagnostics.append(out.alarm);
-  }
+  out.diagnostics = run_diagnostics(setup->problems, result, out.alarm);
+  for (std::size_t i = warnings_before; i < result.warnings.size(); ++i)  // the verification's, the same objects
+    out.findings.append(out.diagnostics[setup->problems.size() + i]);
   out.ok = result.ok();
   if (const sim::ZMap* map = verification->map()) {
     py::array_t<double> heights({static_cast<py::ssize_t>(map->ny()), static_cast<py::ssize_t>(map->nx())});
