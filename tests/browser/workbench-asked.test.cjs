@@ -43,6 +43,12 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
       // a run shown, or refused
       const ran = ([r, f]) => page.waitForFunction(([r, f]) => (ncurveWorkbench.runs > r && ncurveWorkbench.settled()) ||
         ncurveWorkbench.refusals > f, [r, f]);
+      // no run going nor one in its 300 ms wait (a change of the Settings starts one of its own)
+      const quiet = async () => {
+        await page.waitForFunction(() => ncurveWorkbench.settled());
+        await page.waitForTimeout(400);
+        await page.waitForFunction(() => ncurveWorkbench.settled());
+      };
       const setting = async (id, value) => {
         await page.waitForFunction(() => ncurveWorkbench.settled());
         const k = await runs();
@@ -63,7 +69,7 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
           param: document.getElementById('set-param').value, ok: s.ok, alarm: s.alarm && s.alarm.code, lines: s.moves.line,
           motions: s.motions};
       });
-      return {page, errors, requests, runs, ran, setting, choose, text, note};
+      return {page, errors, requests, runs, ran, quiet, setting, choose, text, note};
     };
 
     // ---- serve examples/: Max steps checked as the command line checks it ----
@@ -114,6 +120,7 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
     let k = await p.runs();
     await p.page.click('#runline .wb-runline-apply');
     await p.ran(k);
+    await p.quiet();
     n = await p.note();
     check(n.param === '6050=102' && !n.ok && n.alarm === noLib.alarm.code && n.shown && !n.apply && /--lib FOLDER/.test(n.text) &&
           !/--param/.test(n.text), `applied: the Settings' parameters "${n.param}", ALARM ${n.alarm} as the CLI's without --lib ` +
@@ -127,6 +134,7 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
     k = await p.runs();
     await p.page.uncheck(`#set-libs input[value="${macros}"]`);
     await p.ran(k);
+    await p.quiet();
     await p.choose('custom-cycle.nc');
     n = await p.note();
     check(n.shown && n.text.includes(`--lib ${macros}`) && /--param 6050=102/.test(n.text) && !/FOLDER/.test(n.text) && n.apply === 'Apply them',
@@ -134,6 +142,7 @@ const cliError = (file, args) => spawnSync(ncurve, ['run', file, ...args], {enco
     k = await p.runs();
     await p.page.click('#runline .wb-runline-apply');
     await p.ran(k);
+    await p.quiet();
     n = await p.note();
     const ticked = await p.page.isChecked(`#set-libs input[value="${macros}"]`);
     check(both.ok && n.ok && n.lines === both.moves.line && n.lines === 361 && n.motions === both.motions && ticked &&
